@@ -1,0 +1,45 @@
+/* rl_config: every compile-time limit of the recognition core, in one place.
+ *
+ * Each can be overridden with -D at build time (a board's defaults file is
+ * the place for that). Each bounds a fixed-size array somewhere in the
+ * core; exceeding one is reported as RL_ELIMIT, never overrun.
+ */
+#ifndef RL_CONFIG_H
+#define RL_CONFIG_H
+
+/* Largest image width or height accepted (bounds per-row index arrays). */
+#ifndef RL_MAX_IMAGE_DIM
+#define RL_MAX_IMAGE_DIM 8192
+#endif
+
+/* Most code zones of a family (the spec's ring2..ring8). */
+#ifndef RL_MAX_BITS
+#define RL_MAX_BITS 8
+#endif
+
+/* Most landmarks reported per frame (size of the result array). */
+#ifndef RL_MAX_LANDMARKS
+#define RL_MAX_LANDMARKS 64
+#endif
+
+/* Most candidate landmark regions (CLRs) examined per frame. */
+#ifndef RL_MAX_CANDIDATES
+#define RL_MAX_CANDIDATES 256
+#endif
+
+/* Most connected dark regions kept per frame after speck removal. */
+#ifndef RL_MAX_REGIONS
+#define RL_MAX_REGIONS 4096
+#endif
+
+/* Side of the square identification templates in pixels. */
+#ifndef RL_TEMPLATE_SIZE
+#define RL_TEMPLATE_SIZE 48
+#endif
+
+/* Most landmarks in one map. */
+#ifndef RL_MAX_MAP_LANDMARKS
+#define RL_MAX_MAP_LANDMARKS 256
+#endif
+
+#endif

@@ -1,0 +1,46 @@
+/* rl_png: PNG files in and out for the host build (libpng).
+ *
+ * Reading turns any PNG (1/2/4/8/16-bit gray, gray+alpha, RGB, RGBA,
+ * palette) into an 8-bit luminance image, as the paper does with colour:
+ * Y = 0.299 R + 0.587 G + 0.114 B, alpha dropped, 16-bit scaled to 8.
+ * Host code owns the pixels it reads (malloc); free them with
+ * rl_png_free. The core never sees this module.
+ *
+ *   rl_image img;
+ *   char err[256];
+ *   if (rl_png_read_gray("a.png", &img, err, sizeof err) != RL_OK) {
+ *       fprintf(stderr, "ringloc: %s\n", err);  // "a.png: not a PNG file"
+ *   }
+ *   ...
+ *   rl_png_free(&img);
+ */
+#ifndef RL_PNG_H
+#define RL_PNG_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "rl_config.h"
+#include "rl_image.h"
+
+/* Largest width or height read; bigger files are refused before decoding. */
+#define RL_PNG_MAX_DIM RL_MAX_IMAGE_DIM
+
+/* Read `path` as 8-bit luminance into a new buffer (stride = width).
+ * On failure *out is zeroed and err holds one line naming the file:
+ * RL_ENOTFOUND/RL_EIO (cannot open/read), RL_EFORMAT (empty, not PNG,
+ * corrupt, truncated), RL_ELIMIT (larger than RL_PNG_MAX_DIM),
+ * RL_ENOMEM (out of memory). */
+RL_CHECK rl_err rl_png_read_gray(const char *path, rl_image *out, char *err, size_t errlen);
+
+/* Free pixels from rl_png_read_gray and zero the view. */
+void rl_png_free(rl_image *img);
+
+/* Write an 8-bit gray image (stride honoured). */
+RL_CHECK rl_err rl_png_write_gray(const char *path, const rl_image *img, char *err,
+                                  size_t errlen);
+
+/* Write a packed 8-bit RGB image (3*w bytes per row). */
+RL_CHECK rl_err rl_png_write_rgb(const char *path, int w, int h, const uint8_t *rgb,
+                                 char *err, size_t errlen);
+
+#endif
