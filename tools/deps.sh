@@ -41,6 +41,7 @@ need_pkg libyaml-dev pc yaml-0.1
 need_pkg libcairo2-dev pc cairo
 need_pkg libopencv-dev pc opencv4
 need_pkg libapriltag-dev pc apriltag
+need_pkg poppler-utils have pdftoppm
 
 [ -z "$missing" ] && exit 0
 

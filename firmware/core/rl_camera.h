@@ -1,0 +1,32 @@
+/* rl_camera: pinhole camera intrinsics with plumb_bob or rational
+ * distortion (OpenCV / ROS camera_info conventions).
+ *
+ *   rl_camera cam;
+ *   rl_camera_defaults(&cam, 640, 480, 70.0 * M_PI / 180);  // ideal lens
+ */
+#ifndef RL_CAMERA_H
+#define RL_CAMERA_H
+
+#include "rl_error.h"
+
+typedef enum {
+    RL_DIST_NONE = 0,      /* ideal pinhole */
+    RL_DIST_PLUMB_BOB = 5, /* k1 k2 p1 p2 k3 */
+    RL_DIST_RATIONAL = 8   /* k1 k2 p1 p2 k3 k4 k5 k6 */
+} rl_dist_model;
+
+typedef struct {
+    int width, height;      /* image size the calibration is for */
+    double fx, fy, cx, cy;  /* camera matrix, pixels (pixel centres at integers) */
+    rl_dist_model model;
+    double k[8];            /* distortion in OpenCV order; unused ones 0 */
+} rl_camera;
+
+/* An ideal camera of the given size and horizontal field of view
+ * (radians), principal point at the image centre. */
+void rl_camera_defaults(rl_camera *cam, int width, int height, double hfov);
+
+/* RL_OK if sizes and focal lengths are positive and finite. */
+RL_CHECK rl_err rl_camera_check(const rl_camera *cam);
+
+#endif

@@ -1,0 +1,38 @@
+/* rl_map: the landmark map: which ids hang where on the ceiling.
+ *
+ * Map frame per shared/landmark-spec.md (metres, REP-103). Filled by the
+ * host's YAML loader or by firmware configuration; the core only reads it.
+ *
+ *   int i = rl_map_find(&map, 25);
+ *   if (i >= 0) use(map.lm[i].x, map.lm[i].y);
+ */
+#ifndef RL_MAP_H
+#define RL_MAP_H
+
+#include "rl_config.h"
+#include "rl_error.h"
+#include "rl_family.h"
+
+typedef struct {
+    int id;      /* landmark id in the map's family */
+    double x, y; /* centre on the ceiling, map frame, metres */
+} rl_map_landmark;
+
+typedef struct {
+    rl_family family;
+    double diameter;       /* printed outer diameter D, metres */
+    double ceiling_height; /* ceiling above the floor, metres */
+    int count;
+    rl_map_landmark lm[RL_MAX_MAP_LANDMARKS];
+} rl_map;
+
+/* Index of `id` in the map, or -1. */
+int rl_map_find(const rl_map *map, int id);
+
+/* Validate: diameter and height > 0, ids valid in the family and unique.
+ * On failure *bad is the index of the first offending landmark (or -1 for
+ * a map-level field). RL_ERANGE for an invalid id or size, RL_EFORMAT for
+ * a duplicate. */
+RL_CHECK rl_err rl_map_check(const rl_map *map, int *bad);
+
+#endif

@@ -1,0 +1,49 @@
+/* ringloc: the host command line. One binary, one subcommand per job;
+ * every subcommand feeds files through the same core as the firmware. */
+#include <stdio.h>
+#include <string.h>
+#include "rl_cli.h"
+
+typedef struct {
+    const char *name;
+    int (*run)(int argc, char **argv);
+    const char *summary;
+} command;
+
+static const command commands[] = {
+    {"gen", rl_cmd_gen, "print-ready landmarks (PDF, SVG, PNG) for ids or a whole map"},
+    {"plan", rl_cmd_plan, "choose family, diameter and grid pitch for a site; write a map"},
+};
+
+static void usage(FILE *out)
+{
+    size_t i;
+    fprintf(out, "usage: ringloc COMMAND [OPTIONS]\n\n"
+                 "Self-localization from ring-coded ceiling landmarks.\n\ncommands:\n");
+    for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        fprintf(out, "  %-10s %s\n", commands[i].name, commands[i].summary);
+    fprintf(out, "\n'ringloc COMMAND --help' describes a command's options.\n");
+}
+
+int main(int argc, char **argv)
+{
+    size_t i;
+    if (argc < 2) {
+        usage(stderr);
+        return RL_EXIT_USAGE;
+    }
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
+        strcmp(argv[1], "help") == 0) {
+        usage(stdout);
+        return 0;
+    }
+    if (strcmp(argv[1], "--version") == 0) {
+        printf("ringloc %s\n", RL_VERSION);
+        return 0;
+    }
+    for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        if (strcmp(argv[1], commands[i].name) == 0)
+            return commands[i].run(argc - 1, argv + 1);
+    fprintf(stderr, "ringloc: unknown command '%s' (try 'ringloc --help')\n", argv[1]);
+    return RL_EXIT_USAGE;
+}

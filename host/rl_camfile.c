@@ -1,0 +1,152 @@
+#include "rl_camfile.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+#include "rl_yaml.h"
+
+/* Read a matrix node {rows, cols, data: [...]} (ROS and OpenCV share this
+ * shape). *count gets the number of values; want_min..want_max bound it. */
+static rl_err read_matrix(rl_yaml *y, yaml_node_t *root, const char *key, double *vals,
+                          int want_min, int want_max, int *count, char *err, size_t errlen)
+{
+    yaml_node_t *m = rl_yaml_get(y, root, key), *data;
+    int i, n, rows = -1, cols = -1;
+    char label[64];
+    rl_err e;
+    if (m == NULL)
+        return rl_yaml_fail(y, root, key, RL_EFORMAT, err, errlen, "missing key");
+    data = m->type == YAML_MAPPING_NODE ? rl_yaml_get(y, m, "data") : m;
+    n = rl_yaml_len(data);
+    if (n < 0)
+        return rl_yaml_fail(y, m, key, RL_EFORMAT, err, errlen,
+                            "expected {rows, cols, data: [...]}");
+    if (m->type == YAML_MAPPING_NODE) {
+        snprintf(label, sizeof label, "%s.rows", key);
+        if ((e = rl_yaml_int(y, m, "rows", label, 0, &rows, err, errlen)) != RL_OK)
+            return e;
+        snprintf(label, sizeof label, "%s.cols", key);
+        if ((e = rl_yaml_int(y, m, "cols", label, 0, &cols, err, errlen)) != RL_OK)
+            return e;
+        if (rows >= 0 && cols >= 0 && rows * cols != n)
+            return rl_yaml_fail(y, m, key, RL_EFORMAT, err, errlen,
+                                "rows x cols is %dx%d but data has %d values", rows, cols, n);
+    }
+    if (n < want_min || n > want_max) {
+        if (want_min == want_max)
+            return rl_yaml_fail(y, m, key, RL_EFORMAT, err, errlen,
+                                "expected %d values, got %d", want_min, n);
+        return rl_yaml_fail(y, m, key, RL_EFORMAT, err, errlen,
+                            "expected %d to %d values, got %d", want_min, want_max, n);
+    }
+    for (i = 0; i < n; i++) {
+        yaml_node_t *it = rl_yaml_item(y, data, i);
+        if (!rl_yaml_parse_double(rl_yaml_text(it), &vals[i])) {
+            snprintf(label, sizeof label, "%s.data[%d]", key, i);
+            return rl_yaml_fail(y, it, label, RL_EFORMAT, err, errlen, "expected a number");
+        }
+    }
+    *count = n;
+    return RL_OK;
+}
+
+rl_err rl_camfile_load(const char *path, rl_camera *cam, char *err, size_t errlen)
+{
+    rl_yaml y;
+    yaml_node_t *root;
+    double K[9], D[14];
+    const char *model = NULL;
+    int nk, nd = 0, i;
+    rl_err e;
+
+    memset(cam, 0, sizeof *cam);
+    e = rl_yaml_load(&y, path, err, errlen);
+    if (e != RL_OK)
+        return e;
+    root = rl_yaml_root(&y);
+    if (root->type != YAML_MAPPING_NODE) {
+        e = rl_yaml_fail(&y, root, "calibration", RL_EFORMAT, err, errlen,
+                         "expected a ROS camera_info or OpenCV calibration mapping");
+        goto out;
+    }
+    if ((e = rl_yaml_int(&y, root, "image_width", NULL, 1, &cam->width, err, errlen)) != RL_OK ||
+        (e = rl_yaml_int(&y, root, "image_height", NULL, 1, &cam->height, err, errlen)) != RL_OK)
+        goto out;
+    if (cam->width <= 0 || cam->height <= 0) {
+        e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "image_width"), "image_width", RL_ERANGE,
+                         err, errlen, "image size %dx%d is not positive", cam->width, cam->height);
+        goto out;
+    }
+    if ((e = read_matrix(&y, root, "camera_matrix", K, 9, 9, &nk, err, errlen)) != RL_OK)
+        goto out;
+    if ((e = rl_yaml_string(&y, root, "distortion_model", NULL, 0, &model, err, errlen)) != RL_OK)
+        goto out;
+    if (rl_yaml_get(&y, root, "distortion_coefficients") != NULL) {
+        if ((e = read_matrix(&y, root, "distortion_coefficients", D, 0, 14, &nd, err, errlen)) !=
+            RL_OK)
+            goto out;
+    }
+    cam->fx = K[0];
+    cam->cx = K[2];
+    cam->fy = K[4];
+    cam->cy = K[5];
+    if (K[1] != 0.0 || K[3] != 0.0 || K[6] != 0.0 || K[7] != 0.0 || K[8] != 1.0) {
+        e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "camera_matrix"), "camera_matrix",
+                         RL_EFORMAT, err, errlen, "expected [fx 0 cx; 0 fy cy; 0 0 1]");
+        goto out;
+    }
+    if (model != NULL && strcmp(model, "plumb_bob") != 0 &&
+        strcmp(model, "rational_polynomial") != 0) {
+        e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "distortion_model"), "distortion_model",
+                         RL_EUNSUPPORTED, err, errlen,
+                         "'%s' is not supported (plumb_bob or rational_polynomial)", model);
+        goto out;
+    }
+    if (model != NULL && strcmp(model, "rational_polynomial") == 0 ? nd != 8
+        : model != NULL ? nd != 5
+                        : !(nd == 0 || nd == 4 || nd == 5 || nd == 8)) {
+        e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "distortion_coefficients"),
+                         "distortion_coefficients", RL_EFORMAT, err, errlen,
+                         "%d coefficients do not fit %s (plumb_bob 5, rational_polynomial 8)",
+                         nd, model ? model : "any model");
+        goto out;
+    }
+    for (i = 0; i < nd; i++)
+        cam->k[i] = D[i];
+    cam->model = nd == 8 ? RL_DIST_RATIONAL : nd > 0 ? RL_DIST_PLUMB_BOB : RL_DIST_NONE;
+    if (rl_camera_check(cam) != RL_OK) {
+        e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "camera_matrix"), "camera_matrix", RL_ERANGE,
+                         err, errlen, "focal lengths must be positive");
+        goto out;
+    }
+out:
+    rl_yaml_free(&y);
+    return e;
+}
+
+rl_err rl_camfile_save(const char *path, const rl_camera *cam, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "w");
+    int i, n = cam->model == RL_DIST_RATIONAL ? 8 : 5;
+    if (f == NULL) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        return RL_EIO;
+    }
+    fprintf(f, "image_width: %d\nimage_height: %d\ncamera_name: ringloc\n", cam->width,
+            cam->height);
+    fprintf(f, "camera_matrix:\n  rows: 3\n  cols: 3\n  data: [%.9g, 0, %.9g, 0, %.9g, %.9g, 0, 0, 1]\n",
+            cam->fx, cam->cx, cam->fy, cam->cy);
+    fprintf(f, "distortion_model: %s\n", n == 8 ? "rational_polynomial" : "plumb_bob");
+    fprintf(f, "distortion_coefficients:\n  rows: 1\n  cols: %d\n  data: [", n);
+    for (i = 0; i < n; i++)
+        fprintf(f, "%s%.9g", i ? ", " : "", cam->k[i]);
+    fprintf(f, "]\n");
+    fprintf(f, "rectification_matrix:\n  rows: 3\n  cols: 3\n  data: [1, 0, 0, 0, 1, 0, 0, 0, 1]\n");
+    fprintf(f, "projection_matrix:\n  rows: 3\n  cols: 4\n  data: [%.9g, 0, %.9g, 0, 0, %.9g, %.9g, 0, 0, 0, 1, 0]\n",
+            cam->fx, cam->cx, cam->fy, cam->cy);
+    if (ferror(f) | (fclose(f) != 0)) {
+        snprintf(err, errlen, "%s: write failed", path);
+        return RL_EIO;
+    }
+    return RL_OK;
+}

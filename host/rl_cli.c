@@ -1,0 +1,56 @@
+#include "rl_cli.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+int rl_cli_fail(const char *cmd, int code, const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "ringloc %s: ", cmd);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    return code;
+}
+
+int rl_cli_double(const char *cmd, const char *opt, const char *s, double *out)
+{
+    char *end;
+    double v;
+    errno = 0;
+    v = strtod(s, &end);
+    if (end == s || *end != '\0' || errno == ERANGE || !isfinite(v)) {
+        rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: '%s' is not a number", opt, s);
+        return 0;
+    }
+    *out = v;
+    return 1;
+}
+
+int rl_cli_int(const char *cmd, const char *opt, const char *s, int *out)
+{
+    char *end;
+    long v;
+    errno = 0;
+    v = strtol(s, &end, 10);
+    if (end == s || *end != '\0' || errno == ERANGE || v < -2147483647L || v > 2147483647L) {
+        rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: '%s' is not an integer", opt, s);
+        return 0;
+    }
+    *out = (int)v;
+    return 1;
+}
+
+int rl_cli_size(const char *cmd, const char *opt, const char *s, int *w, int *h)
+{
+    char tail;
+    if (sscanf(s, "%dx%d%c", w, h, &tail) != 2 || *w <= 0 || *h <= 0) {
+        rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: '%s' is not a size like 640x480", opt, s);
+        return 0;
+    }
+    return 1;
+}

@@ -1,0 +1,118 @@
+#include "rl_mapfile.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+#include "rl_yaml.h"
+
+rl_err rl_mapfile_load(const char *path, rl_map *map, char *err, size_t errlen)
+{
+    rl_yaml y;
+    yaml_node_t *root, *seq;
+    const char *fam = NULL;
+    char label[64];
+    rl_err e;
+    int i, n, bad;
+
+    memset(map, 0, sizeof *map);
+    e = rl_yaml_load(&y, path, err, errlen);
+    if (e != RL_OK)
+        return e;
+    root = rl_yaml_root(&y);
+    if (root->type != YAML_MAPPING_NODE) {
+        e = rl_yaml_fail(&y, root, "map", RL_EFORMAT, err, errlen,
+                         "expected a mapping with family, diameter, ceiling_height, landmarks");
+        goto out;
+    }
+    if ((e = rl_yaml_string(&y, root, "family", NULL, 1, &fam, err, errlen)) != RL_OK)
+        goto out;
+    e = rl_family_parse(fam, &map->family);
+    if (e != RL_OK) {
+        e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "family"), "family", e, err, errlen,
+                         "'%s' is not a family (ring2 .. ring%d)", fam, RL_MAX_BITS);
+        goto out;
+    }
+    if ((e = rl_yaml_double(&y, root, "diameter", NULL, 1, &map->diameter, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double(&y, root, "ceiling_height", NULL, 1, &map->ceiling_height, err,
+                            errlen)) != RL_OK)
+        goto out;
+    if (!(map->diameter > 0.0) || map->diameter > 5.0) {
+        e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "diameter"), "diameter", RL_ERANGE, err,
+                         errlen, "%g m is not a printable diameter (0 .. 5 m)", map->diameter);
+        goto out;
+    }
+    if (!(map->ceiling_height > 0.0)) {
+        e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "ceiling_height"), "ceiling_height",
+                         RL_ERANGE, err, errlen, "must be positive");
+        goto out;
+    }
+    seq = rl_yaml_get(&y, root, "landmarks");
+    n = rl_yaml_len(seq);
+    if (n < 0) {
+        e = rl_yaml_fail(&y, seq ? seq : root, "landmarks", RL_EFORMAT, err, errlen,
+                         seq ? "expected a list of {id, x, y}" : "missing key");
+        goto out;
+    }
+    if (n > RL_MAX_MAP_LANDMARKS) {
+        e = rl_yaml_fail(&y, seq, "landmarks", RL_ELIMIT, err, errlen,
+                         "%d landmarks, more than the %d this build holds (RL_MAX_MAP_LANDMARKS)",
+                         n, RL_MAX_MAP_LANDMARKS);
+        goto out;
+    }
+    for (i = 0; i < n; i++) {
+        yaml_node_t *item = rl_yaml_item(&y, seq, i);
+        rl_map_landmark *lm = &map->lm[i];
+        snprintf(label, sizeof label, "landmarks[%d]", i);
+        if (item == NULL || item->type != YAML_MAPPING_NODE) {
+            e = rl_yaml_fail(&y, item, label, RL_EFORMAT, err, errlen, "expected {id, x, y}");
+            goto out;
+        }
+        snprintf(label, sizeof label, "landmarks[%d].id", i);
+        if ((e = rl_yaml_int(&y, item, "id", label, 1, &lm->id, err, errlen)) != RL_OK)
+            goto out;
+        snprintf(label, sizeof label, "landmarks[%d].x", i);
+        if ((e = rl_yaml_double(&y, item, "x", label, 1, &lm->x, err, errlen)) != RL_OK)
+            goto out;
+        snprintf(label, sizeof label, "landmarks[%d].y", i);
+        if ((e = rl_yaml_double(&y, item, "y", label, 1, &lm->y, err, errlen)) != RL_OK)
+            goto out;
+        map->count = i + 1;
+    }
+    e = rl_map_check(map, &bad);
+    if (e != RL_OK && bad >= 0) {
+        yaml_node_t *item = rl_yaml_item(&y, seq, bad);
+        snprintf(label, sizeof label, "landmarks[%d].id", bad);
+        if (e == RL_ERANGE)
+            rl_yaml_fail(&y, item, label, e, err, errlen, "id %d is not in %s (1 .. %d)",
+                         map->lm[bad].id, fam, rl_family_count(&map->family));
+        else
+            rl_yaml_fail(&y, item, label, e, err, errlen, "duplicate id %d", map->lm[bad].id);
+    } else if (e != RL_OK) {
+        rl_yaml_fail(&y, root, "map", e, err, errlen, "%s", rl_strerror(e));
+    }
+out:
+    rl_yaml_free(&y);
+    return e;
+}
+
+rl_err rl_mapfile_save(const char *path, const rl_map *map, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "w");
+    int i;
+    if (f == NULL) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        return RL_EIO;
+    }
+    fprintf(f, "family: ring%d          # shared/landmark-spec.md\n", map->family.bits);
+    fprintf(f, "diameter: %.4f        # printed outer diameter, metres\n", map->diameter);
+    fprintf(f, "ceiling_height: %.4f  # ceiling above the floor, metres\n", map->ceiling_height);
+    fprintf(f, "landmarks:\n");
+    for (i = 0; i < map->count; i++)
+        fprintf(f, "  - {id: %d, x: %.4f, y: %.4f}\n", map->lm[i].id, map->lm[i].x,
+                map->lm[i].y);
+    if (ferror(f) | (fclose(f) != 0)) {
+        snprintf(err, errlen, "%s: write failed", path);
+        return RL_EIO;
+    }
+    return RL_OK;
+}

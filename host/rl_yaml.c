@@ -1,0 +1,216 @@
+#include "rl_yaml.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Largest configuration file read; ringloc's files are a few kB. */
+#define RL_YAML_MAX_BYTES (4L << 20)
+
+rl_err rl_yaml_load(rl_yaml *y, const char *path, char *err, size_t errlen)
+{
+    FILE *f;
+    yaml_parser_t parser;
+    char *text;
+    long n;
+    int ok;
+    memset(y, 0, sizeof *y);
+    y->path = path;
+    f = fopen(path, "rb");
+    if (f == NULL) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        return errno == ENOENT ? RL_ENOTFOUND : RL_EIO;
+    }
+    text = (char *)malloc(RL_YAML_MAX_BYTES + 1);
+    if (text == NULL) {
+        fclose(f);
+        snprintf(err, errlen, "%s: out of memory", path);
+        return RL_ENOMEM;
+    }
+    n = (long)fread(text, 1, RL_YAML_MAX_BYTES + 1, f);
+    if (ferror(f) || n > RL_YAML_MAX_BYTES) {
+        snprintf(err, errlen, "%s: %s", path, n > RL_YAML_MAX_BYTES ? "file too large for a configuration file" : strerror(errno));
+        free(text);
+        fclose(f);
+        return RL_EIO;
+    }
+    fclose(f);
+    text[n] = '\0';
+    /* OpenCV FileStorage writes "%YAML:1.0", which is not a YAML 1.1
+     * directive: blank that line so the rest parses as ordinary YAML. */
+    if (strncmp(text, "%YAML:", 6) == 0) {
+        long i;
+        for (i = 0; i < n && text[i] != '\n'; i++)
+            text[i] = ' ';
+        text[0] = '#';
+    }
+    if (!yaml_parser_initialize(&parser)) {
+        free(text);
+        snprintf(err, errlen, "%s: out of memory", path);
+        return RL_ENOMEM;
+    }
+    yaml_parser_set_input_string(&parser, (const unsigned char *)text, (size_t)n);
+    ok = yaml_parser_load(&parser, &y->doc);
+    if (!ok) {
+        snprintf(err, errlen, "%s:%lu: malformed YAML: %s", path,
+                 (unsigned long)parser.problem_mark.line + 1,
+                 parser.problem ? parser.problem : "parse error");
+        yaml_parser_delete(&parser);
+        free(text);
+        return RL_EFORMAT;
+    }
+    yaml_parser_delete(&parser);
+    free(text);
+    y->loaded = 1;
+    if (yaml_document_get_root_node(&y->doc) == NULL) {
+        snprintf(err, errlen, "%s: empty file, expected a YAML mapping", path);
+        rl_yaml_free(y);
+        return RL_EFORMAT;
+    }
+    return RL_OK;
+}
+
+void rl_yaml_free(rl_yaml *y)
+{
+    if (y->loaded)
+        yaml_document_delete(&y->doc);
+    y->loaded = 0;
+}
+
+yaml_node_t *rl_yaml_root(rl_yaml *y)
+{
+    return y->loaded ? yaml_document_get_root_node(&y->doc) : NULL;
+}
+
+yaml_node_t *rl_yaml_get(rl_yaml *y, yaml_node_t *map, const char *key)
+{
+    yaml_node_pair_t *p;
+    if (map == NULL || map->type != YAML_MAPPING_NODE)
+        return NULL;
+    for (p = map->data.mapping.pairs.start; p < map->data.mapping.pairs.top; p++) {
+        yaml_node_t *k = yaml_document_get_node(&y->doc, p->key);
+        if (k && k->type == YAML_SCALAR_NODE && strcmp((const char *)k->data.scalar.value, key) == 0)
+            return yaml_document_get_node(&y->doc, p->value);
+    }
+    return NULL;
+}
+
+int rl_yaml_len(yaml_node_t *seq)
+{
+    if (seq == NULL || seq->type != YAML_SEQUENCE_NODE)
+        return -1;
+    return (int)(seq->data.sequence.items.top - seq->data.sequence.items.start);
+}
+
+yaml_node_t *rl_yaml_item(rl_yaml *y, yaml_node_t *seq, int i)
+{
+    if (i < 0 || i >= rl_yaml_len(seq))
+        return NULL;
+    return yaml_document_get_node(&y->doc, seq->data.sequence.items.start[i]);
+}
+
+const char *rl_yaml_text(yaml_node_t *node)
+{
+    if (node == NULL || node->type != YAML_SCALAR_NODE)
+        return NULL;
+    return (const char *)node->data.scalar.value;
+}
+
+rl_err rl_yaml_fail(rl_yaml *y, yaml_node_t *node, const char *key, rl_err code, char *err,
+                    size_t errlen, const char *fmt, ...)
+{
+    char what[256];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    if (node != NULL)
+        snprintf(err, errlen, "%s:%lu: %s: %s", y->path,
+                 (unsigned long)node->start_mark.line + 1, key, what);
+    else
+        snprintf(err, errlen, "%s: %s: %s", y->path, key, what);
+    return code;
+}
+
+int rl_yaml_parse_double(const char *s, double *out)
+{
+    char *end;
+    double v;
+    if (s == NULL || *s == '\0')
+        return 0;
+    errno = 0;
+    v = strtod(s, &end);
+    if (end == s || *end != '\0' || errno == ERANGE || !isfinite(v))
+        return 0;
+    *out = v;
+    return 1;
+}
+
+static yaml_node_t *lookup(rl_yaml *y, yaml_node_t *map, const char *key, const char *label,
+                           int required, rl_err *e, char *err, size_t errlen)
+{
+    yaml_node_t *n = rl_yaml_get(y, map, key);
+    *e = RL_OK;
+    if (n == NULL && required)
+        *e = rl_yaml_fail(y, map, label, RL_EFORMAT, err, errlen, "missing key");
+    return n;
+}
+
+rl_err rl_yaml_double(rl_yaml *y, yaml_node_t *map, const char *key, const char *label,
+                      int required, double *out, char *err, size_t errlen)
+{
+    rl_err e;
+    yaml_node_t *n;
+    label = label ? label : key;
+    n = lookup(y, map, key, label, required, &e, err, errlen);
+    if (n == NULL)
+        return e;
+    if (!rl_yaml_parse_double(rl_yaml_text(n), out))
+        return rl_yaml_fail(y, n, label, RL_EFORMAT, err, errlen, "expected a number, got %s%s%s",
+                            rl_yaml_text(n) ? "'" : "", rl_yaml_text(n) ? rl_yaml_text(n) : "a list or mapping",
+                            rl_yaml_text(n) ? "'" : "");
+    return RL_OK;
+}
+
+rl_err rl_yaml_int(rl_yaml *y, yaml_node_t *map, const char *key, const char *label,
+                   int required, int *out, char *err, size_t errlen)
+{
+    rl_err e;
+    yaml_node_t *n;
+    const char *s;
+    char *end;
+    long v;
+    label = label ? label : key;
+    n = lookup(y, map, key, label, required, &e, err, errlen);
+    if (n == NULL)
+        return e;
+    s = rl_yaml_text(n);
+    errno = 0;
+    v = s ? strtol(s, &end, 10) : 0;
+    if (s == NULL || *s == '\0' || *end != '\0' || errno == ERANGE || v < -2147483647L ||
+        v > 2147483647L)
+        return rl_yaml_fail(y, n, label, RL_EFORMAT, err, errlen,
+                            "expected an integer, got %s%s%s", s ? "'" : "",
+                            s ? s : "a list or mapping", s ? "'" : "");
+    *out = (int)v;
+    return RL_OK;
+}
+
+rl_err rl_yaml_string(rl_yaml *y, yaml_node_t *map, const char *key, const char *label,
+                      int required, const char **out, char *err, size_t errlen)
+{
+    rl_err e;
+    yaml_node_t *n;
+    label = label ? label : key;
+    n = lookup(y, map, key, label, required, &e, err, errlen);
+    if (n == NULL)
+        return e;
+    if (rl_yaml_text(n) == NULL)
+        return rl_yaml_fail(y, n, label, RL_EFORMAT, err, errlen,
+                            "expected a text value, got a list or mapping");
+    *out = rl_yaml_text(n);
+    return RL_OK;
+}

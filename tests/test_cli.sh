@@ -1,0 +1,78 @@
+#!/bin/sh
+# Command-line behaviour as a user meets it: --help, exit codes, and one
+# clear error line naming the option or file for every kind of bad input.
+# usage: test_cli.sh RINGLOC TMPDIR
+set -u
+R=$1
+T=$2
+mkdir -p "$T"
+pass=0
+fail=0
+
+# expect RC PATTERN -- command...: exit code RC and, for errors, exactly one
+# stderr line matching PATTERN.
+expect() {
+    want_rc=$1; pattern=$2; shift 3
+    "$@" >"$T/out" 2>"$T/err"
+    rc=$?
+    lines=$(grep -c . "$T/err")
+    if [ "$rc" != "$want_rc" ] || ! grep -qE -- "$pattern" "$T/err" "$T/out" ||
+        { [ "$want_rc" != 0 ] && [ "$lines" != 1 ]; }; then
+        echo "FAIL: $* -> rc $rc (want $want_rc), stderr:"; cat "$T/err"
+        fail=$((fail + 1))
+    else
+        pass=$((pass + 1))
+    fi
+}
+
+expect 0 'usage: ringloc COMMAND' -- "$R" --help
+expect 2 "unknown command 'frobnicate'" -- "$R" frobnicate
+expect 0 'usage: ringloc gen' -- "$R" gen --help
+expect 0 'usage: ringloc plan' -- "$R" plan --help
+
+# gen: bad ids, families, sizes, papers, files
+expect 2 '--id: 31 is not in ring5 \(valid ids 1 .. 30\)' -- "$R" gen --id 31 --pdf "$T/x.pdf"
+expect 2 '--id: 0 is not in ring5' -- "$R" gen --id 0 --pdf "$T/x.pdf"
+expect 2 "--id: '3,x' is not a list of ids" -- "$R" gen --id 3,x --pdf "$T/x.pdf"
+expect 2 "--family: 'ring9' is not a family" -- "$R" gen --family ring9 --id 3 --pdf "$T/x.pdf"
+expect 2 "--family: 'ring1' is not a family" -- "$R" gen --family ring1 --id 1 --pdf "$T/x.pdf"
+expect 2 '--diameter: 0.300 m cannot be printed on a4' -- "$R" gen --id 3 --diameter 0.3 --pdf "$T/x.pdf"
+expect 2 '--diameter: 0.005 m cannot be printed' -- "$R" gen --id 3 --diameter 0.005 --pdf "$T/x.pdf"
+expect 2 "--diameter: 'abc' is not a number" -- "$R" gen --id 3 --diameter abc --pdf "$T/x.pdf"
+expect 2 "--paper: unknown paper 'b5'" -- "$R" gen --id 3 --paper b5 --pdf "$T/x.pdf"
+expect 2 '--px: 5 is outside' -- "$R" gen --id 3 --png "$T/x.png" --px 5
+expect 2 'nothing to write' -- "$R" gen --id 3
+expect 2 'either --id or --map' -- "$R" gen --pdf "$T/x.pdf"
+expect 1 '/nonexistent/dir/x.pdf' -- "$R" gen --id 3 --diameter 0.15 --pdf /nonexistent/dir/x.pdf
+expect 1 "$T/nomap.yaml: No such file" -- "$R" gen --map "$T/nomap.yaml" --pdf "$T/x.pdf"
+printf 'family: ring5\ndiameter: 0.2\nceiling_height: 2.5\nlandmarks:\n  - {id: 3, x: 0, y: 0}\n  - {id: 40, x: 1, y: 0}\n' >"$T/badid.yaml"
+expect 1 "badid.yaml:6: landmarks\[1\].id: id 40 is not in ring5" -- "$R" gen --map "$T/badid.yaml" --pdf "$T/x.pdf"
+printf 'family: ring5\ndiameter: 0.2\nceiling_height: 2.5\nlandmarks:\n  - {id: 3, x: 0, y: 0}\n  - {id: 3, x: 1, y: 0}\n' >"$T/dup.yaml"
+expect 1 "dup.yaml:6: landmarks\[1\].id: duplicate id 3" -- "$R" gen --map "$T/dup.yaml" --pdf "$T/x.pdf"
+printf 'family: ring5\ndiameter: 0.2\nlandmarks: []\n' >"$T/nokey.yaml"
+expect 1 "nokey.yaml:1: ceiling_height: missing key" -- "$R" gen --map "$T/nokey.yaml" --pdf "$T/x.pdf"
+printf 'family: ring5\ndiameter: [0.2\n' >"$T/broken.yaml"
+expect 1 "broken.yaml:[0-9]+: malformed YAML" -- "$R" gen --map "$T/broken.yaml" --pdf "$T/x.pdf"
+printf 'family: ring5\ndiameter: 0.2\nceiling_height: 2.5\nlandmarks:\n  - {id: 3, x: zero, y: 0}\n' >"$T/nan.yaml"
+expect 1 "nan.yaml:5: landmarks\[0\].x: expected a number, got 'zero'" -- "$R" gen --map "$T/nan.yaml" --pdf "$T/x.pdf"
+expect 0 'ringloc gen: 1 landmark' -- "$R" gen --id 25 --diameter 0.15 --pdf "$T/ok.pdf"
+
+# plan
+expect 2 'give --camera FILE, or --hfov' -- "$R" plan --landmarks 30 --distance 1.87
+expect 2 'give --distance' -- "$R" plan --landmarks 30 --hfov 70
+expect 2 '--landmarks: how many' -- "$R" plan --hfov 70 --distance 1.87
+expect 1 'need more than the 254 ids' -- "$R" plan --landmarks 300 --hfov 70 --distance 1.87
+expect 1 'does not fit a4 paper' -- "$R" plan --landmarks 100 --hfov 70 --distance 1.87
+expect 2 "--resolution: '640' is not a size" -- "$R" plan --landmarks 30 --hfov 70 --distance 1.87 --resolution 640
+expect 1 "$T/nocam.yaml: No such file" -- "$R" plan --landmarks 30 --camera "$T/nocam.yaml" --distance 1.87
+printf 'image_width: 640\nimage_height: 480\ncamera_matrix: {rows: 3, cols: 3, data: [457, 0, 319.5, 0, 457, 239.5, 0, 0]}\n' >"$T/badcam.yaml"
+expect 1 'badcam.yaml:3: camera_matrix: rows x cols is 3x3 but data has 8 values' -- "$R" plan --landmarks 30 --camera "$T/badcam.yaml" --distance 1.87
+printf 'image_width: 640\nimage_height: 480\ncamera_matrix: {rows: 3, cols: 3, data: [457, 0, 319.5, 0, 457, 239.5, 0, 0, 1]}\ndistortion_model: plumb_bob\ndistortion_coefficients: {rows: 1, cols: 5, data: [0, 0, 0, 0, 0]}\n' >"$T/cam.yaml"
+expect 0 'family +ring5' -- "$R" plan --landmarks 30 --camera "$T/cam.yaml" --distance 1.87
+expect 2 '--grid needs --ceiling-height' -- "$R" plan --hfov 70 --distance 1.87 --grid 3x2 --pitch 0.6
+expect 0 'map +.*plan_map.yaml: 3x2 landmarks' -- "$R" plan --hfov 70 --ceiling-height 2.75 --camera-height 0.88 --grid 3x2 --pitch 0.6 --map-out "$T/plan_map.yaml" --pdf "$T/plan_map.pdf"
+# the written map loads back and prints
+expect 0 'ringloc gen: 6 landmarks of ring3' -- "$R" gen --map "$T/plan_map.yaml" --pdf "$T/plan_map2.pdf"
+
+echo "$pass passed, $fail failed"
+[ "$fail" = 0 ]
