@@ -13,6 +13,7 @@ typedef struct {
 static const command commands[] = {
     {"gen", rl_cmd_gen, "print-ready landmarks (PDF, SVG, PNG) for ids or a whole map"},
     {"plan", rl_cmd_plan, "choose family, diameter and grid pitch for a site; write a map"},
+    {"detect", rl_cmd_detect, "recognize landmarks in PNG images (JSON lines)"},
 };
 
 static void usage(FILE *out)

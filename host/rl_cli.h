@@ -30,5 +30,6 @@ int rl_cli_size(const char *cmd, const char *opt, const char *s, int *w, int *h)
 /* Subcommands: argv[0] is the subcommand's name. */
 int rl_cmd_gen(int argc, char **argv);
 int rl_cmd_plan(int argc, char **argv);
+int rl_cmd_detect(int argc, char **argv);
 
 #endif

@@ -32,9 +32,20 @@
 #define RL_MAX_REGIONS 4096
 #endif
 
+/* Light-source regions recorded per frame (for the local pass and drawing). */
+#ifndef RL_MAX_LIGHTS
+#define RL_MAX_LIGHTS 32
+#endif
+
+/* Dark runs the labeller holds, as pixels per run: w*h/8 runs is ~1 byte
+ * per pixel of workspace and 80 dark segments per 640-pixel row. */
+#ifndef RL_PIXELS_PER_RUN
+#define RL_PIXELS_PER_RUN 8
+#endif
+
 /* Side of the square identification templates in pixels. */
 #ifndef RL_TEMPLATE_SIZE
-#define RL_TEMPLATE_SIZE 48
+#define RL_TEMPLATE_SIZE 32
 #endif
 
 /* Most landmarks in one map. */

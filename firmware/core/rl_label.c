@@ -1,0 +1,157 @@
+#include "rl_label.h"
+
+size_t rl_label_bytes(int height, int cap_runs, int cap_regions)
+{
+    /* each slice may be padded up to RL_WS_ALIGN - 1 bytes */
+    return (size_t)cap_runs * (2 * sizeof(uint16_t) + sizeof(int32_t)) +
+           (size_t)(height + 1) * sizeof(int32_t) + (size_t)cap_regions * sizeof(rl_region) +
+           4 * RL_WS_ALIGN;
+}
+
+rl_err rl_label_init(rl_label *lb, rl_ws *ws, int width, int height, int cap_runs,
+                     int cap_regions)
+{
+    rl_err e;
+    if (width <= 0 || height <= 0 || width > 65535 || cap_runs <= 0 || cap_regions <= 0)
+        return RL_EINVAL;
+    lb->width = width;
+    lb->height = height;
+    lb->cap_runs = cap_runs;
+    lb->cap_regions = cap_regions;
+    lb->n_runs = lb->n_regions = lb->overflow = 0;
+    if ((e = rl_ws_alloc(ws, (size_t)cap_runs * sizeof(uint16_t), RL_WS_ALIGN, (void **)&lb->x0)) != RL_OK ||
+        (e = rl_ws_alloc(ws, (size_t)cap_runs * sizeof(uint16_t), RL_WS_ALIGN, (void **)&lb->x1)) != RL_OK ||
+        (e = rl_ws_alloc(ws, (size_t)cap_runs * sizeof(int32_t), RL_WS_ALIGN, (void **)&lb->tag)) != RL_OK ||
+        (e = rl_ws_alloc(ws, (size_t)(height + 1) * sizeof(int32_t), RL_WS_ALIGN, (void **)&lb->row)) != RL_OK ||
+        (e = rl_ws_alloc(ws, (size_t)cap_regions * sizeof(rl_region), RL_WS_ALIGN, (void **)&lb->reg)) != RL_OK)
+        return e;
+    return RL_OK;
+}
+
+static int32_t find(int32_t *p, int32_t a)
+{
+    while (p[a] != a) {
+        p[a] = p[p[a]]; /* path halving */
+        a = p[a];
+    }
+    return a;
+}
+
+static void unite(int32_t *p, int32_t a, int32_t b)
+{
+    a = find(p, a);
+    b = find(p, b);
+    /* the older run stays root: roots are then the first run of a region
+     * in raster order, which keeps region order deterministic */
+    if (a < b)
+        p[b] = a;
+    else if (b < a)
+        p[a] = b;
+}
+
+rl_err rl_label_band(rl_label *lb, const rl_image *img, int lo, int hi, int min_area)
+{
+    int x, y, r, n = 0, prev_start = 0, prev_end = 0;
+    int32_t *p = lb->tag;
+    if (!rl_image_valid(img) || img->width != lb->width || img->height != lb->height)
+        return RL_EINVAL;
+    lb->n_runs = lb->n_regions = lb->overflow = 0;
+    if (lo < 0)
+        lo = 0;
+    for (y = 0; y < img->height; y++) {
+        const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
+        int start = n, j = prev_start;
+        lb->row[y] = n;
+        x = 0;
+        while (x < img->width) {
+            int a;
+            /* unsigned trick: lo <= v < hi  <=>  (v - lo) < (hi - lo) */
+            while (x < img->width && (unsigned)(row[x] - lo) >= (unsigned)(hi - lo))
+                x++;
+            if (x >= img->width)
+                break;
+            a = x;
+            while (x < img->width && (unsigned)(row[x] - lo) < (unsigned)(hi - lo))
+                x++;
+            if (n == lb->cap_runs)
+                return RL_ELIMIT;
+            lb->x0[n] = (uint16_t)a;
+            lb->x1[n] = (uint16_t)(x - 1);
+            p[n] = n;
+            /* 8-connected overlap with the previous row's runs: they are
+             * sorted, so one forward pointer suffices */
+            while (j < prev_end && (int)lb->x1[j] + 1 < a)
+                j++;
+            {
+                int jj = j;
+                while (jj < prev_end && (int)lb->x0[jj] <= x) {
+                    unite(p, n, jj);
+                    jj++;
+                }
+            }
+            n++;
+        }
+        prev_start = start;
+        prev_end = n;
+    }
+    lb->row[img->height] = n;
+    lb->n_runs = n;
+
+    /* The tag array goes through four meanings, one linear pass each; the
+     * root of a region is its first run in raster order (see unite), so a
+     * root is always visited before its members:
+     * 1. tag = the run's root;
+     * 2. roots hold -area, members still their root;
+     * 3. roots hold the encoded region (-2 - index) or -1 if dropped (a
+     *    speck, or past cap_regions), members copy their root's;
+     * 4. tag = region index or -1. */
+    for (r = 0; r < n; r++)
+        p[r] = find(p, r);
+    for (r = 0; r < n; r++) {
+        int len = lb->x1[r] - lb->x0[r] + 1;
+        if (p[r] == r)
+            p[r] = -len;
+        else
+            p[p[r]] -= len;
+    }
+    for (r = 0; r < n; r++) {
+        if (p[r] < 0) {
+            int area = -p[r];
+            if (area < min_area) {
+                p[r] = -1;
+            } else if (lb->n_regions == lb->cap_regions) {
+                lb->overflow++;
+                p[r] = -1;
+            } else {
+                rl_region *g = &lb->reg[lb->n_regions];
+                g->area = 0;
+                g->x0 = g->y0 = 32767;
+                g->x1 = g->y1 = -1;
+                g->sx = g->sy = 0.0;
+                p[r] = -2 - lb->n_regions;
+                lb->n_regions++;
+            }
+        } else {
+            p[r] = p[p[r]];
+        }
+    }
+    for (r = 0; r < n; r++)
+        p[r] = p[r] <= -2 ? -2 - p[r] : -1;
+    for (y = 0; y < img->height; y++)
+        for (r = lb->row[y]; r < lb->row[y + 1]; r++) {
+            rl_region *g;
+            int len;
+            if (p[r] < 0)
+                continue;
+            g = &lb->reg[p[r]];
+            len = lb->x1[r] - lb->x0[r] + 1;
+            g->area += len;
+            if (lb->x0[r] < g->x0) g->x0 = (int16_t)lb->x0[r];
+            if (lb->x1[r] > g->x1) g->x1 = (int16_t)lb->x1[r];
+            if (y < g->y0) g->y0 = (int16_t)y;
+            if (y > g->y1) g->y1 = (int16_t)y;
+            g->sx += 0.5 * (double)(lb->x0[r] + lb->x1[r]) * len;
+            g->sy += (double)y * len;
+        }
+    return RL_OK;
+}

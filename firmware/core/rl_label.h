@@ -1,0 +1,59 @@
+/* rl_label: connected regions of an intensity band, by runs.
+ *
+ * Pixels with lo <= I < hi are collected as horizontal runs row by row and
+ * joined 8-connected with union-find over runs, so no binary or label
+ * image is ever stored: memory is ~8 bytes per run, and a ceiling frame
+ * has far fewer runs than pixels. Regions smaller than min_area (specks)
+ * are dropped. Every array lives in the caller's workspace.
+ *
+ *   rl_label lb;
+ *   if (rl_label_init(&lb, &ws, w, h, max_runs, RL_MAX_REGIONS) == RL_OK &&
+ *       rl_label_band(&lb, &img, 0, threshold, 3) == RL_OK)
+ *       for (i = 0; i < lb.n_regions; i++) use(&lb.reg[i]);
+ */
+#ifndef RL_LABEL_H
+#define RL_LABEL_H
+
+#include <stdint.h>
+#include "rl_error.h"
+#include "rl_image.h"
+#include "rl_workspace.h"
+
+typedef struct {
+    int32_t area;             /* pixels */
+    int16_t x0, y0, x1, y1;   /* bounding box, inclusive */
+    double sx, sy;            /* sums of x and y (centroid = sx / area) */
+} rl_region;
+
+typedef struct {
+    int width, height;
+    int cap_runs, cap_regions;
+    int n_runs, n_regions;
+    int overflow;             /* regions dropped because cap_regions was reached */
+    uint16_t *x0, *x1;        /* run extents, inclusive */
+    int32_t *tag;             /* per run: union-find parent, then region index or -1 */
+    int32_t *row;             /* row y's runs are row[y] .. row[y+1]-1 */
+    rl_region *reg;
+} rl_label;
+
+/* Bytes rl_label_init takes from a workspace for these capacities. */
+size_t rl_label_bytes(int height, int cap_runs, int cap_regions);
+
+/* Carve the arrays from ws. RL_ENOMEM if ws is too small, RL_EINVAL for
+ * bad sizes. */
+RL_CHECK rl_err rl_label_init(rl_label *lb, rl_ws *ws, int width, int height, int cap_runs,
+                              int cap_regions);
+
+/* Label pixels with lo <= I < hi in img (same size as at init). Regions of
+ * fewer than min_area pixels are dropped. RL_ELIMIT if the image has more
+ * runs than cap_runs (a frame of noise); regions past cap_regions are
+ * counted in lb->overflow, not an error. */
+RL_CHECK rl_err rl_label_band(rl_label *lb, const rl_image *img, int lo, int hi, int min_area);
+
+/* Region index of run r, or -1 for a dropped speck. */
+static inline int rl_label_region_of(const rl_label *lb, int r)
+{
+    return lb->tag[r];
+}
+
+#endif

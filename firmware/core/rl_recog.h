@@ -1,0 +1,119 @@
+/* rl_recog: landmark recognition, the paper's bilayer method.
+ *
+ * Global pass over the whole frame: histogram analysis (light sources,
+ * background and foreground levels), K-means clustering into dark regions
+ * of interest (ROIs), connected regions, candidate landmark regions (CLRs:
+ * outer rings found by shape and bounding-box containment), identification
+ * by Pearson correlation (ICLR identified, UCLR not). Local pass (when too
+ * few were identified, or always): UCLRs near a light or on the image
+ * border (DUCLRs) are re-clustered in an enlarged window of the input
+ * frame and identified again, border-cut ones against cut templates.
+ *
+ * Allocation-free: every buffer comes from the block given to
+ * rl_recog_init, whose size rl_recog_workspace_size() tells.
+ *
+ *   rl_recog_config cfg;
+ *   rl_recog_defaults(&cfg);                  // ring5, every id
+ *   size_t need = rl_recog_workspace_size(640, 480, &cfg);
+ *   rl_recog rec;
+ *   if (rl_recog_init(&rec, &cfg, 640, 480, mem, need) != RL_OK) ...
+ *   static rl_result res;                     // large: not on a small stack
+ *   if (rl_recog_run(&rec, &frame, &res) == RL_OK)
+ *       for (i = 0; i < res.n_landmarks; i++) use(&res.landmarks[i]);
+ */
+#ifndef RL_RECOG_H
+#define RL_RECOG_H
+
+#include "rl_config.h"
+#include "rl_error.h"
+#include "rl_family.h"
+#include "rl_hist.h"
+#include "rl_ident.h"
+#include "rl_image.h"
+#include "rl_label.h"
+#include "rl_workspace.h"
+
+typedef enum {
+    RL_LOCAL_AUTO = 0,   /* as the paper: only when fewer than `need` were identified */
+    RL_LOCAL_ALWAYS = 1, /* retry every DUCLR (more landmarks, better pose) */
+    RL_LOCAL_NEVER = 2   /* global pass only */
+} rl_local_policy;
+
+typedef enum { RL_PASS_GLOBAL = 0, RL_PASS_LOCAL = 1 } rl_pass;
+
+typedef struct {
+    rl_family family;     /* landmark family (default ring5) */
+    const int *ids;       /* ids to recognize (a map's); NULL = every id */
+    int n_ids;
+    double min_score;     /* Pearson correlation to accept an id (default 0.80) */
+    double min_margin;    /* lead over the runner-up id (default 0.04) */
+    double min_radius;    /* smallest landmark radius considered, px (default 6) */
+    double max_radius;    /* largest, px; 0 = half the shorter image side */
+    double size_tolerance;/* identified radii within this fraction of the frame's median (0.35) */
+    int need;             /* landmarks a pose needs (default 2) */
+    rl_local_policy local;/* when the local pass runs (default RL_LOCAL_AUTO) */
+    double near_light;    /* DUCLR: gap to a light of at most this many radii (default 1.5) */
+} rl_recog_config;
+
+typedef struct {
+    int x0, y0, x1, y1; /* inclusive bounding box, px */
+} rl_box;
+
+typedef struct {
+    int id;             /* landmark id, -1 for an unidentified candidate */
+    double u, v;        /* centre in the image, px */
+    double radius;      /* outer radius, px */
+    double score;       /* Pearson correlation of the best id */
+    rl_pass pass;       /* which pass identified it */
+    int complete;       /* 0 if the image border cuts it */
+    rl_box box;         /* outer ring's bounding box */
+    double visible;     /* fraction of the disk inside the image */
+} rl_detection;
+
+typedef struct {
+    int width, height;
+    rl_levels levels;   /* histogram analysis and clustering */
+    int n_landmarks;    /* identified (ICLR), in order of u then v */
+    rl_detection landmarks[RL_MAX_LANDMARKS];
+    int n_unidentified; /* UCLR left after both passes */
+    rl_detection unidentified[RL_MAX_CANDIDATES];
+    int n_candidates;   /* CLRs the global pass found */
+    int n_regions;      /* dark regions after speck removal */
+    int n_lights;
+    rl_box lights[RL_MAX_LIGHTS];
+    int local_tried;    /* DUCLRs the local pass retried */
+    int local_found;    /* of those, identified */
+} rl_result;
+
+typedef struct {
+    rl_recog_config cfg;
+    int width, height;
+    int ids[RL_MAX_MAP_LANDMARKS]; /* copy of cfg.ids */
+    rl_ws ws;           /* the caller's block */
+    rl_ident ident;     /* templates, rendered at init */
+    rl_label dark;      /* ROI labelling, reused by every frame and window */
+    rl_label light;     /* light-source labelling */
+    uint8_t *samples;   /* RL_TMPL_PIXELS: a candidate sampled for matching */
+    uint8_t *mask;      /* RL_TMPL_PIXELS: which samples are inside the image */
+} rl_recog;
+
+/* Fill every field with its default (ring5, every id). */
+void rl_recog_defaults(rl_recog_config *cfg);
+
+/* Workspace bytes for frames of w x h with this configuration; 0 if the
+ * configuration is invalid. */
+size_t rl_recog_workspace_size(int w, int h, const rl_recog_config *cfg);
+
+/* Prepare for frames of w x h in mem[0..size). RL_ENOMEM if size is less
+ * than rl_recog_workspace_size(), RL_EINVAL / RL_ERANGE for a bad
+ * configuration (ids outside the family, sizes), RL_ELIMIT for more ids
+ * than RL_MAX_MAP_LANDMARKS. */
+RL_CHECK rl_err rl_recog_init(rl_recog *rec, const rl_recog_config *cfg, int w, int h,
+                              void *mem, size_t size);
+
+/* Recognize the landmarks of one frame (same size as at init; any
+ * stride). RL_EINVAL for a wrong size; RL_ELIMIT when the frame holds more
+ * dark runs than the workspace (a frame of noise). */
+RL_CHECK rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res);
+
+#endif
