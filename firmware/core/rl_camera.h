@@ -29,4 +29,17 @@ void rl_camera_defaults(rl_camera *cam, int width, int height, double hfov);
 /* RL_OK if sizes and focal lengths are positive and finite. */
 RL_CHECK rl_err rl_camera_check(const rl_camera *cam);
 
+/* Apply the distortion model to normalized coordinates (x/z, y/z). */
+void rl_camera_distort(const rl_camera *cam, double x, double y, double *xd, double *yd);
+
+/* Invert the distortion model iteratively (as OpenCV's undistortPoints):
+ * distorted normalized -> ideal normalized. */
+void rl_camera_undistort(const rl_camera *cam, double xd, double yd, double *x, double *y);
+
+/* Normalized ideal coordinates -> pixel (distortion applied). */
+void rl_camera_project(const rl_camera *cam, double x, double y, double *u, double *v);
+
+/* Pixel -> normalized ideal coordinates (distortion removed). */
+void rl_camera_unproject(const rl_camera *cam, double u, double v, double *x, double *y);
+
 #endif

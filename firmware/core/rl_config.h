@@ -43,11 +43,6 @@
 #define RL_PIXELS_PER_RUN 8
 #endif
 
-/* Side of the square identification templates in pixels. */
-#ifndef RL_TEMPLATE_SIZE
-#define RL_TEMPLATE_SIZE 32
-#endif
-
 /* Most landmarks in one map. */
 #ifndef RL_MAX_MAP_LANDMARKS
 #define RL_MAX_MAP_LANDMARKS 256

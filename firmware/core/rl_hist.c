@@ -7,7 +7,7 @@
 #define LIGHT_MIN_FRACTION 0.0005
 /* Most of the frame (fraction) that can be light: a larger saturated
  * population is an over-exposed background (white paper, bright tiles). */
-#define LIGHT_MAX_FRACTION 0.25
+#define LIGHT_MAX_FRACTION 0.6
 /* Lowest intensity a light threshold may take: lights saturate. */
 #define LIGHT_MIN_LEVEL 235
 /* Least foreground/background separation (grey levels) for a dark class. */

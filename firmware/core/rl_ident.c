@@ -1,109 +1,151 @@
 #include "rl_ident.h"
 
 #include <math.h>
-#include "rl_template.h"
 
-#define S RL_TEMPLATE_SIZE
+static const double blur_levels[RL_BLUR_LEVELS] = {0.0, 0.03, 0.06, 0.10};
 
 size_t rl_ident_bytes(int n)
 {
-    return (size_t)n * (RL_TMPL_PIXELS + sizeof(int) + sizeof(int32_t) + sizeof(int64_t)) +
-           4 * RL_WS_ALIGN;
+    return (size_t)n * (sizeof(int) + sizeof(float) * RL_BLUR_LEVELS * RL_PROFILE_BINS) +
+           2 * RL_WS_ALIGN;
+}
+
+double rl_ident_template_at(const rl_family *fam, int id, double rho, double sigma)
+{
+    /* Darkness is a sum of steps at the zone edges: going inwards across
+     * edge r[i] the darkness changes from the zone outside to the zone
+     * inside. Blurring turns each step into a Gaussian CDF. */
+    double r[RL_MAX_BITS + 2], d = 0.0;
+    int i, n = fam->bits, outside = 0;
+    rl_family_radii(fam, r);
+    for (i = 0; i <= n; i++) {
+        int inside = i == 0 ? 1 : rl_family_bit(fam, id, i);
+        if (inside != outside) {
+            double step = sigma > 0 ? 0.5 * (1.0 + erf((r[i] - rho) / (sigma * sqrt(2.0))))
+                                    : (rho < r[i] ? 1.0 : 0.0);
+            d += (inside - outside) * step;
+        }
+        outside = inside;
+    }
+    return d;
 }
 
 rl_err rl_ident_init(rl_ident *id, rl_ws *ws, const rl_family *fam, const int *ids, int n_ids)
 {
-    int i, j, n = ids ? n_ids : rl_family_count(fam);
+    int i, b, k, s, n = ids ? n_ids : rl_family_count(fam);
     rl_err e;
     if (n <= 0)
         return RL_EINVAL;
     id->fam = *fam;
     id->n = n;
     if ((e = rl_ws_alloc(ws, (size_t)n * sizeof(int), RL_WS_ALIGN, (void **)&id->ids)) != RL_OK ||
-        (e = rl_ws_alloc(ws, (size_t)n * RL_TMPL_PIXELS, RL_WS_ALIGN, (void **)&id->pix)) != RL_OK ||
-        (e = rl_ws_alloc(ws, (size_t)n * sizeof(int32_t), RL_WS_ALIGN, (void **)&id->sum)) != RL_OK ||
-        (e = rl_ws_alloc(ws, (size_t)n * sizeof(int64_t), RL_WS_ALIGN, (void **)&id->sum2)) != RL_OK)
+        (e = rl_ws_alloc(ws, (size_t)n * RL_BLUR_LEVELS * RL_PROFILE_BINS * sizeof(float),
+                         RL_WS_ALIGN, (void **)&id->tmpl)) != RL_OK)
         return e;
     if (rl_ws_is_sizing(ws))
         return RL_OK;
     for (i = 0; i < n; i++) {
-        rl_image t = rl_image_view(S, S, S, id->pix + (size_t)i * RL_TMPL_PIXELS);
-        int32_t s = 0;
-        int64_t s2 = 0;
         id->ids[i] = ids ? ids[i] : i + 1;
-        if ((e = rl_tmpl_square(fam, id->ids[i], NULL, &t, NULL)) != RL_OK)
-            return e;
-        for (j = 0; j < RL_TMPL_PIXELS; j++) {
-            s += t.data[j];
-            s2 += (int64_t)t.data[j] * t.data[j];
-        }
-        id->sum[i] = s;
-        id->sum2[i] = s2;
+        if (!rl_family_valid(fam, id->ids[i]))
+            return RL_ERANGE;
+        for (b = 0; b < RL_BLUR_LEVELS; b++)
+            for (k = 0; k < RL_PROFILE_BINS; k++) {
+                /* mean over the bin's annulus, weighted by radius (area) */
+                double acc = 0, w = 0;
+                for (s = 0; s < 8; s++) {
+                    double rho = (k + (s + 0.5) / 8) * RL_PROFILE_EXTENT / RL_PROFILE_BINS;
+                    acc += rho * rl_ident_template_at(fam, id->ids[i], rho, blur_levels[b]);
+                    w += rho;
+                }
+                id->tmpl[((size_t)i * RL_BLUR_LEVELS + b) * RL_PROFILE_BINS + k] = (float)(acc / w);
+            }
     }
     return RL_OK;
 }
 
-static double bilinear(const rl_image *img, double x, double y)
+void rl_ident_profile(const rl_image *img, double cx, double cy, double r, rl_profile *p)
 {
-    int x0, y0;
-    double fx, fy;
-    const uint8_t *p;
-    if (x < 0) x = 0;
-    if (y < 0) y = 0;
-    if (x > img->width - 1) x = img->width - 1;
-    if (y > img->height - 1) y = img->height - 1;
-    x0 = (int)x;
-    y0 = (int)y;
-    if (x0 > img->width - 2) x0 = img->width - 2 < 0 ? 0 : img->width - 2;
-    if (y0 > img->height - 2) y0 = img->height - 2 < 0 ? 0 : img->height - 2;
-    fx = x - x0;
-    fy = y - y0;
-    p = img->data + (size_t)y0 * (size_t)img->stride + x0;
-    if (img->width < 2 || img->height < 2)
-        return p[0];
-    return (1 - fy) * ((1 - fx) * p[0] + fx * p[1]) +
-           fy * ((1 - fx) * p[img->stride] + fx * p[img->stride + 1]);
-}
-
-void rl_ident_sample(const rl_image *img, double cx, double cy, double r, uint8_t *out,
-                     uint8_t *mask, int *visible)
-{
-    double step = 2.0 * r / S;
-    int k = (int)ceil(step), i, j, a, b, vis = 0;
-    if (k < 1)
-        k = 1;
-    if (k > 4)
-        k = 4; /* beyond 4x4 the extra samples change little */
-    for (j = 0; j < S; j++) {
-        double y = cy - r + (j + 0.5) * step;
-        for (i = 0; i < S; i++) {
-            double x = cx - r + (i + 0.5) * step, acc = 0;
-            int in = x >= -0.5 && y >= -0.5 && x <= img->width - 0.5 && y <= img->height - 0.5;
-            for (b = 0; b < k; b++)
-                for (a = 0; a < k; a++)
-                    acc += bilinear(img, x + ((a + 0.5) / k - 0.5) * step,
-                                    y + ((b + 0.5) / k - 0.5) * step);
-            out[j * S + i] = (uint8_t)(255.0 - acc / (k * k) + 0.5);
-            if (mask)
-                mask[j * S + i] = (uint8_t)in;
-            vis += in;
+    double ext = RL_PROFILE_EXTENT * r, scale = RL_PROFILE_BINS / ext, e2 = ext * ext;
+    int x, y, k, x0 = (int)ceil(cx - ext), x1 = (int)floor(cx + ext);
+    int y0 = (int)ceil(cy - ext), y1 = (int)floor(cy + ext);
+    double sxx = 0;
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        p->n[k] = p->sx[k] = 0;
+    /* pixels outside the image are not gathered: a cut landmark meets cut
+     * templates */
+    if (x0 < 0) x0 = 0;
+    if (y0 < 0) y0 = 0;
+    if (x1 > img->width - 1) x1 = img->width - 1;
+    if (y1 > img->height - 1) y1 = img->height - 1;
+    for (y = y0; y <= y1; y++) {
+        const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
+        double dy = y - cy, dy2 = dy * dy;
+        for (x = x0; x <= x1; x++) {
+            double dx = x - cx, d2 = dx * dx + dy2, v;
+            if (d2 >= e2)
+                continue;
+            k = (int)(sqrt(d2) * scale);
+            v = 255 - row[x];
+            p->n[k] += 1;
+            p->sx[k] += v;
+            sxx += v * v;
         }
     }
-    if (visible)
-        *visible = vis;
+    p->sxx = sxx;
+    p->total = 0;
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        p->total += p->n[k];
 }
 
-static double corr(double n, double sx, double sy, double sxx, double syy, double sxy)
+void rl_ident_match(const rl_ident *id, const rl_profile *p, rl_match *m)
 {
-    double vx = n * sxx - sx * sx, vy = n * syy - sy * sy;
-    if (vx <= 0 || vy <= 0)
-        return 0.0;
-    return (n * sxy - sx * sy) / sqrt(vx * vy);
+    double n = p->total, sx = 0;
+    int i, b, k;
+    m->id = -1;
+    m->score = m->second = -1.0;
+    m->contrast = 0.0;
+    m->blur = 0;
+    if (n < 16)
+        return;
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        sx += p->sx[k];
+    for (i = 0; i < id->n; i++) {
+        double best = -1.0, best_gain = 0.0;
+        int best_b = 0;
+        for (b = 0; b < RL_BLUR_LEVELS; b++) {
+            const float *t = id->tmpl + ((size_t)i * RL_BLUR_LEVELS + b) * RL_PROFILE_BINS;
+            double st = 0, stt = 0, sxt = 0, vx, vt, r;
+            for (k = 0; k < RL_PROFILE_BINS; k++) {
+                st += p->n[k] * t[k];
+                stt += p->n[k] * t[k] * t[k];
+                sxt += p->sx[k] * t[k];
+            }
+            vx = n * p->sxx - sx * sx;
+            vt = n * stt - st * st;
+            if (vx <= 0 || vt <= 0)
+                continue;
+            r = (n * sxt - sx * st) / sqrt(vx * vt);
+            if (r > best) {
+                best = r;
+                best_b = b;
+                best_gain = (n * sxt - sx * st) / vt; /* darkness per unit of template */
+            }
+        }
+        if (best > m->score) {
+            m->second = m->score;
+            m->score = best;
+            m->id = id->ids[i];
+            m->contrast = best_gain;
+            m->blur = best_b;
+        } else if (best > m->second) {
+            m->second = best;
+        }
+    }
 }
 
 double rl_pearson(const uint8_t *a, const uint8_t *b, const uint8_t *mask, int n)
 {
-    double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0, c = 0;
+    double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0, c = 0, va, vb;
     int i;
     for (i = 0; i < n; i++) {
         if (mask && !mask[i])
@@ -115,48 +157,9 @@ double rl_pearson(const uint8_t *a, const uint8_t *b, const uint8_t *mask, int n
         sab += (double)a[i] * b[i];
         c += 1;
     }
-    return corr(c, sa, sb, saa, sbb, sab);
-}
-
-void rl_ident_match(const rl_ident *id, const uint8_t *x, const uint8_t *mask, rl_match *m)
-{
-    int32_t sx = 0, cnt = 0;
-    int64_t sxx = 0;
-    int i, t;
-    m->id = -1;
-    m->score = m->second = -1.0;
-    for (i = 0; i < RL_TMPL_PIXELS; i++) {
-        if (mask && !mask[i])
-            continue;
-        sx += x[i];
-        sxx += (int32_t)x[i] * x[i];
-        cnt++;
-    }
-    for (t = 0; t < id->n; t++) {
-        const uint8_t *p = id->pix + (size_t)t * RL_TMPL_PIXELS;
-        int32_t sxy = 0, st = id->sum[t];
-        int64_t stt = id->sum2[t];
-        double r;
-        if (mask) {
-            st = 0;
-            stt = 0;
-            for (i = 0; i < RL_TMPL_PIXELS; i++)
-                if (mask[i]) {
-                    sxy += (int32_t)x[i] * p[i];
-                    st += p[i];
-                    stt += (int32_t)p[i] * p[i];
-                }
-        } else {
-            for (i = 0; i < RL_TMPL_PIXELS; i++)
-                sxy += (int32_t)x[i] * p[i];
-        }
-        r = corr(cnt, sx, st, (double)sxx, (double)stt, sxy);
-        if (r > m->score) {
-            m->second = m->score;
-            m->score = r;
-            m->id = id->ids[t];
-        } else if (r > m->second) {
-            m->second = r;
-        }
-    }
+    va = c * saa - sa * sa;
+    vb = c * sbb - sb * sb;
+    if (va <= 0 || vb <= 0)
+        return 0.0;
+    return (c * sab - sa * sb) / sqrt(va * vb);
 }

@@ -1,20 +1,29 @@
 /* rl_ident: landmark identification by template matching (Pearson's
  * correlation), the paper's identification step.
  *
- * A candidate region is sampled into an S x S grid (S = RL_TEMPLATE_SIZE)
- * covering its outer ring's bounding square, as darkness (255 - I), and
- * correlated with the pre-rendered template of every id. Pearson's r is
- * invariant to gain and offset, so the grey samples are used directly:
- * that keeps the sub-pixel information of 2-pixel rings that a binary
- * image would lose. Samples that fall outside the image are masked out and
- * the templates are cut the same way (a landmark cut by the border).
+ * Every pixel of a candidate within 1.2 R of its centre is compared with
+ * every template: Pearson's r over those pixels between their darkness
+ * (255 - I) and the template's darkness at the same radius. Landmarks are
+ * rotationally symmetric, so the template at a pixel depends only on its
+ * distance from the centre: pixels are gathered into RL_PROFILE_BINS
+ * radial bins (count, sum) plus the sum of squares of every pixel, and one
+ * pass over the bins scores each template. Because the sum of squares is
+ * taken per pixel, anything that varies around a ring (asymmetric clutter,
+ * a wrong centre) still lowers r exactly as in a 2-D correlation.
+ *
+ * Templates are kept at RL_BLUR_LEVELS blurs (Gaussian, fractions of R),
+ * so defocus and motion blur match a blurred template instead of being
+ * misread as another code. Pixels outside the image are simply not in the
+ * bins: a landmark cut by the border is matched against templates cut the
+ * same way. Pearson's r is invariant to gain and offset, so no binary image
+ * is needed; the fitted gain is reported as the contrast.
  *
  *   rl_ident id;
- *   rl_ident_init(&id, &ws, &fam, NULL, 0);       // every id of the family
- *   uint8_t x[S*S], m[S*S];  int vis;
- *   rl_ident_sample(&img, cx, cy, r, x, m, &vis);
- *   rl_match best;
- *   rl_ident_match(&id, x, vis < S*S ? m : NULL, &best);
+ *   rl_ident_init(&id, &ws, &fam, NULL, 0);     // every id of the family
+ *   rl_profile p;
+ *   rl_ident_profile(&img, cx, cy, r, &p);
+ *   rl_match m;
+ *   rl_ident_match(&id, &p, &m);                // m.id, m.score, m.second
  */
 #ifndef RL_IDENT_H
 #define RL_IDENT_H
@@ -26,45 +35,57 @@
 #include "rl_image.h"
 #include "rl_workspace.h"
 
-#define RL_TMPL_PIXELS (RL_TEMPLATE_SIZE * RL_TEMPLATE_SIZE)
+/* Radial bins of a profile; the narrowest code ring of ring5 spans two. */
+#define RL_PROFILE_BINS 32
+/* A profile covers radii 0 .. RL_PROFILE_EXTENT * R (the quiet zone's start). */
+#define RL_PROFILE_EXTENT 1.2
+/* Template blurs, as Gaussian sigma in units of R. */
+#define RL_BLUR_LEVELS 4
+
+typedef struct {
+    double n[RL_PROFILE_BINS];  /* pixels per bin */
+    double sx[RL_PROFILE_BINS]; /* sum of darkness per bin */
+    double sxx;                 /* sum of squared darkness over all pixels */
+    double total;               /* pixels in all bins */
+} rl_profile;
 
 typedef struct {
     rl_family fam;
-    int n;          /* templates */
-    int *ids;       /* id of each template */
-    uint8_t *pix;   /* n templates of RL_TMPL_PIXELS darkness values */
-    int32_t *sum;   /* per template: sum of values */
-    int64_t *sum2;  /* per template: sum of squares */
+    int n;          /* ids */
+    int *ids;       /* the ids */
+    float *tmpl;    /* n x RL_BLUR_LEVELS x RL_PROFILE_BINS darkness, 0..1 */
 } rl_ident;
 
 typedef struct {
-    int id;         /* best template's id, or -1 */
-    double score;   /* its Pearson correlation */
-    double second;  /* the runner-up's correlation */
+    int id;          /* best template's id, or -1 */
+    double score;    /* its Pearson correlation */
+    double second;   /* best correlation of any other id */
+    double contrast; /* fitted darkness difference between the template's black
+                        and white, grey levels */
+    int blur;        /* blur level of the best template */
 } rl_match;
 
-/* Bytes rl_ident_init takes for n templates. */
+/* Bytes rl_ident_init takes for n ids. */
 size_t rl_ident_bytes(int n);
 
-/* Render the templates of `ids` (or every id of the family when ids is
- * NULL) into ws. RL_ERANGE for an id outside the family. */
+/* Compute the templates of `ids` (every id of the family when ids is NULL)
+ * into ws. RL_ERANGE for an id outside the family. */
 RL_CHECK rl_err rl_ident_init(rl_ident *id, rl_ws *ws, const rl_family *fam, const int *ids,
                               int n_ids);
 
-/* Sample the square of half-side r centred (cx, cy) into out[S*S] as
- * darkness, each cell the mean of a k x k grid of bilinear samples (k
- * follows the scale, so large landmarks are box-filtered). mask[i] = 1
- * where the cell's centre is inside the image (mask may be NULL);
- * *visible counts those. */
-void rl_ident_sample(const rl_image *img, double cx, double cy, double r, uint8_t *out,
-                     uint8_t *mask, int *visible);
+/* Darkness template of `id` at normalized radius rho with Gaussian blur
+ * sigma (units of R); 0 white .. 1 black. */
+double rl_ident_template_at(const rl_family *fam, int id, double rho, double sigma);
 
-/* Best and second-best template for samples x; with mask, only cells with
- * mask != 0 count (on both sides). */
-void rl_ident_match(const rl_ident *id, const uint8_t *x, const uint8_t *mask, rl_match *m);
+/* Gather the pixels of img within RL_PROFILE_EXTENT * r of (cx, cy). */
+void rl_ident_profile(const rl_image *img, double cx, double cy, double r, rl_profile *p);
+
+/* Score every template against a profile. */
+void rl_ident_match(const rl_ident *id, const rl_profile *p, rl_match *m);
 
 /* Pearson's correlation of a and b over the cells where mask != 0 (all
- * when NULL); 0 when either side is constant. */
+ * when NULL); 0 when either side is constant. The direct formula, for
+ * tests and tools. */
 double rl_pearson(const uint8_t *a, const uint8_t *b, const uint8_t *mask, int n);
 
 #endif

@@ -18,13 +18,14 @@ void rl_recog_defaults(rl_recog_config *cfg)
     cfg->ids = NULL;
     cfg->n_ids = 0;
     cfg->min_score = 0.80;
-    cfg->min_margin = 0.04;
-    cfg->min_radius = 6.0;
+    cfg->min_lead = 1.5;
+    cfg->min_radius = 0.0;
     cfg->max_radius = 0.0;
     cfg->size_tolerance = 0.35;
     cfg->need = 2;
     cfg->local = RL_LOCAL_AUTO;
     cfg->near_light = 1.5;
+    cfg->min_contrast = 0.5;
 }
 
 static int cap_runs(int w, int h)
@@ -49,7 +50,7 @@ static rl_err check_config(const rl_recog_config *cfg, int w, int h)
             if (!rl_family_valid(&cfg->family, cfg->ids[i]))
                 return RL_ERANGE;
     }
-    if (!(cfg->min_radius >= 2.0) || cfg->max_radius < 0 || !(cfg->min_score > 0) ||
+    if (cfg->min_radius < 0 || cfg->max_radius < 0 || !(cfg->min_score > 0) ||
         cfg->min_score > 1 || cfg->need < 1)
         return RL_EINVAL;
     return RL_OK;
@@ -62,9 +63,7 @@ static rl_err layout(rl_recog *rec, rl_ws *ws, const rl_recog_config *cfg, int w
     int runs = cap_runs(w, h);
     if ((e = rl_ident_init(&rec->ident, ws, &cfg->family, cfg->ids, cfg->ids ? cfg->n_ids : 0)) != RL_OK ||
         (e = rl_label_init(&rec->dark, ws, w, h, runs, RL_MAX_REGIONS)) != RL_OK ||
-        (e = rl_label_init(&rec->light, ws, w, h, runs / 4, RL_MAX_LIGHTS * 8)) != RL_OK ||
-        (e = rl_ws_alloc(ws, RL_TMPL_PIXELS, RL_WS_ALIGN, (void **)&rec->samples)) != RL_OK ||
-        (e = rl_ws_alloc(ws, RL_TMPL_PIXELS, RL_WS_ALIGN, (void **)&rec->mask)) != RL_OK)
+        (e = rl_label_init(&rec->light, ws, w, h, runs / 4, RL_MAX_LIGHTS * 8)) != RL_OK)
         return e;
     return RL_OK;
 }
@@ -99,6 +98,12 @@ rl_err rl_recog_init(rl_recog *rec, const rl_recog_config *cfg, int w, int h, vo
     }
     if (rec->cfg.max_radius <= 0)
         rec->cfg.max_radius = (w < h ? w : h) / 2.0;
+    if (rec->cfg.min_radius <= 0) {
+        /* below this radius code zone 1, the narrowest, is under a pixel
+         * wide and the code cannot be read */
+        int n = cfg->family.bits;
+        rec->cfg.min_radius = 1.0 / (RL_OUTER_RING_INNER * (1.0 - sqrt((double)(n - 1) / n)));
+    }
     rec->width = w;
     rec->height = h;
     rl_ws_init(&rec->ws, mem, size);
@@ -163,23 +168,200 @@ static void refine_centre(const rl_image *img, const rl_levels *lv, double *cx, 
     }
 }
 
+
+/* Outer radius from the grey levels: the mean intensity on circles of
+ * growing radius drops to the outer ring's black and rises to the paper's
+ * white; the radius where it crosses halfway is the printed edge, whatever
+ * the blur (a symmetric blur moves a threshold crossing, not the 50% one).
+ * Keeps the estimate when the profile has no clear edge. */
+#define EDGE_ANGLES 16
+
+static void refine_radius(const rl_image *img, double cx, double cy, double *r)
+{
+    double prof[64], lo = 0.75 * *r, hi = 1.3 * *r, step = (hi - lo) / 63, black = 1e9, white;
+    double ca[EDGE_ANGLES], sa[EDGE_ANGLES];
+    int i, a, imin = 0, used = 0;
+    unsigned char inside[EDGE_ANGLES];
+    /* only rays that stay inside the image: a landmark near the border
+     * still gets its radius from the side that is there */
+    for (a = 0; a < EDGE_ANGLES; a++) {
+        double th = (a + 0.5) * 2.0 * M_PI / EDGE_ANGLES, ex, ey;
+        ca[a] = cos(th);
+        sa[a] = sin(th);
+        ex = cx + hi * ca[a];
+        ey = cy + hi * sa[a];
+        inside[a] = ex >= 0 && ey >= 0 && ex < img->width - 1 && ey < img->height - 1 &&
+                    cx + lo * ca[a] >= 0 && cy + lo * sa[a] >= 0 &&
+                    cx + lo * ca[a] < img->width - 1 && cy + lo * sa[a] < img->height - 1;
+        used += inside[a];
+    }
+    if (used < EDGE_ANGLES / 3)
+        return;
+    for (i = 0; i < 64; i++) {
+        double rr = lo + i * step, acc = 0;
+        for (a = 0; a < EDGE_ANGLES; a++) {
+            double x, y, fx, fy;
+            int x0, y0;
+            const uint8_t *p;
+            if (!inside[a])
+                continue;
+            x = cx + rr * ca[a];
+            y = cy + rr * sa[a];
+            x0 = (int)x;
+            y0 = (int)y;
+            fx = x - x0;
+            fy = y - y0;
+            p = img->data + (size_t)y0 * (size_t)img->stride + x0;
+            acc += (1 - fy) * ((1 - fx) * p[0] + fx * p[1]) +
+                   fy * ((1 - fx) * p[img->stride] + fx * p[img->stride + 1]);
+        }
+        prof[i] = acc / used;
+        if (prof[i] < black) {
+            black = prof[i];
+            imin = i;
+        }
+    }
+    white = prof[imin];
+    for (i = imin; i < 64; i++)
+        if (prof[i] > white)
+            white = prof[i];
+    if (white - black < 10.0)
+        return;
+    for (i = imin; i < 63; i++) {
+        double half = 0.5 * (black + white);
+        if (prof[i] <= half && prof[i + 1] > half) {
+            *r = lo + (i + (half - prof[i]) / (prof[i + 1] - prof[i])) * step;
+            return;
+        }
+    }
+}
+
 static void add_detection(rl_detection *list, int *n, int cap, const rl_detection *d)
 {
     if (*n < cap)
         list[(*n)++] = *d;
 }
 
-/* Identify one candidate of centre (cx, cy) and radius r; 1 if it is. */
-static int identify(rl_recog *rec, const rl_image *img, double cx, double cy, double r,
-                    rl_match *m, int *visible)
+/* Identify one candidate of centre (cx, cy) and radius r against levels
+ * `lv`; 1 if it is. Besides the correlation, the best id must explain the
+ * candidate clearly better than any other: the runner-up's unexplained
+ * variance (1 - r^2) must be min_lead times the best's. Neighbouring codes
+ * differ in one zone, so a blurred true landmark has a close runner-up in
+ * r but not in residual, while ring-like clutter fits many codes equally
+ * badly. And a printed landmark must show the full contrast of ink on
+ * paper: grey ring-like clutter (speaker grilles) correlates, but only at
+ * a fraction of the frame's foreground/background span. */
+static int identify(rl_recog *rec, const rl_image *img, const rl_levels *lv, double cx,
+                    double cy, double r, rl_match *m, int *visible)
 {
-    int vis;
-    rl_ident_sample(img, cx, cy, r, rec->samples, rec->mask, &vis);
-    rl_ident_match(&rec->ident, rec->samples, vis < RL_TMPL_PIXELS ? rec->mask : NULL, m);
+    rl_profile p;
+    rl_ident_profile(img, cx, cy, r, &p);
+    rl_ident_match(&rec->ident, &p, m);
     if (visible)
-        *visible = vis;
+        *visible = (int)p.total;
     return m->id >= 0 && m->score >= rec->cfg.min_score &&
-           m->score - m->second >= rec->cfg.min_margin;
+           (1.0 - m->second * m->second) >= rec->cfg.min_lead * (1.0 - m->score * m->score) &&
+           m->contrast >= rec->cfg.min_contrast * (lv->bg - lv->fg);
+}
+
+
+/* Fraction of a disk of radius r left visible when a straight edge passes
+ * at signed distance d from its centre (d > 0: centre on the visible side). */
+static double disk_visible(double r, double d)
+{
+    double seg;
+    if (d >= r)
+        return 1.0;
+    if (d <= -r)
+        return 0.0;
+    seg = r * r * acos(d / r) - d * sqrt(r * r - d * d); /* the part beyond the edge */
+    return 1.0 - seg / (M_PI * r * r);
+}
+
+/* Centre, radius and visible fraction of a CLR from its bounding box:
+ * an uncut box is the disk's; a box cut by one image side keeps the true
+ * diameter across the cut, and the centre lies one radius in from the far
+ * side. Corner cuts (two sides) are left unidentified. */
+static int clr_geometry(const rl_box *b, int W, int H, rl_detection *d)
+{
+    int bw = b->x1 - b->x0 + 1, bh = b->y1 - b->y0 + 1;
+    int cut_l = b->x0 == 0, cut_r = b->x1 == W - 1, cut_t = b->y0 == 0, cut_b = b->y1 == H - 1;
+    d->box = *b;
+    d->u = (b->x0 + b->x1) / 2.0;
+    d->v = (b->y0 + b->y1) / 2.0;
+    d->radius = (bw + bh) / 4.0;
+    d->visible = 1.0;
+    d->complete = !(cut_l || cut_r || cut_t || cut_b);
+    if (d->complete)
+        return 1;
+    if ((cut_l || cut_r) && (cut_t || cut_b))
+        return 0;
+    if (cut_l || cut_r) {
+        d->radius = bh / 2.0;
+        d->u = cut_l ? b->x1 + 0.5 - d->radius : b->x0 - 0.5 + d->radius;
+        d->visible = disk_visible(d->radius, cut_l ? d->u + 0.5 : W - 0.5 - d->u);
+    } else {
+        d->radius = bw / 2.0;
+        d->v = cut_t ? b->y1 + 0.5 - d->radius : b->y0 - 0.5 + d->radius;
+        d->visible = disk_visible(d->radius, cut_t ? d->v + 0.5 : H - 0.5 - d->v);
+    }
+    return 1;
+}
+
+/* Border landmarks with at most this much missing are identified in the
+ * global pass (their outer ring is closed but for a sliver); the rest wait
+ * for the local pass. */
+#define GLOBAL_MIN_VISIBLE 0.95
+
+static void global_candidate(rl_recog *rec, const rl_image *img, const rl_box *b, rl_result *res)
+{
+    rl_detection d;
+    rl_match m;
+    memset(&d, 0, sizeof d);
+    d.id = -1;
+    d.pass = RL_PASS_GLOBAL;
+    if (!clr_geometry(b, rec->width, rec->height, &d))
+        return;
+    res->n_candidates++;
+    /* 4. identification: the global pass takes closed outer rings */
+    if (d.complete)
+        refine_centre(img, &res->levels, &d.u, &d.v, d.radius);
+    refine_radius(img, d.u, d.v, &d.radius);
+    if (d.visible >= GLOBAL_MIN_VISIBLE &&
+        identify(rec, img, &res->levels, d.u, d.v, d.radius, &m, NULL)) {
+        d.id = m.id;
+        d.score = m.score;
+        add_detection(res->landmarks, &res->n_landmarks, RL_MAX_LANDMARKS, &d);
+    } else {
+        d.score = d.visible >= GLOBAL_MIN_VISIBLE ? m.score : 0.0;
+        add_detection(res->unidentified, &res->n_unidentified, RL_MAX_CANDIDATES, &d);
+    }
+}
+
+/* A map holds each id once: when one id is reported twice in a frame, the
+ * better match stays and the others become unidentified. */
+static void dedupe(rl_result *res)
+{
+    unsigned char keep[RL_MAX_LANDMARKS];
+    int i, j, kept = 0;
+    for (i = 0; i < res->n_landmarks; i++) {
+        const rl_detection *d = &res->landmarks[i];
+        keep[i] = 1;
+        for (j = 0; j < res->n_landmarks && keep[i]; j++)
+            if (j != i && res->landmarks[j].id == d->id &&
+                (res->landmarks[j].score > d->score || (res->landmarks[j].score == d->score && j < i)))
+                keep[i] = 0;
+    }
+    for (i = 0; i < res->n_landmarks; i++) {
+        if (keep[i]) {
+            res->landmarks[kept++] = res->landmarks[i];
+        } else {
+            rl_detection u = res->landmarks[i];
+            u.id = -1;
+            add_detection(res->unidentified, &res->n_unidentified, RL_MAX_CANDIDATES, &u);
+        }
+    }
+    res->n_landmarks = kept;
 }
 
 static int cmp_det(const rl_detection *a, const rl_detection *b)
@@ -306,46 +488,10 @@ rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
         for (j = 0; j < ncand && !inner; j++)
             inner = j != i && box_inside(&cand[i], &cand[j]) &&
                     !(box_inside(&cand[j], &cand[i]) && j > i);
-        if (inner)
-            continue;
-        {
-            rl_detection d;
-            rl_box *b = &cand[i];
-            int bw = b->x1 - b->x0 + 1, bh = b->y1 - b->y0 + 1;
-            int complete = !(b->x0 == 0 || b->y0 == 0 || b->x1 == W - 1 || b->y1 == H - 1);
-            rl_match m;
-            memset(&d, 0, sizeof d);
-            d.box = *b;
-            d.complete = complete;
-            d.pass = RL_PASS_GLOBAL;
-            d.u = (b->x0 + b->x1) / 2.0;
-            d.v = (b->y0 + b->y1) / 2.0;
-            d.radius = (bw + bh) / 4.0;
-            d.visible = 1.0;
-            d.id = -1;
-            res->n_candidates++;
-            /* 4. identification: the global pass takes closed outer rings */
-            if (complete && identify(rec, img, d.u, d.v, d.radius, &m, NULL)) {
-                d.id = m.id;
-                d.score = m.score;
-                refine_centre(img, &res->levels, &d.u, &d.v, d.radius);
-                add_detection(res->landmarks, &res->n_landmarks, RL_MAX_LANDMARKS, &d);
-            } else {
-                if (!complete) {
-                    /* centre and radius from the uncut extent */
-                    int cut_x = b->x0 == 0 || b->x1 == W - 1;
-                    d.radius = cut_x ? bh / 2.0 : bw / 2.0;
-                    if (cut_x)
-                        d.u = b->x0 == 0 ? b->x1 + 0.5 - d.radius : b->x0 - 0.5 + d.radius;
-                    else
-                        d.v = b->y0 == 0 ? b->y1 + 0.5 - d.radius : b->y0 - 0.5 + d.radius;
-                } else {
-                    d.score = m.score;
-                }
-                add_detection(res->unidentified, &res->n_unidentified, RL_MAX_CANDIDATES, &d);
-            }
-        }
+        if (!inner)
+            global_candidate(rec, img, &cand[i], res);
     }
+    dedupe(res);
     size_filter(rec, res);
     sort_dets(res->landmarks, res->n_landmarks);
     return RL_OK;

@@ -46,8 +46,11 @@ typedef struct {
     const int *ids;       /* ids to recognize (a map's); NULL = every id */
     int n_ids;
     double min_score;     /* Pearson correlation to accept an id (default 0.80) */
-    double min_margin;    /* lead over the runner-up id (default 0.04) */
-    double min_radius;    /* smallest landmark radius considered, px (default 6) */
+    double min_lead;      /* runner-up's residual (1 - r^2) over the best's (default 1.5) */
+    double min_contrast;  /* fitted ink/paper contrast, fraction of the frame's
+                             background - foreground span (default 0.5) */
+    double min_radius;    /* smallest landmark radius considered, px; 0 (default) = where
+                             code zone 1 is 1 px wide (11.8 px for ring5) */
     double max_radius;    /* largest, px; 0 = half the shorter image side */
     double size_tolerance;/* identified radii within this fraction of the frame's median (0.35) */
     int need;             /* landmarks a pose needs (default 2) */
@@ -93,8 +96,6 @@ typedef struct {
     rl_ident ident;     /* templates, rendered at init */
     rl_label dark;      /* ROI labelling, reused by every frame and window */
     rl_label light;     /* light-source labelling */
-    uint8_t *samples;   /* RL_TMPL_PIXELS: a candidate sampled for matching */
-    uint8_t *mask;      /* RL_TMPL_PIXELS: which samples are inside the image */
 } rl_recog;
 
 /* Fill every field with its default (ring5, every id). */

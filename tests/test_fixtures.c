@@ -1,0 +1,185 @@
+/* Recognition on rendered fixtures, judged by the renderer's ground truth.
+ *
+ *   test_fixtures golden DIR   one test per committed fixture (each DIR/NAME.yaml)
+ *   test_fixtures stats DIR SET...   rates over a rendered set
+ *
+ * What each set must meet (issues 4 and 5):
+ * - every set: no wrong id, no landmark invented where there is none;
+ * - clean, cluttered: >= 99% of complete landmarks detected, >= 99.9% of
+ *   those identified correctly; the golden files: every complete one;
+ * - clutter_only: nothing identified.
+ */
+#include "rl_test.h"
+#include <dirent.h>
+#include <math.h>
+#include "fixture_eval.h"
+#include "rl_png.h"
+#include "rl_report.h"
+
+static rl_host_recog hr;
+static rl_result res;
+
+static const char *set_of(const char *image)
+{
+    static char set[64];
+    const char *base = strrchr(image, '/');
+    size_t n;
+    base = base ? base + 1 : image;
+    n = strcspn(base, "0123456789");
+    if (n > 0 && base[n - 1] == '_')
+        n--;
+    snprintf(set, sizeof set, "%.*s", (int)n, base);
+    return set;
+}
+
+static void run_frame(const char *yaml, truth *t, eval_counts *c, int verbose)
+{
+    char png[1024], err[512];
+    const char *slash = strrchr(yaml, '/');
+    rl_image img;
+    double us;
+    assert_int_equal(truth_load(yaml, t), 0);
+    snprintf(png, sizeof png, "%.*s%s", slash ? (int)(slash - yaml + 1) : 0, yaml, t->image);
+    if (rl_png_read_gray(png, &img, err, sizeof err) != RL_OK)
+        fail_msg("%s", err);
+    assert_int_equal(rl_host_recog_run(&hr, &img, &res, &us), RL_OK);
+    rl_png_free(&img);
+    eval_frame(t, &res, c, verbose);
+}
+
+/* ---- golden: one test per fixture ---- */
+
+static void golden_one(void **state)
+{
+    const char *yaml = (const char *)*state;
+    truth t;
+    eval_counts c;
+    const char *set;
+    memset(&c, 0, sizeof c);
+    run_frame(yaml, &t, &c, 1);
+    set = set_of(t.image);
+    assert_int_equal(c.wrong_id, 0);
+    assert_int_equal(c.invented, 0);
+    if (strcmp(set, "clean") == 0 || strcmp(set, "cluttered") == 0) {
+        assert_int_equal(c.complete_ident, c.complete);
+        if (c.centre_n)
+            assert_true(c.centre_err_sum / c.centre_n < 1.0);
+    }
+    if (strcmp(set, "clutter_only") == 0)
+        assert_int_equal(c.identified, 0);
+}
+
+static int cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+static int golden(const char *dir)
+{
+    static char *files[512];
+    static struct CMUnitTest tests[512];
+    int n = 0, i;
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    if (!d) {
+        fprintf(stderr, "test_fixtures: %s: cannot open\n", dir);
+        return 1;
+    }
+    while ((e = readdir(d)) != NULL && n < 512) {
+        size_t len = strlen(e->d_name);
+        if (len > 5 && strcmp(e->d_name + len - 5, ".yaml") == 0) {
+            /* a fixture is NAME.yaml beside NAME.png; other YAML (the site
+             * map, the camera) is not */
+            char png[1024];
+            FILE *f;
+            snprintf(png, sizeof png, "%s/%.*s.png", dir, (int)(len - 5), e->d_name);
+            if ((f = fopen(png, "rb")) == NULL)
+                continue;
+            fclose(f);
+            files[n] = malloc(strlen(dir) + len + 2);
+            sprintf(files[n], "%s/%s", dir, e->d_name);
+            n++;
+        }
+    }
+    closedir(d);
+    qsort(files, (size_t)n, sizeof files[0], cmp_str); /* fixed order */
+    for (i = 0; i < n; i++) {
+        tests[i].name = strrchr(files[i], '/') + 1;
+        tests[i].test_func = golden_one;
+        tests[i].setup_func = NULL;
+        tests[i].teardown_func = NULL;
+        tests[i].initial_state = files[i];
+    }
+    if (n == 0) {
+        fprintf(stderr, "test_fixtures: no fixtures in %s\n", dir);
+        return 1;
+    }
+    return _cmocka_run_group_tests("golden fixtures", tests, (size_t)n, NULL, NULL);
+}
+
+/* ---- stats: rates over a rendered set ---- */
+
+static const char *stats_dir;
+
+static void stats_set(void **state)
+{
+    const char *set = (const char *)*state;
+    eval_counts c;
+    truth t;
+    char path[1024];
+    int k, frames = 0;
+    memset(&c, 0, sizeof c);
+    for (k = 0; k < 1000; k++) {
+        FILE *f;
+        snprintf(path, sizeof path, "%s/%s_%03d.yaml", stats_dir, set, k);
+        f = fopen(path, "r");
+        if (!f)
+            break;
+        fclose(f);
+        run_frame(path, &t, &c, getenv("RL_VERBOSE") != NULL);
+        frames++;
+    }
+    if (frames == 0)
+        fail_msg("no %s fixtures in %s", set, stats_dir);
+    printf("  %-12s %3d frames: complete %d/%d detected, %d identified; glare %d/%d; border %d/%d; "
+           "reports %d (local %d), wrong %d, invented %d; centre error %.3f px\n",
+           set, frames, c.complete_found, c.complete, c.complete_ident, c.glare_ident, c.glare,
+           c.border_ident, c.border, c.identified, c.local_found, c.wrong_id, c.invented,
+           c.centre_n ? c.centre_err_sum / c.centre_n : 0.0);
+    assert_int_equal(c.wrong_id, 0);
+    assert_int_equal(c.invented, 0);
+    if (strcmp(set, "clean") == 0 || strcmp(set, "cluttered") == 0) {
+        assert_true(c.complete > 50);
+        assert_true(c.complete_found >= 0.99 * c.complete);
+        assert_true(c.complete_ident >= 0.999 * c.complete_found);
+    }
+    if (strcmp(set, "clutter_only") == 0)
+        assert_int_equal(c.identified, 0);
+}
+
+int main(int argc, char **argv)
+{
+    rl_recog_config cfg;
+    int rc;
+    rl_recog_defaults(&cfg);
+    rl_host_recog_init(&hr, &cfg);
+    if (argc >= 3 && strcmp(argv[1], "golden") == 0) {
+        rc = golden(argv[2]);
+    } else if (argc >= 4 && strcmp(argv[1], "stats") == 0) {
+        static struct CMUnitTest tests[16];
+        int i, n = 0;
+        stats_dir = argv[2];
+        for (i = 3; i < argc && n < 16; i++, n++) {
+            tests[n].name = argv[i];
+            tests[n].test_func = stats_set;
+            tests[n].setup_func = tests[n].teardown_func = NULL;
+            tests[n].initial_state = argv[i];
+        }
+        rc = _cmocka_run_group_tests("fixture sets", tests, (size_t)n, NULL, NULL);
+    } else {
+        fprintf(stderr, "usage: test_fixtures golden DIR | stats DIR SET...\n");
+        rc = 2;
+    }
+    rl_host_recog_free(&hr);
+    return rc;
+}

@@ -1,0 +1,802 @@
+/* ringloc-render: fixtures that know the truth.
+ *
+ * Ray-casts an upward-looking camera (pinhole + plumb_bob, the core's own
+ * rl_camera model) onto a ceiling plane: tiles and T-bars, light fixtures
+ * that saturate and wash out their surroundings, clutter (smoke detectors,
+ * downlights, sprinklers, vents, round speaker grilles, boxes, exit signs),
+ * landmarks printed per shared/landmark-spec.md on paper, and camera
+ * effects (vignetting, exposure, blur, motion blur, noise). Writes each
+ * frame as PNG with a ground-truth YAML: the camera and robot pose and,
+ * for every landmark, id, projected centre, radius, visible fraction and
+ * gap to the nearest light. With --twin it renders the same scene with
+ * AprilTag 36h11 tags of the same size at the same places.
+ *
+ * Host tool: allocates freely, uses libapriltag for the tags' bit patterns.
+ */
+#include <errno.h>
+#include <getopt.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <apriltag/apriltag.h>
+#include <apriltag/tag36h11.h>
+#include "rl_camera.h"
+#include "rl_camfile.h"
+#include "rl_family.h"
+#include "rl_mapfile.h"
+#include "rl_png.h"
+
+#define MAX_OBJ 512
+#define SUB 3 /* subsamples per pixel axis */
+
+typedef enum {
+    OBJ_PAPER, OBJ_LANDMARK, OBJ_SMOKE, OBJ_DOWNLIGHT, OBJ_SPRINKLER, OBJ_VENT, OBJ_SPEAKER,
+    OBJ_BOX, OBJ_EXIT, OBJ_LIGHT
+} obj_kind;
+
+typedef struct {
+    obj_kind kind;
+    double x, y, rot; /* centre in the map frame, rotation */
+    double a, b;      /* radius, or half extents */
+    int id;           /* landmark id */
+} object;
+
+typedef struct {
+    rl_camera cam;
+    rl_family fam;
+    double diameter;       /* landmark D, m */
+    double distance;       /* camera to ceiling, m */
+    double ceiling_height; /* for the map, m */
+    double cam_z;          /* camera above floor, m */
+    double tile, tile_px, tile_py; /* tile pitch and phase */
+    double cx, cy, yaw;    /* camera optical centre and heading (image top) in the map */
+    double motion, motion_dir; /* motion blur: camera travel during exposure, m */
+    double halo_amp, halo_sigma;
+    double gain, vignette, blur, noise;
+    int twin;
+    int n;
+    object obj[MAX_OBJ];
+} scene;
+
+/* ---- random numbers (xorshift64*, reproducible across machines) ---- */
+static uint64_t rng_state = 88172645463325252ull;
+static uint64_t rng_next(void)
+{
+    rng_state ^= rng_state >> 12;
+    rng_state ^= rng_state << 25;
+    rng_state ^= rng_state >> 27;
+    return rng_state * 2685821657736338717ull;
+}
+static double urand(double a, double b) { return a + (b - a) * ((rng_next() >> 11) * (1.0 / 9007199254740992.0)); }
+static double nrand(void)
+{
+    double u = urand(1e-12, 1), v = urand(0, 1);
+    return sqrt(-2 * log(u)) * cos(2 * M_PI * v);
+}
+/* value noise for tile texture, hashed from integer lattice points */
+static double hash2(int i, int j)
+{
+    uint64_t h = (uint64_t)(uint32_t)i * 0x9E3779B97F4A7C15ull ^ (uint64_t)(uint32_t)j * 0xC2B2AE3D27D4EB4Full;
+    h ^= h >> 29;
+    h *= 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 32;
+    return (h & 0xFFFF) / 65535.0;
+}
+static double vnoise(double x, double y)
+{
+    int i = (int)floor(x), j = (int)floor(y);
+    double fx = x - i, fy = y - j;
+    double a = hash2(i, j), b = hash2(i + 1, j), c = hash2(i, j + 1), d = hash2(i + 1, j + 1);
+    fx = fx * fx * (3 - 2 * fx);
+    fy = fy * fy * (3 - 2 * fy);
+    return (a * (1 - fx) + b * fx) * (1 - fy) + (c * (1 - fx) + d * fx) * fy;
+}
+
+/* ---- the ceiling ---- */
+#define INK 0.04
+#define PAPER 0.86
+#define TILE 0.70
+#define TBAR 0.80
+#define LIGHT 6.0
+
+static apriltag_family_t *tagfam;
+static image_u8_t *tag_images[32];
+
+static double tile_radiance(const scene *s, double X, double Y)
+{
+    double u = (X - s->tile_px) / s->tile, v = (Y - s->tile_py) / s->tile;
+    double fu = (u - floor(u)) * s->tile, fv = (v - floor(v)) * s->tile;
+    double bar = 0.012; /* half of a 24 mm T-bar */
+    double du = fmin(fu, s->tile - fu), dv = fmin(fv, s->tile - fv);
+    if (du < bar || dv < bar)
+        return TBAR;
+    if (du < bar + 0.003 || dv < bar + 0.003)
+        return 0.55; /* the shadow line along the bar */
+    /* fissured mineral tile: fine noise and a few darker pits */
+    return TILE + 0.05 * (vnoise(X * 90, Y * 90) - 0.5) + 0.03 * (vnoise(X * 20, Y * 20) - 0.5) -
+           (vnoise(X * 300, Y * 300) > 0.93 ? 0.15 : 0.0);
+}
+
+/* Radiance of an object at local coordinates (lx, ly), or -1 if outside. */
+static double object_radiance(const scene *s, const object *o, double lx, double ly)
+{
+    double r = sqrt(lx * lx + ly * ly);
+    switch (o->kind) {
+    case OBJ_PAPER:
+        return fabs(lx) <= o->a && fabs(ly) <= o->b ? PAPER : -1;
+    case OBJ_LANDMARK:
+        if (!s->twin) {
+            if (r > o->a)
+                return -1;
+            return rl_family_dark_at(&s->fam, o->id, r / o->a) ? INK : PAPER;
+        } else {
+            /* tag36h11: 10 x 10 cells, black border 8 cells = D */
+            double cell = 2 * o->a / 8.0;
+            int ci = (int)floor(lx / cell + 5), cj = (int)floor(ly / cell + 5);
+            image_u8_t *im = tag_images[o->id % 32];
+            if (ci < 0 || cj < 0 || ci >= 10 || cj >= 10)
+                return -1;
+            return im->buf[cj * im->stride + ci] < 128 ? INK : PAPER;
+        }
+    case OBJ_SMOKE: /* white disk, grey ring, LED */
+        if (r > o->a) return -1;
+        if (r < 0.004) return 0.10;
+        if (r > 0.75 * o->a && r < 0.82 * o->a) return 0.45;
+        return 0.82;
+    case OBJ_DOWNLIGHT: /* dark trim around a lamp */
+        if (r > o->a) return -1;
+        if (r > 0.8 * o->a) return 0.22;
+        return LIGHT;
+    case OBJ_SPRINKLER:
+        if (r > o->a) return -1;
+        if (r < 0.45 * o->a) return 0.12;
+        if (r > 0.85 * o->a) return 0.30;
+        return 0.65;
+    case OBJ_VENT: /* square grille of dark slots */
+        if (fabs(lx) > o->a || fabs(ly) > o->a) return -1;
+        if (fabs(lx) > 0.9 * o->a || fabs(ly) > 0.9 * o->a) return 0.60;
+        return fmod(fabs(lx) + 10, 0.02) < 0.008 ? 0.10 : 0.50;
+    case OBJ_SPEAKER: /* round grille: concentric dark rings, ring-like clutter */
+        if (r > o->a) return -1;
+        if (r > 0.93 * o->a) return 0.12;
+        if (fmod(r, 0.018) < 0.006) return 0.18;
+        return 0.48 + 0.1 * (vnoise(lx * 400, ly * 400) - 0.5);
+    case OBJ_BOX:
+        if (fabs(lx) > o->a || fabs(ly) > o->b) return -1;
+        if (fabs(lx) > o->a - 0.006 || fabs(ly) > o->b - 0.006) return 0.08;
+        return 0.30;
+    case OBJ_EXIT:
+        if (fabs(lx) > o->a || fabs(ly) > o->b) return -1;
+        return fabs(ly) < 0.3 * o->b && fabs(lx) < 0.7 * o->a ? 0.9 : 1.6;
+    case OBJ_LIGHT:
+        if (fabs(lx) > o->a || fabs(ly) > o->b) return -1;
+        if (fabs(lx) > o->a - 0.02 || fabs(ly) > o->b - 0.02) return 0.85; /* frame */
+        return LIGHT;
+    }
+    return -1;
+}
+
+/* Gap from a point to a light's rectangle (0 inside). */
+static double rect_gap(const object *o, double X, double Y)
+{
+    double c = cos(o->rot), s = sin(o->rot), dx = X - o->x, dy = Y - o->y;
+    double lx = fabs(c * dx + s * dy) - o->a, ly = fabs(-s * dx + c * dy) - o->b;
+    lx = lx > 0 ? lx : 0;
+    ly = ly > 0 ? ly : 0;
+    return sqrt(lx * lx + ly * ly);
+}
+
+static double radiance(const scene *s, double X, double Y)
+{
+    double v = tile_radiance(s, X, Y), halo = 0;
+    int i;
+    /* objects later in the list lie on top */
+    for (i = 0; i < s->n; i++) {
+        const object *o = &s->obj[i];
+        double dx = X - o->x, dy = Y - o->y, reach = o->a > o->b ? o->a : o->b;
+        double c, sn, r;
+        if ((o->kind == OBJ_LIGHT || o->kind == OBJ_DOWNLIGHT) &&
+            fabs(dx) < reach + 8 * s->halo_sigma && fabs(dy) < reach + 8 * s->halo_sigma) {
+            double g = o->kind == OBJ_LIGHT ? rect_gap(o, X, Y) : fmax(0, sqrt(dx * dx + dy * dy) - 0.8 * o->a);
+            halo += s->halo_amp * exp(-g / s->halo_sigma) * (o->kind == OBJ_LIGHT ? 1.0 : 0.4);
+        }
+        if (fabs(dx) > reach * 1.5 || fabs(dy) > reach * 1.5)
+            continue;
+        c = cos(o->rot);
+        sn = sin(o->rot);
+        r = object_radiance(s, o, c * dx + sn * dy, -sn * dx + c * dy);
+        if (r >= 0)
+            v = r;
+    }
+    return v + halo;
+}
+
+/* ---- camera geometry ---- */
+
+/* Map point on the ceiling -> pixel. Camera frame: x right (+u), y down
+ * (+v), z up; image top is the robot's forward (+x_r), +u its left (+y_r). */
+static void map_to_pixel(const scene *s, double X, double Y, double *u, double *v)
+{
+    double c = cos(s->yaw), sn = sin(s->yaw), dx = X - s->cx, dy = Y - s->cy;
+    double xr = c * dx + sn * dy, yr = -sn * dx + c * dy;
+    rl_camera_project(&s->cam, yr / s->distance, -xr / s->distance, u, v);
+}
+
+static void ray_to_map(const scene *s, double xn, double yn, double ox, double oy, double *X,
+                       double *Y)
+{
+    double xr = -yn * s->distance, yr = xn * s->distance, c = cos(s->yaw), sn = sin(s->yaw);
+    *X = s->cx + ox + c * xr - sn * yr;
+    *Y = s->cy + oy + sn * xr + c * yr;
+}
+
+/* Undistorted rays of every subsample, cached per camera. */
+static double *ray_table;
+static rl_camera ray_cam;
+
+static int build_rays(const rl_camera *cam)
+{
+    int W = cam->width, H = cam->height, x, y, a, b;
+    if (ray_table && memcmp(&ray_cam, cam, sizeof *cam) == 0)
+        return 0;
+    free(ray_table);
+    ray_table = malloc(sizeof(double) * 2 * (size_t)W * H * SUB * SUB);
+    if (!ray_table)
+        return -1;
+    ray_cam = *cam;
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++)
+            for (b = 0; b < SUB; b++)
+                for (a = 0; a < SUB; a++) {
+                    double *r = ray_table + 2 * ((((size_t)y * W + x) * SUB + b) * SUB + a);
+                    rl_camera_unproject(cam, x + (a + 0.5) / SUB - 0.5, y + (b + 0.5) / SUB - 0.5, &r[0], &r[1]);
+                }
+    return 0;
+}
+
+static void gauss_blur(double *img, int W, int H, double sigma)
+{
+    int rad = (int)ceil(3 * sigma), x, y, k;
+    double *k1, *tmp, sum = 0;
+    if (sigma <= 0.05)
+        return;
+    k1 = malloc(sizeof(double) * (2 * rad + 1));
+    tmp = malloc(sizeof(double) * (size_t)W * H);
+    for (k = -rad; k <= rad; k++)
+        sum += k1[k + rad] = exp(-0.5 * k * k / (sigma * sigma));
+    for (k = 0; k <= 2 * rad; k++)
+        k1[k] /= sum;
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            double acc = 0;
+            for (k = -rad; k <= rad; k++) {
+                int xx = x + k < 0 ? 0 : x + k >= W ? W - 1 : x + k;
+                acc += k1[k + rad] * img[(size_t)y * W + xx];
+            }
+            tmp[(size_t)y * W + x] = acc;
+        }
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            double acc = 0;
+            for (k = -rad; k <= rad; k++) {
+                int yy = y + k < 0 ? 0 : y + k >= H ? H - 1 : y + k;
+                acc += k1[k + rad] * tmp[(size_t)yy * W + x];
+            }
+            img[(size_t)y * W + x] = acc;
+        }
+    free(k1);
+    free(tmp);
+}
+
+static int render(const scene *s, uint8_t *out)
+{
+    int W = s->cam.width, H = s->cam.height, x, y, a, b;
+    double *lin = malloc(sizeof(double) * (size_t)W * H);
+    double rmax = sqrt(s->cam.cx * s->cam.cx + s->cam.cy * s->cam.cy);
+    if (!lin || build_rays(&s->cam) != 0)
+        return -1;
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            double acc = 0, du = x - s->cam.cx, dv = y - s->cam.cy;
+            for (b = 0; b < SUB; b++)
+                for (a = 0; a < SUB; a++) {
+                    const double *r = ray_table + 2 * ((((size_t)y * W + x) * SUB + b) * SUB + a);
+                    /* motion blur: each subsample at its own instant */
+                    double t = (b * SUB + a + 0.5) / (SUB * SUB) - 0.5, X, Y;
+                    ray_to_map(s, r[0], r[1], t * s->motion * cos(s->motion_dir),
+                               t * s->motion * sin(s->motion_dir), &X, &Y);
+                    acc += radiance(s, X, Y);
+                }
+            acc /= SUB * SUB;
+            acc *= 1.0 - s->vignette * (du * du + dv * dv) / (rmax * rmax);
+            lin[(size_t)y * W + x] = acc * s->gain;
+        }
+    /* tone curve first (the sensor clips), then optics blur, then noise */
+    for (x = 0; x < W * H; x++)
+        lin[x] = 255.0 * pow(fmin(1.0, fmax(0.0, lin[x])), 1 / 2.2);
+    gauss_blur(lin, W, H, s->blur);
+    for (x = 0; x < W * H; x++) {
+        double v = lin[x] + (s->noise > 0 ? s->noise * nrand() : 0);
+        out[x] = (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v + 0.5);
+    }
+    free(lin);
+    return 0;
+}
+
+/* ---- scenes ---- */
+
+typedef enum { SET_CLEAN, SET_CLUTTERED, SET_GLARE, SET_BORDER, SET_CLUTTER_ONLY, SET_DIM,
+               SET_BLUR, SET_MOTION, SET_PATH } set_kind;
+
+static const char *set_names[] = {"clean", "cluttered", "glare", "border", "clutter_only",
+                                  "dim", "blur", "motion", "path"};
+
+static int add_obj(scene *s, obj_kind k, double x, double y, double rot, double a, double b, int id)
+{
+    object *o;
+    if (s->n == MAX_OBJ)
+        return -1;
+    o = &s->obj[s->n++];
+    o->kind = k; o->x = x; o->y = y; o->rot = rot; o->a = a; o->b = b; o->id = id;
+    return 0;
+}
+
+static void add_landmark(scene *s, double x, double y, int id)
+{
+    double R = s->diameter / 2, rot = urand(-0.15, 0.15) + (rng_next() & 1 ? M_PI / 2 : 0);
+    /* printed on a sheet (A4 proportions), rotated as taped */
+    add_obj(s, OBJ_PAPER, x, y, rot, R * (s->twin ? 1.25 : 1.0), R * 1.414 * (s->twin ? 1.25 : 1.0), 0);
+    add_obj(s, OBJ_LANDMARK, x, y, s->twin ? rot : 0, R, R, id);
+}
+
+static void add_clutter(scene *s, double x, double y, int ring_like)
+{
+    int k = ring_like ? (int)(rng_next() % 3) : (int)(rng_next() % 7);
+    double rot = urand(0, M_PI);
+    static const obj_kind kinds[] = {OBJ_SPEAKER, OBJ_DOWNLIGHT, OBJ_SMOKE, OBJ_SPRINKLER,
+                                     OBJ_VENT, OBJ_BOX, OBJ_EXIT};
+    switch (kinds[k]) {
+    case OBJ_SPEAKER: add_obj(s, OBJ_SPEAKER, x, y, 0, urand(0.08, 0.14), 0, 0); break;
+    case OBJ_DOWNLIGHT: add_obj(s, OBJ_DOWNLIGHT, x, y, 0, urand(0.07, 0.10), 0, 0); break;
+    case OBJ_SMOKE: add_obj(s, OBJ_SMOKE, x, y, 0, urand(0.05, 0.07), 0, 0); break;
+    case OBJ_SPRINKLER: add_obj(s, OBJ_SPRINKLER, x, y, 0, urand(0.02, 0.035), 0, 0); break;
+    case OBJ_VENT: add_obj(s, OBJ_VENT, x, y, rot, urand(0.12, 0.2), 0, 0); break;
+    case OBJ_BOX: add_obj(s, OBJ_BOX, x, y, rot, urand(0.05, 0.12), urand(0.05, 0.12), 0); break;
+    default: add_obj(s, OBJ_EXIT, x, y, rot, 0.15, 0.08, 0); break;
+    }
+}
+
+/* The site: a grid of landmarks every tile (the paper's 0.61 m), ids from
+ * a fixed layout, some tiles holding lights instead. */
+#define SITE_COLS 6
+#define SITE_ROWS 5
+
+static int site_id(int i, int j)
+{
+    /* ids 1..30 spread so that neighbours differ in several bits */
+    return (int)((((unsigned)(j * SITE_COLS + i)) * 7u) % 30u) + 1;
+}
+
+static void site_scene(scene *s, set_kind kind)
+{
+    int i, j;
+    s->tile_px = s->tile_py = 0;
+    for (j = -1; j <= SITE_ROWS; j++)
+        for (i = -1; i <= SITE_COLS; i++) {
+            double x = (i + 0.5) * s->tile, y = (j + 0.5) * s->tile;
+            int inside = i >= 0 && j >= 0 && i < SITE_COLS && j < SITE_ROWS;
+            if (inside)
+                add_landmark(s, x, y, site_id(i, j));
+            else if ((i + j) % 3 == 0)
+                add_obj(s, OBJ_LIGHT, x, y, 0, 0.29, 0.29, 0);
+            else if ((i * 7 + j) % 5 == 0 && kind == SET_PATH)
+                add_clutter(s, x + 0.1, y - 0.05, 0);
+        }
+}
+
+static void random_scene(scene *s, set_kind kind)
+{
+    int i, j, pool[RL_MAX_MAP_LANDMARKS], npool = rl_family_count(&s->fam);
+    double view, reach;
+    s->tile_px = urand(0, s->tile);
+    s->tile_py = urand(0, s->tile);
+    for (i = 0; i < npool; i++)
+        pool[i] = i + 1;
+    /* the view's half-diagonal on the ceiling: landmarks only where they
+     * can be seen (ids stay unique in a frame), other things a bit beyond */
+    view = 0.5 * sqrt((double)s->cam.width * s->cam.width + (double)s->cam.height * s->cam.height) /
+           s->cam.fx * s->distance * 1.05;
+    reach = view + s->tile;
+    for (j = -8; j <= 8; j++)
+        for (i = -8; i <= 8; i++) {
+            double x = s->tile_px + (floor(s->cx / s->tile) + i + 0.5) * s->tile;
+            double y = s->tile_py + (floor(s->cy / s->tile) + j + 0.5) * s->tile;
+            double p = urand(0, 1), d = hypot(x - s->cx, y - s->cy);
+            if (d > reach)
+                continue;
+            if (kind == SET_CLUTTER_ONLY) {
+                if (p < 0.12)
+                    add_obj(s, OBJ_LIGHT, x, y, 0, 0.29, 0.29, 0);
+                else if (p < 0.75)
+                    add_clutter(s, x + urand(-0.15, 0.15), y + urand(-0.15, 0.15), p < 0.45);
+                continue;
+            }
+            if (p < 0.55 && d < view + s->diameter && npool > 0) {
+                int pick = (int)(rng_next() % (unsigned)npool), id = pool[pick];
+                pool[pick] = pool[--npool];
+                add_landmark(s, x + urand(-0.04, 0.04), y + urand(-0.04, 0.04), id);
+                if (kind == SET_GLARE && urand(0, 1) < 0.6) {
+                    /* a light 2 to 6 cm from the landmark's edge, on one side */
+                    object *lm = &s->obj[s->n - 1];
+                    double gap = urand(0.02, 0.06), hw = 0.29, side = (double)(rng_next() % 4);
+                    double off = lm->a + gap + hw;
+                    double lx = lm->x + (side == 0 ? off : side == 1 ? -off : urand(-0.1, 0.1));
+                    double ly = lm->y + (side == 2 ? off : side == 3 ? -off : urand(-0.1, 0.1));
+                    add_obj(s, OBJ_LIGHT, lx, ly, 0, hw, hw, 0);
+                }
+            } else if (p < 0.65 && kind != SET_CLEAN) {
+                add_obj(s, OBJ_LIGHT, x, y, 0, 0.29, 0.29, 0);
+            } else if (p < 0.85 && (kind == SET_CLUTTERED || kind == SET_BORDER || kind == SET_DIM)) {
+                add_clutter(s, x + urand(-0.12, 0.12), y + urand(-0.12, 0.12), p < 0.72);
+            }
+        }
+    /* lights go last: they cover the paper they overlap */
+    {
+        int a, b = 0;
+        object tmp[MAX_OBJ];
+        for (a = 0; a < s->n; a++)
+            if (s->obj[a].kind != OBJ_LIGHT)
+                tmp[b++] = s->obj[a];
+        for (a = 0; a < s->n; a++)
+            if (s->obj[a].kind == OBJ_LIGHT)
+                tmp[b++] = s->obj[a];
+        memcpy(s->obj, tmp, sizeof(object) * (size_t)s->n);
+    }
+}
+
+static void effects(scene *s, set_kind kind)
+{
+    s->gain = 1.0;
+    s->vignette = 0.15;
+    s->blur = 0.5;
+    s->noise = 1.5;
+    s->motion = 0;
+    s->halo_amp = urand(0.3, 0.7);
+    s->halo_sigma = urand(0.03, 0.07);
+    switch (kind) {
+    case SET_CLEAN: s->vignette = 0.1; s->noise = 1.0; break;
+    case SET_CLUTTERED: s->vignette = urand(0.1, 0.4); s->blur = urand(0.4, 1.0); s->noise = urand(1, 3); s->gain = urand(0.7, 1.1); break;
+    case SET_GLARE: s->halo_amp = urand(0.5, 0.9); s->halo_sigma = urand(0.04, 0.07); break;
+    case SET_BORDER: s->vignette = 0.3; break;
+    case SET_CLUTTER_ONLY: s->blur = urand(0.4, 1.0); s->noise = 2; break;
+    case SET_DIM: s->gain = urand(0.25, 0.4); s->noise = 2.5; s->vignette = 0.35; break;
+    case SET_BLUR: s->blur = urand(1.2, 1.8); break;
+    case SET_MOTION: s->motion = urand(0.015, 0.03); s->motion_dir = urand(0, 2 * M_PI); break;
+    case SET_PATH: break;
+    }
+}
+
+/* ---- ground truth ---- */
+
+static double visible_fraction(const scene *s, const object *o)
+{
+    int i, j, in = 0, n = 0;
+    for (j = -20; j <= 20; j++)
+        for (i = -20; i <= 20; i++) {
+            double lx = i / 20.0 * o->a, ly = j / 20.0 * o->a, u, v;
+            if (lx * lx + ly * ly > o->a * o->a)
+                continue;
+            n++;
+            map_to_pixel(s, o->x + lx, o->y + ly, &u, &v);
+            in += u >= -0.5 && v >= -0.5 && u <= s->cam.width - 0.5 && v <= s->cam.height - 0.5;
+        }
+    return (double)in / n;
+}
+
+static double light_gap(const scene *s, const object *o)
+{
+    double best = 1e9;
+    int i, k;
+    for (i = 0; i < s->n; i++) {
+        const object *l = &s->obj[i];
+        if (l->kind != OBJ_LIGHT && l->kind != OBJ_DOWNLIGHT)
+            continue;
+        for (k = 0; k < 72; k++) { /* landmark edge to light, sampled */
+            double X = o->x + o->a * cos(k * M_PI / 36), Y = o->y + o->a * sin(k * M_PI / 36);
+            double g = l->kind == OBJ_LIGHT ? rect_gap(l, X, Y)
+                                            : fmax(0, hypot(X - l->x, Y - l->y) - l->a);
+            if (g < best)
+                best = g;
+        }
+    }
+    return best;
+}
+
+static int write_truth(const char *path, const char *image, const scene *s, double rx, double ry,
+                       double ryaw)
+{
+    FILE *f = fopen(path, "w");
+    int i, n = 0;
+    if (!f)
+        return -1;
+    fprintf(f, "image: %s\nwidth: %d\nheight: %d\nfamily: ring%d\ndiameter: %.4f\n", image,
+            s->cam.width, s->cam.height, s->fam.bits, s->diameter);
+    fprintf(f, "distance: %.4f\ncamera: {x: %.6f, y: %.6f, yaw: %.6f}\n", s->distance, s->cx, s->cy, s->yaw);
+    fprintf(f, "robot: {x: %.6f, y: %.6f, yaw: %.6f}\n", rx, ry, ryaw);
+    fprintf(f, "twin: %s\nlandmarks:\n", s->twin ? "apriltag36h11" : "none");
+    for (i = 0; i < s->n; i++) {
+        const object *o = &s->obj[i];
+        double u, v, vis, gap;
+        if (o->kind != OBJ_LANDMARK)
+            continue;
+        map_to_pixel(s, o->x, o->y, &u, &v);
+        if (u < -3 * o->a / s->distance * s->cam.fx || v < -3 * o->a / s->distance * s->cam.fx ||
+            u > s->cam.width * 1.5 || v > s->cam.height * 1.5)
+            continue;
+        vis = visible_fraction(s, o);
+        if (vis <= 0)
+            continue;
+        gap = light_gap(s, o);
+        fprintf(f, "  - {id: %d, x: %.6f, y: %.6f, u: %.4f, v: %.4f, radius: %.3f, visible: %.4f, light_gap: %.4f, light_gap_radii: %.3f}\n",
+                o->id, o->x, o->y, u, v, o->a / s->distance * s->cam.fx, vis, gap, gap / o->a);
+        n++;
+    }
+    if (n == 0)
+        fprintf(f, "  []\n");
+    fprintf(f, "effects: {gain: %.3f, vignette: %.3f, blur: %.3f, noise: %.3f, motion: %.4f, halo: %.3f}\n",
+            s->gain, s->vignette, s->blur, s->noise, s->motion, s->halo_amp);
+    return fclose(f);
+}
+
+/* ---- command line ---- */
+
+static const char *help =
+    "usage: ringloc-render --out DIR (--set NAME --count N | --path KIND --frames N)\n"
+    "                      [--seed S] [--size 640x480] [--camera CAM.yaml] [--twin]\n"
+    "                      [--mount X,Y,YAW] [--write-map FILE] [--write-camera FILE]\n\n"
+    "Render ceiling fixtures with ground truth (NAME_NNN.png + NAME_NNN.yaml).\n"
+    "  --set NAME      clean, cluttered, glare, border, clutter_only, dim, blur, motion:\n"
+    "                  random scenes around the paper's set-up (ring5, 0.21 m landmarks,\n"
+    "                  1.87 m from camera to ceiling, 0.61 m tiles)\n"
+    "  --path KIND     straight, rect or circle: frames along a robot path under a fixed\n"
+    "                  site of 6x5 landmarks 0.61 m apart (the map of --write-map)\n"
+    "  --twin          also render each frame with AprilTag 36h11 tags of the same size\n"
+    "                  at the same places (NAME_NNN_tag.png)\n"
+    "  --camera FILE   calibration to render with (default: 640x480, 70 deg, mild\n"
+    "                  barrel distortion; --size scales it)\n"
+    "  --mount X,Y,YAW camera offset in the robot frame (default 0,0,0)\n";
+
+static int path_pose(const char *kind, int k, int n, double *x, double *y, double *yaw)
+{
+    double t = n > 1 ? (double)k / (n - 1) : 0;
+    if (strcmp(kind, "straight") == 0) {
+        *x = 0.6 + 2.4 * t;
+        *y = 1.55;
+        *yaw = 0.0;
+    } else if (strcmp(kind, "circle") == 0) {
+        double a = 2 * M_PI * t * (n - 1) / n;
+        *x = 1.83 + 0.6 * cos(a);
+        *y = 1.52 + 0.6 * sin(a);
+        *yaw = a + M_PI / 2;
+    } else if (strcmp(kind, "rect") == 0) {
+        /* perimeter of (0.9, 0.9)-(2.7, 2.1), heading along each edge */
+        double w = 1.8, h = 1.2, p = t * 2 * (w + h) * (n - 1) / n;
+        if (p < w) { *x = 0.9 + p; *y = 0.9; *yaw = 0; }
+        else if (p < w + h) { *x = 2.7; *y = 0.9 + p - w; *yaw = M_PI / 2; }
+        else if (p < 2 * w + h) { *x = 2.7 - (p - w - h); *y = 2.1; *yaw = M_PI; }
+        else { *x = 0.9; *y = 2.1 - (p - 2 * w - h); *yaw = -M_PI / 2; }
+    } else {
+        return -1;
+    }
+    *yaw = atan2(sin(*yaw), cos(*yaw));
+    return 0;
+}
+
+static void default_camera(rl_camera *cam, int w, int h)
+{
+    rl_camera_defaults(cam, w, h, 70.0 * M_PI / 180.0);
+    cam->model = RL_DIST_PLUMB_BOB;
+    cam->k[0] = -0.12;
+    cam->k[1] = 0.08;
+    cam->k[2] = 0.0004;
+    cam->k[3] = -0.0003;
+    cam->fy = cam->fx * 1.002;
+    cam->cx += 3.2 * w / 640.0;
+    cam->cy -= 2.1 * h / 480.0;
+}
+
+int main(int argc, char **argv)
+{
+    static const struct option opts[] = {
+        {"out", required_argument, 0, 'o'}, {"set", required_argument, 0, 's'},
+        {"count", required_argument, 0, 'n'}, {"path", required_argument, 0, 'p'},
+        {"frames", required_argument, 0, 'n'}, {"seed", required_argument, 0, 'S'},
+        {"size", required_argument, 0, 'z'}, {"camera", required_argument, 0, 'c'},
+        {"twin", no_argument, 0, 't'}, {"mount", required_argument, 0, 'm'},
+        {"write-map", required_argument, 0, 'M'}, {"write-camera", required_argument, 0, 'C'},
+        {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
+    const char *out = NULL, *set = NULL, *path = NULL, *cam_path = NULL, *map_out = NULL,
+               *cam_out = NULL;
+    int count = 10, w = 640, h = 480, twin = 0, c, k, i;
+    unsigned long seed = 1;
+    double mx = 0, my = 0, myaw = 0;
+    static scene s;
+    rl_camera cam;
+    set_kind kind = SET_CLEAN;
+    char err[512], name[1024], file[1200];
+    uint8_t *px;
+
+    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+        switch (c) {
+        case 'o': out = optarg; break;
+        case 's': set = optarg; break;
+        case 'p': path = optarg; break;
+        case 'n': count = atoi(optarg); break;
+        case 'S': seed = strtoul(optarg, NULL, 10); break;
+        case 'z':
+            if (sscanf(optarg, "%dx%d", &w, &h) != 2 || w < 16 || h < 16 || w > 4096 || h > 4096) {
+                fprintf(stderr, "ringloc-render: --size: '%s' is not a size like 640x480\n", optarg);
+                return 2;
+            }
+            break;
+        case 'c': cam_path = optarg; break;
+        case 't': twin = 1; break;
+        case 'm':
+            if (sscanf(optarg, "%lf,%lf,%lf", &mx, &my, &myaw) != 3) {
+                fprintf(stderr, "ringloc-render: --mount: '%s' is not X,Y,YAW\n", optarg);
+                return 2;
+            }
+            break;
+        case 'M': map_out = optarg; break;
+        case 'C': cam_out = optarg; break;
+        case 'h': fputs(help, stdout); return 0;
+        default: fprintf(stderr, "ringloc-render: see --help\n"); return 2;
+        }
+    }
+    if (cam_path) {
+        if (rl_camfile_load(cam_path, &cam, err, sizeof err) != RL_OK) {
+            fprintf(stderr, "ringloc-render: %s\n", err);
+            return 1;
+        }
+    } else {
+        default_camera(&cam, w, h);
+    }
+    memset(&s, 0, sizeof s);
+    s.cam = cam;
+    s.fam.bits = 5;
+    s.diameter = 0.21;
+    s.distance = 1.87;
+    s.ceiling_height = 2.75;
+    s.cam_z = s.ceiling_height - s.distance;
+    s.tile = 0.61;
+    if (cam_out && rl_camfile_save(cam_out, &cam, err, sizeof err) != RL_OK) {
+        fprintf(stderr, "ringloc-render: %s\n", err);
+        return 1;
+    }
+    if (map_out) {
+        static rl_map map;
+        int a, b;
+        map.family = s.fam;
+        map.diameter = s.diameter;
+        map.ceiling_height = s.ceiling_height;
+        for (b = 0; b < SITE_ROWS; b++)
+            for (a = 0; a < SITE_COLS; a++) {
+                rl_map_landmark *lm = &map.lm[map.count++];
+                lm->id = site_id(a, b);
+                lm->x = (a + 0.5) * s.tile;
+                lm->y = (b + 0.5) * s.tile;
+            }
+        if (rl_mapfile_save(map_out, &map, err, sizeof err) != RL_OK) {
+            fprintf(stderr, "ringloc-render: %s\n", err);
+            return 1;
+        }
+    }
+    if (!out) {
+        if (map_out || cam_out)
+            return 0;
+        fprintf(stderr, "ringloc-render: --out DIR is required (see --help)\n");
+        return 2;
+    }
+    if ((set == NULL) == (path == NULL)) {
+        fprintf(stderr, "ringloc-render: give --set NAME or --path KIND (see --help)\n");
+        return 2;
+    }
+    if (set) {
+        for (i = 0; i < (int)(sizeof set_names / sizeof set_names[0]) - 1; i++)
+            if (strcmp(set, set_names[i]) == 0)
+                break;
+        if (i == (int)(sizeof set_names / sizeof set_names[0]) - 1) {
+            fprintf(stderr, "ringloc-render: --set: unknown set '%s'\n", set);
+            return 2;
+        }
+        kind = (set_kind)i;
+    } else {
+        double x, y, yaw;
+        kind = SET_PATH;
+        if (path_pose(path, 0, 2, &x, &y, &yaw) != 0) {
+            fprintf(stderr, "ringloc-render: --path: '%s' is not straight, rect or circle\n", path);
+            return 2;
+        }
+    }
+    if (mkdir(out, 0777) != 0 && errno != EEXIST) {
+        fprintf(stderr, "ringloc-render: %s: %s\n", out, strerror(errno));
+        return 1;
+    }
+    tagfam = tag36h11_create();
+    for (i = 0; i < 32; i++)
+        tag_images[i] = apriltag_to_image(tagfam, i);
+    px = malloc((size_t)cam.width * cam.height);
+    for (k = 0; k < count; k++) {
+        double rx, ry, ryaw;
+        int pass;
+        rng_state = 0x9E3779B97F4A7C15ull ^ (seed * 1000003ull + (uint64_t)k * 7919ull + kind * 104729ull);
+        for (i = 0; i < 4; i++)
+            rng_next();
+        s.n = 0;
+        s.twin = 0;
+        effects(&s, kind);
+        if (kind == SET_PATH) {
+            path_pose(path, k, count, &rx, &ry, &ryaw);
+            snprintf(name, sizeof name, "%s_%03d", path, k);
+        } else {
+            rx = urand(2, 8);
+            ry = urand(2, 8);
+            ryaw = urand(-M_PI, M_PI);
+            snprintf(name, sizeof name, "%s_%03d", set, k);
+        }
+        /* camera pose from the robot pose and the mount */
+        s.cx = rx + cos(ryaw) * mx - sin(ryaw) * my;
+        s.cy = ry + sin(ryaw) * mx + cos(ryaw) * my;
+        s.yaw = ryaw + myaw;
+        {
+            uint64_t keep = rng_state;
+            if (kind == SET_PATH)
+                site_scene(&s, kind);
+            else
+                random_scene(&s, kind);
+            (void)keep;
+        }
+        for (pass = 0; pass <= twin; pass++) {
+            uint64_t noise_seed = rng_state;
+            rl_image img = rl_image_view(cam.width, cam.height, cam.width, px);
+            s.twin = pass;
+            if (pass) { /* the twin sees the same noise */
+                rng_state = noise_seed;
+                for (i = 0; i < s.n; i++)
+                    if (s.obj[i].kind == OBJ_PAPER)
+                        s.obj[i].a *= 1.25, s.obj[i].b *= 1.25;
+            }
+            if (render(&s, px) != 0) {
+                fprintf(stderr, "ringloc-render: out of memory\n");
+                return 1;
+            }
+            snprintf(file, sizeof file, "%s/%s%s.png", out, name, pass ? "_tag" : "");
+            if (rl_png_write_gray(file, &img, err, sizeof err) != RL_OK) {
+                fprintf(stderr, "ringloc-render: %s\n", err);
+                return 1;
+            }
+        }
+        s.twin = 0;
+        snprintf(file, sizeof file, "%s.png", name);
+        {
+            char truth[1200];
+            snprintf(truth, sizeof truth, "%s/%s.yaml", out, name);
+            if (write_truth(truth, file, &s, rx, ry, ryaw) == 0)
+                continue;
+            snprintf(file, sizeof file, "%s", truth);
+        }
+        {
+            fprintf(stderr, "ringloc-render: %s: %s\n", file, strerror(errno));
+            return 1;
+        }
+    }
+    free(px);
+    /* the tag bitmaps live until exit: libapriltag does not export
+     * image_u8_destroy (tests/lsan.supp) */
+    tag36h11_destroy(tagfam);
+    free(ray_table);
+    return 0;
+}
