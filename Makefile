@@ -14,6 +14,10 @@ CMAKE_ARGS ?=
 
 .PHONY: all deps host host-test host-test-asan bench clean
 
+# Benchmark frames: rendered once per size (AprilTag twins included).
+BENCH_FRAMES ?= 20
+BENCH_DIR    ?= $(BUILD)/bench
+
 all: host
 
 deps:
@@ -34,6 +38,14 @@ $(BUILD_ASAN)/CMakeCache.txt: | deps
 host-test-asan: deps $(BUILD_ASAN)/CMakeCache.txt
 	cmake --build $(BUILD_ASAN) -j $(JOBS)
 	cd $(BUILD_ASAN) && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp ctest --output-on-failure -j $(JOBS)
+
+bench: host
+	@for size in 640x480 1280x960; do \
+	  [ -f $(BENCH_DIR)/$$size/cluttered_000_tag.png ] || \
+	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/$$size --set cluttered \
+	    --count $(BENCH_FRAMES) --seed 3 --size $$size --twin || exit 1; \
+	done
+	$(BUILD)/tools/ringloc-bench $(BENCH_DIR)/640x480 $(BENCH_DIR)/1280x960
 
 clean:
 	rm -rf $(BUILD) $(BUILD_ASAN)

@@ -1,5 +1,6 @@
 #include "rl_hist.h"
 
+#include <math.h>
 #include <string.h>
 
 /* Fewest pixels (fraction of the frame) at the top of the range that make
@@ -15,12 +16,19 @@
 
 void rl_hist_compute(const rl_image *img, rl_hist *h)
 {
+    rl_hist_compute_rows(img, h, 1);
+}
+
+void rl_hist_compute_rows(const rl_image *img, rl_hist *h, int row_step)
+{
     int x, y;
     /* Four partial histograms break the store-to-load dependency when
      * neighbouring pixels share a bin (flat ceilings). */
     uint32_t part[4][256];
     memset(part, 0, sizeof part);
-    for (y = 0; y < img->height; y++) {
+    if (row_step < 1)
+        row_step = 1;
+    for (y = 0; y < img->height; y += row_step) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
         for (x = 0; x + 3 < img->width; x += 4) {
             part[0][row[x]]++;
@@ -33,32 +41,23 @@ void rl_hist_compute(const rl_image *img, rl_hist *h)
     }
     for (x = 0; x < 256; x++)
         h->bin[x] = part[0][x] + part[1][x] + part[2][x] + part[3][x];
-    h->total = (uint32_t)img->width * (uint32_t)img->height;
+    h->total = (uint32_t)img->width * (uint32_t)((img->height + row_step - 1) / row_step);
 }
 
-rl_err rl_hist_kmeans(const rl_hist *h, int lo, int hi, int k, double *centres, int *start)
+/* Exact K-means by dynamic programming over `n` bins of (count, sum,
+ * sum of squares): bins can be single grey levels or groups of them. b[m]
+ * gets the first bin of cluster m, b[k] = n. */
+static void kmeans_dp(const double *cnt, const double *sum, const double *sq, int n, int k,
+                      int *b)
 {
-    /* Prefix sums of count, sum and sum of squares make the within-cluster
-     * squared error of any bin range O(1); D[m][j] is the least error of
-     * m + 1 clusters over bins lo..j. */
-    double cnt[257], sum[257], sq[257], D[3][256];
-    int arg[3][256], occupied = 0, i, j, m, n = hi - lo, b[4];
-    if (h == NULL || centres == NULL || k < 1 || k > 3 || lo < 0 || hi > 256 || n < 1)
-        return RL_EINVAL;
-    cnt[0] = sum[0] = sq[0] = 0.0;
-    for (i = 0; i < n; i++) {
-        double c = h->bin[lo + i], v = lo + i;
-        cnt[i + 1] = cnt[i] + c;
-        sum[i + 1] = sum[i] + c * v;
-        sq[i + 1] = sq[i] + c * v * v;
-        occupied += h->bin[lo + i] != 0;
-    }
-    if (occupied < k)
-        return RL_ERANGE;
-#define COST(a, z) /* bins a..z inclusive, relative to lo */                                \
-    ((cnt[(z) + 1] - cnt[a]) > 0 ? (sq[(z) + 1] - sq[a]) - (sum[(z) + 1] - sum[a]) *     \
-                                                              (sum[(z) + 1] - sum[a]) /  \
-                                                              (cnt[(z) + 1] - cnt[a])    \
+    /* prefix sums make the within-cluster squared error of a bin range
+     * O(1); D[m][j] is the least error of m + 1 clusters over bins 0..j */
+    double D[3][256];
+    int arg[3][256], i, j, m;
+#define COST(a, z)                                                                           \
+    ((cnt[(z) + 1] - cnt[a]) > 0 ? (sq[(z) + 1] - sq[a]) - (sum[(z) + 1] - sum[a]) *      \
+                                                               (sum[(z) + 1] - sum[a]) /  \
+                                                               (cnt[(z) + 1] - cnt[a])    \
                                  : 0.0)
     for (j = 0; j < n; j++) {
         D[0][j] = COST(0, j);
@@ -86,12 +85,115 @@ rl_err rl_hist_kmeans(const rl_hist *h, int lo, int hi, int k, double *centres, 
         b[m] = arg[m][j];
         j = b[m] - 1;
     }
-    for (m = 0; m < k; m++) {
-        double c = cnt[b[m + 1]] - cnt[b[m]];
-        centres[m] = c > 0 ? (sum[b[m + 1]] - sum[b[m]]) / c : lo + (b[m] + b[m + 1]) / 2.0;
-        if (start)
-            start[m] = lo + b[m];
+}
+
+/* Grey levels per coarse bin for the first, exact-on-groups pass. */
+#define COARSE 4
+
+rl_err rl_hist_kmeans(const rl_hist *h, int lo, int hi, int k, double *centres, int *start)
+{
+    double cnt[257], sum[257], sq[257];
+    int occupied = 0, i, m, n = hi - lo, nc, b[4], bound[4], iter;
+    if (h == NULL || centres == NULL || k < 1 || k > 3 || lo < 0 || hi > 256 || n < 1)
+        return RL_EINVAL;
+    for (i = lo; i < hi; i++)
+        occupied += h->bin[i] != 0;
+    if (occupied < k)
+        return RL_ERANGE;
+    /* 1. the exact optimum over groups of COARSE grey levels (16 times
+     *    less work than over single levels) ... */
+    nc = (n + COARSE - 1) / COARSE;
+    cnt[0] = sum[0] = sq[0] = 0.0;
+    for (i = 0; i < nc; i++) {
+        double c = 0, s = 0, q = 0;
+        int v;
+        for (v = lo + i * COARSE; v < lo + (i + 1) * COARSE && v < hi; v++) {
+            c += h->bin[v];
+            s += (double)h->bin[v] * v;
+            q += (double)h->bin[v] * v * v;
+        }
+        cnt[i + 1] = cnt[i] + c;
+        sum[i + 1] = sum[i] + s;
+        sq[i + 1] = sq[i] + q;
     }
+    kmeans_dp(cnt, sum, sq, nc, k, b);
+    for (m = 0; m <= k; m++)
+        bound[m] = lo + b[m] * COARSE < hi ? lo + b[m] * COARSE : hi;
+    /* 2. ... then Lloyd's iterations on single levels from there: each
+     *    boundary moves to the midpoint of its neighbouring centres until
+     *    nothing changes, a fixed point of K-means next to the optimum. */
+    for (iter = 0; iter < 64; iter++) {
+        int changed = 0;
+        for (m = 0; m < k; m++) {
+            double c = 0, s = 0;
+            for (i = bound[m]; i < bound[m + 1]; i++) {
+                c += h->bin[i];
+                s += (double)h->bin[i] * i;
+            }
+            centres[m] = c > 0 ? s / c : 0.5 * (bound[m] + bound[m + 1] - 1);
+        }
+        for (m = 1; m < k; m++) {
+            /* levels strictly below the midpoint go to the lower cluster */
+            int nb = (int)floor(0.5 * (centres[m - 1] + centres[m])) + 1;
+            if (nb <= bound[m - 1])
+                nb = bound[m - 1] + 1;
+            if (nb >= bound[m + 1])
+                nb = bound[m + 1] - 1;
+            if (nb != bound[m]) {
+                bound[m] = nb;
+                changed = 1;
+            }
+        }
+        if (!changed)
+            break;
+    }
+    /* 3. Lloyd can stop next to the optimum: move each boundary within two
+     *    coarse bins while the exact squared error falls (prefix sums over
+     *    single levels make each try O(1)). The optimum over single levels
+     *    lies within a coarse bin of the optimum over groups. */
+    {
+        double pc[257], ps[257], pq[257];
+        int moved = 1, guard = 0;
+        pc[0] = ps[0] = pq[0] = 0.0;
+        for (i = 0; i < n; i++) {
+            double c = h->bin[lo + i], v = lo + i;
+            pc[i + 1] = pc[i] + c;
+            ps[i + 1] = ps[i] + c * v;
+            pq[i + 1] = pq[i] + c * v * v;
+        }
+#define SSE(a, z) /* levels a..z-1, relative to lo */                                     \
+    ((pc[z] - pc[a]) > 0 ? (pq[z] - pq[a]) - (ps[z] - ps[a]) * (ps[z] - ps[a]) / (pc[z] - pc[a]) \
+                         : 0.0)
+        while (moved && guard++ < 16) {
+            moved = 0;
+            for (m = 1; m < k; m++) {
+                int a = bound[m - 1] - lo, z = bound[m + 1] - lo, best = bound[m] - lo, t;
+                double best_e = SSE(a, best) + SSE(best, z);
+                for (t = best - 2 * COARSE; t <= best + 2 * COARSE; t++) {
+                    double e;
+                    if (t <= a || t >= z)
+                        continue;
+                    e = SSE(a, t) + SSE(t, z);
+                    if (e < best_e - 1e-9 * best_e) {
+                        best_e = e;
+                        best = t;
+                    }
+                }
+                if (best + lo != bound[m]) {
+                    bound[m] = best + lo;
+                    moved = 1;
+                }
+            }
+        }
+#undef SSE
+        for (m = 0; m < k; m++) {
+            double c = pc[bound[m + 1] - lo] - pc[bound[m] - lo];
+            centres[m] = c > 0 ? (ps[bound[m + 1] - lo] - ps[bound[m] - lo]) / c
+                               : 0.5 * (bound[m] + bound[m + 1] - 1);
+        }
+    }
+    for (m = 0; m < k && start; m++)
+        start[m] = bound[m];
     return RL_OK;
 }
 

@@ -37,6 +37,10 @@ typedef struct {
 /* Histogram of every pixel of the view (stride honoured). */
 void rl_hist_compute(const rl_image *img, rl_hist *h);
 
+/* Histogram of every row_step-th row: the levels of a frame do not need
+ * every pixel, and half the rows halve the cost. */
+void rl_hist_compute_rows(const rl_image *img, rl_hist *h, int row_step);
+
 /* Exact 1-D K-means on bins [lo, hi): k (1..3) centres, ascending, and
  * the first bin of each cluster in `start` (may be NULL). RL_EINVAL for a
  * bad range or k, RL_ERANGE when the range has fewer than k occupied

@@ -569,6 +569,25 @@ static const char *help =
     "                  barrel distortion; --size scales it)\n"
     "  --mount X,Y,YAW camera offset in the robot frame (default 0,0,0)\n";
 
+/* mkdir -p */
+static int mkdir_p(const char *dir)
+{
+    char buf[1024];
+    size_t i, n = strlen(dir);
+    if (n >= sizeof buf)
+        return -1;
+    memcpy(buf, dir, n + 1);
+    for (i = 1; i <= n; i++)
+        if (buf[i] == '/' || buf[i] == '\0') {
+            char c = buf[i];
+            buf[i] = '\0';
+            if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+                return -1;
+            buf[i] = c;
+        }
+    return 0;
+}
+
 static int path_pose(const char *kind, int k, int n, double *x, double *y, double *yaw)
 {
     double t = n > 1 ? (double)k / (n - 1) : 0;
@@ -721,7 +740,7 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    if (mkdir(out, 0777) != 0 && errno != EEXIST) {
+    if (mkdir_p(out) != 0) {
         fprintf(stderr, "ringloc-render: %s: %s\n", out, strerror(errno));
         return 1;
     }

@@ -1,0 +1,197 @@
+/* The recognizer's contract: workspace sizing and errors, stride, map
+ * restriction, and landmarks drawn at known places found there. */
+#include "rl_test.h"
+#include <math.h>
+#include "rl_recog.h"
+#include "rl_template.h"
+
+#define W 320
+#define H 240
+static uint8_t frame[H * (W + 16)];
+static rl_result res;
+static uint8_t *mem;
+
+typedef struct { int id; double u, v, r; } placed;
+static const placed scene[] = {{25, 70.3, 60.7, 24.0}, {6, 200.6, 80.2, 24.5},
+                               {17, 120.1, 170.4, 23.5}, {30, 260.4, 180.9, 24.2}};
+
+/* Draw the scene into a frame of stride `stride`: paper 215, ink 30. */
+static rl_image draw(int stride)
+{
+    static uint8_t t[H * W];
+    rl_family f = {5};
+    rl_image img = rl_image_view(W, H, stride, frame), tv = rl_image_view(W, H, W, t);
+    size_t i;
+    int x, y;
+    memset(frame, 215, sizeof frame);
+    for (i = 0; i < sizeof scene / sizeof scene[0]; i++) {
+        assert_int_equal(rl_tmpl_draw(&f, scene[i].id, scene[i].u, scene[i].v, scene[i].r, NULL, &tv, NULL), RL_OK);
+        for (y = 0; y < H; y++)
+            for (x = 0; x < W; x++)
+                if (t[y * W + x])
+                    frame[y * stride + x] = (uint8_t)(215 - (215 - 30) * t[y * W + x] / 255);
+    }
+    return img;
+}
+
+static rl_recog rec;
+
+static void init(const rl_recog_config *cfg)
+{
+    size_t n = rl_recog_workspace_size(W, H, cfg);
+    assert_true(n > 0);
+    free(mem);
+    mem = malloc(n);
+    assert_int_equal(rl_recog_init(&rec, cfg, W, H, mem, n), RL_OK);
+}
+
+static void test_finds_what_was_drawn(void **state)
+{
+    rl_recog_config cfg;
+    rl_image img = draw(W);
+    size_t i;
+    int j;
+    (void)state;
+    rl_recog_defaults(&cfg);
+    init(&cfg);
+    assert_int_equal(rl_recog_run(&rec, &img, &res), RL_OK);
+    assert_int_equal(res.n_landmarks, 4);
+    for (i = 0; i < 4; i++) {
+        int found = 0;
+        for (j = 0; j < res.n_landmarks; j++) {
+            const rl_detection *d = &res.landmarks[j];
+            if (d->id != scene[i].id)
+                continue;
+            found = 1;
+            if (hypot(d->u - scene[i].u, d->v - scene[i].v) > 0.1)
+                fail_msg("id %d at (%.3f, %.3f), drawn at (%.3f, %.3f)", d->id, d->u, d->v, scene[i].u, scene[i].v);
+            assert_true(fabs(d->radius - scene[i].r) < 0.5);
+            assert_true(d->score > 0.95);
+            assert_int_equal(d->pass, RL_PASS_GLOBAL);
+            assert_true(d->complete);
+        }
+        assert_true(found);
+    }
+    /* fixed order: by u */
+    for (j = 1; j < res.n_landmarks; j++)
+        assert_true(res.landmarks[j - 1].u <= res.landmarks[j].u);
+}
+
+static void test_stride_is_honoured(void **state)
+{
+    rl_recog_config cfg;
+    rl_image img;
+    rl_result *a = malloc(sizeof *a);
+    int j;
+    (void)state;
+    rl_recog_defaults(&cfg);
+    init(&cfg);
+    img = draw(W);
+    assert_int_equal(rl_recog_run(&rec, &img, a), RL_OK);
+    img = draw(W + 16);
+    for (j = 0; j < H; j++) /* garbage in the padding must not matter */
+        memset(frame + j * (W + 16) + W, 0, 16);
+    assert_int_equal(rl_recog_run(&rec, &img, &res), RL_OK);
+    assert_int_equal(res.n_landmarks, a->n_landmarks);
+    for (j = 0; j < res.n_landmarks; j++) {
+        assert_int_equal(res.landmarks[j].id, a->landmarks[j].id);
+        assert_true(res.landmarks[j].u == a->landmarks[j].u);
+    }
+    free(a);
+}
+
+static void test_map_restricts_ids(void **state)
+{
+    rl_recog_config cfg;
+    int ids[] = {6, 30, 11};
+    rl_image img = draw(W);
+    int j;
+    (void)state;
+    rl_recog_defaults(&cfg);
+    cfg.ids = ids;
+    cfg.n_ids = 3;
+    init(&cfg);
+    ids[0] = 99; /* the recognizer keeps its own copy */
+    assert_int_equal(rl_recog_run(&rec, &img, &res), RL_OK);
+    assert_int_equal(res.n_landmarks, 2);
+    for (j = 0; j < res.n_landmarks; j++)
+        assert_true(res.landmarks[j].id == 6 || res.landmarks[j].id == 30);
+}
+
+static void test_blank_frames(void **state)
+{
+    rl_recog_config cfg;
+    rl_image img = rl_image_view(W, H, W, frame);
+    (void)state;
+    rl_recog_defaults(&cfg);
+    init(&cfg);
+    memset(frame, 200, sizeof frame);
+    assert_int_equal(rl_recog_run(&rec, &img, &res), RL_OK);
+    assert_int_equal(res.n_landmarks, 0);
+    memset(frame, 255, sizeof frame);
+    assert_int_equal(rl_recog_run(&rec, &img, &res), RL_OK);
+    assert_int_equal(res.n_landmarks, 0);
+    memset(frame, 0, sizeof frame);
+    assert_int_equal(rl_recog_run(&rec, &img, &res), RL_OK);
+    assert_int_equal(res.n_landmarks, 0);
+}
+
+static void test_errors(void **state)
+{
+    rl_recog_config cfg;
+    rl_image img = rl_image_view(W - 1, H, W, frame);
+    int bad_ids[] = {3, 31};
+    size_t n;
+    (void)state;
+    rl_recog_defaults(&cfg);
+    init(&cfg);
+    assert_int_equal(rl_recog_run(&rec, &img, &res), RL_EINVAL); /* wrong size */
+    n = rl_recog_workspace_size(W, H, &cfg);
+    assert_int_equal(rl_recog_init(&rec, &cfg, W, H, mem, n - 1), RL_ENOMEM);
+    cfg.ids = bad_ids;
+    cfg.n_ids = 2;
+    assert_int_equal(rl_recog_workspace_size(W, H, &cfg), 0);
+    assert_int_equal(rl_recog_init(&rec, &cfg, W, H, mem, n), RL_ERANGE);
+    cfg.n_ids = 0;
+    assert_int_equal(rl_recog_init(&rec, &cfg, W, H, mem, n), RL_EINVAL);
+    rl_recog_defaults(&cfg);
+    cfg.family.bits = 9;
+    assert_int_equal(rl_recog_init(&rec, &cfg, W, H, mem, n), RL_ERANGE);
+    rl_recog_defaults(&cfg);
+    assert_int_equal(rl_recog_init(&rec, &cfg, 0, H, mem, n), RL_EINVAL);
+    assert_int_equal(rl_recog_init(&rec, &cfg, RL_MAX_IMAGE_DIM + 1, H, mem, n), RL_EINVAL);
+}
+
+/* The workspace is under 2 bytes per pixel plus a small fixed part: fit
+ * size = a * pixels + b over several frame sizes. */
+static void test_workspace_budget(void **state)
+{
+    rl_recog_config cfg;
+    size_t s1, s2;
+    double per_px, fixed;
+    (void)state;
+    rl_recog_defaults(&cfg);
+    s1 = rl_recog_workspace_size(640, 480, &cfg);
+    s2 = rl_recog_workspace_size(1280, 960, &cfg);
+    per_px = (double)(s2 - s1) / (1280.0 * 960 - 640.0 * 480);
+    fixed = (double)s1 - per_px * 640 * 480;
+    printf("  workspace: %zu bytes at 640x480 (%.2f B/px + %.0f B fixed), %zu at 1280x960\n", s1,
+           per_px, fixed, s2);
+    assert_true(per_px < 2.0);
+    assert_true(fixed < 256 * 1024);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_finds_what_was_drawn),
+        cmocka_unit_test(test_stride_is_honoured),
+        cmocka_unit_test(test_map_restricts_ids),
+        cmocka_unit_test(test_blank_frames),
+        cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_workspace_budget),
+    };
+    int rc = cmocka_run_group_tests(tests, NULL, NULL);
+    free(mem);
+    return rc;
+}

@@ -1,0 +1,146 @@
+/* ringloc-bench: recognition speed against AprilTag 3 on twin frames.
+ *
+ *   ringloc-bench DIR...
+ *
+ * Each DIR holds frames rendered with `ringloc-render --twin` (NAME.png
+ * with ring landmarks, NAME_tag.png with AprilTag 36h11 tags of the same
+ * size at the same places, NAME.yaml with the truth). For every frame size
+ * it prints the median recognition time per frame of ringloc and of
+ * AprilTag (tag36h11, one thread, default decimation), their ratio, what
+ * each found, and ringloc's workspace. Both run in this process on the
+ * same core, one after the other, so the ratio holds on any machine.
+ */
+#define _GNU_SOURCE
+#include <dirent.h>
+#include <sched.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <apriltag/apriltag.h>
+#include <apriltag/tag36h11.h>
+#include "rl_png.h"
+#include "rl_report.h"
+
+#define REPEAT 5
+#define MAX_FRAMES 256
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+static int cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+static int bench_dir(const char *dir, apriltag_detector_t *td)
+{
+    static char *names[MAX_FRAMES];
+    static double t_rl[MAX_FRAMES], t_at[MAX_FRAMES];
+    static rl_result res;
+    int n = 0, i, k, found_rl = 0, found_at = 0, W = 0, H = 0;
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    rl_recog_config cfg;
+    rl_host_recog hr;
+    char path[2048], err[512];
+    if (!d) {
+        fprintf(stderr, "ringloc-bench: %s: cannot open\n", dir);
+        return 1;
+    }
+    while ((e = readdir(d)) != NULL && n < MAX_FRAMES) {
+        size_t len = strlen(e->d_name);
+        if (len > 8 && strcmp(e->d_name + len - 8, "_tag.png") == 0) {
+            names[n] = strndup(e->d_name, len - 8);
+            n++;
+        }
+    }
+    closedir(d);
+    if (n == 0) {
+        fprintf(stderr, "ringloc-bench: %s: no twin frames (NAME.png + NAME_tag.png)\n", dir);
+        return 1;
+    }
+    qsort(names, (size_t)n, sizeof names[0], cmp_str);
+    rl_recog_defaults(&cfg);
+    rl_host_recog_init(&hr, &cfg);
+    for (i = 0; i < n; i++) {
+        rl_image ring, tag;
+        double t[REPEAT];
+        snprintf(path, sizeof path, "%s/%s.png", dir, names[i]);
+        if (rl_png_read_gray(path, &ring, err, sizeof err) != RL_OK) {
+            fprintf(stderr, "ringloc-bench: %s\n", err);
+            return 1;
+        }
+        snprintf(path, sizeof path, "%s/%s_tag.png", dir, names[i]);
+        if (rl_png_read_gray(path, &tag, err, sizeof err) != RL_OK) {
+            fprintf(stderr, "ringloc-bench: %s\n", err);
+            return 1;
+        }
+        W = ring.width;
+        H = ring.height;
+        for (k = 0; k < REPEAT; k++)
+            if (rl_host_recog_run(&hr, &ring, &res, &t[k]) != RL_OK) {
+                fprintf(stderr, "ringloc-bench: %s: recognition failed\n", names[i]);
+                return 1;
+            }
+        t_rl[i] = median(t, REPEAT);
+        found_rl += res.n_landmarks;
+        for (k = 0; k < 3; k++) {
+            image_u8_t im = {tag.width, tag.height, tag.stride, tag.data};
+            double t0 = rl_now_us();
+            zarray_t *dets = apriltag_detector_detect(td, &im);
+            t[k] = rl_now_us() - t0;
+            if (k == 0)
+                found_at += zarray_size(dets);
+            apriltag_detections_destroy(dets);
+        }
+        t_at[i] = median(t, 3);
+        rl_png_free(&ring);
+        rl_png_free(&tag);
+        free(names[i]);
+    }
+    {
+        double mr = median(t_rl, n) / 1000.0, ma = median(t_at, n) / 1000.0;
+        size_t ws = rl_recog_workspace_size(W, H, &cfg);
+        printf("%4dx%-4d %6d %12.3f %12.3f %9.1fx %9d %9d %10zu %7.2f\n", W, H, n, mr, ma, ma / mr,
+               found_rl, found_at, ws, (double)ws / ((double)W * H));
+    }
+    rl_host_recog_free(&hr);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    apriltag_family_t *tf;
+    apriltag_detector_t *td;
+    cpu_set_t one;
+    int i, rc = 0;
+    if (argc < 2 || strcmp(argv[1], "--help") == 0) {
+        fprintf(argc < 2 ? stderr : stdout, "usage: ringloc-bench DIR...  (frames from ringloc-render --twin)\n");
+        return argc < 2 ? 2 : 0;
+    }
+    /* one core: both detectors on the same one */
+    CPU_ZERO(&one);
+    CPU_SET(sched_getcpu() < 0 ? 0 : sched_getcpu(), &one);
+    sched_setaffinity(0, sizeof one, &one);
+    tf = tag36h11_create();
+    td = apriltag_detector_create();
+    apriltag_detector_add_family(td, tf);
+    td->nthreads = 1; /* quad_decimate stays at its default */
+    printf("recognition time per frame, median over frames (ringloc: median of %d runs each)\n", REPEAT);
+    printf("%-9s %6s %12s %12s %10s %9s %9s %10s %7s\n", "size", "frames", "ringloc_ms",
+           "apriltag_ms", "ratio", "rings", "tags", "workspace", "B/px");
+    for (i = 1; i < argc; i++)
+        rc |= bench_dir(argv[i], td);
+    apriltag_detector_destroy(td);
+    tag36h11_destroy(tf);
+    return rc;
+}
