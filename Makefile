@@ -33,7 +33,7 @@ host-test: host
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 $(BUILD_ASAN)/CMakeCache.txt: | deps
-	cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=Debug -DRL_SANITIZE=ON $(CMAKE_ARGS)
+	cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=Debug -DRL_SANITIZE=ON -DRL_FIXTURE_COUNT=12 $(CMAKE_ARGS)
 
 host-test-asan: deps $(BUILD_ASAN)/CMakeCache.txt
 	cmake --build $(BUILD_ASAN) -j $(JOBS)
@@ -45,7 +45,9 @@ bench: host
 	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/$$size --set cluttered \
 	    --count $(BENCH_FRAMES) --seed 3 --size $$size --twin || exit 1; \
 	done
-	$(BUILD)/tools/ringloc-bench $(BENCH_DIR)/640x480 $(BENCH_DIR)/1280x960
+	@[ -f $(BENCH_DIR)/glare/glare_000.png ] || \
+	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/glare --set glare --count $(BENCH_FRAMES) --seed 3
+	$(BUILD)/tools/ringloc-bench $(BENCH_DIR)/640x480 $(BENCH_DIR)/1280x960 --local $(BENCH_DIR)/glare
 
 clean:
 	rm -rf $(BUILD) $(BUILD_ASAN)

@@ -1,6 +1,7 @@
 #include "rl_ident.h"
 
 #include <math.h>
+#include <string.h>
 
 static const double blur_levels[RL_BLUR_LEVELS] = {0.0, 0.03, 0.06, 0.10};
 
@@ -97,10 +98,182 @@ void rl_ident_profile(const rl_image *img, double cx, double cy, double r, rl_pr
         p->total += p->n[k];
 }
 
+
+/* Sector of a pixel offset: 16 sectors from the octant and whether the
+ * smaller coordinate is above tan(22.5 deg) of the larger (no atan2). */
+static int sector_of(double dx, double dy)
+{
+    double ax = fabs(dx), ay = fabs(dy);
+    int major = ax > ay, sub = major ? ay > 0.41421356 * ax : ax > 0.41421356 * ay;
+    return ((dx < 0) * 4 + (dy < 0) * 2 + major) * 2 + sub;
+}
+
+void rl_ident_polar(const rl_image *img, double cx, double cy, double r, int light,
+                    double min_contrast, rl_polar *pol)
+{
+    /* gather a little beyond the profile so that shifted centres still
+     * find their outermost pixels */
+    double ext = RL_PROFILE_EXTENT * r, bw = ext / RL_PROFILE_BINS, lim = ext + 2.0 * bw;
+    int x, y, k, sct, x0 = (int)ceil(cx - lim), x1 = (int)floor(cx + lim);
+    int y0 = (int)ceil(cy - lim), y1 = (int)floor(cy + lim);
+    memset(pol, 0, sizeof *pol);
+    pol->cx = cx;
+    pol->cy = cy;
+    pol->r = r;
+    for (sct = 0; sct < RL_SECTORS; sct++) {
+        /* mid-angle of each sector, as sector_of lays them out */
+        int oct = sct / 2, sub = sct % 2, major = oct % 2;
+        double a = (sub ? 33.75 : 11.25) * M_PI / 180.0;
+        double ax = major ? cos(a) : sin(a), ay = major ? sin(a) : cos(a);
+        pol->ux[sct] = (oct / 4 ? -1.0 : 1.0) * ax;
+        pol->uy[sct] = ((oct / 2) % 2 ? -1.0 : 1.0) * ay;
+    }
+    if (x0 < 0) x0 = 0;
+    if (y0 < 0) y0 = 0;
+    if (x1 > img->width - 1) x1 = img->width - 1;
+    if (y1 > img->height - 1) y1 = img->height - 1;
+    for (y = y0; y <= y1; y++) {
+        const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
+        double dy = y - cy;
+        for (x = x0; x <= x1; x++) {
+            double dx = x - cx, d = sqrt(dx * dx + dy * dy), v = row[x];
+            if (d >= lim || row[x] >= light)
+                continue;
+            k = (int)(d / bw);
+            if (k >= RL_PROFILE_BINS)
+                k = RL_PROFILE_BINS - 1; /* the extra ring lands in the last bin */
+            sct = sector_of(dx, dy);
+            pol->n[sct][k] += 1;
+            pol->s[sct][k] += v;
+            pol->q[sct][k] += v * v;
+        }
+    }
+    /* sector black and white: extreme means over groups of 4 bins */
+    for (sct = 0; sct < RL_SECTORS; sct++) {
+        pol->lo[sct] = 1e9;
+        pol->hi[sct] = -1e9;
+        for (k = 0; k + 3 < RL_PROFILE_BINS; k += 4) {
+            double n = pol->n[sct][k] + pol->n[sct][k + 1] + pol->n[sct][k + 2] + pol->n[sct][k + 3];
+            double m;
+            if (n < 2)
+                continue;
+            m = (pol->s[sct][k] + pol->s[sct][k + 1] + pol->s[sct][k + 2] + pol->s[sct][k + 3]) / n;
+            if (m < pol->lo[sct]) pol->lo[sct] = m;
+            if (m > pol->hi[sct]) pol->hi[sct] = m;
+        }
+        /* normalize once: darkness v = a - b I maps the sector's white to
+         * 0 and its black to 255 */
+        pol->usable[sct] = pol->hi[sct] - pol->lo[sct] >= min_contrast;
+        if (pol->usable[sct]) {
+            double b = 255.0 / (pol->hi[sct] - pol->lo[sct]), a = b * pol->hi[sct];
+            for (k = 0; k < RL_PROFILE_BINS; k++) {
+                double n = pol->n[sct][k], sv = pol->s[sct][k], qv = pol->q[sct][k];
+                pol->s[sct][k] = n * a - b * sv;
+                pol->q[sct][k] = n * a * a - 2 * a * b * sv + b * b * qv;
+            }
+        }
+    }
+}
+
+void rl_ident_polar_profile(const rl_polar *pol, double dx, double dy, rl_profile *p)
+{
+    double bw = RL_PROFILE_EXTENT * pol->r / RL_PROFILE_BINS, sxx = 0;
+    int sct, k;
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        p->n[k] = p->sx[k] = 0;
+    for (sct = 0; sct < RL_SECTORS; sct++) {
+        /* the whole sector moves by the same fraction of a bin */
+        double shift, w;
+        int j0, lo, hi;
+        if (!pol->usable[sct])
+            continue;
+        shift = -(dx * pol->ux[sct] + dy * pol->uy[sct]) / bw;
+        j0 = (int)floor(shift);
+        w = shift - j0; /* share going one bin further out */
+        lo = -j0 > 0 ? -j0 : 0;
+        hi = RL_PROFILE_BINS - j0 < RL_PROFILE_BINS ? RL_PROFILE_BINS - j0 : RL_PROFILE_BINS;
+        for (k = lo; k < hi; k++) { /* k + j0 in range */
+            p->n[k + j0] += (1 - w) * pol->n[sct][k];
+            p->sx[k + j0] += (1 - w) * pol->s[sct][k];
+            sxx += (1 - w) * pol->q[sct][k];
+        }
+        lo = -j0 - 1 > 0 ? -j0 - 1 : 0;
+        hi = RL_PROFILE_BINS - j0 - 1 < RL_PROFILE_BINS ? RL_PROFILE_BINS - j0 - 1 : RL_PROFILE_BINS;
+        for (k = lo; k < hi; k++) { /* k + j0 + 1 in range */
+            p->n[k + j0 + 1] += w * pol->n[sct][k];
+            p->sx[k + j0 + 1] += w * pol->s[sct][k];
+            sxx += w * pol->q[sct][k];
+        }
+    }
+    p->sxx = sxx;
+    p->total = 0;
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        p->total += p->n[k];
+}
+
+static void match_one(const rl_ident *id, const rl_profile *p, int i, double n, double sx,
+                      double *best, double *gainv, int *best_b)
+{
+    int b, k;
+    *best = -1.0;
+    *gainv = 0.0;
+    *best_b = 0;
+    for (b = 0; b < RL_BLUR_LEVELS; b++) {
+        const float *t = id->tmpl + ((size_t)i * RL_BLUR_LEVELS + b) * RL_PROFILE_BINS;
+        double st = 0, stt = 0, sxt = 0, vx, vt, r;
+        for (k = 0; k < RL_PROFILE_BINS; k++) {
+            st += p->n[k] * t[k];
+            stt += p->n[k] * t[k] * t[k];
+            sxt += p->sx[k] * t[k];
+        }
+        vx = n * p->sxx - sx * sx;
+        vt = n * stt - st * st;
+        if (vx <= 0 || vt <= 0)
+            continue;
+        r = (n * sxt - sx * st) / sqrt(vx * vt);
+        if (r > *best) {
+            *best = r;
+            *best_b = b;
+            *gainv = (n * sxt - sx * st) / vt;
+        }
+    }
+}
+
+void rl_ident_match_ids(const rl_ident *id, const rl_profile *p, const int *ids, int n_ids,
+                        rl_match *m)
+{
+    double n = p->total, sx = 0;
+    int i, j, k;
+    m->id = -1;
+    m->score = m->second = -1.0;
+    m->contrast = 0.0;
+    m->blur = 0;
+    if (n < 16)
+        return;
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        sx += p->sx[k];
+    for (j = 0; j < n_ids; j++)
+        for (i = 0; i < id->n; i++)
+            if (id->ids[i] == ids[j]) {
+                double best, g;
+                int b;
+                match_one(id, p, i, n, sx, &best, &g, &b);
+                if (best > m->score) {
+                    m->second = m->score;
+                    m->score = best;
+                    m->id = id->ids[i];
+                    m->contrast = g;
+                    m->blur = b;
+                } else if (best > m->second) {
+                    m->second = best;
+                }
+            }
+}
+
 void rl_ident_match(const rl_ident *id, const rl_profile *p, rl_match *m)
 {
     double n = p->total, sx = 0;
-    int i, b, k;
+    int i, k;
     m->id = -1;
     m->score = m->second = -1.0;
     m->contrast = 0.0;
@@ -110,33 +283,15 @@ void rl_ident_match(const rl_ident *id, const rl_profile *p, rl_match *m)
     for (k = 0; k < RL_PROFILE_BINS; k++)
         sx += p->sx[k];
     for (i = 0; i < id->n; i++) {
-        double best = -1.0, best_gain = 0.0;
-        int best_b = 0;
-        for (b = 0; b < RL_BLUR_LEVELS; b++) {
-            const float *t = id->tmpl + ((size_t)i * RL_BLUR_LEVELS + b) * RL_PROFILE_BINS;
-            double st = 0, stt = 0, sxt = 0, vx, vt, r;
-            for (k = 0; k < RL_PROFILE_BINS; k++) {
-                st += p->n[k] * t[k];
-                stt += p->n[k] * t[k] * t[k];
-                sxt += p->sx[k] * t[k];
-            }
-            vx = n * p->sxx - sx * sx;
-            vt = n * stt - st * st;
-            if (vx <= 0 || vt <= 0)
-                continue;
-            r = (n * sxt - sx * st) / sqrt(vx * vt);
-            if (r > best) {
-                best = r;
-                best_b = b;
-                best_gain = (n * sxt - sx * st) / vt; /* darkness per unit of template */
-            }
-        }
+        double best, g;
+        int b;
+        match_one(id, p, i, n, sx, &best, &g, &b);
         if (best > m->score) {
             m->second = m->score;
             m->score = best;
             m->id = id->ids[i];
-            m->contrast = best_gain;
-            m->blur = best_b;
+            m->contrast = g;
+            m->blur = b;
         } else if (best > m->second) {
             m->second = best;
         }

@@ -81,6 +81,40 @@ double rl_ident_template_at(const rl_family *fam, int id, double rho, double sig
 /* Gather the pixels of img within RL_PROFILE_EXTENT * r of (cx, cy). */
 void rl_ident_profile(const rl_image *img, double cx, double cy, double r, rl_profile *p);
 
+/* Angular sectors for glare normalization: glare adds a smooth light
+ * field that varies with direction, so each sector is rescaled by its own
+ * black and white levels. */
+#define RL_SECTORS 16
+
+/* A candidate gathered once into RL_SECTORS x RL_PROFILE_BINS polar
+ * cells (raw count, sum, sum of squares), from which the sector-normalized
+ * profile for any small shift of the centre is derived without touching
+ * the image again: a shift d moves the pixels of sector s (direction u_s)
+ * to radius rho - d . u_s, i.e. by a fraction of a bin. */
+typedef struct {
+    double cx, cy, r;
+    double n[RL_SECTORS][RL_PROFILE_BINS];
+    double s[RL_SECTORS][RL_PROFILE_BINS];
+    double q[RL_SECTORS][RL_PROFILE_BINS];
+    double ux[RL_SECTORS], uy[RL_SECTORS]; /* sector directions */
+    double lo[RL_SECTORS], hi[RL_SECTORS]; /* sector black and white */
+    int usable[RL_SECTORS];                /* sector has enough contrast */
+} rl_polar;
+
+/* Gather a candidate into polar cells and normalize each sector by its
+ * own black and white; sectors with less than min_contrast grey levels
+ * between them (washed out) are left out. After this the cells hold the
+ * normalized darkness (count, sum, sum of squares). */
+void rl_ident_polar(const rl_image *img, double cx, double cy, double r, int light,
+                    double min_contrast, rl_polar *pol);
+
+/* The profile of pol with the centre moved by (dx, dy). */
+void rl_ident_polar_profile(const rl_polar *pol, double dx, double dy, rl_profile *p);
+
+/* Score only the templates of the given ids (a short list). */
+void rl_ident_match_ids(const rl_ident *id, const rl_profile *p, const int *ids, int n,
+                        rl_match *m);
+
 /* Score every template against a profile. */
 void rl_ident_match(const rl_ident *id, const rl_profile *p, rl_match *m);
 

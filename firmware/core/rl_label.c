@@ -18,6 +18,7 @@ rl_err rl_label_init(rl_label *lb, rl_ws *ws, int width, int height, int cap_run
         return RL_EINVAL;
     lb->width = width;
     lb->height = height;
+    lb->max_height = height;
     lb->cap_runs = cap_runs;
     lb->cap_regions = cap_regions;
     lb->n_runs = lb->n_regions = lb->overflow = 0;
@@ -79,6 +80,15 @@ static int skip_outside(const uint8_t *row, int from, int width, int lo, int hi)
     while (x < width && (unsigned)(row[x] - lo) >= (unsigned)(hi - lo))
         x++;
     return x;
+}
+
+rl_err rl_label_resize(rl_label *lb, int width, int height)
+{
+    if (width <= 0 || height <= 0 || width > 65535 || height > lb->max_height)
+        return RL_EINVAL;
+    lb->width = width;
+    lb->height = height;
+    return RL_OK;
 }
 
 static int32_t find(int32_t *p, int32_t a)

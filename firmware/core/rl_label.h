@@ -27,6 +27,7 @@ typedef struct {
 
 typedef struct {
     int width, height;
+    int max_height;           /* rows the row index holds (height at init) */
     int cap_runs, cap_regions;
     int n_runs, n_regions;
     int overflow;             /* regions dropped because cap_regions was reached */
@@ -44,7 +45,11 @@ size_t rl_label_bytes(int height, int cap_runs, int cap_regions);
 RL_CHECK rl_err rl_label_init(rl_label *lb, rl_ws *ws, int width, int height, int cap_runs,
                               int cap_regions);
 
-/* Label pixels with lo <= I < hi in img (same size as at init). Regions of
+/* Label images of another size with the same buffers (a window of the
+ * frame): RL_EINVAL if h exceeds the height given at init. */
+RL_CHECK rl_err rl_label_resize(rl_label *lb, int width, int height);
+
+/* Label pixels with lo <= I < hi in img (same size as at init or resize). Regions of
  * fewer than min_area pixels are dropped. RL_ELIMIT if the image has more
  * runs than cap_runs (a frame of noise); regions past cap_regions are
  * counted in lb->overflow, not an error. */

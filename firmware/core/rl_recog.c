@@ -63,7 +63,8 @@ static rl_err layout(rl_recog *rec, rl_ws *ws, const rl_recog_config *cfg, int w
     int runs = cap_runs(w, h);
     if ((e = rl_ident_init(&rec->ident, ws, &cfg->family, cfg->ids, cfg->ids ? cfg->n_ids : 0)) != RL_OK ||
         (e = rl_label_init(&rec->dark, ws, w, h, runs, RL_MAX_REGIONS)) != RL_OK ||
-        (e = rl_label_init(&rec->light, ws, w, (h + 1) / 2, runs / 4, RL_MAX_LIGHTS * 8)) != RL_OK)
+        (e = rl_label_init(&rec->light, ws, w, (h + 1) / 2, runs / 4, RL_MAX_LIGHTS * 8)) != RL_OK ||
+        (e = rl_ws_alloc(ws, sizeof(rl_polar), RL_WS_ALIGN, (void **)&rec->polar)) != RL_OK)
         return e;
     return RL_OK;
 }
@@ -111,6 +112,24 @@ rl_err rl_recog_init(rl_recog *rec, const rl_recog_config *cfg, int w, int h, vo
 }
 
 /* ---- global pass ------------------------------------------------------ */
+
+/* Gap in pixels between a box and the nearest light region's box (a large
+ * number when there is no light). */
+static double light_gap(const rl_result *res, const rl_box *b)
+{
+    double best = 1e9;
+    int i;
+    for (i = 0; i < res->n_lights; i++) {
+        const rl_box *l = &res->lights[i];
+        double dx = l->x0 > b->x1 ? l->x0 - b->x1 : b->x0 > l->x1 ? b->x0 - l->x1 : 0;
+        double dy = l->y0 > b->y1 ? l->y0 - b->y1 : b->y0 > l->y1 ? b->y0 - l->y1 : 0;
+        double d = sqrt(dx * dx + dy * dy);
+        if (d < best)
+            best = d;
+    }
+    return best;
+}
+
 
 /* Specks: smaller than 10% of the narrowest code ring of the smallest
  * landmark considered (the paper's rule). */
@@ -364,6 +383,489 @@ static void dedupe(rl_result *res)
     res->n_landmarks = kept;
 }
 
+
+/* ---- local pass ------------------------------------------------------- */
+
+/* Median radius of the identified landmarks (ICLRs), or 0. */
+static double iclr_radius(const rl_result *res)
+{
+    double r[RL_MAX_LANDMARKS];
+    int i, j, n = res->n_landmarks;
+    if (n == 0)
+        return 0.0;
+    for (i = 0; i < n; i++) {
+        double v = res->landmarks[i].radius;
+        for (j = i; j > 0 && r[j - 1] > v; j--)
+            r[j] = r[j - 1];
+        r[j] = v;
+    }
+    return r[n / 2];
+}
+
+/* Least-squares circle (algebraic, Kasa) through accumulated normal
+ * equations s: rows [x y 1] . (D E F) = -(x^2 + y^2). */
+typedef struct {
+    double s[3][4];
+    int n;
+} circle_fit;
+
+static void circle_add(circle_fit *f, double x, double y)
+{
+    double v[3];
+    int k, m;
+    v[0] = x;
+    v[1] = y;
+    v[2] = 1.0;
+    for (k = 0; k < 3; k++) {
+        for (m = 0; m < 3; m++)
+            f->s[k][m] += v[k] * v[m];
+        f->s[k][3] -= v[k] * (x * x + y * y);
+    }
+    f->n++;
+}
+
+static int circle_solve(circle_fit *f, double *cx, double *cy, double *r)
+{
+    double a[3], s[3][4];
+    int k, m, c;
+    memcpy(s, f->s, sizeof s);
+    if (f->n < 5)
+        return 0;
+    for (k = 0; k < 3; k++) { /* Gaussian elimination, partial pivoting */
+        int piv = k;
+        for (m = k + 1; m < 3; m++)
+            if (fabs(s[m][k]) > fabs(s[piv][k]))
+                piv = m;
+        if (fabs(s[piv][k]) < 1e-12)
+            return 0;
+        for (c = 0; c < 4; c++) {
+            double t = s[k][c];
+            s[k][c] = s[piv][c];
+            s[piv][c] = t;
+        }
+        for (m = k + 1; m < 3; m++) {
+            double q = s[m][k] / s[k][k];
+            for (c = k; c < 4; c++)
+                s[m][c] -= q * s[k][c];
+        }
+    }
+    for (k = 2; k >= 0; k--) {
+        double v = s[k][3];
+        for (c = k + 1; c < 3; c++)
+            v -= s[k][c] * a[c];
+        a[k] = v / s[k][k];
+    }
+    *cx = -a[0] / 2;
+    *cy = -a[1] / 2;
+    *r = *cx * *cx + *cy * *cy - a[2];
+    if (!(*r > 0))
+        return 0;
+    *r = sqrt(*r);
+    return 1;
+}
+
+/* Rays for the edge fit; samples along a ray every EDGE_STEP px. */
+#define FIT_RAYS 32
+#define EDGE_STEP 0.25
+
+/* Refine a landmark's centre and radius from its outer edge seen along
+ * FIT_RAYS rays: on each ray the edge is where the grey level crosses
+ * halfway between that ray's own ring black and paper white (so glare,
+ * which shifts both, does not move it). Rays that leave the image or run
+ * into light are skipped; a circle is fitted to the edge points, points
+ * far off it are dropped and it is fitted again. 1 on success. */
+static int fit_edge_rays(const rl_image *img, int light, double *cx, double *cy, double *r)
+{
+    double ex[FIT_RAYS], ey[FIT_RAYS], ncx, ncy, nr;
+    int a, n = 0, pass;
+    circle_fit f;
+    for (a = 0; a < FIT_RAYS; a++) {
+        double c = cos((a + 0.5) * 2 * M_PI / FIT_RAYS), sn = sin((a + 0.5) * 2 * M_PI / FIT_RAYS);
+        double prof[128], black = 1e9, white = -1e9;
+        int i, ns = (int)(0.6 * *r / EDGE_STEP) + 1, ok = 1, ib = 0;
+        if (ns > 128)
+            ns = 128;
+        for (i = 0; i < ns && ok; i++) {
+            double rr = 0.7 * *r + i * EDGE_STEP, x = *cx + rr * c, y = *cy + rr * sn, fx, fy;
+            int x0 = (int)floor(x), y0 = (int)floor(y);
+            const uint8_t *p;
+            if (x0 < 0 || y0 < 0 || x0 + 1 >= img->width || y0 + 1 >= img->height) {
+                ok = 0;
+                break;
+            }
+            p = img->data + (size_t)y0 * (size_t)img->stride + x0;
+            if (p[0] >= light || p[1] >= light || p[img->stride] >= light || p[img->stride + 1] >= light) {
+                ok = 0;
+                break;
+            }
+            fx = x - x0;
+            fy = y - y0;
+            prof[i] = (1 - fy) * ((1 - fx) * p[0] + fx * p[1]) +
+                      fy * ((1 - fx) * p[img->stride] + fx * p[img->stride + 1]);
+            if (rr <= *r && prof[i] < black) {
+                black = prof[i];
+                ib = i;
+            }
+            if (rr >= *r && prof[i] > white)
+                white = prof[i];
+        }
+        if (!ok || white - black < 15.0)
+            continue;
+        /* the edge is the steepest rise after the ring's black: a smooth
+         * glare gradient adds a constant slope, which moves a level
+         * crossing but hardly the gradient's peak */
+        {
+            double gbest = 0;
+            int ig = -1;
+            /* from 3: the peak interpolation below reads prof[ig - 3] */
+            for (i = ib + 2 > 3 ? ib + 2 : 3; i + 2 < ns; i++) {
+                double g = prof[i + 2] - prof[i - 2];
+                if (g > gbest) {
+                    gbest = g;
+                    ig = i;
+                }
+            }
+            if (ig > 0 && ig + 3 < ns && gbest > 0.3 * (white - black)) {
+                double gm = prof[ig + 1] - prof[ig - 3], gp = prof[ig + 3] - prof[ig - 1];
+                double den = gm - 2 * gbest + gp, off = den < 0 ? 0.5 * (gm - gp) / den : 0.0;
+                double rr;
+                if (off > 1) off = 1;
+                if (off < -1) off = -1;
+                rr = 0.7 * *r + (ig + off) * EDGE_STEP;
+                ex[n] = *cx + rr * c;
+                ey[n] = *cy + rr * sn;
+                n++;
+            }
+        }
+    }
+    if (n < FIT_RAYS / 4)
+        return 0;
+    for (pass = 0; pass < 2; pass++) {
+        int i;
+        memset(&f, 0, sizeof f);
+        for (i = 0; i < n; i++)
+            if (pass == 0 || fabs(hypot(ex[i] - ncx, ey[i] - ncy) - nr) < 1.0)
+                circle_add(&f, ex[i], ey[i]);
+        if (!circle_solve(&f, &ncx, &ncy, &nr))
+            return 0;
+    }
+    /* The algebraic fit leans inwards on a partial arc (glare hides the
+     * near side): finish with Gauss-Newton on the geometric distances. */
+    {
+        int it, i;
+        for (it = 0; it < 8; it++) {
+            double A[3][4] = {{0}}, step[3];
+            int k, m, c, used = 0;
+            for (i = 0; i < n; i++) {
+                double dx = ex[i] - ncx, dy = ey[i] - ncy, d = sqrt(dx * dx + dy * dy), J[3], res;
+                if (d < 1e-9 || fabs(d - nr) > 1.5)
+                    continue;
+                J[0] = -dx / d;
+                J[1] = -dy / d;
+                J[2] = -1.0;
+                res = d - nr;
+                for (k = 0; k < 3; k++) {
+                    for (m = 0; m < 3; m++)
+                        A[k][m] += J[k] * J[m];
+                    A[k][3] -= J[k] * res;
+                }
+                used++;
+            }
+            if (used < 6)
+                break;
+            for (k = 0; k < 3; k++) { /* solve A step = b */
+                int piv = k;
+                for (m = k + 1; m < 3; m++)
+                    if (fabs(A[m][k]) > fabs(A[piv][k]))
+                        piv = m;
+                if (fabs(A[piv][k]) < 1e-12)
+                    break;
+                for (c = 0; c < 4; c++) {
+                    double t = A[k][c];
+                    A[k][c] = A[piv][c];
+                    A[piv][c] = t;
+                }
+                for (m = k + 1; m < 3; m++) {
+                    double q = A[m][k] / A[k][k];
+                    for (c = k; c < 4; c++)
+                        A[m][c] -= q * A[k][c];
+                }
+            }
+            if (k < 3)
+                break;
+            for (k = 2; k >= 0; k--) {
+                double v = A[k][3];
+                for (c = k + 1; c < 3; c++)
+                    v -= A[k][c] * step[c];
+                step[k] = v / A[k][k];
+            }
+            ncx += step[0];
+            ncy += step[1];
+            nr += step[2];
+            if (fabs(step[0]) + fabs(step[1]) + fabs(step[2]) < 1e-3)
+                break;
+        }
+    }
+    *cx = ncx;
+    *cy = ncy;
+    *r = nr;
+    return 1;
+}
+
+/* Circle through the visible outer edge of region `reg` of the window
+ * labelling (algebraic least squares): edge points at sub-pixel positions
+ * where the grey level crosses the local threshold, at the left end of each
+ * row's first run and the right end of its last run. Points on the image
+ * border, or next to light, are not the landmark's edge and are skipped.
+ * 1 on success with (cx, cy, r) in window coordinates. */
+static int fit_outer_edge(const rl_label *lb, int reg, const rl_image *win, int thr, int light,
+                          int x_off, int y_off, int W, int H, double *cx, double *cy, double *r)
+{
+    circle_fit f;
+    int y;
+    memset(&f, 0, sizeof f);
+    for (y = 0; y < win->height; y++) {
+        int first = -1, last = -1, i, side;
+        const uint8_t *row = win->data + (size_t)y * (size_t)win->stride;
+        for (i = lb->row[y]; i < lb->row[y + 1]; i++)
+            if (rl_label_region_of(lb, i) == reg) {
+                if (first < 0)
+                    first = i;
+                last = i;
+            }
+        if (first < 0 || y + y_off == 0 || y + y_off == H - 1)
+            continue;
+        for (side = 0; side < 2; side++) {
+            int xin = side ? lb->x1[last] : lb->x0[first], xout = side ? xin + 1 : xin - 1;
+            int beyond = side ? xout + 1 : xout - 1;
+            double t;
+            if (xout < 0 || xout >= win->width || xin + x_off == 0 || xin + x_off == W - 1)
+                continue;
+            if (row[xout] >= light || (beyond >= 0 && beyond < win->width && row[beyond] >= light))
+                continue;
+            /* sub-pixel: where the grey level crosses the threshold between
+             * xin (dark) and xout (light) */
+            t = row[xout] != row[xin] ? (double)(thr - row[xin]) / (row[xout] - row[xin]) : 0.5;
+            if (t < 0) t = 0;
+            if (t > 1) t = 1;
+            circle_add(&f, side ? xin + t : xin - t, y);
+        }
+    }
+    if (f.n < 8)
+        return 0;
+    return circle_solve(&f, cx, cy, r);
+}
+
+/* Acceptance in the local pass: a DUCLR is already a landmark-sized ring
+ * next to a light or on the border, re-extracted and centred on its own
+ * edge, so a little less lead is needed than in the global pass. */
+#define LOCAL_MIN_SCORE 0.75
+#define LOCAL_MIN_LEAD 1.3
+
+/* Window half-size around a DUCLR, in expected radii: room for the whole
+ * landmark and its quiet zone even when the centre estimate of a ring
+ * broken by glare is off by half a radius. */
+#define WINDOW_RADII 2.0
+
+/* Retry one DUCLR; 1 if identified (into *out). */
+static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *res,
+                           const rl_detection *u, double R, rl_detection *out)
+{
+    int W = rec->width, H = rec->height, x0, y0, x1, y1, i, best = -1, thr;
+    double half = WINDOW_RADII * R, best_size = 0, cx, cy, fr;
+    rl_image win;
+    rl_hist h;
+    rl_levels lv;
+    rl_match m;
+    rl_profile p;
+    rl_box b;
+    /* extension: a window around the candidate, clipped to the image and
+     * shrunk on any side that would reach into a light source (never into
+     * the landmark itself) */
+    x0 = (int)floor(u->u - half);
+    x1 = (int)ceil(u->u + half);
+    y0 = (int)floor(u->v - half);
+    y1 = (int)ceil(u->v + half);
+    for (i = 0; i < res->n_lights; i++) {
+        const rl_box *l = &res->lights[i];
+        if (l->x1 < x0 || l->x0 > x1 || l->y1 < y0 || l->y0 > y1)
+            continue;
+        if (l->x0 > u->u + 1.1 * R && l->x0 - 1 < x1) x1 = l->x0 - 1;
+        if (l->x1 < u->u - 1.1 * R && l->x1 + 1 > x0) x0 = l->x1 + 1;
+        if (l->y0 > u->v + 1.1 * R && l->y0 - 1 < y1) y1 = l->y0 - 1;
+        if (l->y1 < u->v - 1.1 * R && l->y1 + 1 > y0) y0 = l->y1 + 1;
+    }
+    if (x0 < 0) x0 = 0;
+    if (y0 < 0) y0 = 0;
+    if (x1 > W - 1) x1 = W - 1;
+    if (y1 > H - 1) y1 = H - 1;
+    if (x1 - x0 < 8 || y1 - y0 < 8 || rl_image_sub(img, x0, y0, x1 - x0 + 1, y1 - y0 + 1, &win) != RL_OK)
+        return 0;
+    /* local clustering: K-means on the window alone, light excluded, so the
+     * threshold follows the local illumination */
+    rl_hist_compute(&win, &h);
+    if (rl_hist_kmeans(&h, 0, res->levels.light, 2, lv.centre, NULL) != RL_OK)
+        return 0;
+    if (lv.centre[1] - lv.centre[0] < 8.0)
+        return 0;
+    thr = (int)(0.5 * (lv.centre[0] + lv.centre[1]) + 0.5);
+    /* re-extraction: the outer ring is the largest region of landmark size
+     * near the candidate */
+    if (rl_label_resize(&rec->dark, win.width, win.height) != RL_OK ||
+        rl_label_band(&rec->dark, &win, 0, thr, speck_area(&rec->cfg)) != RL_OK)
+        return 0;
+    for (i = 0; i < rec->dark.n_regions; i++) {
+        const rl_region *g = &rec->dark.reg[i];
+        double bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1, size = bw > bh ? bw : bh;
+        double gx = x0 + (g->x0 + g->x1) / 2.0, gy = y0 + (g->y0 + g->y1) / 2.0;
+        if (size < R || size > 2.5 * R || fabs(gx - u->u) > 1.2 * R || fabs(gy - u->v) > 1.2 * R)
+            continue;
+        if (size > best_size) {
+            best_size = size;
+            best = i;
+        }
+    }
+    if (best < 0)
+        return 0;
+    b.x0 = x0 + rec->dark.reg[best].x0;
+    b.y0 = y0 + rec->dark.reg[best].y0;
+    b.x1 = x0 + rec->dark.reg[best].x1;
+    b.y1 = y0 + rec->dark.reg[best].y1;
+    /* the centre from the visible outer edge, not the centroid of what is
+     * left (biased inwards when part is missing) */
+    if (!fit_outer_edge(&rec->dark, best, &win, thr, res->levels.light, x0, y0, W, H, &cx, &cy, &fr))
+        return 0;
+    cx += x0;
+    cy += y0;
+    {
+        /* then the grey outer edge, twice from the improving centre */
+        double rx = cx, ry = cy, rr = R;
+        int it;
+        for (it = 0; it < 2; it++) {
+            double tx = rx, ty = ry, tr = R;
+            if (!fit_edge_rays(img, res->levels.light, &tx, &ty, &tr))
+                break;
+            rx = tx;
+            ry = ty;
+            rr = tr;
+        }
+        if (it > 0) {
+            cx = rx;
+            cy = ry;
+            fr = rr;
+        }
+    }
+    if (fabs(fr - R) > 0.3 * R)
+        return 0;
+    memset(out, 0, sizeof *out);
+    out->box = b;
+    /* the fitted radius, not the frame's median: lens distortion makes
+     * landmarks smaller away from the image centre */
+    R = fr;
+    out->u = cx;
+    out->v = cy;
+    out->radius = R;
+    out->pass = RL_PASS_LOCAL;
+    out->complete = cx - R >= -0.5 && cy - R >= -0.5 && cx + R <= W - 0.5 && cy + R <= H - 0.5;
+    {
+        /* visible fraction from the image sides */
+        double v = 1.0;
+        v = fmin(v, disk_visible(R, cx + 0.5));
+        v = fmin(v, disk_visible(R, W - 0.5 - cx));
+        v = fmin(v, disk_visible(R, cy + 0.5));
+        v = fmin(v, disk_visible(R, H - 0.5 - cy));
+        out->visible = v;
+    }
+    if (out->visible < 0.5) /* more than half missing: not tried */
+        return 0;
+    /* identification on the locally binarized pixels: pixels outside the
+     * image and light pixels are not gathered, so the templates are cut
+     * the same way */
+    /* identification on sector-normalized grey levels (glare varies by
+     * direction), at the centre that fits the best ids best: a coarse and
+     * a fine cross-shaped search over the polar cells, gathered once */
+    {
+        rl_polar *pol = rec->polar;
+        int top[3], ntop = 0, it, gx, gy;
+        double bx = 0, by = 0, step = 1.0, best_score;
+        rl_ident_polar(img, cx, cy, R, res->levels.light, 20.0, pol);
+        rl_ident_polar_profile(pol, 0, 0, &p);
+        rl_ident_match(&rec->ident, &p, &m);
+        top[ntop++] = m.id;
+        best_score = m.score;
+        /* the runner-up ids: the ones one code zone away count most */
+        {
+            int k;
+            for (k = 1; k <= rec->cfg.family.bits && ntop < 3; k++) {
+                int alt = m.id ^ (1 << (rec->cfg.family.bits - k));
+                rl_match mm;
+                if (!rl_family_valid(&rec->cfg.family, alt))
+                    continue;
+                rl_ident_match_ids(&rec->ident, &p, &alt, 1, &mm);
+                if (mm.id >= 0 && mm.score > m.second - 0.02)
+                    top[ntop++] = alt;
+            }
+        }
+        for (it = 0; it < 2 && m.id >= 0; it++, step *= 0.5) {
+            double cbx = bx, cby = by;
+            for (gy = -1; gy <= 1; gy++)
+                for (gx = -1; gx <= 1; gx++) {
+                    rl_match mm;
+                    if ((gx == 0) == (gy == 0)) /* the four neighbours of a cross */
+                        continue;
+                    rl_ident_polar_profile(pol, cbx + gx * step, cby + gy * step, &p);
+                    rl_ident_match_ids(&rec->ident, &p, top, ntop, &mm);
+                    if (mm.score > best_score) {
+                        best_score = mm.score;
+                        bx = cbx + gx * step;
+                        by = cby + gy * step;
+                    }
+                }
+        }
+        rl_ident_polar_profile(pol, bx, by, &p);
+        rl_ident_match(&rec->ident, &p, &m);
+        cx += bx;
+        cy += by;
+        out->u = cx;
+        out->v = cy;
+    }
+    if (m.id < 0 || m.score < LOCAL_MIN_SCORE ||
+        (1.0 - m.second * m.second) < LOCAL_MIN_LEAD * (1.0 - m.score * m.score) ||
+        m.contrast < rec->cfg.min_contrast * 255.0)
+        return 0;
+    out->id = m.id;
+    out->score = m.score;
+    return 1;
+}
+
+/* The paper's local recognition: retry unidentified CLRs next to a light
+ * or on the image border (DUCLRs) in their own window. */
+static void local_pass(rl_recog *rec, const rl_image *img, rl_result *res)
+{
+    double rexp = iclr_radius(res);
+    int i, kept = 0, n = res->n_unidentified;
+    for (i = 0; i < n; i++) {
+        rl_detection u = res->unidentified[i], d;
+        double R = rexp > 0 ? rexp : u.radius;
+        int near_light = light_gap(res, &u.box) <= rec->cfg.near_light * R;
+        int on_border = !u.complete;
+        if ((near_light || on_border) && (!on_border || u.visible >= 0.5) &&
+            res->n_landmarks < RL_MAX_LANDMARKS) {
+            res->local_tried++;
+            if (local_candidate(rec, img, res, &u, R, &d)) {
+                res->local_found++;
+                res->landmarks[res->n_landmarks++] = d;
+                continue;
+            }
+        }
+        res->unidentified[kept++] = u;
+    }
+    res->n_unidentified = kept;
+    /* the labeller goes back to frame size for the next frame */
+    if (rl_label_resize(&rec->dark, rec->width, rec->height) != RL_OK)
+        res->n_unidentified = kept; /* cannot fail: same size as at init */
+}
+
 static int cmp_det(const rl_detection *a, const rl_detection *b)
 {
     if (a->u != b->u)
@@ -469,15 +971,26 @@ rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
             /* a border UCLR: its uncut extent is the diameter; at most half
              * may be missing */
             int cut_x = g->x0 == 0 || g->x1 == W - 1, cut_y = g->y0 == 0 || g->y1 == H - 1;
-            if (cut_x && cut_y)
+            /* a corner cut is kept too, though it is never identified:
+             * the rings inside it must not pass for landmarks */
+            r = cut_x && cut_y ? (bw > bh ? bw : bh) / 2.0 : cut_x ? bh / 2.0 : bw / 2.0;
+            if (r < cfg->min_radius || r > cfg->max_radius ||
+                (!(cut_x && cut_y) && (cut_x ? bw : bh) < r))
                 continue;
-            r = cut_x ? bh / 2.0 : bw / 2.0;
-            if (r < cfg->min_radius || r > cfg->max_radius || (cut_x ? bw : bh) < r)
-                continue;
-        } else {
-            if (r < cfg->min_radius || r > cfg->max_radius || fill < FILL_MIN ||
-                fill > FILL_MAX || bw > ASPECT_MAX * bh || bh > ASPECT_MAX * bw ||
-                ox * ox + oy * oy > CENTROID_MAX * CENTROID_MAX * r * r)
+        } else if (r < cfg->min_radius || r > cfg->max_radius || fill < FILL_MIN ||
+                   fill > FILL_MAX || bw > ASPECT_MAX * bh || bh > ASPECT_MAX * bw ||
+                   ox * ox + oy * oy > CENTROID_MAX * CENTROID_MAX * r * r) {
+            /* Not a closed outer ring; but next to a light, glare may have
+             * washed part of one out: keep it as an unidentified CLR for
+             * the local pass, sized by its larger side. */
+            rl_box b;
+            double rr = (bw > bh ? bw : bh) / 2.0;
+            b.x0 = g->x0;
+            b.y0 = g->y0;
+            b.x1 = g->x1;
+            b.y1 = g->y1;
+            if (rr < cfg->min_radius || rr > cfg->max_radius || bw < rr || bh < rr ||
+                light_gap(res, &b) > cfg->near_light * rr)
                 continue;
         }
         cand[ncand].x0 = g->x0;
@@ -496,6 +1009,11 @@ rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
             global_candidate(rec, img, &cand[i], res);
     }
     dedupe(res);
+    if (cfg->local == RL_LOCAL_ALWAYS ||
+        (cfg->local == RL_LOCAL_AUTO && res->n_landmarks < cfg->need)) {
+        local_pass(rec, img, res);
+        dedupe(res);
+    }
     size_filter(rec, res);
     sort_dets(res->landmarks, res->n_landmarks);
     return RL_OK;

@@ -96,6 +96,7 @@ typedef struct {
     rl_ident ident;     /* templates, rendered at init */
     rl_label dark;      /* ROI labelling, reused by every frame and window */
     rl_label light;     /* light-source labelling */
+    rl_polar *polar;    /* a local-pass candidate in polar cells */
 } rl_recog;
 
 /* Fill every field with its default (ring5, every id). */

@@ -481,6 +481,22 @@ static void effects(scene *s, set_kind kind)
 
 /* ---- ground truth ---- */
 
+/* 1 if a light fixture drawn over the ceiling covers (X, Y). */
+static int under_light(const scene *s, double X, double Y)
+{
+    int i;
+    for (i = 0; i < s->n; i++) {
+        const object *l = &s->obj[i];
+        if (l->kind == OBJ_LIGHT && rect_gap(l, X, Y) <= 0)
+            return 1;
+        if (l->kind == OBJ_DOWNLIGHT && hypot(X - l->x, Y - l->y) <= l->a)
+            return 1;
+    }
+    return 0;
+}
+
+/* Fraction of the landmark's disk that the camera sees: inside the image
+ * and not covered by a light fixture. */
 static double visible_fraction(const scene *s, const object *o)
 {
     int i, j, in = 0, n = 0;
@@ -491,7 +507,8 @@ static double visible_fraction(const scene *s, const object *o)
                 continue;
             n++;
             map_to_pixel(s, o->x + lx, o->y + ly, &u, &v);
-            in += u >= -0.5 && v >= -0.5 && u <= s->cam.width - 0.5 && v <= s->cam.height - 0.5;
+            in += u >= -0.5 && v >= -0.5 && u <= s->cam.width - 0.5 && v <= s->cam.height - 0.5 &&
+                  !under_light(s, o->x + lx, o->y + ly);
         }
     return (double)in / n;
 }
