@@ -14,6 +14,8 @@ static const command commands[] = {
     {"gen", rl_cmd_gen, "print-ready landmarks (PDF, SVG, PNG) for ids or a whole map"},
     {"plan", rl_cmd_plan, "choose family, diameter and grid pitch for a site; write a map"},
     {"detect", rl_cmd_detect, "recognize landmarks in PNG images (JSON lines)"},
+    {"locate", rl_cmd_locate, "the robot's pose from PNG images (JSON lines)"},
+    {"calibrate-offsets", rl_cmd_calibrate, "fit the paper's pixel-to-offset maps from a known pose"},
 };
 
 static void usage(FILE *out)
@@ -22,7 +24,7 @@ static void usage(FILE *out)
     fprintf(out, "usage: ringloc COMMAND [OPTIONS]\n\n"
                  "Self-localization from ring-coded ceiling landmarks.\n\ncommands:\n");
     for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
-        fprintf(out, "  %-10s %s\n", commands[i].name, commands[i].summary);
+        fprintf(out, "  %-18s %s\n", commands[i].name, commands[i].summary);
     fprintf(out, "\n'ringloc COMMAND --help' describes a command's options.\n");
 }
 

@@ -31,5 +31,7 @@ int rl_cli_size(const char *cmd, const char *opt, const char *s, int *w, int *h)
 int rl_cmd_gen(int argc, char **argv);
 int rl_cmd_plan(int argc, char **argv);
 int rl_cmd_detect(int argc, char **argv);
+int rl_cmd_locate(int argc, char **argv);
+int rl_cmd_calibrate(int argc, char **argv);
 
 #endif

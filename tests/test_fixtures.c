@@ -15,6 +15,9 @@
 #include "fixture_eval.h"
 #include "rl_png.h"
 #include "rl_report.h"
+#include "rl_camfile.h"
+#include "rl_mapfile.h"
+#include "rl_robotfile.h"
 
 static rl_host_recog hr, hr_always;
 static rl_result res;
@@ -241,6 +244,75 @@ static void stats_set(void **state)
     }
 }
 
+/* ---- paths: the pose against the renderer's truth ---- */
+
+static const char *paths_dir;
+
+static double wrap(double a)
+{
+    return atan2(sin(a), cos(a));
+}
+
+static void path_accuracy(void **state)
+{
+    const char *kind = (const char *)*state;
+    static rl_map map;
+    rl_camera cam;
+    rl_mount mount;
+    char path[1024], err[512];
+    double pos = 0, yaw = 0;
+    int k, frames = 0;
+    snprintf(path, sizeof path, "%s/map.yaml", paths_dir);
+    if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    snprintf(path, sizeof path, "%s/camera.yaml", paths_dir);
+    if (rl_camfile_load(path, &cam, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    snprintf(path, sizeof path, "%s/robot.yaml", paths_dir);
+    if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    for (k = 0; k < 1000; k++) {
+        truth t;
+        rl_image img;
+        rl_pose pose;
+        double us;
+        FILE *f;
+        snprintf(path, sizeof path, "%s/%s_%03d.yaml", paths_dir, kind, k);
+        if ((f = fopen(path, "r")) == NULL)
+            break;
+        fclose(f);
+        assert_int_equal(truth_load(path, &t), 0);
+        snprintf(path, sizeof path, "%s/%s", paths_dir, t.image);
+        if (rl_png_read_gray(path, &img, err, sizeof err) != RL_OK) fail_msg("%s", err);
+        assert_int_equal(rl_host_recog_run(&hr, &img, &res, &us), RL_OK);
+        rl_png_free(&img);
+        assert_int_equal(rl_pose_solve(&cam, &map, &mount, res.landmarks, res.n_landmarks, NULL, &pose), RL_OK);
+        assert_int_equal(pose.n_dropped, 0);
+        pos += hypot(pose.x - t.robot_x, pose.y - t.robot_y);
+        yaw += fabs(wrap(pose.yaw - t.robot_yaw));
+        if (k == 0) {
+            /* a landmark moved since the map was made: the pose stays right
+             * and says which landmark it dropped */
+            static rl_map wrong;
+            int victim = res.landmarks[res.n_landmarks / 2].id;
+            rl_pose p2;
+            wrong = map;
+            wrong.lm[rl_map_find(&wrong, victim)].x += 0.3;
+            assert_int_equal(rl_pose_solve(&cam, &wrong, &mount, res.landmarks, res.n_landmarks, NULL, &p2), RL_OK);
+            assert_int_equal(p2.n_dropped, 1);
+            assert_int_equal(p2.dropped[0], victim);
+            assert_true(hypot(p2.x - t.robot_x, p2.y - t.robot_y) < 0.005);
+        }
+        frames++;
+    }
+    if (frames == 0)
+        fail_msg("no %s frames in %s", kind, paths_dir);
+    pos /= frames;
+    yaw /= frames;
+    printf("  %-8s %3d frames: mean position error %.2f mm, mean yaw error %.3f deg\n", kind, frames,
+           1000 * pos, yaw * 180 / M_PI);
+    /* issue 6: at most 5 mm and 0.1 degree (the paper: 20.2 mm, 0.5 degree) */
+    assert_true(pos <= 0.005);
+    assert_true(yaw * 180 / M_PI <= 0.1);
+}
+
 int main(int argc, char **argv)
 {
     rl_recog_config cfg;
@@ -262,8 +334,16 @@ int main(int argc, char **argv)
             tests[n].initial_state = argv[i];
         }
         rc = _cmocka_run_group_tests("fixture sets", tests, (size_t)n, NULL, NULL);
+    } else if (argc >= 3 && strcmp(argv[1], "paths") == 0) {
+        const struct CMUnitTest tests[] = {
+            cmocka_unit_test_prestate(path_accuracy, (void *)"straight"),
+            cmocka_unit_test_prestate(path_accuracy, (void *)"rect"),
+            cmocka_unit_test_prestate(path_accuracy, (void *)"circle"),
+        };
+        paths_dir = argv[2];
+        rc = cmocka_run_group_tests(tests, NULL, NULL);
     } else {
-        fprintf(stderr, "usage: test_fixtures golden DIR | stats DIR SET...\n");
+        fprintf(stderr, "usage: test_fixtures golden DIR | stats DIR SET... | paths DIR\n");
         rc = 2;
     }
     rl_host_recog_free(&hr);

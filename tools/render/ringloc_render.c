@@ -28,6 +28,7 @@
 #include "rl_family.h"
 #include "rl_mapfile.h"
 #include "rl_png.h"
+#include "rl_robotfile.h"
 
 #define MAX_OBJ 512
 #define SUB 3 /* subsamples per pixel axis */
@@ -573,7 +574,8 @@ static int write_truth(const char *path, const char *image, const scene *s, doub
 static const char *help =
     "usage: ringloc-render --out DIR (--set NAME --count N | --path KIND --frames N)\n"
     "                      [--seed S] [--size 640x480] [--camera CAM.yaml] [--twin]\n"
-    "                      [--mount X,Y,YAW] [--write-map FILE] [--write-camera FILE]\n\n"
+    "                      [--mount X,Y,YAW] [--write-map FILE] [--write-camera FILE]\n"
+    "                      [--write-robot FILE]\n\n"
     "Render ceiling fixtures with ground truth (NAME_NNN.png + NAME_NNN.yaml).\n"
     "  --set NAME      clean, cluttered, glare, border, clutter_only, dim, blur, motion:\n"
     "                  random scenes around the paper's set-up (ring5, 0.21 m landmarks,\n"
@@ -653,9 +655,10 @@ int main(int argc, char **argv)
         {"size", required_argument, 0, 'z'}, {"camera", required_argument, 0, 'c'},
         {"twin", no_argument, 0, 't'}, {"mount", required_argument, 0, 'm'},
         {"write-map", required_argument, 0, 'M'}, {"write-camera", required_argument, 0, 'C'},
+        {"write-robot", required_argument, 0, 'R'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     const char *out = NULL, *set = NULL, *path = NULL, *cam_path = NULL, *map_out = NULL,
-               *cam_out = NULL;
+               *cam_out = NULL, *robot_out = NULL;
     int count = 10, w = 640, h = 480, twin = 0, c, k, i;
     unsigned long seed = 1;
     double mx = 0, my = 0, myaw = 0;
@@ -688,6 +691,7 @@ int main(int argc, char **argv)
             break;
         case 'M': map_out = optarg; break;
         case 'C': cam_out = optarg; break;
+        case 'R': robot_out = optarg; break;
         case 'h': fputs(help, stdout); return 0;
         default: fprintf(stderr, "ringloc-render: see --help\n"); return 2;
         }
@@ -700,6 +704,10 @@ int main(int argc, char **argv)
     } else {
         default_camera(&cam, w, h);
     }
+    if (out && mkdir_p(out) != 0) {
+        fprintf(stderr, "ringloc-render: %s: %s\n", out, strerror(errno));
+        return 1;
+    }
     memset(&s, 0, sizeof s);
     s.cam = cam;
     s.fam.bits = 5;
@@ -711,6 +719,17 @@ int main(int argc, char **argv)
     if (cam_out && rl_camfile_save(cam_out, &cam, err, sizeof err) != RL_OK) {
         fprintf(stderr, "ringloc-render: %s\n", err);
         return 1;
+    }
+    if (robot_out) {
+        rl_mount mnt;
+        mnt.x = mx;
+        mnt.y = my;
+        mnt.yaw = myaw;
+        mnt.z = s.cam_z;
+        if (rl_robotfile_save(robot_out, &mnt, err, sizeof err) != RL_OK) {
+            fprintf(stderr, "ringloc-render: %s\n", err);
+            return 1;
+        }
     }
     if (map_out) {
         static rl_map map;
@@ -731,7 +750,7 @@ int main(int argc, char **argv)
         }
     }
     if (!out) {
-        if (map_out || cam_out)
+        if (map_out || cam_out || robot_out)
             return 0;
         fprintf(stderr, "ringloc-render: --out DIR is required (see --help)\n");
         return 2;

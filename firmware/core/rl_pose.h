@@ -1,0 +1,83 @@
+/* rl_pose: the robot's pose from identified landmarks.
+ *
+ * Each identified centre is undistorted (rl_camera_unproject) and
+ * projected onto the ceiling plane, distance Z = ceiling_height - camera
+ * height above the camera: with the spec's mounting (image top = robot
+ * forward, +u = robot left) a centre at normalized (xn, yn) lies at
+ * (-yn Z, xn Z) in the camera's horizontal frame. A least-squares rigid
+ * fit of those points to the map positions (the paper's two-landmark
+ * method is its two-point case) gives the camera's position and heading,
+ * and the mounting offset the robot's. Before fitting, pairwise distances
+ * are checked against the map and landmarks that disagree (a wrong id, a
+ * landmark moved since the map was made) are dropped and reported.
+ *
+ *   rl_pose pose;
+ *   rl_err e = rl_pose_solve(&cam, &map, &mount, res.landmarks, res.n_landmarks, NULL, &pose);
+ *   if (e == RL_OK) use(pose.x, pose.y, pose.yaw);
+ *   else if (e == RL_ETOOFEW) ...          // fewer than two usable landmarks
+ */
+#ifndef RL_POSE_H
+#define RL_POSE_H
+
+#include "rl_camera.h"
+#include "rl_config.h"
+#include "rl_error.h"
+#include "rl_map.h"
+#include "rl_recog.h"
+
+/* The camera's optical centre in the robot frame (REP-103): x forward,
+ * y left, z above the floor, yaw of the image's top edge from robot +x. */
+typedef struct {
+    double x, y, z, yaw;
+} rl_mount;
+
+/* The paper's alternative to the pinhole model: the physical offset of a
+ * ceiling point from the optical axis (camera horizontal frame, metres at
+ * the calibration distance) as a polynomial in the pixel coordinates. */
+#define RL_OFFSET_TERMS 10
+typedef struct {
+    int degree;                  /* 1 .. 3 */
+    double u0, v0, scale;        /* pixel normalization: (u - u0) / scale */
+    double distance;             /* camera to ceiling at calibration, m */
+    double cx[RL_OFFSET_TERMS];  /* forward offset coefficients */
+    double cy[RL_OFFSET_TERMS];  /* left offset coefficients */
+} rl_offsets;
+
+typedef struct {
+    double x, y, yaw;            /* robot base pose in the map frame, m and rad */
+    double cam_x, cam_y, cam_yaw;/* camera optical centre and heading */
+    int used;                    /* landmarks in the fit */
+    double residual;             /* RMS distance between map and fitted positions, m */
+    int n_dropped;
+    int dropped[RL_MAX_LANDMARKS]; /* ids left out as inconsistent */
+    int n_unknown;               /* identified ids not in the map */
+} rl_pose;
+
+/* Pairwise-distance tolerance: two landmarks agree when their distance
+ * apart differs from the map's by at most this much plus 2% of it. */
+#define RL_POSE_PAIR_TOLERANCE 0.03
+
+/* Fill the mount of the spec's default mounting at height z. */
+void rl_mount_defaults(rl_mount *m, double z);
+
+/* Number of polynomial terms of a degree (3, 6 or 10). */
+int rl_offsets_terms(int degree);
+
+/* Offset (forward, left) of pixel (u, v) at the calibration distance. */
+void rl_offsets_eval(const rl_offsets *o, double u, double v, double *fwd, double *left);
+
+/* Ceiling point of image point (u, v) in the camera's horizontal frame:
+ * (forward, left) in metres, with the pinhole model, or with the offset
+ * map when `offsets` is not NULL (scaled to the map's distance). */
+void rl_pose_ceiling_point(const rl_camera *cam, const rl_offsets *offsets, double distance,
+                           double u, double v, double *fwd, double *left);
+
+/* Solve the pose from n identified landmarks. RL_ETOOFEW when fewer than
+ * two usable (in the map, consistent) remain; RL_ERANGE when the camera is
+ * not below the ceiling; RL_EINVAL for bad arguments. `out` always says
+ * what was used and dropped. */
+RL_CHECK rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mount,
+                              const rl_detection *lm, int n, const rl_offsets *offsets,
+                              rl_pose *out);
+
+#endif

@@ -1,0 +1,153 @@
+/* ringloc locate: the robot's pose from PNG images. */
+#include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "rl_annotate.h"
+#include "rl_camfile.h"
+#include "rl_cli.h"
+#include "rl_mapfile.h"
+#include "rl_offsetsfile.h"
+#include "rl_png.h"
+#include "rl_report.h"
+#include "rl_robotfile.h"
+
+static const char *locate_help =
+    "usage: ringloc locate --camera CAM.yaml --map MAP.yaml --robot ROBOT.yaml\n"
+    "                      [--offsets OFFSETS.yaml] [--annotate OUT.png]\n"
+    "                      [--local auto|always|never] [--min-score 0.8] IMAGE...\n\n"
+    "Recognize landmarks and compute the robot's pose (REP-103, map frame) for\n"
+    "each image. Prints the detect JSON line with one more field:\n"
+    "  \"pose\": {\"x\": 1.2034, \"y\": 0.5021, \"yaw\": 0.0312, \"landmarks_used\": 4,\n"
+    "           \"residual\": 0.0021, \"dropped\": []}\n"
+    "in metres and radians, or \"pose\": null with \"pose_error\" saying why.\n\n"
+    "  --camera FILE    ROS camera_info or OpenCV calibration YAML\n"
+    "  --map FILE       landmark map YAML (family, diameter, ceiling_height, landmarks)\n"
+    "  --robot FILE     robot YAML: camera_mount {x, y, z, yaw}\n"
+    "  --offsets FILE   pixel-to-offset polynomial from 'ringloc calibrate-offsets',\n"
+    "                   used instead of the pinhole model\n"
+    "  --annotate FILE  write the image with what was recognized drawn on it\n"
+    "  --local POLICY   local pass: auto (when fewer than 2 identified), always, never\n";
+
+int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config *cfg,
+                        const char **family);
+void rl_cli_annotate_name(char *buf, size_t len, const char *out, const char *image, int several);
+
+int rl_cmd_locate(int argc, char **argv)
+{
+    static const struct option opts[] = {
+        {"camera", required_argument, 0, 'c'}, {"map", required_argument, 0, 'm'},
+        {"robot", required_argument, 0, 'r'}, {"offsets", required_argument, 0, 'o'},
+        {"annotate", required_argument, 0, 'a'}, {"local", required_argument, 0, 'L'},
+        {"min-score", required_argument, 0, 's'}, {"help", no_argument, 0, 'h'},
+        {0, 0, 0, 0}};
+    const char *C = "locate", *cam_path = NULL, *map_path = NULL, *robot_path = NULL,
+               *off_path = NULL, *annotate = NULL, *family = NULL;
+    rl_recog_config cfg;
+    rl_host_recog hr;
+    static rl_result res;
+    static rl_map map;
+    rl_camera cam;
+    rl_mount mount;
+    rl_offsets offsets;
+    int c, i, failures = 0, ids[RL_MAX_MAP_LANDMARKS];
+    char err[512], name[1024];
+
+    rl_recog_defaults(&cfg);
+    optind = 1;
+    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+        int r = rl_cli_recog_option(C, c, optarg, &cfg, &family);
+        if (r < 0)
+            return RL_EXIT_USAGE;
+        if (r > 0 && c != 'f')
+            continue;
+        switch (c) {
+        case 'c': cam_path = optarg; break;
+        case 'm': map_path = optarg; break;
+        case 'r': robot_path = optarg; break;
+        case 'o': off_path = optarg; break;
+        case 'a': annotate = optarg; break;
+        case 'h': fputs(locate_help, stdout); return 0;
+        default: return rl_cli_fail(C, RL_EXIT_USAGE, "see 'ringloc locate --help'");
+        }
+    }
+    if (!cam_path || !map_path || !robot_path)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--camera, --map and --robot are required (see --help)");
+    if (optind >= argc)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "no images given (see --help)");
+    if (rl_camfile_load(cam_path, &cam, err, sizeof err) != RL_OK ||
+        rl_mapfile_load(map_path, &map, err, sizeof err) != RL_OK ||
+        rl_robotfile_load(robot_path, &mount, err, sizeof err) != RL_OK ||
+        (off_path && rl_offsetsfile_load(off_path, &offsets, err, sizeof err) != RL_OK))
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    if (map.count == 0)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: the map has no landmarks", map_path);
+    if (!(map.ceiling_height > mount.z))
+        return rl_cli_fail(C, RL_EXIT_FAIL,
+                           "%s: camera_mount.z %.3f m is not below the ceiling (%s: ceiling_height %.3f m)",
+                           robot_path, mount.z, map_path, map.ceiling_height);
+    cfg.family = map.family;
+    for (i = 0; i < map.count; i++)
+        ids[i] = map.lm[i].id;
+    cfg.ids = ids;
+    cfg.n_ids = map.count;
+    rl_host_recog_init(&hr, &cfg);
+    for (i = optind; i < argc; i++) {
+        rl_image img;
+        double us = 0;
+        rl_pose pose;
+        rl_err e;
+        int k;
+        if (rl_png_read_gray(argv[i], &img, err, sizeof err) != RL_OK) {
+            rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+            failures++;
+            continue;
+        }
+        if (img.width != cam.width || img.height != cam.height) {
+            rl_cli_fail(C, RL_EXIT_FAIL, "%s: image is %dx%d but %s (image_width, image_height) is for %dx%d",
+                        argv[i], img.width, img.height, cam_path, cam.width, cam.height);
+            failures++;
+            rl_png_free(&img);
+            continue;
+        }
+        if ((e = rl_host_recog_run(&hr, &img, &res, &us)) != RL_OK) {
+            rl_cli_fail(C, RL_EXIT_FAIL, "%s: recognition failed: %s", argv[i], rl_strerror(e));
+            failures++;
+            rl_png_free(&img);
+            continue;
+        }
+        e = rl_pose_solve(&cam, &map, &mount, res.landmarks, res.n_landmarks,
+                          off_path ? &offsets : NULL, &pose);
+        rl_report_json_open(stdout, argv[i], &res, &cfg.family, us);
+        if (e == RL_OK) {
+            printf(", \"pose\": {\"x\": %.4f, \"y\": %.4f, \"yaw\": %.4f, \"landmarks_used\": %d, "
+                   "\"residual\": %.4f, \"dropped\": [",
+                   pose.x, pose.y, pose.yaw, pose.used, pose.residual);
+            for (k = 0; k < pose.n_dropped; k++)
+                printf("%s%d", k ? ", " : "", pose.dropped[k]);
+            printf("]}}\n");
+        } else {
+            printf(", \"pose\": null, \"pose_error\": \"%s\"}\n",
+                   e == RL_ETOOFEW ? (pose.n_dropped ? "too few consistent landmarks (some disagree with the map)"
+                                                     : "fewer than 2 landmarks identified")
+                                   : rl_strerror(e));
+        }
+        fflush(stdout);
+        if (annotate) {
+            char caption[256];
+            if (e == RL_OK)
+                snprintf(caption, sizeof caption, "%s  x %.3f  y %.3f  yaw %.1f deg  (%d landmarks)",
+                         argv[i], pose.x, pose.y, pose.yaw * 180.0 / 3.14159265358979, pose.used);
+            else
+                snprintf(caption, sizeof caption, "%s  no pose", argv[i]);
+            rl_cli_annotate_name(name, sizeof name, annotate, argv[i], argc - optind > 1);
+            if (rl_annotate_png(name, &img, &res, &cfg.family, caption, err, sizeof err) != RL_OK) {
+                rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+                failures++;
+            }
+        }
+        rl_png_free(&img);
+    }
+    rl_host_recog_free(&hr);
+    return failures ? RL_EXIT_FAIL : 0;
+}

@@ -1,0 +1,52 @@
+#include "rl_robotfile.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+#include "rl_yaml.h"
+
+rl_err rl_robotfile_load(const char *path, rl_mount *m, char *err, size_t errlen)
+{
+    rl_yaml y;
+    yaml_node_t *root, *cm;
+    rl_err e;
+    rl_mount_defaults(m, 0.0);
+    if ((e = rl_yaml_load(&y, path, err, errlen)) != RL_OK)
+        return e;
+    root = rl_yaml_root(&y);
+    cm = rl_yaml_get(&y, root, "camera_mount");
+    if (cm == NULL || cm->type != YAML_MAPPING_NODE) {
+        e = rl_yaml_fail(&y, cm ? cm : root, "camera_mount", RL_EFORMAT, err, errlen,
+                         cm ? "expected {x, y, z, yaw}" : "missing key");
+        goto out;
+    }
+    if ((e = rl_yaml_double(&y, cm, "x", "camera_mount.x", 0, &m->x, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double(&y, cm, "y", "camera_mount.y", 0, &m->y, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double(&y, cm, "z", "camera_mount.z", 1, &m->z, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double(&y, cm, "yaw", "camera_mount.yaw", 0, &m->yaw, err, errlen)) != RL_OK)
+        goto out;
+    if (m->z < 0 || m->z > 20) {
+        e = rl_yaml_fail(&y, rl_yaml_get(&y, cm, "z"), "camera_mount.z", RL_ERANGE, err, errlen,
+                         "%g m is not a camera height above the floor", m->z);
+        goto out;
+    }
+out:
+    rl_yaml_free(&y);
+    return e;
+}
+
+rl_err rl_robotfile_save(const char *path, const rl_mount *m, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "w");
+    if (f == NULL) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        return RL_EIO;
+    }
+    fprintf(f, "# camera optical centre in the robot frame (REP-103), z above the floor\n");
+    fprintf(f, "camera_mount: {x: %.4f, y: %.4f, z: %.4f, yaw: %.6f}\n", m->x, m->y, m->z, m->yaw);
+    if (ferror(f) | (fclose(f) != 0)) {
+        snprintf(err, errlen, "%s: write failed", path);
+        return RL_EIO;
+    }
+    return RL_OK;
+}

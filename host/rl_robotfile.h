@@ -1,0 +1,17 @@
+/* rl_robotfile: robot YAML -> rl_mount.
+ *
+ *   camera_mount: {x: 0.0, y: 0.0, z: 0.880, yaw: 0.0}
+ *
+ * The camera's optical centre in the robot frame; z above the floor. x, y
+ * and yaw default to 0 (the spec's mounting); z is required.
+ */
+#ifndef RL_ROBOTFILE_H
+#define RL_ROBOTFILE_H
+
+#include <stddef.h>
+#include "rl_pose.h"
+
+RL_CHECK rl_err rl_robotfile_load(const char *path, rl_mount *m, char *err, size_t errlen);
+RL_CHECK rl_err rl_robotfile_save(const char *path, const rl_mount *m, char *err, size_t errlen);
+
+#endif

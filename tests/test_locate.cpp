@@ -1,0 +1,237 @@
+// Localization against OpenCV: undistortion and projection against
+// cv::undistortPoints / cv::projectPoints (0.01 px), the pose against
+// cv::solvePnP on the same points, and the pose solver's own contract.
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+#include <opencv2/calib3d.hpp>
+#include <opencv2/core.hpp>
+extern "C" {
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <cmocka.h>
+#include "rl_camera.h"
+#include "rl_pose.h"
+}
+
+static rl_camera make_cam(int model)
+{
+    rl_camera c;
+    rl_camera_defaults(&c, 640, 480, 70 * M_PI / 180);
+    c.fx = 457.3;
+    c.fy = 458.1;
+    c.cx = 322.4;
+    c.cy = 237.9;
+    c.model = (rl_dist_model)model;
+    double k5[5] = {-0.12, 0.08, 0.0004, -0.0003, -0.01};
+    double k8[8] = {0.35, -0.2, 0.0006, -0.0004, 0.05, 0.47, -0.15, 0.04};
+    for (int i = 0; i < 8; i++)
+        c.k[i] = model == RL_DIST_RATIONAL ? k8[i] : model == RL_DIST_PLUMB_BOB && i < 5 ? k5[i] : 0;
+    return c;
+}
+
+static void cv_mats(const rl_camera &c, cv::Mat &K, cv::Mat &D)
+{
+    K = (cv::Mat_<double>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
+    int n = c.model == RL_DIST_RATIONAL ? 8 : 5;
+    D = cv::Mat(1, n, CV_64F);
+    for (int i = 0; i < n; i++)
+        D.at<double>(i) = c.k[i];
+}
+
+static void test_project_and_undistort_match_opencv(void **)
+{
+    for (int model : {RL_DIST_PLUMB_BOB, RL_DIST_RATIONAL}) {
+        rl_camera c = make_cam(model);
+        cv::Mat K, D;
+        cv_mats(c, K, D);
+        std::vector<cv::Point3d> obj;
+        for (double y = -0.75; y <= 0.75; y += 0.05)
+            for (double x = -0.95; x <= 0.95; x += 0.05)
+                obj.push_back({x, y, 1.0});
+        std::vector<cv::Point2d> img;
+        cv::projectPoints(obj, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), K, D, img);
+        std::vector<cv::Point2d> und;
+        cv::undistortPoints(img, und, K, D, cv::noArray(), cv::noArray(),
+                            cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-14));
+        double worst_p = 0, worst_u = 0;
+        for (size_t i = 0; i < obj.size(); i++) {
+            double u, v, xn, yn;
+            rl_camera_project(&c, obj[i].x, obj[i].y, &u, &v);
+            worst_p = std::max(worst_p, std::hypot(u - img[i].x, v - img[i].y));
+            rl_camera_unproject(&c, img[i].x, img[i].y, &xn, &yn);
+            // compare in pixels: re-scale the normalized difference by fx
+            worst_u = std::max(worst_u, c.fx * std::hypot(xn - und[i].x, yn - und[i].y));
+            worst_u = std::max(worst_u, c.fx * std::hypot(xn - obj[i].x, yn - obj[i].y));
+        }
+        if (worst_p > 0.01 || worst_u > 0.01)
+            fail_msg("model %d: projection off %.4f px, undistortion off %.4f px", model, worst_p, worst_u);
+    }
+}
+
+static rl_map site_map(void)
+{
+    rl_map m;
+    std::memset(&m, 0, sizeof m);
+    m.family.bits = 5;
+    m.diameter = 0.21;
+    m.ceiling_height = 2.75;
+    for (int j = 0; j < 5; j++)
+        for (int i = 0; i < 6; i++) {
+            m.lm[m.count].id = m.count + 1;
+            m.lm[m.count].x = 0.305 + 0.61 * i;
+            m.lm[m.count].y = 0.305 + 0.61 * j;
+            m.count++;
+        }
+    return m;
+}
+
+// Image positions of the map's landmarks seen from a robot pose.
+static std::vector<rl_detection> observe(const rl_camera &c, const rl_map &m, const rl_mount &mt,
+                                         double x, double y, double yaw, double noise = 0)
+{
+    std::mt19937 rng(5);
+    std::normal_distribution<double> n(0, noise > 0 ? noise : 1);
+    double cyaw = yaw + mt.yaw, cx = x + std::cos(yaw) * mt.x - std::sin(yaw) * mt.y,
+           cy = y + std::sin(yaw) * mt.x + std::cos(yaw) * mt.y, Z = m.ceiling_height - mt.z;
+    std::vector<rl_detection> out;
+    for (int i = 0; i < m.count; i++) {
+        double dx = m.lm[i].x - cx, dy = m.lm[i].y - cy;
+        double fwd = std::cos(cyaw) * dx + std::sin(cyaw) * dy, left = -std::sin(cyaw) * dx + std::cos(cyaw) * dy;
+        double u, v;
+        rl_camera_project(&c, left / Z, -fwd / Z, &u, &v);
+        if (u < 20 || v < 20 || u > c.width - 20 || v > c.height - 20)
+            continue;
+        rl_detection d;
+        std::memset(&d, 0, sizeof d);
+        d.id = m.lm[i].id;
+        d.u = u + (noise > 0 ? n(rng) : 0);
+        d.v = v + (noise > 0 ? n(rng) : 0);
+        d.radius = 25;
+        d.complete = 1;
+        out.push_back(d);
+    }
+    return out;
+}
+
+static void test_pose_exact_and_mount(void **)
+{
+    rl_camera c = make_cam(RL_DIST_PLUMB_BOB);
+    rl_map m = site_map();
+    rl_mount mt = {0.12, -0.04, 0.88, 0.3};
+    for (double yaw : {0.0, 1.0, -2.5, 3.1}) {
+        std::vector<rl_detection> d = observe(c, m, mt, 1.7, 1.4, yaw);
+        rl_pose p;
+        assert_true(d.size() >= 4);
+        assert_int_equal(rl_pose_solve(&c, &m, &mt, d.data(), (int)d.size(), NULL, &p), RL_OK);
+        assert_true(std::hypot(p.x - 1.7, p.y - 1.4) < 1e-6);
+        assert_true(std::fabs(std::remainder(p.yaw - yaw, 2 * M_PI)) < 1e-6);
+        assert_int_equal(p.used, (int)d.size());
+        assert_true(p.residual < 1e-6);
+        assert_int_equal(p.n_dropped, 0);
+    }
+}
+
+static void test_pose_drops_a_misplaced_landmark(void **)
+{
+    rl_camera c = make_cam(RL_DIST_PLUMB_BOB);
+    rl_map m = site_map(), wrong = m;
+    rl_mount mt = {0, 0, 0.88, 0};
+    std::vector<rl_detection> d = observe(c, m, mt, 1.8, 1.5, 0.4, 0.1);
+    int victim = d[2].id;
+    wrong.lm[rl_map_find(&wrong, victim)].x += 0.25; // moved since the map was made
+    rl_pose p;
+    assert_int_equal(rl_pose_solve(&c, &wrong, &mt, d.data(), (int)d.size(), NULL, &p), RL_OK);
+    assert_int_equal(p.n_dropped, 1);
+    assert_int_equal(p.dropped[0], victim);
+    assert_true(std::hypot(p.x - 1.8, p.y - 1.5) < 0.003);
+    // unknown ids are counted, not used
+    d[0].id = 99;
+    assert_int_equal(rl_pose_solve(&c, &m, &mt, d.data(), (int)d.size(), NULL, &p), RL_OK);
+    assert_int_equal(p.n_unknown, 1);
+}
+
+static void test_pose_too_few(void **)
+{
+    rl_camera c = make_cam(RL_DIST_NONE);
+    rl_map m = site_map();
+    rl_mount mt = {0, 0, 0.88, 0};
+    std::vector<rl_detection> d = observe(c, m, mt, 1.8, 1.5, 0.0);
+    rl_pose p;
+    assert_int_equal(rl_pose_solve(&c, &m, &mt, d.data(), 1, NULL, &p), RL_ETOOFEW);
+    assert_int_equal(rl_pose_solve(&c, &m, &mt, d.data(), 2, NULL, &p), RL_OK); // the paper's case
+    assert_true(std::hypot(p.x - 1.8, p.y - 1.5) < 1e-6);
+    rl_map bad = m;
+    bad.lm[rl_map_find(&bad, d[1].id)].y += 0.5;
+    assert_int_equal(rl_pose_solve(&c, &bad, &mt, d.data(), 2, NULL, &p), RL_ETOOFEW);
+    assert_int_equal(p.n_dropped, 2);
+    mt.z = 3.0;
+    assert_int_equal(rl_pose_solve(&c, &m, &mt, d.data(), 2, NULL, &p), RL_ERANGE);
+}
+
+// The same points through cv::solvePnP: the camera pose must agree.
+static void test_pose_agrees_with_solvepnp(void **)
+{
+    rl_camera c = make_cam(RL_DIST_PLUMB_BOB);
+    cv::Mat K, D;
+    cv_mats(c, K, D);
+    rl_map m = site_map();
+    rl_mount mt = {0, 0, 0.88, 0};
+    double Z = m.ceiling_height - mt.z;
+    // noise-free points: the two must agree; with 0.2 px noise both must
+    // stay near the truth (solvePnP also fits a tilt, which the known
+    // upward mounting lets ringloc leave out)
+    for (double noise : {0.0, 0.2})
+    for (double yaw : {0.3, -1.2}) {
+        std::vector<rl_detection> d = observe(c, m, mt, 1.6, 1.3, yaw, noise);
+        rl_pose p;
+        assert_int_equal(rl_pose_solve(&c, &m, &mt, d.data(), (int)d.size(), NULL, &p), RL_OK);
+        // world: map x, y on the ceiling plane at z = Z above the camera's plane
+        std::vector<cv::Point3d> w;
+        std::vector<cv::Point2d> im;
+        for (auto &o : d) {
+            int k = rl_map_find(&m, o.id);
+            w.push_back({m.lm[k].x, m.lm[k].y, Z});
+            im.push_back({o.u, o.v});
+        }
+        cv::Mat rvec, tvec, R;
+        assert_true(cv::solvePnP(w, im, K, D, rvec, tvec, false, cv::SOLVEPNP_ITERATIVE));
+        cv::Rodrigues(rvec, R);
+        cv::Mat C = -R.t() * tvec; // camera centre in the world
+        // the camera's forward (image top, -y_c) in the world gives the yaw
+        cv::Mat fwd = R.t() * (cv::Mat_<double>(3, 1) << 0, -1, 0);
+        double cv_yaw = std::atan2(fwd.at<double>(1), fwd.at<double>(0));
+        double dpos = std::hypot(C.at<double>(0) - p.cam_x, C.at<double>(1) - p.cam_y);
+        double dyaw = std::fabs(std::remainder(cv_yaw - p.cam_yaw, 2 * M_PI));
+        double tol = 0.0005;
+        if (noise > 0) { // each against the truth: ringloc within 3 mm, and no worse
+            double e_cv = std::hypot(C.at<double>(0) - 1.6, C.at<double>(1) - 1.3);
+            double e_rl = std::hypot(p.cam_x - 1.6, p.cam_y - 1.3);
+            assert_true(e_cv < 0.010);
+            assert_true(e_rl < 0.003);
+            assert_true(e_rl <= e_cv + 0.0005);
+            dpos = 0;
+            dyaw = std::max(std::fabs(std::remainder(cv_yaw - yaw, 2 * M_PI)),
+                            std::fabs(std::remainder(p.cam_yaw - yaw, 2 * M_PI)));
+            tol = 0.002;
+        }
+        if (dpos > tol || dyaw > tol)
+            fail_msg("yaw %.2f: ringloc (%.4f, %.4f, %.4f), solvePnP (%.4f, %.4f, %.4f)", yaw, p.cam_x,
+                     p.cam_y, p.cam_yaw, C.at<double>(0), C.at<double>(1), cv_yaw);
+        assert_true(std::fabs(C.at<double>(2)) < 0.02); // and the camera sits at height 0
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_project_and_undistort_match_opencv),
+        cmocka_unit_test(test_pose_exact_and_mount),
+        cmocka_unit_test(test_pose_drops_a_misplaced_landmark),
+        cmocka_unit_test(test_pose_too_few),
+        cmocka_unit_test(test_pose_agrees_with_solvepnp),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
