@@ -11,6 +11,8 @@ typedef struct {
 } command;
 
 static const command commands[] = {
+    {"run", rl_cmd_run, "the firmware: camera -> pose frames on the serial line"},
+    {"monitor", rl_cmd_monitor, "decode pose and status frames (controller side)"},
     {"gen", rl_cmd_gen, "print-ready landmarks (PDF, SVG, PNG) for ids or a whole map"},
     {"plan", rl_cmd_plan, "choose family, diameter and grid pitch for a site; write a map"},
     {"detect", rl_cmd_detect, "recognize landmarks in PNG images (JSON lines)"},

@@ -1,0 +1,82 @@
+/* rl_run: the firmware's main loop, one step at a time.
+ *
+ * Each step grabs a frame from the camera, recognizes, localizes and sends
+ * a pose frame, or a status frame saying why there is no pose. Faults are
+ * part of the loop, not exits: a camera that fails is closed and reopened
+ * with backoff while status frames keep going out; a camera that times out
+ * repeatedly is reopened; a serial line that disappears is reopened; a bad
+ * frame is reported and skipped. The camera, the output, the clock and the
+ * log are reached through rl_run_io so tests can inject every fault.
+ * Nothing is allocated after rl_run_init.
+ *
+ *   rl_runner r;
+ *   rl_run_init(&r, &io, &rec, &calib, &map, &mount, &result);
+ *   while (!stop && rl_run_step(&r) != RL_ENOTFOUND) {}
+ */
+#ifndef RL_RUN_H
+#define RL_RUN_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "rl_cam.h"
+#include "rl_frame.h"
+#include "rl_pose.h"
+#include "rl_recog.h"
+
+typedef struct {
+    rl_err (*cam_open)(void *ctx, char *err, size_t errlen);
+    rl_err (*cam_grab)(void *ctx, int timeout_ms, rl_cam_frame *f);
+    void (*cam_release)(void *ctx, rl_cam_frame *f);
+    void (*cam_close)(void *ctx);
+    void *cam_ctx;
+    rl_err (*out_open)(void *ctx, char *err, size_t errlen);
+    rl_err (*out_write)(void *ctx, const uint8_t *p, size_t n);
+    void (*out_close)(void *ctx);
+    void *out_ctx;
+    uint64_t (*now_us)(void *ctx);
+    void (*sleep_us)(void *ctx, uint64_t us);
+    void *clock_ctx;
+    void (*log)(void *ctx, const char *line); /* one line, no newline */
+    void *log_ctx;
+} rl_run_io;
+
+/* Kinds of log line; each kind is printed at most once per log interval. */
+enum { RL_LOG_CAMERA, RL_LOG_TIMEOUT, RL_LOG_SERIAL, RL_LOG_FRAME, RL_LOG_INFO, RL_LOG_KINDS };
+
+typedef struct {
+    rl_run_io io;
+    rl_recog *rec;
+    const rl_camera *calib;
+    const rl_map *map;
+    const rl_mount *mount;
+    const rl_offsets *offsets;  /* NULL: pinhole model */
+    rl_result *res;             /* caller's (large) */
+    /* settings, defaults from rl_run_init */
+    int timeout_ms;             /* a grab waits at most this long (500) */
+    int reopen_after_timeouts;  /* consecutive timeouts before reopening (3) */
+    uint64_t backoff_min_us;    /* first retry delay (100 ms), doubling ... */
+    uint64_t backoff_max_us;    /* ... up to this (2 s) */
+    uint64_t status_period_us;  /* status frames while the camera is down (200 ms) */
+    uint64_t log_interval_us;   /* rate limit of repeated log lines (5 s) */
+    /* state */
+    int cam_up, out_up, timeouts;
+    uint64_t cam_retry_at, cam_backoff, out_retry_at, out_backoff;
+    uint16_t seq;
+    uint64_t last_log[RL_LOG_KINDS];
+    long suppressed[RL_LOG_KINDS];
+    /* counters */
+    long frames, poses, statuses, camera_errors, camera_timeouts, serial_errors, dropped;
+    long local_used;
+} rl_runner;
+
+void rl_run_init(rl_runner *r, const rl_run_io *io, rl_recog *rec, const rl_camera *calib,
+                 const rl_map *map, const rl_mount *mount, rl_result *res);
+
+/* One step. RL_OK to go on; RL_ENOTFOUND when the camera has no more
+ * frames (a PNG sequence at its end). */
+RL_CHECK rl_err rl_run_step(rl_runner *r);
+
+/* Close what is open. */
+void rl_run_close(rl_runner *r);
+
+#endif

@@ -1,0 +1,123 @@
+#include "rl_runcfg.h"
+
+#include <stdio.h>
+#include <string.h>
+#include "rl_serial.h"
+#include "rl_yaml.h"
+
+/* `value` relative to the folder of `base` unless absolute (or "-"). */
+static void relative(char *out, size_t len, const char *base, const char *value)
+{
+    const char *slash = strrchr(base, '/');
+    if (value[0] == '/' || strcmp(value, "-") == 0 || slash == NULL)
+        snprintf(out, len, "%s", value);
+    else
+        snprintf(out, len, "%.*s/%s", (int)(slash - base), base, value);
+}
+
+static rl_err path_key(rl_yaml *y, yaml_node_t *map, const char *key, const char *label,
+                       int required, const char *base, char *out, size_t len, char *err,
+                       size_t errlen)
+{
+    const char *v = NULL;
+    rl_err e = rl_yaml_string(y, map, key, label, required, &v, err, errlen);
+    if (e == RL_OK && v != NULL)
+        relative(out, len, base, v);
+    return e;
+}
+
+rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
+{
+    rl_yaml y;
+    yaml_node_t *root, *cam, *ser, *rec;
+    const char *s = NULL;
+    rl_err e;
+    memset(c, 0, sizeof *c);
+    rl_cam_defaults(&c->cam);
+    c->baud = 115200;
+    c->local = RL_LOCAL_AUTO;
+    c->min_score = 0.80;
+    c->log_interval = 5.0;
+    snprintf(c->cam_backend, sizeof c->cam_backend, "png");
+    if ((e = rl_yaml_load(&y, path, err, errlen)) != RL_OK)
+        return e;
+    root = rl_yaml_root(&y);
+    cam = rl_yaml_get(&y, root, "camera");
+    ser = rl_yaml_get(&y, root, "serial");
+    rec = rl_yaml_get(&y, root, "recognition");
+    if (cam == NULL || cam->type != YAML_MAPPING_NODE) {
+        e = rl_yaml_fail(&y, cam ? cam : root, "camera", RL_EFORMAT, err, errlen,
+                         cam ? "expected {backend, device, width, height, rate}" : "missing key");
+        goto out;
+    }
+    if (ser == NULL || ser->type != YAML_MAPPING_NODE) {
+        e = rl_yaml_fail(&y, ser ? ser : root, "serial", RL_EFORMAT, err, errlen,
+                         ser ? "expected {device, baud}" : "missing key");
+        goto out;
+    }
+    if ((e = rl_yaml_string(&y, cam, "backend", "camera.backend", 1, &s, err, errlen)) != RL_OK)
+        goto out;
+    if (strcmp(s, "png") != 0 && strcmp(s, "v4l2") != 0 && strcmp(s, "libcamera") != 0) {
+        e = rl_yaml_fail(&y, rl_yaml_get(&y, cam, "backend"), "camera.backend", RL_EFORMAT, err,
+                         errlen, "'%s' is not png, v4l2 or libcamera", s);
+        goto out;
+    }
+    snprintf(c->cam_backend, sizeof c->cam_backend, "%s", s);
+    s = NULL;
+    if ((e = rl_yaml_string(&y, cam, "device", "camera.device", 1, &s, err, errlen)) != RL_OK)
+        goto out;
+    if (strcmp(c->cam_backend, "png") == 0)
+        relative(c->cam_device, sizeof c->cam_device, path, s);
+    else
+        snprintf(c->cam_device, sizeof c->cam_device, "%s", s);
+    if ((e = rl_yaml_int(&y, cam, "width", "camera.width", 0, &c->cam.width, err, errlen)) != RL_OK ||
+        (e = rl_yaml_int(&y, cam, "height", "camera.height", 0, &c->cam.height, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double(&y, cam, "rate", "camera.rate", 0, &c->cam.rate, err, errlen)) != RL_OK)
+        goto out;
+    if (c->cam.width < 0 || c->cam.height < 0 || c->cam.rate < 0 || c->cam.rate > 1000) {
+        e = rl_yaml_fail(&y, cam, "camera", RL_ERANGE, err, errlen,
+                         "width, height must be >= 0 and rate 0 .. 1000");
+        goto out;
+    }
+    if ((e = path_key(&y, root, "calibration", NULL, 1, path, c->calibration, sizeof c->calibration, err, errlen)) != RL_OK ||
+        (e = path_key(&y, root, "map", NULL, 1, path, c->map, sizeof c->map, err, errlen)) != RL_OK ||
+        (e = path_key(&y, root, "robot", NULL, 1, path, c->robot, sizeof c->robot, err, errlen)) != RL_OK ||
+        (e = path_key(&y, root, "offsets", NULL, 0, path, c->offsets, sizeof c->offsets, err, errlen)) != RL_OK ||
+        (e = path_key(&y, ser, "device", "serial.device", 1, path, c->serial, sizeof c->serial, err, errlen)) != RL_OK ||
+        (e = rl_yaml_int(&y, ser, "baud", "serial.baud", 0, &c->baud, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double(&y, root, "log_interval", NULL, 0, &c->log_interval, err, errlen)) != RL_OK)
+        goto out;
+    /* device paths like /dev/serial0 are absolute; relative ones are files */
+    if (!rl_serial_baud_ok(c->baud)) {
+        e = rl_yaml_fail(&y, rl_yaml_get(&y, ser, "baud"), "serial.baud", RL_ERANGE, err, errlen,
+                         "%d is not a supported baud rate (9600 .. 921600)", c->baud);
+        goto out;
+    }
+    if (rec != NULL) {
+        s = NULL;
+        if ((e = rl_yaml_string(&y, rec, "local", "recognition.local", 0, &s, err, errlen)) != RL_OK)
+            goto out;
+        if (s != NULL) {
+            if (strcmp(s, "auto") == 0) c->local = RL_LOCAL_AUTO;
+            else if (strcmp(s, "always") == 0) c->local = RL_LOCAL_ALWAYS;
+            else if (strcmp(s, "never") == 0) c->local = RL_LOCAL_NEVER;
+            else {
+                e = rl_yaml_fail(&y, rl_yaml_get(&y, rec, "local"), "recognition.local", RL_EFORMAT,
+                                 err, errlen, "'%s' is not auto, always or never", s);
+                goto out;
+            }
+        }
+        if ((e = rl_yaml_double(&y, rec, "min_score", "recognition.min_score", 0, &c->min_score, err, errlen)) != RL_OK)
+            goto out;
+        if (!(c->min_score > 0 && c->min_score <= 1)) {
+            e = rl_yaml_fail(&y, rl_yaml_get(&y, rec, "min_score"), "recognition.min_score",
+                             RL_ERANGE, err, errlen, "must be in (0, 1]");
+            goto out;
+        }
+    }
+    c->cam.backend = c->cam_backend;
+    c->cam.device = c->cam_device;
+out:
+    rl_yaml_free(&y);
+    return e;
+}

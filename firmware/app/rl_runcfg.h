@@ -1,0 +1,43 @@
+/* rl_runcfg: ringloc.yaml, the one configuration of `ringloc run`.
+ *
+ *   camera:
+ *     backend: v4l2          # png | v4l2 | libcamera
+ *     device: /dev/video0    # png: a directory or a list file of PNGs
+ *     width: 640
+ *     height: 480
+ *     rate: 10               # frames per second
+ *   calibration: camera.yaml # ROS camera_info or OpenCV YAML
+ *   map: map.yaml
+ *   robot: robot.yaml
+ *   offsets: offsets.yaml    # optional: the paper's offset maps instead of the pinhole model
+ *   serial:
+ *     device: /dev/serial0   # a tty, a pty, a file, or "-" for standard output
+ *     baud: 115200
+ *   recognition:
+ *     local: auto            # auto | always | never
+ *     min_score: 0.80
+ *   log_interval: 5          # seconds between repeats of one kind of log line
+ *
+ * Relative paths are relative to the configuration file's folder.
+ */
+#ifndef RL_RUNCFG_H
+#define RL_RUNCFG_H
+
+#include <stddef.h>
+#include "rl_cam.h"
+#include "rl_recog.h"
+
+typedef struct {
+    rl_cam_config cam;
+    char cam_backend[32], cam_device[512];
+    char calibration[512], map[512], robot[512], offsets[512];
+    char serial[512];
+    int baud;
+    rl_local_policy local;
+    double min_score;
+    double log_interval;
+} rl_runcfg;
+
+RL_CHECK rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen);
+
+#endif

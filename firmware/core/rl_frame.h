@@ -1,0 +1,81 @@
+/* rl_frame: pose and status frames on the wire, in ARCOS framing.
+ *
+ * The framing of the Pioneer's own packets, so an ARIA-based controller
+ * can parse them with its packet receiver:
+ *   0xFA 0xFB, count N (bytes after it: payload + 2 checksum bytes),
+ *   payload, checksum (16-bit sum of big-endian byte pairs from the
+ *   payload start, a leftover odd byte XORed in, sent high byte first).
+ * Payload integers are little-endian.
+ *
+ * Pose, 24-byte payload:  u8 0x50, u8 version 1, u16 seq, u32 time (ms,
+ *   monotonic capture time), i32 x (mm), i32 y (mm), i16 yaw (1e-4 rad),
+ *   u8 landmarks used, u8 flags (bit 0: local pass used), u16 residual
+ *   (0.1 mm), u16 latency capture -> send (0.1 ms).
+ * Status, 12-byte payload: u8 0x53, u8 version 1, u16 seq, u32 time,
+ *   u8 reason (rl_status_reason), u8 landmarks identified, u8 candidates,
+ *   u8 0.
+ *
+ *   uint8_t buf[RL_FRAME_MAX];
+ *   size_t n = rl_frame_pose(&pose_msg, buf);      // bytes to send
+ *   rl_decoder d; rl_decoder_init(&d);
+ *   for each byte b: if (rl_decoder_push(&d, b, &msg)) use(&msg);
+ */
+#ifndef RL_FRAME_H
+#define RL_FRAME_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define RL_FRAME_POSE 0x50
+#define RL_FRAME_STATUS 0x53
+#define RL_FRAME_VERSION 1
+#define RL_POSE_PAYLOAD 24
+#define RL_STATUS_PAYLOAD 12
+/* Largest frame: header 2 + count 1 + payload 24 + checksum 2. */
+#define RL_FRAME_MAX 29
+
+typedef enum {
+    RL_STATUS_TOO_FEW = 1,       /* fewer landmarks than a pose needs */
+    RL_STATUS_CAMERA_ERROR = 2,  /* the camera failed; reopening */
+    RL_STATUS_CAMERA_TIMEOUT = 3,/* no frame in time */
+    RL_STATUS_CONFIG_ERROR = 4   /* the configuration cannot give a pose */
+} rl_status_reason;
+
+typedef struct {
+    int type;           /* RL_FRAME_POSE or RL_FRAME_STATUS */
+    uint16_t seq;
+    uint32_t time_ms;
+    /* pose */
+    int32_t x_mm, y_mm;
+    int16_t yaw_e4;     /* 1e-4 rad */
+    uint8_t used;
+    uint8_t flags;      /* bit 0: local pass used */
+    uint16_t residual_e4; /* 0.1 mm */
+    uint16_t latency_e4;  /* 0.1 ms */
+    /* status */
+    uint8_t reason;
+    uint8_t identified;
+    uint8_t candidates;
+} rl_msg;
+
+/* ARCOS checksum of n bytes. */
+uint16_t rl_frame_checksum(const uint8_t *p, size_t n);
+
+/* Encode a message into buf (RL_FRAME_MAX bytes); returns the frame's
+ * length. Values out of a field's range are clamped. */
+size_t rl_frame_encode(const rl_msg *m, uint8_t *buf);
+
+/* A byte-at-a-time decoder that never allocates and resynchronises after
+ * garbage, a wrong count, an unknown type or a bad checksum. */
+typedef struct {
+    uint8_t buf[RL_FRAME_MAX];
+    size_t len;       /* bytes held */
+    unsigned long bad;/* frames rejected (checksum, count, type) */
+} rl_decoder;
+
+void rl_decoder_init(rl_decoder *d);
+
+/* Feed one byte; 1 when it completes a valid frame (decoded into *m). */
+int rl_decoder_push(rl_decoder *d, uint8_t byte, rl_msg *m);
+
+#endif

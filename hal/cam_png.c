@@ -1,0 +1,160 @@
+/* PNG-sequence camera: a directory of PNGs (sorted by name) or a text file
+ * listing one PNG per line, played at a rate. Every frame is decoded at
+ * open, so grabbing never allocates or touches the disk. */
+#include <dirent.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include "rl_cam.h"
+#include "rl_png.h"
+
+typedef struct {
+    rl_image *frames;
+    int n;
+    long next;
+    uint64_t t0, period_us;
+    int loop;
+} png_state;
+
+static int cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+static void png_close(rl_cam *c)
+{
+    png_state *s = (png_state *)c->state;
+    int i;
+    if (s == NULL)
+        return;
+    for (i = 0; i < s->n; i++)
+        rl_png_free(&s->frames[i]);
+    free(s->frames);
+    free(s);
+}
+
+static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
+{
+    png_state *s = (png_state *)c->state;
+    uint64_t due, now;
+    if (s->next >= s->n && !s->loop)
+        return RL_ENOTFOUND;
+    /* pace to the rate: frame k is due at t0 + k * period */
+    due = s->t0 + (uint64_t)s->next * s->period_us;
+    now = rl_cam_now_us();
+    if (due > now) {
+        uint64_t wait = due - now;
+        struct timespec ts;
+        if (timeout_ms >= 0 && wait > (uint64_t)timeout_ms * 1000u) {
+            ts.tv_sec = timeout_ms / 1000;
+            ts.tv_nsec = (long)(timeout_ms % 1000) * 1000000L;
+            nanosleep(&ts, NULL);
+            return RL_ETIMEOUT;
+        }
+        ts.tv_sec = (time_t)(wait / 1000000u);
+        ts.tv_nsec = (long)(wait % 1000000u) * 1000L;
+        nanosleep(&ts, NULL);
+    }
+    f->index = s->next;
+    f->slot = (int)(s->next % s->n);
+    f->img = s->frames[f->slot];
+    f->t_us = rl_cam_now_us();
+    s->next++;
+    return RL_OK;
+}
+
+static void png_release(rl_cam *c, rl_cam_frame *f)
+{
+    (void)c;
+    (void)f;
+}
+
+static const rl_cam_ops png_ops = {png_grab, png_release, png_close};
+
+rl_err rl_cam_open_png(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen)
+{
+    char **names = NULL, line[1024];
+    int n = 0, cap = 0, i;
+    struct stat st;
+    png_state *s;
+    rl_err e = RL_OK;
+    const char *dev = cc->device;
+    if (dev == NULL || stat(dev, &st) != 0) {
+        snprintf(err, errlen, "%s: %s", dev ? dev : "(none)", dev ? strerror(errno) : "no PNG directory or list given");
+        return RL_ENOTFOUND;
+    }
+    if (S_ISDIR(st.st_mode)) {
+        DIR *d = opendir(dev);
+        struct dirent *ent;
+        while (d && (ent = readdir(d)) != NULL) {
+            size_t len = strlen(ent->d_name);
+            if (len < 5 || strcmp(ent->d_name + len - 4, ".png") != 0)
+                continue;
+            if (n == cap) {
+                cap = cap ? 2 * cap : 64;
+                names = realloc(names, sizeof *names * (size_t)cap);
+            }
+            names[n] = malloc(strlen(dev) + len + 2);
+            sprintf(names[n], "%s/%s", dev, ent->d_name);
+            n++;
+        }
+        if (d)
+            closedir(d);
+        qsort(names, (size_t)n, sizeof *names, cmp_str);
+    } else {
+        /* a list file: one PNG per line, relative to the list's folder */
+        FILE *f = fopen(dev, "r");
+        const char *slash = strrchr(dev, '/');
+        int dirlen = slash ? (int)(slash - dev + 1) : 0;
+        while (f && fgets(line, sizeof line, f)) {
+            line[strcspn(line, "\r\n")] = '\0';
+            if (line[0] == '\0' || line[0] == '#')
+                continue;
+            if (n == cap) {
+                cap = cap ? 2 * cap : 64;
+                names = realloc(names, sizeof *names * (size_t)cap);
+            }
+            names[n] = malloc((size_t)dirlen + strlen(line) + 1);
+            if (line[0] == '/')
+                strcpy(names[n], line);
+            else
+                sprintf(names[n], "%.*s%s", dirlen, dev, line);
+            n++;
+        }
+        if (f)
+            fclose(f);
+    }
+    if (n == 0) {
+        snprintf(err, errlen, "%s: no PNG frames", dev);
+        free(names);
+        return RL_ENOTFOUND;
+    }
+    s = calloc(1, sizeof *s);
+    s->frames = calloc((size_t)n, sizeof *s->frames);
+    for (i = 0; i < n; i++) {
+        if (e == RL_OK && (e = rl_png_read_gray(names[i], &s->frames[i], err, errlen)) == RL_OK) {
+            s->n++;
+            if ((cc->width && s->frames[i].width != cc->width) ||
+                (cc->height && s->frames[i].height != cc->height)) {
+                snprintf(err, errlen, "%s: frame is %dx%d, the camera is configured for %dx%d",
+                         names[i], s->frames[i].width, s->frames[i].height, cc->width, cc->height);
+                e = RL_EINVAL;
+            }
+        }
+        free(names[i]);
+    }
+    free(names);
+    c->state = s;
+    c->ops = &png_ops;
+    if (e != RL_OK) {
+        rl_cam_close(c);
+        return e;
+    }
+    s->loop = cc->loop;
+    s->period_us = cc->rate > 0 ? (uint64_t)(1e6 / cc->rate) : 0;
+    s->t0 = rl_cam_now_us();
+    return RL_OK;
+}

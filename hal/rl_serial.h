@@ -1,0 +1,35 @@
+/* rl_serial: where a pose leaves: a serial line (POSIX termios, raw 8N1),
+ * or, on the host, a file or standard output ("-"). A pseudo-terminal
+ * works as a serial device.
+ *
+ *   rl_serial s;
+ *   if (rl_serial_open(&s, "/dev/serial0", 115200, err, sizeof err) == RL_OK)
+ *       rl_serial_write(&s, buf, n);   // RL_ENODEV: the line went away, reopen
+ */
+#ifndef RL_SERIAL_H
+#define RL_SERIAL_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "rl_error.h"
+
+typedef struct {
+    int fd;
+    int is_tty;
+    int own;          /* fd is ours to close (not stdout) */
+    char path[256];
+} rl_serial;
+
+/* Baud rates accepted: 9600 .. 921600 (the termios ones). */
+int rl_serial_baud_ok(int baud);
+
+RL_CHECK rl_err rl_serial_open(rl_serial *s, const char *path, int baud, char *err, size_t errlen);
+
+/* Write all n bytes (waiting at most timeout_ms for a congested line).
+ * RL_ENODEV when the device went away, RL_ETIMEOUT when it would not take
+ * the bytes, RL_EIO otherwise. */
+RL_CHECK rl_err rl_serial_write(rl_serial *s, const uint8_t *p, size_t n, int timeout_ms);
+
+void rl_serial_close(rl_serial *s);
+
+#endif

@@ -1,0 +1,121 @@
+#include "rl_serial.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <poll.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <termios.h>
+#include <unistd.h>
+
+static speed_t speed_of(int baud)
+{
+    switch (baud) {
+    case 9600: return B9600;
+    case 19200: return B19200;
+    case 38400: return B38400;
+    case 57600: return B57600;
+    case 115200: return B115200;
+    case 230400: return B230400;
+    case 460800: return B460800;
+    case 921600: return B921600;
+    }
+    return 0;
+}
+
+int rl_serial_baud_ok(int baud)
+{
+    return speed_of(baud) != 0;
+}
+
+rl_err rl_serial_open(rl_serial *s, const char *path, int baud, char *err, size_t errlen)
+{
+    struct stat st;
+    memset(s, 0, sizeof *s);
+    s->fd = -1;
+    snprintf(s->path, sizeof s->path, "%s", path);
+    if (!rl_serial_baud_ok(baud)) {
+        snprintf(err, errlen, "%s: %d is not a supported baud rate (9600 .. 921600)", path, baud);
+        return RL_EINVAL;
+    }
+    if (strcmp(path, "-") == 0) {
+        s->fd = STDOUT_FILENO;
+        return RL_OK;
+    }
+    if (stat(path, &st) == 0 && S_ISCHR(st.st_mode)) {
+        struct termios t;
+        s->fd = open(path, O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+        if (s->fd < 0) {
+            snprintf(err, errlen, "%s: %s", path, strerror(errno));
+            return errno == ENOENT ? RL_ENOTFOUND : RL_ENODEV;
+        }
+        s->own = 1;
+        if (tcgetattr(s->fd, &t) == 0) {
+            /* raw 8N1 */
+            t.c_iflag &= ~(tcflag_t)(IGNBRK | BRKINT | PARMRK | ISTRIP | INLCR | IGNCR | ICRNL | IXON);
+            t.c_oflag &= ~(tcflag_t)OPOST;
+            t.c_lflag &= ~(tcflag_t)(ECHO | ECHONL | ICANON | ISIG | IEXTEN);
+            t.c_cflag &= ~(tcflag_t)(CSIZE | PARENB | CSTOPB);
+            t.c_cflag |= CS8 | CLOCAL | CREAD;
+            t.c_cc[VMIN] = 0;
+            t.c_cc[VTIME] = 0;
+            cfsetispeed(&t, speed_of(baud));
+            cfsetospeed(&t, speed_of(baud));
+            if (tcsetattr(s->fd, TCSANOW, &t) != 0) {
+                snprintf(err, errlen, "%s: cannot set 8N1 at %d baud: %s", path, baud, strerror(errno));
+                rl_serial_close(s);
+                return RL_EIO;
+            }
+            s->is_tty = 1;
+        }
+        return RL_OK;
+    }
+    /* a plain file: the frames are recorded (append) */
+    s->fd = open(path, O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+    if (s->fd < 0) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        return RL_ENOTFOUND;
+    }
+    s->own = 1;
+    return RL_OK;
+}
+
+rl_err rl_serial_write(rl_serial *s, const uint8_t *p, size_t n, int timeout_ms)
+{
+    size_t done = 0;
+    if (s->fd < 0)
+        return RL_ENODEV;
+    while (done < n) {
+        ssize_t w = write(s->fd, p + done, n - done);
+        if (w > 0) {
+            done += (size_t)w;
+            continue;
+        }
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+            struct pollfd q;
+            q.fd = s->fd;
+            q.events = POLLOUT;
+            q.revents = 0;
+            if (poll(&q, 1, timeout_ms) <= 0)
+                return RL_ETIMEOUT;
+            if (q.revents & (POLLERR | POLLHUP | POLLNVAL))
+                return RL_ENODEV;
+            continue;
+        }
+        return w < 0 && (errno == EIO || errno == ENXIO || errno == ENODEV || errno == EBADF ||
+                         errno == EPIPE)
+                   ? RL_ENODEV
+                   : RL_EIO;
+    }
+    return RL_OK;
+}
+
+void rl_serial_close(rl_serial *s)
+{
+    if (s->fd >= 0 && s->own)
+        close(s->fd);
+    s->fd = -1;
+}

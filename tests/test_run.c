@@ -1,0 +1,307 @@
+/* The firmware loop under fault injection: a mock camera that fails,
+ * times out and comes back, a mock serial line that fails, a fake clock.
+ * Every frame the loop sends is decoded and checked: poses against the
+ * renderer's truth, status frames for what happened. Heap allocations are
+ * counted (the test is linked with --wrap=malloc) and must be zero once
+ * the loop runs. */
+#include "rl_test.h"
+#include <math.h>
+#include "fixture_eval.h"
+#include "rl_camfile.h"
+#include "rl_png.h"
+#include "rl_run.h"
+
+/* ---- counting allocations ---- */
+void *__real_malloc(size_t n);
+void *__wrap_malloc(size_t n);
+void *__real_calloc(size_t a, size_t b);
+void *__wrap_calloc(size_t a, size_t b);
+void *__real_realloc(void *p, size_t n);
+void *__wrap_realloc(void *p, size_t n);
+static long allocations;
+void *__wrap_malloc(size_t n) { allocations++; return __real_malloc(n); }
+void *__wrap_calloc(size_t a, size_t b) { allocations++; return __real_calloc(a, b); }
+void *__wrap_realloc(void *p, size_t n) { allocations++; return __real_realloc(p, n); }
+
+/* ---- a scripted camera ---- */
+enum { OK, FAIL_OPEN, GRAB_EIO, GRAB_TIMEOUT, WRONG_SIZE, END };
+typedef struct {
+    const int *script; /* what each grab (or open) does */
+    int pos, opens, closes, is_open;
+    rl_image img, small;
+} mock_cam;
+
+static rl_err cam_open(void *ctx, char *err, size_t errlen)
+{
+    mock_cam *c = ctx;
+    if (c->script[c->pos] == FAIL_OPEN) {
+        c->pos++;
+        snprintf(err, errlen, "/dev/video9: no such device");
+        return RL_ENODEV;
+    }
+    c->opens++;
+    c->is_open = 1;
+    return RL_OK;
+}
+static rl_err cam_grab(void *ctx, int timeout_ms, rl_cam_frame *f)
+{
+    mock_cam *c = ctx;
+    int what = c->script[c->pos];
+    (void)timeout_ms;
+    assert_true(c->is_open);
+    if (what == END)
+        return RL_ENOTFOUND;
+    c->pos++;
+    if (what == GRAB_EIO)
+        return RL_EIO;
+    if (what == GRAB_TIMEOUT)
+        return RL_ETIMEOUT;
+    f->img = what == WRONG_SIZE ? c->small : c->img;
+    f->t_us = 1000000u + (uint64_t)c->pos * 100000u;
+    f->index = c->pos;
+    f->slot = 0;
+    return RL_OK;
+}
+static void cam_release(void *ctx, rl_cam_frame *f) { (void)ctx; (void)f; }
+static void cam_close(void *ctx) { mock_cam *c = ctx; c->closes++; c->is_open = 0; }
+
+/* ---- a serial line that decodes what it is given ---- */
+typedef struct {
+    rl_decoder d;
+    rl_msg msgs[4096];
+    int n, fail_writes, opens;
+} mock_out;
+static rl_err out_open(void *ctx, char *err, size_t errlen) { (void)err; (void)errlen; ((mock_out *)ctx)->opens++; return RL_OK; }
+static rl_err out_write(void *ctx, const uint8_t *p, size_t n)
+{
+    mock_out *o = ctx;
+    size_t i;
+    if (o->fail_writes > 0) {
+        o->fail_writes--;
+        return RL_ENODEV;
+    }
+    for (i = 0; i < n; i++)
+        if (rl_decoder_push(&o->d, p[i], &o->msgs[o->n]) && o->n < 4095)
+            o->n++;
+    return RL_OK;
+}
+static void out_close(void *ctx) { (void)ctx; }
+
+static uint64_t fake_now;
+static uint64_t now_us(void *ctx) { (void)ctx; return fake_now += 1000; }
+static void sleep_us(void *ctx, uint64_t us) { (void)ctx; fake_now += us; }
+static int log_lines;
+static void log_line(void *ctx, const char *l) { (void)ctx; (void)l; log_lines++; }
+
+/* ---- the scene: a golden fixture and a map made from its truth ---- */
+static truth tr;
+static rl_camera calib;
+static rl_map map;
+static rl_mount mount;
+static rl_recog rec;
+static rl_result res;
+static void *mem;
+static mock_cam cam;
+static mock_out out;
+static rl_runner runner;
+static uint8_t small_px[64 * 48];
+
+static int setup(void **state)
+{
+    char path[1024], err[512];
+    const char *src = getenv("RL_SOURCE_DIR");
+    rl_recog_config cfg;
+    size_t need;
+    int i;
+    (void)state;
+    snprintf(path, sizeof path, "%s/tests/fixtures/clean_000.yaml", src);
+    assert_int_equal(truth_load(path, &tr), 0);
+    snprintf(path, sizeof path, "%s/tests/fixtures/camera.yaml", src);
+    if (rl_camfile_load(path, &calib, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    snprintf(path, sizeof path, "%s/tests/fixtures/clean_000.png", src);
+    if (rl_png_read_gray(path, &cam.img, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    cam.small = rl_image_view(64, 48, 64, small_px);
+    memset(&map, 0, sizeof map);
+    map.family.bits = 5;
+    map.diameter = 0.21;
+    map.ceiling_height = 2.75;
+    for (i = 0; i < tr.n; i++) {
+        map.lm[i].id = tr.lm[i].id;
+        map.lm[i].x = tr.lm[i].x;
+        map.lm[i].y = tr.lm[i].y;
+    }
+    map.count = tr.n;
+    rl_mount_defaults(&mount, 2.75 - 1.87);
+    rl_recog_defaults(&cfg);
+    need = rl_recog_workspace_size(calib.width, calib.height, &cfg);
+    mem = malloc(need);
+    assert_int_equal(rl_recog_init(&rec, &cfg, calib.width, calib.height, mem, need), RL_OK);
+    return 0;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    rl_png_free(&cam.img);
+    free(mem);
+    return 0;
+}
+
+static void start(const int *script)
+{
+    rl_run_io io;
+    memset(&io, 0, sizeof io);
+    io.cam_open = cam_open; io.cam_grab = cam_grab; io.cam_release = cam_release; io.cam_close = cam_close;
+    io.cam_ctx = &cam;
+    io.out_open = out_open; io.out_write = out_write; io.out_close = out_close; io.out_ctx = &out;
+    io.now_us = now_us; io.sleep_us = sleep_us; io.log = log_line;
+    cam.script = script;
+    cam.pos = cam.opens = cam.closes = cam.is_open = 0;
+    memset(&out, 0, sizeof out);
+    rl_decoder_init(&out.d);
+    rl_run_init(&runner, &io, &rec, &calib, &map, &mount, &res);
+}
+
+static void run_to_end(void)
+{
+    int guard = 0;
+    while (rl_run_step(&runner) != RL_ENOTFOUND)
+        assert_true(++guard < 3000);
+}
+
+static void assert_pose_right(const rl_msg *m)
+{
+    assert_int_equal(m->type, RL_FRAME_POSE);
+    if (hypot(m->x_mm / 1000.0 - tr.robot_x, m->y_mm / 1000.0 - tr.robot_y) > 0.005)
+        fail_msg("pose (%d, %d) mm, truth (%.0f, %.0f) mm", m->x_mm, m->y_mm, tr.robot_x * 1000, tr.robot_y * 1000);
+    assert_true(fabs(remainder(m->yaw_e4 / 1e4 - tr.robot_yaw, 2 * M_PI)) < 0.005);
+    assert_true(m->used >= 2);
+}
+
+static void test_frames_become_poses_without_allocating(void **state)
+{
+    static const int script[] = {OK, OK, OK, OK, OK, END};
+    long before;
+    int i;
+    (void)state;
+    start(script);
+    assert_int_equal(rl_run_step(&runner), RL_OK); /* opens the camera */
+    before = allocations;
+    assert_true(before > 0); /* the counter works: setup's malloc was seen */
+    run_to_end();
+    assert_int_equal(allocations - before, 0);
+    assert_int_equal(out.n, 5);
+    for (i = 0; i < 5; i++) {
+        assert_pose_right(&out.msgs[i]);
+        assert_int_equal(out.msgs[i].seq, i);
+        assert_int_equal(out.msgs[i].time_ms, (1000000u + (uint32_t)(i + 1) * 100000u) / 1000u);
+    }
+}
+
+static void test_camera_fails_then_comes_back(void **state)
+{
+    static const int script[] = {FAIL_OPEN, FAIL_OPEN, OK, GRAB_EIO, OK, OK, END};
+    int i, camera_errors = 0, poses = 0;
+    (void)state;
+    start(script);
+    run_to_end();
+    for (i = 0; i < out.n; i++) {
+        if (out.msgs[i].type == RL_FRAME_STATUS) {
+            assert_int_equal(out.msgs[i].reason, RL_STATUS_CAMERA_ERROR);
+            camera_errors++;
+        } else {
+            assert_pose_right(&out.msgs[i]);
+            poses++;
+        }
+        assert_int_equal(out.msgs[i].seq, i); /* one counter across both */
+    }
+    assert_int_equal(poses, 3);
+    assert_true(camera_errors >= 3);   /* two failed opens and a failed grab */
+    assert_int_equal(cam.opens, 2);    /* opened, failed, reopened */
+    assert_true(runner.cam_backoff > runner.backoff_min_us || cam.opens == 2);
+}
+
+static void test_timeouts_reopen_the_camera(void **state)
+{
+    static const int script[] = {OK, GRAB_TIMEOUT, GRAB_TIMEOUT, GRAB_TIMEOUT, OK, GRAB_TIMEOUT, OK, END};
+    int i, timeouts = 0, poses = 0;
+    (void)state;
+    start(script);
+    run_to_end();
+    for (i = 0; i < out.n; i++) {
+        if (out.msgs[i].type == RL_FRAME_STATUS) {
+            assert_int_equal(out.msgs[i].reason, RL_STATUS_CAMERA_TIMEOUT);
+            timeouts++;
+        } else {
+            poses++;
+        }
+    }
+    assert_int_equal(timeouts, 4);
+    assert_int_equal(poses, 3);
+    assert_int_equal(cam.opens, 2); /* three timeouts in a row: reopened once */
+    assert_int_equal(runner.camera_timeouts, 4);
+}
+
+static void test_serial_write_fails_and_recovers(void **state)
+{
+    static const int script[] = {OK, OK, OK, OK, OK, END};
+    int i;
+    (void)state;
+    start(script);
+    assert_int_equal(rl_run_step(&runner), RL_OK);
+    assert_int_equal(rl_run_step(&runner), RL_OK); /* frame 0 sent */
+    out.fail_writes = 1;
+    assert_int_equal(rl_run_step(&runner), RL_OK); /* frame 1 lost: line reopened later */
+    fake_now += 10 * runner.backoff_max_us;
+    run_to_end();
+    assert_int_equal(runner.serial_errors, 1);
+    assert_int_equal(out.opens, 2);
+    assert_int_equal(out.n, 4);
+    assert_int_equal(out.msgs[0].seq, 0);
+    assert_int_equal(out.msgs[1].seq, 2); /* the gap says a frame was lost */
+    for (i = 0; i < out.n; i++)
+        assert_pose_right(&out.msgs[i]);
+}
+
+static void test_bad_frame_does_not_stop_the_loop(void **state)
+{
+    static const int script[] = {OK, WRONG_SIZE, OK, END};
+    (void)state;
+    start(script);
+    run_to_end();
+    assert_int_equal(out.n, 3);
+    assert_pose_right(&out.msgs[0]);
+    assert_int_equal(out.msgs[1].type, RL_FRAME_STATUS);
+    assert_int_equal(out.msgs[1].reason, RL_STATUS_CONFIG_ERROR);
+    assert_pose_right(&out.msgs[2]);
+}
+
+static void test_logs_are_rate_limited(void **state)
+{
+    static int script[64];
+    int i;
+    (void)state;
+    for (i = 0; i < 40; i++)
+        script[i] = FAIL_OPEN;
+    script[40] = OK;
+    script[41] = END;
+    log_lines = 0;
+    start(script);
+    run_to_end();
+    /* 40 failed opens within a few simulated seconds: a handful of lines */
+    assert_true(runner.camera_errors == 40);
+    assert_true(log_lines < 40 / 2);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_frames_become_poses_without_allocating),
+        cmocka_unit_test(test_camera_fails_then_comes_back),
+        cmocka_unit_test(test_timeouts_reopen_the_camera),
+        cmocka_unit_test(test_serial_write_fails_and_recovers),
+        cmocka_unit_test(test_bad_frame_does_not_stop_the_loop),
+        cmocka_unit_test(test_logs_are_rate_limited),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
