@@ -4,6 +4,7 @@
 #   make host            build the host binaries into build/
 #   make host-test       build and run every test (CTest)
 #   make host-test-asan  the same tests under AddressSanitizer + UBSan (build-asan/)
+#   make demo            the firmware on a bundled drive: poses over a pty, report
 #   make bench           recognition benchmarks (figures, not pass/fail)
 #   make clean
 
@@ -12,7 +13,7 @@ BUILD_ASAN ?= build-asan
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 
-.PHONY: all deps host host-test host-test-asan bench clean
+.PHONY: all deps host host-test host-test-asan bench demo clean
 
 # Benchmark frames: rendered once per size (AprilTag twins included).
 BENCH_FRAMES ?= 20
@@ -38,6 +39,9 @@ $(BUILD_ASAN)/CMakeCache.txt: | deps
 host-test-asan: deps $(BUILD_ASAN)/CMakeCache.txt
 	cmake --build $(BUILD_ASAN) -j $(JOBS)
 	cd $(BUILD_ASAN) && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp ctest --output-on-failure -j $(JOBS)
+
+demo: host
+	sh tools/demo.sh
 
 bench: host
 	@for size in 640x480 1280x960; do \
