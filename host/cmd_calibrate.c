@@ -78,11 +78,7 @@ int rl_cmd_calibrate(int argc, char **argv)
     cx = px + cos(pyaw) * mount.x - sin(pyaw) * mount.y;
     cy = py + sin(pyaw) * mount.x + cos(pyaw) * mount.y;
     rl_recog_defaults(&cfg);
-    cfg.family = map.family;
-    for (i = 0; i < map.count; i++)
-        ids[i] = map.lm[i].id;
-    cfg.ids = ids;
-    cfg.n_ids = map.count;
+    rl_recog_use_map(&cfg, &map, ids);
     cfg.local = RL_LOCAL_ALWAYS;
     rl_host_recog_init(&hr, &cfg);
     for (i = optind; i < argc; i++) {

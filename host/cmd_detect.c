@@ -115,11 +115,7 @@ int rl_cmd_detect(int argc, char **argv)
                                map_path, map.family.bits);
         if (map.count == 0)
             return rl_cli_fail(C, RL_EXIT_FAIL, "%s: the map has no landmarks", map_path);
-        cfg.family = map.family;
-        for (i = 0; i < map.count; i++)
-            ids[i] = map.lm[i].id;
-        cfg.ids = ids;
-        cfg.n_ids = map.count;
+        rl_recog_use_map(&cfg, &map, ids);
     }
     rl_host_recog_init(&hr, &cfg);
     for (i = optind; i < argc; i++) {

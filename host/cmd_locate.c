@@ -86,11 +86,7 @@ int rl_cmd_locate(int argc, char **argv)
         return rl_cli_fail(C, RL_EXIT_FAIL,
                            "%s: camera_mount.z %.3f m is not below the ceiling (%s: ceiling_height %.3f m)",
                            robot_path, mount.z, map_path, map.ceiling_height);
-    cfg.family = map.family;
-    for (i = 0; i < map.count; i++)
-        ids[i] = map.lm[i].id;
-    cfg.ids = ids;
-    cfg.n_ids = map.count;
+    rl_recog_use_map(&cfg, &map, ids);
     rl_host_recog_init(&hr, &cfg);
     for (i = optind; i < argc; i++) {
         rl_image img;

@@ -118,7 +118,7 @@ int rl_cmd_run(int argc, char **argv)
     void *mem;
     size_t need;
     long max_frames = 0;
-    int c, i, ids[RL_MAX_MAP_LANDMARKS];
+    int c, ids[RL_MAX_MAP_LANDMARKS];
     char err[768];
     rl_err e;
 
@@ -153,11 +153,7 @@ int rl_cmd_run(int argc, char **argv)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s: %s", cfg.map,
                            map.count == 0 ? "the map has no landmarks" : "the camera is not below the ceiling");
     rl_recog_defaults(&rc);
-    rc.family = map.family;
-    for (i = 0; i < map.count; i++)
-        ids[i] = map.lm[i].id;
-    rc.ids = ids;
-    rc.n_ids = map.count;
+    rl_recog_use_map(&rc, &map, ids);
     rc.local = cfg.local;
     rc.min_score = cfg.min_score;
     need = rl_recog_workspace_size(calib.width, calib.height, &rc);

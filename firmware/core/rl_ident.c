@@ -239,6 +239,20 @@ static void match_one(const rl_ident *id, const rl_profile *p, int i, double n, 
     }
 }
 
+/* Keep the best and the runner-up (of any other id). */
+static void keep_best(rl_match *m, int id, double r, double gain, int blur)
+{
+    if (r > m->score) {
+        m->second = m->score;
+        m->score = r;
+        m->id = id;
+        m->contrast = gain;
+        m->blur = blur;
+    } else if (r > m->second) {
+        m->second = r;
+    }
+}
+
 void rl_ident_match_ids(const rl_ident *id, const rl_profile *p, const int *ids, int n_ids,
                         rl_match *m)
 {
@@ -258,15 +272,7 @@ void rl_ident_match_ids(const rl_ident *id, const rl_profile *p, const int *ids,
                 double best, g;
                 int b;
                 match_one(id, p, i, n, sx, &best, &g, &b);
-                if (best > m->score) {
-                    m->second = m->score;
-                    m->score = best;
-                    m->id = id->ids[i];
-                    m->contrast = g;
-                    m->blur = b;
-                } else if (best > m->second) {
-                    m->second = best;
-                }
+                keep_best(m, id->ids[i], best, g, b);
             }
 }
 
@@ -286,15 +292,7 @@ void rl_ident_match(const rl_ident *id, const rl_profile *p, rl_match *m)
         double best, g;
         int b;
         match_one(id, p, i, n, sx, &best, &g, &b);
-        if (best > m->score) {
-            m->second = m->score;
-            m->score = best;
-            m->id = id->ids[i];
-            m->contrast = g;
-            m->blur = b;
-        } else if (best > m->second) {
-            m->second = best;
-        }
+        keep_best(m, id->ids[i], best, g, b);
     }
 }
 

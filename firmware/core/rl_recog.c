@@ -28,6 +28,16 @@ void rl_recog_defaults(rl_recog_config *cfg)
     cfg->min_contrast = 0.5;
 }
 
+void rl_recog_use_map(rl_recog_config *cfg, const rl_map *map, int *ids)
+{
+    int i;
+    cfg->family = map->family;
+    for (i = 0; i < map->count; i++)
+        ids[i] = map->lm[i].id;
+    cfg->ids = ids;
+    cfg->n_ids = map->count;
+}
+
 static int cap_runs(int w, int h)
 {
     long n = (long)w * h / RL_PIXELS_PER_RUN;
@@ -384,8 +394,6 @@ static void dedupe(rl_result *res)
 }
 
 
-/* ---- local pass ------------------------------------------------------- */
-
 /* Median radius of the identified landmarks (ICLRs), or 0. */
 static double iclr_radius(const rl_result *res)
 {
@@ -393,7 +401,7 @@ static double iclr_radius(const rl_result *res)
     int i, j, n = res->n_landmarks;
     if (n == 0)
         return 0.0;
-    for (i = 0; i < n; i++) {
+    for (i = 0; i < n; i++) { /* insertion sort: a few dozen at most */
         double v = res->landmarks[i].radius;
         for (j = i; j > 0 && r[j - 1] > v; j--)
             r[j] = r[j - 1];
@@ -401,6 +409,8 @@ static double iclr_radius(const rl_result *res)
     }
     return r[n / 2];
 }
+
+/* ---- local pass ------------------------------------------------------- */
 
 /* Least-squares circle (algebraic, Kasa) through accumulated normal
  * equations s: rows [x y 1] . (D E F) = -(x^2 + y^2). */
@@ -424,37 +434,44 @@ static void circle_add(circle_fit *f, double x, double y)
     f->n++;
 }
 
-static int circle_solve(circle_fit *f, double *cx, double *cy, double *r)
+/* Solve the 3 x 3 system A x = A[.][3] by Gaussian elimination with
+ * partial pivoting (A is destroyed); 0 if singular. */
+static int solve3(double A[3][4], double x[3])
 {
-    double a[3], s[3][4];
     int k, m, c;
-    memcpy(s, f->s, sizeof s);
-    if (f->n < 5)
-        return 0;
-    for (k = 0; k < 3; k++) { /* Gaussian elimination, partial pivoting */
+    for (k = 0; k < 3; k++) {
         int piv = k;
         for (m = k + 1; m < 3; m++)
-            if (fabs(s[m][k]) > fabs(s[piv][k]))
+            if (fabs(A[m][k]) > fabs(A[piv][k]))
                 piv = m;
-        if (fabs(s[piv][k]) < 1e-12)
+        if (fabs(A[piv][k]) < 1e-12)
             return 0;
         for (c = 0; c < 4; c++) {
-            double t = s[k][c];
-            s[k][c] = s[piv][c];
-            s[piv][c] = t;
+            double t = A[k][c];
+            A[k][c] = A[piv][c];
+            A[piv][c] = t;
         }
         for (m = k + 1; m < 3; m++) {
-            double q = s[m][k] / s[k][k];
+            double q = A[m][k] / A[k][k];
             for (c = k; c < 4; c++)
-                s[m][c] -= q * s[k][c];
+                A[m][c] -= q * A[k][c];
         }
     }
     for (k = 2; k >= 0; k--) {
-        double v = s[k][3];
+        double v = A[k][3];
         for (c = k + 1; c < 3; c++)
-            v -= s[k][c] * a[c];
-        a[k] = v / s[k][k];
+            v -= A[k][c] * x[c];
+        x[k] = v / A[k][k];
     }
+    return 1;
+}
+
+static int circle_solve(circle_fit *f, double *cx, double *cy, double *r)
+{
+    double a[3], s[3][4];
+    memcpy(s, f->s, sizeof s);
+    if (f->n < 5 || !solve3(s, a))
+        return 0;
     *cx = -a[0] / 2;
     *cy = -a[1] / 2;
     *r = *cx * *cx + *cy * *cy - a[2];
@@ -555,7 +572,7 @@ static int fit_edge_rays(const rl_image *img, int light, double *cx, double *cy,
         int it, i;
         for (it = 0; it < 8; it++) {
             double A[3][4] = {{0}}, step[3];
-            int k, m, c, used = 0;
+            int k, m, used = 0;
             for (i = 0; i < n; i++) {
                 double dx = ex[i] - ncx, dy = ey[i] - ncy, d = sqrt(dx * dx + dy * dy), J[3], res;
                 if (d < 1e-9 || fabs(d - nr) > 1.5)
@@ -573,32 +590,8 @@ static int fit_edge_rays(const rl_image *img, int light, double *cx, double *cy,
             }
             if (used < 6)
                 break;
-            for (k = 0; k < 3; k++) { /* solve A step = b */
-                int piv = k;
-                for (m = k + 1; m < 3; m++)
-                    if (fabs(A[m][k]) > fabs(A[piv][k]))
-                        piv = m;
-                if (fabs(A[piv][k]) < 1e-12)
-                    break;
-                for (c = 0; c < 4; c++) {
-                    double t = A[k][c];
-                    A[k][c] = A[piv][c];
-                    A[piv][c] = t;
-                }
-                for (m = k + 1; m < 3; m++) {
-                    double q = A[m][k] / A[k][k];
-                    for (c = k; c < 4; c++)
-                        A[m][c] -= q * A[k][c];
-                }
-            }
-            if (k < 3)
+            if (!solve3(A, step))
                 break;
-            for (k = 2; k >= 0; k--) {
-                double v = A[k][3];
-                for (c = k + 1; c < 3; c++)
-                    v -= A[k][c] * step[c];
-                step[k] = v / A[k][k];
-            }
             ncx += step[0];
             ncy += step[1];
             nr += step[2];
@@ -889,17 +882,11 @@ static void sort_dets(rl_detection *d, int n)
  * demoted to unidentified. */
 static void size_filter(rl_recog *rec, rl_result *res)
 {
-    double r[RL_MAX_LANDMARKS], med, t;
-    int i, j, n = res->n_landmarks, kept = 0;
+    double med, t;
+    int i, n = res->n_landmarks, kept = 0;
     if (n < 3)
         return;
-    for (i = 0; i < n; i++) {
-        double v = res->landmarks[i].radius;
-        for (j = i; j > 0 && r[j - 1] > v; j--)
-            r[j] = r[j - 1];
-        r[j] = v;
-    }
-    med = r[n / 2];
+    med = iclr_radius(res);
     t = rec->cfg.size_tolerance * med;
     for (i = 0; i < n; i++) {
         rl_detection *d = &res->landmarks[i];

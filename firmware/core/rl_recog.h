@@ -31,6 +31,7 @@
 #include "rl_ident.h"
 #include "rl_image.h"
 #include "rl_label.h"
+#include "rl_map.h"
 #include "rl_workspace.h"
 
 typedef enum {
@@ -101,6 +102,10 @@ typedef struct {
 
 /* Fill every field with its default (ring5, every id). */
 void rl_recog_defaults(rl_recog_config *cfg);
+
+/* Recognize the landmarks of a map only: family and ids from it. `ids`
+ * (RL_MAX_MAP_LANDMARKS) holds the ids until rl_recog_init copies them. */
+void rl_recog_use_map(rl_recog_config *cfg, const rl_map *map, int *ids);
 
 /* Workspace bytes for frames of w x h with this configuration; 0 if the
  * configuration is invalid. */
