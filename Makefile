@@ -6,6 +6,9 @@
 #   make host-test-asan  the same tests under AddressSanitizer + UBSan (build-asan/)
 #   make demo            the firmware on a bundled drive: poses over a pty, report
 #   make bench           recognition benchmarks (figures, not pass/fail)
+#   make cross BOARD=rpi4                 cross build for a board, tests under qemu
+#   make package BOARD=rpi4               the board's .deb (build-rpi4/package/)
+#   make flash BOARD=rpi4 TARGET=pi@robot [DRY_RUN=1]  install it over ssh
 #   make clean
 
 BUILD      ?= build
@@ -14,6 +17,27 @@ JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 
 .PHONY: all deps host host-test host-test-asan bench demo clean
+
+# Boards (boards/<name>): cross build, tests under qemu, package, install.
+BOARD       ?= rpi4
+BUILD_BOARD ?= build-$(BOARD)
+TARGET      ?=
+
+.PHONY: cross package flash
+
+cross:
+	@sh tools/deps.sh $(if $(filter host,$(BOARD)),host,cross)
+	cmake -S . -B $(BUILD_BOARD) -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/boards/$(BOARD)/toolchain.cmake \
+	  -DRL_BOARD=$(BOARD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
+	cmake --build $(BUILD_BOARD) -j $(JOBS)
+	cd $(BUILD_BOARD) && ctest --output-on-failure -j $(JOBS)
+
+package: cross
+	cd $(BUILD_BOARD) && cpack -G DEB -B package
+	@ls $(BUILD_BOARD)/package/*.deb
+
+flash: package
+	sh tools/flash.sh $(if $(DRY_RUN),--dry-run) $(TARGET) $(BUILD_BOARD)/package/ringloc_*.deb
 
 # Benchmark frames: rendered once per size (AprilTag twins included).
 BENCH_FRAMES ?= 20

@@ -1,7 +1,10 @@
 #!/bin/sh
 # Check, and install when possible, what ringloc needs to build and test.
 #
-#   tools/deps.sh [--check] [host]
+#   tools/deps.sh [--check] [host|cross]
+#
+# cross: the aarch64 cross build too (Debian's gcc-aarch64-linux-gnu,
+# arm64 libraries through multiarch, qemu-user to run its tests).
 #
 # As root it installs what is missing with apt-get (Debian, Ubuntu,
 # Raspberry Pi OS); otherwise it prints the exact apt-get line and fails.
@@ -14,7 +17,7 @@ profile=host
 for arg in "$@"; do
     case "$arg" in
     --check) check_only=1 ;;
-    host) profile=$arg ;;
+    host|cross) profile=$arg ;;
     -h|--help) sed -n '2,10s/^# \{0,1\}//p' "$0"; exit 0 ;;
     *) echo "deps.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
     esac
@@ -43,6 +46,22 @@ need_pkg libopencv-dev pc opencv4
 need_pkg libapriltag-dev pc apriltag
 need_pkg poppler-utils have pdftoppm
 
+need_pkg file have file
+foreign=""
+if [ "$profile" = cross ]; then
+    arm() { [ -f "/usr/lib/aarch64-linux-gnu/pkgconfig/$1.pc" ]; }
+    need_pkg gcc-aarch64-linux-gnu have aarch64-linux-gnu-gcc
+    need_pkg g++-aarch64-linux-gnu have aarch64-linux-gnu-g++
+    need_pkg qemu-user have qemu-aarch64
+    need_pkg libpng-dev:arm64 arm libpng
+    need_pkg libyaml-dev:arm64 arm yaml-0.1
+    need_pkg libcairo2-dev:arm64 arm cairo
+    need_pkg libcmocka-dev:arm64 arm cmocka
+    if ! dpkg --print-foreign-architectures 2>/dev/null | grep -qx arm64; then
+        foreign=arm64
+    fi
+fi
+
 [ -z "$missing" ] && exit 0
 
 if [ "$check_only" = 1 ]; then
@@ -52,11 +71,16 @@ fi
 if [ "$(id -u)" = 0 ] && have apt-get >/dev/null 2>&1; then
     echo "ringloc: installing$missing" >&2
     export DEBIAN_FRONTEND=noninteractive
+    [ -n "$foreign" ] && dpkg --add-architecture "$foreign" >&2
     apt-get update -qq >&2
     # shellcheck disable=SC2086
     apt-get install -y -qq --no-install-recommends $missing >&2
     exit 0
 fi
 echo "ringloc: missing packages:$missing" >&2
-echo "ringloc: install them with: sudo apt-get install -y$missing" >&2
+if [ -n "$foreign" ]; then
+    echo "ringloc: install them with: sudo dpkg --add-architecture arm64 && sudo apt-get update && sudo apt-get install -y$missing" >&2
+else
+    echo "ringloc: install them with: sudo apt-get install -y$missing" >&2
+fi
 exit 1

@@ -1,2 +1,6 @@
-# The desktop host build: native compiler, PNG files in, files or stdout out.
-set(RL_BOARD_NAME host)
+# The desktop host: a USB webcam over V4L2, pose frames on a USB serial
+# adapter (or use the PNG camera and a file; see README).
+set(RL_BOARD_CAMERA v4l2)
+set(RL_BOARD_CAMERA_DEVICE /dev/video0)
+set(RL_BOARD_SERIAL /dev/ttyUSB0)
+set(RL_BOARD_BAUD 115200)

@@ -1,0 +1,1 @@
+# The desktop host: the native compiler (nothing to set).

@@ -1,0 +1,29 @@
+# Installing and packaging (make package BOARD=...): the binary, the
+# board's default configuration, a systemd unit and the docs, as a .deb.
+configure_file(${CMAKE_CURRENT_LIST_DIR}/ringloc.yaml.in ${CMAKE_BINARY_DIR}/package/ringloc.yaml @ONLY)
+# the unit waits for the serial device: /dev/serial0 -> dev-serial0.device
+string(REGEX REPLACE "^/" "" RL_SERIAL_UNIT "${RL_BOARD_SERIAL}")
+string(REPLACE "/" "-" RL_SERIAL_UNIT "${RL_SERIAL_UNIT}")
+set(RL_SERIAL_UNIT "${RL_SERIAL_UNIT}.device")
+configure_file(${CMAKE_CURRENT_LIST_DIR}/ringloc.service.in ${CMAKE_BINARY_DIR}/package/ringloc.service @ONLY)
+
+install(TARGETS ringloc RUNTIME DESTINATION bin)
+install(FILES ${CMAKE_BINARY_DIR}/package/ringloc.yaml DESTINATION /etc/ringloc)
+install(FILES ${CMAKE_BINARY_DIR}/package/ringloc.service DESTINATION /lib/systemd/system)
+install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/../shared/landmark-spec.md
+        DESTINATION share/doc/ringloc OPTIONAL)
+
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGE_NAME ringloc)
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_PACKAGE_CONTACT "ringloc developers <ringloc@localhost>")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "robot self-localization from ring-coded ceiling landmarks")
+set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE ${RL_DEB_ARCH})
+set(CPACK_DEBIAN_PACKAGE_SECTION misc)
+# the shared libraries the binary links (Debian bookworm / Raspberry Pi OS names)
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "libc6 (>= 2.34), libpng16-16, libyaml-0-2, libcairo2")
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA
+    "${CMAKE_CURRENT_LIST_DIR}/postinst;${CMAKE_CURRENT_LIST_DIR}/conffiles")
+include(CPack)

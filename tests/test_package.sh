@@ -1,0 +1,53 @@
+#!/bin/sh
+# The .deb a board receives: built by CPack from this build, then inspected
+# as a user's dpkg would see it.
+# usage: test_package.sh BUILD_DIR TMPDIR ARCH SERIAL_DEVICE
+set -u
+B=$1
+T=$2
+ARCH=$3
+SERIAL=$4
+rm -rf "$T"
+mkdir -p "$T"
+pass=0
+fail=0
+check() { # description command...
+    what=$1; shift
+    if "$@" >/dev/null 2>&1; then pass=$((pass + 1)); else echo "FAIL: $what"; fail=$((fail + 1)); fi
+}
+(cd "$B" && cpack -G DEB -B "$T/out" >"$T/cpack.log" 2>&1) || { cat "$T/cpack.log"; echo "0 passed, 1 failed"; exit 1; }
+deb=$(ls "$T"/out/ringloc_*_"$ARCH".deb 2>/dev/null | head -1)
+check "a ringloc_*_$ARCH.deb is built" test -f "$deb"
+dpkg-deb -f "$deb" >"$T/control"
+check "architecture is $ARCH" grep -qx "Architecture: $ARCH" "$T/control"
+check "dependencies declared" grep -qE '^Depends: .*libc6.*libpng16-16.*libyaml' "$T/control"
+dpkg-deb -c "$deb" >"$T/files"
+check "binary in /usr/bin" grep -q '\./usr/bin/ringloc$' "$T/files"
+check "default configuration" grep -q '\./etc/ringloc/ringloc.yaml$' "$T/files"
+check "systemd unit" grep -q '\./lib/systemd/system/ringloc.service$' "$T/files"
+check "docs" grep -q '\./usr/share/doc/ringloc/README.md$' "$T/files"
+mkdir -p "$T/ctl" "$T/root"
+dpkg-deb -e "$deb" "$T/ctl"
+dpkg-deb -x "$deb" "$T/root"
+check "configuration is a conffile" grep -qx '/etc/ringloc/ringloc.yaml' "$T/ctl/conffiles"
+check "postinst enables the service" grep -q 'systemctl enable ringloc.service' "$T/ctl/postinst"
+check "binary is for $ARCH" sh -c "file '$T/root/usr/bin/ringloc' | grep -q '$( [ "$ARCH" = arm64 ] && echo aarch64 || echo x86-64 )'"
+check "configuration names the board's serial device" grep -q "device: $SERIAL" "$T/root/etc/ringloc/ringloc.yaml"
+unit="$T/root/lib/systemd/system/ringloc.service"
+check "unit restarts on failure" grep -qx 'Restart=on-failure' "$unit"
+check "unit waits for the serial device" grep -q '^After=.*\.device' "$unit"
+check "unit runs the packaged configuration" grep -qx 'ExecStart=/usr/bin/ringloc run --config /etc/ringloc/ringloc.yaml' "$unit"
+if command -v systemd-analyze >/dev/null 2>&1; then
+    # verify the unit as packaged, but with ExecStart on the unpacked binary
+    # (this machine has no /usr/bin/ringloc installed)
+    mkdir -p "$T/verify"
+    sed "s|^ExecStart=/usr/bin/ringloc|ExecStart=$T/root/usr/bin/ringloc|" "$unit" >"$T/verify/ringloc.service"
+    if systemd-analyze verify "$T/verify/ringloc.service" >"$T/verify.log" 2>&1 &&
+       ! grep -qiE 'error|invalid|unknown' "$T/verify.log"; then
+        pass=$((pass + 1))
+    else
+        echo "FAIL: systemd-analyze verify:"; cat "$T/verify.log"; fail=$((fail + 1))
+    fi
+fi
+echo "$pass passed, $fail failed"
+[ "$fail" = 0 ]
