@@ -47,6 +47,7 @@ need_pkg libapriltag-dev pc apriltag
 need_pkg poppler-utils have pdftoppm
 
 need_pkg file have file
+[ "$profile" = host ] && need_pkg libcamera-dev pc libcamera
 foreign=""
 if [ "$profile" = cross ]; then
     arm() { [ -f "/usr/lib/aarch64-linux-gnu/pkgconfig/$1.pc" ]; }

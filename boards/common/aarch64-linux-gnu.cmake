@@ -1,6 +1,11 @@
 # Cross toolchain for 64-bit ARM Linux (Raspberry Pi OS, Debian arm64):
 # Debian's gcc-aarch64-linux-gnu against arm64 libraries installed with
 # multiarch (tools/deps.sh cross). Tests run under qemu-aarch64.
+set(RL_DEB_ARCH arm64)
+if(CMAKE_HOST_SYSTEM_PROCESSOR MATCHES "^(aarch64|arm64)$")
+  # on the board itself (or any arm64 machine): the native compiler
+  return()
+endif()
 set(CMAKE_SYSTEM_NAME Linux)
 set(CMAKE_SYSTEM_PROCESSOR aarch64)
 set(CMAKE_C_COMPILER aarch64-linux-gnu-gcc)
@@ -14,4 +19,3 @@ set(CMAKE_LIBRARY_ARCHITECTURE aarch64-linux-gnu)
 set(ENV{PKG_CONFIG_LIBDIR} "/usr/lib/aarch64-linux-gnu/pkgconfig:/usr/share/pkgconfig")
 set(ENV{PKG_CONFIG_PATH} "")
 set(CMAKE_CROSSCOMPILING_EMULATOR qemu-aarch64 -L /usr/aarch64-linux-gnu)
-set(RL_DEB_ARCH arm64)
