@@ -59,7 +59,7 @@ int rl_cmd_locate(int argc, char **argv)
         int r = rl_cli_recog_option(C, c, optarg, &cfg, &family);
         if (r < 0)
             return RL_EXIT_USAGE;
-        if (r > 0 && c != 'f')
+        if (r > 0)
             continue;
         switch (c) {
         case 'c': cam_path = optarg; break;

@@ -1,4 +1,5 @@
 #include "rl_annotate.h"
+#include "rl_print.h"
 
 #include <cairo.h>
 #include <math.h>
@@ -20,7 +21,6 @@ rl_err rl_annotate_png(const char *path, const rl_image *img, const rl_result *r
     cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, W, H);
     cairo_t *cr;
     unsigned char *px;
-    cairo_status_t st;
     char text[64];
     if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
         snprintf(err, errlen, "%s: %s", path, cairo_status_to_string(cairo_surface_status(s)));
@@ -85,11 +85,5 @@ rl_err rl_annotate_png(const char *path, const rl_image *img, const rl_result *r
         cairo_show_text(cr, caption);
     }
     cairo_destroy(cr);
-    st = cairo_surface_write_to_png(s, path);
-    cairo_surface_destroy(s);
-    if (st != CAIRO_STATUS_SUCCESS) {
-        snprintf(err, errlen, "%s: cannot write PNG (%s)", path, cairo_status_to_string(st));
-        return RL_EIO;
-    }
-    return RL_OK;
+    return rl_print_surface_png(s, path, err, errlen);
 }

@@ -188,7 +188,6 @@ rl_err rl_print_png(const char *path, const rl_family *fam, int id, int px, char
     int side = rl_print_png_side(px);
     cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, side, side);
     cairo_t *cr;
-    cairo_status_t st;
     rl_err e;
     if ((e = surface_status(s, path, err, errlen)) != RL_OK) {
         cairo_surface_destroy(s);
@@ -201,6 +200,12 @@ rl_err rl_print_png(const char *path, const rl_family *fam, int id, int px, char
      * pixel coordinate i in the spec's convention. */
     rl_print_landmark(cr, fam, id, side / 2.0, side / 2.0, px / 2.0);
     cairo_destroy(cr);
+    return rl_print_surface_png(s, path, err, errlen);
+}
+
+rl_err rl_print_surface_png(cairo_surface_t *s, const char *path, char *err, size_t errlen)
+{
+    cairo_status_t st;
     cairo_surface_flush(s);
     st = cairo_surface_write_to_png(s, path);
     cairo_surface_destroy(s);

@@ -44,6 +44,10 @@ RL_CHECK rl_err rl_print_svg(const char *path, const rl_paper *paper, const rl_f
                              int id, const rl_map_landmark *pos, double diameter, char *err,
                              size_t errlen);
 
+/* Write a cairo image surface to a PNG and destroy it; err names the file. */
+RL_CHECK rl_err rl_print_surface_png(cairo_surface_t *s, const char *path, char *err,
+                                     size_t errlen);
+
 /* A PNG with the landmark `px` pixels across, centred on a white square of
  * side rl_print_png_side(px) (room for the quiet zone). The centre is at
  * pixel coordinates ((side - 1) / 2, (side - 1) / 2). */

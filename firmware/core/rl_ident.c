@@ -253,8 +253,9 @@ static void keep_best(rl_match *m, int id, double r, double gain, int blur)
     }
 }
 
-void rl_ident_match_ids(const rl_ident *id, const rl_profile *p, const int *ids, int n_ids,
-                        rl_match *m)
+/* Score the templates of `ids` (every template when ids is NULL). */
+static void match_some(const rl_ident *id, const rl_profile *p, const int *ids, int n_ids,
+                       rl_match *m)
 {
     double n = p->total, sx = 0;
     int i, j, k;
@@ -266,34 +267,27 @@ void rl_ident_match_ids(const rl_ident *id, const rl_profile *p, const int *ids,
         return;
     for (k = 0; k < RL_PROFILE_BINS; k++)
         sx += p->sx[k];
-    for (j = 0; j < n_ids; j++)
-        for (i = 0; i < id->n; i++)
-            if (id->ids[i] == ids[j]) {
-                double best, g;
-                int b;
-                match_one(id, p, i, n, sx, &best, &g, &b);
-                keep_best(m, id->ids[i], best, g, b);
-            }
+    for (i = 0; i < id->n; i++) {
+        double best, g;
+        int b, wanted = ids == NULL;
+        for (j = 0; j < n_ids && !wanted; j++)
+            wanted = id->ids[i] == ids[j];
+        if (!wanted)
+            continue;
+        match_one(id, p, i, n, sx, &best, &g, &b);
+        keep_best(m, id->ids[i], best, g, b);
+    }
+}
+
+void rl_ident_match_ids(const rl_ident *id, const rl_profile *p, const int *ids, int n_ids,
+                        rl_match *m)
+{
+    match_some(id, p, ids, n_ids, m);
 }
 
 void rl_ident_match(const rl_ident *id, const rl_profile *p, rl_match *m)
 {
-    double n = p->total, sx = 0;
-    int i, k;
-    m->id = -1;
-    m->score = m->second = -1.0;
-    m->contrast = 0.0;
-    m->blur = 0;
-    if (n < 16)
-        return;
-    for (k = 0; k < RL_PROFILE_BINS; k++)
-        sx += p->sx[k];
-    for (i = 0; i < id->n; i++) {
-        double best, g;
-        int b;
-        match_one(id, p, i, n, sx, &best, &g, &b);
-        keep_best(m, id->ids[i], best, g, b);
-    }
+    match_some(id, p, NULL, 0, m);
 }
 
 double rl_pearson(const uint8_t *a, const uint8_t *b, const uint8_t *mask, int n)
