@@ -243,7 +243,7 @@ static void test_ident_matches_direct_pearson(void **)
                     if (d >= RL_PROFILE_EXTENT * R)
                         continue;
                     int k = (int)(d * RL_PROFILE_BINS / (RL_PROFILE_EXTENT * R));
-                    float tv2 = id.tmpl[((size_t)(true_id - 1) * RL_BLUR_LEVELS + b) * RL_PROFILE_BINS + k];
+                    float tv2 = rl_ident_template_bin(&id, true_id - 1, b, k);
                     a.push_back((uint8_t)(255 - img.at<uchar>(y, x)));
                     c.push_back((uint8_t)std::lround(tv2 * 255));
                 }

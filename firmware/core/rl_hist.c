@@ -7,8 +7,10 @@
  * a light source; fewer are specular glints and count as background. */
 #define LIGHT_MIN_FRACTION 0.0005
 /* Most of the frame (fraction) that can be light: a larger saturated
- * population is an over-exposed background (white paper, bright tiles). */
-#define LIGHT_MAX_FRACTION 0.6
+ * population is an over-exposed background (white paper, bright tiles).
+ * Large fixtures with their halo can wash out well over half of a frame
+ * and still be lights, with the landmarks between them to be found. */
+#define LIGHT_MAX_FRACTION 0.9
 /* Lowest intensity a light threshold may take: lights saturate. */
 #define LIGHT_MIN_LEVEL 235
 /* Least foreground/background separation (grey levels) for a dark class. */

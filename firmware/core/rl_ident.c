@@ -11,6 +11,20 @@ size_t rl_ident_bytes(int n)
            2 * RL_WS_ALIGN;
 }
 
+/* Templates are stored bin-major: for each bin, the values of every (id,
+ * blur) column side by side, so that scoring walks the profile once and
+ * updates every column with its own sums (no long dependency chains, and
+ * each sum still adds the bins in order). */
+static size_t tmpl_index(const rl_ident *id, int i, int blur, int k)
+{
+    return (size_t)k * (size_t)id->n * RL_BLUR_LEVELS + (size_t)i * RL_BLUR_LEVELS + (size_t)blur;
+}
+
+float rl_ident_template_bin(const rl_ident *id, int i, int blur, int k)
+{
+    return id->tmpl[tmpl_index(id, i, blur, k)];
+}
+
 double rl_ident_template_at(const rl_family *fam, int id, double rho, double sigma)
 {
     /* Darkness is a sum of steps at the zone edges: going inwards across
@@ -58,7 +72,7 @@ rl_err rl_ident_init(rl_ident *id, rl_ws *ws, const rl_family *fam, const int *i
                     acc += rho * rl_ident_template_at(fam, id->ids[i], rho, blur_levels[b]);
                     w += rho;
                 }
-                id->tmpl[((size_t)i * RL_BLUR_LEVELS + b) * RL_PROFILE_BINS + k] = (float)(acc / w);
+                id->tmpl[tmpl_index(id, i, b, k)] = (float)(acc / w);
             }
     }
     return RL_OK;
@@ -111,9 +125,8 @@ static int sector_of(double dx, double dy)
 void rl_ident_polar(const rl_image *img, double cx, double cy, double r, int light,
                     double min_contrast, rl_polar *pol)
 {
-    /* gather a little beyond the profile so that shifted centres still
-     * find their outermost pixels */
-    double ext = RL_PROFILE_EXTENT * r, bw = ext / RL_PROFILE_BINS, lim = ext + 2.0 * bw;
+    double bw = RL_PROFILE_EXTENT * r / RL_PROFILE_BINS, inv = 1.0 / bw, lim = RL_POLAR_BINS * bw;
+    double lim2 = lim * lim;
     int x, y, k, sct, x0 = (int)ceil(cx - lim), x1 = (int)floor(cx + lim);
     int y0 = (int)ceil(cy - lim), y1 = (int)floor(cy + lim);
     memset(pol, 0, sizeof *pol);
@@ -134,21 +147,22 @@ void rl_ident_polar(const rl_image *img, double cx, double cy, double r, int lig
     if (y1 > img->height - 1) y1 = img->height - 1;
     for (y = y0; y <= y1; y++) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
-        double dy = y - cy;
+        double dy = y - cy, dy2 = dy * dy;
         for (x = x0; x <= x1; x++) {
-            double dx = x - cx, d = sqrt(dx * dx + dy * dy), v = row[x];
-            if (d >= lim || row[x] >= light)
+            double dx = x - cx, d2 = dx * dx + dy2, v = row[x];
+            if (d2 >= lim2 || row[x] >= light)
                 continue;
-            k = (int)(d / bw);
-            if (k >= RL_PROFILE_BINS)
-                k = RL_PROFILE_BINS - 1; /* the extra ring lands in the last bin */
+            k = (int)(sqrt(d2) * inv);
+            if (k >= RL_POLAR_BINS)
+                k = RL_POLAR_BINS - 1; /* rounding at the rim */
             sct = sector_of(dx, dy);
             pol->n[sct][k] += 1;
             pol->s[sct][k] += v;
             pol->q[sct][k] += v * v;
         }
     }
-    /* sector black and white: extreme means over groups of 4 bins */
+    /* sector black and white: extreme means over groups of 4 bins of the
+     * profile's extent */
     for (sct = 0; sct < RL_SECTORS; sct++) {
         pol->lo[sct] = 1e9;
         pol->hi[sct] = -1e9;
@@ -166,7 +180,7 @@ void rl_ident_polar(const rl_image *img, double cx, double cy, double r, int lig
         pol->usable[sct] = pol->hi[sct] - pol->lo[sct] >= min_contrast;
         if (pol->usable[sct]) {
             double b = 255.0 / (pol->hi[sct] - pol->lo[sct]), a = b * pol->hi[sct];
-            for (k = 0; k < RL_PROFILE_BINS; k++) {
+            for (k = 0; k < RL_POLAR_BINS; k++) {
                 double n = pol->n[sct][k], sv = pol->s[sct][k], qv = pol->q[sct][k];
                 pol->s[sct][k] = n * a - b * sv;
                 pol->q[sct][k] = n * a * a - 2 * a * b * sv + b * b * qv;
@@ -175,34 +189,42 @@ void rl_ident_polar(const rl_image *img, double cx, double cy, double r, int lig
     }
 }
 
-void rl_ident_polar_profile(const rl_polar *pol, double dx, double dy, rl_profile *p)
+void rl_ident_polar_profile(const rl_polar *pol, double dx, double dy, double scale,
+                            rl_profile *p)
 {
-    double bw = RL_PROFILE_EXTENT * pol->r / RL_PROFILE_BINS, sxx = 0;
+    double bw = RL_PROFILE_EXTENT * pol->r / RL_PROFILE_BINS, sxx = 0, inv = 1.0 / scale;
     int sct, k;
     for (k = 0; k < RL_PROFILE_BINS; k++)
         p->n[k] = p->sx[k] = 0;
     for (sct = 0; sct < RL_SECTORS; sct++) {
-        /* the whole sector moves by the same fraction of a bin */
-        double shift, w;
-        int j0, lo, hi;
+        /* cell k's centre, (k + 0.5) bins out, lands at continuous bin
+         * t = a k + b of the new profile and is shared between the two
+         * bins around t */
+        double shift, a = inv, b;
+        const double *cn = pol->n[sct], *cs = pol->s[sct], *cq = pol->q[sct];
         if (!pol->usable[sct])
             continue;
-        shift = -(dx * pol->ux[sct] + dy * pol->uy[sct]) / bw;
-        j0 = (int)floor(shift);
-        w = shift - j0; /* share going one bin further out */
-        lo = -j0 > 0 ? -j0 : 0;
-        hi = RL_PROFILE_BINS - j0 < RL_PROFILE_BINS ? RL_PROFILE_BINS - j0 : RL_PROFILE_BINS;
-        for (k = lo; k < hi; k++) { /* k + j0 in range */
-            p->n[k + j0] += (1 - w) * pol->n[sct][k];
-            p->sx[k + j0] += (1 - w) * pol->s[sct][k];
-            sxx += (1 - w) * pol->q[sct][k];
-        }
-        lo = -j0 - 1 > 0 ? -j0 - 1 : 0;
-        hi = RL_PROFILE_BINS - j0 - 1 < RL_PROFILE_BINS ? RL_PROFILE_BINS - j0 - 1 : RL_PROFILE_BINS;
-        for (k = lo; k < hi; k++) { /* k + j0 + 1 in range */
-            p->n[k + j0 + 1] += w * pol->n[sct][k];
-            p->sx[k + j0 + 1] += w * pol->s[sct][k];
-            sxx += w * pol->q[sct][k];
+        shift = (dx * pol->ux[sct] + dy * pol->uy[sct]) / bw;
+        b = (0.5 - shift) * inv - 0.5;
+        for (k = 0; k < RL_POLAR_BINS; k++) {
+            double t = a * k + b, w;
+            int j;
+            if (t >= RL_PROFILE_BINS)
+                break; /* t grows with k */
+            if (t < -1.0 || cn[k] == 0)
+                continue;
+            j = t < 0 ? -1 : (int)t;
+            w = t - j; /* share going to bin j + 1 */
+            if (j >= 0) {
+                p->n[j] += (1 - w) * cn[k];
+                p->sx[j] += (1 - w) * cs[k];
+                sxx += (1 - w) * cq[k];
+            }
+            if (j + 1 < RL_PROFILE_BINS) {
+                p->n[j + 1] += w * cn[k];
+                p->sx[j + 1] += w * cs[k];
+                sxx += w * cq[k];
+            }
         }
     }
     p->sxx = sxx;
@@ -211,54 +233,43 @@ void rl_ident_polar_profile(const rl_polar *pol, double dx, double dy, rl_profil
         p->total += p->n[k];
 }
 
-static void match_one(const rl_ident *id, const rl_profile *p, int i, double n, double sx,
-                      double *best, double *gainv, int *best_b)
+/* Pearson's r of column c (id index i, blur b) from its sums; -2 when
+ * either side is constant. */
+static double column_r(double n, double sx, double sxx, double st, double stt, double sxt,
+                       double *gain)
 {
-    int b, k;
-    *best = -1.0;
-    *gainv = 0.0;
-    *best_b = 0;
-    for (b = 0; b < RL_BLUR_LEVELS; b++) {
-        const float *t = id->tmpl + ((size_t)i * RL_BLUR_LEVELS + b) * RL_PROFILE_BINS;
-        double st = 0, stt = 0, sxt = 0, vx, vt, r;
-        for (k = 0; k < RL_PROFILE_BINS; k++) {
-            st += p->n[k] * t[k];
-            stt += p->n[k] * t[k] * t[k];
-            sxt += p->sx[k] * t[k];
-        }
-        vx = n * p->sxx - sx * sx;
-        vt = n * stt - st * st;
-        if (vx <= 0 || vt <= 0)
-            continue;
-        r = (n * sxt - sx * st) / sqrt(vx * vt);
-        if (r > *best) {
-            *best = r;
-            *best_b = b;
-            *gainv = (n * sxt - sx * st) / vt;
-        }
-    }
+    double vx = n * sxx - sx * sx, vt = n * stt - st * st;
+    if (vx <= 0 || vt <= 0)
+        return -2.0;
+    *gain = (n * sxt - sx * st) / vt;
+    return (n * sxt - sx * st) / sqrt(vx * vt);
 }
 
 /* Keep the best and the runner-up (of any other id). */
 static void keep_best(rl_match *m, int id, double r, double gain, int blur)
 {
     if (r > m->score) {
-        m->second = m->score;
+        if (id != m->id)
+            m->second = m->score;
         m->score = r;
         m->id = id;
         m->contrast = gain;
         m->blur = blur;
-    } else if (r > m->second) {
+    } else if (r > m->second && id != m->id) {
         m->second = r;
     }
 }
 
-/* Score the templates of `ids` (every template when ids is NULL). */
+/* Columns scored together: their sums stay in registers or L1. */
+#define MATCH_BLOCK 32
+
+/* Score the templates of `ids` (every template when ids is NULL) at the
+ * blur levels [b0, b1). */
 static void match_some(const rl_ident *id, const rl_profile *p, const int *ids, int n_ids,
-                       rl_match *m)
+                       int b0, int b1, rl_match *m)
 {
-    double n = p->total, sx = 0;
-    int i, j, k;
+    double n = p->total, sx = 0, st[MATCH_BLOCK], stt[MATCH_BLOCK], sxt[MATCH_BLOCK], g = 0;
+    int ncol = id->n * RL_BLUR_LEVELS, c0, c, k, j;
     m->id = -1;
     m->score = m->second = -1.0;
     m->contrast = 0.0;
@@ -267,27 +278,64 @@ static void match_some(const rl_ident *id, const rl_profile *p, const int *ids, 
         return;
     for (k = 0; k < RL_PROFILE_BINS; k++)
         sx += p->sx[k];
-    for (i = 0; i < id->n; i++) {
-        double best, g;
-        int b, wanted = ids == NULL;
-        for (j = 0; j < n_ids && !wanted; j++)
-            wanted = id->ids[i] == ids[j];
-        if (!wanted)
-            continue;
-        match_one(id, p, i, n, sx, &best, &g, &b);
-        keep_best(m, id->ids[i], best, g, b);
+    if (ids != NULL) {
+        /* a short list: each of its columns on its own */
+        for (j = 0; j < n_ids; j++) {
+            int i, b;
+            for (i = 0; i < id->n && id->ids[i] != ids[j]; i++)
+                ;
+            if (i == id->n)
+                continue;
+            for (b = b0; b < b1; b++) {
+                double a = 0, aa = 0, ax = 0, r;
+                for (k = 0; k < RL_PROFILE_BINS; k++) {
+                    double t = id->tmpl[tmpl_index(id, i, b, k)];
+                    a += p->n[k] * t;
+                    aa += p->n[k] * t * t;
+                    ax += p->sx[k] * t;
+                }
+                r = column_r(n, sx, p->sxx, a, aa, ax, &g);
+                keep_best(m, ids[j], r, g, b);
+            }
+        }
+        return;
+    }
+    for (c0 = 0; c0 < ncol; c0 += MATCH_BLOCK) {
+        int nc = ncol - c0 < MATCH_BLOCK ? ncol - c0 : MATCH_BLOCK;
+        for (c = 0; c < nc; c++)
+            st[c] = stt[c] = sxt[c] = 0;
+        for (k = 0; k < RL_PROFILE_BINS; k++) {
+            const float *t = id->tmpl + (size_t)k * (size_t)ncol + c0;
+            double nk = p->n[k], sk = p->sx[k];
+            if (nk == 0)
+                continue; /* bins outside the image or in light */
+            for (c = 0; c < nc; c++) {
+                double tv = t[c];
+                st[c] += nk * tv;
+                stt[c] += nk * tv * tv;
+                sxt[c] += sk * tv;
+            }
+        }
+        for (c = 0; c < nc; c++) {
+            int b = (c0 + c) % RL_BLUR_LEVELS;
+            double r;
+            if (b < b0 || b >= b1)
+                continue;
+            r = column_r(n, sx, p->sxx, st[c], stt[c], sxt[c], &g);
+            keep_best(m, id->ids[(c0 + c) / RL_BLUR_LEVELS], r, g, b);
+        }
     }
 }
 
 void rl_ident_match_ids(const rl_ident *id, const rl_profile *p, const int *ids, int n_ids,
-                        rl_match *m)
+                        int blur, rl_match *m)
 {
-    match_some(id, p, ids, n_ids, m);
+    match_some(id, p, ids, n_ids, blur < 0 ? 0 : blur, blur < 0 ? RL_BLUR_LEVELS : blur + 1, m);
 }
 
 void rl_ident_match(const rl_ident *id, const rl_profile *p, rl_match *m)
 {
-    match_some(id, p, NULL, 0, m);
+    match_some(id, p, NULL, 0, 0, RL_BLUR_LEVELS, m);
 }
 
 double rl_pearson(const uint8_t *a, const uint8_t *b, const uint8_t *mask, int n)

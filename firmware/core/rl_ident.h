@@ -54,7 +54,7 @@ typedef struct {
     rl_family fam;
     int n;          /* ids */
     int *ids;       /* the ids */
-    float *tmpl;    /* n x RL_BLUR_LEVELS x RL_PROFILE_BINS darkness, 0..1 */
+    float *tmpl;    /* RL_PROFILE_BINS x n x RL_BLUR_LEVELS darkness, 0..1 (bin-major) */
 } rl_ident;
 
 typedef struct {
@@ -78,6 +78,9 @@ RL_CHECK rl_err rl_ident_init(rl_ident *id, rl_ws *ws, const rl_family *fam, con
  * sigma (units of R); 0 white .. 1 black. */
 double rl_ident_template_at(const rl_family *fam, int id, double rho, double sigma);
 
+/* Template value of the i-th id at a blur level in bin k. */
+float rl_ident_template_bin(const rl_ident *id, int i, int blur, int k);
+
 /* Gather the pixels of img within RL_PROFILE_EXTENT * r of (cx, cy). */
 void rl_ident_profile(const rl_image *img, double cx, double cy, double r, rl_profile *p);
 
@@ -86,16 +89,21 @@ void rl_ident_profile(const rl_image *img, double cx, double cy, double r, rl_pr
  * black and white levels. */
 #define RL_SECTORS 16
 
-/* A candidate gathered once into RL_SECTORS x RL_PROFILE_BINS polar
- * cells (raw count, sum, sum of squares), from which the sector-normalized
- * profile for any small shift of the centre is derived without touching
- * the image again: a shift d moves the pixels of sector s (direction u_s)
- * to radius rho - d . u_s, i.e. by a fraction of a bin. */
+/* Polar cells reach beyond the profile (1.2 R) so that a larger radius or
+ * a shifted centre still finds its outermost pixels: 76 bins reach 1.43 R. */
+#define RL_POLAR_BINS 76
+
+/* A candidate gathered once into RL_SECTORS x RL_POLAR_BINS polar cells
+ * (raw count, sum, sum of squares), from which the sector-normalized
+ * profile for any small shift of the centre, or change of radius, is
+ * derived without touching the image again: a shift d moves the pixels
+ * of sector s (direction u_s) to radius rho - d . u_s, and a radius scale
+ * f divides every radius by f. */
 typedef struct {
     double cx, cy, r;
-    double n[RL_SECTORS][RL_PROFILE_BINS];
-    double s[RL_SECTORS][RL_PROFILE_BINS];
-    double q[RL_SECTORS][RL_PROFILE_BINS];
+    double n[RL_SECTORS][RL_POLAR_BINS];
+    double s[RL_SECTORS][RL_POLAR_BINS];
+    double q[RL_SECTORS][RL_POLAR_BINS];
     double ux[RL_SECTORS], uy[RL_SECTORS]; /* sector directions */
     double lo[RL_SECTORS], hi[RL_SECTORS]; /* sector black and white */
     int usable[RL_SECTORS];                /* sector has enough contrast */
@@ -108,12 +116,15 @@ typedef struct {
 void rl_ident_polar(const rl_image *img, double cx, double cy, double r, int light,
                     double min_contrast, rl_polar *pol);
 
-/* The profile of pol with the centre moved by (dx, dy). */
-void rl_ident_polar_profile(const rl_polar *pol, double dx, double dy, rl_profile *p);
+/* The profile of pol with the centre moved by (dx, dy) px and the radius
+ * multiplied by scale (1 = as gathered). */
+void rl_ident_polar_profile(const rl_polar *pol, double dx, double dy, double scale,
+                            rl_profile *p);
 
-/* Score only the templates of the given ids (a short list). */
+/* Score only the templates of the given ids (a short list), at one blur
+ * level (0 .. RL_BLUR_LEVELS - 1) or all (blur < 0). */
 void rl_ident_match_ids(const rl_ident *id, const rl_profile *p, const int *ids, int n,
-                        rl_match *m);
+                        int blur, rl_match *m);
 
 /* Score every template against a profile. */
 void rl_ident_match(const rl_ident *id, const rl_profile *p, rl_match *m);

@@ -265,6 +265,75 @@ static void refine_radius(const rl_image *img, double cx, double cy, double *r)
     }
 }
 
+/* ---- inner rings ------------------------------------------------------- */
+
+/* A code ring of a landmark can look like a whole landmark of half its
+ * size (id 2's zone 4 ring reads as id 16). The paper drops inner rings by
+ * containment in the binary image; when glare breaks the outer ring, or
+ * the border cuts it, that containment is lost, so it is checked on the
+ * grey levels instead: rays from the candidate's centre, beyond its quiet
+ * zone, that meet a dark ring at one common radius in most directions
+ * mean the candidate sits inside a larger landmark. */
+#define ENCLOSE_RAYS 16
+#define ENCLOSE_FROM 1.3 /* radii: past the quiet zone */
+#define ENCLOSE_TO 2.9   /* radii: the outer ring around the smallest mimic
+                            (a zone boundary at 0.36 R) */
+
+/* Nearest pixel's grey level, or -1 outside the image. */
+static int grey_at(const rl_image *img, double x, double y)
+{
+    int xi = (int)floor(x + 0.5), yi = (int)floor(y + 0.5);
+    if (xi < 0 || yi < 0 || xi >= img->width || yi >= img->height)
+        return -1;
+    return img->data[(size_t)yi * (size_t)img->stride + xi];
+}
+
+static int enclosed(const rl_image *img, int light, double cx, double cy, double r)
+{
+    double hit[ENCLOSE_RAYS], med;
+    int a, clear = 0, nhit = 0, agree = 0, i, j;
+    for (a = 0; a < ENCLOSE_RAYS; a++) {
+        double c = cos((a + 0.5) * 2 * M_PI / ENCLOSE_RAYS), sn = sin((a + 0.5) * 2 * M_PI / ENCLOSE_RAYS);
+        double rho;
+        int ink = 256, paper = -1, mid, g = 0;
+        /* the candidate's own ink (outer ring) and paper (quiet zone) here */
+        for (rho = 0.8 * r; rho <= 1.2 * r; rho += 1.0) {
+            if ((g = grey_at(img, cx + rho * c, cy + rho * sn)) < 0)
+                break;
+            if (rho <= r && g < ink)
+                ink = g;
+            if (rho >= r && g > paper)
+                paper = g;
+        }
+        if (g < 0 || ink > 255 || paper < 0 || paper - ink < 20)
+            continue; /* unknown */
+        mid = (ink + paper) / 2;
+        for (rho = ENCLOSE_FROM * r; rho <= ENCLOSE_TO * r; rho += 1.0) {
+            g = grey_at(img, cx + rho * c, cy + rho * sn);
+            if (g < 0 || g >= light || g < mid)
+                break;
+        }
+        if (g >= 0 && g < mid)
+            hit[nhit++] = rho / r;
+        else if (rho > ENCLOSE_TO * r)
+            clear++;
+        /* else unknown: the border or a light came first */
+    }
+    if (nhit < ENCLOSE_RAYS / 4 || nhit < clear)
+        return 0;
+    /* the median hit radius, and how many rays agree with it */
+    for (i = 1; i < nhit; i++) { /* insertion sort of a few values */
+        double v = hit[i];
+        for (j = i; j > 0 && hit[j - 1] > v; j--)
+            hit[j] = hit[j - 1];
+        hit[j] = v;
+    }
+    med = hit[nhit / 2];
+    for (i = 0; i < nhit; i++)
+        agree += fabs(hit[i] - med) <= 0.15 * med;
+    return agree >= ENCLOSE_RAYS / 4 && 4 * agree >= 3 * (nhit + clear);
+}
+
 static void add_detection(rl_detection *list, int *n, int cap, const rl_detection *d)
 {
     if (*n < cap)
@@ -337,6 +406,15 @@ static int clr_geometry(const rl_box *b, int W, int H, rl_detection *d)
     return 1;
 }
 
+/* Only where glare or the border can have broken a larger ring around a
+ * candidate is it checked for one. */
+static int may_be_inner(const rl_result *res, const rl_detection *d)
+{
+    double reach = ENCLOSE_TO * d->radius;
+    return light_gap(res, &d->box) <= reach || d->u < reach || d->v < reach ||
+           res->width - 1 - d->u < reach || res->height - 1 - d->v < reach;
+}
+
 /* Border landmarks with at most this much missing are identified in the
  * global pass (their outer ring is closed but for a sliver); the rest wait
  * for the local pass. */
@@ -357,7 +435,8 @@ static void global_candidate(rl_recog *rec, const rl_image *img, const rl_box *b
         refine_centre(img, &res->levels, &d.u, &d.v, d.radius);
     refine_radius(img, d.u, d.v, &d.radius);
     if (d.visible >= GLOBAL_MIN_VISIBLE &&
-        identify(rec, img, &res->levels, d.u, d.v, d.radius, &m, NULL)) {
+        identify(rec, img, &res->levels, d.u, d.v, d.radius, &m, NULL) &&
+        !(may_be_inner(res, &d) && enclosed(img, res->levels.light, d.u, d.v, d.radius))) {
         d.id = m.id;
         d.score = m.score;
         add_detection(res->landmarks, &res->n_landmarks, RL_MAX_LANDMARKS, &d);
@@ -649,6 +728,79 @@ static int fit_outer_edge(const rl_label *lb, int reg, const rl_image *win, int 
     return circle_solve(&f, cx, cy, r);
 }
 
+/* Search steps of the local identification: centre (px) and radius
+ * (fraction) steps of each round, after a first sweep over radii. */
+#define SEARCH_ROUNDS 3
+static const double search_shift[SEARCH_ROUNDS] = {1.0, 0.5, 0.25};
+static const double search_scale[SEARCH_ROUNDS] = {0.02, 0.01, 0.005};
+static const double sweep_scale[4] = {0.92, 0.96, 1.04, 1.08};
+
+/* Identification of a DUCLR on sector-normalized grey levels (glare
+ * varies by direction), gathered once into polar cells around
+ * (*cx, *cy). The edge fit's centre and radius can be off where glare or
+ * the border hides most of the outer edge, and a wrong radius reads the
+ * outer ring as a code ring: so the centre and the radius that fit the
+ * likely ids best are searched (a sweep over radii, then rounds of a
+ * cross over the centre and one step either way in radius), and every id
+ * is scored at the end. (*cx, *cy, *r) are updated to the best fit. */
+static void local_identify(rl_recog *rec, const rl_image *img, int light, double *cx,
+                           double *cy, double *r, rl_match *m)
+{
+    rl_polar *pol = rec->polar;
+    rl_profile p;
+    int top[4], ntop = 0, k, it, bits = rec->cfg.family.bits;
+    double bx = 0, by = 0, bs = 1.0, best_score;
+    rl_ident_polar(img, *cx, *cy, *r, light, 20.0, pol);
+    rl_ident_polar_profile(pol, 0, 0, 1.0, &p);
+    rl_ident_match(&rec->ident, &p, m);
+    if (m->id < 0)
+        return;
+    top[ntop++] = m->id;
+    best_score = m->score;
+    /* the likely ids: the best and those one code zone away that come
+     * close (a radius error confuses the outer ring with zone 1) */
+    for (k = 1; k <= bits && ntop < 4; k++) {
+        int alt = m->id ^ (1 << (bits - k));
+        rl_match mm;
+        if (!rl_family_valid(&rec->cfg.family, alt))
+            continue;
+        rl_ident_match_ids(&rec->ident, &p, &alt, 1, -1, &mm);
+        if (mm.id >= 0 && mm.score > m->second - 0.05)
+            top[ntop++] = alt;
+    }
+    for (k = 0; k < 4; k++) {
+        rl_match mm;
+        rl_ident_polar_profile(pol, 0, 0, sweep_scale[k], &p);
+        rl_ident_match_ids(&rec->ident, &p, top, ntop, -1, &mm);
+        if (mm.score > best_score) {
+            best_score = mm.score;
+            bs = sweep_scale[k];
+        }
+    }
+    for (it = 0; it < SEARCH_ROUNDS; it++) {
+        double cbx = bx, cby = by, cbs = bs, step = search_shift[it];
+        static const int dir[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+        for (k = 0; k < 6; k++) {
+            double tx = cbx + dir[k][0] * step, ty = cby + dir[k][1] * step;
+            double ts = cbs * (1.0 + dir[k][2] * search_scale[it]);
+            rl_match mm;
+            rl_ident_polar_profile(pol, tx, ty, ts, &p);
+            rl_ident_match_ids(&rec->ident, &p, top, ntop, -1, &mm);
+            if (mm.score > best_score) {
+                best_score = mm.score;
+                bx = tx;
+                by = ty;
+                bs = ts;
+            }
+        }
+    }
+    rl_ident_polar_profile(pol, bx, by, bs, &p);
+    rl_ident_match(&rec->ident, &p, m);
+    *cx += bx;
+    *cy += by;
+    *r *= bs;
+}
+
 /* Acceptance in the local pass: a DUCLR is already a landmark-sized ring
  * next to a light or on the border, re-extracted and centred on its own
  * edge, so a little less lead is needed than in the global pass. */
@@ -670,7 +822,6 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     rl_hist h;
     rl_levels lv;
     rl_match m;
-    rl_profile p;
     rl_box b;
     /* extension: a window around the candidate, clipped to the image and
      * shrunk on any side that would reach into a light source (never into
@@ -771,60 +922,15 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     }
     if (out->visible < 0.5) /* more than half missing: not tried */
         return 0;
-    /* identification on the locally binarized pixels: pixels outside the
-     * image and light pixels are not gathered, so the templates are cut
-     * the same way */
-    /* identification on sector-normalized grey levels (glare varies by
-     * direction), at the centre that fits the best ids best: a coarse and
-     * a fine cross-shaped search over the polar cells, gathered once */
-    {
-        rl_polar *pol = rec->polar;
-        int top[3], ntop = 0, it, gx, gy;
-        double bx = 0, by = 0, step = 1.0, best_score;
-        rl_ident_polar(img, cx, cy, R, res->levels.light, 20.0, pol);
-        rl_ident_polar_profile(pol, 0, 0, &p);
-        rl_ident_match(&rec->ident, &p, &m);
-        top[ntop++] = m.id;
-        best_score = m.score;
-        /* the runner-up ids: the ones one code zone away count most */
-        {
-            int k;
-            for (k = 1; k <= rec->cfg.family.bits && ntop < 3; k++) {
-                int alt = m.id ^ (1 << (rec->cfg.family.bits - k));
-                rl_match mm;
-                if (!rl_family_valid(&rec->cfg.family, alt))
-                    continue;
-                rl_ident_match_ids(&rec->ident, &p, &alt, 1, &mm);
-                if (mm.id >= 0 && mm.score > m.second - 0.02)
-                    top[ntop++] = alt;
-            }
-        }
-        for (it = 0; it < 2 && m.id >= 0; it++, step *= 0.5) {
-            double cbx = bx, cby = by;
-            for (gy = -1; gy <= 1; gy++)
-                for (gx = -1; gx <= 1; gx++) {
-                    rl_match mm;
-                    if ((gx == 0) == (gy == 0)) /* the four neighbours of a cross */
-                        continue;
-                    rl_ident_polar_profile(pol, cbx + gx * step, cby + gy * step, &p);
-                    rl_ident_match_ids(&rec->ident, &p, top, ntop, &mm);
-                    if (mm.score > best_score) {
-                        best_score = mm.score;
-                        bx = cbx + gx * step;
-                        by = cby + gy * step;
-                    }
-                }
-        }
-        rl_ident_polar_profile(pol, bx, by, &p);
-        rl_ident_match(&rec->ident, &p, &m);
-        cx += bx;
-        cy += by;
-        out->u = cx;
-        out->v = cy;
-    }
+    /* identification on sector-normalized grey levels, searching the
+     * centre and the radius */
+    local_identify(rec, img, res->levels.light, &cx, &cy, &R, &m);
+    out->u = cx;
+    out->v = cy;
+    out->radius = R;
     if (m.id < 0 || m.score < LOCAL_MIN_SCORE ||
         (1.0 - m.second * m.second) < LOCAL_MIN_LEAD * (1.0 - m.score * m.score) ||
-        m.contrast < rec->cfg.min_contrast * 255.0)
+        m.contrast < rec->cfg.min_contrast * 255.0 || enclosed(img, res->levels.light, cx, cy, R))
         return 0;
     out->id = m.id;
     out->score = m.score;
