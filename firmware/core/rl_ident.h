@@ -54,7 +54,9 @@ typedef struct {
     rl_family fam;
     int n;          /* ids */
     int *ids;       /* the ids */
-    float *tmpl;    /* RL_PROFILE_BINS x n x RL_BLUR_LEVELS darkness, 0..1 (bin-major) */
+    float *tmpl;    /* RL_PROFILE_BINS x stride darkness, 0..1 (bin-major); column
+                       i * RL_BLUR_LEVELS + b is id i at blur b, the rest pads */
+    int stride;     /* columns per bin */
 } rl_ident;
 
 typedef struct {
@@ -90,8 +92,13 @@ void rl_ident_profile(const rl_image *img, double cx, double cy, double r, rl_pr
 #define RL_SECTORS 16
 
 /* Polar cells reach beyond the profile (1.2 R) so that a larger radius or
- * a shifted centre still finds its outermost pixels: 76 bins reach 1.43 R. */
-#define RL_POLAR_BINS 76
+ * a shifted centre still finds its outermost pixels: 68 bins reach
+ * 1.275 R. Further out, a search's outermost quiet-zone bins are only
+ * partly filled, which Pearson's r takes as pixels not seen. */
+#define RL_POLAR_BINS 68
+/* Zero cells before and after a sector's bins (whole vectors of 4). */
+#define RL_POLAR_PAD 4
+#define RL_POLAR_CELLS (RL_POLAR_BINS + 2 * RL_POLAR_PAD)
 
 /* A candidate gathered once into RL_SECTORS x RL_POLAR_BINS polar cells
  * (raw count, sum, sum of squares), from which the sector-normalized
@@ -101,9 +108,10 @@ void rl_ident_profile(const rl_image *img, double cx, double cy, double r, rl_pr
  * f divides every radius by f. */
 typedef struct {
     double cx, cy, r;
-    double n[RL_SECTORS][RL_POLAR_BINS];
-    double s[RL_SECTORS][RL_POLAR_BINS];
-    double q[RL_SECTORS][RL_POLAR_BINS];
+    /* bin k of a sector at [RL_POLAR_PAD + k]; the pads are zero */
+    float n[RL_SECTORS][RL_POLAR_CELLS]; /* pixels */
+    float s[RL_SECTORS][RL_POLAR_CELLS]; /* sum of darkness */
+    float q[RL_SECTORS][RL_POLAR_CELLS]; /* sum of squared darkness */
     double ux[RL_SECTORS], uy[RL_SECTORS]; /* sector directions */
     double lo[RL_SECTORS], hi[RL_SECTORS]; /* sector black and white */
     int usable[RL_SECTORS];                /* sector has enough contrast */

@@ -282,8 +282,12 @@ static void refine_radius(const rl_image *img, double cx, double cy, double *r)
 /* Nearest pixel's grey level, or -1 outside the image. */
 static int grey_at(const rl_image *img, double x, double y)
 {
-    int xi = (int)floor(x + 0.5), yi = (int)floor(y + 0.5);
-    if (xi < 0 || yi < 0 || xi >= img->width || yi >= img->height)
+    int xi, yi;
+    if (x < -0.5 || y < -0.5)
+        return -1;
+    xi = (int)(x + 0.5); /* rounding: x + 0.5 >= 0 */
+    yi = (int)(y + 0.5);
+    if (xi >= img->width || yi >= img->height)
         return -1;
     return img->data[(size_t)yi * (size_t)img->stride + xi];
 }
@@ -561,7 +565,11 @@ static int circle_solve(circle_fit *f, double *cx, double *cy, double *r)
 }
 
 /* Rays for the edge fit; samples along a ray every EDGE_STEP px. */
-#define FIT_RAYS 32
+#define FIT_RAYS 24
+/* A ray is sampled from EDGE_FROM radii over EDGE_SPAN radii: the outer
+ * edge within a fifth of a radius of the first estimate. */
+#define EDGE_FROM 0.8
+#define EDGE_SPAN 0.45
 #define EDGE_STEP 0.25
 
 /* Refine a landmark's centre and radius from its outer edge seen along
@@ -578,26 +586,36 @@ static int fit_edge_rays(const rl_image *img, int light, double *cx, double *cy,
     for (a = 0; a < FIT_RAYS; a++) {
         double c = cos((a + 0.5) * 2 * M_PI / FIT_RAYS), sn = sin((a + 0.5) * 2 * M_PI / FIT_RAYS);
         double prof[128], black = 1e9, white = -1e9;
-        int i, ns = (int)(0.6 * *r / EDGE_STEP) + 1, ok = 1, ib = 0;
+        int i, ns = (int)(EDGE_SPAN * *r / EDGE_STEP) + 1, ok = 1, ib = 0, st = img->stride;
+        double r0 = EDGE_FROM * *r, x = *cx + r0 * c, y = *cy + r0 * sn, xe, ye;
         if (ns > 128)
             ns = 128;
-        for (i = 0; i < ns && ok; i++) {
-            double rr = 0.7 * *r + i * EDGE_STEP, x = *cx + rr * c, y = *cy + rr * sn, fx, fy;
-            int x0 = (int)floor(x), y0 = (int)floor(y);
+        xe = x + (ns - 1) * EDGE_STEP * c;
+        ye = y + (ns - 1) * EDGE_STEP * sn;
+        /* a ray that leaves the image is not used: check its ends once */
+        if (x < 0 || xe < 0 || y < 0 || ye < 0 || x >= img->width - 1 || xe >= img->width - 1 ||
+            y >= img->height - 1 || ye >= img->height - 1)
+            continue;
+        for (i = 0; i < ns; i++) {
+            double rr = r0 + i * EDGE_STEP, fx, fy;
+            int x0, y0, p00, p01, p10, p11;
             const uint8_t *p;
-            if (x0 < 0 || y0 < 0 || x0 + 1 >= img->width || y0 + 1 >= img->height) {
-                ok = 0;
-                break;
-            }
-            p = img->data + (size_t)y0 * (size_t)img->stride + x0;
-            if (p[0] >= light || p[1] >= light || p[img->stride] >= light || p[img->stride + 1] >= light) {
+            x = *cx + rr * c;
+            y = *cy + rr * sn;
+            x0 = (int)x; /* x, y >= 0: truncation is floor */
+            y0 = (int)y;
+            p = img->data + (size_t)y0 * (size_t)st + x0;
+            p00 = p[0];
+            p01 = p[1];
+            p10 = p[st];
+            p11 = p[st + 1];
+            if (p00 >= light || p01 >= light || p10 >= light || p11 >= light) {
                 ok = 0;
                 break;
             }
             fx = x - x0;
             fy = y - y0;
-            prof[i] = (1 - fy) * ((1 - fx) * p[0] + fx * p[1]) +
-                      fy * ((1 - fx) * p[img->stride] + fx * p[img->stride + 1]);
+            prof[i] = (1 - fy) * ((1 - fx) * p00 + fx * p01) + fy * ((1 - fx) * p10 + fx * p11);
             if (rr <= *r && prof[i] < black) {
                 black = prof[i];
                 ib = i;
@@ -627,7 +645,7 @@ static int fit_edge_rays(const rl_image *img, int light, double *cx, double *cy,
                 double rr;
                 if (off > 1) off = 1;
                 if (off < -1) off = -1;
-                rr = 0.7 * *r + (ig + off) * EDGE_STEP;
+                rr = EDGE_FROM * *r + (ig + off) * EDGE_STEP;
                 ex[n] = *cx + rr * c;
                 ey[n] = *cy + rr * sn;
                 n++;
@@ -730,10 +748,11 @@ static int fit_outer_edge(const rl_label *lb, int reg, const rl_image *win, int 
 
 /* Search steps of the local identification: centre (px) and radius
  * (fraction) steps of each round, after a first sweep over radii. */
-#define SEARCH_ROUNDS 3
-static const double search_shift[SEARCH_ROUNDS] = {1.0, 0.5, 0.25};
-static const double search_scale[SEARCH_ROUNDS] = {0.02, 0.01, 0.005};
-static const double sweep_scale[4] = {0.92, 0.96, 1.04, 1.08};
+#define SEARCH_ROUNDS 2
+static const double search_shift[SEARCH_ROUNDS] = {1.0, 0.5};
+static const double search_scale[SEARCH_ROUNDS] = {0.03, 0.015};
+#define SWEEP 2
+static const double sweep_scale[SWEEP] = {0.94, 1.06};
 
 /* Identification of a DUCLR on sector-normalized grey levels (glare
  * varies by direction), gathered once into polar cells around
@@ -741,8 +760,9 @@ static const double sweep_scale[4] = {0.92, 0.96, 1.04, 1.08};
  * the border hides most of the outer edge, and a wrong radius reads the
  * outer ring as a code ring: so the centre and the radius that fit the
  * likely ids best are searched (a sweep over radii, then rounds of a
- * cross over the centre and one step either way in radius), and every id
- * is scored at the end. (*cx, *cy, *r) are updated to the best fit. */
+ * cross over the centre and one step either way in radius, scoring the
+ * likely ids at the first match's blur), and every id at every blur is
+ * scored at the end. (*cx, *cy, *r) are updated to the best fit. */
 static void local_identify(rl_recog *rec, const rl_image *img, int light, double *cx,
                            double *cy, double *r, rl_match *m)
 {
@@ -768,10 +788,10 @@ static void local_identify(rl_recog *rec, const rl_image *img, int light, double
         if (mm.id >= 0 && mm.score > m->second - 0.05)
             top[ntop++] = alt;
     }
-    for (k = 0; k < 4; k++) {
+    for (k = 0; k < SWEEP; k++) {
         rl_match mm;
         rl_ident_polar_profile(pol, 0, 0, sweep_scale[k], &p);
-        rl_ident_match_ids(&rec->ident, &p, top, ntop, -1, &mm);
+        rl_ident_match_ids(&rec->ident, &p, top, ntop, m->blur, &mm);
         if (mm.score > best_score) {
             best_score = mm.score;
             bs = sweep_scale[k];
@@ -785,7 +805,7 @@ static void local_identify(rl_recog *rec, const rl_image *img, int light, double
             double ts = cbs * (1.0 + dir[k][2] * search_scale[it]);
             rl_match mm;
             rl_ident_polar_profile(pol, tx, ty, ts, &p);
-            rl_ident_match_ids(&rec->ident, &p, top, ntop, -1, &mm);
+            rl_ident_match_ids(&rec->ident, &p, top, ntop, m->blur, &mm);
             if (mm.score > best_score) {
                 best_score = mm.score;
                 bx = tx;
@@ -808,9 +828,9 @@ static void local_identify(rl_recog *rec, const rl_image *img, int light, double
 #define LOCAL_MIN_LEAD 1.3
 
 /* Window half-size around a DUCLR, in expected radii: room for the whole
- * landmark and its quiet zone even when the centre estimate of a ring
- * broken by glare is off by half a radius. */
-#define WINDOW_RADII 2.0
+ * landmark and its quiet zone with a quarter radius to spare for the
+ * centre estimate of a ring broken by glare. */
+#define WINDOW_RADII 1.5
 
 /* Retry one DUCLR; 1 if identified (into *out). */
 static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *res,
@@ -847,7 +867,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
         return 0;
     /* local clustering: K-means on the window alone, light excluded, so the
      * threshold follows the local illumination */
-    rl_hist_compute(&win, &h);
+    rl_hist_compute_rows(&win, &h, 2); /* every other row: thousands of pixels still */
     if (rl_hist_kmeans(&h, 0, res->levels.light, 2, lv.centre, NULL) != RL_OK)
         return 0;
     if (lv.centre[1] - lv.centre[0] < 8.0)
@@ -882,21 +902,13 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     cx += x0;
     cy += y0;
     {
-        /* then the grey outer edge, twice from the improving centre */
-        double rx = cx, ry = cy, rr = R;
-        int it;
-        for (it = 0; it < 2; it++) {
-            double tx = rx, ty = ry, tr = R;
-            if (!fit_edge_rays(img, res->levels.light, &tx, &ty, &tr))
-                break;
-            rx = tx;
-            ry = ty;
-            rr = tr;
-        }
-        if (it > 0) {
-            cx = rx;
-            cy = ry;
-            fr = rr;
+        /* then the grey outer edge, from that centre (the identification
+         * below refines centre and radius once more) */
+        double tx = cx, ty = cy, tr = R;
+        if (fit_edge_rays(img, res->levels.light, &tx, &ty, &tr)) {
+            cx = tx;
+            cy = ty;
+            fr = tr;
         }
     }
     if (fabs(fr - R) > 0.3 * R)
