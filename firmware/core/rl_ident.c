@@ -216,6 +216,23 @@ void rl_ident_polar(const rl_image *img, double cx, double cy, double r, int lig
             }
         }
     }
+    /* Normalized, the two sectors of each octant are summed for the
+     * profiles: a shift moves a pixel by d . u for its own direction u,
+     * which the octant's middle direction gives within cos(22.5 deg), 8%
+     * of a shift of at most 1.5 px. Half the cells, half the work of every
+     * profile. A washed-out sector is left out. */
+    for (sct = 0; sct < RL_SECTORS / 2; sct++) {
+        int a = 2 * sct, b = 2 * sct + 1, use_a = pol->usable[a], use_b = pol->usable[b];
+        double ux = pol->ux[a] + pol->ux[b], uy = pol->uy[a] + pol->uy[b], len = sqrt(ux * ux + uy * uy);
+        for (k = 0; k < RL_POLAR_CELLS; k++) {
+            pol->n[sct][k] = (use_a ? pol->n[a][k] : 0) + (use_b ? pol->n[b][k] : 0);
+            pol->s[sct][k] = (use_a ? pol->s[a][k] : 0) + (use_b ? pol->s[b][k] : 0);
+            pol->q[sct][k] = (use_a ? pol->q[a][k] : 0) + (use_b ? pol->q[b][k] : 0);
+        }
+        pol->ux[sct] = ux / len;
+        pol->uy[sct] = uy / len;
+        pol->merged_usable[sct] = use_a || use_b;
+    }
 }
 
 /* Guard bins either side of the shifted profile: a shift of up to
@@ -237,14 +254,14 @@ void rl_ident_polar_profile(const rl_polar *pol, double dx, double dy, double sc
     memset(mn, 0, sizeof mn);
     memset(ms, 0, sizeof ms);
     memset(mq, 0, sizeof mq);
-    for (sct = 0; sct < RL_SECTORS; sct++) {
+    for (sct = 0; sct < RL_SECTORS / 2; sct++) {
         /* c[k] is bin k; c[-1] and c[RL_POLAR_BINS] are pads */
         const float *cn = pol->n[sct] + RL_POLAR_PAD, *cs = pol->s[sct] + RL_POLAR_PAD;
         const float *cq = pol->q[sct] + RL_POLAR_PAD;
         float u, w, *on, *os, *oq;
         double sh;
         int j0;
-        if (!pol->usable[sct])
+        if (!pol->merged_usable[sct])
             continue;
         /* cell k moves to k + sh: (1 - w) of it to k + j0, w to k + j0 + 1 */
         sh = -(dx * pol->ux[sct] + dy * pol->uy[sct]) / bw;

@@ -115,6 +115,8 @@ typedef struct {
     double ux[RL_SECTORS], uy[RL_SECTORS]; /* sector directions */
     double lo[RL_SECTORS], hi[RL_SECTORS]; /* sector black and white */
     int usable[RL_SECTORS];                /* sector has enough contrast */
+    int merged_usable[RL_SECTORS / 2];     /* after the octants' sectors are summed
+                                              into the first half of the arrays */
 } rl_polar;
 
 /* Gather a candidate into polar cells and normalize each sector by its
