@@ -121,8 +121,10 @@ typedef struct {
 
 /* Gather a candidate into polar cells and normalize each sector by its
  * own black and white; sectors with less than min_contrast grey levels
- * between them (washed out) are left out. After this the cells hold the
- * normalized darkness (count, sum, sum of squares). */
+ * between them (washed out) are left out. After this the first
+ * RL_SECTORS / 2 rows of cells hold the normalized darkness (count, sum,
+ * sum of squares) of each octant, its two sectors summed, and ux, uy the
+ * octants' middle directions. */
 void rl_ident_polar(const rl_image *img, double cx, double cy, double r, int light,
                     double min_contrast, rl_polar *pol);
 
