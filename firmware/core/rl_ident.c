@@ -141,9 +141,11 @@ void rl_ident_polar(const rl_image *img, double cx, double cy, double r, int lig
     pol->r = r;
     for (sct = 0; sct < RL_SECTORS; sct++) {
         /* mid-angle of each sector, laid out as in the gather below */
+        /* cos and sin of 11.25 and 33.75 degrees */
+        static const double cs[2][2] = {{0.98078528040323043, 0.19509032201612825},
+                                        {0.83146961230254524, 0.55557023301960218}};
         int oct = sct / 2, sub = sct % 2, major = oct % 2;
-        double a = (sub ? 33.75 : 11.25) * M_PI / 180.0;
-        double ax = major ? cos(a) : sin(a), ay = major ? sin(a) : cos(a);
+        double ax = major ? cs[sub][0] : cs[sub][1], ay = major ? cs[sub][1] : cs[sub][0];
         pol->ux[sct] = (oct / 4 ? -1.0 : 1.0) * ax;
         pol->uy[sct] = ((oct / 2) % 2 ? -1.0 : 1.0) * ay;
     }

@@ -265,6 +265,20 @@ static void refine_radius(const rl_image *img, double cx, double cy, double *r)
     }
 }
 
+/* Directions of n rays at angles (a + 0.5) 2 pi / n, by rotation from the
+ * first (four trigonometric calls instead of 2 n). */
+static void ray_dirs(int n, double *c, double *s)
+{
+    double dc = cos(2 * M_PI / n), ds = sin(2 * M_PI / n);
+    int a;
+    c[0] = cos(M_PI / n);
+    s[0] = sin(M_PI / n);
+    for (a = 1; a < n; a++) {
+        c[a] = c[a - 1] * dc - s[a - 1] * ds;
+        s[a] = s[a - 1] * dc + c[a - 1] * ds;
+    }
+}
+
 /* ---- inner rings ------------------------------------------------------- */
 
 /* A code ring of a landmark can look like a whole landmark of half its
@@ -296,8 +310,10 @@ static int enclosed(const rl_image *img, int light, double cx, double cy, double
 {
     double hit[ENCLOSE_RAYS], med;
     int a, clear = 0, nhit = 0, agree = 0, i, j;
+    double dc[ENCLOSE_RAYS], ds[ENCLOSE_RAYS];
+    ray_dirs(ENCLOSE_RAYS, dc, ds);
     for (a = 0; a < ENCLOSE_RAYS; a++) {
-        double c = cos((a + 0.5) * 2 * M_PI / ENCLOSE_RAYS), sn = sin((a + 0.5) * 2 * M_PI / ENCLOSE_RAYS);
+        double c = dc[a], sn = ds[a];
         double rho;
         int ink = 256, paper = -1, mid, g = 0;
         /* the candidate's own ink (outer ring) and paper (quiet zone) here */
@@ -583,8 +599,10 @@ static int fit_edge_rays(const rl_image *img, int light, double *cx, double *cy,
     double ex[FIT_RAYS], ey[FIT_RAYS], ncx, ncy, nr;
     int a, n = 0, pass;
     circle_fit f;
+    double dc[FIT_RAYS], ds[FIT_RAYS];
+    ray_dirs(FIT_RAYS, dc, ds);
     for (a = 0; a < FIT_RAYS; a++) {
-        double c = cos((a + 0.5) * 2 * M_PI / FIT_RAYS), sn = sin((a + 0.5) * 2 * M_PI / FIT_RAYS);
+        double c = dc[a], sn = ds[a];
         double prof[128], black = 1e9, white = -1e9;
         int i, ns = (int)(EDGE_SPAN * *r / EDGE_STEP) + 1, ok = 1, ib = 0, st = img->stride;
         double r0 = EDGE_FROM * *r, x = *cx + r0 * c, y = *cy + r0 * sn, xe, ye;
