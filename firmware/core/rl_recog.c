@@ -396,6 +396,18 @@ static double disk_visible(double r, double d)
     return 1.0 - seg / (M_PI * r * r);
 }
 
+/* Fraction of a disk of radius r at (cx, cy) inside a W x H image, from
+ * the side that cuts most (a corner cut counts as its larger cut). */
+static double visible_in(int W, int H, double cx, double cy, double r)
+{
+    double v = 1.0;
+    v = fmin(v, disk_visible(r, cx + 0.5));
+    v = fmin(v, disk_visible(r, W - 0.5 - cx));
+    v = fmin(v, disk_visible(r, cy + 0.5));
+    v = fmin(v, disk_visible(r, H - 0.5 - cy));
+    return v;
+}
+
 /* Centre, radius and visible fraction of a CLR from its bounding box:
  * an uncut box is the disk's; a box cut by one image side keeps the true
  * diameter across the cut, and the centre lies one radius in from the far
@@ -832,6 +844,8 @@ static void local_identify(rl_recog *rec, const rl_image *img, int light, double
             }
         }
     }
+    if (bx == 0 && by == 0 && bs == 1.0)
+        return; /* the first match stands: every id was scored there */
     rl_ident_polar_profile(pol, bx, by, bs, &p);
     rl_ident_match(&rec->ident, &p, m);
     *cx += bx;
@@ -936,21 +950,8 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     /* the fitted radius, not the frame's median: lens distortion makes
      * landmarks smaller away from the image centre */
     R = fr;
-    out->u = cx;
-    out->v = cy;
-    out->radius = R;
     out->pass = RL_PASS_LOCAL;
-    out->complete = cx - R >= -0.5 && cy - R >= -0.5 && cx + R <= W - 0.5 && cy + R <= H - 0.5;
-    {
-        /* visible fraction from the image sides */
-        double v = 1.0;
-        v = fmin(v, disk_visible(R, cx + 0.5));
-        v = fmin(v, disk_visible(R, W - 0.5 - cx));
-        v = fmin(v, disk_visible(R, cy + 0.5));
-        v = fmin(v, disk_visible(R, H - 0.5 - cy));
-        out->visible = v;
-    }
-    if (out->visible < 0.5) /* more than half missing: not tried */
+    if (visible_in(W, H, cx, cy, R) < 0.5) /* more than half missing: not tried */
         return 0;
     /* identification on sector-normalized grey levels, searching the
      * centre and the radius */
@@ -958,6 +959,8 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     out->u = cx;
     out->v = cy;
     out->radius = R;
+    out->complete = cx - R >= -0.5 && cy - R >= -0.5 && cx + R <= W - 0.5 && cy + R <= H - 0.5;
+    out->visible = visible_in(W, H, cx, cy, R);
     if (m.id < 0 || m.score < LOCAL_MIN_SCORE ||
         (1.0 - m.second * m.second) < LOCAL_MIN_LEAD * (1.0 - m.score * m.score) ||
         m.contrast < rec->cfg.min_contrast * 255.0 || enclosed(img, res->levels.light, cx, cy, R))
