@@ -127,15 +127,68 @@ void rl_ident_profile(const rl_image *img, double cx, double cy, double r, rl_pr
 
 /* Pixels of a row whose cells are found before they are summed. */
 #define GATHER_CHUNK 64
+#define GATHER_BLOCK 16
+
+/* A cell's packed sums: from the top, the count in 12 bits, the sum of
+ * grey levels in 20 and the sum of their squares in the low 32 (used up
+ * to 31): room for PACK_MAX pixels of level 255. The two halves are
+ * unpacked as 32-bit integers. */
+#define PACK_N_SHIFT 52
+#define PACK_S_SHIFT 32
+#define PACK_MAX 4095 /* 4095 * 255 < 2^20, 4095 * 255^2 < 2^31 */
+
+/* Add the packed sums to the raw float cells and clear them. */
+static void unpack_cells(rl_polar *pol)
+{
+    int sct, k;
+    for (sct = 0; sct < RL_SECTORS; sct++) {
+        uint64_t *a = pol->acc[sct] + RL_POLAR_PAD;
+        float *n = pol->n[sct] + RL_POLAR_PAD, *sm = pol->s[sct] + RL_POLAR_PAD;
+        float *q = pol->q[sct] + RL_POLAR_PAD;
+        for (k = 0; k < RL_POLAR_BINS; k++) {
+            uint32_t hi = (uint32_t)(a[k] >> PACK_S_SHIFT), lo = (uint32_t)a[k];
+            n[k] += (float)(int32_t)(hi >> (PACK_N_SHIFT - PACK_S_SHIFT));
+            sm[k] += (float)(int32_t)(hi & ((1u << (PACK_N_SHIFT - PACK_S_SHIFT)) - 1));
+            q[k] += (float)(int32_t)lo;
+            a[k] = 0;
+        }
+    }
+}
+
+/* Smallest integer >= v and largest <= v, without libm calls. */
+static int iceil(double v)
+{
+    int t = (int)v;
+    return t < v ? t + 1 : t;
+}
+
+static int ifloor(double v)
+{
+    int t = (int)v;
+    return t > v ? t - 1 : t;
+}
 
 void rl_ident_polar(const rl_image *img, double cx, double cy, double r, int light,
                     double min_contrast, rl_polar *pol)
 {
     double bw = RL_PROFILE_EXTENT * r / RL_PROFILE_BINS, lim = RL_POLAR_BINS * bw;
+    /* pixels a cell can hold: its hull fits a box of bw by the sector's
+     * chord (0.4 lim); past PACK_MAX the sums are moved out every few rows */
+    double span = bw + 0.4 * lim + 1.0;
+    int flush_rows = (span + 1.0) * span <= PACK_MAX ? 1 << 30 : (int)(PACK_MAX / (span + 1.0));
     float inv = (float)(1.0 / bw), fcx = (float)cx;
-    int y, k, sct, y0 = (int)ceil(cy - lim), y1 = (int)floor(cy + lim);
-    float *pn = &pol->n[0][0], *ps = &pol->s[0][0], *pq = &pol->q[0][0];
-    memset(pol, 0, sizeof *pol);
+    int y, k, sct, y0 = iceil(cy - lim), y1 = ifloor(cy + lim), rows = 0;
+    uint64_t *acc = &pol->acc[0][0];
+    memset(pol->acc, 0, sizeof pol->acc);
+    memset(pol->n, 0, sizeof pol->n);
+    memset(pol->s, 0, sizeof pol->s);
+    memset(pol->q, 0, sizeof pol->q);
+    if (flush_rows < 1)
+        flush_rows = 1;
+    for (k = 0; k < 256; k++)
+        pol->lut[k] = k < light ? ((uint64_t)1 << PACK_N_SHIFT) | ((uint64_t)k << PACK_S_SHIFT) |
+                                      (uint64_t)(k * k)
+                                : 0; /* light is not gathered */
     pol->cx = cx;
     pol->cy = cy;
     pol->r = r;
@@ -155,85 +208,104 @@ void rl_ident_polar(const rl_image *img, double cx, double cy, double r, int lig
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
         double dy = y - cy, half = lim * lim - dy * dy;
         float fdy = (float)dy, dy2 = fdy * fdy, ady = fabsf(fdy);
-        int x0, x1, xs, up = dy < 0;
+        /* sector s's cells start at s * RL_POLAR_CELLS; s = 8 (left) + 4
+         * (above) + 2 (|dx| > |dy|) + 1 (the half of the octant away from
+         * the axis) */
+        int x0, x1, xs, rowbase = (dy < 0 ? 4 * RL_POLAR_CELLS : 0) + RL_POLAR_PAD;
         if (half <= 0)
             continue;
+        if (++rows > flush_rows) {
+            unpack_cells(pol);
+            rows = 1;
+        }
         /* the row's span inside the outer circle */
         half = sqrt(half);
-        x0 = (int)ceil(cx - half);
-        x1 = (int)floor(cx + half);
+        x0 = iceil(cx - half);
+        x1 = ifloor(cx + half);
         if (x0 < 0) x0 = 0;
         if (x1 > img->width - 1) x1 = img->width - 1;
         /* a chunk of the row at a time: first every pixel's cell (plain
          * arithmetic), then the sums */
         for (xs = x0; xs <= x1; xs += GATHER_CHUNK) {
             int nx = x1 - xs + 1 < GATHER_CHUNK ? x1 - xs + 1 : GATHER_CHUNK, i;
-            int cell[GATHER_CHUNK];
-            for (i = 0; i < nx; i++) {
-                float dx = (float)(xs + i) - fcx, adx = fabsf(dx);
-                int major = adx > ady, sub, kk;
-                /* 16 sectors from the octant and whether the smaller
-                 * coordinate is above tan(22.5 deg) of the larger (no atan2) */
-                sub = major ? ady > 0.41421356f * adx : adx > 0.41421356f * ady;
-                kk = (int)(sqrtf(dx * dx + dy2) * inv);
-                kk = kk < RL_POLAR_BINS ? kk : RL_POLAR_BINS - 1; /* rounding at the rim */
-                cell[i] = ((((dx < 0) * 4 + up * 2 + major) * 2 + sub) * RL_POLAR_CELLS) +
-                          RL_POLAR_PAD + kk;
+            int cell[GATHER_CHUNK], b;
+            /* blocks of GATHER_BLOCK pixels: a fixed count the compiler
+             * vectorizes (the block's tail past the row costs nothing) */
+            for (b = 0; b < nx; b += GATHER_BLOCK) {
+                float bx = (float)(xs + b) - fcx;
+                int *cb = cell + b;
+                for (i = 0; i < GATHER_BLOCK; i++) {
+                    float dx = bx + (float)i, adx = fabsf(dx);
+                    float lo = adx < ady ? adx : ady, hi = adx < ady ? ady : adx;
+                    /* the bin, the rim's rounding kept in the last one */
+                    float d = sqrtf(dx * dx + dy2) * inv;
+                    d = d < RL_POLAR_BINS - 0.5f ? d : RL_POLAR_BINS - 0.5f;
+                    /* 16 sectors from the octant and whether the smaller
+                     * coordinate is above tan(22.5 deg) of the larger (no atan2) */
+                    cb[i] = rowbase + (dx < 0 ? 8 * RL_POLAR_CELLS : 0) +
+                            (adx > ady ? 2 * RL_POLAR_CELLS : 0) +
+                            (lo > 0.41421356f * hi ? RL_POLAR_CELLS : 0) + (int)d;
+                }
             }
-            for (i = 0; i < nx; i++) {
-                float v = row[xs + i];
-                if (row[xs + i] >= light)
-                    continue;
-                pn[cell[i]] += 1;
-                ps[cell[i]] += v;
-                pq[cell[i]] += v * v;
-            }
+            for (i = 0; i < nx; i++)
+                acc[cell[i]] += pol->lut[row[xs + i]];
         }
     }
+    unpack_cells(pol);
     /* sector black and white: extreme means over groups of 4 bins of the
      * profile's extent */
     for (sct = 0; sct < RL_SECTORS; sct++) {
-        const float *cn = pol->n[sct] + RL_POLAR_PAD;
-        float *cs = pol->s[sct] + RL_POLAR_PAD, *cq = pol->q[sct] + RL_POLAR_PAD;
+        const float *cn = pol->n[sct] + RL_POLAR_PAD, *cs = pol->s[sct] + RL_POLAR_PAD;
         pol->lo[sct] = 1e9;
         pol->hi[sct] = -1e9;
         for (k = 0; k + 3 < RL_PROFILE_BINS; k += 4) {
-            double n = (double)cn[k] + cn[k + 1] + cn[k + 2] + cn[k + 3];
+            float n = cn[k] + cn[k + 1] + cn[k + 2] + cn[k + 3];
             double m;
             if (n < 2)
                 continue;
-            m = ((double)cs[k] + cs[k + 1] + cs[k + 2] + cs[k + 3]) / n;
+            m = (double)(cs[k] + cs[k + 1] + cs[k + 2] + cs[k + 3]) / n;
             if (m < pol->lo[sct]) pol->lo[sct] = m;
             if (m > pol->hi[sct]) pol->hi[sct] = m;
         }
-        /* normalize once: darkness v = a - b I maps the sector's white to
-         * 0 and its black to 255 */
         pol->usable[sct] = pol->hi[sct] - pol->lo[sct] >= min_contrast;
-        if (pol->usable[sct]) {
-            double b = 255.0 / (pol->hi[sct] - pol->lo[sct]), a = b * pol->hi[sct];
-            for (k = 0; k < RL_POLAR_BINS; k++) {
-                double n = cn[k], sv = cs[k];
-                cs[k] = (float)(n * a - b * sv);
-                cq[k] = (float)(n * a * a - 2 * a * b * sv + b * b * cq[k]);
-            }
-        }
     }
-    /* Normalized, the two sectors of each octant are summed for the
+    /* Normalized (darkness v = a - b I maps a sector's white to 0 and its
+     * black to 255), the two sectors of each octant are summed for the
      * profiles: a shift moves a pixel by d . u for its own direction u,
      * which the octant's middle direction gives within cos(22.5 deg), 8%
      * of a shift of at most 1.5 px. Half the cells, half the work of every
-     * profile. A washed-out sector is left out. */
+     * profile. A washed-out sector is left out. Octant o is written over
+     * sector o, which octant o / 2 has already read. */
     for (sct = 0; sct < RL_SECTORS / 2; sct++) {
-        int a = 2 * sct, b = 2 * sct + 1, use_a = pol->usable[a], use_b = pol->usable[b];
-        double ux = pol->ux[a] + pol->ux[b], uy = pol->uy[a] + pol->uy[b], len = sqrt(ux * ux + uy * uy);
-        for (k = 0; k < RL_POLAR_CELLS; k++) {
-            pol->n[sct][k] = (use_a ? pol->n[a][k] : 0) + (use_b ? pol->n[b][k] : 0);
-            pol->s[sct][k] = (use_a ? pol->s[a][k] : 0) + (use_b ? pol->s[b][k] : 0);
-            pol->q[sct][k] = (use_a ? pol->q[a][k] : 0) + (use_b ? pol->q[b][k] : 0);
+        int h, k0 = RL_POLAR_PAD;
+        double ux = pol->ux[2 * sct] + pol->ux[2 * sct + 1];
+        double uy = pol->uy[2 * sct] + pol->uy[2 * sct + 1], len = sqrt(ux * ux + uy * uy);
+        float on[RL_POLAR_BINS], os[RL_POLAR_BINS], oq[RL_POLAR_BINS];
+        for (k = 0; k < RL_POLAR_BINS; k++)
+            on[k] = os[k] = oq[k] = 0;
+        for (h = 0; h < 2; h++) {
+            int from = 2 * sct + h;
+            const float *cn = pol->n[from] + k0, *cs = pol->s[from] + k0, *cq = pol->q[from] + k0;
+            float b, a, a2, ab2, b2;
+            if (!pol->usable[from])
+                continue;
+            b = (float)(255.0 / (pol->hi[from] - pol->lo[from]));
+            a = (float)(b * pol->hi[from]);
+            a2 = a * a;
+            ab2 = 2 * a * b;
+            b2 = b * b;
+            for (k = 0; k < RL_POLAR_BINS; k++) {
+                on[k] += cn[k];
+                os[k] += cn[k] * a - b * cs[k];
+                oq[k] += cn[k] * a2 - ab2 * cs[k] + b2 * cq[k];
+            }
         }
+        memcpy(pol->n[sct] + k0, on, sizeof on);
+        memcpy(pol->s[sct] + k0, os, sizeof os);
+        memcpy(pol->q[sct] + k0, oq, sizeof oq);
         pol->ux[sct] = ux / len;
         pol->uy[sct] = uy / len;
-        pol->merged_usable[sct] = use_a || use_b;
+        pol->merged_usable[sct] = pol->usable[2 * sct] || pol->usable[2 * sct + 1];
     }
 }
 
@@ -346,8 +418,33 @@ static void keep_column(rl_match *m, const profile_terms *z, int id, int blur, d
     }
 }
 
+/* Score nc <= MATCH_BLOCK columns, anywhere in the table, together (their
+ * sums are independent, so they run side by side). */
+static void score_columns(const rl_ident *id, const float *fn, const float *fs, const int *cols,
+                          int nc, const profile_terms *z, rl_match *m)
+{
+    float st[MATCH_BLOCK] = {0}, stt[MATCH_BLOCK] = {0}, sxt[MATCH_BLOCK] = {0};
+    int k, c;
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        const float *t = id->tmpl + (size_t)k * (size_t)id->stride;
+        float nk = fn[k], sk = fs[k];
+        if (nk == 0)
+            continue;
+        for (c = 0; c < nc; c++) {
+            float tv = t[cols[c]];
+            st[c] += nk * tv;
+            stt[c] += nk * tv * tv;
+            sxt[c] += sk * tv;
+        }
+    }
+    for (c = 0; c < nc; c++)
+        keep_column(m, z, id->ids[cols[c] / RL_BLUR_LEVELS], cols[c] % RL_BLUR_LEVELS, st[c],
+                    stt[c], sxt[c]);
+}
+
 /* Score the templates of `ids` (every template when ids is NULL) at the
- * blur levels [b0, b1). */
+ * blur levels [b0, b1), in single precision: 64 bins of sums lose no more
+ * than 1e-5 of the correlation. */
 static void match_some(const rl_ident *id, const rl_profile *p, const int *ids, int n_ids,
                        int b0, int b1, rl_match *m)
 {
@@ -369,40 +466,30 @@ static void match_some(const rl_ident *id, const rl_profile *p, const int *ids, 
     z.n = n;
     z.sx = sx;
     z.ivx = 1.0 / sqrt(vx);
-    if (ids != NULL) {
-        /* a short list: each of its columns on its own */
-        for (j = 0; j < n_ids; j++) {
-            int i;
-            for (i = 0; i < id->n && id->ids[i] != ids[j]; i++)
-                ;
-            if (i == id->n)
-                continue;
-            {
-                /* its blur levels are side by side in each bin */
-                double a[RL_BLUR_LEVELS] = {0}, aa[RL_BLUR_LEVELS] = {0}, ax[RL_BLUR_LEVELS] = {0};
-                int b;
-                for (k = 0; k < RL_PROFILE_BINS; k++) {
-                    const float *t = id->tmpl + tmpl_index(id, i, 0, k);
-                    double nk = p->n[k], sk = p->sx[k];
-                    for (b = 0; b < RL_BLUR_LEVELS; b++) {
-                        double tv = t[b];
-                        a[b] += nk * tv;
-                        aa[b] += nk * tv * tv;
-                        ax[b] += sk * tv;
-                    }
-                }
-                for (b = b0; b < b1; b++)
-                    keep_column(m, &z, ids[j], b, a[b], aa[b], ax[b]);
-            }
-        }
-        return;
-    }
-    /* every column, a block at a time, in single precision: 64 bins of
-     * sums lose no more than 1e-5 of the correlation */
     for (k = 0; k < RL_PROFILE_BINS; k++) {
         fn[k] = (float)p->n[k];
         fs[k] = (float)p->sx[k];
     }
+    if (ids != NULL) {
+        /* a short list: its columns gathered, scored together */
+        int cols[MATCH_BLOCK], nc = 0;
+        for (j = 0; j < n_ids; j++) {
+            int i, b;
+            for (i = 0; i < id->n && id->ids[i] != ids[j]; i++)
+                ;
+            for (b = b0; b < b1 && i < id->n; b++) {
+                cols[nc++] = i * RL_BLUR_LEVELS + b;
+                if (nc == MATCH_BLOCK) {
+                    score_columns(id, fn, fs, cols, nc, &z, m);
+                    nc = 0;
+                }
+            }
+        }
+        if (nc > 0)
+            score_columns(id, fn, fs, cols, nc, &z, m);
+        return;
+    }
+    /* every column, a block at a time */
     for (c0 = 0; c0 < ncol; c0 += MATCH_BLOCK) {
         float st[MATCH_BLOCK], stt[MATCH_BLOCK], sxt[MATCH_BLOCK];
         int nc = ncol - c0 < MATCH_BLOCK ? ncol - c0 : MATCH_BLOCK;

@@ -112,6 +112,11 @@ typedef struct {
     float n[RL_SECTORS][RL_POLAR_CELLS]; /* pixels */
     float s[RL_SECTORS][RL_POLAR_CELLS]; /* sum of darkness */
     float q[RL_SECTORS][RL_POLAR_CELLS]; /* sum of squared darkness */
+    /* while gathering: count, sum and sum of squares of grey levels packed
+     * in one integer per cell (one add per pixel), from a table per level;
+     * the float cells above then hold raw sums until normalized */
+    uint64_t acc[RL_SECTORS][RL_POLAR_CELLS];
+    uint64_t lut[256];
     double ux[RL_SECTORS], uy[RL_SECTORS]; /* sector directions */
     double lo[RL_SECTORS], hi[RL_SECTORS]; /* sector black and white */
     int usable[RL_SECTORS];                /* sector has enough contrast */
