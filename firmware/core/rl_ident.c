@@ -354,36 +354,80 @@ void rl_ident_polar_profile(const rl_polar *pol, double dx, double dy, double sc
             oq[k] += u * cq[k] + w * cq[k - 1];
         }
     }
-    for (k = 0; k < RL_PROFILE_BINS; k++)
-        p->n[k] = p->sx[k] = 0;
     /* mid bin m (centre m - SHIFT_GUARD + 0.5 bins out) lands at output
-     * t = a (m - SHIFT_GUARD + 0.5) - 0.5 */
+     * t = a (m - SHIFT_GUARD + 0.5) - 0.5, (1 - w) of it in bin j = floor(t)
+     * and w in j + 1. t grows with m, so bins j and j + 1 are summed in
+     * registers and bin j is written once t has moved past it. */
+    if (scale == 1.0) {
+        /* as gathered: mid bin SHIFT_GUARD + j is bin j */
+        float tn = 0, tq = 0;
+        for (k = 0; k < RL_PROFILE_BINS; k++) {
+            p->n[k] = mn[SHIFT_GUARD + k];
+            p->sx[k] = ms[SHIFT_GUARD + k];
+            tn += mn[SHIFT_GUARD + k];
+            tq += mq[SHIFT_GUARD + k];
+        }
+        p->total = tn;
+        p->sxx = tq;
+        return;
+    }
     b = a * (0.5 - SHIFT_GUARD) - 0.5;
-    for (m = 0; m < MID_BINS; m++) {
-        double t = a * m + b, w, lo, hi;
-        int j;
-        if (t < -1.0 || mn[m] == 0)
-            continue;
-        if (t >= RL_PROFILE_BINS)
-            break; /* t grows with m */
-        j = (int)(t + 1.0) - 1; /* floor: t >= -1 */
-        w = t - j; /* share of bin j + 1 */
-        lo = j >= 0 ? 1.0 - w : 0.0;
-        hi = j + 1 < RL_PROFILE_BINS ? w : 0.0;
-        if (lo > 0) {
-            p->n[j] += lo * mn[m];
-            p->sx[j] += lo * ms[m];
+    m = (int)((-1.0 - b) / a); /* the first m with t >= -1, or one before */
+    if (m < 0)
+        m = 0;
+    {
+        float n0 = 0, n1 = 0, s0 = 0, s1 = 0, q0 = 0, q1 = 0, tq = 0, tn = 0;
+        int cur = -1; /* the bin n0, s0, q0 hold; n1, s1, q1 hold cur + 1 */
+        for (; m < MID_BINS; m++) {
+            double t = a * m + b;
+            float w, v;
+            int j;
+            if (t < -1.0)
+                continue;
+            if (t >= RL_PROFILE_BINS)
+                break;
+            j = (int)(t + 1.0) - 1; /* floor: t >= -1 */
+            while (cur < j) {
+                /* bin cur is complete */
+                if (cur >= 0) {
+                    p->n[cur] = n0;
+                    p->sx[cur] = s0;
+                    tn += n0;
+                    tq += q0;
+                }
+                cur++;
+                n0 = n1;
+                s0 = s1;
+                q0 = q1;
+                n1 = s1 = q1 = 0;
+            }
+            w = (float)(t - j);
+            v = 1.0f - w;
+            n0 += v * mn[m];
+            s0 += v * ms[m];
+            q0 += v * mq[m];
+            n1 += w * mn[m];
+            s1 += w * ms[m];
+            q1 += w * mq[m];
         }
-        if (hi > 0) {
-            p->n[j + 1] += hi * mn[m];
-            p->sx[j + 1] += hi * ms[m];
+        /* the last two bins, if inside; bins never reached are empty */
+        while (cur < RL_PROFILE_BINS) {
+            if (cur >= 0) {
+                p->n[cur] = n0;
+                p->sx[cur] = s0;
+                tn += n0;
+                tq += q0;
+            }
+            cur++;
+            n0 = n1;
+            s0 = s1;
+            q0 = q1;
+            n1 = s1 = q1 = 0;
         }
-        sxx += (lo + hi) * mq[m];
+        sxx = tq;
+        p->total = tn;
     }
     p->sxx = sxx;
-    p->total = 0;
-    for (k = 0; k < RL_PROFILE_BINS; k++)
-        p->total += p->n[k];
 }
 
 /* What every column's correlation shares: the profile's pixels, their

@@ -615,9 +615,10 @@ static int fit_edge_rays(const rl_image *img, int light, double *cx, double *cy,
     ray_dirs(FIT_RAYS, dc, ds);
     for (a = 0; a < FIT_RAYS; a++) {
         double c = dc[a], sn = ds[a];
-        double prof[128], black = 1e9, white = -1e9;
-        int i, ns = (int)(EDGE_SPAN * *r / EDGE_STEP) + 1, ok = 1, ib = 0, st = img->stride;
+        float prof[128], black = 1e9f, white = -1e9f;
+        int i, ns = (int)(EDGE_SPAN * *r / EDGE_STEP) + 1, ok = 1, ib = 0, st = img->stride, ir;
         double r0 = EDGE_FROM * *r, x = *cx + r0 * c, y = *cy + r0 * sn, xe, ye;
+        float fx0 = (float)x, fy0 = (float)y, dx = (float)(EDGE_STEP * c), dy = (float)(EDGE_STEP * sn);
         if (ns > 128)
             ns = 128;
         xe = x + (ns - 1) * EDGE_STEP * c;
@@ -627,33 +628,34 @@ static int fit_edge_rays(const rl_image *img, int light, double *cx, double *cy,
             y >= img->height - 1 || ye >= img->height - 1)
             continue;
         for (i = 0; i < ns; i++) {
-            double rr = r0 + i * EDGE_STEP, fx, fy;
-            int x0, y0, p00, p01, p10, p11;
-            const uint8_t *p;
-            x = *cx + rr * c;
-            y = *cy + rr * sn;
-            x0 = (int)x; /* x, y >= 0: truncation is floor */
-            y0 = (int)y;
-            p = img->data + (size_t)y0 * (size_t)st + x0;
-            p00 = p[0];
-            p01 = p[1];
-            p10 = p[st];
-            p11 = p[st + 1];
+            float px = fx0 + (float)i * dx, py = fy0 + (float)i * dy, fx, fy, top, bot;
+            int x0 = (int)px, y0 = (int)py; /* px, py >= 0: truncation is floor */
+            const uint8_t *p = img->data + (size_t)y0 * (size_t)st + x0;
+            int p00 = p[0], p01 = p[1], p10 = p[st], p11 = p[st + 1];
             if (p00 >= light || p01 >= light || p10 >= light || p11 >= light) {
                 ok = 0;
                 break;
             }
-            fx = x - x0;
-            fy = y - y0;
-            prof[i] = (1 - fy) * ((1 - fx) * p00 + fx * p01) + fy * ((1 - fx) * p10 + fx * p11);
-            if (rr <= *r && prof[i] < black) {
+            fx = px - (float)x0;
+            fy = py - (float)y0;
+            top = (float)p00 + fx * (float)(p01 - p00);
+            bot = (float)p10 + fx * (float)(p11 - p10);
+            prof[i] = top + fy * (bot - top);
+        }
+        if (!ok)
+            continue;
+        /* the ring's black inside the first estimate, the paper's white
+         * outside it */
+        ir = (int)((*r - r0) / EDGE_STEP);
+        for (i = 0; i < ns; i++) {
+            if (i <= ir && prof[i] < black) {
                 black = prof[i];
                 ib = i;
             }
-            if (rr >= *r && prof[i] > white)
+            if (i >= ir && prof[i] > white)
                 white = prof[i];
         }
-        if (!ok || white - black < 15.0)
+        if (white - black < 15.0f)
             continue;
         /* the edge is the steepest rise after the ring's black: a smooth
          * glare gradient adds a constant slope, which moves a level
@@ -828,12 +830,34 @@ static void local_identify(rl_recog *rec, const rl_image *img, int light, double
         }
     }
     for (it = 0; it < SEARCH_ROUNDS; it++) {
-        double cbx = bx, cby = by, cbs = bs, step = search_shift[it];
+        double cbx = bx, cby = by, cbs = bs, step = search_shift[it], f0 = best_score, fv[6];
         static const int dir[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
         for (k = 0; k < 6; k++) {
             double tx = cbx + dir[k][0] * step, ty = cby + dir[k][1] * step;
             double ts = cbs * (1.0 + dir[k][2] * search_scale[it]);
             rl_match mm;
+            rl_ident_polar_profile(pol, tx, ty, ts, &p);
+            rl_ident_match_ids(&rec->ident, &p, top, ntop, m->blur, &mm);
+            fv[k] = mm.score;
+            if (mm.score > best_score) {
+                best_score = mm.score;
+                bx = tx;
+                by = ty;
+                bs = ts;
+            }
+        }
+        if (bx == cbx && by == cby && bs == cbs) {
+            /* the centre of the cross is best: the peak of a parabola
+             * through each axis's three scores, tried once */
+            double off[3], tx, ty, ts;
+            rl_match mm;
+            for (k = 0; k < 3; k++) {
+                double den = fv[2 * k] - 2 * f0 + fv[2 * k + 1];
+                off[k] = den < 0 ? 0.5 * (fv[2 * k + 1] - fv[2 * k]) / den : 0.0;
+            }
+            tx = cbx + off[0] * step;
+            ty = cby + off[1] * step;
+            ts = cbs * (1.0 + off[2] * search_scale[it]);
             rl_ident_polar_profile(pol, tx, ty, ts, &p);
             rl_ident_match_ids(&rec->ident, &p, top, ntop, m->blur, &mm);
             if (mm.score > best_score) {
@@ -842,6 +866,7 @@ static void local_identify(rl_recog *rec, const rl_image *img, int light, double
                 by = ty;
                 bs = ts;
             }
+            break;
         }
     }
     if (bx == 0 && by == 0 && bs == 1.0)
