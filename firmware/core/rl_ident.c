@@ -9,6 +9,13 @@ static const double blur_levels[RL_BLUR_LEVELS] = {0.0, 0.03, 0.06, 0.10};
  * whole block has a fixed length the compiler can vectorize. */
 #define MATCH_BLOCK 8
 
+/* GCC and Clang: a block is scored in 4-lane vectors (SSE, NEON) that
+ * stay in registers; elsewhere in plain C. */
+#if defined(__GNUC__) && MATCH_BLOCK == 8
+#define RL_V4
+typedef float rl_v4 __attribute__((vector_size(16)));
+#endif
+
 /* Columns per bin, padded to whole blocks. */
 static int padded_columns(int n)
 {
@@ -502,8 +509,15 @@ static void match_some(const rl_ident *id, const rl_profile *p, const int *ids, 
     m->blur = 0;
     if (n < 16)
         return;
-    for (k = 0; k < RL_PROFILE_BINS; k++)
-        sx += p->sx[k];
+    {
+        /* two partial sums: half the chain of dependent adds */
+        double s0 = 0, s1 = 0;
+        for (k = 0; k < RL_PROFILE_BINS; k += 2) {
+            s0 += p->sx[k];
+            s1 += p->sx[k + 1];
+        }
+        sx = s0 + s1;
+    }
     vx = n * p->sxx - sx * sx;
     if (!(vx > 0))
         return; /* a flat candidate correlates with nothing */
@@ -539,18 +553,45 @@ static void match_some(const rl_ident *id, const rl_profile *p, const int *ids, 
         int nc = ncol - c0 < MATCH_BLOCK ? ncol - c0 : MATCH_BLOCK;
         for (c = 0; c < MATCH_BLOCK; c++)
             st[c] = stt[c] = sxt[c] = 0;
+#ifdef RL_V4
+        {
+            /* two 4-lane vectors per sum, kept in registers */
+            rl_v4 s0 = {0, 0, 0, 0}, s1 = s0, ss0 = s0, ss1 = s0, sx0 = s0, sx1 = s0;
+            for (k = 0; k < RL_PROFILE_BINS; k++) {
+                const float *t = id->tmpl + (size_t)k * (size_t)id->stride + c0;
+                float nk = fn[k], sk = fs[k];
+                rl_v4 t0, t1, nv = {nk, nk, nk, nk}, sv = {sk, sk, sk, sk};
+                if (nk == 0)
+                    continue; /* bins outside the image or in light */
+                memcpy(&t0, t, sizeof t0);
+                memcpy(&t1, t + 4, sizeof t1);
+                s0 += nv * t0;
+                s1 += nv * t1;
+                ss0 += nv * t0 * t0;
+                ss1 += nv * t1 * t1;
+                sx0 += sv * t0;
+                sx1 += sv * t1;
+            }
+            memcpy(st, &s0, sizeof s0);
+            memcpy(st + 4, &s1, sizeof s1);
+            memcpy(stt, &ss0, sizeof ss0);
+            memcpy(stt + 4, &ss1, sizeof ss1);
+            memcpy(sxt, &sx0, sizeof sx0);
+            memcpy(sxt + 4, &sx1, sizeof sx1);
+        }
+#else
         for (k = 0; k < RL_PROFILE_BINS; k++) {
             const float *t = id->tmpl + (size_t)k * (size_t)id->stride + c0;
             float nk = fn[k], sk = fs[k];
             if (nk == 0)
                 continue; /* bins outside the image or in light */
-#pragma GCC unroll 8
             for (c = 0; c < MATCH_BLOCK; c++) {
                 st[c] += nk * t[c];
                 stt[c] += nk * t[c] * t[c];
                 sxt[c] += sk * t[c];
             }
         }
+#endif
         for (c = 0; c < nc; c++) {
             int b = (c0 + c) % RL_BLUR_LEVELS;
             if (b >= b0 && b < b1)
