@@ -179,10 +179,15 @@ void rl_ident_polar(const rl_image *img, double cx, double cy, double r, int lig
                     double min_contrast, rl_polar *pol)
 {
     double bw = RL_PROFILE_EXTENT * r / RL_PROFILE_BINS, lim = RL_POLAR_BINS * bw;
-    /* pixels a cell can hold: its hull fits a box of bw by the sector's
-     * chord (0.4 lim); past PACK_MAX the sums are moved out every few rows */
-    double span = bw + 0.4 * lim + 1.0;
-    int flush_rows = (span + 1.0) * span <= PACK_MAX ? 1 << 30 : (int)(PACK_MAX / (span + 1.0));
+    /* Pixels a cell can hold: it fits a box of bw plus the arc's bulge
+     * (0.02 lim) by the sector's chord (0.4 lim), which holds at most
+     * (w + 1) (h + 1) pixels, and a row meets at most w + h + 1 of them.
+     * Past PACK_MAX (landmarks of some 380 px radius) the sums are moved
+     * out every few rows. */
+    double bw_box = bw + 0.02 * lim, ch_box = 0.4 * lim;
+    int flush_rows = (bw_box + 1.0) * (ch_box + 1.0) <= PACK_MAX
+                         ? 1 << 30
+                         : (int)(PACK_MAX / (bw_box + ch_box + 1.0));
     float inv = (float)(1.0 / bw), fcx = (float)cx;
     int y, k, sct, y0 = iceil(cy - lim), y1 = ifloor(cy + lim), rows = 0;
     uint64_t *acc = &pol->acc[0][0];

@@ -1,0 +1,143 @@
+/* The local pass's polar gather (rl_ident_polar): every pixel within the
+ * profile's reach counted once and light left out, at a landmark's usual
+ * size and at one so large that the packed per-cell sums are moved out
+ * during the gather; and the profiles it derives for a moved centre or a
+ * changed radius are those of the landmark where it really is. */
+#include "rl_test.h"
+#include <math.h>
+#include "rl_ident.h"
+#include "rl_template.h"
+
+#define S 1000
+#define PAPER 215
+#define INK 30
+#define LIGHT 240
+static uint8_t px[S * S], dk[S * S];
+static rl_polar pol;
+static uint8_t wsmem[1 << 20];
+
+/* Landmark `id` of radius r at (cx, cy) on paper, and a light patch in
+ * its quiet zone to the right: 1.04 .. 1.16 r out, 0.1 r high. */
+static rl_image draw(int id, double cx, double cy, double r)
+{
+    rl_family f = {5};
+    rl_image img = rl_image_view(S, S, S, px), d = rl_image_view(S, S, S, dk);
+    int x, y;
+    assert_int_equal(rl_tmpl_draw(&f, id, cx, cy, r, NULL, &d, NULL), RL_OK);
+    for (y = 0; y < S; y++)
+        for (x = 0; x < S; x++) {
+            double ux = x - cx, uy = y - cy;
+            px[y * S + x] = (uint8_t)(PAPER - (PAPER - INK) * dk[y * S + x] / 255);
+            if (ux > 1.04 * r && ux < 1.16 * r && fabs(uy) < 0.05 * r)
+                px[y * S + x] = 255;
+        }
+    return img;
+}
+
+/* Pixels below LIGHT within 1.2 r of the centre (the profile's reach),
+ * and how many lie so close to that circle that rounding may count them
+ * either way. */
+static void reference_count(double cx, double cy, double r, long *inside, long *edge)
+{
+    double reach = RL_PROFILE_EXTENT * r;
+    int x, y;
+    *inside = *edge = 0;
+    for (y = 0; y < S; y++)
+        for (x = 0; x < S; x++) {
+            double d = hypot(x - cx, y - cy);
+            if (px[y * S + x] >= LIGHT)
+                continue;
+            if (fabs(d - reach) < 1e-4 * reach)
+                (*edge)++;
+            else if (d < reach)
+                (*inside)++;
+        }
+}
+
+static void init_ident(rl_ident *id)
+{
+    rl_family f = {5};
+    rl_ws ws;
+    rl_ws_init(&ws, wsmem, sizeof wsmem);
+    assert_int_equal(rl_ident_init(id, &ws, &f, NULL, 0), RL_OK);
+}
+
+static void check_size(double r)
+{
+    rl_ident id;
+    rl_profile p;
+    rl_match m;
+    long inside, edge;
+    double cx = S / 2 + 0.37, cy = S / 2 - 0.21;
+    rl_image img = draw(22, cx, cy, r);
+    init_ident(&id);
+    reference_count(cx, cy, r, &inside, &edge);
+    rl_ident_polar(&img, cx, cy, r, LIGHT, 20.0, &pol);
+    rl_ident_polar_profile(&pol, 0, 0, 1.0, &p);
+    if (p.total < inside - 0.5 || p.total > inside + edge + 0.5)
+        fail_msg("r %.0f: %.0f pixels gathered, %ld (+%ld on the rim) within reach", r, p.total,
+                 inside, edge);
+    rl_ident_match(&id, &p, &m);
+    if (m.id != 22 || m.score < 0.97)
+        fail_msg("r %.0f: id %d score %.3f, drawn 22", r, m.id, m.score);
+}
+
+static void test_counts_small(void **state)
+{
+    (void)state;
+    check_size(24.0);
+}
+
+static void test_counts_large(void **state)
+{
+    (void)state;
+    /* past PACK_MAX pixels per cell: the sums are moved out during the gather */
+    check_size(420.0);
+}
+
+/* Gathered around a centre 1.2 px off, the profile moved back by that
+ * much fits the landmark better than the one as gathered; moved the other
+ * way, worse. The same for a radius 6% short. */
+static void test_moved_profiles(void **state)
+{
+    rl_ident id;
+    rl_profile p;
+    rl_match as_is, back, away;
+    double cx = 300.4, cy = 310.8, r = 24.0;
+    rl_image img = draw(13, cx, cy, r);
+    int ids[1] = {13};
+    (void)state;
+    init_ident(&id);
+    rl_ident_polar(&img, cx - 1.2, cy + 0.6, r, LIGHT, 20.0, &pol);
+    rl_ident_polar_profile(&pol, 0, 0, 1.0, &p);
+    rl_ident_match_ids(&id, &p, ids, 1, 0, &as_is);
+    rl_ident_polar_profile(&pol, 1.2, -0.6, 1.0, &p);
+    rl_ident_match_ids(&id, &p, ids, 1, 0, &back);
+    rl_ident_polar_profile(&pol, -1.2, 0.6, 1.0, &p);
+    rl_ident_match_ids(&id, &p, ids, 1, 0, &away);
+    if (!(back.score > as_is.score + 0.01 && away.score < as_is.score - 0.01))
+        fail_msg("shift: as gathered %.3f, moved back %.3f, moved away %.3f", as_is.score,
+                 back.score, away.score);
+    rl_ident_polar(&img, cx, cy, 0.94 * r, LIGHT, 20.0, &pol);
+    rl_ident_polar_profile(&pol, 0, 0, 1.0, &p);
+    rl_ident_match_ids(&id, &p, ids, 1, 0, &as_is);
+    rl_ident_polar_profile(&pol, 0, 0, 1.0 / 0.94, &p);
+    rl_ident_match_ids(&id, &p, ids, 1, 0, &back);
+    rl_ident_polar_profile(&pol, 0, 0, 0.94, &p);
+    rl_ident_match_ids(&id, &p, ids, 1, 0, &away);
+    if (!(back.score > as_is.score + 0.01 && away.score < as_is.score - 0.01))
+        fail_msg("scale: as gathered %.3f, rescaled %.3f, the other way %.3f", as_is.score,
+                 back.score, away.score);
+    if (back.score < 0.95)
+        fail_msg("rescaled to the true radius: score %.3f", back.score);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_counts_small),
+        cmocka_unit_test(test_counts_large),
+        cmocka_unit_test(test_moved_profiles),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
