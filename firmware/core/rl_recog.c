@@ -924,7 +924,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
         return 0;
     /* local clustering: K-means on the window alone, light excluded, so the
      * threshold follows the local illumination */
-    rl_hist_compute_rows(&win, &h, 2); /* every other row: thousands of pixels still */
+    rl_hist_compute_rows(&win, &h, 4); /* every fourth row: over a thousand pixels still */
     if (rl_hist_kmeans(&h, 0, res->levels.light, 2, lv.centre, NULL) != RL_OK)
         return 0;
     if (lv.centre[1] - lv.centre[0] < 8.0)
