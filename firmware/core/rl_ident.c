@@ -481,16 +481,34 @@ static void score_columns(const rl_ident *id, const float *fn, const float *fs, 
 {
     float st[MATCH_BLOCK] = {0}, stt[MATCH_BLOCK] = {0}, sxt[MATCH_BLOCK] = {0};
     int k, c;
-    for (k = 0; k < RL_PROFILE_BINS; k++) {
-        const float *t = id->tmpl + (size_t)k * (size_t)id->stride;
-        float nk = fn[k], sk = fs[k];
-        if (nk == 0)
-            continue;
-        for (c = 0; c < nc; c++) {
-            float tv = t[cols[c]];
-            st[c] += nk * tv;
-            stt[c] += nk * tv * tv;
-            sxt[c] += sk * tv;
+    if (nc <= 4) {
+        /* the usual short list: four lanes of fixed count, the unused
+         * ones repeating the first column */
+        int c4[4];
+        for (c = 0; c < 4; c++)
+            c4[c] = cols[c < nc ? c : 0];
+        for (k = 0; k < RL_PROFILE_BINS; k++) {
+            const float *t = id->tmpl + (size_t)k * (size_t)id->stride;
+            float nk = fn[k], sk = fs[k];
+            for (c = 0; c < 4; c++) {
+                float tv = t[c4[c]];
+                st[c] += nk * tv;
+                stt[c] += nk * tv * tv;
+                sxt[c] += sk * tv;
+            }
+        }
+    } else {
+        for (k = 0; k < RL_PROFILE_BINS; k++) {
+            const float *t = id->tmpl + (size_t)k * (size_t)id->stride;
+            float nk = fn[k], sk = fs[k];
+            if (nk == 0)
+                continue;
+            for (c = 0; c < nc; c++) {
+                float tv = t[cols[c]];
+                st[c] += nk * tv;
+                stt[c] += nk * tv * tv;
+                sxt[c] += sk * tv;
+            }
         }
     }
     for (c = 0; c < nc; c++)
