@@ -186,7 +186,7 @@ int main(int argc, char **argv)
     apriltag_family_t *tf;
     apriltag_detector_t *td;
     cpu_set_t one;
-    int i, rc = 0;
+    int i, rc = 0, header = 0;
     if (argc < 2 || strcmp(argv[1], "--help") == 0) {
         fprintf(argc < 2 ? stderr : stdout,
                 "usage: ringloc-bench DIR... [--local GLARE_DIR]\n"
@@ -201,13 +201,17 @@ int main(int argc, char **argv)
     td = apriltag_detector_create();
     apriltag_detector_add_family(td, tf);
     td->nthreads = 1; /* quad_decimate stays at its default */
-    printf("recognition time per frame, median over frames (ringloc: median of %d runs each)\n", REPEAT);
-    printf("%-9s %6s %12s %12s %10s %9s %9s %10s %7s\n", "size", "frames", "ringloc_ms",
-           "apriltag_ms", "ratio", "rings", "tags", "workspace", "B/px");
     for (i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--local") == 0 && i + 1 < argc) {
             rc |= bench_local(argv[++i]);
             continue;
+        }
+        if (!header) {
+            printf("recognition time per frame, median over frames (ringloc: median of %d runs each)\n",
+                   REPEAT);
+            printf("%-9s %6s %12s %12s %10s %9s %9s %10s %7s\n", "size", "frames", "ringloc_ms",
+                   "apriltag_ms", "ratio", "rings", "tags", "workspace", "B/px");
+            header = 1;
         }
         rc |= bench_dir(argv[i], td);
     }
