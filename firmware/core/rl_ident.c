@@ -390,15 +390,15 @@ void rl_ident_polar_profile(const rl_polar *pol, double dx, double dy, double sc
     {
         float n0 = 0, n1 = 0, s0 = 0, s1 = 0, q0 = 0, q1 = 0, tq = 0, tn = 0;
         int cur = -1; /* the bin n0, s0, q0 hold; n1, s1, q1 hold cur + 1 */
-        for (; m < MID_BINS; m++) {
-            double t = a * m + b;
+        for (;; m++) {
+            /* past the last mid bin or the last output bin, every bin
+             * still open is written */
+            double t = m < MID_BINS ? a * m + b : RL_PROFILE_BINS;
+            int last = t >= RL_PROFILE_BINS, j;
             float w, v;
-            int j;
             if (t < -1.0)
                 continue;
-            if (t >= RL_PROFILE_BINS)
-                break;
-            j = (int)(t + 1.0) - 1; /* floor: t >= -1 */
+            j = last ? RL_PROFILE_BINS : (int)(t + 1.0) - 1; /* floor: t >= -1 */
             while (cur < j) {
                 /* bin cur is complete */
                 if (cur >= 0) {
@@ -413,6 +413,8 @@ void rl_ident_polar_profile(const rl_polar *pol, double dx, double dy, double sc
                 q0 = q1;
                 n1 = s1 = q1 = 0;
             }
+            if (last)
+                break;
             w = (float)(t - j);
             v = 1.0f - w;
             n0 += v * mn[m];
@@ -421,20 +423,6 @@ void rl_ident_polar_profile(const rl_polar *pol, double dx, double dy, double sc
             n1 += w * mn[m];
             s1 += w * ms[m];
             q1 += w * mq[m];
-        }
-        /* the last two bins, if inside; bins never reached are empty */
-        while (cur < RL_PROFILE_BINS) {
-            if (cur >= 0) {
-                p->n[cur] = n0;
-                p->sx[cur] = s0;
-                tn += n0;
-                tq += q0;
-            }
-            cur++;
-            n0 = n1;
-            s0 = s1;
-            q0 = q1;
-            n1 = s1 = q1 = 0;
         }
         sxx = tq;
         p->total = tn;
