@@ -786,29 +786,56 @@ static const double search_scale[SEARCH_ROUNDS] = {0.03, 0.015};
 #define SWEEP 2
 static const double sweep_scale[SWEEP] = {0.94, 1.06};
 
+/* Where the search stands: the best centre shift and radius scale so far
+ * and their score, over the likely ids at one blur. */
+typedef struct {
+    const int *ids;
+    int n_ids, blur;
+    double x, y, s, score;
+} search_state;
+
+/* Score the likely ids with the centre moved by (x, y) and the radius
+ * scaled by s; kept if better. The score is returned. */
+static double search_try(const rl_recog *rec, const rl_polar *pol, search_state *st, double x,
+                         double y, double s)
+{
+    rl_profile p;
+    rl_match mm;
+    rl_ident_polar_profile(pol, x, y, s, &p);
+    rl_ident_match_ids(&rec->ident, &p, st->ids, st->n_ids, st->blur, &mm);
+    if (mm.score > st->score) {
+        st->score = mm.score;
+        st->x = x;
+        st->y = y;
+        st->s = s;
+    }
+    return mm.score;
+}
+
 /* Identification of a DUCLR on sector-normalized grey levels (glare
  * varies by direction), gathered once into polar cells around
  * (*cx, *cy). The edge fit's centre and radius can be off where glare or
  * the border hides most of the outer edge, and a wrong radius reads the
  * outer ring as a code ring: so the centre and the radius that fit the
- * likely ids best are searched (a sweep over radii, then rounds of a
- * cross over the centre and one step either way in radius, scoring the
- * likely ids at the first match's blur), and every id at every blur is
- * scored at the end. (*cx, *cy, *r) are updated to the best fit. */
+ * likely ids best are searched, scoring them at the first match's blur:
+ * a sweep over radii, then a cross over the centre and one step either
+ * way in radius; if the cross's centre stays best, the peak of a parabola
+ * through each axis's three scores is tried and the search ends, else a
+ * finer cross follows the same way. Every id at every blur is scored at
+ * the end. (*cx, *cy, *r) are updated to the best fit. */
 static void local_identify(rl_recog *rec, const rl_image *img, int light, double *cx,
                            double *cy, double *r, rl_match *m)
 {
     rl_polar *pol = rec->polar;
     rl_profile p;
     int top[4], ntop = 0, k, it, bits = rec->cfg.family.bits;
-    double bx = 0, by = 0, bs = 1.0, best_score;
+    search_state st;
     rl_ident_polar(img, *cx, *cy, *r, light, 20.0, pol);
     rl_ident_polar_profile(pol, 0, 0, 1.0, &p);
     rl_ident_match(&rec->ident, &p, m);
     if (m->id < 0)
         return;
     top[ntop++] = m->id;
-    best_score = m->score;
     /* the likely ids: the best and those one code zone away that come
      * close (a radius error confuses the outer ring with zone 1) */
     for (k = 1; k <= bits && ntop < 4; k++) {
@@ -820,62 +847,38 @@ static void local_identify(rl_recog *rec, const rl_image *img, int light, double
         if (mm.id >= 0 && mm.score > m->second - 0.05)
             top[ntop++] = alt;
     }
-    for (k = 0; k < SWEEP; k++) {
-        rl_match mm;
-        rl_ident_polar_profile(pol, 0, 0, sweep_scale[k], &p);
-        rl_ident_match_ids(&rec->ident, &p, top, ntop, m->blur, &mm);
-        if (mm.score > best_score) {
-            best_score = mm.score;
-            bs = sweep_scale[k];
-        }
-    }
+    st.ids = top;
+    st.n_ids = ntop;
+    st.blur = m->blur;
+    st.x = st.y = 0;
+    st.s = 1.0;
+    st.score = m->score;
+    for (k = 0; k < SWEEP; k++)
+        search_try(rec, pol, &st, 0, 0, sweep_scale[k]);
     for (it = 0; it < SEARCH_ROUNDS; it++) {
-        double cbx = bx, cby = by, cbs = bs, step = search_shift[it], f0 = best_score, fv[6];
         static const int dir[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-        for (k = 0; k < 6; k++) {
-            double tx = cbx + dir[k][0] * step, ty = cby + dir[k][1] * step;
-            double ts = cbs * (1.0 + dir[k][2] * search_scale[it]);
-            rl_match mm;
-            rl_ident_polar_profile(pol, tx, ty, ts, &p);
-            rl_ident_match_ids(&rec->ident, &p, top, ntop, m->blur, &mm);
-            fv[k] = mm.score;
-            if (mm.score > best_score) {
-                best_score = mm.score;
-                bx = tx;
-                by = ty;
-                bs = ts;
-            }
+        double cx0 = st.x, cy0 = st.y, cs0 = st.s, f0 = st.score, fv[6], off[3];
+        double step = search_shift[it], sstep = search_scale[it];
+        for (k = 0; k < 6; k++)
+            fv[k] = search_try(rec, pol, &st, cx0 + dir[k][0] * step, cy0 + dir[k][1] * step,
+                               cs0 * (1.0 + dir[k][2] * sstep));
+        if (st.x != cx0 || st.y != cy0 || st.s != cs0)
+            continue; /* moved: a finer cross around the new best */
+        for (k = 0; k < 3; k++) {
+            double den = fv[2 * k] - 2 * f0 + fv[2 * k + 1];
+            off[k] = den < 0 ? 0.5 * (fv[2 * k + 1] - fv[2 * k]) / den : 0.0;
         }
-        if (bx == cbx && by == cby && bs == cbs) {
-            /* the centre of the cross is best: the peak of a parabola
-             * through each axis's three scores, tried once */
-            double off[3], tx, ty, ts;
-            rl_match mm;
-            for (k = 0; k < 3; k++) {
-                double den = fv[2 * k] - 2 * f0 + fv[2 * k + 1];
-                off[k] = den < 0 ? 0.5 * (fv[2 * k + 1] - fv[2 * k]) / den : 0.0;
-            }
-            tx = cbx + off[0] * step;
-            ty = cby + off[1] * step;
-            ts = cbs * (1.0 + off[2] * search_scale[it]);
-            rl_ident_polar_profile(pol, tx, ty, ts, &p);
-            rl_ident_match_ids(&rec->ident, &p, top, ntop, m->blur, &mm);
-            if (mm.score > best_score) {
-                best_score = mm.score;
-                bx = tx;
-                by = ty;
-                bs = ts;
-            }
-            break;
-        }
+        search_try(rec, pol, &st, cx0 + off[0] * step, cy0 + off[1] * step,
+                   cs0 * (1.0 + off[2] * sstep));
+        break;
     }
-    if (bx == 0 && by == 0 && bs == 1.0)
+    if (st.x == 0 && st.y == 0 && st.s == 1.0)
         return; /* the first match stands: every id was scored there */
-    rl_ident_polar_profile(pol, bx, by, bs, &p);
+    rl_ident_polar_profile(pol, st.x, st.y, st.s, &p);
     rl_ident_match(&rec->ident, &p, m);
-    *cx += bx;
-    *cy += by;
-    *r *= bs;
+    *cx += st.x;
+    *cy += st.y;
+    *r *= st.s;
 }
 
 /* Acceptance in the local pass: a DUCLR is already a landmark-sized ring
