@@ -779,12 +779,15 @@ static int fit_outer_edge(const rl_label *lb, int reg, const rl_image *win, int 
 }
 
 /* Search steps of the local identification: centre (px) and radius
- * (fraction) steps of each round, after a first sweep over radii. */
+ * (fraction) steps of each round, after a first sweep over radii. The
+ * sweep only looks further out: an edge fit that glare or the border
+ * leaves with a short arc errs inwards (5-12% short), while the crosses
+ * reach 4.5% either way. */
 #define SEARCH_ROUNDS 2
 static const double search_shift[SEARCH_ROUNDS] = {1.0, 0.5};
 static const double search_scale[SEARCH_ROUNDS] = {0.03, 0.015};
-#define SWEEP 2
-static const double sweep_scale[SWEEP] = {0.94, 1.06};
+#define SWEEP 1
+static const double sweep_scale[SWEEP] = {1.06};
 
 /* Where the search stands: the best centre shift and radius scale so far
  * and their score, over the likely ids at one blur. */
@@ -818,7 +821,7 @@ static double search_try(const rl_recog *rec, const rl_polar *pol, search_state 
  * the border hides most of the outer edge, and a wrong radius reads the
  * outer ring as a code ring: so the centre and the radius that fit the
  * likely ids best are searched, scoring them at the first match's blur:
- * a sweep over radii, then a cross over the centre and one step either
+ * a sweep to larger radii, then a cross over the centre and one step either
  * way in radius; if the cross's centre stays best, the peak of a parabola
  * through each axis's three scores is tried and the search ends, else a
  * finer cross follows the same way. Every id at every blur is scored at
