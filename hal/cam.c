@@ -2,7 +2,6 @@
 
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
 
 void rl_cam_defaults(rl_cam_config *cc)
 {
@@ -12,17 +11,12 @@ void rl_cam_defaults(rl_cam_config *cc)
     cc->rate = 10.0;
 }
 
-uint64_t rl_cam_now_us(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (uint64_t)ts.tv_sec * 1000000u + (uint64_t)ts.tv_nsec / 1000u;
-}
-
 rl_err rl_cam_open(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen)
 {
     memset(c, 0, sizeof *c);
     snprintf(c->name, sizeof c->name, "%s", cc->device ? cc->device : "");
+    if (cc->open != NULL)
+        return cc->open(c, cc, err, errlen);
     if (cc->backend == NULL || strcmp(cc->backend, "png") == 0)
         return rl_cam_open_png(c, cc, err, errlen);
     if (strcmp(cc->backend, "v4l2") == 0)

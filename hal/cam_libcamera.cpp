@@ -88,7 +88,7 @@ rl_err lc_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
     int slot = static_cast<int>(r->cookie());
     f->slot = slot;
     f->index = s->index++;
-    f->t_us = rl_cam_now_us();
+    f->t_us = rl_clock_now_us();
     {
         const FrameBuffer *b = r->buffers().begin()->second;
         if (b->metadata().timestamp > 0)

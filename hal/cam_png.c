@@ -7,7 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <time.h>
 #include "rl_cam.h"
 #include "rl_png.h"
 
@@ -44,24 +43,19 @@ static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
         return RL_ENOTFOUND;
     /* pace to the rate: frame k is due at t0 + k * period */
     due = s->t0 + (uint64_t)s->next * s->period_us;
-    now = rl_cam_now_us();
+    now = rl_clock_now_us();
     if (due > now) {
         uint64_t wait = due - now;
-        struct timespec ts;
         if (timeout_ms >= 0 && wait > (uint64_t)timeout_ms * 1000u) {
-            ts.tv_sec = timeout_ms / 1000;
-            ts.tv_nsec = (long)(timeout_ms % 1000) * 1000000L;
-            nanosleep(&ts, NULL);
+            rl_clock_sleep_us((uint64_t)timeout_ms * 1000u);
             return RL_ETIMEOUT;
         }
-        ts.tv_sec = (time_t)(wait / 1000000u);
-        ts.tv_nsec = (long)(wait % 1000000u) * 1000L;
-        nanosleep(&ts, NULL);
+        rl_clock_sleep_us(wait);
     }
     f->index = s->next;
     f->slot = (int)(s->next % s->n);
     f->img = s->frames[f->slot];
-    f->t_us = rl_cam_now_us();
+    f->t_us = rl_clock_now_us();
     s->next++;
     return RL_OK;
 }
@@ -155,6 +149,6 @@ rl_err rl_cam_open_png(rl_cam *c, const rl_cam_config *cc, char *err, size_t err
     }
     s->loop = cc->loop;
     s->period_us = cc->rate > 0 ? (uint64_t)(1e6 / cc->rate) : 0;
-    s->t0 = rl_cam_now_us();
+    s->t0 = rl_clock_now_us();
     return RL_OK;
 }

@@ -79,7 +79,7 @@ static rl_err v4l2_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
     f->index = s->index++;
     f->t_us = (uint64_t)b.timestamp.tv_sec * 1000000u + (uint64_t)b.timestamp.tv_usec;
     if (f->t_us == 0)
-        f->t_us = rl_cam_now_us();
+        f->t_us = rl_clock_now_us();
     if (s->fourcc == V4L2_PIX_FMT_GREY) {
         f->img = rl_image_view(s->width, s->height, s->stride, (uint8_t *)s->map[b.index]);
     } else { /* YUYV: Y is every other byte */

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "rl_cli.h"
+#include "rl_cmd.h"
 #include "rl_mapfile.h"
 #include "rl_offsetsfile.h"
 #include "rl_png.h"
@@ -37,7 +38,7 @@ int rl_cmd_calibrate(int argc, char **argv)
     rl_offsets o;
     rl_mount mount;
     rl_recog_config cfg;
-    rl_host_recog hr;
+    rl_heap_recog hr;
     char err[512], tail;
 
     memset(&o, 0, sizeof o);
@@ -80,20 +81,20 @@ int rl_cmd_calibrate(int argc, char **argv)
     rl_recog_defaults(&cfg);
     rl_recog_use_map(&cfg, &map, ids);
     cfg.local = RL_LOCAL_ALWAYS;
-    rl_host_recog_init(&hr, &cfg);
+    rl_heap_recog_init(&hr, &cfg);
     for (i = optind; i < argc; i++) {
         rl_image img;
         double us;
         if (rl_png_read_gray(argv[i], &img, err, sizeof err) != RL_OK) {
-            rl_host_recog_free(&hr);
+            rl_heap_recog_free(&hr);
             return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
         }
         o.u0 = (img.width - 1) / 2.0;
         o.v0 = (img.height - 1) / 2.0;
         o.scale = img.width / 2.0;
-        if (rl_host_recog_run(&hr, &img, &res, &us) != RL_OK) {
+        if (rl_report_run(&hr, &img, &res, &us) != RL_OK) {
             rl_png_free(&img);
-            rl_host_recog_free(&hr);
+            rl_heap_recog_free(&hr);
             return rl_cli_fail(C, RL_EXIT_FAIL, "%s: recognition failed", argv[i]);
         }
         for (j = 0; j < res.n_landmarks && n < MAX_SAMPLES; j++) {
@@ -111,7 +112,7 @@ int rl_cmd_calibrate(int argc, char **argv)
         }
         rl_png_free(&img);
     }
-    rl_host_recog_free(&hr);
+    rl_heap_recog_free(&hr);
     if (rl_offsets_fit(&o, U, V, F, L, n) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%d landmarks identified in the images; degree %d needs at least %d "
                                             "spread over the view", n, o.degree, rl_offsets_terms(o.degree) + 2);

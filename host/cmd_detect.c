@@ -5,6 +5,7 @@
 #include <string.h>
 #include "rl_annotate.h"
 #include "rl_cli.h"
+#include "rl_cmd.h"
 #include "rl_mapfile.h"
 #include "rl_png.h"
 #include "rl_report.h"
@@ -81,7 +82,7 @@ int rl_cmd_detect(int argc, char **argv)
         {0, 0, 0, 0}};
     const char *C = "detect", *family = NULL, *map_path = NULL, *annotate = NULL;
     rl_recog_config cfg;
-    rl_host_recog hr;
+    rl_heap_recog hr;
     static rl_result res;
     static rl_map map;
     int c, i, failures = 0, ids[RL_MAX_MAP_LANDMARKS];
@@ -117,7 +118,7 @@ int rl_cmd_detect(int argc, char **argv)
             return rl_cli_fail(C, RL_EXIT_FAIL, "%s: the map has no landmarks", map_path);
         rl_recog_use_map(&cfg, &map, ids);
     }
-    rl_host_recog_init(&hr, &cfg);
+    rl_heap_recog_init(&hr, &cfg);
     for (i = optind; i < argc; i++) {
         rl_image img;
         double us = 0;
@@ -127,7 +128,7 @@ int rl_cmd_detect(int argc, char **argv)
             failures++;
             continue;
         }
-        e = rl_host_recog_run(&hr, &img, &res, &us);
+        e = rl_report_run(&hr, &img, &res, &us);
         if (e != RL_OK) {
             rl_cli_fail(C, RL_EXIT_FAIL, "%s: recognition failed: %s", argv[i], rl_strerror(e));
             failures++;
@@ -146,6 +147,6 @@ int rl_cmd_detect(int argc, char **argv)
         }
         rl_png_free(&img);
     }
-    rl_host_recog_free(&hr);
+    rl_heap_recog_free(&hr);
     return failures ? RL_EXIT_FAIL : 0;
 }

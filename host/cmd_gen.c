@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "rl_cli.h"
+#include "rl_cmd.h"
 #include "rl_mapfile.h"
 #include "rl_print.h"
 

@@ -6,6 +6,7 @@
 #include "rl_annotate.h"
 #include "rl_camfile.h"
 #include "rl_cli.h"
+#include "rl_cmd.h"
 #include "rl_mapfile.h"
 #include "rl_offsetsfile.h"
 #include "rl_png.h"
@@ -44,7 +45,7 @@ int rl_cmd_locate(int argc, char **argv)
     const char *C = "locate", *cam_path = NULL, *map_path = NULL, *robot_path = NULL,
                *off_path = NULL, *annotate = NULL, *family = NULL;
     rl_recog_config cfg;
-    rl_host_recog hr;
+    rl_heap_recog hr;
     static rl_result res;
     static rl_map map;
     rl_camera cam;
@@ -87,7 +88,7 @@ int rl_cmd_locate(int argc, char **argv)
                            "%s: camera_mount.z %.3f m is not below the ceiling (%s: ceiling_height %.3f m)",
                            robot_path, mount.z, map_path, map.ceiling_height);
     rl_recog_use_map(&cfg, &map, ids);
-    rl_host_recog_init(&hr, &cfg);
+    rl_heap_recog_init(&hr, &cfg);
     for (i = optind; i < argc; i++) {
         rl_image img;
         double us = 0;
@@ -106,7 +107,7 @@ int rl_cmd_locate(int argc, char **argv)
             rl_png_free(&img);
             continue;
         }
-        if ((e = rl_host_recog_run(&hr, &img, &res, &us)) != RL_OK) {
+        if ((e = rl_report_run(&hr, &img, &res, &us)) != RL_OK) {
             rl_cli_fail(C, RL_EXIT_FAIL, "%s: recognition failed: %s", argv[i], rl_strerror(e));
             failures++;
             rl_png_free(&img);
@@ -144,6 +145,6 @@ int rl_cmd_locate(int argc, char **argv)
         }
         rl_png_free(&img);
     }
-    rl_host_recog_free(&hr);
+    rl_heap_recog_free(&hr);
     return failures ? RL_EXIT_FAIL : 0;
 }

@@ -12,6 +12,7 @@
 #include <termios.h>
 #include <unistd.h>
 #include "rl_cli.h"
+#include "rl_cmd.h"
 #include "rl_frame.h"
 
 static const char *monitor_help =

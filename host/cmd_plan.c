@@ -5,6 +5,7 @@
 #include <string.h>
 #include "rl_camfile.h"
 #include "rl_cli.h"
+#include "rl_cmd.h"
 #include "rl_mapfile.h"
 #include "rl_plan.h"
 #include "rl_print.h"

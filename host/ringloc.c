@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "rl_cli.h"
+#include "rl_cmd.h"
 
 typedef struct {
     const char *name;

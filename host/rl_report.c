@@ -1,53 +1,15 @@
 #include "rl_report.h"
 
-#include <stdlib.h>
+#include "rl_clock.h"
+
 #include <string.h>
-#include <time.h>
 
-void rl_host_recog_init(rl_host_recog *hr, const rl_recog_config *cfg)
+rl_err rl_report_run(rl_heap_recog *hr, const rl_image *img, rl_result *res, double *elapsed_us)
 {
-    memset(hr, 0, sizeof *hr);
-    hr->cfg = *cfg;
-}
-
-void rl_host_recog_free(rl_host_recog *hr)
-{
-    free(hr->mem);
-    hr->mem = NULL;
-    hr->width = hr->height = 0;
-}
-
-double rl_now_us(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec * 1e6 + ts.tv_nsec / 1e3;
-}
-
-rl_err rl_host_recog_run(rl_host_recog *hr, const rl_image *img, rl_result *res,
-                         double *elapsed_us)
-{
-    double t0;
-    rl_err e;
-    if (img->width != hr->width || img->height != hr->height) {
-        size_t need = rl_recog_workspace_size(img->width, img->height, &hr->cfg);
-        if (need == 0)
-            return RL_EINVAL;
-        free(hr->mem);
-        hr->mem = malloc(need);
-        hr->width = hr->height = 0;
-        if (hr->mem == NULL)
-            return RL_ENOMEM;
-        hr->size = need;
-        if ((e = rl_recog_init(&hr->rec, &hr->cfg, img->width, img->height, hr->mem, need)) != RL_OK)
-            return e;
-        hr->width = img->width;
-        hr->height = img->height;
-    }
-    t0 = rl_now_us();
-    e = rl_recog_run(&hr->rec, img, res);
+    uint64_t t0 = rl_clock_now_us();
+    rl_err e = rl_heap_recog_run(hr, img, res);
     if (elapsed_us)
-        *elapsed_us = rl_now_us() - t0;
+        *elapsed_us = (double)(rl_clock_now_us() - t0);
     return e;
 }
 
@@ -86,4 +48,9 @@ void rl_report_json_open(FILE *f, const char *image, const rl_result *res, const
                 d->pass == RL_PASS_LOCAL ? "local" : "global", d->complete ? "true" : "false");
     }
     fprintf(f, "], \"unidentified\": %d", res->n_unidentified);
+    /* what a compile-time limit left out: nothing is cut silently */
+    fprintf(f, ", \"dropped\": {\"regions\": %d, \"lights\": %d, \"candidates\": %d, "
+               "\"landmarks\": %d}",
+            res->dropped.regions, res->dropped.lights, res->dropped.candidates,
+            res->dropped.landmarks);
 }

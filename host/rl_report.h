@@ -1,39 +1,30 @@
-/* rl_report: the host's recognizer (workspace from the heap, re-made when
- * the frame size changes) and the JSON line every frame command prints.
+/* rl_report: the JSON line every frame command prints, and a timed
+ * recognition for it.
  *
- *   rl_host_recog hr;
- *   rl_host_recog_init(&hr, &cfg);
- *   if (rl_host_recog_run(&hr, &img, &res, &elapsed_us) == RL_OK)
- *       rl_report_json(stdout, "a.png", &res, &hr.cfg.family, elapsed_us, NULL);
- *   rl_host_recog_free(&hr);
+ *   rl_heap_recog hr;
+ *   double us;
+ *   rl_heap_recog_init(&hr, &cfg);
+ *   if (rl_report_run(&hr, &img, &res, &us) == RL_OK) {
+ *       rl_report_json_open(stdout, "a.png", &res, &hr.cfg.family, us);
+ *       fputs("}\n", stdout);
+ *   }
+ *   rl_heap_recog_free(&hr);
  */
 #ifndef RL_REPORT_H
 #define RL_REPORT_H
 
 #include <stdio.h>
+#include "rl_heap_recog.h"
 #include "rl_recog.h"
 
-typedef struct {
-    rl_recog_config cfg;
-    rl_recog rec;
-    void *mem;
-    size_t size;
-    int width, height; /* size the recognizer is ready for; 0 before the first frame */
-} rl_host_recog;
-
-void rl_host_recog_init(rl_host_recog *hr, const rl_recog_config *cfg);
-void rl_host_recog_free(rl_host_recog *hr);
-
-/* Recognize one frame; *elapsed_us is the time inside rl_recog_run. */
-RL_CHECK rl_err rl_host_recog_run(rl_host_recog *hr, const rl_image *img, rl_result *res,
-                                  double *elapsed_us);
-
-/* Monotonic clock in microseconds. */
-double rl_now_us(void);
+/* rl_heap_recog_run, and *elapsed_us the time inside it (the one clock,
+ * rl_clock.h). */
+RL_CHECK rl_err rl_report_run(rl_heap_recog *hr, const rl_image *img, rl_result *res,
+                              double *elapsed_us);
 
 /* Print the fields of the detect JSON object without its closing brace:
- * {"image": ..., "landmarks": [...], "unidentified": N  -- the caller adds
- * more fields (or none) and "}\n". */
+ * {"image": ..., "landmarks": [...], "unidentified": N, "dropped": {...}
+ * -- the caller adds more fields (or none) and "}\n". */
 void rl_report_json_open(FILE *f, const char *image, const rl_result *res, const rl_family *fam,
                          double elapsed_us);
 

@@ -19,7 +19,7 @@
 #include "rl_mapfile.h"
 #include "rl_robotfile.h"
 
-static rl_host_recog hr, hr_always;
+static rl_heap_recog hr, hr_always;
 static rl_result res;
 
 static const char *set_of(const char *image)
@@ -46,7 +46,7 @@ static void run_frame(const char *yaml, truth *t, eval_counts *c, int verbose)
     if (rl_png_read_gray(png, &img, err, sizeof err) != RL_OK)
         fail_msg("%s", err);
     /* the glare and border sets test the local pass: run it always there */
-    assert_int_equal(rl_host_recog_run(getenv("RL_LOCAL_ALWAYS") || strncmp(t->image, "glare", 5) == 0 ||
+    assert_int_equal(rl_report_run(getenv("RL_LOCAL_ALWAYS") || strncmp(t->image, "glare", 5) == 0 ||
                                                strncmp(t->image, "border", 6) == 0
                                            ? &hr_always
                                            : &hr,
@@ -92,7 +92,7 @@ static void local_recovers_what_global_missed(void **state)
 {
     static char *names[64];
     rl_recog_config cfg;
-    rl_host_recog never, always;
+    rl_heap_recog never, always;
     static rl_result a, b;
     int recovered = 0, k, set;
     const char *sets[] = {"glare", "border"};
@@ -100,9 +100,9 @@ static void local_recovers_what_global_missed(void **state)
     (void)names;
     rl_recog_defaults(&cfg);
     cfg.local = RL_LOCAL_NEVER;
-    rl_host_recog_init(&never, &cfg);
+    rl_heap_recog_init(&never, &cfg);
     cfg.local = RL_LOCAL_ALWAYS;
-    rl_host_recog_init(&always, &cfg);
+    rl_heap_recog_init(&always, &cfg);
     for (set = 0; set < 2; set++)
         for (k = 0; k < 100; k++) {
             char yaml[1024], png[1024], err[512];
@@ -119,8 +119,8 @@ static void local_recovers_what_global_missed(void **state)
             snprintf(png, sizeof png, "%s/%s", golden_dir, t.image);
             if (rl_png_read_gray(png, &img, err, sizeof err) != RL_OK)
                 fail_msg("%s", err);
-            assert_int_equal(rl_host_recog_run(&never, &img, &a, &us), RL_OK);
-            assert_int_equal(rl_host_recog_run(&always, &img, &b, &us), RL_OK);
+            assert_int_equal(rl_report_run(&never, &img, &a, &us), RL_OK);
+            assert_int_equal(rl_report_run(&always, &img, &b, &us), RL_OK);
             rl_png_free(&img);
             for (i = 0; i < b.n_landmarks; i++) {
                 const rl_detection *d = &b.landmarks[i];
@@ -139,8 +139,8 @@ static void local_recovers_what_global_missed(void **state)
         }
     printf("  the local pass recovered %d landmarks the global pass missed\n", recovered);
     assert_true(recovered >= 3);
-    rl_host_recog_free(&never);
-    rl_host_recog_free(&always);
+    rl_heap_recog_free(&never);
+    rl_heap_recog_free(&always);
 }
 
 static int golden(const char *dir)
@@ -279,7 +279,7 @@ static void path_accuracy(void **state)
         assert_int_equal(truth_load(path, &t), 0);
         snprintf(path, sizeof path, "%s/%s", paths_dir, t.image);
         if (rl_png_read_gray(path, &img, err, sizeof err) != RL_OK) fail_msg("%s", err);
-        assert_int_equal(rl_host_recog_run(&hr, &img, &res, &us), RL_OK);
+        assert_int_equal(rl_report_run(&hr, &img, &res, &us), RL_OK);
         rl_png_free(&img);
         assert_int_equal(rl_pose_solve(&cam, &map, &mount, res.landmarks, res.n_landmarks, NULL, &pose), RL_OK);
         assert_int_equal(pose.n_dropped, 0);
@@ -316,9 +316,9 @@ int main(int argc, char **argv)
     rl_recog_config cfg;
     int rc;
     rl_recog_defaults(&cfg);
-    rl_host_recog_init(&hr, &cfg);
+    rl_heap_recog_init(&hr, &cfg);
     cfg.local = RL_LOCAL_ALWAYS;
-    rl_host_recog_init(&hr_always, &cfg);
+    rl_heap_recog_init(&hr_always, &cfg);
     if (argc >= 3 && strcmp(argv[1], "golden") == 0) {
         rc = golden(argv[2]);
     } else if (argc >= 4 && strcmp(argv[1], "stats") == 0) {
@@ -344,7 +344,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: test_fixtures golden DIR | stats DIR SET... | paths DIR\n");
         rc = 2;
     }
-    rl_host_recog_free(&hr);
-    rl_host_recog_free(&hr_always);
+    rl_heap_recog_free(&hr);
+    rl_heap_recog_free(&hr_always);
     return rc;
 }

@@ -15,7 +15,8 @@ extern "C" {
 #include <stddef.h>
 #include <cmocka.h>
 #include "rl_hist.h"
-#include "rl_ident.h"
+#include "rl_match.h"
+#include "rl_polar.h"
 #include "rl_label.h"
 #include "rl_template.h"
 }
@@ -199,21 +200,27 @@ static void test_labelling_limits(void **)
     assert_int_equal(rl_label_band(&lb, &ri, 0, 128, 1), RL_OK);
     assert_int_equal(lb.n_regions, 10);
     assert_int_equal(lb.overflow, 6);
-    rl_image wrong = rl_image_view(39, 40, 40, dots.data);
-    assert_int_equal(rl_label_band(&lb, &wrong, 0, 128, 1), RL_EINVAL);
+    // a window of the image labels with the same buffers; a taller image
+    // than the row index holds is refused
+    rl_image window = rl_image_view(20, 20, 40, dots.data);
+    assert_int_equal(rl_label_band(&lb, &window, 0, 128, 1), RL_OK);
+    assert_int_equal(lb.n_regions, 4);
+    assert_int_equal(lb.width, 20);
+    rl_image taller = rl_image_view(40, 41, 40, dots.data);
+    assert_int_equal(rl_label_band(&lb, &taller, 0, 128, 1), RL_EINVAL);
 }
 
 // Direct Pearson over pixels within 1.2 R against a template evaluated per
-// pixel, and the radial-bin algebra of rl_ident_match, must agree.
+// pixel, and the radial-bin algebra of rl_match_all, must agree.
 static void test_ident_matches_direct_pearson(void **)
 {
     rl_family fam;
     assert_int_equal(rl_family_init(&fam, 5), RL_OK);
-    std::vector<unsigned char> mem(rl_ident_bytes(30) + 64);
+    std::vector<unsigned char> mem(rl_templates_bytes(30) + 64);
     rl_ws ws;
     rl_ws_init(&ws, mem.data(), mem.size());
-    rl_ident id;
-    assert_int_equal(rl_ident_init(&id, &ws, &fam, NULL, 0), RL_OK);
+    rl_templates id;
+    assert_int_equal(rl_templates_init(&id, &ws, &fam, NULL, 0), RL_OK);
     std::mt19937 rng(3);
     for (int trial = 0; trial < 12; trial++) {
         int true_id = 1 + trial * 2;
@@ -228,9 +235,9 @@ static void test_ident_matches_direct_pearson(void **)
                 img.at<uchar>(y, x) = cv::saturate_cast<uchar>(210 - 0.7 * t.at<uchar>(y, x) + noise(rng));
         rl_image iv = rl_image_view(100, 100, (int)img.step, img.data);
         rl_profile p;
-        rl_ident_profile(&iv, cx, cy, R, &p);
+        rl_profile_gather(&iv, cx, cy, R, &p);
         rl_match m;
-        rl_ident_match(&id, &p, &m);
+        rl_match_all(&id, &p, &m);
         assert_int_equal(m.id, true_id);
         // direct formula: Pearson over the pixels with the template value of
         // the best id at blur 0 .. 3, evaluated per pixel by its bin
@@ -243,11 +250,11 @@ static void test_ident_matches_direct_pearson(void **)
                     if (d >= RL_PROFILE_EXTENT * R)
                         continue;
                     int k = (int)(d * RL_PROFILE_BINS / (RL_PROFILE_EXTENT * R));
-                    float tv2 = rl_ident_template_bin(&id, true_id - 1, b, k);
+                    float tv2 = rl_templates_bin(&id, true_id - 1, b, k);
                     a.push_back((uint8_t)(255 - img.at<uchar>(y, x)));
                     c.push_back((uint8_t)std::lround(tv2 * 255));
                 }
-            best_direct = std::max(best_direct, rl_pearson(a.data(), c.data(), NULL, (int)a.size()));
+            best_direct = std::max(best_direct, rl_match_pearson(a.data(), c.data(), NULL, (int)a.size()));
         }
         if (std::fabs(best_direct - m.score) > 0.003) // template quantized to 8 bits here
             fail_msg("trial %d: binned %.4f, direct %.4f", trial, m.score, best_direct);
@@ -259,7 +266,7 @@ static void test_ident_matches_direct_pearson(void **)
                     a.push_back((uint8_t)(255 - img.at<uchar>(y, x)));
                     c.push_back(t.at<uchar>(y, x));
                 }
-        double r2d = rl_pearson(a.data(), c.data(), NULL, (int)a.size());
+        double r2d = rl_match_pearson(a.data(), c.data(), NULL, (int)a.size());
         if (std::fabs(r2d - m.score) > 0.03)
             fail_msg("trial %d: 2-D template %.4f, radial %.4f", trial, r2d, m.score);
         // the gain: the template's black is 0.7 * 255 darker than its white
@@ -271,10 +278,10 @@ static void test_pearson_formula(void **)
 {
     uint8_t a[5] = {1, 2, 3, 4, 5}, b[5] = {2, 4, 6, 8, 10}, c[5] = {5, 4, 3, 2, 1}, k[5] = {7, 7, 7, 7, 7};
     uint8_t mask[5] = {1, 1, 0, 1, 1};
-    assert_true(std::fabs(rl_pearson(a, b, NULL, 5) - 1.0) < 1e-12);
-    assert_true(std::fabs(rl_pearson(a, c, NULL, 5) + 1.0) < 1e-12);
-    assert_true(rl_pearson(a, k, NULL, 5) == 0.0);
-    assert_true(std::fabs(rl_pearson(a, b, mask, 5) - 1.0) < 1e-12);
+    assert_true(std::fabs(rl_match_pearson(a, b, NULL, 5) - 1.0) < 1e-12);
+    assert_true(std::fabs(rl_match_pearson(a, c, NULL, 5) + 1.0) < 1e-12);
+    assert_true(rl_match_pearson(a, k, NULL, 5) == 0.0);
+    assert_true(std::fabs(rl_match_pearson(a, b, mask, 5) - 1.0) < 1e-12);
 }
 
 int main(void)

@@ -1,11 +1,12 @@
-/* The local pass's polar gather (rl_ident_polar): every pixel within the
+/* The local pass's polar gather (rl_polar_gather): every pixel within the
  * profile's reach counted once and light left out, at a landmark's usual
  * size and at one so large that the packed per-cell sums are moved out
  * during the gather; and the profiles it derives for a moved centre or a
  * changed radius are those of the landmark where it really is. */
 #include "rl_test.h"
 #include <math.h>
-#include "rl_ident.h"
+#include "rl_match.h"
+#include "rl_polar.h"
 #include "rl_template.h"
 
 #define S 1000
@@ -54,17 +55,17 @@ static void reference_count(double cx, double cy, double r, long *inside, long *
         }
 }
 
-static void init_ident(rl_ident *id)
+static void init_ident(rl_templates *id)
 {
     rl_family f = {5};
     rl_ws ws;
     rl_ws_init(&ws, wsmem, sizeof wsmem);
-    assert_int_equal(rl_ident_init(id, &ws, &f, NULL, 0), RL_OK);
+    assert_int_equal(rl_templates_init(id, &ws, &f, NULL, 0), RL_OK);
 }
 
 static void check_size(double r)
 {
-    rl_ident id;
+    rl_templates id;
     rl_profile p;
     rl_match m;
     long inside, edge;
@@ -72,12 +73,12 @@ static void check_size(double r)
     rl_image img = draw(22, cx, cy, r);
     init_ident(&id);
     reference_count(cx, cy, r, &inside, &edge);
-    rl_ident_polar(&img, cx, cy, r, LIGHT, 20.0, &pol);
-    rl_ident_polar_profile(&pol, 0, 0, 1.0, &p);
+    rl_polar_gather(&img, cx, cy, r, LIGHT, 20.0, &pol);
+    rl_polar_profile(&pol, 0, 0, 1.0, &p);
     if (p.total < inside - 0.5 || p.total > inside + edge + 0.5)
         fail_msg("r %.0f: %.0f pixels gathered, %ld (+%ld on the rim) within reach", r, p.total,
                  inside, edge);
-    rl_ident_match(&id, &p, &m);
+    rl_match_all(&id, &p, &m);
     if (m.id != 22 || m.score < 0.97)
         fail_msg("r %.0f: id %d score %.3f, drawn 22", r, m.id, m.score);
 }
@@ -100,7 +101,7 @@ static void test_counts_large(void **state)
  * way, worse. The same for a radius 6% short. */
 static void test_moved_profiles(void **state)
 {
-    rl_ident id;
+    rl_templates id;
     rl_profile p;
     rl_match as_is, back, away;
     double cx = 300.4, cy = 310.8, r = 24.0;
@@ -108,23 +109,23 @@ static void test_moved_profiles(void **state)
     int ids[1] = {13};
     (void)state;
     init_ident(&id);
-    rl_ident_polar(&img, cx - 1.2, cy + 0.6, r, LIGHT, 20.0, &pol);
-    rl_ident_polar_profile(&pol, 0, 0, 1.0, &p);
-    rl_ident_match_ids(&id, &p, ids, 1, 0, &as_is);
-    rl_ident_polar_profile(&pol, 1.2, -0.6, 1.0, &p);
-    rl_ident_match_ids(&id, &p, ids, 1, 0, &back);
-    rl_ident_polar_profile(&pol, -1.2, 0.6, 1.0, &p);
-    rl_ident_match_ids(&id, &p, ids, 1, 0, &away);
+    rl_polar_gather(&img, cx - 1.2, cy + 0.6, r, LIGHT, 20.0, &pol);
+    rl_polar_profile(&pol, 0, 0, 1.0, &p);
+    rl_match_ids(&id, &p, ids, 1, 0, &as_is);
+    rl_polar_profile(&pol, 1.2, -0.6, 1.0, &p);
+    rl_match_ids(&id, &p, ids, 1, 0, &back);
+    rl_polar_profile(&pol, -1.2, 0.6, 1.0, &p);
+    rl_match_ids(&id, &p, ids, 1, 0, &away);
     if (!(back.score > as_is.score + 0.01 && away.score < as_is.score - 0.01))
         fail_msg("shift: as gathered %.3f, moved back %.3f, moved away %.3f", as_is.score,
                  back.score, away.score);
-    rl_ident_polar(&img, cx, cy, 0.94 * r, LIGHT, 20.0, &pol);
-    rl_ident_polar_profile(&pol, 0, 0, 1.0, &p);
-    rl_ident_match_ids(&id, &p, ids, 1, 0, &as_is);
-    rl_ident_polar_profile(&pol, 0, 0, 1.0 / 0.94, &p);
-    rl_ident_match_ids(&id, &p, ids, 1, 0, &back);
-    rl_ident_polar_profile(&pol, 0, 0, 0.94, &p);
-    rl_ident_match_ids(&id, &p, ids, 1, 0, &away);
+    rl_polar_gather(&img, cx, cy, 0.94 * r, LIGHT, 20.0, &pol);
+    rl_polar_profile(&pol, 0, 0, 1.0, &p);
+    rl_match_ids(&id, &p, ids, 1, 0, &as_is);
+    rl_polar_profile(&pol, 0, 0, 1.0 / 0.94, &p);
+    rl_match_ids(&id, &p, ids, 1, 0, &back);
+    rl_polar_profile(&pol, 0, 0, 0.94, &p);
+    rl_match_ids(&id, &p, ids, 1, 0, &away);
     if (!(back.score > as_is.score + 0.01 && away.score < as_is.score - 0.01))
         fail_msg("scale: as gathered %.3f, rescaled %.3f, the other way %.3f", as_is.score,
                  back.score, away.score);

@@ -34,7 +34,7 @@ static rl_image draw(int stride)
     return img;
 }
 
-static rl_recog rec;
+static rl_recog *rec;
 
 static void init(const rl_recog_config *cfg)
 {
@@ -54,7 +54,7 @@ static void test_finds_what_was_drawn(void **state)
     (void)state;
     rl_recog_defaults(&cfg);
     init(&cfg);
-    assert_int_equal(rl_recog_run(&rec, &img, &res), RL_OK);
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
     assert_int_equal(res.n_landmarks, 4);
     for (i = 0; i < 4; i++) {
         int found = 0;
@@ -110,7 +110,7 @@ static void test_inner_ring_is_not_a_landmark(void **state)
             rl_recog_defaults(&cfg);
             cfg.local = pol ? RL_LOCAL_ALWAYS : RL_LOCAL_NEVER;
             init(&cfg);
-            assert_int_equal(rl_recog_run(&rec, &img, &res), RL_OK);
+            assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
             assert_true(res.n_lights > 0);
             for (j = 0; j < res.n_landmarks; j++) {
                 const rl_detection *d = &res.landmarks[j];
@@ -133,11 +133,11 @@ static void test_stride_is_honoured(void **state)
     rl_recog_defaults(&cfg);
     init(&cfg);
     img = draw(W);
-    assert_int_equal(rl_recog_run(&rec, &img, a), RL_OK);
+    assert_int_equal(rl_recog_run(rec, &img, a), RL_OK);
     img = draw(W + 16);
     for (j = 0; j < H; j++) /* garbage in the padding must not matter */
         memset(frame + j * (W + 16) + W, 0, 16);
-    assert_int_equal(rl_recog_run(&rec, &img, &res), RL_OK);
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
     assert_int_equal(res.n_landmarks, a->n_landmarks);
     for (j = 0; j < res.n_landmarks; j++) {
         assert_int_equal(res.landmarks[j].id, a->landmarks[j].id);
@@ -158,7 +158,7 @@ static void test_map_restricts_ids(void **state)
     cfg.n_ids = 3;
     init(&cfg);
     ids[0] = 99; /* the recognizer keeps its own copy */
-    assert_int_equal(rl_recog_run(&rec, &img, &res), RL_OK);
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
     assert_int_equal(res.n_landmarks, 2);
     for (j = 0; j < res.n_landmarks; j++)
         assert_true(res.landmarks[j].id == 6 || res.landmarks[j].id == 30);
@@ -172,13 +172,13 @@ static void test_blank_frames(void **state)
     rl_recog_defaults(&cfg);
     init(&cfg);
     memset(frame, 200, sizeof frame);
-    assert_int_equal(rl_recog_run(&rec, &img, &res), RL_OK);
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
     assert_int_equal(res.n_landmarks, 0);
     memset(frame, 255, sizeof frame);
-    assert_int_equal(rl_recog_run(&rec, &img, &res), RL_OK);
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
     assert_int_equal(res.n_landmarks, 0);
     memset(frame, 0, sizeof frame);
-    assert_int_equal(rl_recog_run(&rec, &img, &res), RL_OK);
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
     assert_int_equal(res.n_landmarks, 0);
 }
 
@@ -191,7 +191,7 @@ static void test_errors(void **state)
     (void)state;
     rl_recog_defaults(&cfg);
     init(&cfg);
-    assert_int_equal(rl_recog_run(&rec, &img, &res), RL_EINVAL); /* wrong size */
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_EINVAL); /* wrong size */
     n = rl_recog_workspace_size(W, H, &cfg);
     assert_int_equal(rl_recog_init(&rec, &cfg, W, H, mem, n - 1), RL_ENOMEM);
     cfg.ids = bad_ids;

@@ -31,21 +31,11 @@ typedef struct {
     rl_image img, small;
 } mock_cam;
 
-static rl_err cam_open(void *ctx, char *err, size_t errlen)
+/* The double is a camera backend (rl_cam_config.open): the loop opens,
+ * grabs, releases and closes it through rl_cam like any other. */
+static rl_err cam_grab(rl_cam *cm, int timeout_ms, rl_cam_frame *f)
 {
-    mock_cam *c = ctx;
-    if (c->script[c->pos] == FAIL_OPEN) {
-        c->pos++;
-        snprintf(err, errlen, "/dev/video9: no such device");
-        return RL_ENODEV;
-    }
-    c->opens++;
-    c->is_open = 1;
-    return RL_OK;
-}
-static rl_err cam_grab(void *ctx, int timeout_ms, rl_cam_frame *f)
-{
-    mock_cam *c = ctx;
+    mock_cam *c = cm->state;
     int what = c->script[c->pos];
     (void)timeout_ms;
     assert_true(c->is_open);
@@ -62,8 +52,23 @@ static rl_err cam_grab(void *ctx, int timeout_ms, rl_cam_frame *f)
     f->slot = 0;
     return RL_OK;
 }
-static void cam_release(void *ctx, rl_cam_frame *f) { (void)ctx; (void)f; }
-static void cam_close(void *ctx) { mock_cam *c = ctx; c->closes++; c->is_open = 0; }
+static void cam_release(rl_cam *cm, rl_cam_frame *f) { (void)cm; (void)f; }
+static void cam_close(rl_cam *cm) { mock_cam *c = cm->state; c->closes++; c->is_open = 0; }
+static const rl_cam_ops mock_ops = {cam_grab, cam_release, cam_close};
+static rl_err cam_open(rl_cam *cm, const rl_cam_config *cc, char *err, size_t errlen)
+{
+    mock_cam *c = cc->open_arg;
+    if (c->script[c->pos] == FAIL_OPEN) {
+        c->pos++;
+        snprintf(err, errlen, "/dev/video9: no such device");
+        return RL_ENODEV;
+    }
+    c->opens++;
+    c->is_open = 1;
+    cm->ops = &mock_ops;
+    cm->state = c;
+    return RL_OK;
+}
 
 /* ---- a serial line that decodes what it is given ---- */
 typedef struct {
@@ -98,7 +103,7 @@ static truth tr;
 static rl_camera calib;
 static rl_map map;
 static rl_mount mount;
-static rl_recog rec;
+static rl_recog *rec;
 static rl_result res;
 static void *mem;
 static mock_cam cam;
@@ -149,17 +154,20 @@ static int teardown(void **state)
 
 static void start(const int *script)
 {
+    static rl_cam_config cc;
     rl_run_io io;
     memset(&io, 0, sizeof io);
-    io.cam_open = cam_open; io.cam_grab = cam_grab; io.cam_release = cam_release; io.cam_close = cam_close;
-    io.cam_ctx = &cam;
-    io.out_open = out_open; io.out_write = out_write; io.out_close = out_close; io.out_ctx = &out;
-    io.now_us = now_us; io.sleep_us = sleep_us; io.log = log_line;
+    rl_cam_defaults(&cc);
+    cc.open = cam_open;
+    cc.open_arg = &cam;
+    io.cam = &cc;
+    io.out.open = out_open; io.out.write = out_write; io.out.close = out_close; io.out.ctx = &out;
+    io.clock.now_us = now_us; io.clock.sleep_us = sleep_us; io.log = log_line;
     cam.script = script;
     cam.pos = cam.opens = cam.closes = cam.is_open = 0;
     memset(&out, 0, sizeof out);
     rl_decoder_init(&out.d);
-    rl_run_init(&runner, &io, &rec, &calib, &map, &mount, &res);
+    rl_run_init(&runner, &io, rec, &calib, &map, &mount, &res);
 }
 
 static void run_to_end(void)

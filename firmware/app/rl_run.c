@@ -35,7 +35,7 @@ static void logf_(rl_runner *r, int kind, const char *fmt, ...)
 static void logf_(rl_runner *r, int kind, const char *fmt, ...)
 {
     char line[512], full[600];
-    uint64_t now = r->io.now_us(r->io.clock_ctx);
+    uint64_t now = r->io.clock.now_us(r->io.clock.ctx);
     va_list ap;
     if (r->io.log == NULL)
         return;
@@ -67,7 +67,7 @@ static void send_msg(rl_runner *r, rl_msg *m)
     uint8_t buf[RL_FRAME_MAX];
     size_t n;
     char err[256];
-    uint64_t now = r->io.now_us(r->io.clock_ctx);
+    uint64_t now = r->io.clock.now_us(r->io.clock.ctx);
     rl_err e;
     m->seq = r->seq++;
     if (m->type == RL_FRAME_POSE)
@@ -79,7 +79,7 @@ static void send_msg(rl_runner *r, rl_msg *m)
             r->dropped++;
             return;
         }
-        if ((e = r->io.out_open(r->io.out_ctx, err, sizeof err)) != RL_OK) {
+        if ((e = r->io.out.open(r->io.out.ctx, err, sizeof err)) != RL_OK) {
             logf_(r, RL_LOG_SERIAL, "serial: %s; retrying", err);
             r->out_retry_at = now + r->out_backoff;
             r->out_backoff = next_backoff(r, r->out_backoff);
@@ -91,9 +91,9 @@ static void send_msg(rl_runner *r, rl_msg *m)
         r->out_backoff = r->backoff_min_us;
     }
     n = rl_frame_encode(m, buf);
-    if ((e = r->io.out_write(r->io.out_ctx, buf, n)) != RL_OK) {
+    if ((e = r->io.out.write(r->io.out.ctx, buf, n)) != RL_OK) {
         logf_(r, RL_LOG_SERIAL, "serial: write failed (%s); reopening", rl_strerror(e));
-        r->io.out_close(r->io.out_ctx);
+        r->io.out.close(r->io.out.ctx);
         r->out_up = 0;
         r->out_retry_at = now + r->out_backoff;
         r->out_backoff = next_backoff(r, r->out_backoff);
@@ -126,7 +126,7 @@ static uint16_t clampu16(double v)
 
 static void camera_down(rl_runner *r, uint64_t now)
 {
-    r->io.cam_close(r->io.cam_ctx);
+    rl_cam_close(&r->cam);
     r->cam_up = 0;
     r->cam_retry_at = now + r->cam_backoff;
     r->cam_backoff = next_backoff(r, r->cam_backoff);
@@ -134,16 +134,16 @@ static void camera_down(rl_runner *r, uint64_t now)
 
 rl_err rl_run_step(rl_runner *r)
 {
-    uint64_t now = r->io.now_us(r->io.clock_ctx);
+    uint64_t now = r->io.clock.now_us(r->io.clock.ctx);
     rl_cam_frame f;
     rl_pose pose;
     rl_err e;
     char err[256];
-    int i, local = 0;
+    int i, w, h, local = 0;
 
     if (!r->cam_up) {
         if (now >= r->cam_retry_at) {
-            if ((e = r->io.cam_open(r->io.cam_ctx, err, sizeof err)) == RL_OK) {
+            if ((e = rl_cam_open(&r->cam, r->io.cam, err, sizeof err)) == RL_OK) {
                 r->cam_up = 1;
                 r->timeouts = 0;
                 r->cam_backoff = r->backoff_min_us;
@@ -159,21 +159,21 @@ rl_err rl_run_step(rl_runner *r)
         send_status(r, RL_STATUS_CAMERA_ERROR, 0, 0, now);
         {
             uint64_t wait = r->cam_retry_at > now ? r->cam_retry_at - now : 0;
-            r->io.sleep_us(r->io.clock_ctx, wait < r->status_period_us ? wait : r->status_period_us);
+            r->io.clock.sleep_us(r->io.clock.ctx, wait < r->status_period_us ? wait : r->status_period_us);
         }
         return RL_OK;
     }
 
-    e = r->io.cam_grab(r->io.cam_ctx, r->timeout_ms, &f);
+    e = rl_cam_grab(&r->cam, r->timeout_ms, &f);
     if (e == RL_ENOTFOUND)
         return RL_ENOTFOUND;
     if (e == RL_ETIMEOUT) {
         r->camera_timeouts++;
         logf_(r, RL_LOG_TIMEOUT, "camera: no frame in %d ms", r->timeout_ms);
-        send_status(r, RL_STATUS_CAMERA_TIMEOUT, 0, 0, r->io.now_us(r->io.clock_ctx));
+        send_status(r, RL_STATUS_CAMERA_TIMEOUT, 0, 0, r->io.clock.now_us(r->io.clock.ctx));
         if (++r->timeouts >= r->reopen_after_timeouts) {
             logf_(r, RL_LOG_CAMERA, "camera: %d timeouts in a row; reopening", r->timeouts);
-            camera_down(r, r->io.now_us(r->io.clock_ctx));
+            camera_down(r, r->io.clock.now_us(r->io.clock.ctx));
             r->cam_retry_at = 0; /* reopen at once */
         }
         return RL_OK;
@@ -187,15 +187,16 @@ rl_err rl_run_step(rl_runner *r)
     }
     r->timeouts = 0;
     r->frames++;
-    if (f.img.width != r->rec->width || f.img.height != r->rec->height) {
+    rl_recog_frame_size(r->rec, &w, &h);
+    if (f.img.width != w || f.img.height != h) {
         logf_(r, RL_LOG_FRAME, "frame %ld is %dx%d, the calibration is for %dx%d; skipped", f.index,
-              f.img.width, f.img.height, r->rec->width, r->rec->height);
-        r->io.cam_release(r->io.cam_ctx, &f);
+              f.img.width, f.img.height, w, h);
+        rl_cam_release(&r->cam, &f);
         send_status(r, RL_STATUS_CONFIG_ERROR, 0, 0, f.t_us);
         return RL_OK;
     }
     e = rl_recog_run(r->rec, &f.img, r->res);
-    r->io.cam_release(r->io.cam_ctx, &f);
+    rl_cam_release(&r->cam, &f);
     if (e != RL_OK) {
         /* a bad frame (noise beyond the workspace) never stops the loop */
         logf_(r, RL_LOG_FRAME, "frame %ld: recognition failed: %s", f.index, rl_strerror(e));
@@ -209,7 +210,7 @@ rl_err rl_run_step(rl_runner *r)
     r->local_used += local;
     if (e == RL_OK) {
         rl_msg m;
-        uint64_t sent = r->io.now_us(r->io.clock_ctx);
+        uint64_t sent = r->io.clock.now_us(r->io.clock.ctx);
         memset(&m, 0, sizeof m);
         m.type = RL_FRAME_POSE;
         m.time_ms = (uint32_t)(f.t_us / 1000u);
@@ -233,8 +234,8 @@ rl_err rl_run_step(rl_runner *r)
 void rl_run_close(rl_runner *r)
 {
     if (r->cam_up)
-        r->io.cam_close(r->io.cam_ctx);
+        rl_cam_close(&r->cam);
     if (r->out_up)
-        r->io.out_close(r->io.out_ctx);
+        r->io.out.close(r->io.out.ctx);
     r->cam_up = r->out_up = 0;
 }

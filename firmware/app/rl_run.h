@@ -5,13 +5,17 @@
  * part of the loop, not exits: a camera that fails is closed and reopened
  * with backoff while status frames keep going out; a camera that times out
  * repeatedly is reopened; a serial line that disappears is reopened; a bad
- * frame is reported and skipped. The camera, the output, the clock and the
- * log are reached through rl_run_io so tests can inject every fault.
- * Nothing is allocated after rl_run_init.
+ * frame is reported and skipped. The camera is an rl_cam opened from
+ * the configuration in rl_run_io (a test's double is one more camera
+ * backend); the output, the clock and the log are reached through
+ * rl_run_io too, so tests can inject every fault. Nothing is allocated
+ * after rl_run_init.
  *
- *   rl_runner r;
- *   rl_run_init(&r, &io, &rec, &calib, &map, &mount, &result);
- *   while (!stop && rl_run_step(&r) != RL_ENOTFOUND) {}
+ *   static rl_runner r;
+ *   rl_run_init(&r, &io, rec, &calib, &map, &mount, &result);
+ *   while (!stop && rl_run_step(&r) != RL_ENOTFOUND)
+ *       continue;
+ *   rl_run_close(&r);
  */
 #ifndef RL_RUN_H
 #define RL_RUN_H
@@ -19,23 +23,24 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "rl_cam.h"
+#include "rl_clock.h"
 #include "rl_frame.h"
 #include "rl_pose.h"
 #include "rl_recog.h"
 
+/* Where frames go: the serial line (rl_fw.c wires rl_serial to it), or a
+ * test's decoder. */
 typedef struct {
-    rl_err (*cam_open)(void *ctx, char *err, size_t errlen);
-    rl_err (*cam_grab)(void *ctx, int timeout_ms, rl_cam_frame *f);
-    void (*cam_release)(void *ctx, rl_cam_frame *f);
-    void (*cam_close)(void *ctx);
-    void *cam_ctx;
-    rl_err (*out_open)(void *ctx, char *err, size_t errlen);
-    rl_err (*out_write)(void *ctx, const uint8_t *p, size_t n);
-    void (*out_close)(void *ctx);
-    void *out_ctx;
-    uint64_t (*now_us)(void *ctx);
-    void (*sleep_us)(void *ctx, uint64_t us);
-    void *clock_ctx;
+    rl_err (*open)(void *ctx, char *err, size_t errlen);
+    rl_err (*write)(void *ctx, const uint8_t *p, size_t n);
+    void (*close)(void *ctx);
+    void *ctx;
+} rl_run_out;
+
+typedef struct {
+    const rl_cam_config *cam; /* the camera the loop opens (and reopens) */
+    rl_run_out out;
+    rl_clock clock;           /* rl_clock_system(), or a test's */
     void (*log)(void *ctx, const char *line); /* one line, no newline */
     void *log_ctx;
 } rl_run_io;
@@ -45,6 +50,7 @@ enum { RL_LOG_CAMERA, RL_LOG_TIMEOUT, RL_LOG_SERIAL, RL_LOG_FRAME, RL_LOG_INFO, 
 
 typedef struct {
     rl_run_io io;
+    rl_cam cam;
     rl_recog *rec;
     const rl_camera *calib;
     const rl_map *map;

@@ -4,10 +4,13 @@
  * The histogram of a frame gives the light-source threshold (pixels at or
  * above it are light sources and their glare), and K-means clustering of
  * the remaining intensities gives the foreground (dark ROI) and background
- * levels and the threshold between them. Intensity is one-dimensional, so
- * K-means runs exactly on the 256 bins: the globally optimal partition by
- * dynamic programming, identical to Lloyd's K-means on every pixel at its
- * best optimum, in microseconds.
+ * levels and the threshold between them (internal). Intensity is one-
+ * dimensional, so K-means runs on the 256 bins instead of the pixels: the
+ * exact optimum over groups of 16 grey levels by dynamic programming, then
+ * Lloyd's iterations on single levels from there, then each boundary moved
+ * within two levels while that lowers the error: a local optimum next to
+ * the coarse global one, in microseconds (tests/test_oracles.cpp compares
+ * it with OpenCV's K-means on the pixels).
  *
  *   rl_hist h;
  *   rl_hist_compute(&img, &h);
@@ -20,19 +23,12 @@
 #include <stdint.h>
 #include "rl_error.h"
 #include "rl_image.h"
+#include "rl_recog.h" /* rl_levels */
 
 typedef struct {
     uint32_t bin[256];
     uint32_t total;
 } rl_hist;
-
-typedef struct {
-    int light;         /* light-source threshold: pixels >= light are light; 256 = none */
-    int threshold;     /* ROI threshold: pixels < threshold are dark (foreground) */
-    double fg, bg;     /* mean foreground and background levels */
-    double centre[3];  /* K-means centres, ascending */
-    int k;             /* clusters used */
-} rl_levels;
 
 /* Histogram of every pixel of the view (stride honoured). */
 void rl_hist_compute(const rl_image *img, rl_hist *h);
@@ -41,7 +37,7 @@ void rl_hist_compute(const rl_image *img, rl_hist *h);
  * every pixel, and half the rows halve the cost. */
 void rl_hist_compute_rows(const rl_image *img, rl_hist *h, int row_step);
 
-/* Exact 1-D K-means on bins [lo, hi): k (1..3) centres, ascending, and
+/* 1-D K-means on bins [lo, hi) as above: k (1..3) centres, ascending, and
  * the first bin of each cluster in `start` (may be NULL). RL_EINVAL for a
  * bad range or k, RL_ERANGE when the range has fewer than k occupied
  * bins. */

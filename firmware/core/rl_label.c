@@ -82,15 +82,6 @@ static int skip_outside(const uint8_t *row, int from, int width, int lo, int hi)
     return x;
 }
 
-rl_err rl_label_resize(rl_label *lb, int width, int height)
-{
-    if (width <= 0 || height <= 0 || width > 65535 || height > lb->max_height)
-        return RL_EINVAL;
-    lb->width = width;
-    lb->height = height;
-    return RL_OK;
-}
-
 static int32_t find(int32_t *p, int32_t a)
 {
     while (p[a] != a) {
@@ -116,8 +107,10 @@ rl_err rl_label_band(rl_label *lb, const rl_image *img, int lo, int hi, int min_
 {
     int x, y, r, n = 0, prev_start = 0, prev_end = 0;
     int32_t *p = lb->tag;
-    if (!rl_image_valid(img) || img->width != lb->width || img->height != lb->height)
+    if (!rl_image_valid(img) || img->width > 65535 || img->height > lb->max_height)
         return RL_EINVAL;
+    lb->width = img->width;
+    lb->height = img->height;
     lb->n_runs = lb->n_regions = lb->overflow = 0;
     if (lo < 0)
         lo = 0;

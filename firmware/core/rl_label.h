@@ -1,4 +1,4 @@
-/* rl_label: connected regions of an intensity band, by runs.
+/* rl_label: connected regions of an intensity band, by runs (internal).
  *
  * Pixels with lo <= I < hi are collected as horizontal runs row by row and
  * joined 8-connected with union-find over runs, so no binary or label
@@ -9,7 +9,7 @@
  *   rl_label lb;
  *   if (rl_label_init(&lb, &ws, w, h, max_runs, RL_MAX_REGIONS) == RL_OK &&
  *       rl_label_band(&lb, &img, 0, threshold, 3) == RL_OK)
- *       for (i = 0; i < lb.n_regions; i++) use(&lb.reg[i]);
+ *       for (i = 0; i < lb.n_regions; i++) use(&lb.reg[i]);   // lb.overflow: dropped
  */
 #ifndef RL_LABEL_H
 #define RL_LABEL_H
@@ -26,7 +26,7 @@ typedef struct {
 } rl_region;
 
 typedef struct {
-    int width, height;
+    int width, height;        /* the image last labelled */
     int max_height;           /* rows the row index holds (height at init) */
     int cap_runs, cap_regions;
     int n_runs, n_regions;
@@ -45,12 +45,10 @@ size_t rl_label_bytes(int height, int cap_runs, int cap_regions);
 RL_CHECK rl_err rl_label_init(rl_label *lb, rl_ws *ws, int width, int height, int cap_runs,
                               int cap_regions);
 
-/* Label images of another size with the same buffers (a window of the
- * frame): RL_EINVAL if h exceeds the height given at init. */
-RL_CHECK rl_err rl_label_resize(rl_label *lb, int width, int height);
-
-/* Label pixels with lo <= I < hi in img (same size as at init or resize). Regions of
- * fewer than min_area pixels are dropped. RL_ELIMIT if the image has more
+/* Label pixels with lo <= I < hi in img: any image up to 65535 wide and
+ * at most as high as the height given at init (a frame, or a window of
+ * it). Regions of fewer than min_area pixels are dropped. RL_EINVAL for a
+ * larger image. RL_ELIMIT if the image has more
  * runs than cap_runs (a frame of noise); regions past cap_regions are
  * counted in lb->overflow, not an error. */
 RL_CHECK rl_err rl_label_band(rl_label *lb, const rl_image *img, int lo, int hi, int min_area);

@@ -19,6 +19,7 @@
 #include <apriltag/apriltag.h>
 #include <apriltag/tag36h11.h>
 #include "rl_png.h"
+#include "rl_clock.h"
 #include "rl_report.h"
 
 #define REPEAT 5
@@ -50,7 +51,7 @@ static int bench_dir(const char *dir, apriltag_detector_t *td)
     DIR *d = opendir(dir);
     struct dirent *e;
     rl_recog_config cfg;
-    rl_host_recog hr;
+    rl_heap_recog hr;
     char path[2048], err[512];
     if (!d) {
         fprintf(stderr, "ringloc-bench: %s: cannot open\n", dir);
@@ -70,7 +71,7 @@ static int bench_dir(const char *dir, apriltag_detector_t *td)
     }
     qsort(names, (size_t)n, sizeof names[0], cmp_str);
     rl_recog_defaults(&cfg);
-    rl_host_recog_init(&hr, &cfg);
+    rl_heap_recog_init(&hr, &cfg);
     for (i = 0; i < n; i++) {
         rl_image ring, tag;
         double t[REPEAT];
@@ -87,7 +88,7 @@ static int bench_dir(const char *dir, apriltag_detector_t *td)
         W = ring.width;
         H = ring.height;
         for (k = 0; k < REPEAT; k++)
-            if (rl_host_recog_run(&hr, &ring, &res, &t[k]) != RL_OK) {
+            if (rl_report_run(&hr, &ring, &res, &t[k]) != RL_OK) {
                 fprintf(stderr, "ringloc-bench: %s: recognition failed\n", names[i]);
                 return 1;
             }
@@ -95,9 +96,9 @@ static int bench_dir(const char *dir, apriltag_detector_t *td)
         found_rl += res.n_landmarks;
         for (k = 0; k < 3; k++) {
             image_u8_t im = {tag.width, tag.height, tag.stride, tag.data};
-            double t0 = rl_now_us();
+            double t0 = (double)rl_clock_now_us();
             zarray_t *dets = apriltag_detector_detect(td, &im);
-            t[k] = rl_now_us() - t0;
+            t[k] = (double)rl_clock_now_us() - t0;
             if (k == 0)
                 found_at += zarray_size(dets);
             apriltag_detections_destroy(dets);
@@ -113,7 +114,7 @@ static int bench_dir(const char *dir, apriltag_detector_t *td)
         printf("%4dx%-4d %6d %12.3f %12.3f %9.1fx %9d %9d %10zu %7.2f\n", W, H, n, mr, ma, ma / mr,
                found_rl, found_at, ws, (double)ws / ((double)W * H));
     }
-    rl_host_recog_free(&hr);
+    rl_heap_recog_free(&hr);
     return 0;
 }
 
@@ -139,16 +140,16 @@ static int bench_local(const char *dir)
 {
     static rl_result res;
     rl_recog_config cfg;
-    rl_host_recog never, always;
+    rl_heap_recog never, always;
     double extra = 0, base = 0;
     long tried = 0, found = 0;
     int k, frames = 0;
     char path[2048], err[512];
     rl_recog_defaults(&cfg);
     cfg.local = RL_LOCAL_NEVER;
-    rl_host_recog_init(&never, &cfg);
+    rl_heap_recog_init(&never, &cfg);
     cfg.local = RL_LOCAL_ALWAYS;
-    rl_host_recog_init(&always, &cfg);
+    rl_heap_recog_init(&always, &cfg);
     for (k = 0; k < MAX_FRAMES; k++) {
         rl_image img;
         double t[LOCAL_REPEAT], u[LOCAL_REPEAT];
@@ -157,8 +158,8 @@ static int bench_local(const char *dir)
         if (rl_png_read_gray(path, &img, err, sizeof err) != RL_OK)
             break;
         for (i = 0; i < LOCAL_REPEAT; i++) {
-            if (rl_host_recog_run(&never, &img, &res, &t[i]) != RL_OK ||
-                rl_host_recog_run(&always, &img, &res, &u[i]) != RL_OK) {
+            if (rl_report_run(&never, &img, &res, &t[i]) != RL_OK ||
+                rl_report_run(&always, &img, &res, &u[i]) != RL_OK) {
                 fprintf(stderr, "ringloc-bench: %s: recognition failed\n", path);
                 return 1;
             }
@@ -181,8 +182,8 @@ static int bench_local(const char *dir)
     printf("local pass: the frames' global pass took %.1f us each in the same runs; a retried candidate"
            " costs %.1f%% of that\n",
            base / frames, tried && base > 0 ? 100.0 * (extra / tried) / (base / frames) : 0.0);
-    rl_host_recog_free(&never);
-    rl_host_recog_free(&always);
+    rl_heap_recog_free(&never);
+    rl_heap_recog_free(&always);
     return 0;
 }
 

@@ -6,10 +6,27 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+static const char *program = "ringloc";
+
+void rl_cli_set_program(const char *name)
+{
+    program = name;
+}
+
+void rl_cli_prefix(const char *cmd, char *out, size_t len)
+{
+    if (cmd == NULL || cmd[0] == '\0')
+        snprintf(out, len, "%s", program);
+    else
+        snprintf(out, len, "%s %s", program, cmd);
+}
+
 int rl_cli_fail(const char *cmd, int code, const char *fmt, ...)
 {
+    char prefix[128];
     va_list ap;
-    fprintf(stderr, "ringloc %s: ", cmd);
+    rl_cli_prefix(cmd, prefix, sizeof prefix);
+    fprintf(stderr, "%s: ", prefix);
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);
     va_end(ap);

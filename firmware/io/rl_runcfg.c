@@ -2,7 +2,6 @@
 
 #include <stdio.h>
 #include <string.h>
-#include "rl_serial.h"
 #include "rl_yaml.h"
 
 /* `value` relative to the folder of `base` unless absolute (or "-"). */
@@ -26,6 +25,17 @@ static rl_err path_key(rl_yaml *y, yaml_node_t *map, const char *key, const char
     return e;
 }
 
+/* A correlation threshold in (0, 1], if given. */
+static rl_err score_key(rl_yaml *y, yaml_node_t *map, const char *key, const char *label,
+                        double *v, char *err, size_t errlen)
+{
+    rl_err e = rl_yaml_double(y, map, key, label, 0, v, err, errlen);
+    if (e == RL_OK && !(*v > 0 && *v <= 1))
+        e = rl_yaml_fail(y, rl_yaml_get(y, map, key), label, RL_ERANGE, err, errlen,
+                         "must be in (0, 1]");
+    return e;
+}
+
 rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
 {
     rl_yaml y;
@@ -33,10 +43,11 @@ rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
     const char *s = NULL;
     rl_err e;
     memset(c, 0, sizeof *c);
-    rl_cam_defaults(&c->cam);
+    c->cam_rate = 10.0;
     c->baud = 115200;
     c->local = RL_LOCAL_AUTO;
     c->min_score = 0.80;
+    c->local_min_score = 0.75;
     c->log_interval = 5.0;
     snprintf(c->cam_backend, sizeof c->cam_backend, "png");
     if ((e = rl_yaml_load(&y, path, err, errlen)) != RL_OK)
@@ -70,11 +81,11 @@ rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
         relative(c->cam_device, sizeof c->cam_device, path, s);
     else
         snprintf(c->cam_device, sizeof c->cam_device, "%s", s);
-    if ((e = rl_yaml_int(&y, cam, "width", "camera.width", 0, &c->cam.width, err, errlen)) != RL_OK ||
-        (e = rl_yaml_int(&y, cam, "height", "camera.height", 0, &c->cam.height, err, errlen)) != RL_OK ||
-        (e = rl_yaml_double(&y, cam, "rate", "camera.rate", 0, &c->cam.rate, err, errlen)) != RL_OK)
+    if ((e = rl_yaml_int(&y, cam, "width", "camera.width", 0, &c->cam_width, err, errlen)) != RL_OK ||
+        (e = rl_yaml_int(&y, cam, "height", "camera.height", 0, &c->cam_height, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double(&y, cam, "rate", "camera.rate", 0, &c->cam_rate, err, errlen)) != RL_OK)
         goto out;
-    if (c->cam.width < 0 || c->cam.height < 0 || c->cam.rate < 0 || c->cam.rate > 1000) {
+    if (c->cam_width < 0 || c->cam_height < 0 || c->cam_rate < 0 || c->cam_rate > 1000) {
         e = rl_yaml_fail(&y, cam, "camera", RL_ERANGE, err, errlen,
                          "width, height must be >= 0 and rate 0 .. 1000");
         goto out;
@@ -88,11 +99,8 @@ rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
         (e = rl_yaml_double(&y, root, "log_interval", NULL, 0, &c->log_interval, err, errlen)) != RL_OK)
         goto out;
     /* device paths like /dev/serial0 are absolute; relative ones are files */
-    if (!rl_serial_baud_ok(c->baud)) {
-        e = rl_yaml_fail(&y, rl_yaml_get(&y, ser, "baud"), "serial.baud", RL_ERANGE, err, errlen,
-                         "%d is not a supported baud rate (9600 .. 921600)", c->baud);
-        goto out;
-    }
+    if (rl_yaml_get(&y, ser, "baud") != NULL)
+        c->baud_line = (int)rl_yaml_get(&y, ser, "baud")->start_mark.line + 1;
     if (rec != NULL) {
         s = NULL;
         if ((e = rl_yaml_string(&y, rec, "local", "recognition.local", 0, &s, err, errlen)) != RL_OK)
@@ -107,16 +115,10 @@ rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
                 goto out;
             }
         }
-        if ((e = rl_yaml_double(&y, rec, "min_score", "recognition.min_score", 0, &c->min_score, err, errlen)) != RL_OK)
+        if ((e = score_key(&y, rec, "min_score", "recognition.min_score", &c->min_score, err, errlen)) != RL_OK ||
+            (e = score_key(&y, rec, "local_min_score", "recognition.local_min_score", &c->local_min_score, err, errlen)) != RL_OK)
             goto out;
-        if (!(c->min_score > 0 && c->min_score <= 1)) {
-            e = rl_yaml_fail(&y, rl_yaml_get(&y, rec, "min_score"), "recognition.min_score",
-                             RL_ERANGE, err, errlen, "must be in (0, 1]");
-            goto out;
-        }
     }
-    c->cam.backend = c->cam_backend;
-    c->cam.device = c->cam_device;
 out:
     rl_yaml_free(&y);
     return e;

@@ -9,17 +9,20 @@
  * border (DUCLRs) are re-clustered in an enlarged window of the input
  * frame and identified again, border-cut ones against cut templates.
  *
- * Allocation-free: every buffer comes from the block given to
- * rl_recog_init, whose size rl_recog_workspace_size() tells.
+ * Allocation-free: the recognizer and every buffer it uses live in the
+ * block given to rl_recog_init, whose size rl_recog_workspace_size()
+ * tells. Nothing is cut silently: whatever a compile-time limit
+ * (rl_config.h) drops is counted in rl_result.dropped.
  *
- *   rl_recog_config cfg;
- *   rl_recog_defaults(&cfg);                  // ring5, every id
- *   size_t need = rl_recog_workspace_size(640, 480, &cfg);
- *   rl_recog rec;
- *   if (rl_recog_init(&rec, &cfg, 640, 480, mem, need) != RL_OK) ...
+ *   static unsigned char mem[4 << 20];
  *   static rl_result res;                     // large: not on a small stack
- *   if (rl_recog_run(&rec, &frame, &res) == RL_OK)
- *       for (i = 0; i < res.n_landmarks; i++) use(&res.landmarks[i]);
+ *   rl_recog_config cfg;
+ *   rl_recog *rec;
+ *   rl_recog_defaults(&cfg);                  // ring5, every id
+ *   if (rl_recog_workspace_size(640, 480, &cfg) <= sizeof mem &&
+ *       rl_recog_init(&rec, &cfg, 640, 480, mem, sizeof mem) == RL_OK &&
+ *       rl_recog_run(rec, &frame, &res) == RL_OK)
+ *       use(res.n_landmarks, res.landmarks);
  */
 #ifndef RL_RECOG_H
 #define RL_RECOG_H
@@ -27,10 +30,7 @@
 #include "rl_config.h"
 #include "rl_error.h"
 #include "rl_family.h"
-#include "rl_hist.h"
-#include "rl_ident.h"
 #include "rl_image.h"
-#include "rl_label.h"
 #include "rl_map.h"
 #include "rl_workspace.h"
 
@@ -42,14 +42,27 @@ typedef enum {
 
 typedef enum { RL_PASS_GLOBAL = 0, RL_PASS_LOCAL = 1 } rl_pass;
 
+/* Histogram analysis and clustering of a frame. */
+typedef struct {
+    int light;         /* light-source threshold: pixels >= light are light; 256 = none */
+    int threshold;     /* ROI threshold: pixels < threshold are dark (foreground) */
+    double fg, bg;     /* mean foreground and background levels */
+    double centre[3];  /* K-means centres, ascending */
+    int k;             /* clusters used */
+} rl_levels;
+
 typedef struct {
     rl_family family;     /* landmark family (default ring5) */
     const int *ids;       /* ids to recognize (a map's); NULL = every id */
     int n_ids;
-    double min_score;     /* Pearson correlation to accept an id (default 0.80) */
-    double min_lead;      /* runner-up's residual (1 - r^2) over the best's (default 1.5) */
-    double min_contrast;  /* fitted ink/paper contrast, fraction of the frame's
-                             background - foreground span (default 0.5) */
+    /* Acceptance of an id, one rule for both passes (rl_accept.h): */
+    double min_score;     /* global pass: Pearson correlation to accept an id (0.80) */
+    double min_lead;      /* global pass: runner-up's residual (1 - r^2) over the best's (1.5) */
+    double local_min_score; /* local pass: the same (0.75): a DUCLR is re-extracted and */
+    double local_min_lead;  /* centred on its own edge, so a little less is needed (1.3) */
+    double min_contrast;  /* fitted ink/paper contrast, fraction of the grey span
+                             (global: the frame's background - foreground; local: the
+                             sector-normalized span) (default 0.5) */
     double min_radius;    /* smallest landmark radius considered, px; 0 (default) = where
                              code zone 1 is 1 px wide (11.8 px for ring5) */
     double max_radius;    /* largest, px; 0 = half the shorter image side */
@@ -74,6 +87,14 @@ typedef struct {
     double visible;     /* fraction of the disk inside the image */
 } rl_detection;
 
+/* What a compile-time limit (rl_config.h) left out of one frame's result. */
+typedef struct {
+    int regions;       /* dark regions past RL_MAX_REGIONS (never examined) */
+    int lights;        /* light regions past RL_MAX_LIGHTS */
+    int candidates;    /* CLRs past RL_MAX_CANDIDATES, unidentified ones included */
+    int landmarks;     /* identified landmarks past RL_MAX_LANDMARKS */
+} rl_dropped;
+
 typedef struct {
     int width, height;
     rl_levels levels;   /* histogram analysis and clustering */
@@ -87,18 +108,11 @@ typedef struct {
     rl_box lights[RL_MAX_LIGHTS];
     int local_tried;    /* DUCLRs the local pass retried */
     int local_found;    /* of those, identified */
+    rl_dropped dropped; /* what the limits left out (all 0 on ordinary frames) */
 } rl_result;
 
-typedef struct {
-    rl_recog_config cfg;
-    int width, height;
-    int ids[RL_MAX_MAP_LANDMARKS]; /* copy of cfg.ids */
-    rl_ws ws;           /* the caller's block */
-    rl_ident ident;     /* templates, rendered at init */
-    rl_label dark;      /* ROI labelling, reused by every frame and window */
-    rl_label light;     /* light-source labelling */
-    rl_polar *polar;    /* a local-pass candidate in polar cells */
-} rl_recog;
+/* The recognizer: opaque, it lives at the start of the caller's block. */
+typedef struct rl_recog rl_recog;
 
 /* Fill every field with its default (ring5, every id). */
 void rl_recog_defaults(rl_recog_config *cfg);
@@ -111,16 +125,20 @@ void rl_recog_use_map(rl_recog_config *cfg, const rl_map *map, int *ids);
  * configuration is invalid. */
 size_t rl_recog_workspace_size(int w, int h, const rl_recog_config *cfg);
 
-/* Prepare for frames of w x h in mem[0..size). RL_ENOMEM if size is less
+/* Prepare for frames of w x h in mem[0..size): *rec points into mem and
+ * stays valid while mem does. RL_ENOMEM if size is less
  * than rl_recog_workspace_size(), RL_EINVAL / RL_ERANGE for a bad
  * configuration (ids outside the family, sizes), RL_ELIMIT for more ids
  * than RL_MAX_MAP_LANDMARKS. */
-RL_CHECK rl_err rl_recog_init(rl_recog *rec, const rl_recog_config *cfg, int w, int h,
+RL_CHECK rl_err rl_recog_init(rl_recog **rec, const rl_recog_config *cfg, int w, int h,
                               void *mem, size_t size);
 
+/* The frame size a recognizer was made for. */
+void rl_recog_frame_size(const rl_recog *rec, int *w, int *h);
+
 /* Recognize the landmarks of one frame (same size as at init; any
- * stride). RL_EINVAL for a wrong size; RL_ELIMIT when the frame holds more
- * dark runs than the workspace (a frame of noise). */
+ * stride). RL_EINVAL for a NULL argument or a wrong size; RL_ELIMIT when
+ * the frame holds more dark runs than the workspace (a frame of noise). */
 RL_CHECK rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res);
 
 #endif

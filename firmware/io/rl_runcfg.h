@@ -1,4 +1,5 @@
-/* rl_runcfg: ringloc.yaml, the one configuration of `ringloc run`.
+/* rl_runcfg: ringloc.yaml, the one configuration of the firmware
+ * (`ringloc-fw`, `ringloc run`).
  *
  *   camera:
  *     backend: v4l2          # png | v4l2 | libcamera
@@ -15,7 +16,8 @@
  *     baud: 115200
  *   recognition:
  *     local: auto            # auto | always | never
- *     min_score: 0.80
+ *     min_score: 0.80        # global pass
+ *     local_min_score: 0.75  # local pass
  *   log_interval: 5          # seconds between repeats of one kind of log line
  *
  * Relative paths are relative to the configuration file's folder.
@@ -24,20 +26,25 @@
 #define RL_RUNCFG_H
 
 #include <stddef.h>
-#include "rl_cam.h"
 #include "rl_recog.h"
 
 typedef struct {
-    rl_cam_config cam;
     char cam_backend[32], cam_device[512];
+    int cam_width, cam_height;  /* 0: the device's */
+    double cam_rate;            /* frames per second (default 10) */
     char calibration[512], map[512], robot[512], offsets[512];
     char serial[512];
     int baud;
+    int baud_line;      /* line of serial.baud (0: not given), for the caller's check */
     rl_local_policy local;
-    double min_score;
+    double min_score, local_min_score;
     double log_interval;
 } rl_runcfg;
 
+/* Read path into c (defaults for what it leaves out). RL_ENOTFOUND,
+ * RL_EFORMAT or RL_ERANGE with one line in err naming the file, line and
+ * key. The baud rate is checked by the caller against what its serial
+ * line supports (rl_serial_baud_ok). */
 RL_CHECK rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen);
 
 #endif

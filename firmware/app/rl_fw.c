@@ -1,0 +1,226 @@
+/* The firmware: frames in from the camera, pose frames out on the serial
+ * line, until SIGINT or SIGTERM (or the end of a PNG sequence). */
+#include <getopt.h>
+#include <signal.h>
+#include <stdio.h>
+#include <string.h>
+#include "rl_fw.h"
+
+#include "rl_camfile.h"
+#include "rl_cli.h"
+#include "rl_heap_recog.h"
+#include "rl_mapfile.h"
+#include "rl_offsetsfile.h"
+#include "rl_robotfile.h"
+#include "rl_run.h"
+#include "rl_runcfg.h"
+#include "rl_serial.h"
+#include "rl_clock.h"
+
+static const char *run_help =
+    "usage: %s --config ringloc.yaml [--frames N]\n\n"
+    "The firmware: grab frames from the camera, recognize landmarks, compute the\n"
+    "robot's pose and send it as ARCOS-framed pose frames on the serial line (a\n"
+    "status frame when there is no pose). Camera and serial faults are survived:\n"
+    "the device is reopened with backoff and status frames say what happened.\n"
+    "Stops on SIGINT/SIGTERM, at the end of a PNG sequence, or after N frames.\n"
+    "Logs go to standard error, repeated lines at most every log_interval s.\n"
+    "See rl_runcfg.h or the README for the configuration file.\n";
+
+static volatile sig_atomic_t stop_flag;
+
+static void on_signal(int sig)
+{
+    (void)sig;
+    stop_flag = 1;
+}
+
+typedef struct {
+    rl_serial s;
+    const char *path;
+    int baud;
+} out_ctx;
+
+static rl_err out_open(void *ctx, char *err, size_t errlen)
+{
+    out_ctx *o = (out_ctx *)ctx;
+    return rl_serial_open(&o->s, o->path, o->baud, err, errlen);
+}
+static rl_err out_write(void *ctx, const uint8_t *p, size_t n)
+{
+    return rl_serial_write(&((out_ctx *)ctx)->s, p, n, 100);
+}
+static void out_close(void *ctx)
+{
+    rl_serial_close(&((out_ctx *)ctx)->s);
+}
+
+static void log_line(void *ctx, const char *line)
+{
+    fprintf(stderr, "%s: %s\n", (const char *)ctx, line);
+}
+
+/* Everything the firmware reads at start-up. */
+typedef struct {
+    rl_runcfg cfg;
+    rl_camera calib;
+    rl_map map;
+    rl_mount mount;
+    rl_offsets offsets;
+    rl_cam_config cam;
+} fw_setup;
+
+/* Load and check every file; one error line and 0 on failure. */
+static int load_setup(const char *C, const char *config, fw_setup *s)
+{
+    char err[768];
+    rl_runcfg *cfg = &s->cfg;
+    if (rl_runcfg_load(config, cfg, err, sizeof err) != RL_OK ||
+        rl_camfile_load(cfg->calibration, &s->calib, err, sizeof err) != RL_OK ||
+        rl_mapfile_load(cfg->map, &s->map, err, sizeof err) != RL_OK ||
+        rl_robotfile_load(cfg->robot, &s->mount, err, sizeof err) != RL_OK ||
+        (cfg->offsets[0] && rl_offsetsfile_load(cfg->offsets, &s->offsets, err, sizeof err) != RL_OK))
+        return !rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    if (!rl_serial_baud_ok(cfg->baud))
+        return !rl_cli_fail(C, RL_EXIT_FAIL, "%s:%d: serial.baud: %d is not a supported baud rate "
+                            "(9600 .. 921600)", config, cfg->baud_line, cfg->baud);
+    if ((cfg->cam_width && cfg->cam_width != s->calib.width) ||
+        (cfg->cam_height && cfg->cam_height != s->calib.height))
+        return !rl_cli_fail(C, RL_EXIT_FAIL, "%s: camera is %dx%d but %s is for %dx%d", config,
+                            cfg->cam_width, cfg->cam_height, cfg->calibration, s->calib.width,
+                            s->calib.height);
+    if (s->map.count == 0 || !(s->map.ceiling_height > s->mount.z))
+        return !rl_cli_fail(C, RL_EXIT_FAIL, "%s: %s", cfg->map,
+                            s->map.count == 0 ? "the map has no landmarks"
+                                              : "the camera is not below the ceiling");
+    rl_cam_defaults(&s->cam);
+    s->cam.backend = cfg->cam_backend;
+    s->cam.device = cfg->cam_device;
+    s->cam.width = cfg->cam_width;
+    s->cam.height = cfg->cam_height;
+    s->cam.rate = cfg->cam_rate;
+    return 1;
+}
+
+/* The recognizer for the map's landmarks at the calibration's size. */
+static int make_recognizer(const char *C, const fw_setup *s, rl_heap_recog *hr)
+{
+    rl_recog_config rc;
+    rl_err e;
+    rl_recog_defaults(&rc);
+    rc.local = s->cfg.local;
+    rc.min_score = s->cfg.min_score;
+    rc.local_min_score = s->cfg.local_min_score;
+    rl_heap_recog_init_map(hr, &rc, &s->map);
+    if ((e = rl_heap_recog_prepare(hr, s->calib.width, s->calib.height)) != RL_OK)
+        return !rl_cli_fail(C, RL_EXIT_FAIL, "cannot prepare recognition for %dx%d: %s",
+                            s->calib.width, s->calib.height, rl_strerror(e));
+    return 1;
+}
+
+static void wire_io(const fw_setup *s, out_ctx *octx, const char *prefix, rl_run_io *io)
+{
+    octx->path = s->cfg.serial;
+    octx->baud = s->cfg.baud;
+    memset(io, 0, sizeof *io);
+    io->cam = &s->cam;
+    io->out.open = out_open;
+    io->out.write = out_write;
+    io->out.close = out_close;
+    io->out.ctx = octx;
+    io->clock = rl_clock_system();
+    io->log = log_line;
+    io->log_ctx = (void *)prefix;
+}
+
+static void on_signals(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    signal(SIGPIPE, SIG_IGN); /* a vanished reader is a write error, not a death */
+}
+
+static void run_loop(rl_runner *runner, long max_frames)
+{
+    while (!stop_flag) {
+        if (rl_run_step(runner) == RL_ENOTFOUND)
+            break;
+        if (max_frames > 0 && runner->frames >= max_frames)
+            break;
+    }
+    rl_run_close(runner);
+}
+
+/* --config and --frames; 0 to go on, else the exit code (--help: 0 with
+ * *done set). */
+static int parse_args(const char *C, const char *prefix, int argc, char **argv,
+                      const char **config, long *max_frames, int *done)
+{
+    static const struct option opts[] = {{"config", required_argument, 0, 'c'},
+                                         {"frames", required_argument, 0, 'n'},
+                                         {"help", no_argument, 0, 'h'},
+                                         {0, 0, 0, 0}};
+    char hint[160];
+    int c, v;
+    *done = 0;
+    optind = 1;
+    snprintf(hint, sizeof hint, "see '%s --help'", prefix);
+    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+        switch (c) {
+        case 'c': *config = optarg; break;
+        case 'n':
+            if (!rl_cli_int(C, "--frames", optarg, &v) || v < 0)
+                return rl_cli_fail(C, RL_EXIT_USAGE, "--frames: expected a count >= 0");
+            *max_frames = v;
+            break;
+        case 'h': printf(run_help, prefix); *done = 1; return 0;
+        default: return rl_cli_fail(C, RL_EXIT_USAGE, "%s", hint);
+        }
+    }
+    if (optind < argc)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "unexpected argument '%s' (%s)", argv[optind], hint);
+    if (*config == NULL)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--config FILE is required (%s)", hint);
+    return 0;
+}
+
+int rl_fw_main(const char *C, int argc, char **argv)
+{
+    static fw_setup s;
+    static rl_result res;
+    static rl_runner runner;
+    static out_ctx octx;
+    static char prefix[128];
+    rl_heap_recog hr;
+    rl_run_io io;
+    const char *config = NULL;
+    long max_frames = 0;
+    int rc, done;
+
+    rl_cli_prefix(C, prefix, sizeof prefix);
+    if ((rc = parse_args(C, prefix, argc, argv, &config, &max_frames, &done)) != 0 || done)
+        return rc;
+    /* start-up: everything that can fail in configuration fails here, once */
+    if (!load_setup(C, config, &s) || !make_recognizer(C, &s, &hr))
+        return RL_EXIT_FAIL;
+    wire_io(&s, &octx, prefix, &io);
+    rl_run_init(&runner, &io, hr.rec, &s.calib, &s.map, &s.mount, &res);
+    runner.offsets = s.cfg.offsets[0] ? &s.offsets : NULL;
+    runner.log_interval_us = (uint64_t)(s.cfg.log_interval * 1e6);
+    if (s.cfg.cam_rate > 0)
+        runner.timeout_ms = (int)(3000.0 / s.cfg.cam_rate) > 200 ? (int)(3000.0 / s.cfg.cam_rate) : 200;
+    on_signals();
+    fprintf(stderr, "%s: %s camera %s, %d landmarks in %s, poses to %s at %d baud\n", prefix,
+            s.cfg.cam_backend, s.cfg.cam_device, s.map.count, s.cfg.map, s.cfg.serial, s.cfg.baud);
+    run_loop(&runner, max_frames);
+    fprintf(stderr, "%s: %ld frames, %ld poses, %ld status frames, %ld camera errors, "
+                    "%ld timeouts, %ld serial errors, %ld frames dropped%s\n",
+            prefix, runner.frames, runner.poses, runner.statuses, runner.camera_errors,
+            runner.camera_timeouts, runner.serial_errors, runner.dropped,
+            stop_flag ? " (stopped by signal)" : "");
+    rl_heap_recog_free(&hr);
+    return 0;
+}

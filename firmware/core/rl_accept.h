@@ -1,0 +1,36 @@
+/* rl_accept: when an identification is taken as a landmark, one rule for
+ * both passes with thresholds from rl_recog_config (internal).
+ *
+ * Besides the correlation, the best id must explain the candidate clearly
+ * better than any other: the runner-up's unexplained variance (1 - r^2)
+ * must be min_lead times the best's. Neighbouring codes differ in one
+ * zone, so a blurred true landmark has a close runner-up in r but not in
+ * residual, while ring-like clutter fits many codes equally badly. And a
+ * printed landmark must show the full contrast of ink on paper: grey
+ * ring-like clutter (speaker grilles) correlates, but only at a fraction
+ * of the grey span.
+ *
+ *   rl_accept_rule rule = rl_accept_rule_of(&cfg, RL_PASS_GLOBAL);
+ *   if (rl_accept(&rule, &m, res.levels.bg - res.levels.fg)) ...
+ */
+#ifndef RL_ACCEPT_H
+#define RL_ACCEPT_H
+
+#include "rl_match.h"
+#include "rl_recog.h"
+
+typedef struct {
+    double min_score;    /* Pearson correlation of the best id */
+    double min_lead;     /* runner-up's residual over the best's */
+    double min_contrast; /* fitted contrast, fraction of the grey span */
+} rl_accept_rule;
+
+/* The thresholds of one pass. */
+rl_accept_rule rl_accept_rule_of(const rl_recog_config *cfg, rl_pass pass);
+
+/* 1 if match m passes the rule; span is the grey span its contrast is
+ * measured against (the frame's background - foreground in the global
+ * pass, 255 on sector-normalized levels in the local pass). */
+int rl_accept(const rl_accept_rule *rule, const rl_match *m, double span);
+
+#endif

@@ -1,0 +1,108 @@
+#include "rl_clr.h"
+
+#include "rl_geom.h"
+#include "rl_result.h"
+
+/* Shape limits of an outer ring's region (with whatever code rings merged
+ * into it). The outer ring alone fills 0.28 of its bounding box, a nearly
+ * black landmark 0.75; blur and thresholding move both a little. */
+#define FILL_MIN 0.15
+#define FILL_MAX 0.85
+#define ASPECT_MAX 1.4   /* bounding box width/height (lens distortion) */
+#define CENTROID_MAX 0.2 /* centroid to box centre, in radii */
+
+/* A region touching the border: its uncut extent is the diameter, and at
+ * most half may be missing. A corner cut is kept too, though it is never
+ * identified: the rings inside it must not pass for landmarks. */
+static int cut_candidate(const rl_region *g, const rl_recog_config *cfg, int W, int H)
+{
+    int bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
+    int cut_x = g->x0 == 0 || g->x1 == W - 1, cut_y = g->y0 == 0 || g->y1 == H - 1;
+    double r = cut_x && cut_y ? (bw > bh ? bw : bh) / 2.0 : cut_x ? bh / 2.0 : bw / 2.0;
+    return !(r < cfg->min_radius || r > cfg->max_radius ||
+             (!(cut_x && cut_y) && (cut_x ? bw : bh) < r));
+}
+
+/* A whole region shaped like a closed outer ring. */
+static int ring_shaped(const rl_region *g, const rl_recog_config *cfg)
+{
+    int bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
+    double r = (bw + bh) / 4.0, fill = (double)g->area / ((double)bw * bh);
+    double ox = g->sx / g->area - (g->x0 + g->x1) / 2.0;
+    double oy = g->sy / g->area - (g->y0 + g->y1) / 2.0;
+    return !(r < cfg->min_radius || r > cfg->max_radius || fill < FILL_MIN || fill > FILL_MAX ||
+             bw > ASPECT_MAX * bh || bh > ASPECT_MAX * bw ||
+             ox * ox + oy * oy > CENTROID_MAX * CENTROID_MAX * r * r);
+}
+
+/* Not a closed outer ring; but next to a light, glare may have washed
+ * part of one out: landmark-sized by its larger side, it is kept for the
+ * local pass. */
+static int broken_by_light(const rl_region *g, const rl_recog_config *cfg, const rl_result *res,
+                           const rl_box *b)
+{
+    int bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
+    double rr = (bw > bh ? bw : bh) / 2.0;
+    return !(rr < cfg->min_radius || rr > cfg->max_radius || bw < rr || bh < rr ||
+             rl_result_light_gap(res, b) > cfg->near_light * rr);
+}
+
+int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, rl_box *cand,
+                int cap)
+{
+    int i, n = 0, W = lb->width, H = lb->height;
+    for (i = 0; i < lb->n_regions; i++) {
+        const rl_region *g = &lb->reg[i];
+        int cut = g->x0 == 0 || g->y0 == 0 || g->x1 == W - 1 || g->y1 == H - 1;
+        rl_box b;
+        b.x0 = g->x0;
+        b.y0 = g->y0;
+        b.x1 = g->x1;
+        b.y1 = g->y1;
+        if (cut ? !cut_candidate(g, cfg, W, H)
+                : !ring_shaped(g, cfg) && !broken_by_light(g, cfg, res, &b))
+            continue;
+        if (n == cap) {
+            res->dropped.candidates++;
+            continue;
+        }
+        cand[n++] = b;
+    }
+    return n;
+}
+
+int rl_clr_is_inner(const rl_box *cand, int n, int i)
+{
+    int j;
+    for (j = 0; j < n; j++)
+        if (j != i && rl_geom_box_inside(&cand[i], &cand[j]) &&
+            !(rl_geom_box_inside(&cand[j], &cand[i]) && j > i))
+            return 1;
+    return 0;
+}
+
+int rl_clr_geometry(const rl_box *b, int W, int H, rl_detection *d)
+{
+    int bw = b->x1 - b->x0 + 1, bh = b->y1 - b->y0 + 1;
+    int cut_l = b->x0 == 0, cut_r = b->x1 == W - 1, cut_t = b->y0 == 0, cut_b = b->y1 == H - 1;
+    d->box = *b;
+    d->u = (b->x0 + b->x1) / 2.0;
+    d->v = (b->y0 + b->y1) / 2.0;
+    d->radius = (bw + bh) / 4.0;
+    d->visible = 1.0;
+    d->complete = !(cut_l || cut_r || cut_t || cut_b);
+    if (d->complete)
+        return 1;
+    if ((cut_l || cut_r) && (cut_t || cut_b))
+        return 0;
+    if (cut_l || cut_r) {
+        d->radius = bh / 2.0;
+        d->u = cut_l ? b->x1 + 0.5 - d->radius : b->x0 - 0.5 + d->radius;
+        d->visible = rl_geom_disk_visible(d->radius, cut_l ? d->u + 0.5 : W - 0.5 - d->u);
+    } else {
+        d->radius = bw / 2.0;
+        d->v = cut_t ? b->y1 + 0.5 - d->radius : b->y0 - 0.5 + d->radius;
+        d->visible = rl_geom_disk_visible(d->radius, cut_t ? d->v + 0.5 : H - 0.5 - d->v);
+    }
+    return 1;
+}

@@ -1,0 +1,141 @@
+#include "rl_edge.h"
+
+#include <math.h>
+#include "rl_circle.h"
+#include "rl_ray.h"
+
+int rl_edge_fit_outline(const rl_label *lb, int reg, const rl_edge_window *w, int thr,
+                        int light, double *cx, double *cy, double *r)
+{
+    const rl_image *win = w->img;
+    rl_circle_fit f;
+    int y;
+    rl_circle_clear(&f);
+    for (y = 0; y < win->height; y++) {
+        int first = -1, last = -1, i, side;
+        const uint8_t *row = win->data + (size_t)y * (size_t)win->stride;
+        for (i = lb->row[y]; i < lb->row[y + 1]; i++)
+            if (rl_label_region_of(lb, i) == reg) {
+                if (first < 0)
+                    first = i;
+                last = i;
+            }
+        if (first < 0 || y + w->y0 == 0 || y + w->y0 == w->frame_h - 1)
+            continue;
+        for (side = 0; side < 2; side++) {
+            int xin = side ? lb->x1[last] : lb->x0[first], xout = side ? xin + 1 : xin - 1;
+            int beyond = side ? xout + 1 : xout - 1;
+            double t;
+            if (xout < 0 || xout >= win->width || xin + w->x0 == 0 || xin + w->x0 == w->frame_w - 1)
+                continue;
+            if (row[xout] >= light || (beyond >= 0 && beyond < win->width && row[beyond] >= light))
+                continue;
+            /* sub-pixel: where the grey level crosses the threshold between
+             * xin (dark) and xout (light) */
+            t = row[xout] != row[xin] ? (double)(thr - row[xin]) / (row[xout] - row[xin]) : 0.5;
+            if (t < 0) t = 0;
+            if (t > 1) t = 1;
+            rl_circle_add(&f, side ? xin + t : xin - t, y);
+        }
+    }
+    if (f.n < 8)
+        return 0;
+    return rl_circle_solve(&f, cx, cy, r);
+}
+
+/* Rays for the edge fit. A ray is sampled from EDGE_FROM radii over
+ * EDGE_SPAN radii (the outer edge within a fifth of a radius of the first
+ * estimate), every EDGE_STEP px, or in EDGE_MAX_SAMPLES samples on larger
+ * landmarks. */
+#define FIT_RAYS 24
+#define EDGE_FROM 0.8
+#define EDGE_SPAN 0.45
+#define EDGE_STEP 0.25
+#define EDGE_MAX_SAMPLES 128
+
+/* Sub-sample position of the steepest rise of prof after the black at ib
+ * (a 4-sample difference, its peak interpolated by a parabola); -1 when
+ * the rise is under 0.3 of the span. */
+static double steepest_rise(const float *prof, int ns, int ib, double span)
+{
+    double gbest = 0, gm, gp, den, off;
+    int i, ig = -1;
+    /* from 3: the peak interpolation reads prof[ig - 3] */
+    for (i = ib + 2 > 3 ? ib + 2 : 3; i + 2 < ns; i++) {
+        double g = prof[i + 2] - prof[i - 2];
+        if (g > gbest) {
+            gbest = g;
+            ig = i;
+        }
+    }
+    if (!(ig > 0 && ig + 3 < ns && gbest > 0.3 * span))
+        return -1;
+    gm = prof[ig + 1] - prof[ig - 3];
+    gp = prof[ig + 3] - prof[ig - 1];
+    den = gm - 2 * gbest + gp;
+    off = den < 0 ? 0.5 * (gm - gp) / den : 0.0;
+    if (off > 1) off = 1;
+    if (off < -1) off = -1;
+    return ig + off;
+}
+
+/* The outer edge's radius along direction (c, s) from (cx, cy), between
+ * the ring's black inside r and the paper's white outside it; -1 when the
+ * ray leaves the image, meets light or shows no clear edge. */
+static double ray_edge(const rl_image *img, int light, double cx, double cy, double r, double c,
+                       double s)
+{
+    float prof[EDGE_MAX_SAMPLES], black = 1e9f, white = -1e9f;
+    int i, ns = (int)(EDGE_SPAN * r / EDGE_STEP) + 1, ib = 0, ir;
+    double step = EDGE_STEP, r0 = EDGE_FROM * r, x = cx + r0 * c, y = cy + r0 * s, at;
+    if (ns > EDGE_MAX_SAMPLES) {
+        ns = EDGE_MAX_SAMPLES;
+        step = EDGE_SPAN * r / (ns - 1);
+    }
+    if (!rl_ray_inside(img, x, y, x + (ns - 1) * step * c, y + (ns - 1) * step * s) ||
+        !rl_ray_sample(img, x, y, step * c, step * s, ns, light, prof))
+        return -1;
+    ir = (int)((r - r0) / step);
+    for (i = 0; i < ns; i++) {
+        if (i <= ir && prof[i] < black) {
+            black = prof[i];
+            ib = i;
+        }
+        if (i >= ir && prof[i] > white)
+            white = prof[i];
+    }
+    if (white - black < 15.0f || (at = steepest_rise(prof, ns, ib, white - black)) < 0)
+        return -1;
+    return r0 + at * step;
+}
+
+int rl_edge_fit_rays(const rl_image *img, int light, double *cx, double *cy, double *r)
+{
+    double ex[FIT_RAYS], ey[FIT_RAYS], dc[FIT_RAYS], ds[FIT_RAYS], ncx = 0, ncy = 0, nr = 0;
+    int a, n = 0, pass, i;
+    rl_ray_dirs(FIT_RAYS, dc, ds);
+    for (a = 0; a < FIT_RAYS; a++) {
+        double rr = ray_edge(img, light, *cx, *cy, *r, dc[a], ds[a]);
+        if (rr < 0)
+            continue;
+        ex[n] = *cx + rr * dc[a];
+        ey[n] = *cy + rr * ds[a];
+        n++;
+    }
+    if (n < FIT_RAYS / 4)
+        return 0;
+    for (pass = 0; pass < 2; pass++) {
+        rl_circle_fit f;
+        rl_circle_clear(&f);
+        for (i = 0; i < n; i++)
+            if (pass == 0 || fabs(hypot(ex[i] - ncx, ey[i] - ncy) - nr) < 1.0)
+                rl_circle_add(&f, ex[i], ey[i]);
+        if (!rl_circle_solve(&f, &ncx, &ncy, &nr))
+            return 0;
+    }
+    rl_circle_refine(ex, ey, n, &ncx, &ncy, &nr);
+    *cx = ncx;
+    *cy = ncy;
+    *r = nr;
+    return 1;
+}

@@ -1,0 +1,40 @@
+/* rl_edge: a landmark's outer edge, fitted as a circle, for the local
+ * pass, where glare or the border hides part of it (internal).
+ *
+ *   rl_edge_window w = {&win, x0, y0, W, H};
+ *   if (rl_edge_fit_outline(&lb, reg, &w, thr, light, &cx, &cy, &r) &&
+ *       rl_edge_fit_rays(&img, light, &fx, &fy, &fr)) ...
+ */
+#ifndef RL_EDGE_H
+#define RL_EDGE_H
+
+#include "rl_image.h"
+#include "rl_label.h"
+
+/* A window of a W x H frame: its view and where it sits in the frame. */
+typedef struct {
+    const rl_image *img;
+    int x0, y0;             /* the window's top left corner in the frame */
+    int frame_w, frame_h;
+} rl_edge_window;
+
+/* Circle through the visible outer edge of region `reg` of the window's
+ * labelling lb (algebraic least squares): edge points at sub-pixel
+ * positions where the grey level crosses the window's threshold thr, at
+ * the left end of each row's first run and the right end of its last run.
+ * Points on the frame border, or next to light, are not the landmark's
+ * edge and are skipped. 1 on success with (*cx, *cy, *r) in window
+ * coordinates. */
+int rl_edge_fit_outline(const rl_label *lb, int reg, const rl_edge_window *w, int thr,
+                        int light, double *cx, double *cy, double *r);
+
+/* Refine a landmark's centre and radius from its outer edge seen along
+ * rays from (*cx, *cy): on each ray the edge is the steepest rise after
+ * the ring's black (a smooth glare gradient adds a constant slope, which
+ * moves a level crossing but hardly the gradient's peak). Rays that leave
+ * the image or run into light are skipped; a circle is fitted to the edge
+ * points, points far off it are dropped, it is fitted again and finished
+ * geometrically. 1 on success (frame coordinates). */
+int rl_edge_fit_rays(const rl_image *img, int light, double *cx, double *cy, double *r);
+
+#endif

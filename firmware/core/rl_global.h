@@ -1,0 +1,17 @@
+/* rl_global: the global pass's identification of one CLR, the paper's
+ * fourth step (internal).
+ *
+ *   for each outer CLR box b:  rl_global_identify(rec, &img, &b, &res);
+ */
+#ifndef RL_GLOBAL_H
+#define RL_GLOBAL_H
+
+#include "rl_recog_state.h"
+
+/* Place the CLR of box b (centre and radius refined on the grey levels),
+ * identify it if it is closed (complete, or with at most a sliver cut by
+ * the border) and add it to res as a landmark or as unidentified. Corner
+ * cuts are not candidates. */
+void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_box *b, rl_result *res);
+
+#endif

@@ -1,0 +1,85 @@
+#include "rl_inner.h"
+
+#include <math.h>
+#include "rl_median.h"
+#include "rl_ray.h"
+#include "rl_result.h"
+
+#define ENCLOSE_RAYS 16
+#define ENCLOSE_FROM 1.3 /* radii: past the quiet zone */
+#define ENCLOSE_TO 2.9   /* radii: the outer ring around the smallest mimic
+                            (a zone boundary at 0.36 R) */
+
+/* Nearest pixel's grey level, or -1 outside the image. */
+static int grey_at(const rl_image *img, double x, double y)
+{
+    int xi, yi;
+    if (x < -0.5 || y < -0.5)
+        return -1;
+    xi = (int)(x + 0.5); /* rounding: x + 0.5 >= 0 */
+    yi = (int)(y + 0.5);
+    if (xi >= img->width || yi >= img->height)
+        return -1;
+    return img->data[(size_t)yi * (size_t)img->stride + xi];
+}
+
+enum { RAY_UNKNOWN, RAY_CLEAR, RAY_HIT };
+
+/* What the ray in direction (c, s) meets beyond the candidate's quiet
+ * zone: a dark ring (its radius in radii in *hit), nothing up to
+ * ENCLOSE_TO, or unknown (no contrast of its own here, or the border or a
+ * light came first). */
+static int ray_meets(const rl_image *img, int light, double cx, double cy, double r, double c,
+                     double s, double *hit)
+{
+    double rho;
+    int ink = 256, paper = -1, mid, g = 0;
+    /* the candidate's own ink (outer ring) and paper (quiet zone) here */
+    for (rho = 0.8 * r; rho <= 1.2 * r; rho += 1.0) {
+        if ((g = grey_at(img, cx + rho * c, cy + rho * s)) < 0)
+            break;
+        if (rho <= r && g < ink)
+            ink = g;
+        if (rho >= r && g > paper)
+            paper = g;
+    }
+    if (g < 0 || ink > 255 || paper < 0 || paper - ink < 20)
+        return RAY_UNKNOWN;
+    mid = (ink + paper) / 2;
+    for (rho = ENCLOSE_FROM * r; rho <= ENCLOSE_TO * r; rho += 1.0) {
+        g = grey_at(img, cx + rho * c, cy + rho * s);
+        if (g < 0 || g >= light || g < mid)
+            break;
+    }
+    if (g >= 0 && g < mid) {
+        *hit = rho / r;
+        return RAY_HIT;
+    }
+    return rho > ENCLOSE_TO * r ? RAY_CLEAR : RAY_UNKNOWN;
+}
+
+int rl_inner_enclosed(const rl_image *img, int light, double cx, double cy, double r)
+{
+    double hit[ENCLOSE_RAYS], dc[ENCLOSE_RAYS], ds[ENCLOSE_RAYS], med;
+    int a, clear = 0, nhit = 0, agree = 0, i;
+    rl_ray_dirs(ENCLOSE_RAYS, dc, ds);
+    for (a = 0; a < ENCLOSE_RAYS; a++) {
+        int k = ray_meets(img, light, cx, cy, r, dc[a], ds[a], &hit[nhit]);
+        nhit += k == RAY_HIT;
+        clear += k == RAY_CLEAR;
+    }
+    if (nhit < ENCLOSE_RAYS / 4 || nhit < clear)
+        return 0;
+    /* the median hit radius, and how many rays agree with it */
+    med = rl_median(hit, nhit);
+    for (i = 0; i < nhit; i++)
+        agree += fabs(hit[i] - med) <= 0.15 * med;
+    return agree >= ENCLOSE_RAYS / 4 && 4 * agree >= 3 * (nhit + clear);
+}
+
+int rl_inner_possible(const rl_result *res, const rl_detection *d)
+{
+    double reach = ENCLOSE_TO * d->radius;
+    return rl_result_light_gap(res, &d->box) <= reach || d->u < reach || d->v < reach ||
+           res->width - 1 - d->u < reach || res->height - 1 - d->v < reach;
+}

@@ -1,0 +1,176 @@
+#include "rl_local.h"
+
+#include <math.h>
+#include <string.h>
+#include "rl_accept.h"
+#include "rl_edge.h"
+#include "rl_geom.h"
+#include "rl_hist.h"
+#include "rl_inner.h"
+#include "rl_result.h"
+#include "rl_search.h"
+
+/* Window half-size around a DUCLR, in expected radii: room for the whole
+ * landmark and its quiet zone with a quarter radius to spare for the
+ * centre estimate of a ring broken by glare. */
+#define WINDOW_RADII 1.5
+
+/* Extension: the window around candidate u (expected radius R), clipped
+ * to the frame and shrunk on any side that would reach into a light
+ * source (never into the landmark itself); 0 when too small. */
+static int local_window(const rl_result *res, const rl_detection *u, double R, rl_box *w)
+{
+    double half = WINDOW_RADII * R;
+    int i, x0 = (int)floor(u->u - half), x1 = (int)ceil(u->u + half);
+    int y0 = (int)floor(u->v - half), y1 = (int)ceil(u->v + half);
+    for (i = 0; i < res->n_lights; i++) {
+        const rl_box *l = &res->lights[i];
+        if (l->x1 < x0 || l->x0 > x1 || l->y1 < y0 || l->y0 > y1)
+            continue;
+        if (l->x0 > u->u + 1.1 * R && l->x0 - 1 < x1) x1 = l->x0 - 1;
+        if (l->x1 < u->u - 1.1 * R && l->x1 + 1 > x0) x0 = l->x1 + 1;
+        if (l->y0 > u->v + 1.1 * R && l->y0 - 1 < y1) y1 = l->y0 - 1;
+        if (l->y1 < u->v - 1.1 * R && l->y1 + 1 > y0) y0 = l->y1 + 1;
+    }
+    w->x0 = x0 < 0 ? 0 : x0;
+    w->y0 = y0 < 0 ? 0 : y0;
+    w->x1 = x1 > res->width - 1 ? res->width - 1 : x1;
+    w->y1 = y1 > res->height - 1 ? res->height - 1 : y1;
+    return w->x1 - w->x0 >= 8 && w->y1 - w->y0 >= 8;
+}
+
+/* Local clustering: the window's dark/paper threshold by K-means on its
+ * histogram, light excluded; 0 when the window has no clear contrast. */
+static int local_threshold(const rl_image *win, int light, int *thr)
+{
+    double centre[2];
+    rl_hist h;
+    rl_hist_compute_rows(win, &h, 4); /* every fourth row: over a thousand pixels still */
+    if (rl_hist_kmeans(&h, 0, light, 2, centre, NULL) != RL_OK || centre[1] - centre[0] < 8.0)
+        return 0;
+    *thr = (int)(0.5 * (centre[0] + centre[1]) + 0.5);
+    return 1;
+}
+
+/* Re-extraction: the largest region of landmark size near the candidate
+ * (window coordinates, the window at w), or -1. */
+static int local_outer_ring(const rl_label *lb, const rl_box *w, const rl_detection *u, double R)
+{
+    double best_size = 0;
+    int i, best = -1;
+    for (i = 0; i < lb->n_regions; i++) {
+        const rl_region *g = &lb->reg[i];
+        double bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1, size = bw > bh ? bw : bh;
+        double gx = w->x0 + (g->x0 + g->x1) / 2.0, gy = w->y0 + (g->y0 + g->y1) / 2.0;
+        if (size < R || size > 2.5 * R || fabs(gx - u->u) > 1.2 * R || fabs(gy - u->v) > 1.2 * R)
+            continue;
+        if (size > best_size) {
+            best_size = size;
+            best = i;
+        }
+    }
+    return best;
+}
+
+/* Window, threshold, outer ring and its edge: the candidate's box and its
+ * centre and radius in the frame; 0 when any step finds nothing. */
+static int local_locate(rl_recog *rec, const rl_image *img, const rl_result *res,
+                        const rl_detection *u, double R, rl_box *box, double *cx, double *cy,
+                        double *r)
+{
+    rl_image win;
+    rl_box w;
+    rl_edge_window ew;
+    int thr, reg, light = res->levels.light;
+    double tx, ty, tr = R;
+    if (!local_window(res, u, R, &w) ||
+        rl_image_sub(img, w.x0, w.y0, w.x1 - w.x0 + 1, w.y1 - w.y0 + 1, &win) != RL_OK ||
+        !local_threshold(&win, light, &thr) ||
+        rl_label_band(&rec->dark, &win, 0, thr, rl_recog_speck_area(&rec->cfg)) != RL_OK ||
+        (reg = local_outer_ring(&rec->dark, &w, u, R)) < 0)
+        return 0;
+    box->x0 = w.x0 + rec->dark.reg[reg].x0;
+    box->y0 = w.y0 + rec->dark.reg[reg].y0;
+    box->x1 = w.x0 + rec->dark.reg[reg].x1;
+    box->y1 = w.y0 + rec->dark.reg[reg].y1;
+    /* the centre from the visible outer edge, not the centroid of what is
+     * left (biased inwards when part is missing) */
+    ew.img = &win;
+    ew.x0 = w.x0;
+    ew.y0 = w.y0;
+    ew.frame_w = rec->width;
+    ew.frame_h = rec->height;
+    if (!rl_edge_fit_outline(&rec->dark, reg, &ew, thr, light, cx, cy, r))
+        return 0;
+    *cx += w.x0;
+    *cy += w.y0;
+    /* then the grey outer edge, from that centre (the identification
+     * refines centre and radius once more) */
+    tx = *cx;
+    ty = *cy;
+    if (rl_edge_fit_rays(img, light, &tx, &ty, &tr)) {
+        *cx = tx;
+        *cy = ty;
+        *r = tr;
+    }
+    return fabs(*r - R) <= 0.3 * R;
+}
+
+/* Retry one DUCLR u of expected radius R; 1 if identified (into *out). */
+static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *res,
+                           const rl_detection *u, double R, rl_detection *out)
+{
+    rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL);
+    int W = rec->width, H = rec->height, light = res->levels.light;
+    double cx, cy, r;
+    rl_match m;
+    memset(out, 0, sizeof *out);
+    if (!local_locate(rec, img, res, u, R, &out->box, &cx, &cy, &r))
+        return 0;
+    /* the fitted radius, not the frame's median: lens distortion makes
+     * landmarks smaller away from the image centre */
+    out->pass = RL_PASS_LOCAL;
+    if (rl_geom_visible_in(W, H, cx, cy, r) < 0.5) /* more than half missing: not tried */
+        return 0;
+    rl_search_identify(&rec->templates, rec->polar, img, light, &cx, &cy, &r, &m);
+    out->u = cx;
+    out->v = cy;
+    out->radius = r;
+    out->complete = rl_geom_disk_complete(W, H, cx, cy, r);
+    out->visible = rl_geom_visible_in(W, H, cx, cy, r);
+    if (!rl_accept(&rule, &m, 255.0) || rl_inner_enclosed(img, light, cx, cy, r))
+        return 0;
+    out->id = m.id;
+    out->score = m.score;
+    return 1;
+}
+
+/* A DUCLR: next to a light, or cut by the border with at most half of it
+ * missing. */
+static int is_duclr(const rl_recog_config *cfg, const rl_result *res, const rl_detection *u,
+                    double R)
+{
+    int near_light = rl_result_light_gap(res, &u->box) <= cfg->near_light * R;
+    int on_border = !u->complete;
+    return (near_light || on_border) && (!on_border || u->visible >= 0.5);
+}
+
+void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res)
+{
+    double rexp = rl_result_median_radius(res);
+    int i, kept = 0, n = res->n_unidentified;
+    for (i = 0; i < n; i++) {
+        rl_detection u = res->unidentified[i], d;
+        double R = rexp > 0 ? rexp : u.radius;
+        if (is_duclr(&rec->cfg, res, &u, R)) {
+            res->local_tried++;
+            if (local_candidate(rec, img, res, &u, R, &d)) {
+                if (rl_result_add_landmark(res, &d))
+                    res->local_found++;
+                continue;
+            }
+        }
+        res->unidentified[kept++] = u;
+    }
+    res->n_unidentified = kept;
+}

@@ -1,0 +1,24 @@
+/* rl_local: the paper's local recognition pass (internal).
+ *
+ * Unidentified CLRs next to a light or on the image border (DUCLRs) are
+ * retried in their own window of the frame: extension (a window around
+ * the candidate, kept out of the lights), local clustering (K-means on
+ * the window alone, so the threshold follows the local illumination),
+ * re-extraction of the outer ring, its centre and radius from the visible
+ * outer edge, then identification with a search over centre and radius
+ * (rl_search.h), accepted by the local rule (rl_accept.h). The frame's
+ * dark labelling is reused for the windows: its regions have been turned
+ * into candidates by then.
+ *
+ *   rl_local_pass(rec, &img, &res);   // after the global pass
+ */
+#ifndef RL_LOCAL_H
+#define RL_LOCAL_H
+
+#include "rl_recog_state.h"
+
+/* Retry every DUCLR of res; identified ones move from res->unidentified
+ * to res->landmarks. */
+void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res);
+
+#endif

@@ -1,0 +1,182 @@
+#include "rl_match.h"
+
+#include <math.h>
+#include <string.h>
+#include "rl_match_kernel.h"
+
+/* What every column's correlation shares: the profile's pixels, their
+ * sum and 1 / sqrt of their variance term, and its bins in single
+ * precision for the kernel. */
+typedef struct {
+    double n, sx, ivx;
+    float fn[RL_PROFILE_BINS], fs[RL_PROFILE_BINS];
+} profile_terms;
+/* Pearson's r of one column from its sums, kept as best or runner-up (of
+ * any other id). A column that cannot beat the runner-up is dropped
+ * before its square root. */
+static void keep_column(rl_match *m, const profile_terms *z, int id, int blur, double st,
+                        double stt, double sxt)
+{
+    double vt = z->n * stt - st * st, num, r;
+    if (vt <= 0)
+        return;
+    num = z->n * sxt - z->sx * st;
+    if (m->second >= 0 &&
+        (num <= 0 || num * num * z->ivx * z->ivx <= m->second * m->second * vt))
+        return;
+    r = num * z->ivx / sqrt(vt);
+    if (r > m->score) {
+        if (id != m->id)
+            m->second = m->score;
+        m->score = r;
+        m->id = id;
+        m->contrast = num / vt; /* the fitted gain */
+        m->blur = blur;
+    } else if (r > m->second && id != m->id) {
+        m->second = r;
+    }
+}
+
+/* The match before any column is scored; 0 when the profile cannot
+ * correlate with anything (too few pixels, flat), else its terms in *z. */
+static int match_start(const rl_profile *p, profile_terms *z, rl_match *m)
+{
+    double n = p->total, sx, vx;
+    int k;
+    m->id = -1;
+    m->score = m->second = -1.0;
+    m->contrast = 0.0;
+    m->blur = 0;
+    if (n < 16)
+        return 0;
+    {
+        /* two partial sums: half the chain of dependent adds */
+        double s0 = 0, s1 = 0;
+        for (k = 0; k < RL_PROFILE_BINS; k += 2) {
+            s0 += p->sx[k];
+            s1 += p->sx[k + 1];
+        }
+        sx = s0 + s1;
+    }
+    vx = n * p->sxx - sx * sx;
+    if (!(vx > 0))
+        return 0; /* a flat candidate correlates with nothing */
+    z->n = n;
+    z->sx = sx;
+    z->ivx = 1.0 / sqrt(vx);
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        z->fn[k] = (float)p->n[k];
+        z->fs[k] = (float)p->sx[k];
+    }
+    return 1;
+}
+
+/* Score the block of columns at t (bin stride `stride`) and keep the
+ * first nc, column c being id ids[c] at blur blurs[c]. */
+static void score_block(const float *t, size_t stride, int nc, const int *ids, const int *blurs,
+                        const profile_terms *z, rl_match *m)
+{
+    float st[RL_MATCH_BLOCK], stt[RL_MATCH_BLOCK], sxt[RL_MATCH_BLOCK];
+    int c;
+    rl_match_kernel(t, stride, z->fn, z->fs, st, stt, sxt);
+    for (c = 0; c < nc; c++)
+        keep_column(m, z, ids[c], blurs[c], st[c], stt[c], sxt[c]);
+}
+
+void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m)
+{
+    profile_terms z;
+    int ncol = tt->n * RL_BLUR_LEVELS, c0, c;
+    if (!match_start(p, &z, m))
+        return;
+    for (c0 = 0; c0 < ncol; c0 += RL_MATCH_BLOCK) {
+        int ids[RL_MATCH_BLOCK], blurs[RL_MATCH_BLOCK];
+        int nc = ncol - c0 < RL_MATCH_BLOCK ? ncol - c0 : RL_MATCH_BLOCK;
+        for (c = 0; c < nc; c++) {
+            ids[c] = tt->ids[(c0 + c) / RL_BLUR_LEVELS];
+            blurs[c] = (c0 + c) % RL_BLUR_LEVELS;
+        }
+        score_block(tt->table + c0, (size_t)tt->stride, nc, ids, blurs, &z, m);
+    }
+}
+
+/* Add column (id index i, blur b) of the table to a list. */
+static void list_add(const rl_templates *tt, int i, int b, rl_match_list *ls)
+{
+    int k;
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        ls->table[k * RL_MATCH_BLOCK + ls->n] = rl_templates_bin(tt, i, b, k);
+    ls->id[ls->n] = tt->ids[i];
+    ls->blur[ls->n] = b;
+    ls->n++;
+}
+
+void rl_match_list_make(const rl_templates *tt, const int *ids, int n, int blur,
+                        rl_match_list *ls)
+{
+    int j;
+    memset(ls, 0, sizeof *ls);
+    for (j = 0; j < n && ls->n < RL_MATCH_BLOCK; j++) {
+        int i = rl_templates_find(tt, ids[j]);
+        if (i >= 0)
+            list_add(tt, i, blur, ls);
+    }
+}
+
+static void list_score(const rl_match_list *ls, const profile_terms *z, rl_match *m)
+{
+    score_block(ls->table, RL_MATCH_BLOCK, ls->n, ls->id, ls->blur, z, m);
+}
+
+void rl_match_list_score(const rl_match_list *ls, const rl_profile *p, rl_match *m)
+{
+    profile_terms z;
+    if (match_start(p, &z, m))
+        list_score(ls, &z, m);
+}
+
+void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, int n, int blur,
+                  rl_match *m)
+{
+    int b0 = blur < 0 ? 0 : blur, b1 = blur < 0 ? RL_BLUR_LEVELS : blur + 1, j, b;
+    profile_terms z;
+    rl_match_list ls;
+    if (!match_start(p, &z, m))
+        return;
+    ls.n = 0;
+    for (j = 0; j < n; j++) {
+        int i = rl_templates_find(tt, ids[j]);
+        for (b = b0; b < b1 && i >= 0; b++) {
+            if (ls.n == 0)
+                memset(ls.table, 0, sizeof ls.table);
+            list_add(tt, i, b, &ls);
+            if (ls.n == RL_MATCH_BLOCK) {
+                list_score(&ls, &z, m);
+                ls.n = 0;
+            }
+        }
+    }
+    if (ls.n > 0)
+        list_score(&ls, &z, m);
+}
+
+double rl_match_pearson(const uint8_t *a, const uint8_t *b, const uint8_t *mask, int n)
+{
+    double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0, c = 0, va, vb;
+    int i;
+    for (i = 0; i < n; i++) {
+        if (mask && !mask[i])
+            continue;
+        sa += a[i];
+        sb += b[i];
+        saa += (double)a[i] * a[i];
+        sbb += (double)b[i] * b[i];
+        sab += (double)a[i] * b[i];
+        c += 1;
+    }
+    va = c * saa - sa * sa;
+    vb = c * sbb - sb * sb;
+    if (va <= 0 || vb <= 0)
+        return 0.0;
+    return (c * sab - sa * sb) / sqrt(va * vb);
+}

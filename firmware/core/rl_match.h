@@ -1,0 +1,63 @@
+/* rl_match: identification by Pearson's correlation against the radial
+ * templates, the paper's identification step (internal).
+ *
+ * Every pixel of a candidate within 1.2 R of its centre is compared with
+ * every template: Pearson's r between the pixels' darkness (255 - I) and
+ * the template's darkness at the same radius, computed from a profile's
+ * per-bin sums (rl_profile.h) in one pass over the bins per block of
+ * columns (rl_match_kernel.h). r is invariant to gain and offset, so no
+ * binary image is needed; the fitted gain is reported as the contrast.
+ *
+ *   rl_match m;
+ *   rl_match_all(&tt, &p, &m);                      // m.id, m.score, m.second
+ *   rl_match_list ls;
+ *   rl_match_list_make(&tt, ids, 3, m.blur, &ls);   // a short list, made once
+ *   rl_match_list_score(&ls, &p, &m);               // scored for many profiles
+ */
+#ifndef RL_MATCH_H
+#define RL_MATCH_H
+
+#include <stdint.h>
+#include "rl_profile.h"
+#include "rl_templates.h"
+
+typedef struct {
+    int id;          /* best template's id, or -1 */
+    double score;    /* its Pearson correlation */
+    double second;   /* best correlation of any other id */
+    double contrast; /* fitted darkness difference between the template's black
+                        and white, grey levels */
+    int blur;        /* blur level of the best template */
+} rl_match;
+
+/* Up to RL_MATCH_BLOCK (id, blur) columns copied out of a table into one
+ * block, for scoring the same few templates against many profiles. */
+typedef struct {
+    float table[RL_PROFILE_BINS * RL_MATCH_BLOCK]; /* bin-major, unused columns 0 */
+    int id[RL_MATCH_BLOCK], blur[RL_MATCH_BLOCK];
+    int n;
+} rl_match_list;
+
+/* Score every template against a profile. */
+void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m);
+
+/* Score only the templates of the given ids, at one blur level
+ * (0 .. RL_BLUR_LEVELS - 1) or at all of them (blur < 0). Ids the table
+ * does not hold are skipped. */
+void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, int n, int blur,
+                  rl_match *m);
+
+/* A list of the templates of n ids at one blur level; ids past
+ * RL_MATCH_BLOCK, or not in the table, are left out. */
+void rl_match_list_make(const rl_templates *tt, const int *ids, int n, int blur,
+                        rl_match_list *ls);
+
+/* Score a list's templates against a profile. */
+void rl_match_list_score(const rl_match_list *ls, const rl_profile *p, rl_match *m);
+
+/* Pearson's correlation of a and b over the cells where mask != 0 (all
+ * when NULL); 0 when either side is constant. The direct formula, for
+ * tests and tools. */
+double rl_match_pearson(const uint8_t *a, const uint8_t *b, const uint8_t *mask, int n);
+
+#endif

@@ -1,0 +1,44 @@
+/* rl_match_kernel: the sums of one block of template columns against a
+ * profile, the inner loop of identification (internal).
+ *
+ * For the RL_MATCH_BLOCK columns starting at t (bin k's values at
+ * t + k * stride) and a profile's per-bin counts fn and darkness sums fs,
+ * each column c gets
+ *   st[c]  = sum_k fn[k] t[k][c],   stt[c] = sum_k fn[k] t[k][c]^2,
+ *   sxt[c] = sum_k fs[k] t[k][c],
+ * added bin by bin in order, in single precision (64 bins lose no more than
+ * 1e-5 of a correlation). Two builds of the same loop: plain C, and 4-lane
+ * vectors kept in registers (the GCC/Clang vector extension: SSE, NEON).
+ * Both add the same products in the same order, so they give the same
+ * bits; RL_NO_VECTOR_EXT selects the plain one, and CI runs the test
+ * suite with each.
+ *
+ *   float st[RL_MATCH_BLOCK], stt[RL_MATCH_BLOCK], sxt[RL_MATCH_BLOCK];
+ *   rl_match_kernel(tt.table, (size_t)tt.stride, fn, fs, st, stt, sxt);
+ */
+#ifndef RL_MATCH_KERNEL_H
+#define RL_MATCH_KERNEL_H
+
+#include <stddef.h>
+#include "rl_templates.h"
+
+typedef void (*rl_match_kernel_fn)(const float *t, size_t stride, const float *fn,
+                                   const float *fs, float *st, float *stt, float *sxt);
+
+void rl_match_kernel_plain(const float *t, size_t stride, const float *fn, const float *fs,
+                           float *st, float *stt, float *sxt);
+
+#if defined(__GNUC__) && RL_MATCH_BLOCK == 8
+#define RL_HAVE_MATCH_KERNEL_V4 1
+void rl_match_kernel_v4(const float *t, size_t stride, const float *fn, const float *fs,
+                        float *st, float *stt, float *sxt);
+#endif
+
+/* The kernel identification uses. */
+#if defined(RL_HAVE_MATCH_KERNEL_V4) && !defined(RL_NO_VECTOR_EXT)
+#define rl_match_kernel rl_match_kernel_v4
+#else
+#define rl_match_kernel rl_match_kernel_plain
+#endif
+
+#endif

@@ -1,0 +1,38 @@
+#include "rl_match_kernel.h"
+
+#ifdef RL_HAVE_MATCH_KERNEL_V4
+#include <string.h>
+
+typedef float rl_v4 __attribute__((vector_size(16)));
+
+/* The plain kernel's loop with each sum in two 4-lane vectors. */
+void rl_match_kernel_v4(const float *t, size_t stride, const float *fn, const float *fs,
+                        float *st, float *stt, float *sxt)
+{
+    rl_v4 s0 = {0, 0, 0, 0}, s1 = s0, ss0 = s0, ss1 = s0, sx0 = s0, sx1 = s0;
+    int k;
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        const float *tk = t + (size_t)k * stride;
+        float nk = fn[k], sk = fs[k];
+        rl_v4 t0, t1, nv = {nk, nk, nk, nk}, sv = {sk, sk, sk, sk};
+        if (nk == 0)
+            continue; /* bins outside the image or in light */
+        memcpy(&t0, tk, sizeof t0);
+        memcpy(&t1, tk + 4, sizeof t1);
+        s0 += nv * t0;
+        s1 += nv * t1;
+        ss0 += nv * t0 * t0;
+        ss1 += nv * t1 * t1;
+        sx0 += sv * t0;
+        sx1 += sv * t1;
+    }
+    memcpy(st, &s0, sizeof s0);
+    memcpy(st + 4, &s1, sizeof s1);
+    memcpy(stt, &ss0, sizeof ss0);
+    memcpy(stt + 4, &ss1, sizeof ss1);
+    memcpy(sxt, &sx0, sizeof sx0);
+    memcpy(sxt + 4, &sx1, sizeof sx1);
+}
+#else
+typedef int rl_match_kernel_v4_not_built; /* ISO C: no empty translation unit */
+#endif

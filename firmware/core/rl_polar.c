@@ -1,0 +1,343 @@
+#include "rl_polar.h"
+
+#include <math.h>
+#include <string.h>
+
+
+/* Pixels of a row whose cells are found before they are summed. */
+#define GATHER_CHUNK 64
+#define GATHER_BLOCK 16
+
+/* A cell's packed sums: from the top, the count in 12 bits, the sum of
+ * grey levels in 20 and the sum of their squares in the low 32 (used up
+ * to 31): room for PACK_MAX pixels of level 255. The two halves are
+ * unpacked as 32-bit integers. */
+#define PACK_N_SHIFT 52
+#define PACK_S_SHIFT 32
+#define PACK_MAX 4095 /* 4095 * 255 < 2^20, 4095 * 255^2 < 2^31 */
+
+/* Add the packed sums to the raw float cells and clear them. */
+static void unpack_cells(rl_polar *pol)
+{
+    int sct, k;
+    for (sct = 0; sct < RL_SECTORS; sct++) {
+        uint64_t *a = pol->acc[sct] + RL_POLAR_PAD;
+        float *n = pol->n[sct] + RL_POLAR_PAD, *sm = pol->s[sct] + RL_POLAR_PAD;
+        float *q = pol->q[sct] + RL_POLAR_PAD;
+        for (k = 0; k < RL_POLAR_BINS; k++) {
+            uint32_t hi = (uint32_t)(a[k] >> PACK_S_SHIFT), lo = (uint32_t)a[k];
+            n[k] += (float)(int32_t)(hi >> (PACK_N_SHIFT - PACK_S_SHIFT));
+            sm[k] += (float)(int32_t)(hi & ((1u << (PACK_N_SHIFT - PACK_S_SHIFT)) - 1));
+            q[k] += (float)(int32_t)lo;
+            a[k] = 0;
+        }
+    }
+}
+
+/* Smallest integer >= v and largest <= v, without libm calls. */
+static int iceil(double v)
+{
+    int t = (int)v;
+    return t < v ? t + 1 : t;
+}
+
+static int ifloor(double v)
+{
+    int t = (int)v;
+    return t > v ? t - 1 : t;
+}
+
+/* Clear the cells, fill the per-level table and the sector directions. */
+static void polar_setup(rl_polar *pol, double cx, double cy, double r, int light)
+{
+    int k, sct;
+    memset(pol->acc, 0, sizeof pol->acc);
+    memset(pol->n, 0, sizeof pol->n);
+    memset(pol->s, 0, sizeof pol->s);
+    memset(pol->q, 0, sizeof pol->q);
+    for (k = 0; k < 256; k++)
+        pol->lut[k] = k < light ? ((uint64_t)1 << PACK_N_SHIFT) | ((uint64_t)k << PACK_S_SHIFT) |
+                                      (uint64_t)(k * k)
+                                : 0; /* light is not gathered */
+    pol->cx = cx;
+    pol->cy = cy;
+    pol->r = r;
+    for (sct = 0; sct < RL_SECTORS; sct++) {
+        /* mid-angle of each sector, laid out as in the gather below */
+        /* cos and sin of 11.25 and 33.75 degrees */
+        static const double cs[2][2] = {{0.98078528040323043, 0.19509032201612825},
+                                        {0.83146961230254524, 0.55557023301960218}};
+        int oct = sct / 2, sub = sct % 2, major = oct % 2;
+        double ax = major ? cs[sub][0] : cs[sub][1], ay = major ? cs[sub][1] : cs[sub][0];
+        pol->ux[sct] = (oct / 4 ? -1.0 : 1.0) * ax;
+        pol->uy[sct] = ((oct / 2) % 2 ? -1.0 : 1.0) * ay;
+    }
+}
+
+/* Add every pixel within reach (not light) to its cell's packed sums, and
+ * move the sums to the float cells. */
+static void gather_cells(rl_polar *pol, const rl_image *img)
+{
+    double cx = pol->cx, cy = pol->cy, r = pol->r;
+    double bw = RL_PROFILE_EXTENT * r / RL_PROFILE_BINS, lim = RL_POLAR_BINS * bw;
+    /* Pixels a cell can hold: it fits a box of bw plus the arc's bulge
+     * (0.02 lim) by the sector's chord (0.4 lim), which holds at most
+     * (w + 1) (h + 1) pixels, and a row meets at most w + h + 1 of them.
+     * Past PACK_MAX (landmarks of some 380 px radius) the sums are moved
+     * out every few rows. */
+    double bw_box = bw + 0.02 * lim, ch_box = 0.4 * lim;
+    int flush_rows = (bw_box + 1.0) * (ch_box + 1.0) <= PACK_MAX
+                         ? 1 << 30
+                         : (int)(PACK_MAX / (bw_box + ch_box + 1.0));
+    float inv = (float)(1.0 / bw), fcx = (float)cx;
+    int y, y0 = iceil(cy - lim), y1 = ifloor(cy + lim), rows = 0;
+    uint64_t *acc = &pol->acc[0][0];
+    if (flush_rows < 1)
+        flush_rows = 1;
+    if (y0 < 0) y0 = 0;
+    if (y1 > img->height - 1) y1 = img->height - 1;
+    for (y = y0; y <= y1; y++) {
+        const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
+        double dy = y - cy, half = lim * lim - dy * dy;
+        float fdy = (float)dy, dy2 = fdy * fdy, ady = fabsf(fdy);
+        /* sector s's cells start at s * RL_POLAR_CELLS; s = 8 (left) + 4
+         * (above) + 2 (|dx| > |dy|) + 1 (the half of the octant away from
+         * the axis) */
+        int x0, x1, xs, rowbase = (dy < 0 ? 4 * RL_POLAR_CELLS : 0) + RL_POLAR_PAD;
+        if (half <= 0)
+            continue;
+        if (++rows > flush_rows) {
+            unpack_cells(pol);
+            rows = 1;
+        }
+        /* the row's span inside the outer circle */
+        half = sqrt(half);
+        x0 = iceil(cx - half);
+        x1 = ifloor(cx + half);
+        if (x0 < 0) x0 = 0;
+        if (x1 > img->width - 1) x1 = img->width - 1;
+        /* a chunk of the row at a time: first every pixel's cell (plain
+         * arithmetic), then the sums */
+        for (xs = x0; xs <= x1; xs += GATHER_CHUNK) {
+            int nx = x1 - xs + 1 < GATHER_CHUNK ? x1 - xs + 1 : GATHER_CHUNK, i;
+            int cell[GATHER_CHUNK], b;
+            /* blocks of GATHER_BLOCK pixels: a fixed count the compiler
+             * vectorizes (the block's tail past the row costs nothing) */
+            for (b = 0; b < nx; b += GATHER_BLOCK) {
+                float bx = (float)(xs + b) - fcx;
+                int *cb = cell + b;
+                for (i = 0; i < GATHER_BLOCK; i++) {
+                    float dx = bx + (float)i, adx = fabsf(dx);
+                    float lo = adx < ady ? adx : ady, hi = adx < ady ? ady : adx;
+                    /* the bin, the rim's rounding kept in the last one */
+                    float d = sqrtf(dx * dx + dy2) * inv;
+                    d = d < RL_POLAR_BINS - 0.5f ? d : RL_POLAR_BINS - 0.5f;
+                    /* 16 sectors from the octant and whether the smaller
+                     * coordinate is above tan(22.5 deg) of the larger (no atan2) */
+                    cb[i] = rowbase + (dx < 0 ? 8 * RL_POLAR_CELLS : 0) +
+                            (adx > ady ? 2 * RL_POLAR_CELLS : 0) +
+                            (lo > 0.41421356f * hi ? RL_POLAR_CELLS : 0) + (int)d;
+                }
+            }
+            for (i = 0; i < nx; i++)
+                acc[cell[i]] += pol->lut[row[xs + i]];
+        }
+    }
+    unpack_cells(pol);
+}
+
+/* Each sector's black and white (extreme means over groups of 4 bins of
+ * the profile's extent); a sector with less contrast is not usable. */
+static void sector_levels(rl_polar *pol, double min_contrast)
+{
+    int sct, k;
+    for (sct = 0; sct < RL_SECTORS; sct++) {
+        const float *cn = pol->n[sct] + RL_POLAR_PAD, *cs = pol->s[sct] + RL_POLAR_PAD;
+        pol->lo[sct] = 1e9;
+        pol->hi[sct] = -1e9;
+        for (k = 0; k + 3 < RL_PROFILE_BINS; k += 4) {
+            float n = cn[k] + cn[k + 1] + cn[k + 2] + cn[k + 3];
+            double m;
+            if (n < 2)
+                continue;
+            m = (double)(cs[k] + cs[k + 1] + cs[k + 2] + cs[k + 3]) / n;
+            if (m < pol->lo[sct]) pol->lo[sct] = m;
+            if (m > pol->hi[sct]) pol->hi[sct] = m;
+        }
+        pol->usable[sct] = pol->hi[sct] - pol->lo[sct] >= min_contrast;
+    }
+}
+
+/* Normalized (darkness v = a - b I maps a sector's white to 0 and its
+ * black to 255), the two sectors of each octant are summed for the
+ * profiles: a shift moves a pixel by d . u for its own direction u,
+ * which the octant's middle direction gives within cos(22.5 deg), 8%
+ * of a shift of at most 1.5 px. Half the cells, half the work of every
+ * profile. A washed-out sector is left out. Octant o is written over
+ * sector o, which octant o / 2 has already read. */
+static void merge_octants(rl_polar *pol)
+{
+    int sct, k;
+    for (sct = 0; sct < RL_SECTORS / 2; sct++) {
+        int h, k0 = RL_POLAR_PAD;
+        double ux = pol->ux[2 * sct] + pol->ux[2 * sct + 1];
+        double uy = pol->uy[2 * sct] + pol->uy[2 * sct + 1], len = sqrt(ux * ux + uy * uy);
+        float on[RL_POLAR_BINS], os[RL_POLAR_BINS], oq[RL_POLAR_BINS];
+        for (k = 0; k < RL_POLAR_BINS; k++)
+            on[k] = os[k] = oq[k] = 0;
+        for (h = 0; h < 2; h++) {
+            int from = 2 * sct + h;
+            const float *cn = pol->n[from] + k0, *cs = pol->s[from] + k0, *cq = pol->q[from] + k0;
+            float b, a, a2, ab2, b2;
+            if (!pol->usable[from])
+                continue;
+            b = (float)(255.0 / (pol->hi[from] - pol->lo[from]));
+            a = (float)(b * pol->hi[from]);
+            a2 = a * a;
+            ab2 = 2 * a * b;
+            b2 = b * b;
+            for (k = 0; k < RL_POLAR_BINS; k++) {
+                on[k] += cn[k];
+                os[k] += cn[k] * a - b * cs[k];
+                oq[k] += cn[k] * a2 - ab2 * cs[k] + b2 * cq[k];
+            }
+        }
+        memcpy(pol->n[sct] + k0, on, sizeof on);
+        memcpy(pol->s[sct] + k0, os, sizeof os);
+        memcpy(pol->q[sct] + k0, oq, sizeof oq);
+        pol->ux[sct] = ux / len;
+        pol->uy[sct] = uy / len;
+        pol->merged_usable[sct] = pol->usable[2 * sct] || pol->usable[2 * sct + 1];
+    }
+}
+
+void rl_polar_gather(const rl_image *img, double cx, double cy, double r, int light,
+                     double min_contrast, rl_polar *pol)
+{
+    polar_setup(pol, cx, cy, r, light);
+    gather_cells(pol, img);
+    sector_levels(pol, min_contrast);
+    merge_octants(pol);
+}
+
+/* Guard bins either side of the shifted profile: a shift of up to
+ * SHIFT_GUARD - 1 bins (1.5 px at the smallest landmarks) stays inside. */
+#define SHIFT_GUARD 8
+#define SHIFT_SPAN (RL_POLAR_BINS + RL_POLAR_PAD) /* cells written per sector */
+#define MID_BINS (SHIFT_SPAN + 2 * SHIFT_GUARD)
+
+/* The first step of a profile: every sector moved by its own fraction of
+ * a bin (the shift, the same for all its cells: a two-tap filter), the
+ * sectors summed into mid bins mn, ms, mq (MID_BINS, zeroed here). */
+static void shift_sectors(const rl_polar *pol, double dx, double dy, float *mn, float *ms,
+                          float *mq)
+{
+    double bw = RL_PROFILE_EXTENT * pol->r / RL_PROFILE_BINS;
+    int sct, k;
+    memset(mn, 0, MID_BINS * sizeof *mn);
+    memset(ms, 0, MID_BINS * sizeof *ms);
+    memset(mq, 0, MID_BINS * sizeof *mq);
+    for (sct = 0; sct < RL_SECTORS / 2; sct++) {
+        /* c[k] is bin k; c[-1] and c[RL_POLAR_BINS] are pads */
+        const float *cn = pol->n[sct] + RL_POLAR_PAD, *cs = pol->s[sct] + RL_POLAR_PAD;
+        const float *cq = pol->q[sct] + RL_POLAR_PAD;
+        float u, w, *on, *os, *oq;
+        double sh;
+        int j0;
+        if (!pol->merged_usable[sct])
+            continue;
+        /* cell k moves to k + sh: (1 - w) of it to k + j0, w to k + j0 + 1 */
+        sh = -(dx * pol->ux[sct] + dy * pol->uy[sct]) / bw;
+        if (sh > SHIFT_GUARD - 1) sh = SHIFT_GUARD - 1;
+        if (sh < 1 - SHIFT_GUARD) sh = 1 - SHIFT_GUARD;
+        j0 = (int)(sh + SHIFT_GUARD) - SHIFT_GUARD; /* floor: sh + SHIFT_GUARD > 0 */
+        w = (float)(sh - j0);
+        u = 1.0f - w;
+        on = mn + SHIFT_GUARD + j0;
+        os = ms + SHIFT_GUARD + j0;
+        oq = mq + SHIFT_GUARD + j0;
+        /* bin k + j0 from cells k and k - 1, over whole vectors */
+        for (k = 0; k < SHIFT_SPAN; k++) {
+            on[k] += u * cn[k] + w * cn[k - 1];
+            os[k] += u * cs[k] + w * cs[k - 1];
+            oq[k] += u * cq[k] + w * cq[k - 1];
+        }
+    }
+}
+
+/* The second step: the mid bins rescaled by `scale`, each shared between
+ * the two output bins around where its centre lands. */
+static void rescale_bins(const float *mn, const float *ms, const float *mq, double scale,
+                         rl_profile *p)
+{
+    double a = 1.0 / scale, b;
+    int k, m;
+    /* mid bin m (centre m - SHIFT_GUARD + 0.5 bins out) lands at output
+     * t = a (m - SHIFT_GUARD + 0.5) - 0.5, (1 - w) of it in bin j = floor(t)
+     * and w in j + 1. t grows with m, so bins j and j + 1 are summed in
+     * registers and bin j is written once t has moved past it. */
+    if (scale == 1.0) {
+        /* as gathered: mid bin SHIFT_GUARD + j is bin j */
+        float tn = 0, tq = 0;
+        for (k = 0; k < RL_PROFILE_BINS; k++) {
+            p->n[k] = mn[SHIFT_GUARD + k];
+            p->sx[k] = ms[SHIFT_GUARD + k];
+            tn += mn[SHIFT_GUARD + k];
+            tq += mq[SHIFT_GUARD + k];
+        }
+        p->total = tn;
+        p->sxx = tq;
+        return;
+    }
+    b = a * (0.5 - SHIFT_GUARD) - 0.5;
+    m = (int)((-1.0 - b) / a); /* the first m with t >= -1, or one before */
+    if (m < 0)
+        m = 0;
+    {
+        float n0 = 0, n1 = 0, s0 = 0, s1 = 0, q0 = 0, q1 = 0, tq = 0, tn = 0;
+        int cur = -1; /* the bin n0, s0, q0 hold; n1, s1, q1 hold cur + 1 */
+        for (;; m++) {
+            /* past the last mid bin or the last output bin, every bin
+             * still open is written */
+            double t = m < MID_BINS ? a * m + b : RL_PROFILE_BINS;
+            int last = t >= RL_PROFILE_BINS, j;
+            float w, v;
+            if (t < -1.0)
+                continue;
+            j = last ? RL_PROFILE_BINS : (int)(t + 1.0) - 1; /* floor: t >= -1 */
+            while (cur < j) {
+                /* bin cur is complete */
+                if (cur >= 0) {
+                    p->n[cur] = n0;
+                    p->sx[cur] = s0;
+                    tn += n0;
+                    tq += q0;
+                }
+                cur++;
+                n0 = n1;
+                s0 = s1;
+                q0 = q1;
+                n1 = s1 = q1 = 0;
+            }
+            if (last)
+                break;
+            w = (float)(t - j);
+            v = 1.0f - w;
+            n0 += v * mn[m];
+            s0 += v * ms[m];
+            q0 += v * mq[m];
+            n1 += w * mn[m];
+            s1 += w * ms[m];
+            q1 += w * mq[m];
+        }
+        p->sxx = tq;
+        p->total = tn;
+    }
+}
+
+void rl_polar_profile(const rl_polar *pol, double dx, double dy, double scale, rl_profile *p)
+{
+    float mn[MID_BINS], ms[MID_BINS], mq[MID_BINS];
+    shift_sectors(pol, dx, dy, mn, ms, mq);
+    rescale_bins(mn, ms, mq, scale, p);
+}

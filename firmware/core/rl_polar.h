@@ -1,0 +1,74 @@
+/* rl_polar: a candidate gathered once into polar cells, for the local
+ * pass (internal).
+ *
+ * Near a light, glare adds a smooth light field that varies with
+ * direction, so each angular sector is normalized by its own black and
+ * white levels. The cells keep raw sums per sector and radial bin, so the
+ * local search can derive the profile for a shifted centre or a scaled
+ * radius without touching the image again.
+ *
+ *   static rl_polar pol;                        // large: not on a small stack
+ *   rl_polar_gather(&img, cx, cy, r, light, 20.0, &pol);
+ *   rl_profile p;
+ *   rl_polar_profile(&pol, 0.5, 0.0, 1.02, &p); // centre 0.5 px right, radius +2%
+ */
+#ifndef RL_POLAR_H
+#define RL_POLAR_H
+
+#include <stdint.h>
+#include "rl_image.h"
+#include "rl_profile.h"
+
+/* Angular sectors for glare normalization: glare adds a smooth light
+ * field that varies with direction, so each sector is rescaled by its own
+ * black and white levels. */
+#define RL_SECTORS 16
+
+/* Polar cells reach beyond the profile (1.2 R) so that a larger radius or
+ * a shifted centre still finds its outermost pixels: 68 bins reach
+ * 1.275 R. Further out, a search's outermost quiet-zone bins are only
+ * partly filled, which Pearson's r takes as pixels not seen. */
+#define RL_POLAR_BINS 68
+/* Zero cells before and after a sector's bins (whole vectors of 4). */
+#define RL_POLAR_PAD 4
+#define RL_POLAR_CELLS (RL_POLAR_BINS + 2 * RL_POLAR_PAD)
+
+/* A candidate gathered once into RL_SECTORS x RL_POLAR_BINS polar cells
+ * (raw count, sum, sum of squares), from which the sector-normalized
+ * profile for any small shift of the centre, or change of radius, is
+ * derived without touching the image again: a shift d moves the pixels
+ * of sector s (direction u_s) to radius rho - d . u_s, and a radius scale
+ * f divides every radius by f. */
+typedef struct {
+    double cx, cy, r;
+    /* bin k of a sector at [RL_POLAR_PAD + k]; the pads are zero */
+    float n[RL_SECTORS][RL_POLAR_CELLS]; /* pixels */
+    float s[RL_SECTORS][RL_POLAR_CELLS]; /* sum of darkness */
+    float q[RL_SECTORS][RL_POLAR_CELLS]; /* sum of squared darkness */
+    /* while gathering: count, sum and sum of squares of grey levels packed
+     * in one integer per cell (one add per pixel), from a table per level;
+     * the float cells above then hold raw sums until normalized */
+    uint64_t acc[RL_SECTORS][RL_POLAR_CELLS];
+    uint64_t lut[256];
+    double ux[RL_SECTORS], uy[RL_SECTORS]; /* sector directions */
+    double lo[RL_SECTORS], hi[RL_SECTORS]; /* sector black and white */
+    int usable[RL_SECTORS];                /* sector has enough contrast */
+    int merged_usable[RL_SECTORS / 2];     /* after the octants' sectors are summed
+                                              into the first half of the arrays */
+} rl_polar;
+
+/* Gather a candidate into polar cells and normalize each sector by its
+ * own black and white; sectors with less than min_contrast grey levels
+ * between them (washed out) are left out. After this the first
+ * RL_SECTORS / 2 rows of cells hold the normalized darkness (count, sum,
+ * sum of squares) of each octant, its two sectors summed, and ux, uy the
+ * octants' middle directions. */
+void rl_polar_gather(const rl_image *img, double cx, double cy, double r, int light,
+                    double min_contrast, rl_polar *pol);
+
+/* The profile of pol with the centre moved by (dx, dy) px and the radius
+ * multiplied by scale (1 = as gathered). */
+void rl_polar_profile(const rl_polar *pol, double dx, double dy, double scale,
+                            rl_profile *p);
+
+#endif

@@ -1,0 +1,30 @@
+/* rl_recog_state: what a recognizer holds between frames (internal: the
+ * public header keeps rl_recog opaque).
+ *
+ * It lives at the start of the caller's block; every array it points to
+ * follows it in the same block, carved by the one layout sequence that
+ * rl_recog_workspace_size also runs.
+ */
+#ifndef RL_RECOG_STATE_H
+#define RL_RECOG_STATE_H
+
+#include "rl_label.h"
+#include "rl_polar.h"
+#include "rl_recog.h"
+#include "rl_templates.h"
+
+struct rl_recog {
+    rl_recog_config cfg;
+    int width, height;
+    int ids[RL_MAX_MAP_LANDMARKS]; /* copy of cfg.ids */
+    rl_templates templates;        /* rendered at init */
+    rl_label dark;  /* ROI labelling: the frame, then the local pass's windows */
+    rl_label light; /* light-source labelling */
+    rl_polar *polar;/* a local-pass candidate in polar cells */
+};
+
+/* Specks: regions smaller than 10% of the narrowest code ring of the
+ * smallest landmark considered (the paper's rule). */
+int rl_recog_speck_area(const rl_recog_config *cfg);
+
+#endif

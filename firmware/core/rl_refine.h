@@ -1,0 +1,27 @@
+/* rl_refine: a CLR's centre and outer radius from the grey levels, before
+ * global identification (internal).
+ *
+ *   rl_refine_centre(&img, &res.levels, &d.u, &d.v, d.radius);
+ *   rl_refine_radius(&img, d.u, d.v, &d.radius);
+ */
+#ifndef RL_REFINE_H
+#define RL_REFINE_H
+
+#include "rl_image.h"
+#include "rl_recog.h"
+
+/* Darkness-weighted centroid of the disk (*cx, *cy, r): code rings are
+ * concentric, so every ROI pixel, weighted by how dark it is, pulls
+ * towards the true centre with sub-pixel precision (the paper takes the
+ * binary centroid of all ROI pixels). Only for a disk wholly inside the
+ * image; unchanged otherwise. */
+void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r);
+
+/* Outer radius: the mean grey level on circles of growing radius drops to
+ * the outer ring's black and rises to the paper's white; where it crosses
+ * halfway is the printed edge, whatever the blur (a symmetric blur moves
+ * a threshold crossing, not the 50% one). Only rays that stay inside the
+ * image are used; *r is kept when there is no clear edge. */
+void rl_refine_radius(const rl_image *img, double cx, double cy, double *r);
+
+#endif

@@ -1,0 +1,106 @@
+#include "rl_search.h"
+
+/* Search steps: centre (px) and radius (fraction) steps of each round,
+ * after a first sweep over radii. The sweep only looks further out: an
+ * edge fit that glare or the border leaves with a short arc errs inwards
+ * (5-12% short), while the crosses reach 4.5% either way. */
+#define SEARCH_ROUNDS 2
+static const double search_shift[SEARCH_ROUNDS] = {1.0, 0.5};
+static const double search_scale[SEARCH_ROUNDS] = {0.03, 0.015};
+#define SWEEP_SCALE 1.06
+/* Sectors with less grey-level contrast than this are washed out. */
+#define SECTOR_MIN_CONTRAST 20.0
+/* Most likely ids: the best and up to three one code zone away. */
+#define LIKELY_IDS 4
+
+/* Where the search stands: the best centre shift and radius scale so far
+ * and their score, over the likely ids at one blur. */
+typedef struct {
+    rl_match_list likely;
+    double x, y, s, score;
+} search_state;
+
+/* Score the likely ids with the centre moved by (x, y) and the radius
+ * scaled by s; kept if better. The score is returned. */
+static double search_try(const rl_polar *pol, search_state *st, double x, double y, double s)
+{
+    rl_profile p;
+    rl_match mm;
+    rl_polar_profile(pol, x, y, s, &p);
+    rl_match_list_score(&st->likely, &p, &mm);
+    if (mm.score > st->score) {
+        st->score = mm.score;
+        st->x = x;
+        st->y = y;
+        st->s = s;
+    }
+    return mm.score;
+}
+
+/* The likely ids for first match m of profile p: the best and those one
+ * code zone away that come close (a radius error confuses the outer ring
+ * with zone 1). */
+static int likely_ids(const rl_templates *tt, const rl_profile *p, const rl_match *m, int *ids)
+{
+    int n = 0, k, bits = tt->fam.bits;
+    ids[n++] = m->id;
+    for (k = 1; k <= bits && n < LIKELY_IDS; k++) {
+        int alt = m->id ^ (1 << (bits - k));
+        rl_match mm;
+        if (!rl_family_valid(&tt->fam, alt))
+            continue;
+        rl_match_ids(tt, p, &alt, 1, -1, &mm);
+        if (mm.id >= 0 && mm.score > m->second - 0.05)
+            ids[n++] = alt;
+    }
+    return n;
+}
+
+/* The crosses (and a parabola's peak) around the best so far. */
+static void search_crosses(const rl_polar *pol, search_state *st)
+{
+    static const int dir[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    int it, k;
+    for (it = 0; it < SEARCH_ROUNDS; it++) {
+        double cx0 = st->x, cy0 = st->y, cs0 = st->s, f0 = st->score, fv[6], off[3];
+        double step = search_shift[it], sstep = search_scale[it];
+        for (k = 0; k < 6; k++)
+            fv[k] = search_try(pol, st, cx0 + dir[k][0] * step, cy0 + dir[k][1] * step,
+                               cs0 * (1.0 + dir[k][2] * sstep));
+        if (st->x != cx0 || st->y != cy0 || st->s != cs0)
+            continue; /* moved: a finer cross around the new best */
+        for (k = 0; k < 3; k++) {
+            double den = fv[2 * k] - 2 * f0 + fv[2 * k + 1];
+            off[k] = den < 0 ? 0.5 * (fv[2 * k + 1] - fv[2 * k]) / den : 0.0;
+        }
+        search_try(pol, st, cx0 + off[0] * step, cy0 + off[1] * step, cs0 * (1.0 + off[2] * sstep));
+        break;
+    }
+}
+
+void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *img, int light,
+                        double *cx, double *cy, double *r, rl_match *m)
+{
+    rl_profile p;
+    int ids[LIKELY_IDS], n;
+    search_state st;
+    rl_polar_gather(img, *cx, *cy, *r, light, SECTOR_MIN_CONTRAST, pol);
+    rl_polar_profile(pol, 0, 0, 1.0, &p);
+    rl_match_all(tt, &p, m);
+    if (m->id < 0)
+        return;
+    n = likely_ids(tt, &p, m, ids);
+    rl_match_list_make(tt, ids, n, m->blur, &st.likely);
+    st.x = st.y = 0;
+    st.s = 1.0;
+    st.score = m->score;
+    search_try(pol, &st, 0, 0, SWEEP_SCALE);
+    search_crosses(pol, &st);
+    if (st.x == 0 && st.y == 0 && st.s == 1.0)
+        return; /* the first match stands: every id was scored there */
+    rl_polar_profile(pol, st.x, st.y, st.s, &p);
+    rl_match_all(tt, &p, m);
+    *cx += st.x;
+    *cy += st.y;
+    *r *= st.s;
+}

@@ -1,0 +1,31 @@
+/* rl_search: the local pass's identification of a DUCLR, searching the
+ * centre and radius that fit the likely ids best (internal).
+ *
+ * Identification runs on sector-normalized grey levels (glare varies by
+ * direction), gathered once into polar cells (rl_polar.h) around the edge
+ * fit's centre. That centre and radius can be off where glare or the
+ * border hides most of the outer edge, and a radius read a few percent
+ * short reads the outer ring as a code ring: so the centre and radius that
+ * fit the likely ids best are searched, scoring them at the first match's
+ * blur: a sweep to a larger radius, then a cross over the centre and one
+ * step either way in radius; if the cross's centre stays best, the peak
+ * of a parabola through each axis's three scores is tried and the search
+ * ends, else a finer cross follows the same way. Every id at every blur
+ * is scored at the end.
+ *
+ *   rl_search_identify(&tt, pol, &img, light, &cx, &cy, &r, &m);
+ */
+#ifndef RL_SEARCH_H
+#define RL_SEARCH_H
+
+#include "rl_match.h"
+#include "rl_polar.h"
+#include "rl_templates.h"
+
+/* Identify the candidate at (*cx, *cy, *r) with pol as scratch; the
+ * centre and radius are updated to the best fit, the match of every id
+ * there is in *m (m->id < 0: nothing matched). */
+void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *img, int light,
+                        double *cx, double *cy, double *r, rl_match *m);
+
+#endif

@@ -1,0 +1,57 @@
+/* rl_templates: the radial template table that identification scores
+ * against (internal).
+ *
+ * For every id of the recognizer and every blur level, the landmark's mean
+ * darkness (0 white .. 1 black) in each radial bin of a profile. Blurs are
+ * Gaussian, as fractions of R, so defocus and motion blur match a blurred
+ * template instead of reading as another code. The table is bin-major:
+ * for each bin, the value of every (id, blur) column side by side, padded
+ * to whole blocks of RL_MATCH_BLOCK columns, so the matcher walks the
+ * profile once and updates a block of columns together.
+ *
+ *   rl_templates tt;
+ *   if (rl_templates_init(&tt, &ws, &fam, NULL, 0) == RL_OK)   // every id
+ *       v = rl_templates_bin(&tt, 0, 2, 10);                   // id tt.ids[0], blur 2, bin 10
+ */
+#ifndef RL_TEMPLATES_H
+#define RL_TEMPLATES_H
+
+#include "rl_error.h"
+#include "rl_family.h"
+#include "rl_profile.h"
+#include "rl_workspace.h"
+
+/* Template blurs, as Gaussian sigma in units of R. */
+#define RL_BLUR_LEVELS 4
+/* Columns scored together by the matcher (rl_match_kernel.h). */
+#define RL_MATCH_BLOCK 8
+
+typedef struct {
+    rl_family fam;
+    int n;          /* ids */
+    int *ids;       /* the ids */
+    float *table;   /* RL_PROFILE_BINS x stride; column i * RL_BLUR_LEVELS + b is
+                       id ids[i] at blur b, the rest pads (0) */
+    int stride;     /* columns per bin, a multiple of RL_MATCH_BLOCK */
+} rl_templates;
+
+/* Bytes rl_templates_init takes from a workspace for n ids. */
+size_t rl_templates_bytes(int n);
+
+/* Compute the templates of `ids` (every id of the family when ids is NULL)
+ * into ws. RL_ERANGE for an id outside the family, RL_ENOMEM when ws is
+ * too small. */
+RL_CHECK rl_err rl_templates_init(rl_templates *tt, rl_ws *ws, const rl_family *fam,
+                                  const int *ids, int n_ids);
+
+/* Darkness of landmark `id` at normalized radius rho with Gaussian blur
+ * sigma (units of R); 0 white .. 1 black. */
+double rl_templates_value_at(const rl_family *fam, int id, double rho, double sigma);
+
+/* Table value of the i-th id at a blur level in bin k. */
+float rl_templates_bin(const rl_templates *tt, int i, int blur, int k);
+
+/* Index of `id` among tt->ids, or -1. */
+int rl_templates_find(const rl_templates *tt, int id);
+
+#endif
