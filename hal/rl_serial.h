@@ -3,8 +3,13 @@
  * works as a serial device.
  *
  *   rl_serial s;
- *   if (rl_serial_open(&s, "/dev/serial0", 115200, err, sizeof err) == RL_OK)
- *       rl_serial_write(&s, buf, n);   // RL_ENODEV: the line went away, reopen
+ *   char err[256];
+ *   const uint8_t frame_bytes[3] = {0xFA, 0xFB, 0};
+ *   if (rl_serial_open(&s, "/dev/serial0", 115200, err, sizeof err) == RL_OK) {
+ *       if (rl_serial_write(&s, frame_bytes, 3, 100) == RL_ENODEV)
+ *           use(s.path);                 // the line went away: close, reopen later
+ *       rl_serial_close(&s);
+ *   }
  */
 #ifndef RL_SERIAL_H
 #define RL_SERIAL_H

@@ -3,7 +3,9 @@
  * red, identified landmarks in green (global pass) or cyan (local pass)
  * with their centre as a yellow dot and their code next to them.
  *
- *   rl_annotate_png("out.png", &img, &res, NULL, err, sizeof err);
+ *   char err[256];
+ *   if (rl_annotate_png("out.png", &img, &res, &fam, "frame 12", err, sizeof err) != RL_OK)
+ *       fprintf(stderr, "ringloc: %s\n", err);
  */
 #ifndef RL_ANNOTATE_H
 #define RL_ANNOTATE_H

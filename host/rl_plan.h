@@ -6,9 +6,12 @@
  * wide in the image) and the largest square-grid pitch that keeps at least
  * two whole landmarks in view at any robot position and heading.
  *
- *   rl_plan_input in;  rl_plan_defaults(&in);  in.landmarks = 30; ...
+ *   rl_plan_input in;
  *   rl_plan_result out;
- *   if (rl_plan_compute(&in, &out) == RL_OK) printf("%g m\n", out.diameter);
+ *   rl_plan_defaults(&in);
+ *   in.landmarks = 30;
+ *   if (rl_plan_compute(&in, &out) == RL_OK)
+ *       printf("%g m\n", out.diameter);
  */
 #ifndef RL_PLAN_H
 #define RL_PLAN_H

@@ -6,7 +6,9 @@
  *
  *   const rl_paper *a4 = rl_paper_find("a4");
  *   int ids[] = {25};
- *   rl_print_pdf("out.pdf", a4, &fam, ids, NULL, 1, 0.21, err, sizeof err);
+ *   char err[256];
+ *   if (rl_print_pdf("out.pdf", a4, &fam, ids, NULL, 1, 0.21, err, sizeof err) != RL_OK)
+ *       fprintf(stderr, "ringloc: %s\n", err);
  */
 #ifndef RL_PRINT_H
 #define RL_PRINT_H

@@ -227,6 +227,83 @@ static void test_workspace_budget(void **state)
     assert_true(fixed < 256 * 1024);
 }
 
+
+/* ---- limits count what they drop: the expected counts are the number of
+ * objects drawn, a count made here, less the limit ---- */
+#define BW 640
+#define BH 480
+static uint8_t big[BW * BH];
+static rl_result bres;
+
+static void run_big(void)
+{
+    static uint8_t *bmem;
+    static rl_recog *brec;
+    rl_recog_config cfg;
+    rl_image img = rl_image_view(BW, BH, BW, big);
+    if (brec == NULL) {
+        size_t n;
+        rl_recog_defaults(&cfg);
+        cfg.local = RL_LOCAL_NEVER;
+        n = rl_recog_workspace_size(BW, BH, &cfg);
+        bmem = malloc(n);
+        assert_int_equal(rl_recog_init(&brec, &cfg, BW, BH, bmem, n), RL_OK);
+    }
+    assert_int_equal(rl_recog_run(brec, &img, &bres), RL_OK);
+}
+
+static void test_dropped_regions_are_counted(void **state)
+{
+    int x, y, dx, dy, drawn = 0;
+    (void)state;
+    /* 3x3 dark dots every 5 px: far more regions than RL_MAX_REGIONS */
+    memset(big, 200, sizeof big);
+    for (y = 1; y + 3 <= BH; y += 5)
+        for (x = 1; x + 3 <= BW; x += 5, drawn++)
+            for (dy = 0; dy < 3; dy++)
+                for (dx = 0; dx < 3; dx++)
+                    big[(y + dy) * BW + x + dx] = 20;
+    assert_true(drawn > RL_MAX_REGIONS);
+    run_big();
+    assert_int_equal(bres.n_regions, RL_MAX_REGIONS);
+    assert_int_equal(bres.dropped.regions, drawn - RL_MAX_REGIONS);
+}
+
+static void test_dropped_candidates_are_counted(void **state)
+{
+    int x, y, cx, cy, drawn = 0;
+    (void)state;
+    /* outer rings (radius 13, 3 px wide) every 32 px: 300 CLRs */
+    memset(big, 200, sizeof big);
+    for (cy = 16; cy + 16 <= BH; cy += 32)
+        for (cx = 16; cx + 16 <= BW; cx += 32, drawn++)
+            for (y = cy - 14; y <= cy + 14; y++)
+                for (x = cx - 14; x <= cx + 14; x++) {
+                    double d = hypot(x - cx, y - cy);
+                    if (d <= 13.0 && d >= 10.0)
+                        big[y * BW + x] = 20;
+                }
+    assert_true(drawn > RL_MAX_CANDIDATES);
+    run_big();
+    assert_int_equal(bres.n_candidates + bres.dropped.candidates, drawn);
+    assert_int_equal(bres.dropped.candidates, drawn - RL_MAX_CANDIDATES);
+}
+
+static void test_dropped_lights_are_counted(void **state)
+{
+    int x, y, i, drawn = 0;
+    (void)state;
+    /* 48 saturated 10x10 lamps on a grey ceiling */
+    memset(big, 150, sizeof big);
+    for (i = 0; i < 48; i++, drawn++)
+        for (y = 0; y < 10; y++)
+            for (x = 0; x < 10; x++)
+                big[(20 + (i / 8) * 70 + y) * BW + 20 + (i % 8) * 75 + x] = 255;
+    run_big();
+    assert_int_equal(bres.n_lights, RL_MAX_LIGHTS);
+    assert_int_equal(bres.dropped.lights, drawn - RL_MAX_LIGHTS);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -237,6 +314,9 @@ int main(void)
         cmocka_unit_test(test_blank_frames),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_workspace_budget),
+        cmocka_unit_test(test_dropped_regions_are_counted),
+        cmocka_unit_test(test_dropped_candidates_are_counted),
+        cmocka_unit_test(test_dropped_lights_are_counted),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     free(mem);

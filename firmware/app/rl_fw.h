@@ -2,6 +2,7 @@
  * loop (rl_run.h) until a signal or the end of a PNG sequence. `ringloc-fw`
  * (what the robot's systemd unit runs) and `ringloc run` both call it.
  *
+ *   #include "rl_cli.h"
  *   int main(int argc, char **argv)
  *   {
  *       rl_cli_set_program("ringloc-fw");

@@ -11,11 +11,21 @@
  * rl_run_io too, so tests can inject every fault. Nothing is allocated
  * after rl_run_init.
  *
- *   static rl_runner r;
- *   rl_run_init(&r, &io, rec, &calib, &map, &mount, &result);
- *   while (!stop && rl_run_step(&r) != RL_ENOTFOUND)
+ *   static rl_runner runner;
+ *   static rl_result result;
+ *   rl_cam_config cc;
+ *   rl_run_io io;
+ *   rl_mount mount;
+ *   rl_cam_defaults(&cc);
+ *   memset(&io, 0, sizeof io);
+ *   io.cam = &cc;
+ *   io.clock = rl_clock_system();
+ *   // io.out: the serial line's open, write, close
+ *   rl_mount_defaults(&mount, 0.88);
+ *   rl_run_init(&runner, &io, rec, &cam, &map, &mount, &result);
+ *   while (rl_run_step(&runner) != RL_ENOTFOUND)
  *       continue;
- *   rl_run_close(&r);
+ *   rl_run_close(&runner);
  */
 #ifndef RL_RUN_H
 #define RL_RUN_H

@@ -11,7 +11,10 @@
  * of the grey span.
  *
  *   rl_accept_rule rule = rl_accept_rule_of(&cfg, RL_PASS_GLOBAL);
- *   if (rl_accept(&rule, &m, res.levels.bg - res.levels.fg)) ...
+ *   rl_match m;
+ *   rl_match_all(&tt, &p, &m);
+ *   if (rl_accept(&rule, &m, res.levels.bg - res.levels.fg))
+ *       use(m.id);
  */
 #ifndef RL_ACCEPT_H
 #define RL_ACCEPT_H

@@ -1,11 +1,13 @@
 /* rl_circle: circles fitted to edge points, and the 3 x 3 solver they
  * need (internal).
  *
+ *   double x[3] = {10, 0, -10}, y[3] = {0, 10, 0};   // edge points
  *   rl_circle_fit f;
  *   rl_circle_clear(&f);
- *   for (i = 0; i < n; i++) rl_circle_add(&f, x[i], y[i]);
- *   if (rl_circle_solve(&f, &cx, &cy, &r))
- *       rl_circle_refine(x, y, n, &cx, &cy, &r);    // geometric, from there
+ *   for (i = 0; i < 3; i++)
+ *       rl_circle_add(&f, x[i], y[i]);
+ *   if (rl_circle_solve(&f, &cx, &cy, &r))   // 0 here: fewer than 5 points
+ *       rl_circle_refine(x, y, 3, &cx, &cy, &r);     // geometric, from there
  */
 #ifndef RL_CIRCLE_H
 #define RL_CIRCLE_H

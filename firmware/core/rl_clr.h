@@ -10,9 +10,10 @@
  * whose box lies inside another's is an inner ring, not a landmark.
  *
  *   rl_box cand[RL_MAX_CANDIDATES];
- *   int n = rl_clr_find(&lb, &cfg, &res, cand, RL_MAX_CANDIDATES);
+ *   n = rl_clr_find(&lb, &cfg, &res, cand, RL_MAX_CANDIDATES);
  *   for (i = 0; i < n; i++)
- *       if (!rl_clr_is_inner(cand, n, i) && rl_clr_geometry(&cand[i], W, H, &d)) ...
+ *       if (!rl_clr_is_inner(cand, n, i) && rl_clr_geometry(&cand[i], W, H, &d))
+ *           use(d.u, d.v, d.radius);
  */
 #ifndef RL_CLR_H
 #define RL_CLR_H

@@ -1,9 +1,19 @@
 /* rl_edge: a landmark's outer edge, fitted as a circle, for the local
  * pass, where glare or the border hides part of it (internal).
  *
- *   rl_edge_window w = {&win, x0, y0, W, H};
- *   if (rl_edge_fit_outline(&lb, reg, &w, thr, light, &cx, &cy, &r) &&
- *       rl_edge_fit_rays(&img, light, &fx, &fy, &fr)) ...
+ *   rl_image win;
+ *   rl_edge_window w;
+ *   if (rl_image_sub(&img, 100, 80, 60, 60, &win) == RL_OK) {
+ *       w.img = &win;
+ *       w.x0 = 100;
+ *       w.y0 = 80;
+ *       w.frame_w = img.width;
+ *       w.frame_h = img.height;
+ *       // lb has labelled win at threshold 90; its region 0 is the ring
+ *       if (rl_edge_fit_outline(&lb, 0, &w, 90, light, &cx, &cy, &r) &&
+ *           rl_edge_fit_rays(&img, light, &cx, &cy, &r))
+ *           use(cx, cy, r);
+ *   }
  */
 #ifndef RL_EDGE_H
 #define RL_EDGE_H

@@ -1,7 +1,8 @@
 /* rl_global: the global pass's identification of one CLR, the paper's
  * fourth step (internal).
  *
- *   for each outer CLR box b:  rl_global_identify(rec, &img, &b, &res);
+ *   rl_box b = {100, 80, 150, 131};        // an outer CLR's box
+ *   rl_global_identify(rec, &img, &b, &res);
  */
 #ifndef RL_GLOBAL_H
 #define RL_GLOBAL_H

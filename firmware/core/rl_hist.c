@@ -92,18 +92,12 @@ static void kmeans_dp(const double *cnt, const double *sum, const double *sq, in
 /* Grey levels per coarse bin for the first, exact-on-groups pass. */
 #define COARSE 4
 
-rl_err rl_hist_kmeans(const rl_hist *h, int lo, int hi, int k, double *centres, int *start)
+/* 1. The exact optimum over groups of COARSE grey levels (COARSE^2 times
+ * less work than over single levels): its boundaries into bound. */
+static void coarse_bounds(const rl_hist *h, int lo, int hi, int k, int *bound)
 {
     double cnt[257], sum[257], sq[257];
-    int occupied = 0, i, m, n = hi - lo, nc, b[4], bound[4], iter;
-    if (h == NULL || centres == NULL || k < 1 || k > 3 || lo < 0 || hi > 256 || n < 1)
-        return RL_EINVAL;
-    for (i = lo; i < hi; i++)
-        occupied += h->bin[i] != 0;
-    if (occupied < k)
-        return RL_ERANGE;
-    /* 1. the exact optimum over groups of COARSE grey levels (16 times
-     *    less work than over single levels) ... */
+    int i, m, n = hi - lo, nc, b[4];
     nc = (n + COARSE - 1) / COARSE;
     cnt[0] = sum[0] = sq[0] = 0.0;
     for (i = 0; i < nc; i++) {
@@ -121,9 +115,14 @@ rl_err rl_hist_kmeans(const rl_hist *h, int lo, int hi, int k, double *centres, 
     kmeans_dp(cnt, sum, sq, nc, k, b);
     for (m = 0; m <= k; m++)
         bound[m] = lo + b[m] * COARSE < hi ? lo + b[m] * COARSE : hi;
-    /* 2. ... then Lloyd's iterations on single levels from there: each
-     *    boundary moves to the midpoint of its neighbouring centres until
-     *    nothing changes, a fixed point of K-means next to the optimum. */
+}
+
+/* 2. Lloyd's iterations on single levels from there: each boundary moves
+ * to the midpoint of its neighbouring centres until nothing changes, a
+ * fixed point of K-means next to the optimum. */
+static void lloyd(const rl_hist *h, int k, int *bound, double *centres)
+{
+    int i, m, iter;
     for (iter = 0; iter < 64; iter++) {
         int changed = 0;
         for (m = 0; m < k; m++) {
@@ -149,10 +148,15 @@ rl_err rl_hist_kmeans(const rl_hist *h, int lo, int hi, int k, double *centres, 
         if (!changed)
             break;
     }
-    /* 3. Lloyd can stop next to the optimum: move each boundary within two
-     *    coarse bins while the exact squared error falls (prefix sums over
-     *    single levels make each try O(1)). The optimum over single levels
-     *    lies within a coarse bin of the optimum over groups. */
+}
+
+/* 3. Lloyd can stop next to the optimum: each boundary moves within two
+ * coarse bins while the exact squared error falls (prefix sums over
+ * single levels make each try O(1)); the optimum over single levels lies
+ * within a coarse bin of the optimum over groups. The centres follow. */
+static void polish(const rl_hist *h, int lo, int hi, int k, int *bound, double *centres)
+{
+    int i, m, n = hi - lo;
     {
         double pc[257], ps[257], pq[257];
         int moved = 1, guard = 0;
@@ -194,6 +198,20 @@ rl_err rl_hist_kmeans(const rl_hist *h, int lo, int hi, int k, double *centres, 
                                : 0.5 * (bound[m] + bound[m + 1] - 1);
         }
     }
+}
+
+rl_err rl_hist_kmeans(const rl_hist *h, int lo, int hi, int k, double *centres, int *start)
+{
+    int occupied = 0, i, m, n = hi - lo, bound[4];
+    if (h == NULL || centres == NULL || k < 1 || k > 3 || lo < 0 || hi > 256 || n < 1)
+        return RL_EINVAL;
+    for (i = lo; i < hi; i++)
+        occupied += h->bin[i] != 0;
+    if (occupied < k)
+        return RL_ERANGE;
+    coarse_bounds(h, lo, hi, k, bound);
+    lloyd(h, k, bound, centres);
+    polish(h, lo, hi, k, bound, centres);
     for (m = 0; m < k && start; m++)
         start[m] = bound[m];
     return RL_OK;

@@ -6,16 +6,17 @@
  * the remaining intensities gives the foreground (dark ROI) and background
  * levels and the threshold between them (internal). Intensity is one-
  * dimensional, so K-means runs on the 256 bins instead of the pixels: the
- * exact optimum over groups of 16 grey levels by dynamic programming, then
+ * exact optimum over groups of 4 grey levels by dynamic programming, then
  * Lloyd's iterations on single levels from there, then each boundary moved
- * within two levels while that lowers the error: a local optimum next to
+ * within two groups while that lowers the error: a local optimum next to
  * the coarse global one, in microseconds (tests/test_oracles.cpp compares
  * it with OpenCV's K-means on the pixels).
  *
  *   rl_hist h;
- *   rl_hist_compute(&img, &h);
  *   rl_levels lv;
- *   rl_hist_levels(&h, &lv);   // lv.threshold: dark is < threshold
+ *   rl_hist_compute(&img, &h);
+ *   if (rl_hist_levels(&h, &lv) == RL_OK)
+ *       use(lv.threshold);     // dark is < threshold
  */
 #ifndef RL_HIST_H
 #define RL_HIST_H

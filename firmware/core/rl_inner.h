@@ -10,7 +10,7 @@
  * mean the candidate sits inside a larger landmark.
  *
  *   if (rl_inner_possible(&res, &d) && rl_inner_enclosed(&img, light, d.u, d.v, d.radius))
- *       ...   // not a landmark
+ *       d.id = -1;   // not a landmark
  */
 #ifndef RL_INNER_H
 #define RL_INNER_H

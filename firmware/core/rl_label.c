@@ -103,17 +103,12 @@ static void unite(int32_t *p, int32_t a, int32_t b)
         p[a] = b;
 }
 
-rl_err rl_label_band(rl_label *lb, const rl_image *img, int lo, int hi, int min_area)
+/* The runs of pixels in [lo, hi), row by row, joined with the previous
+ * row's runs they touch (8-connected). RL_ELIMIT past cap_runs. */
+static rl_err collect_runs(rl_label *lb, const rl_image *img, int lo, int hi)
 {
-    int x, y, r, n = 0, prev_start = 0, prev_end = 0;
+    int x, y, n = 0, prev_start = 0, prev_end = 0;
     int32_t *p = lb->tag;
-    if (!rl_image_valid(img) || img->width > 65535 || img->height > lb->max_height)
-        return RL_EINVAL;
-    lb->width = img->width;
-    lb->height = img->height;
-    lb->n_runs = lb->n_regions = lb->overflow = 0;
-    if (lo < 0)
-        lo = 0;
     for (y = 0; y < img->height; y++) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
         int start = n, j = prev_start;
@@ -151,7 +146,14 @@ rl_err rl_label_band(rl_label *lb, const rl_image *img, int lo, int hi, int min_
     }
     lb->row[img->height] = n;
     lb->n_runs = n;
+    return RL_OK;
+}
 
+/* Runs into regions (specks, and regions past cap_regions, dropped). */
+static void resolve_regions(rl_label *lb, int min_area)
+{
+    int r, n = lb->n_runs;
+    int32_t *p = lb->tag;
     /* The tag array goes through four meanings, one linear pass each; the
      * root of a region is its first run in raster order (see unite), so a
      * root is always visited before its members:
@@ -192,7 +194,14 @@ rl_err rl_label_band(rl_label *lb, const rl_image *img, int lo, int hi, int min_
     }
     for (r = 0; r < n; r++)
         p[r] = p[r] <= -2 ? -2 - p[r] : -1;
-    for (y = 0; y < img->height; y++)
+}
+
+/* Area, box and coordinate sums of every region. */
+static void region_stats(rl_label *lb)
+{
+    int32_t *p = lb->tag;
+    int y, r;
+    for (y = 0; y < lb->height; y++)
         for (r = lb->row[y]; r < lb->row[y + 1]; r++) {
             rl_region *g;
             int len;
@@ -208,5 +217,19 @@ rl_err rl_label_band(rl_label *lb, const rl_image *img, int lo, int hi, int min_
             g->sx += 0.5 * (double)(lb->x0[r] + lb->x1[r]) * len;
             g->sy += (double)y * len;
         }
+}
+
+rl_err rl_label_band(rl_label *lb, const rl_image *img, int lo, int hi, int min_area)
+{
+    rl_err e;
+    if (!rl_image_valid(img) || img->width > 65535 || img->height > lb->max_height)
+        return RL_EINVAL;
+    lb->width = img->width;
+    lb->height = img->height;
+    lb->n_runs = lb->n_regions = lb->overflow = 0;
+    if ((e = collect_runs(lb, img, lo < 0 ? 0 : lo, hi)) != RL_OK)
+        return e;
+    resolve_regions(lb, min_area);
+    region_stats(lb);
     return RL_OK;
 }

@@ -6,10 +6,11 @@
  * has far fewer runs than pixels. Regions smaller than min_area (specks)
  * are dropped. Every array lives in the caller's workspace.
  *
- *   rl_label lb;
- *   if (rl_label_init(&lb, &ws, w, h, max_runs, RL_MAX_REGIONS) == RL_OK &&
- *       rl_label_band(&lb, &img, 0, threshold, 3) == RL_OK)
- *       for (i = 0; i < lb.n_regions; i++) use(&lb.reg[i]);   // lb.overflow: dropped
+ *   rl_label labels;
+ *   if (rl_label_init(&labels, &ws, img.width, img.height, 40000, RL_MAX_REGIONS) == RL_OK &&
+ *       rl_label_band(&labels, &img, 0, 90, 3) == RL_OK)
+ *       for (i = 0; i < labels.n_regions; i++)
+ *           use(labels.reg[i].area, labels.overflow);    // overflow: regions dropped
  */
 #ifndef RL_LABEL_H
 #define RL_LABEL_H

@@ -5,7 +5,7 @@
  * other row finds them at half the cost.
  *
  *   if (rl_light_find(&lb, &img, res.levels.light, 3, &res) == RL_OK)
- *       ...  // res.lights[0 .. res.n_lights)
+ *       use(res.n_lights, res.lights, res.dropped.lights);
  */
 #ifndef RL_LIGHT_H
 #define RL_LIGHT_H

@@ -11,6 +11,7 @@
  * into candidates by then.
  *
  *   rl_local_pass(rec, &img, &res);   // after the global pass
+ *   use(res.local_tried, res.local_found);
  */
 #ifndef RL_LOCAL_H
 #define RL_LOCAL_H

@@ -9,8 +9,8 @@
  * binary image is needed; the fitted gain is reported as the contrast.
  *
  *   rl_match m;
+ *   static rl_match_list ls;
  *   rl_match_all(&tt, &p, &m);                      // m.id, m.score, m.second
- *   rl_match_list ls;
  *   rl_match_list_make(&tt, ids, 3, m.blur, &ls);   // a short list, made once
  *   rl_match_list_score(&ls, &p, &m);               // scored for many profiles
  */

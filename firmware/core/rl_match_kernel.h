@@ -3,9 +3,8 @@
  *
  * For the RL_MATCH_BLOCK columns starting at t (bin k's values at
  * t + k * stride) and a profile's per-bin counts fn and darkness sums fs,
- * each column c gets
- *   st[c]  = sum_k fn[k] t[k][c],   stt[c] = sum_k fn[k] t[k][c]^2,
- *   sxt[c] = sum_k fs[k] t[k][c],
+ * each column c gets st[c] = sum_k fn[k] t[k][c], stt[c] = sum_k fn[k]
+ * t[k][c]^2 and sxt[c] = sum_k fs[k] t[k][c],
  * added bin by bin in order, in single precision (64 bins lose no more than
  * 1e-5 of a correlation). Two builds of the same loop: plain C, and 4-lane
  * vectors kept in registers (the GCC/Clang vector extension: SSE, NEON).
@@ -13,6 +12,7 @@
  * bits; RL_NO_VECTOR_EXT selects the plain one, and CI runs the test
  * suite with each.
  *
+ *   float fn[RL_PROFILE_BINS] = {0}, fs[RL_PROFILE_BINS] = {0};
  *   float st[RL_MATCH_BLOCK], stt[RL_MATCH_BLOCK], sxt[RL_MATCH_BLOCK];
  *   rl_match_kernel(tt.table, (size_t)tt.stride, fn, fs, st, stt, sxt);
  */

@@ -4,7 +4,9 @@
  *   double c[16], s[16];
  *   float g[40];
  *   rl_ray_dirs(16, c, s);
- *   if (rl_ray_sample(&img, x, y, 0.25 * c[0], 0.25 * s[0], 40, light, g)) ...
+ *   if (rl_ray_inside(&img, cx, cy, cx + 10 * c[0], cy + 10 * s[0]) &&
+ *       rl_ray_sample(&img, cx, cy, 0.25 * c[0], 0.25 * s[0], 40, light, g))
+ *       use(g[0], g[39]);
  */
 #ifndef RL_RAY_H
 #define RL_RAY_H

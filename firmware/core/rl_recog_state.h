@@ -4,6 +4,10 @@
  * It lives at the start of the caller's block; every array it points to
  * follows it in the same block, carved by the one layout sequence that
  * rl_recog_workspace_size also runs.
+ *
+ *   const struct rl_recog *rec = NULL;
+ *   if (rec != NULL)
+ *       use(rec->width, rec->templates.n, rec->dark.n_regions);
  */
 #ifndef RL_RECOG_STATE_H
 #define RL_RECOG_STATE_H

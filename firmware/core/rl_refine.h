@@ -1,7 +1,7 @@
 /* rl_refine: a CLR's centre and outer radius from the grey levels, before
  * global identification (internal).
  *
- *   rl_refine_centre(&img, &res.levels, &d.u, &d.v, d.radius);
+ *   rl_refine_centre(&img, &res.levels, &d.u, &d.v, d.radius);   // d: a CLR
  *   rl_refine_radius(&img, d.u, d.v, &d.radius);
  */
 #ifndef RL_REFINE_H

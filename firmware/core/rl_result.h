@@ -2,7 +2,8 @@
  * What does not fit is counted in res->dropped, never cut silently.
  *
  *   rl_result_clear(&res, 640, 480);
- *   rl_result_add_landmark(&res, &d);       // or counted in res.dropped.landmarks
+ *   if (!rl_result_add_landmark(&res, &d))
+ *       use(res.dropped.landmarks);      // it did not fit, and is counted
  */
 #ifndef RL_RESULT_H
 #define RL_RESULT_H

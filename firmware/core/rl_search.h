@@ -13,7 +13,9 @@
  * ends, else a finer cross follows the same way. Every id at every blur
  * is scored at the end.
  *
+ *   rl_match m;
  *   rl_search_identify(&tt, pol, &img, light, &cx, &cy, &r, &m);
+ *   use(m.id, cx, cy, r);
  */
 #ifndef RL_SEARCH_H
 #define RL_SEARCH_H

@@ -10,7 +10,8 @@
  *
  *   uint8_t px[48 * 48];
  *   rl_image t = rl_image_view(48, 48, 48, px);
- *   rl_tmpl_square(&fam, 25, NULL, &t, NULL);  // whole landmark fills t
+ *   if (rl_tmpl_square(&fam, 25, NULL, &t, NULL) == RL_OK)   // the landmark fills t
+ *       use(px[24 * 48 + 24]);
  */
 #ifndef RL_TEMPLATE_H
 #define RL_TEMPLATE_H

@@ -9,9 +9,9 @@
  * to whole blocks of RL_MATCH_BLOCK columns, so the matcher walks the
  * profile once and updates a block of columns together.
  *
- *   rl_templates tt;
- *   if (rl_templates_init(&tt, &ws, &fam, NULL, 0) == RL_OK)   // every id
- *       v = rl_templates_bin(&tt, 0, 2, 10);                   // id tt.ids[0], blur 2, bin 10
+ *   rl_templates t;
+ *   if (rl_templates_init(&t, &ws, &fam, NULL, 0) == RL_OK)    // every id
+ *       use(rl_templates_bin(&t, 0, 2, 10));                   // id t.ids[0], blur 2, bin 10
  */
 #ifndef RL_TEMPLATES_H
 #define RL_TEMPLATES_H

@@ -2,7 +2,12 @@
  *
  * Each can be overridden with -D at build time (a board's defaults file is
  * the place for that). Each bounds a fixed-size array somewhere in the
- * core; exceeding one is reported as RL_ELIMIT, never overrun.
+ * core; what a limit leaves out of a frame is counted in rl_result.dropped
+ * (or, for the labeller's runs, reported as RL_ELIMIT), never overrun and
+ * never cut silently.
+ *
+ *   static rl_detection kept[RL_MAX_LANDMARKS];   // room for every landmark of a frame
+ *   use(kept, RL_MAX_MAP_LANDMARKS);
  */
 #ifndef RL_CONFIG_H
 #define RL_CONFIG_H

@@ -3,8 +3,10 @@
  * Every function that can fail returns rl_err (0 = success, negative =
  * error) and is marked RL_CHECK so that an ignored result warns.
  *
- *   rl_err e = rl_ws_alloc(...);
- *   if (e != RL_OK) fprintf(stderr, "ringloc: %s\n", rl_strerror(e));
+ *   void *buf;
+ *   rl_err e = rl_ws_alloc(&ws, 4096, RL_WS_ALIGN, &buf);
+ *   if (e != RL_OK)
+ *       fprintf(stderr, "ringloc: %s\n", rl_strerror(e));
  */
 #ifndef RL_ERROR_H
 #define RL_ERROR_H

@@ -9,7 +9,8 @@
  *   rl_family fam;
  *   char code[RL_MAX_BITS + 1];
  *   if (rl_family_parse("ring5", &fam) == RL_OK &&
- *       rl_family_code(&fam, 25, code, sizeof code) == RL_OK)  // "11001"
+ *       rl_family_code(&fam, 25, code, sizeof code) == RL_OK)
+ *       use(code);                                            // "11001"
  */
 #ifndef RL_FAMILY_H
 #define RL_FAMILY_H

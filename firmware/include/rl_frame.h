@@ -16,9 +16,17 @@
  *   u8 0.
  *
  *   uint8_t buf[RL_FRAME_MAX];
- *   size_t n = rl_frame_pose(&pose_msg, buf);      // bytes to send
- *   rl_decoder d; rl_decoder_init(&d);
- *   for each byte b: if (rl_decoder_push(&d, b, &msg)) use(&msg);
+ *   rl_msg pose, got;
+ *   rl_decoder dec;
+ *   size_t k, len;
+ *   memset(&pose, 0, sizeof pose);
+ *   pose.type = RL_FRAME_POSE;
+ *   pose.x_mm = 1500;
+ *   len = rl_frame_encode(&pose, buf);             // bytes to send
+ *   rl_decoder_init(&dec);
+ *   for (k = 0; k < len; k++)                      // bytes as they arrive
+ *       if (rl_decoder_push(&dec, buf[k], &got))
+ *           use(got.type, got.x_mm);
  */
 #ifndef RL_FRAME_H
 #define RL_FRAME_H
@@ -62,7 +70,9 @@ typedef struct {
 uint16_t rl_frame_checksum(const uint8_t *p, size_t n);
 
 /* Encode a message into buf (RL_FRAME_MAX bytes); returns the frame's
- * length. Values out of a field's range are clamped. */
+ * length. The fields already have the wire's integer types, so they are
+ * written as they are: whoever fills them from real values clamps into
+ * range (rl_run.c does for poses). */
 size_t rl_frame_encode(const rl_msg *m, uint8_t *buf);
 
 /* A byte-at-a-time decoder that never allocates and resynchronises after

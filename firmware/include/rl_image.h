@@ -4,9 +4,11 @@
  * `stride` bytes apart (stride >= width), and every function honours it,
  * so a view can be a window into a larger frame or a camera buffer.
  *
- *   rl_image img = rl_image_view(w, h, stride, camera_buffer);
+ *   static uint8_t camera_buffer[480 * 672];      // rows padded to 672 bytes
+ *   rl_image view = rl_image_view(640, 480, 672, camera_buffer);
  *   rl_image roi;
- *   if (rl_image_sub(&img, x, y, 64, 64, &roi) == RL_OK) ...
+ *   if (rl_image_sub(&view, 100, 50, 64, 64, &roi) == RL_OK)
+ *       use(roi.data[0], roi.stride);              // 672: a window keeps the stride
  */
 #ifndef RL_IMAGE_H
 #define RL_IMAGE_H

@@ -11,10 +11,15 @@
  * are checked against the map and landmarks that disagree (a wrong id, a
  * landmark moved since the map was made) are dropped and reported.
  *
+ *   rl_mount mount;
  *   rl_pose pose;
- *   rl_err e = rl_pose_solve(&cam, &map, &mount, res.landmarks, res.n_landmarks, NULL, &pose);
- *   if (e == RL_OK) use(pose.x, pose.y, pose.yaw);
- *   else if (e == RL_ETOOFEW) ...          // fewer than two usable landmarks
+ *   rl_err e;
+ *   rl_mount_defaults(&mount, 0.88);       // camera 0.88 m above the floor
+ *   e = rl_pose_solve(&cam, &map, &mount, res.landmarks, res.n_landmarks, NULL, &pose);
+ *   if (e == RL_OK)
+ *       use(pose.x, pose.y, pose.yaw);
+ *   else if (e == RL_ETOOFEW)
+ *       use(res.n_landmarks);              // fewer than two usable landmarks
  */
 #ifndef RL_POSE_H
 #define RL_POSE_H

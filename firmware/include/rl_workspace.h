@@ -3,7 +3,7 @@
  * The recognition core never allocates. The caller hands it one block; the
  * core carves it into slices with rl_ws_alloc and gives them all back at
  * once with rl_ws_reset (stack discipline: a mark taken before a step can
- * be restored after it). A workspace built with rl_ws_init_sizing(NULL)
+ * be restored after it). A workspace made with rl_ws_init_sizing
  * hands out no memory but counts what would be needed, so that a size
  * function can run the same allocation sequence it will use for real.
  *
@@ -11,7 +11,8 @@
  *   rl_ws ws;
  *   rl_ws_init(&ws, mem, sizeof mem);
  *   int32_t *buf;
- *   if (rl_ws_alloc(&ws, 100 * sizeof *buf, RL_WS_ALIGN, (void **)&buf)) ...
+ *   if (rl_ws_alloc(&ws, 100 * sizeof *buf, RL_WS_ALIGN, (void **)&buf) == RL_OK)
+ *       buf[99] = 1;
  */
 #ifndef RL_WORKSPACE_H
 #define RL_WORKSPACE_H

@@ -5,9 +5,14 @@
  *   cols, data}, distortion_model (plumb_bob: 5 coefficients,
  *   rational_polynomial: 8), distortion_coefficients {data};
  * - OpenCV FileStorage YAML ("%YAML:1.0", camera_matrix and
- *   distortion_coefficients as !!opencv-matrix, image_width/height
- *   optional).
+ *   distortion_coefficients as !!opencv-matrix; image_width and
+ *   image_height are required there too).
  * Errors name the file, line and key (wrong matrix sizes, missing keys).
+ *
+ *   rl_camera calib;
+ *   char err[256];
+ *   if (rl_camfile_load("camera.yaml", &calib, err, sizeof err) != RL_OK)
+ *       fprintf(stderr, "ringloc: %s\n", err);   // "camera.yaml:4: camera_matrix: ..."
  */
 #ifndef RL_CAMFILE_H
 #define RL_CAMFILE_H

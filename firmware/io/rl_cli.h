@@ -6,9 +6,9 @@
  * "ringloc <command>: " (or the program set by rl_cli_set_program) and
  * names the file or option at fault.
  *
- *   int n;
- *   if (!rl_cli_int("detect", "--frames", "12", &n))
- *       return RL_EXIT_USAGE;              // the error line is printed
+ *   int frames;
+ *   if (!rl_cli_int("run", "--frames", "12", &frames))
+ *       use(RL_EXIT_USAGE);                // the error line is printed
  */
 #ifndef RL_CLI_H
 #define RL_CLI_H

@@ -8,6 +8,11 @@
  *
  * Errors name the file, line and key: missing keys, non-numbers, ids
  * outside the family, duplicate ids, too many landmarks.
+ *
+ *   rl_map site;
+ *   char err[256];
+ *   if (rl_mapfile_load("map.yaml", &site, err, sizeof err) == RL_OK)
+ *       use(site.count, site.lm[0].id);
  */
 #ifndef RL_MAPFILE_H
 #define RL_MAPFILE_H

@@ -6,6 +6,11 @@
  *   distance: 1.870                      # camera to ceiling at calibration, m
  *   forward: [c0, c1, ...]               # forward offset = sum c_i t_i(u, v)
  *   left: [c0, c1, ...]
+ *
+ *   rl_offsets o;
+ *   char err[256];
+ *   if (rl_offsetsfile_load("offsets.yaml", &o, err, sizeof err) == RL_OK)
+ *       use(o.degree);
  */
 #ifndef RL_OFFSETSFILE_H
 #define RL_OFFSETSFILE_H

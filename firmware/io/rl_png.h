@@ -10,8 +10,9 @@
  *   char err[256];
  *   if (rl_png_read_gray("a.png", &img, err, sizeof err) != RL_OK) {
  *       fprintf(stderr, "ringloc: %s\n", err);  // "a.png: not a PNG file"
+ *       return;
  *   }
- *   ...
+ *   use(img.width, img.height);
  *   rl_png_free(&img);
  */
 #ifndef RL_PNG_H

@@ -4,6 +4,11 @@
  *
  * The camera's optical centre in the robot frame; z above the floor. x, y
  * and yaw default to 0 (the spec's mounting); z is required.
+ *
+ *   rl_mount mount;
+ *   char err[256];
+ *   if (rl_robotfile_load("robot.yaml", &mount, err, sizeof err) == RL_OK)
+ *       use(mount.z);
  */
 #ifndef RL_ROBOTFILE_H
 #define RL_ROBOTFILE_H

@@ -21,6 +21,11 @@
  *   log_interval: 5          # seconds between repeats of one kind of log line
  *
  * Relative paths are relative to the configuration file's folder.
+ *
+ *   static rl_runcfg rc;
+ *   char err[768];
+ *   if (rl_runcfg_load("/etc/ringloc/ringloc.yaml", &rc, err, sizeof err) == RL_OK)
+ *       use(rc.cam_backend, rc.map, rc.baud);
  */
 #ifndef RL_RUNCFG_H
 #define RL_RUNCFG_H

@@ -4,10 +4,14 @@
  * line: "map.yaml:7: landmarks[2].id: expected an integer, got 'x'".
  *
  *   rl_yaml doc;
- *   if (rl_yaml_load(&doc, "map.yaml", err, sizeof err) != RL_OK) ...
- *   yaml_node_t *root = rl_yaml_root(&doc);
- *   double d;
- *   if (rl_yaml_double(&doc, root, "diameter", 1, &d, err, sizeof err) ...
+ *   yaml_node_t *root;
+ *   double diameter;
+ *   char err[256];
+ *   if (rl_yaml_load(&doc, "map.yaml", err, sizeof err) != RL_OK)
+ *       return;                               // err says why, naming the file
+ *   root = rl_yaml_root(&doc);
+ *   if (rl_yaml_double(&doc, root, "diameter", NULL, 1, &diameter, err, sizeof err) == RL_OK)
+ *       use(diameter);
  *   rl_yaml_free(&doc);
  */
 #ifndef RL_YAML_H

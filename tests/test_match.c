@@ -1,0 +1,122 @@
+/* The matcher: its two kernels (plain C, 4-lane vectors) give the same
+ * bits on arbitrary data, and the block-wise Pearson scores agree with a
+ * direct double-precision correlation over the bins (an oracle written
+ * here from the formula, not from the matcher). */
+#include "rl_test.h"
+#include <math.h>
+#include "rl_match.h"
+#include "rl_match_kernel.h"
+
+static unsigned long rng = 12345;
+static double uniform(void)
+{
+    rng = rng * 6364136223846793005ul + 1442695040888963407ul;
+    return (double)(rng >> 11) / 9007199254740992.0;
+}
+
+static void test_kernels_agree_bit_for_bit(void **state)
+{
+#ifdef RL_HAVE_MATCH_KERNEL_V4
+    static float t[RL_PROFILE_BINS * 24];
+    float fn[RL_PROFILE_BINS], fs[RL_PROFILE_BINS];
+    int trial, k, c;
+    (void)state;
+    for (trial = 0; trial < 200; trial++) {
+        float a[3][RL_MATCH_BLOCK], b[3][RL_MATCH_BLOCK];
+        for (k = 0; k < RL_PROFILE_BINS * 24; k++)
+            t[k] = (float)uniform();
+        for (k = 0; k < RL_PROFILE_BINS; k++) {
+            fn[k] = uniform() < 0.2 ? 0.0f : (float)(uniform() * 300); /* empty bins too */
+            fs[k] = fn[k] * (float)(uniform() * 255);
+        }
+        rl_match_kernel_plain(t + 8, 24, fn, fs, a[0], a[1], a[2]);
+        rl_match_kernel_v4(t + 8, 24, fn, fs, b[0], b[1], b[2]);
+        for (k = 0; k < 3; k++)
+            for (c = 0; c < RL_MATCH_BLOCK; c++)
+                assert_memory_equal(&a[k][c], &b[k][c], sizeof(float));
+    }
+#else
+    (void)state;
+    skip(); /* no vector extension in this compiler: only the plain kernel exists */
+#endif
+}
+
+/* Pearson's r over bins in double precision: n_k pixels of mean darkness
+ * sx_k / n_k against template value t_k, with the profile's own sxx. */
+static double direct_r(const rl_profile *p, const rl_templates *tt, int i, int b)
+{
+    double n = 0, sx = 0, st = 0, stt = 0, sxt = 0;
+    int k;
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        double tv = rl_templates_bin(tt, i, b, k);
+        n += p->n[k];
+        sx += p->sx[k];
+        st += p->n[k] * tv;
+        stt += p->n[k] * tv * tv;
+        sxt += p->sx[k] * tv;
+    }
+    return (n * sxt - sx * st) / sqrt((n * p->sxx - sx * sx) * (n * stt - st * st));
+}
+
+static void test_scores_match_a_direct_correlation(void **state)
+{
+    static unsigned char mem[1 << 16];
+    rl_family fam = {5};
+    rl_templates tt;
+    rl_ws ws;
+    int trial;
+    (void)state;
+    rl_ws_init(&ws, mem, sizeof mem);
+    assert_int_equal(rl_templates_init(&tt, &ws, &fam, NULL, 0), RL_OK);
+    for (trial = 0; trial < 100; trial++) {
+        /* a noisy profile of a random id at a random blur */
+        int i = (int)(uniform() * tt.n), b = (int)(uniform() * RL_BLUR_LEVELS), k, j;
+        double best = -2, second = -2;
+        int best_id = -1;
+        rl_profile p;
+        rl_match m, ml;
+        memset(&p, 0, sizeof p);
+        for (k = 0; k < RL_PROFILE_BINS; k++) {
+            double n = 20 + 10 * k, v = 40 + 180 * rl_templates_bin(&tt, i, b, k) + 30 * (uniform() - 0.5);
+            p.n[k] = n;
+            p.sx[k] = n * v;
+            p.sxx += n * v * v + n * 25.0; /* some spread within the bin */
+            p.total += n;
+        }
+        rl_match_all(&tt, &p, &m);
+        for (j = 0; j < tt.n; j++)
+            for (k = 0; k < RL_BLUR_LEVELS; k++) {
+                double r = direct_r(&p, &tt, j, k);
+                if (r > best) {
+                    if (tt.ids[j] != best_id)
+                        second = best;
+                    best = r;
+                    best_id = tt.ids[j];
+                } else if (r > second && tt.ids[j] != best_id) {
+                    second = r;
+                }
+            }
+        assert_int_equal(m.id, best_id);
+        assert_true(fabs(m.score - best) < 1e-4);
+        assert_true(fabs(m.second - second) < 1e-4);
+        /* a short list of the true id and two others scores the same */
+        {
+            int ids[3] = {tt.ids[i], tt.ids[(i + 1) % tt.n], tt.ids[(i + 7) % tt.n]};
+            rl_match_list ls;
+            rl_match_list_make(&tt, ids, 3, m.blur, &ls);
+            rl_match_list_score(&ls, &p, &ml);
+            if (m.id == ids[0])
+                assert_true(fabs(ml.score - m.score) < 1e-6);
+            assert_true(fabs(ml.score - direct_r(&p, &tt, rl_templates_find(&tt, ml.id), m.blur)) < 1e-4);
+        }
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_kernels_agree_bit_for_bit),
+        cmocka_unit_test(test_scores_match_a_direct_correlation),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
