@@ -3,7 +3,8 @@
 #
 #   make host            build the host binaries into build/
 #   make host-test       build and run every test (CTest)
-#   make host-test-asan  the same tests under AddressSanitizer + UBSan (build-asan/)
+#   make host-test-asan  the same tests under AddressSanitizer + UBSan (build-asan/),
+#                        with the plain-C matcher (RL_NO_VECTOR_EXT) instead of the vector one
 #   make demo            the firmware on a bundled drive: poses over a pty, report
 #   make bench           recognition benchmarks (figures, not pass/fail)
 #   make cross BOARD=rpi4                 cross build for a board, tests under qemu
@@ -58,7 +59,8 @@ host-test: host
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 $(BUILD_ASAN)/CMakeCache.txt: | deps
-	cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=Debug -DRL_SANITIZE=ON -DRL_FIXTURE_COUNT=12 $(CMAKE_ARGS)
+	cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=Debug -DRL_SANITIZE=ON -DRL_NO_VECTOR_EXT=ON \
+	  -DRL_FIXTURE_COUNT=12 $(CMAKE_ARGS)
 
 host-test-asan: deps $(BUILD_ASAN)/CMakeCache.txt
 	cmake --build $(BUILD_ASAN) -j $(JOBS)

@@ -16,23 +16,39 @@ string(REPLACE "/" "-" RL_SERIAL_UNIT "${RL_SERIAL_UNIT}")
 set(RL_SERIAL_UNIT "${RL_SERIAL_UNIT}.device")
 configure_file(${CMAKE_CURRENT_LIST_DIR}/ringloc.service.in ${CMAKE_BINARY_DIR}/package/ringloc.service @ONLY)
 
-install(TARGETS ringloc RUNTIME DESTINATION bin)
-install(FILES ${CMAKE_BINARY_DIR}/package/ringloc.yaml DESTINATION /etc/ringloc)
-install(FILES ${CMAKE_BINARY_DIR}/package/ringloc.service DESTINATION /lib/systemd/system)
+# Two packages: `ringloc`, what the robot's computer runs (ringloc-fw, its
+# configuration and unit: libpng and libyaml only), and `ringloc-tools`,
+# the desktop command line (gen, plan, detect, locate, monitor: cairo too).
+install(TARGETS ringloc-fw RUNTIME DESTINATION bin COMPONENT firmware)
+install(FILES ${CMAKE_BINARY_DIR}/package/ringloc.yaml DESTINATION /etc/ringloc COMPONENT firmware)
+install(FILES ${CMAKE_BINARY_DIR}/package/ringloc.service DESTINATION /lib/systemd/system
+        COMPONENT firmware)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/../shared/landmark-spec.md
-        DESTINATION share/doc/ringloc OPTIONAL)
+        DESTINATION share/doc/ringloc OPTIONAL COMPONENT firmware)
+install(TARGETS ringloc RUNTIME DESTINATION bin COMPONENT tools)
 
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME ringloc)
+set(CPACK_DEB_COMPONENT_INSTALL ON)
+set(CPACK_COMPONENTS_ALL firmware tools)
+set(CPACK_DEBIAN_FIRMWARE_PACKAGE_NAME ringloc)
+set(CPACK_DEBIAN_TOOLS_PACKAGE_NAME ringloc-tools)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_PACKAGE_CONTACT "ringloc developers <ringloc@localhost>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "robot self-localization from ring-coded ceiling landmarks")
 set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE ${RL_DEB_ARCH})
 set(CPACK_DEBIAN_PACKAGE_SECTION misc)
-# the shared libraries the binary links (Debian bookworm / Raspberry Pi OS names)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "libc6 (>= 2.34), libpng16-16, libyaml-0-2, libcairo2")
+# the shared libraries each binary links (Debian bookworm / Raspberry Pi OS names)
+set(RL_FW_DEPENDS "libc6 (>= 2.34), libpng16-16, libyaml-0-2")
+if(LIBCAMERA_FOUND)
+  string(APPEND RL_FW_DEPENDS ", libstdc++6, libcamera0.0.3 | libcamera0.2 | libcamera0.3")
+endif()
+set(CPACK_DEBIAN_FIRMWARE_PACKAGE_DEPENDS "${RL_FW_DEPENDS}")
+set(CPACK_DEBIAN_TOOLS_PACKAGE_DEPENDS "libc6 (>= 2.34), libpng16-16, libyaml-0-2, libcairo2")
+set(CPACK_DEBIAN_FIRMWARE_DESCRIPTION "robot self-localization from ring-coded ceiling landmarks (firmware)")
+set(CPACK_DEBIAN_TOOLS_DESCRIPTION "ringloc desktop tools: print, plan, detect, locate, monitor")
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
-set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA
+set(CPACK_DEBIAN_FIRMWARE_PACKAGE_CONTROL_EXTRA
     "${CMAKE_CURRENT_LIST_DIR}/postinst;${CMAKE_CURRENT_LIST_DIR}/conffiles")
 include(CPack)

@@ -21,8 +21,10 @@ check "a ringloc_*_$ARCH.deb is built" test -f "$deb"
 dpkg-deb -f "$deb" >"$T/control"
 check "architecture is $ARCH" grep -qx "Architecture: $ARCH" "$T/control"
 check "dependencies declared" grep -qE '^Depends: .*libc6.*libpng16-16.*libyaml' "$T/control"
+check "the robot's package needs no cairo" sh -c "! grep -q cairo '$T/control'"
 dpkg-deb -c "$deb" >"$T/files"
-check "binary in /usr/bin" grep -q '\./usr/bin/ringloc$' "$T/files"
+check "firmware binary in /usr/bin" grep -q '\./usr/bin/ringloc-fw$' "$T/files"
+check "no desktop tools on the robot" sh -c "! grep -q '\./usr/bin/ringloc$' '$T/files'"
 check "default configuration" grep -q '\./etc/ringloc/ringloc.yaml$' "$T/files"
 check "systemd unit" grep -q '\./lib/systemd/system/ringloc.service$' "$T/files"
 check "docs" grep -q '\./usr/share/doc/ringloc/README.md$' "$T/files"
@@ -31,17 +33,25 @@ dpkg-deb -e "$deb" "$T/ctl"
 dpkg-deb -x "$deb" "$T/root"
 check "configuration is a conffile" grep -qx '/etc/ringloc/ringloc.yaml' "$T/ctl/conffiles"
 check "postinst enables the service" grep -q 'systemctl enable ringloc.service' "$T/ctl/postinst"
-check "binary is for $ARCH" sh -c "file '$T/root/usr/bin/ringloc' | grep -q '$( [ "$ARCH" = arm64 ] && echo aarch64 || echo x86-64 )'"
+check "binary is for $ARCH" sh -c "file '$T/root/usr/bin/ringloc-fw' | grep -q '$( [ "$ARCH" = arm64 ] && echo aarch64 || echo x86-64 )'"
+# what the firmware binary links: no cairo, no OpenCV (readelf reads any arch)
+readelf -d "$T/root/usr/bin/ringloc-fw" >"$T/needed" 2>&1
+check "ringloc-fw links libpng and libyaml" sh -c "grep -q 'libpng' '$T/needed' && grep -q 'libyaml' '$T/needed'"
+check "ringloc-fw links neither cairo nor OpenCV" sh -c "! grep -qiE 'cairo|opencv' '$T/needed'"
+tools=$(ls "$T"/out/ringloc-tools_*_"$ARCH".deb 2>/dev/null | head -1)
+check "a ringloc-tools_*_$ARCH.deb is built" test -f "$tools"
+check "the tools package has the ringloc command" sh -c "dpkg-deb -c '$tools' | grep -q '\./usr/bin/ringloc$'"
+check "the tools package declares cairo" sh -c "dpkg-deb -f '$tools' Depends | grep -q libcairo2"
 check "configuration names the board's serial device" grep -q "device: $SERIAL" "$T/root/etc/ringloc/ringloc.yaml"
 unit="$T/root/lib/systemd/system/ringloc.service"
 check "unit restarts on failure" grep -qx 'Restart=on-failure' "$unit"
 check "unit waits for the serial device" grep -q '^After=.*\.device' "$unit"
-check "unit runs the packaged configuration" grep -qx 'ExecStart=/usr/bin/ringloc run --config /etc/ringloc/ringloc.yaml' "$unit"
+check "unit runs the firmware on the packaged configuration" grep -qx 'ExecStart=/usr/bin/ringloc-fw --config /etc/ringloc/ringloc.yaml' "$unit"
 if command -v systemd-analyze >/dev/null 2>&1; then
     # verify the unit as packaged, but with ExecStart on the unpacked binary
-    # (this machine has no /usr/bin/ringloc installed)
+    # (this machine has no /usr/bin/ringloc-fw installed)
     mkdir -p "$T/verify"
-    sed "s|^ExecStart=/usr/bin/ringloc|ExecStart=$T/root/usr/bin/ringloc|" "$unit" >"$T/verify/ringloc.service"
+    sed "s|^ExecStart=/usr/bin/ringloc-fw|ExecStart=$T/root/usr/bin/ringloc-fw|" "$unit" >"$T/verify/ringloc.service"
     if systemd-analyze verify "$T/verify/ringloc.service" >"$T/verify.log" 2>&1 &&
        ! grep -qiE 'error|invalid|unknown' "$T/verify.log"; then
         pass=$((pass + 1))

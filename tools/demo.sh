@@ -4,7 +4,7 @@
 # A robot drives straight, around a rectangle and in a circle under a
 # ceiling of ring landmarks (the paper's set-up: 640x480 camera 1.87 m
 # below the ceiling, 0.21 m landmarks 0.61 m apart, a camera mounted off
-# the robot's centre). `ringloc run` plays the frames through its
+# the robot's centre). `ringloc-fw` (the robot's firmware) plays the frames through its
 # PNG-sequence camera and sends pose frames over a pseudo-terminal, as it
 # would over the serial line to the Pioneer; `ringloc monitor` decodes the
 # other end. Then a table per frame, a summary against the ground truth, an
@@ -15,6 +15,7 @@ B=${BUILD:-build}
 OUT=$B/demo
 DRIVE=$OUT/drive
 R=$B/host/ringloc
+FW=$B/firmware/app/ringloc-fw
 REN=$B/tools/ringloc-render
 MOUNT=0.12,-0.03,0.02
 
@@ -33,7 +34,7 @@ fi
 DRIVE=$(cd "$DRIVE" && pwd)
 (cd "$DRIVE" && ls straight_*.png && ls rect_*.png && ls circle_*.png) >"$DRIVE/frames.txt"
 cat >"$OUT/ringloc.yaml" <<CFG
-# ringloc run configuration for the demo (see README: Configuration)
+# the firmware's configuration for the demo (see README: Files)
 camera:
   backend: png
   device: $DRIVE/frames.txt
@@ -55,8 +56,8 @@ rm -f "$OUT/ttyRINGLOC" "$OUT/poses.jsonl"
 MON=$!
 i=0
 while [ ! -L "$OUT/ttyRINGLOC" ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
-echo "demo: ringloc run --config $OUT/ringloc.yaml  (pose frames -> $OUT/ttyRINGLOC -> ringloc monitor)"
-"$R" run --config "$OUT/ringloc.yaml"
+echo "demo: ringloc-fw --config $OUT/ringloc.yaml  (pose frames -> $OUT/ttyRINGLOC -> ringloc monitor)"
+"$FW" --config "$OUT/ringloc.yaml"
 i=0
 while kill -0 $MON 2>/dev/null && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 kill $MON 2>/dev/null || true

@@ -15,22 +15,27 @@ void rl_result_clear(rl_result *res, int W, int H)
     res->height = H;
 }
 
+/* 1 if a list holding n of cap has room; else the drop is counted. */
+static int room(int n, int cap, int *dropped)
+{
+    if (n < cap)
+        return 1;
+    (*dropped)++;
+    return 0;
+}
+
 int rl_result_add_landmark(rl_result *res, const rl_detection *d)
 {
-    if (res->n_landmarks == RL_MAX_LANDMARKS) {
-        res->dropped.landmarks++;
+    if (!room(res->n_landmarks, RL_MAX_LANDMARKS, &res->dropped.landmarks))
         return 0;
-    }
     res->landmarks[res->n_landmarks++] = *d;
     return 1;
 }
 
 int rl_result_add_unidentified(rl_result *res, const rl_detection *d)
 {
-    if (res->n_unidentified == RL_MAX_CANDIDATES) {
-        res->dropped.candidates++;
+    if (!room(res->n_unidentified, RL_MAX_CANDIDATES, &res->dropped.candidates))
         return 0;
-    }
     res->unidentified[res->n_unidentified] = *d;
     res->unidentified[res->n_unidentified++].id = -1;
     return 1;
@@ -38,10 +43,8 @@ int rl_result_add_unidentified(rl_result *res, const rl_detection *d)
 
 int rl_result_add_light(rl_result *res, const rl_box *b)
 {
-    if (res->n_lights == RL_MAX_LIGHTS) {
-        res->dropped.lights++;
+    if (!room(res->n_lights, RL_MAX_LIGHTS, &res->dropped.lights))
         return 0;
-    }
     res->lights[res->n_lights++] = *b;
     return 1;
 }
