@@ -143,6 +143,20 @@ void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, i
     rl_match_list ls;
     if (!match_start(p, &z, m))
         return;
+    if (n == 1 && blur < 0) {
+        /* one id at every blur: its columns are side by side in the table,
+         * scored in place when a whole block fits there */
+        int i = rl_templates_find(tt, ids[0]), c0 = i * RL_BLUR_LEVELS;
+        if (i >= 0 && c0 + RL_MATCH_BLOCK <= tt->stride) {
+            int idv[RL_BLUR_LEVELS], bv[RL_BLUR_LEVELS];
+            for (b = 0; b < RL_BLUR_LEVELS; b++) {
+                idv[b] = ids[0];
+                bv[b] = b;
+            }
+            score_block(tt->table + c0, (size_t)tt->stride, RL_BLUR_LEVELS, idv, bv, &z, m);
+            return;
+        }
+    }
     ls.n = 0;
     for (j = 0; j < n; j++) {
         int i = rl_templates_find(tt, ids[j]);

@@ -1,0 +1,22 @@
+#!/bin/sh
+# Dependencies run one way: nothing under hal/ or firmware/ includes a
+# header of host/, and the core includes none of hal/, firmware/io or
+# firmware/app.  Usage: check_layers.sh SOURCE_DIR
+src=${1:?usage: check_layers.sh SOURCE_DIR}
+status=0
+names() { ls "$@" 2>/dev/null | xargs -n1 basename | tr '\n' '|' | sed 's/|$//'; }
+forbid() { # what: folders, headers
+    what=$1; dirs=$2; headers=$3
+    if [ -n "$headers" ] && grep -rnE "#include \"($headers)\"" $dirs; then
+        echo "layers: $what"
+        status=1
+    fi
+}
+forbid "hal/ or firmware/ includes host/" "$src/hal $src/firmware" "$(names "$src"/host/*.h)"
+forbid "the core includes hal/ or firmware/io or firmware/app" "$src/firmware/core $src/firmware/include" \
+    "$(names "$src"/hal/*.h "$src"/firmware/io/*.h "$src"/firmware/app/*.h)"
+forbid "the I/O library includes hal/ or firmware/app" "$src/firmware/io" \
+    "$(names "$src"/hal/*.h "$src"/firmware/app/*.h)"
+forbid "the public API includes an internal header" "$src/firmware/include" "$(names "$src"/firmware/core/*.h)"
+[ $status -eq 0 ] && echo "layers: dependencies run one way"
+exit $status
