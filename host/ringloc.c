@@ -16,6 +16,7 @@ static const command commands[] = {
     {"monitor", rl_cmd_monitor, "decode pose and status frames (controller side)"},
     {"gen", rl_cmd_gen, "print-ready landmarks (PDF, SVG, PNG) for ids or a whole map"},
     {"plan", rl_cmd_plan, "choose family, diameter and grid pitch for a site; write a map"},
+    {"site-check", rl_cmd_sitecheck, "false landmarks and recognition rates on photos of your ceiling"},
     {"detect", rl_cmd_detect, "recognize landmarks in PNG images (JSON lines)"},
     {"locate", rl_cmd_locate, "the robot's pose from PNG images (JSON lines)"},
     {"calibrate-offsets", rl_cmd_calibrate, "fit the paper's pixel-to-offset maps from a known pose"},

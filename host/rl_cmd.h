@@ -13,5 +13,6 @@ int rl_cmd_locate(int argc, char **argv);
 int rl_cmd_calibrate(int argc, char **argv);
 int rl_cmd_run(int argc, char **argv);
 int rl_cmd_monitor(int argc, char **argv);
+int rl_cmd_sitecheck(int argc, char **argv);
 
 #endif

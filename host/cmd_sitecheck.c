@@ -1,0 +1,426 @@
+/* ringloc site-check: what ringloc will do on a site's own ceiling, from
+ * photos taken there with the robot's camera: the false landmarks it
+ * reports on them as they are, and the recognition rates when landmarks
+ * are placed into them the way printed sheets would look there. */
+#include <dirent.h>
+#include <getopt.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include "rl_annotate.h"
+#include "rl_camfile.h"
+#include "rl_cli.h"
+#include "rl_cmd.h"
+#include "rl_composite.h"
+#include "rl_mapfile.h"
+#include "rl_png.h"
+#include "rl_report.h"
+
+int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config *cfg,
+                        const char **family);
+
+static const char *help =
+    "usage: ringloc site-check [--family ring5] [--map MAP.yaml]\n"
+    "                          [--radius-px R | --camera CAM.yaml --diameter 0.21 --distance 1.87]\n"
+    "                          [--rounds 3] [--seed 1] [--local auto|always|never]\n"
+    "                          [--out DIR] [--json] PHOTO_DIR|PHOTO.png...\n\n"
+    "Take photos of your own ceiling with the robot's camera (PNG, no landmarks up\n"
+    "yet) and see what ringloc will do there:\n"
+    "  1. the false landmarks it reports on the photos as they are (smoke detectors,\n"
+    "     sprinklers, downlights...), per id;\n"
+    "  2. the rates at which it identifies landmarks of your family and size placed\n"
+    "     into the photos the way a printed sheet would look there (paper as bright\n"
+    "     as the ceiling around it, grey ink, perspective, glare next to lamps, lens\n"
+    "     blur, sensor noise): wholly inside the image, within one radius of a light,\n"
+    "     and cut by the image border (up to half outside);\n"
+    "  3. which ids to leave out of the map because the site's own objects look\n"
+    "     like them.\n\n"
+    "  --family NAME     landmark family (default ring5; the map's with --map)\n"
+    "  --map FILE        place and recognize only the map's ids\n"
+    "  --radius-px R     landmark radius in the image (default: from the camera,\n"
+    "                    diameter and distance; 25.7 px for the paper's set-up)\n"
+    "  --camera FILE     calibration of the robot's camera (focal length)\n"
+    "  --diameter M      printed outer diameter (default 0.21 m)\n"
+    "  --distance M      camera to ceiling (default 1.87 m)\n"
+    "  --rounds N        times each photo is used, with new places (default 3)\n"
+    "  --seed S          placements and looks (default 1)\n"
+    "  --local POLICY    local pass: auto, always or never (default: the firmware's)\n"
+    "  --out DIR         write the composited frames with their truth (YAML) and an\n"
+    "                    annotated image of every photo with a false landmark\n"
+    "  --json            one JSON object instead of the table\n";
+
+#define MAX_PHOTOS 20000
+
+typedef struct {
+    long placed[3], found[3], wrong[3];
+    long false_as_is, false_composited, photos, frames;
+    long false_by_id[256], wrong_by_id[256];
+    double us_total;
+} tally;
+
+static int cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+static int is_png(const char *name)
+{
+    size_t n = strlen(name);
+    return n > 4 && strcasecmp(name + n - 4, ".png") == 0;
+}
+
+/* The photos: every PNG of a folder (sorted), or the files given. */
+static int list_photos(const char *C, int argc, char **argv, char ***out)
+{
+    char **list = malloc(sizeof(char *) * MAX_PHOTOS);
+    int n = 0, i;
+    if (list == NULL)
+        return -1;
+    for (i = 0; i < argc; i++) {
+        struct stat st;
+        if (stat(argv[i], &st) != 0) {
+            rl_cli_fail(C, RL_EXIT_FAIL, "%s: no such file or folder", argv[i]);
+            free(list);
+            return -1;
+        }
+        if (S_ISDIR(st.st_mode)) {
+            DIR *d = opendir(argv[i]);
+            struct dirent *e;
+            if (d == NULL) {
+                rl_cli_fail(C, RL_EXIT_FAIL, "%s: cannot open the folder", argv[i]);
+                free(list);
+                return -1;
+            }
+            while ((e = readdir(d)) != NULL && n < MAX_PHOTOS)
+                if (is_png(e->d_name)) {
+                    size_t len = strlen(argv[i]) + strlen(e->d_name) + 2;
+                    if ((list[n] = malloc(len)) != NULL)
+                        snprintf(list[n++], len, "%s/%s", argv[i], e->d_name);
+                }
+            closedir(d);
+        } else if (n < MAX_PHOTOS) {
+            list[n++] = strdup(argv[i]);
+        }
+    }
+    if (n > 0)
+        qsort(list, (size_t)n, sizeof *list, cmp_str);
+    *out = list;
+    return n;
+}
+
+static const char *stem(const char *path, char *buf, size_t len)
+{
+    const char *b = strrchr(path, '/'), *dot;
+    b = b ? b + 1 : path;
+    dot = strrchr(b, '.');
+    snprintf(buf, len, "%.*s", dot ? (int)(dot - b) : (int)strlen(b), b);
+    return buf;
+}
+
+/* The mark a detection belongs to, or -1. */
+static int mark_of(const rl_site_mark *marks, int n, const rl_detection *d)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        if (hypot(d->u - marks[i].u, d->v - marks[i].v) < 0.5 * marks[i].r)
+            return i;
+    return -1;
+}
+
+/* A detection at the place of a false landmark the photo already had. */
+static int seen_as_is(const rl_result *as_is, const rl_detection *d)
+{
+    int i;
+    for (i = 0; i < as_is->n_landmarks; i++)
+        if (hypot(d->u - as_is->landmarks[i].u, d->v - as_is->landmarks[i].v) < 0.5 * d->radius)
+            return 1;
+    return 0;
+}
+
+static void write_truth(const char *path, const char *image, const rl_site_mark *m, int n)
+{
+    static const char *kinds[] = {"complete", "near_light", "cut"};
+    FILE *f = fopen(path, "w");
+    int i;
+    if (f == NULL)
+        return;
+    fprintf(f, "image: %s\nlandmarks:\n", image);
+    for (i = 0; i < n; i++)
+        fprintf(f, "  - {id: %d, u: %.3f, v: %.3f, radius: %.3f, kind: %s, visible: %.3f}\n",
+                m[i].id, m[i].u, m[i].v, m[i].r, kinds[m[i].kind], m[i].visible);
+    fclose(f);
+}
+
+typedef struct {
+    const char *C, *out;
+    rl_heap_recog *hr;
+    rl_composite_config cc;
+    const int *ids;
+    int n_ids, rounds;
+    rl_family fam;
+} check;
+
+/* The photo as it is: every landmark reported there is false. */
+static void photo_as_is(const check *k, const char *path, const rl_image *img, rl_result *as_is,
+                        tally *t)
+{
+    double us;
+    int i;
+    char err[512], name[256], out[1200];
+    if (rl_report_run(k->hr, img, as_is, &us) != RL_OK)
+        return;
+    t->us_total += us;
+    t->frames++;
+    t->false_as_is += as_is->n_landmarks;
+    for (i = 0; i < as_is->n_landmarks; i++)
+        t->false_by_id[as_is->landmarks[i].id & 255]++;
+    if (k->out && as_is->n_landmarks > 0) {
+        snprintf(out, sizeof out, "%s/false_%s.png", k->out, stem(path, name, sizeof name));
+        if (rl_annotate_png(out, img, as_is, &k->fam, path, err, sizeof err) != RL_OK)
+            rl_cli_fail(k->C, RL_EXIT_FAIL, "%s", err);
+    }
+}
+
+/* One composited frame: marks placed, recognized, judged from their truth. */
+static void photo_composited(check *k, const char *path, const rl_image *photo, int round,
+                             const rl_result *as_is, uint8_t *buf, rl_result *res, tally *t)
+{
+    rl_site_mark marks[RL_COMPOSITE_MAX];
+    rl_image img = rl_image_view(photo->width, photo->height, photo->width, buf);
+    int y, n, i;
+    double us;
+    for (y = 0; y < photo->height; y++)
+        memcpy(buf + (size_t)y * (size_t)photo->width,
+               photo->data + (size_t)y * (size_t)photo->stride, (size_t)photo->width);
+    n = rl_composite_plan(&img, &k->cc, k->ids, k->n_ids, marks);
+    rl_composite_draw(&img, &k->cc, marks, n, rl_composite_ring, &k->fam);
+    if (rl_report_run(k->hr, &img, res, &us) != RL_OK)
+        return;
+    t->us_total += us;
+    t->frames++;
+    for (i = 0; i < n; i++)
+        t->placed[marks[i].kind]++;
+    for (i = 0; i < res->n_landmarks; i++) {
+        const rl_detection *d = &res->landmarks[i];
+        int m = mark_of(marks, n, d);
+        if (m < 0) {
+            t->false_composited += !seen_as_is(as_is, d);
+        } else if (d->id == marks[m].id) {
+            t->found[marks[m].kind]++;
+        } else {
+            t->wrong[marks[m].kind]++;
+            t->wrong_by_id[d->id & 255]++;
+        }
+    }
+    if (k->out) {
+        char name[256], png[1200], yaml[1200], err[512];
+        stem(path, name, sizeof name);
+        snprintf(png, sizeof png, "%s/%s_r%d.png", k->out, name, round);
+        snprintf(yaml, sizeof yaml, "%s/%s_r%d.yaml", k->out, name, round);
+        if (rl_png_write_gray(png, &img, err, sizeof err) != RL_OK)
+            rl_cli_fail(k->C, RL_EXIT_FAIL, "%s", err);
+        write_truth(yaml, png, marks, n);
+    }
+}
+
+/* 0 if path is an existing folder. */
+static int access_dir(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISDIR(st.st_mode) ? 0 : -1;
+}
+
+static double pct(long a, long b)
+{
+    return b > 0 ? 100.0 * a / b : 0.0;
+}
+
+static void print_table(const tally *t, const check *k, FILE *f)
+{
+    static const char *rows[] = {"wholly inside", "within 1 R of a light", "cut by the border"};
+    int i, any = 0;
+    fprintf(f, "site-check: %ld photos, %d rounds, radius %.1f px, seed %llu, %.2f ms per frame\n",
+            t->photos, k->rounds, k->cc.radius_px, (unsigned long long)k->cc.seed,
+            t->frames ? t->us_total / t->frames / 1000.0 : 0.0);
+    fprintf(f, "%-24s %8s %10s %8s %6s\n", "landmarks placed", "placed", "identified", "rate", "wrong");
+    for (i = 0; i < 3; i++)
+        fprintf(f, "%-24s %8ld %10ld %7.1f%% %6ld\n", rows[i], t->placed[i], t->found[i],
+                pct(t->found[i], t->placed[i]), t->wrong[i]);
+    fprintf(f, "false landmarks on the photos as they are: %ld", t->false_as_is);
+    for (i = 0; i < 256; i++)
+        if (t->false_by_id[i])
+            fprintf(f, "%s id %d: %ld", any++ ? "," : " (", i, t->false_by_id[i]);
+    fprintf(f, "%s\nfalse landmarks elsewhere on the composited photos: %ld\n", any ? ")" : "",
+            t->false_composited);
+    fprintf(f, "ids to leave out of the map:");
+    for (i = any = 0; i < 256; i++)
+        if (t->false_by_id[i] || t->wrong_by_id[i])
+            fprintf(f, " %d%s", i, (any++, t->false_by_id[i] ? " (site objects look like it)" : " (misread)"));
+    fprintf(f, "%s\n", any ? "" : " none");
+}
+
+static void print_json(const tally *t, const check *k, FILE *f)
+{
+    static const char *keys[] = {"complete", "near_light", "cut"};
+    int i, any = 0;
+    fprintf(f, "{\"photos\": %ld, \"rounds\": %d, \"radius_px\": %.2f, \"seed\": %llu, \"ms_per_frame\": %.3f",
+            t->photos, k->rounds, k->cc.radius_px, (unsigned long long)k->cc.seed,
+            t->frames ? t->us_total / t->frames / 1000.0 : 0.0);
+    for (i = 0; i < 3; i++)
+        fprintf(f, ", \"%s\": {\"placed\": %ld, \"identified\": %ld, \"rate\": %.4f, \"wrong\": %ld}",
+                keys[i], t->placed[i], t->found[i], pct(t->found[i], t->placed[i]) / 100.0, t->wrong[i]);
+    fprintf(f, ", \"false_as_is\": %ld, \"false_composited\": %ld, \"false_ids\": {", t->false_as_is,
+            t->false_composited);
+    for (i = 0; i < 256; i++)
+        if (t->false_by_id[i])
+            fprintf(f, "%s\"%d\": %ld", any++ ? ", " : "", i, t->false_by_id[i]);
+    fprintf(f, "}, \"leave_out\": [");
+    for (i = any = 0; i < 256; i++)
+        if (t->false_by_id[i] || t->wrong_by_id[i])
+            fprintf(f, "%s%d", any++ ? ", " : "", i);
+    fprintf(f, "]}\n");
+}
+
+/* The landmark radius in the image: given, or from the camera's focal
+ * length, the printed diameter and the distance to the ceiling. */
+static int radius_px(const char *C, const char *camera, double diameter, double distance, double *r)
+{
+    rl_camera cam;
+    char err[512];
+    if (*r > 0)
+        return 1;
+    if (camera == NULL) {
+        rl_camera_defaults(&cam, 640, 480, 70.0 * M_PI / 180.0);
+    } else if (rl_camfile_load(camera, &cam, err, sizeof err) != RL_OK) {
+        return !rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    }
+    *r = 0.5 * (cam.fx + cam.fy) * 0.5 * diameter / distance;
+    return 1;
+}
+
+static int run_check(check *k, char **photos, int n, int json)
+{
+    static rl_result as_is, res;
+    tally *t = calloc(1, sizeof *t);
+    uint8_t *buf = NULL;
+    int p, round;
+    if (t == NULL)
+        return rl_cli_fail(k->C, RL_EXIT_FAIL, "out of memory");
+    for (p = 0; p < n; p++) {
+        rl_image img;
+        char err[512];
+        if (rl_png_read_gray(photos[p], &img, err, sizeof err) != RL_OK) {
+            rl_cli_fail(k->C, RL_EXIT_FAIL, "%s (skipped)", err);
+            continue;
+        }
+        free(buf);
+        if ((buf = malloc((size_t)img.width * (size_t)img.height)) == NULL) {
+            rl_png_free(&img);
+            break;
+        }
+        t->photos++;
+        photo_as_is(k, photos[p], &img, &as_is, t);
+        for (round = 0; round < k->rounds; round++)
+            photo_composited(k, photos[p], &img, round, &as_is, buf, &res, t);
+        rl_png_free(&img);
+        if ((p + 1) % 20 == 0 && !json)
+            fprintf(stderr, "site-check: %d of %d photos\r", p + 1, n);
+    }
+    if (!json && n >= 20)
+        fputc('\n', stderr);
+    free(buf);
+    if (t->photos == 0) {
+        free(t);
+        return rl_cli_fail(k->C, RL_EXIT_FAIL, "no readable PNG photo");
+    }
+    (json ? print_json : print_table)(t, k, stdout);
+    free(t);
+    return 0;
+}
+
+int rl_cmd_sitecheck(int argc, char **argv)
+{
+    static const struct option opts[] = {
+        {"family", required_argument, 0, 'f'}, {"map", required_argument, 0, 'm'},
+        {"radius-px", required_argument, 0, 'r'}, {"camera", required_argument, 0, 'c'},
+        {"diameter", required_argument, 0, 'D'}, {"distance", required_argument, 0, 'Z'},
+        {"rounds", required_argument, 0, 'n'}, {"seed", required_argument, 0, 'S'},
+        {"local", required_argument, 0, 'L'}, {"out", required_argument, 0, 'o'},
+        {"json", no_argument, 0, 'j'}, {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
+    const char *C = "site-check", *family = "ring5", *mapfile = NULL, *camera = NULL;
+    static rl_map map;
+    static int ids[RL_MAX_MAP_LANDMARKS];
+    double diameter = 0.21, distance = 1.87, r = 0;
+    int c, json = 0, n, i, seed = 1, rc;
+    char **photos, err[512];
+    rl_recog_config cfg;
+    rl_heap_recog hr;
+    check k;
+    memset(&k, 0, sizeof k);
+    k.C = C;
+    k.rounds = 3;
+    rl_recog_defaults(&cfg);
+    optind = 1;
+    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+        switch (c) {
+        case 'f': family = optarg; break;
+        case 'm': mapfile = optarg; break;
+        case 'c': camera = optarg; break;
+        case 'o': k.out = optarg; break;
+        case 'j': json = 1; break;
+        case 'r': if (!rl_cli_double(C, "--radius-px", optarg, &r) || !(r >= 4 && r <= 1000)) return rl_cli_fail(C, RL_EXIT_USAGE, "--radius-px: expected 4 .. 1000"); break;
+        case 'D': if (!rl_cli_double(C, "--diameter", optarg, &diameter) || !(diameter > 0 && diameter < 10)) return rl_cli_fail(C, RL_EXIT_USAGE, "--diameter: expected metres in (0, 10)"); break;
+        case 'Z': if (!rl_cli_double(C, "--distance", optarg, &distance) || !(distance > 0.05 && distance < 100)) return rl_cli_fail(C, RL_EXIT_USAGE, "--distance: expected metres in (0.05, 100)"); break;
+        case 'n': if (!rl_cli_int(C, "--rounds", optarg, &k.rounds) || k.rounds < 1 || k.rounds > 100) return rl_cli_fail(C, RL_EXIT_USAGE, "--rounds: expected 1 .. 100"); break;
+        case 'S': if (!rl_cli_int(C, "--seed", optarg, &seed) || seed < 0) return rl_cli_fail(C, RL_EXIT_USAGE, "--seed: expected an integer >= 0"); break;
+        case 'L':
+            if (rl_cli_recog_option(C, c, optarg, &cfg, &family) < 0)
+                return RL_EXIT_USAGE;
+            break;
+        case 'h': fputs(help, stdout); return 0;
+        default: return rl_cli_fail(C, RL_EXIT_USAGE, "see 'ringloc site-check --help'");
+        }
+    }
+    if (optind >= argc)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "give a folder of photos or PNG files (see --help)");
+    if (mapfile) {
+        if (rl_mapfile_load(mapfile, &map, err, sizeof err) != RL_OK)
+            return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+        k.fam = map.family;
+        for (i = 0; i < map.count; i++)
+            ids[i] = map.lm[i].id;
+        k.n_ids = map.count;
+        rl_recog_use_map(&cfg, &map, ids);
+    } else {
+        if (rl_family_parse(family, &k.fam) != RL_OK)
+            return rl_cli_fail(C, RL_EXIT_USAGE, "--family: '%s' is not ring2 .. ring8", family);
+        cfg.family = k.fam;
+        k.n_ids = rl_family_count(&k.fam);
+        for (i = 0; i < k.n_ids; i++)
+            ids[i] = i + 1;
+    }
+    k.ids = ids;
+    if (!radius_px(C, camera, diameter, distance, &r))
+        return RL_EXIT_FAIL;
+    if (k.out && mkdir(k.out, 0777) != 0 && access_dir(k.out) != 0)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: cannot create the folder", k.out);
+    rl_composite_defaults(&k.cc);
+    k.cc.radius_px = r;
+    k.cc.seed = (uint64_t)seed;
+    if ((n = list_photos(C, argc - optind, argv + optind, &photos)) < 0)
+        return RL_EXIT_FAIL;
+    if (n == 0) {
+        free(photos);
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: no PNG photos", argv[optind]);
+    }
+    rl_heap_recog_init(&hr, &cfg);
+    k.hr = &hr;
+    rc = run_check(&k, photos, n, json);
+    rl_heap_recog_free(&hr);
+    for (i = 0; i < n; i++)
+        free(photos[i]);
+    free(photos);
+    return rc;
+}
