@@ -17,16 +17,23 @@ void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_box *
 {
     rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_GLOBAL);
     rl_detection d;
+    rl_levels local;
     rl_profile p;
     rl_match m;
+    double scale;
     memset(&d, 0, sizeof d);
     d.id = -1;
     d.pass = RL_PASS_GLOBAL;
     if (!rl_clr_geometry(b, rec->width, rec->height, &d))
         return;
     res->n_candidates++;
+    /* the frame's levels as the light falls here */
+    scale = rl_illum_scale(&rec->illum, d.u, d.v);
+    local = res->levels;
+    local.bg *= scale;
+    local.fg *= scale;
     if (d.complete)
-        rl_refine_centre(img, &res->levels, &d.u, &d.v, d.radius);
+        rl_refine_centre(img, &local, &d.u, &d.v, d.radius);
     rl_refine_radius(img, d.u, d.v, &d.radius);
     if (d.visible < GLOBAL_MIN_VISIBLE) {
         rl_result_add_unidentified(res, &d);
@@ -35,7 +42,7 @@ void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_box *
     rl_profile_gather(img, d.u, d.v, d.radius, &p);
     rl_match_all(&rec->templates, &p, &m);
     d.score = m.score;
-    if (rl_accept(&rule, &m, res->levels.bg - res->levels.fg) &&
+    if (rl_accept(&rule, &m, local.bg - local.fg) &&
         !(rl_inner_possible(res, &d) && rl_inner_enclosed(img, res->levels.light, d.u, d.v, d.radius))) {
         d.id = m.id;
         rl_result_add_landmark(res, &d);

@@ -105,41 +105,75 @@ static void unite(int32_t *p, int32_t a, int32_t b)
 
 /* The runs of pixels in [lo, hi), row by row, joined with the previous
  * row's runs they touch (8-connected). RL_ELIMIT past cap_runs. */
-static rl_err collect_runs(rl_label *lb, const rl_image *img, int lo, int hi)
+/* Append run [a, b] of the current row and join it with the previous
+ * row's runs it touches (8-connected): they are sorted, so the forward
+ * pointer *j suffices. */
+static rl_err add_run(rl_label *lb, int a, int b, int *n, int *j, int prev_end)
 {
-    int x, y, n = 0, prev_start = 0, prev_end = 0;
     int32_t *p = lb->tag;
+    int jj;
+    if (*n == lb->cap_runs)
+        return RL_ELIMIT;
+    lb->x0[*n] = (uint16_t)a;
+    lb->x1[*n] = (uint16_t)b;
+    p[*n] = *n;
+    while (*j < prev_end && (int)lb->x1[*j] + 1 < a)
+        (*j)++;
+    for (jj = *j; jj < prev_end && (int)lb->x0[jj] <= b + 1; jj++)
+        unite(p, *n, jj);
+    (*n)++;
+    return RL_OK;
+}
+
+/* The row's tile thresholds (NULL without a map) and the largest of them. */
+static const uint8_t *row_thresholds(const rl_label_map *map, int y, int sh, int *hi_max)
+{
+    const uint8_t *his;
+    int i;
+    if (map == NULL)
+        return NULL;
+    his = map->hi + (size_t)(y >> sh) * (size_t)map->nx;
+    *hi_max = 0;
+    for (i = 0; i < map->nx; i++)
+        if (his[i] > *hi_max)
+            *hi_max = his[i];
+    return his;
+}
+
+/* The runs of pixels in [lo, hi) (hi per tile column of the row's tile
+ * row when map is given), row by row. RL_ELIMIT past cap_runs. */
+static rl_err collect_runs(rl_label *lb, const rl_image *img, int lo, int hi, const rl_label_map *map)
+{
+    int x, y, n = 0, prev_start = 0, prev_end = 0, sh = 0, hi_max = hi;
+    const uint8_t *his = NULL;
+    rl_err e;
+    while (map && (1 << sh) < map->tile)
+        sh++;
     for (y = 0; y < img->height; y++) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
         int start = n, j = prev_start;
+        if (map && (y & ((1 << sh) - 1)) == 0)
+            his = row_thresholds(map, y, sh, &hi_max);
         lb->row[y] = n;
         x = 0;
         while (x < img->width) {
             int a;
-            /* unsigned trick: lo <= v < hi  <=>  (v - lo) < (hi - lo) */
-            x = skip_outside(row, x, img->width, lo, hi);
+            /* skip what is outside the band at the row's largest threshold
+             * (8 pixels at a time), then check the pixel's own tile's;
+             * unsigned trick: lo <= v < hi  <=>  (v - lo) < (hi - lo) */
+            x = skip_outside(row, x, img->width, lo, hi_max);
             if (x >= img->width)
                 break;
-            a = x;
-            while (x < img->width && (unsigned)(row[x] - lo) < (unsigned)(hi - lo))
+            if (his && (unsigned)(row[x] - lo) >= (unsigned)(his[x >> sh] - lo)) {
                 x++;
-            if (n == lb->cap_runs)
-                return RL_ELIMIT;
-            lb->x0[n] = (uint16_t)a;
-            lb->x1[n] = (uint16_t)(x - 1);
-            p[n] = n;
-            /* 8-connected overlap with the previous row's runs: they are
-             * sorted, so one forward pointer suffices */
-            while (j < prev_end && (int)lb->x1[j] + 1 < a)
-                j++;
-            {
-                int jj = j;
-                while (jj < prev_end && (int)lb->x0[jj] <= x) {
-                    unite(p, n, jj);
-                    jj++;
-                }
+                continue;
             }
-            n++;
+            a = x;
+            while (x < img->width &&
+                   (unsigned)(row[x] - lo) < (unsigned)((his ? his[x >> sh] : hi) - lo))
+                x++;
+            if ((e = add_run(lb, a, x - 1, &n, &j, prev_end)) != RL_OK)
+                return e;
         }
         prev_start = start;
         prev_end = n;
@@ -219,7 +253,8 @@ static void region_stats(rl_label *lb)
         }
 }
 
-rl_err rl_label_band(rl_label *lb, const rl_image *img, int lo, int hi, int min_area)
+static rl_err label(rl_label *lb, const rl_image *img, int lo, int hi, const rl_label_map *map,
+                    int min_area)
 {
     rl_err e;
     if (!rl_image_valid(img) || img->width > 65535 || img->height > lb->max_height)
@@ -227,9 +262,23 @@ rl_err rl_label_band(rl_label *lb, const rl_image *img, int lo, int hi, int min_
     lb->width = img->width;
     lb->height = img->height;
     lb->n_runs = lb->n_regions = lb->overflow = 0;
-    if ((e = collect_runs(lb, img, lo < 0 ? 0 : lo, hi)) != RL_OK)
+    if ((e = collect_runs(lb, img, lo < 0 ? 0 : lo, hi, map)) != RL_OK)
         return e;
     resolve_regions(lb, min_area);
     region_stats(lb);
     return RL_OK;
+}
+
+rl_err rl_label_band(rl_label *lb, const rl_image *img, int lo, int hi, int min_area)
+{
+    return label(lb, img, lo, hi, NULL, min_area);
+}
+
+rl_err rl_label_dark(rl_label *lb, const rl_image *img, const rl_label_map *map, int min_area)
+{
+    if (map == NULL || map->tile <= 0 || (map->tile & (map->tile - 1)) != 0 ||
+        map->nx * map->tile < img->width ||
+        map->ny * map->tile < img->height)
+        return RL_EINVAL;
+    return label(lb, img, 0, 256, map, min_area);
 }

@@ -54,6 +54,18 @@ RL_CHECK rl_err rl_label_init(rl_label *lb, rl_ws *ws, int width, int height, in
  * counted in lb->overflow, not an error. */
 RL_CHECK rl_err rl_label_band(rl_label *lb, const rl_image *img, int lo, int hi, int min_area);
 
+/* Thresholds per tile: pixel (x, y) is dark when I < hi[(y / tile) * nx +
+ * x / tile] (illumination that changes across the frame). */
+typedef struct {
+    const uint8_t *hi;
+    int tile, nx, ny;   /* tile: a power of two */
+} rl_label_map;
+
+/* Label the dark pixels of img under per-tile thresholds (as
+ * rl_label_band otherwise). RL_EINVAL when the map does not cover img. */
+RL_CHECK rl_err rl_label_dark(rl_label *lb, const rl_image *img, const rl_label_map *map,
+                              int min_area);
+
 /* Region index of run r, or -1 for a dropped speck. */
 static inline int rl_label_region_of(const rl_label *lb, int r)
 {

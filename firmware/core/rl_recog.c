@@ -88,6 +88,7 @@ static rl_err layout(rl_ws *ws, const rl_recog_config *cfg, int w, int h, rl_rec
     if ((e = rl_templates_init(&r->templates, ws, &cfg->family, cfg->ids, cfg->ids ? cfg->n_ids : 0)) != RL_OK ||
         (e = rl_label_init(&r->dark, ws, w, h, runs, RL_MAX_REGIONS)) != RL_OK ||
         (e = rl_label_init(&r->light, ws, w, (h + 1) / 2, runs / 4, RL_MAX_LIGHTS * 8)) != RL_OK ||
+        (e = rl_illum_init(&r->illum, ws, w, h)) != RL_OK ||
         (e = rl_ws_alloc(ws, sizeof(rl_polar), RL_WS_ALIGN, (void **)&r->polar)) != RL_OK)
         return e;
     return RL_OK;
@@ -211,8 +212,10 @@ rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
         return e;
     if (res->levels.threshold <= 0)
         return RL_OK; /* no dark class in the frame */
-    /* 2. image clustering into dark ROIs, as connected regions */
-    if ((e = rl_label_band(&rec->dark, img, 0, res->levels.threshold, speck)) != RL_OK)
+    /* 2. image clustering into dark ROIs, as connected regions, under the
+     *    threshold scaled by the ceiling's light across the frame */
+    rl_illum_measure(&rec->illum, img, &res->levels);
+    if ((e = rl_label_dark(&rec->dark, img, &rec->illum.map, speck)) != RL_OK)
         return e;
     res->n_regions = rec->dark.n_regions;
     res->dropped.regions = rec->dark.overflow;

@@ -12,6 +12,7 @@
 #ifndef RL_RECOG_STATE_H
 #define RL_RECOG_STATE_H
 
+#include "rl_illum.h"
 #include "rl_label.h"
 #include "rl_polar.h"
 #include "rl_recog.h"
@@ -24,6 +25,7 @@ struct rl_recog {
     rl_templates templates;        /* rendered at init */
     rl_label dark;  /* ROI labelling: the frame, then the local pass's windows */
     rl_label light; /* light-source labelling */
+    rl_illum illum; /* the ceiling's light across the frame: per-tile thresholds */
     rl_polar *polar;/* a local-pass candidate in polar cells */
 };
 

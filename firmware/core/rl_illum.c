@@ -1,0 +1,134 @@
+#include "rl_illum.h"
+
+#include <string.h>
+
+/* Tiles of about a twentieth of the frame's width, a power of two (32 px
+ * at 640): the labeller finds a pixel's tile by a shift. */
+static int tile_size(int W)
+{
+    int t = 16;
+    while (t < 64 && 2 * t <= W / 14)
+        t *= 2;
+    return t;
+}
+
+rl_err rl_illum_init(rl_illum *il, rl_ws *ws, int W, int H)
+{
+    rl_err e;
+    size_t n;
+    il->tile = tile_size(W);
+    il->nx = (W + il->tile - 1) / il->tile;
+    il->ny = (H + il->tile - 1) / il->tile;
+    n = (size_t)il->nx * (size_t)il->ny;
+    if ((e = rl_ws_alloc(ws, n, RL_WS_ALIGN, (void **)&il->level)) != RL_OK ||
+        (e = rl_ws_alloc(ws, n, RL_WS_ALIGN, (void **)&il->bright)) != RL_OK ||
+        (e = rl_ws_alloc(ws, n, RL_WS_ALIGN, (void **)&il->hi)) != RL_OK)
+        return e;
+    il->map.hi = il->hi;
+    il->map.tile = il->tile;
+    il->map.nx = il->nx;
+    il->map.ny = il->ny;
+    il->bg = 255;
+    return RL_OK;
+}
+
+/* A tile's ceiling level: the mean of its pixels above their mean (every
+ * fourth row and column: 64 of a 32 px tile; lamps left out); 0 when it
+ * is all lamp. */
+static int tile_level(const rl_image *img, int x0, int y0, int x1, int y1, int light)
+{
+    unsigned sum = 0, n = 0, sum_hi = 0, n_hi = 0, mean;
+    int x, y;
+    /* branch-free sums: a ceiling's texture makes the tests unpredictable */
+    for (y = y0; y < y1; y += 4) {
+        const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
+        for (x = x0; x < x1; x += 4) {
+            unsigned v = row[x], m = v < (unsigned)light;
+            sum += v * m;
+            n += m;
+        }
+    }
+    if (n < 4)
+        return 0;
+    mean = sum / n;
+    for (y = y0; y < y1; y += 4) {
+        const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
+        for (x = x0; x < x1; x += 4) {
+            unsigned v = row[x], m = (v < (unsigned)light) & (v >= mean);
+            sum_hi += v * m;
+            n_hi += m;
+        }
+    }
+    return n_hi ? (int)(sum_hi / n_hi) : (int)mean;
+}
+
+/* The largest known level of a tile and its eight neighbours, or 0. */
+static int spread(const rl_illum *il, int tx, int ty)
+{
+    int best = 0, dx, dy;
+    for (dy = -1; dy <= 1; dy++)
+        for (dx = -1; dx <= 1; dx++) {
+            int x = tx + dx, y = ty + dy, v;
+            if (x < 0 || y < 0 || x >= il->nx || y >= il->ny)
+                continue;
+            v = il->level[y * il->nx + x];
+            if (v > best)
+                best = v;
+        }
+    return best;
+}
+
+/* The median of the known tile levels (the frame's typical ceiling), or
+ * fallback when none is known. */
+static int median_level(const rl_illum *il, int fallback)
+{
+    unsigned count[256];
+    int i, n = il->nx * il->ny, known = 0, acc = 0;
+    memset(count, 0, sizeof count);
+    for (i = 0; i < n; i++)
+        if (il->level[i] > 0) {
+            count[il->level[i]]++;
+            known++;
+        }
+    if (known == 0)
+        return fallback;
+    for (i = 1; i < 256; i++)
+        if ((acc += (int)count[i]) * 2 >= known)
+            return i;
+    return fallback;
+}
+
+void rl_illum_measure(rl_illum *il, const rl_image *img, const rl_levels *lv)
+{
+    int tx, ty, T = il->tile;
+    double ref;
+    for (ty = 0; ty < il->ny; ty++)
+        for (tx = 0; tx < il->nx; tx++) {
+            int x1 = (tx + 1) * T < img->width ? (tx + 1) * T : img->width;
+            int y1 = (ty + 1) * T < img->height ? (ty + 1) * T : img->height;
+            il->level[ty * il->nx + tx] = (uint8_t)tile_level(img, tx * T, ty * T, x1, y1, lv->light);
+        }
+    /* the threshold follows the light: the same fraction of the local
+     * level as the frame's threshold is of its background */
+    double bg = lv->bg > 1 ? lv->bg : 1, ratio = lv->threshold / bg;
+    ratio = ratio < 0.3 ? 0.3 : ratio > 0.75 ? 0.75 : ratio;
+    ref = median_level(il, (int)(bg + 0.5));
+    il->bg = ref > 1 ? ref : 1;
+    for (ty = 0; ty < il->ny; ty++)
+        for (tx = 0; tx < il->nx; tx++) {
+            int i = ty * il->nx + tx, b = spread(il, tx, ty), hi;
+            il->bright[i] = (uint8_t)(b > 0 ? b : (int)il->bg); /* unknown: the frame's */
+            hi = (int)(ratio * il->bright[i] + 0.5);
+            il->hi[i] = (uint8_t)(hi < 1 ? 1 : hi > lv->light ? lv->light : hi);
+        }
+}
+
+double rl_illum_scale(const rl_illum *il, double u, double v)
+{
+    int tx = (int)(u / il->tile), ty = (int)(v / il->tile);
+    if (tx < 0) tx = 0;
+    if (ty < 0) ty = 0;
+    if (tx >= il->nx) tx = il->nx - 1;
+    if (ty >= il->ny) ty = il->ny - 1;
+    return il->bright[ty * il->nx + tx] / il->bg;
+}
