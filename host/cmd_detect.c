@@ -27,7 +27,8 @@ static const char *detect_help =
     "  --map FILE        report only ids in this map (YAML)\n"
     "  --annotate FILE   write the image with lights, candidates, centres and ids\n"
     "                    drawn (FILE-<image name>.png for several images)\n"
-    "  --local POLICY    local pass: auto (when fewer than 2 identified), always, never\n"
+    "  --local POLICY    local pass: always (default), auto (the paper's: when fewer\n"
+    "                    than 2 were identified) or never\n"
     "  --min-score R     Pearson correlation needed to accept an id (default 0.80)\n";
 
 /* Options shared by detect and locate. */

@@ -28,7 +28,8 @@ static const char *locate_help =
     "  --offsets FILE   pixel-to-offset polynomial from 'ringloc calibrate-offsets',\n"
     "                   used instead of the pinhole model\n"
     "  --annotate FILE  write the image with what was recognized drawn on it\n"
-    "  --local POLICY   local pass: auto (when fewer than 2 identified), always, never\n";
+    "  --local POLICY   local pass: always (default), auto (the paper's: when fewer\n"
+    "                   than 2 were identified) or never\n";
 
 int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config *cfg,
                         const char **family);

@@ -48,7 +48,7 @@ serial:
   device: ttyRINGLOC
   baud: 115200
 recognition:
-  local: auto
+  local: always
 CFG
 
 rm -f "$OUT/ttyRINGLOC" "$OUT/poses.jsonl"

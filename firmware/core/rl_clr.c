@@ -47,36 +47,45 @@ static int broken_by_light(const rl_region *g, const rl_recog_config *cfg, const
              rl_result_light_gap(res, b) > cfg->near_light * rr);
 }
 
-int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, rl_box *cand,
+/* The ellipse of region i from its central second moments. */
+static rl_shape region_shape(const rl_label *lb, int i)
+{
+    double cxx, cxy, cyy;
+    rl_label_moments(lb, i, &cxx, &cxy, &cyy);
+    return rl_shape_from_moments(cxx, cxy, cyy);
+}
+
+int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, rl_clr *cand,
                 int cap)
 {
     int i, n = 0, W = lb->width, H = lb->height;
     for (i = 0; i < lb->n_regions; i++) {
         const rl_region *g = &lb->reg[i];
-        int cut = g->x0 == 0 || g->y0 == 0 || g->x1 == W - 1 || g->y1 == H - 1;
+        int cut = g->x0 == 0 || g->y0 == 0 || g->x1 == W - 1 || g->y1 == H - 1, ring = 0;
         rl_box b;
         b.x0 = g->x0;
         b.y0 = g->y0;
         b.x1 = g->x1;
         b.y1 = g->y1;
         if (cut ? !cut_candidate(g, cfg, W, H)
-                : !ring_shaped(g, cfg) && !broken_by_light(g, cfg, res, &b))
+                : !(ring = ring_shaped(g, cfg)) && !broken_by_light(g, cfg, res, &b))
             continue;
         if (n == cap) {
             res->dropped.candidates++;
             continue;
         }
-        cand[n++] = b;
+        cand[n].box = b;
+        cand[n++].shape = ring ? region_shape(lb, i) : rl_shape_circle();
     }
     return n;
 }
 
-int rl_clr_is_inner(const rl_box *cand, int n, int i)
+int rl_clr_is_inner(const rl_clr *cand, int n, int i)
 {
     int j;
     for (j = 0; j < n; j++)
-        if (j != i && rl_geom_box_inside(&cand[i], &cand[j]) &&
-            !(rl_geom_box_inside(&cand[j], &cand[i]) && j > i))
+        if (j != i && rl_geom_box_inside(&cand[i].box, &cand[j].box) &&
+            !(rl_geom_box_inside(&cand[j].box, &cand[i].box) && j > i))
             return 1;
     return 0;
 }

@@ -9,28 +9,36 @@
  * local pass: glare may have washed part of an outer ring out. A CLR
  * whose box lies inside another's is an inner ring, not a landmark.
  *
- *   rl_box cand[RL_MAX_CANDIDATES];
+ *   static rl_clr cand[RL_MAX_CANDIDATES];
  *   n = rl_clr_find(&lb, &cfg, &res, cand, RL_MAX_CANDIDATES);
  *   for (i = 0; i < n; i++)
- *       if (!rl_clr_is_inner(cand, n, i) && rl_clr_geometry(&cand[i], W, H, &d))
+ *       if (!rl_clr_is_inner(cand, n, i) && rl_clr_geometry(&cand[i].box, W, H, &d))
  *           use(d.u, d.v, d.radius);
  */
 #ifndef RL_CLR_H
 #define RL_CLR_H
 
 #include "rl_label.h"
+#include "rl_profile.h"
 #include "rl_recog.h"
+
+/* A CLR: its box, and its shape (an ellipse from the region's moments
+ * when it is whole and ring-shaped, else the circle). */
+typedef struct {
+    rl_box box;
+    rl_shape shape;
+} rl_clr;
 
 /* The CLRs among the regions of lb (the frame's dark labelling), with the
  * radius limits and light distance of cfg (resolved: min_radius and
  * max_radius > 0) and the lights of res; at most cap boxes into cand,
  * the rest counted in res->dropped.candidates. */
-int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, rl_box *cand,
+int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, rl_clr *cand,
                 int cap);
 
 /* 1 if cand[i] lies inside another of the n boxes (of two equal boxes the
  * later one counts as inside). */
-int rl_clr_is_inner(const rl_box *cand, int n, int i);
+int rl_clr_is_inner(const rl_clr *cand, int n, int i);
 
 /* Centre, radius and visible fraction of a CLR from its box into d: an
  * uncut box is the disk's; a box cut by one image side keeps the true

@@ -13,7 +13,29 @@
  * for the local pass. */
 #define GLOBAL_MIN_VISIBLE 0.95
 
-void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_box *b, rl_result *res)
+/* The paper's grey level in the candidate's quiet zone (1.05 R .. 1.2 R,
+ * the profile's outermost bins), or -1 when nothing is seen there. */
+static double quiet_zone(const rl_profile *p)
+{
+    double n = 0, s = 0;
+    int k;
+    for (k = (int)(1.05 / RL_PROFILE_EXTENT * RL_PROFILE_BINS); k < RL_PROFILE_BINS; k++) {
+        n += p->n[k];
+        s += p->sx[k];
+    }
+    return n > 0 ? 255.0 - s / n : -1;
+}
+
+/* The grey span a landmark's contrast is judged against: the frame's
+ * foreground to background as the light falls here, or less where the
+ * landmark's own paper is darker (a sheet in a shadow). */
+static double contrast_span(const rl_levels *local, const rl_profile *p)
+{
+    double span = local->bg - local->fg, q = quiet_zone(p);
+    return q > 0 && q < span ? q : span;
+}
+
+void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *c, rl_result *res)
 {
     rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_GLOBAL);
     rl_detection d;
@@ -24,7 +46,7 @@ void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_box *
     memset(&d, 0, sizeof d);
     d.id = -1;
     d.pass = RL_PASS_GLOBAL;
-    if (!rl_clr_geometry(b, rec->width, rec->height, &d))
+    if (!rl_clr_geometry(&c->box, rec->width, rec->height, &d))
         return;
     res->n_candidates++;
     /* the frame's levels as the light falls here */
@@ -34,15 +56,17 @@ void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_box *
     local.fg *= scale;
     if (d.complete)
         rl_refine_centre(img, &local, &d.u, &d.v, d.radius);
-    rl_refine_radius(img, d.u, d.v, &d.radius);
+    /* the radius in the ellipse's metric: the CLR box's mean radius is
+     * near it */
+    rl_refine_radius_shaped(img, d.u, d.v, &c->shape, &d.radius);
     if (d.visible < GLOBAL_MIN_VISIBLE) {
         rl_result_add_unidentified(res, &d);
         return;
     }
-    rl_profile_gather(img, d.u, d.v, d.radius, &p);
+    rl_profile_gather_shaped(img, d.u, d.v, d.radius, &c->shape, &p);
     rl_match_all(&rec->templates, &p, &m);
     d.score = m.score;
-    if (rl_accept(&rule, &m, local.bg - local.fg) &&
+    if (rl_accept(&rule, &m, contrast_span(&local, &p)) &&
         !(rl_inner_possible(res, &d) && rl_inner_enclosed(img, res->levels.light, d.u, d.v, d.radius))) {
         d.id = m.id;
         rl_result_add_landmark(res, &d);

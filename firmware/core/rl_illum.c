@@ -32,34 +32,29 @@ rl_err rl_illum_init(rl_illum *il, rl_ws *ws, int W, int H)
     return RL_OK;
 }
 
-/* A tile's ceiling level: the mean of its pixels above their mean (every
- * fourth row and column: 64 of a 32 px tile; lamps left out); 0 when it
- * is all lamp. */
-static int tile_level(const rl_image *img, int x0, int y0, int x1, int y1, int light)
+/* A tile's ceiling level: the mean of its samples at or above the frame's
+ * dark threshold when they are at least a quarter of them, else the mean
+ * of them all (a tile in a shadow, or inside a landmark's ink: its
+ * neighbours then tell); every fourth row and column (64 samples of a
+ * 32 px tile), lamps left out, in one branch-free pass (a ceiling's
+ * texture makes the tests unpredictable); 0 when it is all lamp. */
+static int tile_level(const rl_image *img, int x0, int y0, int x1, int y1, int thr, int light)
 {
-    unsigned sum = 0, n = 0, sum_hi = 0, n_hi = 0, mean;
+    unsigned sum = 0, n = 0, sum_hi = 0, n_hi = 0;
     int x, y;
-    /* branch-free sums: a ceiling's texture makes the tests unpredictable */
     for (y = y0; y < y1; y += 4) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
         for (x = x0; x < x1; x += 4) {
-            unsigned v = row[x], m = v < (unsigned)light;
+            unsigned v = row[x], m = v < (unsigned)light, h = m & (v >= (unsigned)thr);
             sum += v * m;
             n += m;
+            sum_hi += v * h;
+            n_hi += h;
         }
     }
     if (n < 4)
         return 0;
-    mean = sum / n;
-    for (y = y0; y < y1; y += 4) {
-        const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
-        for (x = x0; x < x1; x += 4) {
-            unsigned v = row[x], m = (v < (unsigned)light) & (v >= mean);
-            sum_hi += v * m;
-            n_hi += m;
-        }
-    }
-    return n_hi ? (int)(sum_hi / n_hi) : (int)mean;
+    return (int)(4 * n_hi >= n ? sum_hi / n_hi : sum / n);
 }
 
 /* The largest known level of a tile and its eight neighbours, or 0. */
@@ -106,7 +101,8 @@ void rl_illum_measure(rl_illum *il, const rl_image *img, const rl_levels *lv)
         for (tx = 0; tx < il->nx; tx++) {
             int x1 = (tx + 1) * T < img->width ? (tx + 1) * T : img->width;
             int y1 = (ty + 1) * T < img->height ? (ty + 1) * T : img->height;
-            il->level[ty * il->nx + tx] = (uint8_t)tile_level(img, tx * T, ty * T, x1, y1, lv->light);
+            il->level[ty * il->nx + tx] =
+                (uint8_t)tile_level(img, tx * T, ty * T, x1, y1, lv->threshold, lv->light);
         }
     /* the threshold follows the light: the same fraction of the local
      * level as the frame's threshold is of its background */

@@ -282,3 +282,28 @@ rl_err rl_label_dark(rl_label *lb, const rl_image *img, const rl_label_map *map,
         return RL_EINVAL;
     return label(lb, img, 0, 256, map, min_area);
 }
+
+void rl_label_moments(const rl_label *lb, int reg, double *cxx, double *cxy, double *cyy)
+{
+    const rl_region *g = &lb->reg[reg];
+    double mx = g->sx / g->area, my = g->sy / g->area, sxx = 0, sxy = 0, syy = 0;
+    int y, r;
+    for (y = g->y0; y <= g->y1; y++)
+        for (r = lb->row[y]; r < lb->row[y + 1]; r++) {
+            double a, b, len, dy, sx;
+            if (lb->tag[r] != reg)
+                continue;
+            /* sums over the run's x0 .. x1 about the centroid, in closed form */
+            a = lb->x0[r] - mx;
+            b = lb->x1[r] - mx;
+            len = b - a + 1;
+            dy = y - my;
+            sx = 0.5 * (a + b) * len;
+            sxx += len * (a * a + a * (len - 1) + (len - 1) * (2 * len - 1) / 6.0);
+            sxy += dy * sx;
+            syy += dy * dy * len;
+        }
+    *cxx = sxx / g->area;
+    *cxy = sxy / g->area;
+    *cyy = syy / g->area;
+}

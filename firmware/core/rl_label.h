@@ -66,6 +66,11 @@ typedef struct {
 RL_CHECK rl_err rl_label_dark(rl_label *lb, const rl_image *img, const rl_label_map *map,
                               int min_area);
 
+/* Central second moments (covariance) of region reg of the last
+ * labelling, from its runs (a shape, when it is needed, costs no memory
+ * per region). */
+void rl_label_moments(const rl_label *lb, int reg, double *cxx, double *cxy, double *cyy);
+
 /* Region index of run r, or -1 for a dropped speck. */
 static inline int rl_label_region_of(const rl_label *lb, int r)
 {

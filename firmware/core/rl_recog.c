@@ -28,7 +28,7 @@ void rl_recog_defaults(rl_recog_config *cfg)
     cfg->max_radius = 0.0;
     cfg->size_tolerance = 0.35;
     cfg->need = 2;
-    cfg->local = RL_LOCAL_AUTO;
+    cfg->local = RL_LOCAL_ALWAYS;
     cfg->near_light = 1.5;
     cfg->min_contrast = 0.5;
 }
@@ -178,7 +178,7 @@ static int analyse_histogram(const rl_image *img, rl_result *res)
 
 /* 4. identification of the outer CLRs (a CLR inside another's box is an
  * inner ring). */
-static void identify_clrs(const rl_recog *rec, const rl_image *img, const rl_box *cand, int n,
+static void identify_clrs(const rl_recog *rec, const rl_image *img, const rl_clr *cand, int n,
                           rl_result *res)
 {
     int i;
@@ -195,7 +195,7 @@ static int local_wanted(const rl_recog_config *cfg, const rl_result *res)
 
 rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
 {
-    rl_box cand[RL_MAX_CANDIDATES];
+    rl_clr cand[RL_MAX_CANDIDATES];
     int ncand, speck;
     rl_err e;
     if (rec == NULL || res == NULL || img == NULL || !rl_image_valid(img))

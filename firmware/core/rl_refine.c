@@ -5,8 +5,9 @@
 
 void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r)
 {
-    int x, y, x0, x1, y0, y1;
+    int x, y, x0, x1, y0, y1, v;
     double sw = 0, sx = 0, sy = 0, bg = lv->bg, span = lv->bg - lv->fg, rr = (r + 1) * (r + 1);
+    double weight[256];
     if (span < 1)
         return;
     x0 = (int)floor(*cx - r - 1);
@@ -15,22 +16,29 @@ void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, doub
     y1 = (int)ceil(*cy + r + 1);
     if (x0 < 0 || y0 < 0 || x1 >= img->width || y1 >= img->height)
         return; /* only for complete landmarks */
+    /* a pixel's weight: how much darker than the background, at most the span */
+    for (v = 0; v < 256; v++)
+        weight[v] = bg - v <= 0 ? 0.0 : bg - v > span ? span : bg - v;
     for (y = y0; y <= y1; y++) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
-        double dy = y - *cy;
-        for (x = x0; x <= x1; x++) {
-            double dx = x - *cx, w;
-            if (dx * dx + dy * dy > rr)
-                continue;
-            w = bg - row[x];
-            if (w <= 0)
-                continue;
-            if (w > span)
-                w = span;
-            sw += w;
-            sx += w * x;
-            sy += w * y;
+        double dy = y - *cy, h2 = rr - dy * dy, h, rw = 0, rx = 0;
+        int xa, xb;
+        if (h2 < 0)
+            continue;
+        /* the row's chord of the disk */
+        h = sqrt(h2);
+        xa = (int)ceil(*cx - h);
+        xb = (int)floor(*cx + h);
+        if (xa < x0) xa = x0;
+        if (xb > x1) xb = x1;
+        for (x = xa; x <= xb; x++) {
+            double w = weight[row[x]];
+            rw += w;
+            rx += w * x;
         }
+        sw += rw;
+        sx += rx;
+        sy += rw * y;
     }
     if (sw > 0) {
         *cx = sx / sw;
@@ -43,8 +51,8 @@ void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, doub
 
 /* The mean profile over the rays inside the image, from lo in steps of
  * step; 0 when too few rays are inside. */
-static int mean_profile(const rl_image *img, double cx, double cy, double lo, double step,
-                        double *prof)
+static int mean_profile(const rl_image *img, double cx, double cy, const rl_shape *sh, double lo,
+                        double step, double *prof)
 {
     double ca[EDGE_ANGLES], sa[EDGE_ANGLES], hi = lo + (EDGE_SAMPLES - 1) * step;
     float g[EDGE_SAMPLES];
@@ -53,12 +61,18 @@ static int mean_profile(const rl_image *img, double cx, double cy, double lo, do
     for (i = 0; i < EDGE_SAMPLES; i++)
         prof[i] = 0;
     for (a = 0; a < EDGE_ANGLES; a++) {
+        /* along an ellipse's normalized radius */
+        double c = ca[a], s = sa[a];
+        if (sh != NULL) {
+            double f = rl_shape_step(sh, c, s);
+            c *= f;
+            s *= f;
+        }
         /* a landmark near the border still gets its radius from the side
          * that is there */
-        if (!rl_ray_inside(img, cx + lo * ca[a], cy + lo * sa[a], cx + hi * ca[a], cy + hi * sa[a]))
+        if (!rl_ray_inside(img, cx + lo * c, cy + lo * s, cx + hi * c, cy + hi * s))
             continue;
-        rl_ray_sample(img, cx + lo * ca[a], cy + lo * sa[a], step * ca[a], step * sa[a],
-                      EDGE_SAMPLES, 256, g);
+        rl_ray_sample(img, cx + lo * c, cy + lo * s, step * c, step * s, EDGE_SAMPLES, 256, g);
         for (i = 0; i < EDGE_SAMPLES; i++)
             prof[i] += g[i];
         used++;
@@ -72,10 +86,18 @@ static int mean_profile(const rl_image *img, double cx, double cy, double lo, do
 
 void rl_refine_radius(const rl_image *img, double cx, double cy, double *r)
 {
+    rl_refine_radius_shaped(img, cx, cy, NULL, r);
+}
+
+void rl_refine_radius_shaped(const rl_image *img, double cx, double cy, const rl_shape *sh,
+                             double *r)
+{
     double prof[EDGE_SAMPLES], lo = 0.75 * *r, hi = 1.3 * *r, step = (hi - lo) / (EDGE_SAMPLES - 1);
     double black = 1e9, white, half;
     int i, imin = 0;
-    if (!mean_profile(img, cx, cy, lo, step, prof))
+    if (sh != NULL && rl_shape_is_circle(sh))
+        sh = NULL;
+    if (!mean_profile(img, cx, cy, sh, lo, step, prof))
         return;
     for (i = 0; i < EDGE_SAMPLES; i++)
         if (prof[i] < black) {

@@ -8,6 +8,7 @@
 #define RL_REFINE_H
 
 #include "rl_image.h"
+#include "rl_profile.h"
 #include "rl_recog.h"
 
 /* Darkness-weighted centroid of the disk (*cx, *cy, r): code rings are
@@ -23,5 +24,9 @@ void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, doub
  * a threshold crossing, not the 50% one). Only rays that stay inside the
  * image are used; *r is kept when there is no clear edge. */
 void rl_refine_radius(const rl_image *img, double cx, double cy, double *r);
+
+/* The same with radii in the shape's metric (rl_profile.h). */
+void rl_refine_radius_shaped(const rl_image *img, double cx, double cy, const rl_shape *sh,
+                             double *r);
 
 #endif

@@ -68,7 +68,9 @@ typedef struct {
     double max_radius;    /* largest, px; 0 = half the shorter image side */
     double size_tolerance;/* identified radii within this fraction of the frame's median (0.35) */
     int need;             /* landmarks a pose needs (default 2) */
-    rl_local_policy local;/* when the local pass runs (default RL_LOCAL_AUTO) */
+    rl_local_policy local;/* when the local pass runs (default RL_LOCAL_ALWAYS: on real
+                             ceilings half the landmarks next to lights and most cut ones
+                             are found only there, at a fraction of the frame's time) */
     double near_light;    /* DUCLR: gap to a light of at most this many radii (default 1.5) */
 } rl_recog_config;
 

@@ -45,7 +45,7 @@ rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
     memset(c, 0, sizeof *c);
     c->cam_rate = 10.0;
     c->baud = 115200;
-    c->local = RL_LOCAL_AUTO;
+    c->local = RL_LOCAL_ALWAYS;
     c->min_score = 0.80;
     c->local_min_score = 0.75;
     c->log_interval = 5.0;

@@ -15,7 +15,7 @@
  *     device: /dev/serial0   # a tty, a pty, a file, or "-" for standard output
  *     baud: 115200
  *   recognition:
- *     local: auto            # auto | always | never
+ *     local: always          # always (default) | auto (the paper's) | never
  *     min_score: 0.80        # global pass
  *     local_min_score: 0.75  # local pass
  *   log_interval: 5          # seconds between repeats of one kind of log line
