@@ -136,6 +136,22 @@ static void look(rl_composite_config *cc, const rl_image *img, rl_site_mark *m)
     m->visible = rl_composite_visible(img->width, img->height, m->u, m->v, m->r);
 }
 
+/* An id not yet in the frame (a map holds each id once), when there is one. */
+static int pick_id(rl_composite_config *cc, const int *ids, int n_ids, const rl_site_mark *marks,
+                   int n)
+{
+    int t, i, id = ids[0];
+    for (t = 0; t < 64; t++) {
+        int used = 0;
+        id = ids[(int)urand(cc, 0, n_ids) % n_ids];
+        for (i = 0; i < n; i++)
+            used |= marks[i].id == id;
+        if (!used)
+            break;
+    }
+    return id;
+}
+
 int rl_composite_plan(const rl_image *img, rl_composite_config *cc, const int *ids, int n_ids,
                       rl_site_mark *marks)
 {
@@ -152,7 +168,7 @@ int rl_composite_plan(const rl_image *img, rl_composite_config *cc, const int *i
             if (!find_place(img, cc, kind, marks, n, &m->u, &m->v))
                 break;
             m->kind = kind;
-            m->id = ids[(int)urand(cc, 0, n_ids) % n_ids];
+            m->id = pick_id(cc, ids, n_ids, marks, n);
             look(cc, img, m);
             n++;
         }

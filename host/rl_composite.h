@@ -7,7 +7,8 @@
  * (a little brighter: paper is whiter than tiles), ink that is dark grey
  * rather than black, an ellipse and a rotation (perspective, a sheet not
  * quite square to the camera), veiling glare that lifts the ink next to a
- * lamp, lens blur and sensor noise. Marks are placed in three kinds of
+ * lamp, lens blur and sensor noise; each id once in a frame, as a map
+ * holds it. Marks are placed in three kinds of
  * places: wholly inside and away from lights, within one radius of a
  * light, and cut by the image border (up to half outside).
  *

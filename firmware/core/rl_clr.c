@@ -80,12 +80,25 @@ int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, 
     return n;
 }
 
+/* The larger side of a box. */
+static int box_size(const rl_box *b)
+{
+    int w = b->x1 - b->x0 + 1, h = b->y1 - b->y0 + 1;
+    return w > h ? w : h;
+}
+
+/* A code ring's box is at least 0.36 of its landmark's outer ring (the
+ * smallest zone boundary, ring5's); a larger box around a candidate is
+ * not its outer ring but something else (a lamp's fixture, a wall). */
+#define INNER_MAX_RATIO 3.2
+
 int rl_clr_is_inner(const rl_clr *cand, int n, int i)
 {
     int j;
     for (j = 0; j < n; j++)
         if (j != i && rl_geom_box_inside(&cand[i].box, &cand[j].box) &&
-            !(rl_geom_box_inside(&cand[j].box, &cand[i].box) && j > i))
+            !(rl_geom_box_inside(&cand[j].box, &cand[i].box) && j > i) &&
+            box_size(&cand[j].box) <= INNER_MAX_RATIO * box_size(&cand[i].box))
             return 1;
     return 0;
 }

@@ -36,8 +36,9 @@ typedef struct {
 int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, rl_clr *cand,
                 int cap);
 
-/* 1 if cand[i] lies inside another of the n boxes (of two equal boxes the
- * later one counts as inside). */
+/* 1 if cand[i] lies inside another of the n boxes no more than 3.2 times
+ * its size, as a code ring lies inside its outer ring (of two equal boxes
+ * the later one counts as inside). */
 int rl_clr_is_inner(const rl_clr *cand, int n, int i);
 
 /* Centre, radius and visible fraction of a CLR from its box into d: an
