@@ -7,6 +7,7 @@
 #                        with the plain-C matcher (RL_NO_VECTOR_EXT) instead of the vector one
 #   make demo            the firmware on a bundled drive: poses over a pty, report
 #   make bench           recognition benchmarks (figures, not pass/fail)
+#   make bench-real REAL=DIR  ringloc and AprilTag 3 on real photos with landmarks placed in them
 #   make cross BOARD=rpi4                 cross build for a board, tests under qemu
 #   make package BOARD=rpi4               the board's .deb (build-rpi4/package/)
 #   make flash BOARD=rpi4 TARGET=pi@robot [DRY_RUN=1]  install it over ssh
@@ -17,7 +18,7 @@ BUILD_ASAN ?= build-asan
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 
-.PHONY: all deps host host-test host-test-asan bench demo clean
+.PHONY: all deps host host-test host-test-asan bench bench-real demo clean
 
 # Boards (boards/<name>): cross build, tests under qemu, package, install.
 BOARD       ?= rpi4
@@ -78,6 +79,14 @@ bench: host
 	@[ -f $(BENCH_DIR)/glare/glare_000.png ] || \
 	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/glare --set glare --count $(BENCH_FRAMES) --seed 3
 	$(BUILD)/tools/ringloc-bench $(BENCH_DIR)/640x480 $(BENCH_DIR)/1280x960 --local $(BENCH_DIR)/glare
+
+# Real ceiling photos (PNG, never committed: their path on the command
+# line) with ring landmarks and AprilTag twins placed in them.
+REAL ?=
+bench-real: host
+	@[ -n "$(REAL)" ] || { echo "bench-real: give the photos' folder: make bench-real REAL=DIR (PNG files)" >&2; exit 2; }
+	@[ -d "$(REAL)" ] || { echo "bench-real: $(REAL): no such folder" >&2; exit 2; }
+	$(BUILD)/tools/ringloc-bench --real $(REAL)
 
 clean:
 	rm -rf $(BUILD) $(BUILD_ASAN)

@@ -21,6 +21,7 @@
 #include "rl_png.h"
 #include "rl_clock.h"
 #include "rl_report.h"
+#include "bench_real.h"
 
 #define REPEAT 5
 #define MAX_FRAMES 256
@@ -195,8 +196,9 @@ int main(int argc, char **argv)
     int i, rc = 0, header = 0;
     if (argc < 2 || strcmp(argv[1], "--help") == 0) {
         fprintf(argc < 2 ? stderr : stdout,
-                "usage: ringloc-bench DIR... [--local GLARE_DIR]\n"
-                "  DIR: twin frames from ringloc-render --twin; GLARE_DIR: its --set glare frames\n");
+                "usage: ringloc-bench DIR... [--local GLARE_DIR] [--real PHOTO_DIR]\n"
+                "  DIR: twin frames from ringloc-render --twin; GLARE_DIR: its --set glare frames;\n"
+                "  PHOTO_DIR: real ceiling photos (PNG) to place rings and AprilTag twins into\n");
         return argc < 2 ? 2 : 0;
     }
     /* one core: both detectors on the same one */
@@ -208,6 +210,10 @@ int main(int argc, char **argv)
     apriltag_detector_add_family(td, tf);
     td->nthreads = 1; /* quad_decimate stays at its default */
     for (i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--real") == 0 && i + 1 < argc) {
+            rc |= rl_bench_real(argv[++i], 3, 1, 25.7, td, tf);
+            continue;
+        }
         if (strcmp(argv[i], "--local") == 0 && i + 1 < argc) {
             rc |= bench_local(argv[++i]);
             continue;
