@@ -235,6 +235,12 @@ static void stats_set(void **state)
         assert_true(c.border > 10);
         assert_true(c.border_ident >= 0.90 * c.border);
     }
+    if (strcmp(set, "illum") == 0) {
+        /* issue 14: vignetting, fall-off, a shadow and grey ink as real
+         * ceilings have them: >= 97% of complete landmarks */
+        assert_true(c.complete > 40);
+        assert_true(c.complete_ident >= 0.97 * c.complete);
+    }
     if (strcmp(set, "glare") == 0) {
         /* issue 5: >= 97% of landmarks within one radius of a light */
         assert_true(c.glare > 20);

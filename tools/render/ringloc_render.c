@@ -57,6 +57,9 @@ typedef struct {
     double motion, motion_dir; /* motion blur: camera travel during exposure, m */
     double halo_amp, halo_sigma;
     double gain, vignette, blur, noise;
+    double ink;                /* the landmarks' ink radiance (INK: black; more: grey) */
+    double ramp, ramp_dir;     /* light falling off across the frame: fraction, direction */
+    double shadow, shadow_at, shadow_dir; /* a shadow (a wall beside the ceiling): depth, edge, side */
     int twin;
     int n;
     object obj[MAX_OBJ];
@@ -132,7 +135,7 @@ static double object_radiance(const scene *s, const object *o, double lx, double
         if (!s->twin) {
             if (r > o->a)
                 return -1;
-            return rl_family_dark_at(&s->fam, o->id, r / o->a) ? INK : PAPER;
+            return rl_family_dark_at(&s->fam, o->id, r / o->a) ? s->ink : PAPER;
         } else {
             /* tag36h11: 10 x 10 cells, black border 8 cells = D */
             double cell = 2 * o->a / 8.0;
@@ -140,7 +143,7 @@ static double object_radiance(const scene *s, const object *o, double lx, double
             image_u8_t *im = tag_images[o->id % 32];
             if (ci < 0 || cj < 0 || ci >= 10 || cj >= 10)
                 return -1;
-            return im->buf[cj * im->stride + ci] < 128 ? INK : PAPER;
+            return im->buf[cj * im->stride + ci] < 128 ? s->ink : PAPER;
         }
     case OBJ_SMOKE: /* white disk, grey ring, LED */
         if (r > o->a) return -1;
@@ -292,6 +295,19 @@ static void gauss_blur(double *img, int W, int H, double sigma)
     free(tmp);
 }
 
+/* Light across the frame at normalized image offset (du, dv) from the
+ * centre: a linear fall-off, and a soft-edged shadow on one side. */
+static double illumination(const scene *s, double du, double dv)
+{
+    double along = du * cos(s->ramp_dir) + dv * sin(s->ramp_dir), f = 1.0;
+    double side = du * cos(s->shadow_dir) + dv * sin(s->shadow_dir);
+    if (s->ramp > 0)
+        f *= 1.0 - s->ramp * 0.5 * (1.0 + fmax(-1.0, fmin(1.0, along)));
+    if (s->shadow > 0)
+        f *= 1.0 - s->shadow / (1.0 + exp(-(side - s->shadow_at) / 0.04));
+    return f;
+}
+
 static int render(const scene *s, uint8_t *out)
 {
     int W = s->cam.width, H = s->cam.height, x, y, a, b;
@@ -313,6 +329,7 @@ static int render(const scene *s, uint8_t *out)
                 }
             acc /= SUB * SUB;
             acc *= 1.0 - s->vignette * (du * du + dv * dv) / (rmax * rmax);
+            acc *= illumination(s, du / rmax, dv / rmax);
             lin[(size_t)y * W + x] = acc * s->gain;
         }
     /* tone curve first (the sensor clips), then optics blur, then noise */
@@ -330,10 +347,10 @@ static int render(const scene *s, uint8_t *out)
 /* ---- scenes ---- */
 
 typedef enum { SET_CLEAN, SET_CLUTTERED, SET_GLARE, SET_BORDER, SET_CLUTTER_ONLY, SET_DIM,
-               SET_BLUR, SET_MOTION, SET_PATH } set_kind;
+               SET_BLUR, SET_MOTION, SET_ILLUM, SET_DEGRADED, SET_PATH } set_kind;
 
 static const char *set_names[] = {"clean", "cluttered", "glare", "border", "clutter_only",
-                                  "dim", "blur", "motion", "path"};
+                                  "dim", "blur", "motion", "illum", "degraded", "path"};
 
 static int add_obj(scene *s, obj_kind k, double x, double y, double rot, double a, double b, int id)
 {
@@ -440,7 +457,8 @@ static void random_scene(scene *s, set_kind kind)
                 }
             } else if (p < 0.65 && kind != SET_CLEAN) {
                 add_obj(s, OBJ_LIGHT, x, y, 0, 0.29, 0.29, 0);
-            } else if (p < 0.85 && (kind == SET_CLUTTERED || kind == SET_BORDER || kind == SET_DIM)) {
+            } else if (p < 0.85 && (kind == SET_CLUTTERED || kind == SET_BORDER || kind == SET_DIM ||
+                                    kind == SET_ILLUM || kind == SET_DEGRADED)) {
                 add_clutter(s, x + urand(-0.12, 0.12), y + urand(-0.12, 0.12), p < 0.72);
             }
         }
@@ -467,6 +485,8 @@ static void effects(scene *s, set_kind kind)
     s->motion = 0;
     s->halo_amp = urand(0.3, 0.7);
     s->halo_sigma = urand(0.03, 0.07);
+    s->ink = INK;
+    s->ramp = s->shadow = 0;
     switch (kind) {
     case SET_CLEAN: s->vignette = 0.1; s->noise = 1.0; break;
     case SET_CLUTTERED: s->vignette = urand(0.1, 0.4); s->blur = urand(0.4, 1.0); s->noise = urand(1, 3); s->gain = urand(0.7, 1.1); break;
@@ -476,6 +496,28 @@ static void effects(scene *s, set_kind kind)
     case SET_DIM: s->gain = urand(0.25, 0.4); s->noise = 2.5; s->vignette = 0.35; break;
     case SET_BLUR: s->blur = urand(1.2, 1.8); break;
     case SET_MOTION: s->motion = urand(0.015, 0.03); s->motion_dir = urand(0, 2 * M_PI); break;
+    case SET_ILLUM:
+        /* what real ceilings do to a frame: lens vignetting as strong as a
+         * wide-angle's, light falling off across the frame, a shadow on
+         * one side (a wall), ink that is dark grey rather than black */
+        s->vignette = urand(0.45, 0.6);
+        s->ramp = urand(0.2, 0.5);
+        s->ramp_dir = urand(0, 2 * M_PI);
+        s->shadow = urand(0.3, 0.6);
+        s->shadow_at = urand(0.4, 0.8);
+        s->shadow_dir = urand(0, 2 * M_PI);
+        s->ink = urand(0.06, 0.2);
+        s->blur = urand(0.5, 1.0);
+        s->noise = urand(1.5, 3);
+        break;
+    case SET_DEGRADED:
+        /* blur 1.1 px, 4 px of motion, 0.35 of the exposure, read noise 3 DN */
+        s->blur = 1.1;
+        s->motion = 4.0 / s->cam.fx * s->distance;
+        s->motion_dir = urand(0, 2 * M_PI);
+        s->gain = 0.35;
+        s->noise = 3.0;
+        break;
     case SET_PATH: break;
     }
 }
@@ -577,7 +619,9 @@ static const char *help =
     "                      [--mount X,Y,YAW] [--write-map FILE] [--write-camera FILE]\n"
     "                      [--write-robot FILE]\n\n"
     "Render ceiling fixtures with ground truth (NAME_NNN.png + NAME_NNN.yaml).\n"
-    "  --set NAME      clean, cluttered, glare, border, clutter_only, dim, blur, motion:\n"
+    "  --set NAME      clean, cluttered, glare, border, clutter_only, dim, blur, motion,\n"
+    "                  illum (vignetting, fall-off, a shadow, grey ink), degraded (blur\n"
+    "                  1.1 px, 4 px motion, 0.35 exposure, 3 DN noise):\n"
     "                  random scenes around the paper's set-up (ring5, 0.21 m landmarks,\n"
     "                  1.87 m from camera to ceiling, 0.61 m tiles)\n"
     "  --path KIND     straight, rect or circle: frames along a robot path under a fixed\n"
