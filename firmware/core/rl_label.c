@@ -125,26 +125,25 @@ static rl_err add_run(rl_label *lb, int a, int b, int *n, int *j, int prev_end)
     return RL_OK;
 }
 
-/* The row's tile thresholds (NULL without a map) and the largest of them. */
-static const uint8_t *row_thresholds(const rl_label_map *map, int y, int sh, int *hi_max)
+/* 1 if a tile row's thresholds lie within a few grey levels of each
+ * other (an evenly lit row): its runs are then found 8 pixels at a time
+ * under the largest (*hi), each pixel checked against its own tile's. */
+static int nearly_even(const uint8_t *his, int nx, int *hi)
 {
-    const uint8_t *his;
-    int i;
-    if (map == NULL)
-        return NULL;
-    his = map->hi + (size_t)(y >> sh) * (size_t)map->nx;
-    *hi_max = 0;
-    for (i = 0; i < map->nx; i++)
-        if (his[i] > *hi_max)
-            *hi_max = his[i];
-    return his;
+    int i, lo = 255, top = 0;
+    for (i = 0; i < nx; i++) {
+        if (his[i] < lo) lo = his[i];
+        if (his[i] > top) top = his[i];
+    }
+    *hi = top;
+    return top - lo <= 12;
 }
 
 /* The runs of pixels in [lo, hi) (hi per tile column of the row's tile
  * row when map is given), row by row. RL_ELIMIT past cap_runs. */
 static rl_err collect_runs(rl_label *lb, const rl_image *img, int lo, int hi, const rl_label_map *map)
 {
-    int x, y, n = 0, prev_start = 0, prev_end = 0, sh = 0, hi_max = hi;
+    int x, y, n = 0, prev_start = 0, prev_end = 0, sh = 0, even = 0;
     const uint8_t *his = NULL;
     rl_err e;
     while (map && (1 << sh) < map->tile)
@@ -152,20 +151,26 @@ static rl_err collect_runs(rl_label *lb, const rl_image *img, int lo, int hi, co
     for (y = 0; y < img->height; y++) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
         int start = n, j = prev_start;
-        if (map && (y & ((1 << sh) - 1)) == 0)
-            his = row_thresholds(map, y, sh, &hi_max);
+        if (map && (y & ((1 << sh) - 1)) == 0) {
+            his = map->hi + (size_t)(y >> sh) * (size_t)map->nx;
+            even = nearly_even(his, map->nx, &hi);
+        }
         lb->row[y] = n;
         x = 0;
         while (x < img->width) {
-            int a;
-            /* skip what is outside the band at the row's largest threshold
-             * (8 pixels at a time), then check the pixel's own tile's;
-             * unsigned trick: lo <= v < hi  <=>  (v - lo) < (hi - lo) */
-            x = skip_outside(row, x, img->width, lo, hi_max);
-            if (x >= img->width)
-                break;
-            if (his && (unsigned)(row[x] - lo) >= (unsigned)(his[x >> sh] - lo)) {
-                x++;
+            int a, end = img->width, h = hi;
+            if (his && !even) {
+                /* one tile column at a time, each with its own threshold */
+                end = ((x >> sh) + 1) << sh;
+                end = end < img->width ? end : img->width;
+                h = his[x >> sh];
+            }
+            /* unsigned trick: lo <= v < hi  <=>  (v - lo) < (hi - lo) */
+            x = h > lo ? skip_outside(row, x, end, lo, h) : end;
+            if (x >= end)
+                continue;
+            if (even && (unsigned)(row[x] - lo) >= (unsigned)(his[x >> sh] - lo)) {
+                x++; /* under the row's largest threshold, not its own tile's */
                 continue;
             }
             a = x;
