@@ -35,6 +35,32 @@ static double contrast_span(const rl_levels *local, const rl_profile *p)
     return q > 0 && q < span ? q : span;
 }
 
+/* Radius, profile and match of candidate d as a circle and, when the CLR
+ * looks elliptical, as that ellipse: the better match stands. An ellipse
+ * from a region's moments is perspective or the lens's distortion, or a
+ * circle smeared by motion (its rings are not ellipses then): the match
+ * tells which. */
+static void fit_shape(const rl_image *img, const rl_templates *tt, const rl_shape *shape,
+                      rl_detection *d, rl_profile *p, rl_match *m)
+{
+    double r = d->radius;
+    rl_refine_radius(img, d->u, d->v, &d->radius);
+    rl_profile_gather(img, d->u, d->v, d->radius, p);
+    rl_match_all(tt, p, m);
+    if (!rl_shape_is_circle(shape)) {
+        rl_profile pe;
+        rl_match me;
+        rl_refine_radius_shaped(img, d->u, d->v, shape, &r);
+        rl_profile_gather_shaped(img, d->u, d->v, r, shape, &pe);
+        rl_match_all(tt, &pe, &me);
+        if (me.score > m->score) {
+            d->radius = r;
+            *p = pe;
+            *m = me;
+        }
+    }
+}
+
 void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *c, rl_result *res)
 {
     rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_GLOBAL);
@@ -56,15 +82,12 @@ void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *
     local.fg *= scale;
     if (d.complete)
         rl_refine_centre(img, &local, &d.u, &d.v, d.radius);
-    /* the radius in the ellipse's metric: the CLR box's mean radius is
-     * near it */
-    rl_refine_radius_shaped(img, d.u, d.v, &c->shape, &d.radius);
     if (d.visible < GLOBAL_MIN_VISIBLE) {
+        rl_refine_radius(img, d.u, d.v, &d.radius);
         rl_result_add_unidentified(res, &d);
         return;
     }
-    rl_profile_gather_shaped(img, d.u, d.v, d.radius, &c->shape, &p);
-    rl_match_all(&rec->templates, &p, &m);
+    fit_shape(img, &rec->templates, &c->shape, &d, &p, &m);
     d.score = m.score;
     if (rl_accept(&rule, &m, contrast_span(&local, &p)) &&
         !(rl_inner_possible(res, &d) && rl_inner_enclosed(img, res->levels.light, d.u, d.v, d.radius))) {

@@ -78,6 +78,33 @@ static void search_crosses(const rl_polar *pol, search_state *st)
     }
 }
 
+/* Radius scales at which the winner's twins are scored. */
+#define TWIN_SCALES 6
+static const double twin_scale[TWIN_SCALES] = {0.94, 0.97, 1.0, 1.03, 1.06, 1.1};
+
+/* The winner's twins in zones 1 and 2 (the codes that differ in a zone
+ * next to the outer ring, the ones a radius error or blur confuses most)
+ * at their best radius near the found one: when one comes close, the
+ * evidence between the two codes is close, and m->second says so. */
+static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, double y, double s,
+                       rl_match *m)
+{
+    int twins[2], n = 0, z, k;
+    for (z = 1; z <= 2; z++) {
+        int t = m->id ^ (1 << (tt->fam.bits - z));
+        if (rl_family_valid(&tt->fam, t))
+            twins[n++] = t;
+    }
+    for (k = 0; k < TWIN_SCALES && n > 0; k++) {
+        rl_profile p;
+        rl_match mm;
+        rl_polar_profile(pol, x, y, s * twin_scale[k], &p);
+        rl_match_ids(tt, &p, twins, n, -1, &mm); /* at every blur */
+        if (mm.id >= 0 && mm.score > m->second)
+            m->second = mm.score;
+    }
+}
+
 void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *img, int light,
                         double *cx, double *cy, double *r, rl_match *m)
 {
@@ -96,11 +123,14 @@ void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *i
     st.score = m->score;
     search_try(pol, &st, 0, 0, SWEEP_SCALE);
     search_crosses(pol, &st);
-    if (st.x == 0 && st.y == 0 && st.s == 1.0)
-        return; /* the first match stands: every id was scored there */
-    rl_polar_profile(pol, st.x, st.y, st.s, &p);
-    rl_match_all(tt, &p, m);
-    *cx += st.x;
-    *cy += st.y;
-    *r *= st.s;
+    if (st.x != 0 || st.y != 0 || st.s != 1.0) {
+        /* every id at every blur where the search ended */
+        rl_polar_profile(pol, st.x, st.y, st.s, &p);
+        rl_match_all(tt, &p, m);
+        *cx += st.x;
+        *cy += st.y;
+        *r *= st.s;
+    }
+    if (m->id >= 0)
+        twin_check(tt, pol, st.x, st.y, st.s, m);
 }
