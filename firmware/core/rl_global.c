@@ -35,30 +35,28 @@ static double contrast_span(const rl_levels *local, const rl_profile *p)
     return q > 0 && q < span ? q : span;
 }
 
-/* Radius, profile and match of candidate d as a circle and, when the CLR
- * looks elliptical, as that ellipse: the better match stands. An ellipse
- * from a region's moments is perspective or the lens's distortion, or a
- * circle smeared by motion (its rings are not ellipses then): the match
- * tells which. */
-static void fit_shape(const rl_image *img, const rl_templates *tt, const rl_shape *shape,
-                      rl_detection *d, rl_profile *p, rl_match *m)
+/* Radius, profile and match of candidate d as an ellipse of the given
+ * shape; 1 (and d, p, m replaced) when that matches better than what
+ * they hold. An ellipse from a region's moments is perspective or the
+ * lens's distortion, or a circle smeared by motion (its rings are not
+ * ellipses then): the match tells which. */
+static int try_ellipse(const rl_image *img, const rl_templates *tt, const rl_shape *shape,
+                       rl_detection *d, rl_profile *p, rl_match *m)
 {
+    rl_profile pe;
+    rl_match me;
     double r = d->radius;
-    rl_refine_radius(img, d->u, d->v, &d->radius);
-    rl_profile_gather(img, d->u, d->v, d->radius, p);
-    rl_match_all(tt, p, m);
-    if (!rl_shape_is_circle(shape)) {
-        rl_profile pe;
-        rl_match me;
-        rl_refine_radius_shaped(img, d->u, d->v, shape, &r);
-        rl_profile_gather_shaped(img, d->u, d->v, r, shape, &pe);
-        rl_match_all(tt, &pe, &me);
-        if (me.score > m->score) {
-            d->radius = r;
-            *p = pe;
-            *m = me;
-        }
-    }
+    if (rl_shape_is_circle(shape))
+        return 0;
+    rl_refine_radius_shaped(img, d->u, d->v, shape, &r);
+    rl_profile_gather_shaped(img, d->u, d->v, r, shape, &pe);
+    rl_match_all(tt, &pe, &me);
+    if (!(me.score > m->score))
+        return 0;
+    d->radius = r;
+    *p = pe;
+    *m = me;
+    return 1;
 }
 
 void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *c, rl_result *res)
@@ -68,7 +66,7 @@ void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *
     rl_levels local;
     rl_profile p;
     rl_match m;
-    double scale;
+    double scale, box_r;
     memset(&d, 0, sizeof d);
     d.id = -1;
     d.pass = RL_PASS_GLOBAL;
@@ -87,7 +85,17 @@ void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *
         rl_result_add_unidentified(res, &d);
         return;
     }
-    fit_shape(img, &rec->templates, &c->shape, &d, &p, &m);
+    /* as a circle first; an ellipse only when the circle is not taken */
+    box_r = d.radius;
+    rl_refine_radius(img, d.u, d.v, &d.radius);
+    rl_profile_gather(img, d.u, d.v, d.radius, &p);
+    rl_match_all(&rec->templates, &p, &m);
+    if (!rl_accept(&rule, &m, contrast_span(&local, &p))) {
+        double r = d.radius;
+        d.radius = box_r;
+        if (!try_ellipse(img, &rec->templates, &c->shape, &d, &p, &m))
+            d.radius = r;
+    }
     d.score = m.score;
     if (rl_accept(&rule, &m, contrast_span(&local, &p)) &&
         !(rl_inner_possible(res, &d) && rl_inner_enclosed(img, res->levels.light, d.u, d.v, d.radius))) {

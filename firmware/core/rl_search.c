@@ -79,8 +79,8 @@ static void search_crosses(const rl_polar *pol, search_state *st)
 }
 
 /* Radius scales at which the winner's twins are scored. */
-#define TWIN_SCALES 6
-static const double twin_scale[TWIN_SCALES] = {0.94, 0.97, 1.0, 1.03, 1.06, 1.1};
+#define TWIN_SCALES 4
+static const double twin_scale[TWIN_SCALES] = {0.95, 1.0, 1.05, 1.1};
 
 /* The winner's twins in zones 1 and 2 (the codes that differ in a zone
  * next to the outer ring, the ones a radius error or blur confuses most)
