@@ -251,7 +251,7 @@ static void print_table(const tally *t, const check *k, FILE *f)
     fprintf(f, "false landmarks on the photos as they are: %ld", t->false_as_is);
     for (i = 0; i < 256; i++)
         if (t->false_by_id[i])
-            fprintf(f, "%s id %d: %ld", any++ ? "," : " (", i, t->false_by_id[i]);
+            fprintf(f, "%sid %d: %ld", any++ ? ", " : " (", i, t->false_by_id[i]);
     fprintf(f, "%s\nfalse landmarks elsewhere on the composited photos: %ld\n", any ? ")" : "",
             t->false_composited);
     fprintf(f, "ids to leave out of the map:");

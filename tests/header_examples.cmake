@@ -39,4 +39,6 @@ foreach(h IN LISTS HEADERS)
   file(WRITE ${OUT_DIR}/ex_${name}.c.new "${src}")
   execute_process(COMMAND ${CMAKE_COMMAND} -E copy_if_different ${OUT_DIR}/ex_${name}.c.new
                   ${OUT_DIR}/ex_${name}.c)
+  # newer than its header from now on, so the build does not run this again
+  file(TOUCH_NOCREATE ${OUT_DIR}/ex_${name}.c)
 endforeach()
