@@ -115,11 +115,13 @@ void rl_match_list_make(const rl_templates *tt, const int *ids, int n, int blur,
                         rl_match_list *ls)
 {
     int j;
+    int b;
     memset(ls, 0, sizeof *ls);
-    for (j = 0; j < n && ls->n < RL_MATCH_BLOCK; j++) {
+    for (j = 0; j < n; j++) {
         int i = rl_templates_find(tt, ids[j]);
-        if (i >= 0)
-            list_add(tt, i, blur, ls);
+        for (b = blur < 0 ? 0 : blur; i >= 0 && b < (blur < 0 ? RL_BLUR_LEVELS : blur + 1) &&
+                                      ls->n < RL_MATCH_BLOCK; b++)
+            list_add(tt, i, b, ls);
     }
 }
 

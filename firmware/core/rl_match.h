@@ -47,8 +47,9 @@ void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m);
 void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, int n, int blur,
                   rl_match *m);
 
-/* A list of the templates of n ids at one blur level; ids past
- * RL_MATCH_BLOCK, or not in the table, are left out. */
+/* A list of the templates of n ids at one blur level (every level when
+ * blur < 0); columns past RL_MATCH_BLOCK, and ids not in the table, are
+ * left out. */
 void rl_match_list_make(const rl_templates *tt, const int *ids, int n, int blur,
                         rl_match_list *ls);
 

@@ -90,16 +90,20 @@ static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, do
                        rl_match *m)
 {
     int twins[2], n = 0, z, k;
+    rl_match_list ls;
     for (z = 1; z <= 2; z++) {
         int t = m->id ^ (1 << (tt->fam.bits - z));
         if (rl_family_valid(&tt->fam, t))
             twins[n++] = t;
     }
-    for (k = 0; k < TWIN_SCALES && n > 0; k++) {
+    if (n == 0)
+        return;
+    rl_match_list_make(tt, twins, n, -1, &ls); /* at every blur: one block */
+    for (k = 0; k < TWIN_SCALES; k++) {
         rl_profile p;
         rl_match mm;
         rl_polar_profile(pol, x, y, s * twin_scale[k], &p);
-        rl_match_ids(tt, &p, twins, n, -1, &mm); /* at every blur */
+        rl_match_list_score(&ls, &p, &mm);
         if (mm.id >= 0 && mm.score > m->second)
             m->second = mm.score;
     }
