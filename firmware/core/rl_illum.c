@@ -35,8 +35,8 @@ rl_err rl_illum_init(rl_illum *il, rl_ws *ws, int W, int H)
 /* A tile's ceiling level: the mean of its samples at or above the frame's
  * dark threshold when they are at least a quarter of them, else the mean
  * of them all (a tile in a shadow, or inside a landmark's ink: its
- * neighbours then tell); every fourth row and column (64 samples of a
- * 32 px tile), lamps left out, in one branch-free pass (a ceiling's
+ * neighbours then tell); every fourth row and eighth column (32 samples of
+ * a 32 px tile), lamps left out, in one branch-free pass (a ceiling's
  * texture makes the tests unpredictable); 0 when it is all lamp. */
 static int tile_level(const rl_image *img, int x0, int y0, int x1, int y1, int thr, int light)
 {
@@ -44,7 +44,7 @@ static int tile_level(const rl_image *img, int x0, int y0, int x1, int y1, int t
     int x, y;
     for (y = y0; y < y1; y += 4) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
-        for (x = x0; x < x1; x += 4) {
+        for (x = x0; x < x1; x += 8) {
             unsigned v = row[x], m = v < (unsigned)light, h = m & (v >= (unsigned)thr);
             sum += v * m;
             n += m;
@@ -52,7 +52,7 @@ static int tile_level(const rl_image *img, int x0, int y0, int x1, int y1, int t
             n_hi += h;
         }
     }
-    if (n < 4)
+    if (n < 3)
         return 0;
     return (int)(4 * n_hi >= n ? sum_hi / n_hi : sum / n);
 }
