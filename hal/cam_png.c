@@ -1,7 +1,6 @@
 /* PNG-sequence camera: a directory of PNGs (sorted by name) or a text file
  * listing one PNG per line, played at a rate. Every frame is decoded at
  * open, so grabbing never allocates or touches the disk. */
-#include <dirent.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,11 +16,6 @@ typedef struct {
     uint64_t t0, period_us;
     int loop;
 } png_state;
-
-static int cmp_str(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
 
 static void png_close(rl_cam *c)
 {
@@ -81,23 +75,9 @@ rl_err rl_cam_open_png(rl_cam *c, const rl_cam_config *cc, char *err, size_t err
         return RL_ENOTFOUND;
     }
     if (S_ISDIR(st.st_mode)) {
-        DIR *d = opendir(dev);
-        struct dirent *ent;
-        while (d && (ent = readdir(d)) != NULL) {
-            size_t len = strlen(ent->d_name);
-            if (len < 5 || strcmp(ent->d_name + len - 4, ".png") != 0)
-                continue;
-            if (n == cap) {
-                cap = cap ? 2 * cap : 64;
-                names = realloc(names, sizeof *names * (size_t)cap);
-            }
-            names[n] = malloc(strlen(dev) + len + 2);
-            sprintf(names[n], "%s/%s", dev, ent->d_name);
-            n++;
-        }
-        if (d)
-            closedir(d);
-        qsort(names, (size_t)n, sizeof *names, cmp_str);
+        if ((e = rl_png_list(dev, &names, &n, err, errlen)) != RL_OK)
+            return e;
+        cap = n;
     } else {
         /* a list file: one PNG per line, relative to the list's folder */
         FILE *f = fopen(dev, "r");
@@ -123,7 +103,7 @@ rl_err rl_cam_open_png(rl_cam *c, const rl_cam_config *cc, char *err, size_t err
     }
     if (n == 0) {
         snprintf(err, errlen, "%s: no PNG frames", dev);
-        free(names);
+        rl_png_list_free(names, 0);
         return RL_ENOTFOUND;
     }
     s = calloc(1, sizeof *s);

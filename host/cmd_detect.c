@@ -31,9 +31,6 @@ static const char *detect_help =
     "                    than 2 were identified) or never\n"
     "  --min-score R     Pearson correlation needed to accept an id (default 0.80)\n";
 
-/* Options shared by detect and locate. */
-int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config *cfg,
-                        const char **family);
 
 int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config *cfg,
                         const char **family)
@@ -56,8 +53,6 @@ int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config
     return 0;
 }
 
-/* "out.png" for one image; "out-<stem of image>.png" for several. */
-void rl_cli_annotate_name(char *buf, size_t len, const char *out, const char *image, int several);
 
 void rl_cli_annotate_name(char *buf, size_t len, const char *out, const char *image, int several)
 {

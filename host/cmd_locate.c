@@ -31,9 +31,6 @@ static const char *locate_help =
     "  --local POLICY   local pass: always (default), auto (the paper's: when fewer\n"
     "                   than 2 were identified) or never\n";
 
-int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config *cfg,
-                        const char **family);
-void rl_cli_annotate_name(char *buf, size_t len, const char *out, const char *image, int several);
 
 int rl_cmd_locate(int argc, char **argv)
 {

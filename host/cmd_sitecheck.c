@@ -2,7 +2,6 @@
  * photos taken there with the robot's camera: the false landmarks it
  * reports on them as they are, and the recognition rates when landmarks
  * are placed into them the way printed sheets would look there. */
-#include <dirent.h>
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
@@ -18,8 +17,6 @@
 #include "rl_png.h"
 #include "rl_report.h"
 
-int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config *cfg,
-                        const char **family);
 
 static const char *help =
     "usage: ringloc site-check [--family ring5] [--map MAP.yaml]\n"
@@ -60,52 +57,39 @@ typedef struct {
     double us_total;
 } tally;
 
-static int cmp_str(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
-
-static int is_png(const char *name)
-{
-    size_t n = strlen(name);
-    return n > 4 && strcasecmp(name + n - 4, ".png") == 0;
-}
-
 /* The photos: every PNG of a folder (sorted), or the files given. */
 static int list_photos(const char *C, int argc, char **argv, char ***out)
 {
-    char **list = malloc(sizeof(char *) * MAX_PHOTOS);
-    int n = 0, i;
+    char **list = malloc(sizeof(char *) * MAX_PHOTOS), err[512];
+    int n = 0, i, j;
     if (list == NULL)
         return -1;
     for (i = 0; i < argc; i++) {
         struct stat st;
-        if (stat(argv[i], &st) != 0) {
-            rl_cli_fail(C, RL_EXIT_FAIL, "%s: no such file or folder", argv[i]);
-            free(list);
+        char **in;
+        int k;
+        if (stat(argv[i], &st) != 0)
+            snprintf(err, sizeof err, "%s: no such file or folder", argv[i]);
+        else if (!S_ISDIR(st.st_mode) || rl_png_list(argv[i], &in, &k, err, sizeof err) == RL_OK)
+            err[0] = '\0';
+        if (err[0]) {
+            rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+            rl_png_list_free(list, n);
             return -1;
         }
-        if (S_ISDIR(st.st_mode)) {
-            DIR *d = opendir(argv[i]);
-            struct dirent *e;
-            if (d == NULL) {
-                rl_cli_fail(C, RL_EXIT_FAIL, "%s: cannot open the folder", argv[i]);
-                free(list);
-                return -1;
-            }
-            while ((e = readdir(d)) != NULL && n < MAX_PHOTOS)
-                if (is_png(e->d_name)) {
-                    size_t len = strlen(argv[i]) + strlen(e->d_name) + 2;
-                    if ((list[n] = malloc(len)) != NULL)
-                        snprintf(list[n++], len, "%s/%s", argv[i], e->d_name);
-                }
-            closedir(d);
-        } else if (n < MAX_PHOTOS) {
-            list[n++] = strdup(argv[i]);
+        if (!S_ISDIR(st.st_mode)) {
+            if (n < MAX_PHOTOS)
+                list[n++] = strdup(argv[i]);
+            continue;
         }
+        for (j = 0; j < k; j++) {
+            if (n < MAX_PHOTOS)
+                list[n++] = in[j];
+            else
+                free(in[j]);
+        }
+        free(in);
     }
-    if (n > 0)
-        qsort(list, (size_t)n, sizeof *list, cmp_str);
     *out = list;
     return n;
 }
@@ -119,15 +103,6 @@ static const char *stem(const char *path, char *buf, size_t len)
     return buf;
 }
 
-/* The mark a detection belongs to, or -1. */
-static int mark_of(const rl_site_mark *marks, int n, const rl_detection *d)
-{
-    int i;
-    for (i = 0; i < n; i++)
-        if (hypot(d->u - marks[i].u, d->v - marks[i].v) < 0.5 * marks[i].r)
-            return i;
-    return -1;
-}
 
 /* A detection at the place of a false landmark the photo already had. */
 static int seen_as_is(const rl_result *as_is, const rl_detection *d)
@@ -204,7 +179,7 @@ static void photo_composited(check *k, const char *path, const rl_image *photo, 
         t->placed[marks[i].kind]++;
     for (i = 0; i < res->n_landmarks; i++) {
         const rl_detection *d = &res->landmarks[i];
-        int m = mark_of(marks, n, d);
+        int m = rl_composite_mark_at(marks, n, d->u, d->v);
         if (m < 0) {
             t->false_composited += !seen_as_is(as_is, d);
         } else if (d->id == marks[m].id) {
@@ -237,13 +212,25 @@ static double pct(long a, long b)
     return b > 0 ? 100.0 * a / b : 0.0;
 }
 
+static double ms_per_frame(const tally *t)
+{
+    return t->frames ? t->us_total / t->frames / 1000.0 : 0.0;
+}
+
+/* An id to leave out of the map: the site's own objects pass for it, or
+ * landmarks placed there were misread as it. */
+static int leave_out(const tally *t, int id)
+{
+    return t->false_by_id[id] || t->wrong_by_id[id];
+}
+
 static void print_table(const tally *t, const check *k, FILE *f)
 {
     static const char *rows[] = {"wholly inside", "within 1 R of a light", "cut by the border"};
     int i, any = 0;
     fprintf(f, "site-check: %ld photos, %d rounds, radius %.1f px, seed %llu, %.2f ms per frame\n",
             t->photos, k->rounds, k->cc.radius_px, (unsigned long long)k->cc.seed,
-            t->frames ? t->us_total / t->frames / 1000.0 : 0.0);
+            ms_per_frame(t));
     fprintf(f, "%-24s %8s %10s %8s %6s\n", "landmarks placed", "placed", "identified", "rate", "wrong");
     for (i = 0; i < 3; i++)
         fprintf(f, "%-24s %8ld %10ld %7.1f%% %6ld\n", rows[i], t->placed[i], t->found[i],
@@ -256,7 +243,7 @@ static void print_table(const tally *t, const check *k, FILE *f)
             t->false_composited);
     fprintf(f, "ids to leave out of the map:");
     for (i = any = 0; i < 256; i++)
-        if (t->false_by_id[i] || t->wrong_by_id[i])
+        if (leave_out(t, i))
             fprintf(f, " %d%s", i, (any++, t->false_by_id[i] ? " (site objects look like it)" : " (misread)"));
     fprintf(f, "%s\n", any ? "" : " none");
 }
@@ -267,7 +254,7 @@ static void print_json(const tally *t, const check *k, FILE *f)
     int i, any = 0;
     fprintf(f, "{\"photos\": %ld, \"rounds\": %d, \"radius_px\": %.2f, \"seed\": %llu, \"ms_per_frame\": %.3f",
             t->photos, k->rounds, k->cc.radius_px, (unsigned long long)k->cc.seed,
-            t->frames ? t->us_total / t->frames / 1000.0 : 0.0);
+            ms_per_frame(t));
     for (i = 0; i < 3; i++)
         fprintf(f, ", \"%s\": {\"placed\": %ld, \"identified\": %ld, \"rate\": %.4f, \"wrong\": %ld}",
                 keys[i], t->placed[i], t->found[i], pct(t->found[i], t->placed[i]) / 100.0, t->wrong[i]);
@@ -278,7 +265,7 @@ static void print_json(const tally *t, const check *k, FILE *f)
             fprintf(f, "%s\"%d\": %ld", any++ ? ", " : "", i, t->false_by_id[i]);
     fprintf(f, "}, \"leave_out\": [");
     for (i = any = 0; i < 256; i++)
-        if (t->false_by_id[i] || t->wrong_by_id[i])
+        if (leave_out(t, i))
             fprintf(f, "%s%d", any++ ? ", " : "", i);
     fprintf(f, "]}\n");
 }

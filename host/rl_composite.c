@@ -326,3 +326,12 @@ void rl_composite_draw(rl_image *img, const rl_composite_config *cc, const rl_si
     for (i = 0; i < n; i++)
         draw_one(img, &noise, &marks[i], pattern, ctx);
 }
+
+int rl_composite_mark_at(const rl_site_mark *marks, int n, double u, double v)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        if (hypot(u - marks[i].u, v - marks[i].v) < 0.5 * marks[i].r)
+            return i;
+    return -1;
+}

@@ -75,6 +75,10 @@ double rl_composite_ring(const void *ctx, int id, double x, double y);
 void rl_composite_draw(rl_image *img, const rl_composite_config *cc, const rl_site_mark *marks,
                        int n, rl_composite_pattern pattern, const void *ctx);
 
+/* The mark a detection at (u, v) belongs to (within half its radius), or
+ * -1: how a composited frame is judged against its truth. */
+int rl_composite_mark_at(const rl_site_mark *marks, int n, double u, double v);
+
 /* Fraction of a disk of radius r at (u, v) inside a W x H image. */
 double rl_composite_visible(int W, int H, double u, double v, double r);
 

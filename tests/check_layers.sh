@@ -1,7 +1,8 @@
 #!/bin/sh
 # Dependencies run one way: nothing under hal/ or firmware/ includes a
-# header of host/, and the core includes none of hal/, firmware/io or
-# firmware/app.  Usage: check_layers.sh SOURCE_DIR
+# header of host/, the core includes none of hal/ (devices and the I/O
+# library hal/io) or firmware/app, and the I/O library none of the
+# devices or the app.  Usage: check_layers.sh SOURCE_DIR
 src=${1:?usage: check_layers.sh SOURCE_DIR}
 status=0
 names() { ls "$@" 2>/dev/null | xargs -n1 basename | tr '\n' '|' | sed 's/|$//'; }
@@ -13,9 +14,9 @@ forbid() { # what: folders, headers
     fi
 }
 forbid "hal/ or firmware/ includes host/" "$src/hal $src/firmware" "$(names "$src"/host/*.h)"
-forbid "the core includes hal/ or firmware/io or firmware/app" "$src/firmware/core $src/firmware/include" \
-    "$(names "$src"/hal/*.h "$src"/firmware/io/*.h "$src"/firmware/app/*.h)"
-forbid "the I/O library includes hal/ or firmware/app" "$src/firmware/io" \
+forbid "the core includes hal/ or firmware/app" "$src/firmware/core $src/firmware/include" \
+    "$(names "$src"/hal/*.h "$src"/hal/io/*.h "$src"/firmware/app/*.h)"
+forbid "the I/O library includes a device of hal/ or firmware/app" "$src/hal/io" \
     "$(names "$src"/hal/*.h "$src"/firmware/app/*.h)"
 forbid "the public API includes an internal header" "$src/firmware/include" "$(names "$src"/firmware/core/*.h)"
 [ $status -eq 0 ] && echo "layers: dependencies run one way"

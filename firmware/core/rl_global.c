@@ -36,16 +36,16 @@ static double contrast_span(const rl_levels *local, const rl_profile *p)
 }
 
 /* Radius, profile and match of candidate d as an ellipse of the given
- * shape; 1 (and d, p, m replaced) when that matches better than what
- * they hold. An ellipse from a region's moments is perspective or the
+ * shape, from the radius of its box; 1 (and d's radius, p, m replaced)
+ * when that matches better than what they hold. An ellipse from a region's moments is perspective or the
  * lens's distortion, or a circle smeared by motion (its rings are not
  * ellipses then): the match tells which. */
 static int try_ellipse(const rl_image *img, const rl_templates *tt, const rl_shape *shape,
-                       rl_detection *d, rl_profile *p, rl_match *m)
+                       double box_r, rl_detection *d, rl_profile *p, rl_match *m)
 {
     rl_profile pe;
     rl_match me;
-    double r = d->radius;
+    double r = box_r; /* the radius search starts from the CLR box's */
     if (rl_shape_is_circle(shape))
         return 0;
     rl_refine_radius_shaped(img, d->u, d->v, shape, &r);
@@ -67,6 +67,7 @@ void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *
     rl_profile p;
     rl_match m;
     double scale, box_r;
+    int taken;
     memset(&d, 0, sizeof d);
     d.id = -1;
     d.pass = RL_PASS_GLOBAL;
@@ -90,14 +91,11 @@ void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *
     rl_refine_radius(img, d.u, d.v, &d.radius);
     rl_profile_gather(img, d.u, d.v, d.radius, &p);
     rl_match_all(&rec->templates, &p, &m);
-    if (!rl_accept(&rule, &m, contrast_span(&local, &p))) {
-        double r = d.radius;
-        d.radius = box_r;
-        if (!try_ellipse(img, &rec->templates, &c->shape, &d, &p, &m))
-            d.radius = r;
-    }
+    taken = rl_accept(&rule, &m, contrast_span(&local, &p));
+    if (!taken && try_ellipse(img, &rec->templates, &c->shape, box_r, &d, &p, &m))
+        taken = rl_accept(&rule, &m, contrast_span(&local, &p));
     d.score = m.score;
-    if (rl_accept(&rule, &m, contrast_span(&local, &p)) &&
+    if (taken &&
         !(rl_inner_possible(res, &d) && rl_inner_enclosed(img, res->levels.light, d.u, d.v, d.radius))) {
         d.id = m.id;
         rl_result_add_landmark(res, &d);

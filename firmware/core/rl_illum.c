@@ -28,7 +28,7 @@ rl_err rl_illum_init(rl_illum *il, rl_ws *ws, int W, int H)
     il->map.tile = il->tile;
     il->map.nx = il->nx;
     il->map.ny = il->ny;
-    il->bg = 255;
+    il->typical = 255;
     return RL_OK;
 }
 
@@ -109,11 +109,11 @@ void rl_illum_measure(rl_illum *il, const rl_image *img, const rl_levels *lv)
     double bg = lv->bg > 1 ? lv->bg : 1, ratio = lv->threshold / bg;
     ratio = ratio < 0.3 ? 0.3 : ratio > 0.75 ? 0.75 : ratio;
     ref = median_level(il, (int)(bg + 0.5));
-    il->bg = ref > 1 ? ref : 1;
+    il->typical = ref > 1 ? ref : 1;
     for (ty = 0; ty < il->ny; ty++)
         for (tx = 0; tx < il->nx; tx++) {
             int i = ty * il->nx + tx, b = spread(il, tx, ty), hi;
-            il->bright[i] = (uint8_t)(b > 0 ? b : (int)il->bg); /* unknown: the frame's */
+            il->bright[i] = (uint8_t)(b > 0 ? b : (int)il->typical); /* unknown: the frame's */
             hi = (int)(ratio * il->bright[i] + 0.5);
             il->hi[i] = (uint8_t)(hi < 1 ? 1 : hi > lv->light ? lv->light : hi);
         }
@@ -126,5 +126,5 @@ double rl_illum_scale(const rl_illum *il, double u, double v)
     if (ty < 0) ty = 0;
     if (tx >= il->nx) tx = il->nx - 1;
     if (ty >= il->ny) ty = il->ny - 1;
-    return il->bright[ty * il->nx + tx] / il->bg;
+    return il->bright[ty * il->nx + tx] / il->typical;
 }

@@ -29,7 +29,7 @@ typedef struct {
     uint8_t *bright;  /* per tile: the level spread over its neighbours */
     uint8_t *hi;      /* per tile: the dark threshold (what map points to) */
     rl_label_map map; /* the thresholds as the labeller takes them */
-    double bg;        /* the frame's background level the thresholds scale from */
+    double typical;   /* the frame's typical ceiling level (the median tile's) */
 } rl_illum;
 
 /* Carve the tile arrays for W x H frames from ws. */
@@ -38,7 +38,7 @@ RL_CHECK rl_err rl_illum_init(rl_illum *il, rl_ws *ws, int W, int H);
 /* Measure img's tiles and set the thresholds from the frame's levels. */
 void rl_illum_measure(rl_illum *il, const rl_image *img, const rl_levels *lv);
 
-/* The ceiling level at (u, v) over the frame's background (1 on a frame
+/* The ceiling level at (u, v) over the frame's typical one (1 on a frame
  * lit evenly). */
 double rl_illum_scale(const rl_illum *il, double u, double v);
 

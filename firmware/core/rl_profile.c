@@ -2,12 +2,16 @@
 
 #include <math.h>
 
-static void gather_circle(const rl_image *img, double cx, double cy, double r, rl_profile *p)
+/* Pixels binned by the shape's normalized radius, a circle's included:
+ * for (1, 0, 1) every step below gives the same bits as dx^2 + dy^2. */
+static void gather(const rl_image *img, double cx, double cy, double r, const rl_shape *sh,
+                   rl_profile *p)
 {
-    double ext = RL_PROFILE_EXTENT * r, scale = RL_PROFILE_BINS / ext, e2 = ext * ext;
-    int x, y, k, x0 = (int)ceil(cx - ext), x1 = (int)floor(cx + ext);
-    int y0 = (int)ceil(cy - ext), y1 = (int)floor(cy + ext);
-    double sxx = 0;
+    double ext = RL_PROFILE_EXTENT * r, scale = RL_PROFILE_BINS / ext, e2 = ext * ext, sxx = 0;
+    /* the ellipse's extent along x and y */
+    double hx = ext * sqrt(sh->c), hy = ext * sqrt(sh->a);
+    int x, y, k, x0 = (int)ceil(cx - hx), x1 = (int)floor(cx + hx);
+    int y0 = (int)ceil(cy - hy), y1 = (int)floor(cy + hy);
     for (k = 0; k < RL_PROFILE_BINS; k++)
         p->n[k] = p->sx[k] = 0;
     /* pixels outside the image are not gathered: a cut landmark meets cut
@@ -18,44 +22,9 @@ static void gather_circle(const rl_image *img, double cx, double cy, double r, r
     if (y1 > img->height - 1) y1 = img->height - 1;
     for (y = y0; y <= y1; y++) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
-        double dy = y - cy, dy2 = dy * dy;
+        double dy = y - cy, cdy2 = sh->c * dy * dy, b2dy = 2 * sh->b * dy;
         for (x = x0; x <= x1; x++) {
-            double dx = x - cx, d2 = dx * dx + dy2, v;
-            if (d2 >= e2)
-                continue;
-            k = (int)(sqrt(d2) * scale);
-            v = 255 - row[x];
-            p->n[k] += 1;
-            p->sx[k] += v;
-            sxx += v * v;
-        }
-    }
-    p->sxx = sxx;
-    p->total = 0;
-    for (k = 0; k < RL_PROFILE_BINS; k++)
-        p->total += p->n[k];
-}
-
-/* Pixels binned by the shape's normalized radius. */
-static void gather_shaped(const rl_image *img, double cx, double cy, double r, const rl_shape *sh,
-                          rl_profile *p)
-{
-    double ext = RL_PROFILE_EXTENT * r, scale = RL_PROFILE_BINS / ext, e2 = ext * ext, sxx = 0;
-    /* the ellipse's extent along x and y */
-    double hx = ext * sqrt(sh->c), hy = ext * sqrt(sh->a);
-    int x, y, k, x0 = (int)ceil(cx - hx), x1 = (int)floor(cx + hx);
-    int y0 = (int)ceil(cy - hy), y1 = (int)floor(cy + hy);
-    for (k = 0; k < RL_PROFILE_BINS; k++)
-        p->n[k] = p->sx[k] = 0;
-    if (x0 < 0) x0 = 0;
-    if (y0 < 0) y0 = 0;
-    if (x1 > img->width - 1) x1 = img->width - 1;
-    if (y1 > img->height - 1) y1 = img->height - 1;
-    for (y = y0; y <= y1; y++) {
-        const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
-        double dy = y - cy;
-        for (x = x0; x <= x1; x++) {
-            double dx = x - cx, d2 = sh->a * dx * dx + 2 * sh->b * dx * dy + sh->c * dy * dy, v;
+            double dx = x - cx, d2 = (sh->a * dx + b2dy) * dx + cdy2, v;
             if (d2 >= e2)
                 continue;
             k = (int)(sqrt(d2) * scale);
@@ -73,16 +42,15 @@ static void gather_shaped(const rl_image *img, double cx, double cy, double r, c
 
 void rl_profile_gather(const rl_image *img, double cx, double cy, double r, rl_profile *p)
 {
-    gather_circle(img, cx, cy, r, p);
+    rl_shape circle = rl_shape_circle();
+    gather(img, cx, cy, r, &circle, p);
 }
 
 void rl_profile_gather_shaped(const rl_image *img, double cx, double cy, double r,
                               const rl_shape *sh, rl_profile *p)
 {
-    if (sh == NULL || rl_shape_is_circle(sh))
-        gather_circle(img, cx, cy, r, p);
-    else
-        gather_shaped(img, cx, cy, r, sh, p);
+    rl_shape circle = rl_shape_circle();
+    gather(img, cx, cy, r, sh ? sh : &circle, p);
 }
 
 rl_shape rl_shape_circle(void)

@@ -7,7 +7,6 @@
 #define _GNU_SOURCE
 #include "bench_real.h"
 
-#include <dirent.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,8 +16,6 @@
 #include "rl_composite.h"
 #include "rl_png.h"
 #include "rl_report.h"
-
-#define MAX_PHOTOS 4096
 
 typedef struct {
     long placed[3], found[3], wrong, false_det;
@@ -40,23 +37,11 @@ static double tag_pattern(const void *ctx, int id, double x, double y)
     return im->buf[cj * im->stride + ci] < 128 ? 1.0 : 0.0;
 }
 
-static int cmp_str(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
 
-static int mark_at(const rl_site_mark *m, int n, double u, double v)
-{
-    int i;
-    for (i = 0; i < n; i++)
-        if (hypot(u - m[i].u, v - m[i].v) < 0.5 * m[i].r)
-            return i;
-    return -1;
-}
 
 static void judge(score *s, const rl_site_mark *m, int n, int id, double u, double v)
 {
-    int k = mark_at(m, n, u, v);
+    int k = rl_composite_mark_at(m, n, u, v);
     if (k < 0)
         s->false_det++;
     else if (m[k].id == id)
@@ -72,22 +57,6 @@ static void print_row(const char *what, const score *a, const score *b, int kind
            b->placed[kind] ? 100.0 * b->found[kind] / b->placed[kind] : 0.0, a->placed[kind]);
 }
 
-static int list_pngs(const char *dir, char **names)
-{
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    int n = 0;
-    if (d == NULL)
-        return -1;
-    while ((e = readdir(d)) != NULL && n < MAX_PHOTOS) {
-        size_t len = strlen(e->d_name);
-        if (len > 4 && strcmp(e->d_name + len - 4, ".png") == 0)
-            names[n++] = strdup(e->d_name);
-    }
-    closedir(d);
-    qsort(names, (size_t)n, sizeof *names, cmp_str);
-    return n;
-}
 
 /* One photo, one round: rings and tags at the same places. */
 static void one_frame(const rl_image *photo, rl_composite_config *cc, const int *ids, int n_ids,
@@ -140,8 +109,8 @@ static void one_frame(const rl_image *photo, rl_composite_config *cc, const int 
 int rl_bench_real(const char *dir, int rounds, int seed, double radius, apriltag_detector_t *td,
                   apriltag_family_t *tf)
 {
-    static char *names[MAX_PHOTOS];
     static rl_result res;
+    char **names;
     score ring, tag;
     rl_composite_config cc;
     rl_recog_config cfg;
@@ -149,14 +118,18 @@ int rl_bench_real(const char *dir, int rounds, int seed, double radius, apriltag
     int ids[30], n, p, r, i, photos = 0;
     long false_as_is = 0;
     uint8_t *a = NULL, *b = NULL;
-    char path[2048], err[512];
+    char err[512];
     memset(&ring, 0, sizeof ring);
     memset(&tag, 0, sizeof tag);
     for (i = 0; i < 30; i++)
         ids[i] = i + 1;
     for (i = 0; i < 64; i++)
         tag_images[i] = apriltag_to_image(tf, (uint32_t)i);
-    if ((n = list_pngs(dir, names)) <= 0) {
+    if (rl_png_list(dir, &names, &n, err, sizeof err) != RL_OK) {
+        fprintf(stderr, "ringloc-bench: %s\n", err);
+        return 1;
+    }
+    if (n == 0) {
         fprintf(stderr, "ringloc-bench: %s: no PNG photos\n", dir);
         return 1;
     }
@@ -167,9 +140,7 @@ int rl_bench_real(const char *dir, int rounds, int seed, double radius, apriltag
     rl_heap_recog_init(&hr, &cfg);
     for (p = 0; p < n; p++) {
         rl_image img;
-        snprintf(path, sizeof path, "%s/%s", dir, names[p]);
-        free(names[p]);
-        if (rl_png_read_gray(path, &img, err, sizeof err) != RL_OK) {
+        if (rl_png_read_gray(names[p], &img, err, sizeof err) != RL_OK) {
             fprintf(stderr, "ringloc-bench: %s (skipped)\n", err);
             continue;
         }
@@ -189,6 +160,11 @@ int rl_bench_real(const char *dir, int rounds, int seed, double radius, apriltag
             fprintf(stderr, "ringloc-bench: %d of %d photos\r", photos, n);
     }
     fprintf(stderr, "\n");
+    rl_png_list_free(names, n);
+    if (photos == 0) {
+        fprintf(stderr, "ringloc-bench: %s: no readable PNG photo\n", dir);
+        return 1;
+    }
     printf("real photos: %s, %d photos x %d rounds, landmarks of radius %.1f px, seed %d\n", dir,
            photos, rounds, radius, seed);
     printf("%-24s %10s %12s\n", "identified", "ringloc", "AprilTag 3");

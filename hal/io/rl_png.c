@@ -1,11 +1,13 @@
 #include "rl_png.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <png.h>
 #include <setjmp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 /* libpng reports through callbacks and longjmp; this carries the message
  * back to the caller so that the file name and libpng's reason reach the
@@ -223,4 +225,64 @@ rl_err rl_png_write_rgb(const char *path, int w, int h, const uint8_t *rgb, char
                         size_t errlen)
 {
     return write_png(path, w, h, PNG_COLOR_TYPE_RGB, rgb, (size_t)w * 3, err, errlen);
+}
+
+static int cmp_path(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+static int is_png_name(const char *name)
+{
+    size_t len = strlen(name);
+    return len > 4 && strcasecmp(name + len - 4, ".png") == 0;
+}
+
+void rl_png_list_free(char **paths, int n)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        free(paths[i]);
+    free(paths);
+}
+
+rl_err rl_png_list(const char *dir, char ***paths, int *n, char *err, size_t errlen)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    char **list = NULL;
+    int cap = 0, k = 0;
+    *paths = NULL;
+    *n = 0;
+    if (d == NULL) {
+        snprintf(err, errlen, "%s: cannot open the folder (%s)", dir, strerror(errno));
+        return RL_ENOTFOUND;
+    }
+    while ((e = readdir(d)) != NULL) {
+        size_t len;
+        if (!is_png_name(e->d_name))
+            continue;
+        if (k == cap) {
+            char **more = realloc(list, sizeof *list * (size_t)(cap ? 2 * cap : 64));
+            if (more == NULL)
+                break;
+            list = more;
+            cap = cap ? 2 * cap : 64;
+        }
+        len = strlen(dir) + strlen(e->d_name) + 2;
+        if ((list[k] = malloc(len)) == NULL)
+            break;
+        snprintf(list[k++], len, "%s/%s", dir, e->d_name);
+    }
+    closedir(d);
+    if (e != NULL) { /* stopped short: out of memory */
+        rl_png_list_free(list, k);
+        snprintf(err, errlen, "%s: out of memory listing the folder", dir);
+        return RL_ENOMEM;
+    }
+    if (k > 0)
+        qsort(list, (size_t)k, sizeof *list, cmp_path);
+    *paths = list;
+    *n = k;
+    return RL_OK;
 }

@@ -44,4 +44,11 @@ RL_CHECK rl_err rl_png_write_gray(const char *path, const rl_image *img, char *e
 RL_CHECK rl_err rl_png_write_rgb(const char *path, int w, int h, const uint8_t *rgb,
                                  char *err, size_t errlen);
 
+/* The PNG files of folder dir (name ending in .png, any case), as paths
+ * "dir/name", sorted by name, into *paths (n of them, malloc'ed; free
+ * with rl_png_list_free). RL_ENOTFOUND (with err naming the folder) when
+ * it cannot be opened, RL_ENOMEM; an empty folder is 0 paths. */
+RL_CHECK rl_err rl_png_list(const char *dir, char ***paths, int *n, char *err, size_t errlen);
+void rl_png_list_free(char **paths, int n);
+
 #endif

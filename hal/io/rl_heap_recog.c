@@ -38,8 +38,13 @@ rl_err rl_heap_recog_prepare(rl_heap_recog *hr, int w, int h)
         return RL_OK;
     rl_heap_recog_free(hr);
     need = rl_recog_workspace_size(w, h, &hr->cfg);
-    if (need == 0)
-        return rl_recog_init(&hr->rec, &hr->cfg, w, h, hr, 0); /* the configuration's error */
+    if (need == 0) {
+        /* a bad configuration: init checks it before it looks at memory,
+         * and says what is wrong */
+        unsigned char none;
+        e = rl_recog_init(&hr->rec, &hr->cfg, w, h, &none, 0);
+        return e != RL_OK ? e : RL_EINVAL;
+    }
     if ((hr->mem = malloc(need)) == NULL)
         return RL_ENOMEM;
     hr->size = need;
