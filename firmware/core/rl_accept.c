@@ -1,5 +1,7 @@
 #include "rl_accept.h"
 
+#include "rl_profile.h"
+
 rl_accept_rule rl_accept_rule_of(const rl_recog_config *cfg, rl_pass pass)
 {
     rl_accept_rule r;
@@ -14,4 +16,32 @@ int rl_accept(const rl_accept_rule *rule, const rl_match *m, double span)
     return m->id >= 0 && m->score >= rule->min_score &&
            (1.0 - m->second * m->second) >= rule->min_lead * (1.0 - m->score * m->score) &&
            m->contrast >= rule->min_contrast * span;
+}
+
+void rl_accept_levels_at(const rl_illum *il, const rl_levels *frame, double u, double v,
+                         rl_levels *local)
+{
+    double scale = rl_illum_scale(il, u, v);
+    *local = *frame;
+    local->bg *= scale;
+    local->fg *= scale;
+}
+
+/* The paper's grey level in the candidate's quiet zone (1.05 R .. 1.2 R,
+ * the profile's outermost bins), or -1 when nothing is seen there. */
+static double quiet_zone(const rl_profile *p)
+{
+    double n = 0, s = 0;
+    int k;
+    for (k = (int)(1.05 / RL_PROFILE_EXTENT * RL_PROFILE_BINS); k < RL_PROFILE_BINS; k++) {
+        n += p->n[k];
+        s += p->sx[k];
+    }
+    return n > 0 ? 255.0 - s / n : -1;
+}
+
+double rl_accept_span(const rl_levels *local, const rl_profile *p)
+{
+    double span = local->bg - local->fg, q = quiet_zone(p);
+    return q > 0 && q < span ? q : span;
 }

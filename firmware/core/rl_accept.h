@@ -19,7 +19,9 @@
 #ifndef RL_ACCEPT_H
 #define RL_ACCEPT_H
 
+#include "rl_illum.h"
 #include "rl_match.h"
+#include "rl_profile.h"
 #include "rl_recog.h"
 
 typedef struct {
@@ -35,5 +37,16 @@ rl_accept_rule rl_accept_rule_of(const rl_recog_config *cfg, rl_pass pass);
  * measured against (the frame's background - foreground in the global
  * pass, 255 on sector-normalized levels in the local pass). */
 int rl_accept(const rl_accept_rule *rule, const rl_match *m, double span);
+
+/* The frame's foreground and background levels as the light falls at
+ * (u, v) (rl_illum's scale there). */
+void rl_accept_levels_at(const rl_illum *il, const rl_levels *frame, double u, double v,
+                         rl_levels *local);
+
+/* The grey span a candidate's contrast is judged against, from its plain
+ * (not sector-normalized) profile p: the local levels' background to
+ * foreground, or less where the landmark's own paper, its quiet zone, is
+ * darker (a sheet in a shadow). */
+double rl_accept_span(const rl_levels *local, const rl_profile *p);
 
 #endif

@@ -23,34 +23,39 @@ void rl_circle_add(rl_circle_fit *f, double x, double y)
     f->n++;
 }
 
-int rl_solve3(double A[3][4], double x[3])
+int rl_solve(int n, double *A, double *x)
 {
-    int k, m, c;
-    for (k = 0; k < 3; k++) {
+    int k, m, c, w = n + 1;
+    for (k = 0; k < n; k++) {
         int piv = k;
-        for (m = k + 1; m < 3; m++)
-            if (fabs(A[m][k]) > fabs(A[piv][k]))
+        for (m = k + 1; m < n; m++)
+            if (fabs(A[m * w + k]) > fabs(A[piv * w + k]))
                 piv = m;
-        if (fabs(A[piv][k]) < 1e-12)
+        if (fabs(A[piv * w + k]) < 1e-12)
             return 0;
-        for (c = 0; c < 4; c++) {
-            double t = A[k][c];
-            A[k][c] = A[piv][c];
-            A[piv][c] = t;
+        for (c = 0; c < w; c++) {
+            double t = A[k * w + c];
+            A[k * w + c] = A[piv * w + c];
+            A[piv * w + c] = t;
         }
-        for (m = k + 1; m < 3; m++) {
-            double q = A[m][k] / A[k][k];
-            for (c = k; c < 4; c++)
-                A[m][c] -= q * A[k][c];
+        for (m = k + 1; m < n; m++) {
+            double q = A[m * w + k] / A[k * w + k];
+            for (c = k; c < w; c++)
+                A[m * w + c] -= q * A[k * w + c];
         }
     }
-    for (k = 2; k >= 0; k--) {
-        double v = A[k][3];
-        for (c = k + 1; c < 3; c++)
-            v -= A[k][c] * x[c];
-        x[k] = v / A[k][k];
+    for (k = n - 1; k >= 0; k--) {
+        double v = A[k * w + n];
+        for (c = k + 1; c < n; c++)
+            v -= A[k * w + c] * x[c];
+        x[k] = v / A[k * w + k];
     }
     return 1;
+}
+
+int rl_solve3(double A[3][4], double x[3])
+{
+    return rl_solve(3, &A[0][0], x);
 }
 
 int rl_circle_solve(const rl_circle_fit *f, double *cx, double *cy, double *r)

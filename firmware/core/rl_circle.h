@@ -1,5 +1,5 @@
-/* rl_circle: circles fitted to edge points, and the 3 x 3 solver they
- * need (internal).
+/* rl_circle: circles fitted to edge points, and the small linear solver
+ * they need (internal).
  *
  *   double x[3] = {10, 0, -10}, y[3] = {0, 10, 0};   // edge points
  *   rl_circle_fit f;
@@ -31,6 +31,11 @@ int rl_circle_solve(const rl_circle_fit *f, double *cx, double *cy, double *r);
  * Points more than 1.5 px off the circle are left out; stops with fewer
  * than 6 points left. */
 void rl_circle_refine(const double *x, const double *y, int n, double *cx, double *cy, double *r);
+
+/* Solve the n x n system A x = b by Gaussian elimination with partial
+ * pivoting, A given row by row with b as its last column (n rows of
+ * n + 1, destroyed); 0 if singular. */
+int rl_solve(int n, double *A, double *x);
 
 /* Solve the 3 x 3 system A x = A[.][3] by Gaussian elimination with
  * partial pivoting (A is destroyed); 0 if singular. */

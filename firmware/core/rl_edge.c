@@ -43,11 +43,10 @@ int rl_edge_fit_outline(const rl_label *lb, int reg, const rl_edge_window *w, in
     return rl_circle_solve(&f, cx, cy, r);
 }
 
-/* Rays for the edge fit. A ray is sampled from EDGE_FROM radii over
+/* A ray is sampled from EDGE_FROM radii over
  * EDGE_SPAN radii (the outer edge within a fifth of a radius of the first
  * estimate), every EDGE_STEP px, or in EDGE_MAX_SAMPLES samples on larger
  * landmarks. */
-#define FIT_RAYS 24
 #define EDGE_FROM 0.8
 #define EDGE_SPAN 0.45
 #define EDGE_STEP 0.25
@@ -109,20 +108,28 @@ static double ray_edge(const rl_image *img, int light, double cx, double cy, dou
     return r0 + at * step;
 }
 
-int rl_edge_fit_rays(const rl_image *img, int light, double *cx, double *cy, double *r)
+int rl_edge_points(const rl_image *img, int light, double cx, double cy, double r, double *ex,
+                   double *ey)
 {
-    double ex[FIT_RAYS], ey[FIT_RAYS], dc[FIT_RAYS], ds[FIT_RAYS], ncx = 0, ncy = 0, nr = 0;
-    int a, n = 0, pass, i;
-    rl_ray_dirs(FIT_RAYS, dc, ds);
-    for (a = 0; a < FIT_RAYS; a++) {
-        double rr = ray_edge(img, light, *cx, *cy, *r, dc[a], ds[a]);
+    double dc[RL_EDGE_RAYS], ds[RL_EDGE_RAYS];
+    int a, n = 0;
+    rl_ray_dirs(RL_EDGE_RAYS, dc, ds);
+    for (a = 0; a < RL_EDGE_RAYS; a++) {
+        double rr = ray_edge(img, light, cx, cy, r, dc[a], ds[a]);
         if (rr < 0)
             continue;
-        ex[n] = *cx + rr * dc[a];
-        ey[n] = *cy + rr * ds[a];
+        ex[n] = cx + rr * dc[a];
+        ey[n] = cy + rr * ds[a];
         n++;
     }
-    if (n < FIT_RAYS / 4)
+    return n;
+}
+
+int rl_edge_fit_rays(const rl_image *img, int light, double *cx, double *cy, double *r)
+{
+    double ex[RL_EDGE_RAYS], ey[RL_EDGE_RAYS], ncx = 0, ncy = 0, nr = 0;
+    int n = rl_edge_points(img, light, *cx, *cy, *r, ex, ey), pass, i;
+    if (n < RL_EDGE_RAYS / 4)
         return 0;
     for (pass = 0; pass < 2; pass++) {
         rl_circle_fit f;

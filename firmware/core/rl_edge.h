@@ -38,6 +38,16 @@ typedef struct {
 int rl_edge_fit_outline(const rl_label *lb, int reg, const rl_edge_window *w, int thr,
                         int light, double *cx, double *cy, double *r);
 
+/* Rays along which the outer edge is sought. */
+#define RL_EDGE_RAYS 24
+
+/* The outer edge's points along RL_EDGE_RAYS rays from (cx, cy), each the
+ * steepest rise after the ring's black within about a fifth of r of r;
+ * rays that leave the image, run into light or show no clear edge give
+ * none. The count is returned, the points in ex, ey (RL_EDGE_RAYS each). */
+int rl_edge_points(const rl_image *img, int light, double cx, double cy, double r, double *ex,
+                   double *ey);
+
 /* Refine a landmark's centre and radius from its outer edge seen along
  * rays from (*cx, *cy): on each ray the edge is the steepest rise after
  * the ring's black (a smooth glare gradient adds a constant slope, which

@@ -13,28 +13,6 @@
  * for the local pass. */
 #define GLOBAL_MIN_VISIBLE 0.95
 
-/* The paper's grey level in the candidate's quiet zone (1.05 R .. 1.2 R,
- * the profile's outermost bins), or -1 when nothing is seen there. */
-static double quiet_zone(const rl_profile *p)
-{
-    double n = 0, s = 0;
-    int k;
-    for (k = (int)(1.05 / RL_PROFILE_EXTENT * RL_PROFILE_BINS); k < RL_PROFILE_BINS; k++) {
-        n += p->n[k];
-        s += p->sx[k];
-    }
-    return n > 0 ? 255.0 - s / n : -1;
-}
-
-/* The grey span a landmark's contrast is judged against: the frame's
- * foreground to background as the light falls here, or less where the
- * landmark's own paper is darker (a sheet in a shadow). */
-static double contrast_span(const rl_levels *local, const rl_profile *p)
-{
-    double span = local->bg - local->fg, q = quiet_zone(p);
-    return q > 0 && q < span ? q : span;
-}
-
 /* Radius, profile and match of candidate d as an ellipse of the given
  * shape, from the radius of its box; 1 (and d's radius, p, m replaced)
  * when that matches better than what they hold. An ellipse from a region's moments is perspective or the
@@ -66,7 +44,7 @@ void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *
     rl_levels local;
     rl_profile p;
     rl_match m;
-    double scale, box_r;
+    double box_r;
     int taken;
     memset(&d, 0, sizeof d);
     d.id = -1;
@@ -75,10 +53,7 @@ void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *
         return;
     res->n_candidates++;
     /* the frame's levels as the light falls here */
-    scale = rl_illum_scale(&rec->illum, d.u, d.v);
-    local = res->levels;
-    local.bg *= scale;
-    local.fg *= scale;
+    rl_accept_levels_at(&rec->illum, &res->levels, d.u, d.v, &local);
     if (d.complete)
         rl_refine_centre(img, &local, &d.u, &d.v, d.radius);
     if (d.visible < GLOBAL_MIN_VISIBLE) {
@@ -91,9 +66,9 @@ void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *
     rl_refine_radius(img, d.u, d.v, &d.radius);
     rl_profile_gather(img, d.u, d.v, d.radius, &p);
     rl_match_all(&rec->templates, &p, &m);
-    taken = rl_accept(&rule, &m, contrast_span(&local, &p));
+    taken = rl_accept(&rule, &m, rl_accept_span(&local, &p));
     if (!taken && try_ellipse(img, &rec->templates, &c->shape, box_r, &d, &p, &m))
-        taken = rl_accept(&rule, &m, contrast_span(&local, &p));
+        taken = rl_accept(&rule, &m, rl_accept_span(&local, &p));
     d.score = m.score;
     if (taken &&
         !(rl_inner_possible(res, &d) && rl_inner_enclosed(img, res->levels.light, d.u, d.v, d.radius))) {

@@ -4,6 +4,7 @@
 #include <string.h>
 #include "rl_accept.h"
 #include "rl_edge.h"
+#include "rl_ellipse.h"
 #include "rl_geom.h"
 #include "rl_hist.h"
 #include "rl_inner.h"
@@ -116,6 +117,58 @@ static int local_locate(rl_recog *rec, const rl_image *img, const rl_result *res
     return fabs(*r - R) <= 0.3 * R;
 }
 
+/* Ellipses the local pass tries: flatter than this is not a landmark seen
+ * through the lens, rounder is a circle; the fit's centre and radius must
+ * stay near the circle's. */
+#define ELLIPSE_MIN_ASPECT 0.7
+#define ELLIPSE_MAX_ASPECT 0.97
+#define ELLIPSE_MAX_MOVE 0.25
+
+/* The zone twins' best score against the ellipse e at radii around its
+ * own, as m's runner-up when higher (as the search does for circles). */
+static void ellipse_twins(const rl_templates *tt, const rl_image *img, const rl_ellipse *e,
+                          rl_match *m)
+{
+    int twins[2], n = rl_match_twins(tt, m->id, twins), k;
+    for (k = 0; n > 0 && k < RL_SEARCH_TWIN_SCALES; k++) {
+        rl_profile p;
+        rl_match mm;
+        rl_profile_gather_shaped(img, e->cx, e->cy, e->r * rl_search_twin_scale[k], &e->shape, &p);
+        rl_match_ids(tt, &p, twins, n, -1, &mm);
+        if (mm.id >= 0 && mm.score > m->second)
+            m->second = mm.score;
+    }
+}
+
+/* The candidate at (cx, cy, r) as an ellipse fitted to its outer edge
+ * (perspective, the lens: a circle's profile smears its zones): its match
+ * into *m, the grey span its contrast counts against into *span (plain
+ * grey levels, not sector-normalized) and the ellipse into *e; 0 when the
+ * edge is no such ellipse. */
+static int local_ellipse(const rl_recog *rec, const rl_image *img, const rl_result *res,
+                         double cx, double cy, double r, rl_ellipse *e, rl_match *m, double *span)
+{
+    const rl_templates *tt = &rec->templates;
+    int light = res->levels.light;
+    rl_levels local;
+    double ex[RL_EDGE_RAYS], ey[RL_EDGE_RAYS], aspect;
+    int n = rl_edge_points(img, light, cx, cy, r, ex, ey);
+    rl_profile p;
+    if (!rl_ellipse_fit(ex, ey, n, cx, cy, r, e))
+        return 0;
+    aspect = rl_ellipse_aspect(&e->shape);
+    if (aspect < ELLIPSE_MIN_ASPECT || aspect > ELLIPSE_MAX_ASPECT ||
+        hypot(e->cx - cx, e->cy - cy) > ELLIPSE_MAX_MOVE * r || fabs(e->r - r) > ELLIPSE_MAX_MOVE * r)
+        return 0;
+    rl_profile_gather_shaped(img, e->cx, e->cy, e->r, &e->shape, &p);
+    rl_match_all(tt, &p, m);
+    if (m->id >= 0)
+        ellipse_twins(tt, img, e, m);
+    rl_accept_levels_at(&rec->illum, &res->levels, e->cx, e->cy, &local);
+    *span = rl_accept_span(&local, &p);
+    return 1;
+}
+
 /* Retry one DUCLR u of expected radius R; 1 if identified (into *out). */
 static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *res,
                            const rl_detection *u, double R, rl_detection *out)
@@ -124,6 +177,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     int W = rec->width, H = rec->height, light = res->levels.light;
     double cx, cy, r;
     rl_match m;
+    int taken;
     memset(out, 0, sizeof *out);
     if (!local_locate(rec, img, res, u, R, &out->box, &cx, &cy, &r))
         return 0;
@@ -133,12 +187,26 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     if (rl_geom_visible_in(W, H, cx, cy, r) < 0.5) /* more than half missing: not tried */
         return 0;
     rl_search_identify(&rec->templates, rec->polar, img, light, &cx, &cy, &r, &m);
+    taken = rl_accept(&rule, &m, 255.0);
+    if (!taken) {
+        /* not as a circle: as the ellipse its edge may be */
+        rl_ellipse e;
+        rl_match me;
+        double span;
+        if (local_ellipse(rec, img, res, cx, cy, r, &e, &me, &span) && rl_accept(&rule, &me, span)) {
+            m = me;
+            cx = e.cx;
+            cy = e.cy;
+            r = e.r;
+            taken = 1;
+        }
+    }
     out->u = cx;
     out->v = cy;
     out->radius = r;
     out->complete = rl_geom_disk_complete(W, H, cx, cy, r);
     out->visible = rl_geom_visible_in(W, H, cx, cy, r);
-    if (!rl_accept(&rule, &m, 255.0) || rl_inner_enclosed(img, light, cx, cy, r))
+    if (!taken || rl_inner_enclosed(img, light, cx, cy, r))
         return 0;
     out->id = m.id;
     out->score = m.score;

@@ -176,6 +176,17 @@ void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, i
         list_score(&ls, &z, m);
 }
 
+int rl_match_twins(const rl_templates *tt, int id, int *twins)
+{
+    int n = 0, z;
+    for (z = 1; z <= 2; z++) {
+        int t = id ^ (1 << (tt->fam.bits - z));
+        if (rl_family_valid(&tt->fam, t))
+            twins[n++] = t;
+    }
+    return n;
+}
+
 double rl_match_pearson(const uint8_t *a, const uint8_t *b, const uint8_t *mask, int n)
 {
     double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0, c = 0, va, vb;

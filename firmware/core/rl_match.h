@@ -59,6 +59,11 @@ void rl_match_list_score(const rl_match_list *ls, const rl_profile *p, rl_match 
 /* Pearson's correlation of a and b over the cells where mask != 0 (all
  * when NULL); 0 when either side is constant. The direct formula, for
  * tests and tools. */
+/* The zone twins of id: the valid codes that differ from it in code zone
+ * 1 or 2, the zones next to the outer ring, which a radius error or blur
+ * confuses most (at most 2, into twins); their count. */
+int rl_match_twins(const rl_templates *tt, int id, int *twins);
+
 double rl_match_pearson(const uint8_t *a, const uint8_t *b, const uint8_t *mask, int n);
 
 #endif

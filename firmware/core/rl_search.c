@@ -13,6 +13,8 @@ static const double search_scale[SEARCH_ROUNDS] = {0.03, 0.015};
 /* Most likely ids: the best and up to three one code zone away. */
 #define LIKELY_IDS 4
 
+const double rl_search_twin_scale[RL_SEARCH_TWIN_SCALES] = {0.95, 1.0, 1.05, 1.1};
+
 /* Where the search stands: the best centre shift and radius scale so far
  * and their score, over the likely ids at one blur. */
 typedef struct {
@@ -78,31 +80,21 @@ static void search_crosses(const rl_polar *pol, search_state *st)
     }
 }
 
-/* Radius scales at which the winner's twins are scored. */
-#define TWIN_SCALES 4
-static const double twin_scale[TWIN_SCALES] = {0.95, 1.0, 1.05, 1.1};
-
-/* The winner's twins in zones 1 and 2 (the codes that differ in a zone
- * next to the outer ring, the ones a radius error or blur confuses most)
- * at their best radius near the found one: when one comes close, the
+/* The winner's zone twins (rl_match_twins) at their best radius
+ * (RL_SEARCH_TWIN_SCALES) near the found one: when one comes close, the
  * evidence between the two codes is close, and m->second says so. */
 static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, double y, double s,
                        rl_match *m)
 {
-    int twins[2], n = 0, z, k;
+    int twins[2], n = rl_match_twins(tt, m->id, twins), k;
     rl_match_list ls;
-    for (z = 1; z <= 2; z++) {
-        int t = m->id ^ (1 << (tt->fam.bits - z));
-        if (rl_family_valid(&tt->fam, t))
-            twins[n++] = t;
-    }
     if (n == 0)
         return;
     rl_match_list_make(tt, twins, n, -1, &ls); /* at every blur: one block */
-    for (k = 0; k < TWIN_SCALES; k++) {
+    for (k = 0; k < RL_SEARCH_TWIN_SCALES; k++) {
         rl_profile p;
         rl_match mm;
-        rl_polar_profile(pol, x, y, s * twin_scale[k], &p);
+        rl_polar_profile(pol, x, y, s * rl_search_twin_scale[k], &p);
         rl_match_list_score(&ls, &p, &mm);
         if (mm.id >= 0 && mm.score > m->second)
             m->second = mm.score;

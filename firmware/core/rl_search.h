@@ -26,6 +26,11 @@
 #include "rl_polar.h"
 #include "rl_templates.h"
 
+/* Radius scales (of the found radius) at which the winner's zone twins
+ * are scored: their best there counts as the runner-up. */
+#define RL_SEARCH_TWIN_SCALES 4
+extern const double rl_search_twin_scale[RL_SEARCH_TWIN_SCALES];
+
 /* Identify the candidate at (*cx, *cy, *r) with pol as scratch; the
  * centre and radius are updated to the best fit, the match of every id
  * there is in *m (m->id < 0: nothing matched). */

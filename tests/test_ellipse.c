@@ -1,0 +1,154 @@
+/* Ellipses: the conic fit recovers ellipses drawn from their equation (a
+ * whole outline and the half a border leaves), and the recognizer
+ * identifies a landmark seen as an ellipse and cut by the border, drawn
+ * here pixel by pixel from the family's rings (not by the templates). */
+#include "rl_test.h"
+#include <math.h>
+#include "rl_ellipse.h"
+#include "rl_recog.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+/* Points of the ellipse with centre (cx, cy), semi-axes a >= b, major
+ * axis at angle phi, at parameters t0 .. t1. */
+static int ellipse_points(double cx, double cy, double a, double b, double phi, double t0,
+                          double t1, int n, double *x, double *y)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        double t = t0 + (t1 - t0) * i / (n - 1), u = a * cos(t), v = b * sin(t);
+        x[i] = cx + u * cos(phi) - v * sin(phi);
+        y[i] = cy + u * sin(phi) + v * cos(phi);
+    }
+    return n;
+}
+
+static void check_fit(double t0, double t1)
+{
+    double x[24], y[24];
+    rl_ellipse e;
+    int n = ellipse_points(40.0, 30.0, 26.0, 22.1, 0.6, t0, t1, 24, x, y);
+    /* the guess: a circle somewhere near, as the edge fit gives */
+    assert_int_equal(rl_ellipse_fit(x, y, n, 42.0, 29.0, 23.0, &e), 1);
+    assert_true(fabs(e.cx - 40.0) < 1e-6);
+    assert_true(fabs(e.cy - 30.0) < 1e-6);
+    assert_true(fabs(e.r - sqrt(26.0 * 22.1)) < 1e-6);
+    assert_true(fabs(rl_ellipse_aspect(&e.shape) - 22.1 / 26.0) < 1e-6);
+    /* the shape's normalized radius of an outline point is e.r */
+    {
+        double dx = x[5] - e.cx, dy = y[5] - e.cy;
+        double rho = sqrt(e.shape.a * dx * dx + 2 * e.shape.b * dx * dy + e.shape.c * dy * dy);
+        assert_true(fabs(rho - e.r) < 1e-6);
+    }
+}
+
+static void test_fit_whole_outline(void **state)
+{
+    (void)state;
+    check_fit(0.0, 2 * M_PI * 23.0 / 24.0);
+}
+
+static void test_fit_half_outline(void **state)
+{
+    (void)state;
+    check_fit(-0.5 * M_PI, 0.5 * M_PI); /* the side a left border leaves */
+}
+
+static void test_fit_refuses_what_is_no_ellipse(void **state)
+{
+    double x[8] = {0}, y[8] = {0};
+    rl_ellipse e;
+    int i;
+    (void)state;
+    assert_int_equal(rl_ellipse_fit(x, y, 5, 0, 0, 10, &e), 0); /* too few points */
+    for (i = 0; i < 8; i++) { /* a hyperbola x^2 - y^2 = 100 */
+        double t = -1.0 + 2.0 * i / 7;
+        x[i] = 10 * cosh(t) * (i % 2 ? 1 : -1);
+        y[i] = 10 * sinh(t);
+    }
+    assert_int_equal(rl_ellipse_fit(x, y, 8, 0, 0, 10, &e), 0);
+    for (i = 0; i < 8; i++) { /* a line */
+        x[i] = i;
+        y[i] = 2 * i;
+    }
+    assert_int_equal(rl_ellipse_fit(x, y, 8, 3, 6, 10, &e), 0);
+    assert_true(fabs(rl_ellipse_aspect(&(rl_shape){1, 0, 1}) - 1.0) < 1e-12);
+}
+
+#define W 320
+#define H 240
+static uint8_t frame[W * H];
+
+/* Landmark id as an ellipse (semi-axes a >= b, major axis at phi) on paper
+ * 215 with ink 30, 4 x 4 samples a pixel, its white sheet 1.45 a across;
+ * the rings from rl_family_dark_at. */
+static void draw_ellipse(int id, double cx, double cy, double a, double b, double phi)
+{
+    rl_family f = {5};
+    int x, y, i, j;
+    for (y = (int)(cy - 1.5 * a); y <= (int)(cy + 1.5 * a) + 1; y++)
+        for (x = (int)(cx - 1.5 * a); x <= (int)(cx + 1.5 * a) + 1; x++) {
+            double dark = 0;
+            if (x < 0 || y < 0 || x >= W || y >= H)
+                continue;
+            for (j = 0; j < 4; j++)
+                for (i = 0; i < 4; i++) {
+                    double dx = x + (i + 0.5) / 4 - 0.5 - cx, dy = y + (j + 0.5) / 4 - 0.5 - cy;
+                    double u = dx * cos(phi) + dy * sin(phi), v = -dx * sin(phi) + dy * cos(phi);
+                    double rho = sqrt(u * u / (a * a) + v * v / (b * b));
+                    dark += rho <= 1.0 ? rl_family_dark_at(&f, id, rho) : 0;
+                }
+            frame[y * W + x] = (uint8_t)lround(215 - (215 - 30) * dark / 16);
+        }
+}
+
+static void test_cut_ellipse_identified(void **state)
+{
+    /* two round landmarks for the frame's size, and id 22 seen as an
+     * ellipse of aspect 0.86 with its centre 9 px inside the left border
+     * (about 0.64 of it visible) */
+    rl_recog_config cfg;
+    rl_image img = rl_image_view(W, H, W, frame);
+    static rl_result res;
+    rl_recog *rec;
+    void *mem;
+    size_t n;
+    int j, found = 0;
+    (void)state;
+    memset(frame, 215, sizeof frame);
+    draw_ellipse(9, 150.0, 70.0, 25.0, 25.0, 0.0);
+    draw_ellipse(26, 230.0, 160.0, 25.0, 25.0, 0.0);
+    draw_ellipse(22, 9.0, 130.0, 26.0, 22.4, 1.2);
+    rl_recog_defaults(&cfg);
+    n = rl_recog_workspace_size(W, H, &cfg);
+    mem = malloc(n);
+    assert_non_null(mem);
+    assert_int_equal(rl_recog_init(&rec, &cfg, W, H, mem, n), RL_OK);
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
+    for (j = 0; j < res.n_landmarks; j++) {
+        const rl_detection *d = &res.landmarks[j];
+        if (d->u > 40)
+            continue;
+        assert_int_equal(d->id, 22);
+        assert_int_equal(d->pass, RL_PASS_LOCAL);
+        assert_false(d->complete);
+        if (hypot(d->u - 9.0, d->v - 130.0) > 1.5)
+            fail_msg("centre (%.2f, %.2f), drawn at (9, 130)", d->u, d->v);
+        found = 1;
+    }
+    assert_true(found);
+    free(mem);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_fit_whole_outline),
+        cmocka_unit_test(test_fit_half_outline),
+        cmocka_unit_test(test_fit_refuses_what_is_no_ellipse),
+        cmocka_unit_test(test_cut_ellipse_identified),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
