@@ -1,10 +1,13 @@
 /* Ellipses: the conic fit recovers ellipses drawn from their equation (a
- * whole outline and the half a border leaves), and the recognizer
+ * whole outline and the half a border leaves), a profile gathered as a
+ * circle or an ellipse holds what a brute-force count over every pixel
+ * finds, and the recognizer
  * identifies a landmark seen as an ellipse and cut by the border, drawn
  * here pixel by pixel from the family's rings (not by the templates). */
 #include "rl_test.h"
 #include <math.h>
 #include "rl_ellipse.h"
+#include "rl_profile.h"
 #include "rl_recog.h"
 
 #ifndef M_PI
@@ -81,6 +84,60 @@ static void test_fit_refuses_what_is_no_ellipse(void **state)
 #define H 240
 static uint8_t frame[W * H];
 
+/* Every pixel of the frame tested against the shape's normalized radius
+ * in double precision: the profile's bins as the formula defines them. */
+static void brute_profile(double cx, double cy, double r, const rl_shape *sh, rl_profile *p)
+{
+    double ext = RL_PROFILE_EXTENT * r;
+    int x, y, k;
+    memset(p, 0, sizeof *p);
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            double dx = x - cx, dy = y - cy;
+            double rho = sqrt(sh->a * dx * dx + 2 * sh->b * dx * dy + sh->c * dy * dy);
+            double v = 255 - frame[y * W + x];
+            if (rho >= ext)
+                continue;
+            k = (int)(rho / ext * RL_PROFILE_BINS);
+            p->n[k] += 1;
+            p->sx[k] += v;
+            p->sxx += v * v;
+            p->total += 1;
+        }
+}
+
+static void test_profile_matches_brute_force(void **state)
+{
+    unsigned long rng = 7;
+    int trial, k;
+    (void)state;
+    for (k = 0; k < W * H; k++) {
+        rng = rng * 6364136223846793005ul + 1442695040888963407ul;
+        frame[k] = (uint8_t)(rng >> 56);
+    }
+    for (trial = 0; trial < 40; trial++) {
+        /* circles and ellipses, whole and cut by every side */
+        double cx = 5.0 + trial * 7.63, cy = 3.0 + trial * 5.91, r = 9.0 + trial * 0.77;
+        rl_shape sh = trial % 2 ? rl_shape_from_moments(1.0, 0.15 * (trial % 5), 0.7)
+                                : rl_shape_circle();
+        rl_profile got, want;
+        double off = 0;
+        if (trial % 2)
+            rl_profile_gather_shaped(&(rl_image){W, H, W, frame}, cx, cy, r, &sh, &got);
+        else
+            rl_profile_gather(&(rl_image){W, H, W, frame}, cx, cy, r, &got);
+        brute_profile(cx, cy, r, &sh, &want);
+        /* a pixel whose radius lies within rounding of a bin's edge may
+         * fall either side of it: a few at most */
+        for (k = 0; k < RL_PROFILE_BINS; k++)
+            off += fabs(got.n[k] - want.n[k]);
+        if (off > 4 || fabs(got.total - want.total) > 2)
+            fail_msg("trial %d: %.0f pixels binned differently, %.0f of %.0f gathered", trial, off,
+                     got.total, want.total);
+        assert_true(fabs(got.sxx - want.sxx) <= 2 * 255.0 * 255.0);
+    }
+}
+
 /* Landmark id as an ellipse (semi-axes a >= b, major axis at phi) on paper
  * 215 with ink 30, 4 x 4 samples a pixel, its white sheet 1.45 a across;
  * the rings from rl_family_dark_at. */
@@ -148,6 +205,7 @@ int main(void)
         cmocka_unit_test(test_fit_whole_outline),
         cmocka_unit_test(test_fit_half_outline),
         cmocka_unit_test(test_fit_refuses_what_is_no_ellipse),
+        cmocka_unit_test(test_profile_matches_brute_force),
         cmocka_unit_test(test_cut_ellipse_identified),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,43 +1,89 @@
 #include "rl_profile.h"
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
-/* Pixels binned by the shape's normalized radius, a circle's included:
- * for (1, 0, 1) every step below gives the same bits as dx^2 + dy^2. */
+/* Pixels of a row handled at a time: their bins first, in blocks of
+ * GATHER_BLOCK (a fixed count the compiler vectorizes), then the sums. */
+#define GATHER_CHUNK 64
+#define GATHER_BLOCK 16
+/* A bin's count and sum of darkness packed in one word: one add a pixel. */
+#define PACK_COUNT (1ull << 32)
+
+/* The row's span of x where the shape's normalized radius about (cx, cy)
+ * is under ext (dy from the centre): [*xa, *xb], empty when *xa > *xb. */
+static void row_span(const rl_shape *sh, double cx, double dy, double ext, int *xa, int *xb)
+{
+    /* a dx^2 + 2 b dy dx + c dy^2 < ext^2 */
+    double disc = sh->b * sh->b * dy * dy - sh->a * (sh->c * dy * dy - ext * ext), h, mid;
+    if (disc <= 0) {
+        *xa = 1;
+        *xb = 0;
+        return;
+    }
+    h = sqrt(disc) / sh->a;
+    mid = cx - sh->b * dy / sh->a;
+    *xa = (int)ceil(mid - h);
+    *xb = (int)floor(mid + h);
+}
+
+/* Pixels binned by the shape's normalized radius, a circle's included. */
 static void gather(const rl_image *img, double cx, double cy, double r, const rl_shape *sh,
                    rl_profile *p)
 {
-    double ext = RL_PROFILE_EXTENT * r, scale = RL_PROFILE_BINS / ext, e2 = ext * ext, sxx = 0;
-    /* the ellipse's extent along x and y */
-    double hx = ext * sqrt(sh->c), hy = ext * sqrt(sh->a);
-    int x, y, k, x0 = (int)ceil(cx - hx), x1 = (int)floor(cx + hx);
-    int y0 = (int)ceil(cy - hy), y1 = (int)floor(cy + hy);
-    for (k = 0; k < RL_PROFILE_BINS; k++)
-        p->n[k] = p->sx[k] = 0;
+    double ext = RL_PROFILE_EXTENT * r, scale = RL_PROFILE_BINS / ext;
+    /* the ellipse's extent along y */
+    double hy = ext * sqrt(sh->a);
+    float fa = (float)sh->a, fscale = (float)scale;
+    int y, k, y0 = (int)ceil(cy - hy), y1 = (int)floor(cy + hy);
+    /* two sets of sums, even and odd pixels: neighbours share a bin, and
+     * one set would make every add wait on the one before */
+    uint64_t acc[2][RL_PROFILE_BINS], sxx = 0;
+    memset(acc, 0, sizeof acc);
     /* pixels outside the image are not gathered: a cut landmark meets cut
      * templates */
-    if (x0 < 0) x0 = 0;
     if (y0 < 0) y0 = 0;
-    if (x1 > img->width - 1) x1 = img->width - 1;
     if (y1 > img->height - 1) y1 = img->height - 1;
     for (y = y0; y <= y1; y++) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
-        double dy = y - cy, cdy2 = sh->c * dy * dy, b2dy = 2 * sh->b * dy;
-        for (x = x0; x <= x1; x++) {
-            double dx = x - cx, d2 = (sh->a * dx + b2dy) * dx + cdy2, v;
-            if (d2 >= e2)
-                continue;
-            k = (int)(sqrt(d2) * scale);
-            v = 255 - row[x];
-            p->n[k] += 1;
-            p->sx[k] += v;
-            sxx += v * v;
+        double dy = y - cy;
+        float b2dy = (float)(2 * sh->b * dy), cdy2 = (float)(sh->c * dy * dy);
+        int x0, x1, xs;
+        uint32_t rs = 0;
+        row_span(sh, cx, dy, ext, &x0, &x1);
+        if (x0 < 0) x0 = 0;
+        if (x1 > img->width - 1) x1 = img->width - 1;
+        for (xs = x0; xs <= x1; xs += GATHER_CHUNK) {
+            int nx = x1 - xs + 1 < GATHER_CHUNK ? x1 - xs + 1 : GATHER_CHUNK, i, b;
+            int bin[GATHER_CHUNK];
+            float dx0 = (float)(xs - cx);
+            for (b = 0; b < nx; b += GATHER_BLOCK) {
+                int *kb = bin + b;
+                float bx = dx0 + (float)b;
+                for (i = 0; i < GATHER_BLOCK; i++) {
+                    float dx = bx + (float)i, d2 = (fa * dx + b2dy) * dx + cdy2;
+                    int kk = (int)(sqrtf(d2) * fscale);
+                    /* a pixel on the rim (the span's rounding) in the last bin */
+                    kb[i] = kk < RL_PROFILE_BINS - 1 ? kk : RL_PROFILE_BINS - 1;
+                }
+            }
+            for (i = 0; i < nx; i++) {
+                uint32_t v = 255u - row[xs + i];
+                acc[i & 1][bin[i]] += PACK_COUNT + v;
+                rs += v * v;
+            }
         }
+        sxx += rs;
     }
-    p->sxx = sxx;
+    p->sxx = (double)sxx;
     p->total = 0;
-    for (k = 0; k < RL_PROFILE_BINS; k++)
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        uint64_t w = acc[0][k] + acc[1][k];
+        p->n[k] = (double)(w >> 32);
+        p->sx[k] = (double)(w & 0xffffffffu);
         p->total += p->n[k];
+    }
 }
 
 void rl_profile_gather(const rl_image *img, double cx, double cy, double r, rl_profile *p)

@@ -169,8 +169,9 @@ int rl_recog_speck_area(const rl_recog_config *cfg)
 static int analyse_histogram(const rl_image *img, rl_result *res)
 {
     rl_hist h;
-    /* every other row suffices for the levels, except in small frames */
-    rl_hist_compute_rows(img, &h, img->height >= 120 ? 2 : 1);
+    /* every fourth row suffices for the levels (76,800 pixels of a 640 x 480
+     * frame), every other or every row in small frames */
+    rl_hist_compute_rows(img, &h, img->height >= 240 ? 4 : img->height >= 120 ? 2 : 1);
     if (rl_hist_levels(&h, &res->levels) != RL_OK)
         return 0; /* a frame that is all light */
     return 1;

@@ -38,6 +38,16 @@ static double median(double *v, int n)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+static double least(const double *v, int n)
+{
+    double m = v[0];
+    int i;
+    for (i = 1; i < n; i++)
+        if (v[i] < m)
+            m = v[i];
+    return m;
+}
+
 static int cmp_str(const void *a, const void *b)
 {
     return strcmp(*(char *const *)a, *(char *const *)b);
@@ -75,7 +85,7 @@ static int bench_dir(const char *dir, apriltag_detector_t *td)
     rl_heap_recog_init(&hr, &cfg);
     for (i = 0; i < n; i++) {
         rl_image ring, tag;
-        double t[REPEAT];
+        double t[REPEAT], ta[REPEAT];
         snprintf(path, sizeof path, "%s/%s.png", dir, names[i]);
         if (rl_png_read_gray(path, &ring, err, sizeof err) != RL_OK) {
             fprintf(stderr, "ringloc-bench: %s\n", err);
@@ -88,23 +98,26 @@ static int bench_dir(const char *dir, apriltag_detector_t *td)
         }
         W = ring.width;
         H = ring.height;
+        /* each REPEAT times in a row (warm, as a detector running frame
+         * after frame is), the least run of each: interference from the
+         * rest of the machine only ever adds time, to either */
         for (k = 0; k < REPEAT; k++)
             if (rl_report_run(&hr, &ring, &res, &t[k]) != RL_OK) {
                 fprintf(stderr, "ringloc-bench: %s: recognition failed\n", names[i]);
                 return 1;
             }
-        t_rl[i] = median(t, REPEAT);
-        found_rl += res.n_landmarks;
-        for (k = 0; k < 3; k++) {
+        for (k = 0; k < REPEAT; k++) {
             image_u8_t im = {tag.width, tag.height, tag.stride, tag.data};
             double t0 = (double)rl_clock_now_us();
             zarray_t *dets = apriltag_detector_detect(td, &im);
-            t[k] = (double)rl_clock_now_us() - t0;
+            ta[k] = (double)rl_clock_now_us() - t0;
             if (k == 0)
                 found_at += zarray_size(dets);
             apriltag_detections_destroy(dets);
         }
-        t_at[i] = median(t, 3);
+        t_rl[i] = least(t, REPEAT);
+        t_at[i] = least(ta, REPEAT);
+        found_rl += res.n_landmarks;
         rl_png_free(&ring);
         rl_png_free(&tag);
         free(names[i]);
@@ -127,15 +140,6 @@ static int bench_dir(const char *dir, apriltag_detector_t *td)
  * from the rest of the machine only ever adds time. */
 #define LOCAL_REPEAT 15
 
-static double least(const double *v, int n)
-{
-    double m = v[0];
-    int i;
-    for (i = 1; i < n; i++)
-        if (v[i] < m)
-            m = v[i];
-    return m;
-}
 
 static int bench_local(const char *dir)
 {
@@ -219,7 +223,7 @@ int main(int argc, char **argv)
             continue;
         }
         if (!header) {
-            printf("recognition time per frame, median over frames (ringloc: median of %d runs each)\n",
+            printf("recognition time per frame, median over frames of the least of %d runs each\n",
                    REPEAT);
             printf("%-9s %6s %12s %12s %10s %9s %9s %10s %7s\n", "size", "frames", "ringloc_ms",
                    "apriltag_ms", "ratio", "rings", "tags", "workspace", "B/px");
