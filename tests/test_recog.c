@@ -123,6 +123,83 @@ static void test_inner_ring_is_not_a_landmark(void **state)
     }
 }
 
+/* Gaussian blur of a W x H float image, sigma px, in place (edges
+ * clamped): the test's own, not the recognizer's. */
+static void blur_float(float *im, double sigma)
+{
+    static float tmp[H * W];
+    double k[64], sum = 0;
+    int rad = (int)ceil(3 * sigma), i, x, y;
+    assert_true(rad < 32);
+    for (i = -rad; i <= rad; i++)
+        sum += k[i + rad] = exp(-0.5 * i * i / (sigma * sigma));
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            double a = 0;
+            for (i = -rad; i <= rad; i++) {
+                int xx = x + i < 0 ? 0 : x + i >= W ? W - 1 : x + i;
+                a += k[i + rad] * im[y * W + xx];
+            }
+            tmp[y * W + x] = (float)(a / sum);
+        }
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            double a = 0;
+            for (i = -rad; i <= rad; i++) {
+                int yy = y + i < 0 ? 0 : y + i >= H ? H - 1 : y + i;
+                a += k[i + rad] * tmp[yy * W + x];
+            }
+            im[y * W + x] = (float)(a / sum);
+        }
+}
+
+/* A soft dark blob next to a lamp (a shade, a fixture's edge out of
+ * focus) looks, once each sector is normalized on its own, like a disk in
+ * a ring, code 01111: drawn here as id 15 blurred by 0.2 of its radius, it
+ * must not be reported, while a landmark in focus beside the same lamp is
+ * (by the local pass). */
+static void test_soft_blob_next_to_light_is_not_a_landmark(void **state)
+{
+    static uint8_t t[H * W];
+    static float im[H * W];
+    rl_recog_config cfg;
+    rl_family f = {5};
+    rl_image img = rl_image_view(W, H, W, frame), tv = rl_image_view(W, H, W, t);
+    const double bx = 90.0, by = 150.0, br = 20.0, lx = 230.0, ly = 150.0, lr = 24.0;
+    int x, y, j, found = 0;
+    (void)state;
+    assert_int_equal(rl_tmpl_draw(&f, 15, bx, by, br, NULL, &tv, NULL), RL_OK);
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++)
+            im[y * W + x] = (float)(215 - (215 - 60) * t[y * W + x] / 255.0);
+    blur_float(im, 0.2 * br);
+    assert_int_equal(rl_tmpl_draw(&f, 9, lx, ly, lr, NULL, &tv, NULL), RL_OK);
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            double v = im[y * W + x];
+            if (t[y * W + x])
+                v = 215 - (215 - 30) * t[y * W + x] / 255.0;
+            /* the lamp: a bright band between the two, touching both */
+            if (x >= bx + 1.05 * br && x <= lx - 1.15 * lr && y > 60 && y < 240)
+                v = 255;
+            frame[y * W + x] = (uint8_t)lround(v);
+        }
+    rl_recog_defaults(&cfg);
+    init(&cfg);
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
+    assert_true(res.n_lights > 0);
+    for (j = 0; j < res.n_landmarks; j++) {
+        const rl_detection *d = &res.landmarks[j];
+        if (hypot(d->u - lx, d->v - ly) < 3 && d->id == 9) {
+            found = 1;
+            continue;
+        }
+        fail_msg("%s pass: id %d of radius %.1f at (%.1f, %.1f)", d->pass == RL_PASS_LOCAL ? "local" : "global",
+                 d->id, d->radius, d->u, d->v);
+    }
+    assert_true(found);
+}
+
 static void test_stride_is_honoured(void **state)
 {
     rl_recog_config cfg;
@@ -310,6 +387,7 @@ int main(void)
         cmocka_unit_test(test_finds_what_was_drawn),
         cmocka_unit_test(test_stride_is_honoured),
         cmocka_unit_test(test_inner_ring_is_not_a_landmark),
+        cmocka_unit_test(test_soft_blob_next_to_light_is_not_a_landmark),
         cmocka_unit_test(test_map_restricts_ids),
         cmocka_unit_test(test_blank_frames),
         cmocka_unit_test(test_errors),

@@ -1,6 +1,7 @@
 #include "rl_accept.h"
 
 #include "rl_profile.h"
+#include "rl_templates.h"
 
 rl_accept_rule rl_accept_rule_of(const rl_recog_config *cfg, rl_pass pass)
 {
@@ -8,6 +9,7 @@ rl_accept_rule rl_accept_rule_of(const rl_recog_config *cfg, rl_pass pass)
     r.min_score = pass == RL_PASS_LOCAL ? cfg->local_min_score : cfg->min_score;
     r.min_lead = pass == RL_PASS_LOCAL ? cfg->local_min_lead : cfg->min_lead;
     r.min_contrast = cfg->min_contrast;
+    r.max_blur = pass == RL_PASS_LOCAL ? RL_BLUR_LEVELS - 2 : RL_BLUR_LEVELS - 1;
     return r;
 }
 
@@ -15,7 +17,7 @@ int rl_accept(const rl_accept_rule *rule, const rl_match *m, double span)
 {
     return m->id >= 0 && m->score >= rule->min_score &&
            (1.0 - m->second * m->second) >= rule->min_lead * (1.0 - m->score * m->score) &&
-           m->contrast >= rule->min_contrast * span;
+           m->contrast >= rule->min_contrast * span && m->blur <= rule->max_blur;
 }
 
 void rl_accept_levels_at(const rl_illum *il, const rl_levels *frame, double u, double v,

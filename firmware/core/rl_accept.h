@@ -10,6 +10,13 @@
  * ring-like clutter (speaker grilles) correlates, but only at a fraction
  * of the grey span.
  *
+ * The local pass takes no match at the blurriest templates (a Gaussian of
+ * 0.10 R, wider than code zone 1): what is that soft is no print in
+ * focus but a blurred object next to a light (a shade, a fixture's
+ * edge), and with its sectors normalized one by one such a blob looks
+ * like a disk in a ring. The global pass sees the whole ring at the
+ * frame's levels, and a landmark smeared by motion may match there.
+ *
  *   rl_accept_rule rule = rl_accept_rule_of(&cfg, RL_PASS_GLOBAL);
  *   rl_match m;
  *   rl_match_all(&tt, &p, &m);
@@ -28,6 +35,7 @@ typedef struct {
     double min_score;    /* Pearson correlation of the best id */
     double min_lead;     /* runner-up's residual over the best's */
     double min_contrast; /* fitted contrast, fraction of the grey span */
+    int max_blur;        /* blurriest template level taken */
 } rl_accept_rule;
 
 /* The thresholds of one pass. */
