@@ -71,7 +71,7 @@ void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *
         taken = rl_accept(&rule, &m, rl_accept_span(&local, &p));
     d.score = m.score;
     if (taken &&
-        !(rl_inner_possible(res, &d) && rl_inner_enclosed(img, res->levels.light, d.u, d.v, d.radius))) {
+        !rl_inner_enclosed(img, res->levels.light, d.u, d.v, d.radius)) {
         d.id = m.id;
         rl_result_add_landmark(res, &d);
     } else {

@@ -3,12 +3,15 @@
 #include <math.h>
 #include "rl_median.h"
 #include "rl_ray.h"
-#include "rl_result.h"
 
 #define ENCLOSE_RAYS 16
 #define ENCLOSE_FROM 1.3 /* radii: past the quiet zone */
 #define ENCLOSE_TO 2.9   /* radii: the outer ring around the smallest mimic
                             (a zone boundary at 0.36 R) */
+/* An outer ring's dark ends within 1 / RL_OUTER_RING_INNER of where it
+ * starts (1.25), blur and rounding allowed for: past that the dark goes
+ * on, a dark ceiling or wall around the sheet, not a ring. */
+#define RING_END 1.45
 
 /* Nearest pixel's grey level, or -1 outside the image. */
 static int grey_at(const rl_image *img, double x, double y)
@@ -26,9 +29,9 @@ static int grey_at(const rl_image *img, double x, double y)
 enum { RAY_UNKNOWN, RAY_CLEAR, RAY_HIT };
 
 /* What the ray in direction (c, s) meets beyond the candidate's quiet
- * zone: a dark ring (its radius in radii in *hit), nothing up to
- * ENCLOSE_TO, or unknown (no contrast of its own here, or the border or a
- * light came first). */
+ * zone: a dark ring with paper beyond it (its radius in radii in *hit),
+ * nothing up to ENCLOSE_TO, or unknown (no contrast of its own here, the
+ * border or a light came first, or the dark does not end like a ring's). */
 static int ray_meets(const rl_image *img, int light, double cx, double cy, double r, double c,
                      double s, double *hit)
 {
@@ -52,8 +55,17 @@ static int ray_meets(const rl_image *img, int light, double cx, double cy, doubl
             break;
     }
     if (g >= 0 && g < mid) {
-        *hit = rho / r;
-        return RAY_HIT;
+        double start = rho;
+        for (; rho <= RING_END * start + 1.0; rho += 1.0) {
+            g = grey_at(img, cx + rho * c, cy + rho * s);
+            if (g < 0 || g >= light)
+                return RAY_UNKNOWN;
+            if (g >= mid) {
+                *hit = start / r;
+                return RAY_HIT;
+            }
+        }
+        return RAY_UNKNOWN;
     }
     return rho > ENCLOSE_TO * r ? RAY_CLEAR : RAY_UNKNOWN;
 }
@@ -75,11 +87,4 @@ int rl_inner_enclosed(const rl_image *img, int light, double cx, double cy, doub
     for (i = 0; i < nhit; i++)
         agree += fabs(hit[i] - med) <= 0.15 * med;
     return agree >= ENCLOSE_RAYS / 4 && 4 * agree >= 3 * (nhit + clear);
-}
-
-int rl_inner_possible(const rl_result *res, const rl_detection *d)
-{
-    double reach = ENCLOSE_TO * d->radius;
-    return rl_result_light_gap(res, &d->box) <= reach || d->u < reach || d->v < reach ||
-           res->width - 1 - d->u < reach || res->height - 1 - d->v < reach;
 }

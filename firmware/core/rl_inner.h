@@ -3,13 +3,15 @@
  *
  * A code ring of a landmark can look like a whole landmark of half its
  * size (id 2's zone 4 ring reads as id 16). The paper drops inner rings by
- * containment in the binary image; when glare breaks the outer ring, or
- * the border cuts it, that containment is lost, so it is checked on the
- * grey levels instead: rays from the candidate's centre, beyond its quiet
- * zone, that meet a dark ring at one common radius in most directions
- * mean the candidate sits inside a larger landmark.
+ * containment in the binary image; when glare breaks the outer ring, the
+ * border cuts it, or it merges with a dark wall or shadow next to its
+ * sheet, that containment is lost, so it is checked on the grey levels
+ * instead: rays from the candidate's centre, beyond its quiet zone, that
+ * meet a dark ring (dark, then paper again) at one common radius in most
+ * directions mean the candidate sits inside a larger landmark. A dark
+ * ceiling around a sheet is dark that does not end: no ring.
  *
- *   if (rl_inner_possible(&res, &d) && rl_inner_enclosed(&img, light, d.u, d.v, d.radius))
+ *   if (rl_inner_enclosed(&img, light, d.u, d.v, d.radius))
  *       d.id = -1;   // not a landmark
  */
 #ifndef RL_INNER_H
@@ -20,10 +22,5 @@
 
 /* 1 if the candidate (cx, cy, r) is enclosed by a concentric dark ring. */
 int rl_inner_enclosed(const rl_image *img, int light, double cx, double cy, double r);
-
-/* 1 if a light or the border is near enough to d to have broken a larger
- * ring around it (only then is rl_inner_enclosed needed in the global
- * pass, where containment of boxes finds the rest). */
-int rl_inner_possible(const rl_result *res, const rl_detection *d);
 
 #endif
