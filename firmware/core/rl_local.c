@@ -73,6 +73,8 @@ static int local_outer_ring(const rl_label *lb, const rl_box *w, const rl_detect
     return best;
 }
 
+#define LOCATE_SIZE_TOLERANCE 0.45
+
 /* Window, threshold, outer ring and its edge: the candidate's box and its
  * centre and radius in the frame; 0 when any step finds nothing. */
 static int local_locate(rl_recog *rec, const rl_image *img, const rl_result *res,
@@ -114,15 +116,19 @@ static int local_locate(rl_recog *rec, const rl_image *img, const rl_result *res
         *cy = ty;
         *r = tr;
     }
-    return fabs(*r - R) <= 0.3 * R;
+    /* the frame's landmarks are of one size but for the lens: a wide angle
+     * shrinks them towards the corners, where a circle fitted to an
+     * ellipse's arc comes out shorter still */
+    return fabs(*r - R) <= LOCATE_SIZE_TOLERANCE * R;
 }
 
 /* Ellipses the local pass tries: flatter than this is not a landmark seen
  * through the lens, rounder is a circle; the fit's centre and radius must
- * stay near the circle's. */
-#define ELLIPSE_MIN_ASPECT 0.7
+ * stay near the circle's (a circle through a flattened arc sits up to a
+ * third of a radius off the ellipse's centre). */
+#define ELLIPSE_MIN_ASPECT 0.6
 #define ELLIPSE_MAX_ASPECT 0.97
-#define ELLIPSE_MAX_MOVE 0.25
+#define ELLIPSE_MAX_MOVE 0.4
 
 /* The zone twins' best score against the ellipse e at radii around its
  * own, as m's runner-up when higher (as the search does for circles). */

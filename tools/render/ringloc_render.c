@@ -347,10 +347,10 @@ static int render(const scene *s, uint8_t *out)
 /* ---- scenes ---- */
 
 typedef enum { SET_CLEAN, SET_CLUTTERED, SET_GLARE, SET_BORDER, SET_CLUTTER_ONLY, SET_DIM,
-               SET_BLUR, SET_MOTION, SET_ILLUM, SET_DEGRADED, SET_PATH } set_kind;
+               SET_BLUR, SET_MOTION, SET_ILLUM, SET_DEGRADED, SET_LENS, SET_PATH } set_kind;
 
 static const char *set_names[] = {"clean", "cluttered", "glare", "border", "clutter_only",
-                                  "dim", "blur", "motion", "illum", "degraded", "path"};
+                                  "dim", "blur", "motion", "illum", "degraded", "lens", "path"};
 
 static int add_obj(scene *s, obj_kind k, double x, double y, double rot, double a, double b, int id)
 {
@@ -427,6 +427,12 @@ static void random_scene(scene *s, set_kind kind)
      * can be seen (ids stay unique in a frame), other things a bit beyond */
     view = 0.5 * sqrt((double)s->cam.width * s->cam.width + (double)s->cam.height * s->cam.height) /
            s->cam.fx * s->distance * 1.05;
+    if (kind == SET_LENS) {
+        /* a wide-angle lens sees further than its focal length says */
+        double xn, yn;
+        rl_camera_unproject(&s->cam, 0, 0, &xn, &yn);
+        view = hypot(xn, yn) * s->distance * 1.05;
+    }
     reach = view + s->tile;
     for (j = -8; j <= 8; j++)
         for (i = -8; i <= 8; i++) {
@@ -458,7 +464,7 @@ static void random_scene(scene *s, set_kind kind)
             } else if (p < 0.65 && kind != SET_CLEAN) {
                 add_obj(s, OBJ_LIGHT, x, y, 0, 0.29, 0.29, 0);
             } else if (p < 0.85 && (kind == SET_CLUTTERED || kind == SET_BORDER || kind == SET_DIM ||
-                                    kind == SET_ILLUM || kind == SET_DEGRADED)) {
+                                    kind == SET_ILLUM || kind == SET_DEGRADED || kind == SET_LENS)) {
                 add_clutter(s, x + urand(-0.12, 0.12), y + urand(-0.12, 0.12), p < 0.72);
             }
         }
@@ -517,6 +523,17 @@ static void effects(scene *s, set_kind kind)
         s->motion_dir = urand(0, 2 * M_PI);
         s->gain = 0.35;
         s->noise = 3.0;
+        break;
+    case SET_LENS:
+        /* a wide-angle M12 lens (3.6 mm class) as on the real photos:
+         * strong barrel distortion, so landmarks towards the border are
+         * ellipses (flattened radially, to about 0.8 at the edge) and
+         * smaller, with the vignetting such lenses have */
+        s->cam.k[0] = -0.22;
+        s->cam.k[1] = 0.04;
+        s->vignette = urand(0.35, 0.55);
+        s->blur = urand(0.5, 0.9);
+        s->noise = urand(1.5, 2.5);
         break;
     case SET_PATH: break;
     }
@@ -621,7 +638,9 @@ static const char *help =
     "Render ceiling fixtures with ground truth (NAME_NNN.png + NAME_NNN.yaml).\n"
     "  --set NAME      clean, cluttered, glare, border, clutter_only, dim, blur, motion,\n"
     "                  illum (vignetting, fall-off, a shadow, grey ink), degraded (blur\n"
-    "                  1.1 px, 4 px motion, 0.35 exposure, 3 DN noise):\n"
+    "                  1.1 px, 4 px motion, 0.35 exposure, 3 DN noise), lens (a wide-angle\n"
+    "                  lens's barrel distortion, k1 -0.22: landmarks at the border as\n"
+    "                  ellipses; replaces the camera's distortion):\n"
     "                  random scenes around the paper's set-up (ring5, 0.21 m landmarks,\n"
     "                  1.87 m from camera to ceiling, 0.61 m tiles)\n"
     "  --path KIND     straight, rect or circle: frames along a robot path under a fixed\n"
