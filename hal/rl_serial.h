@@ -1,11 +1,12 @@
 /* rl_serial: where a pose leaves: a serial line (POSIX termios, raw 8N1),
  * or, on the host, a file or standard output ("-"). A pseudo-terminal
- * works as a serial device.
+ * works as a serial device. Nothing is ever created in /dev: a device
+ * that is not there is RL_ENOTFOUND, for the caller to retry.
  *
  *   rl_serial s;
  *   char err[256];
  *   const uint8_t frame_bytes[3] = {0xFA, 0xFB, 0};
- *   if (rl_serial_open(&s, "/dev/serial0", 115200, err, sizeof err) == RL_OK) {
+ *   if (rl_serial_open(&s, "/dev/serial0", 115200, 0, err, sizeof err) == RL_OK) {
  *       if (rl_serial_write(&s, frame_bytes, 3, 100) == RL_ENODEV)
  *           use(s.path);                 // the line went away: close, reopen later
  *       rl_serial_close(&s);
@@ -22,17 +23,29 @@ typedef struct {
     int fd;
     int is_tty;
     int own;          /* fd is ours to close (not stdout) */
+    int broken;       /* standard output's reader has gone (a broken pipe) */
     char path[256];
 } rl_serial;
 
 /* Baud rates accepted: 9600 .. 921600 (the termios ones). */
 int rl_serial_baud_ok(int baud);
 
-RL_CHECK rl_err rl_serial_open(rl_serial *s, const char *path, int baud, char *err, size_t errlen);
+/* rl_serial_open flags: a path outside /dev that does not exist is
+ * created as a file to record into (a first open; a reopen after a
+ * failure must find what was there). */
+#define RL_SERIAL_MAY_CREATE 1u
+
+/* Open path: "-" (standard output), a character device (a serial line or
+ * a pty: raw 8N1 at baud), or a regular file outside /dev (appended to).
+ * RL_ENOTFOUND when the device, the file or a link's target is not
+ * there; RL_EINVAL for an unsupported baud rate. */
+RL_CHECK rl_err rl_serial_open(rl_serial *s, const char *path, int baud, unsigned flags, char *err,
+                               size_t errlen);
 
 /* Write all n bytes (waiting at most timeout_ms for a congested line).
  * RL_ENODEV when the device went away, RL_ETIMEOUT when it would not take
- * the bytes, RL_EIO otherwise. */
+ * the bytes, RL_EIO otherwise; on standard output a reader that went away
+ * (a broken pipe) is RL_EIO with s->broken set: nothing can reopen it. */
 RL_CHECK rl_err rl_serial_write(rl_serial *s, const uint8_t *p, size_t n, int timeout_ms);
 
 void rl_serial_close(rl_serial *s);

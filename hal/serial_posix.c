@@ -29,9 +29,17 @@ int rl_serial_baud_ok(int baud)
     return speed_of(baud) != 0;
 }
 
-rl_err rl_serial_open(rl_serial *s, const char *path, int baud, char *err, size_t errlen)
+/* 1 for a path in /dev, where only devices belong. */
+static int in_dev(const char *path)
+{
+    return strncmp(path, "/dev/", 5) == 0;
+}
+
+rl_err rl_serial_open(rl_serial *s, const char *path, int baud, unsigned flags, char *err,
+                      size_t errlen)
 {
     struct stat st;
+    int exists;
     memset(s, 0, sizeof *s);
     s->fd = -1;
     snprintf(s->path, sizeof s->path, "%s", path);
@@ -71,8 +79,21 @@ rl_err rl_serial_open(rl_serial *s, const char *path, int baud, char *err, size_
         }
         return RL_OK;
     }
+    /* Not a character device. In /dev it is a device that is not there
+     * (yet, or any more): never a file made in its place. Nor is a link
+     * whose device went (a restarted pty monitor's) or, after the first
+     * open, a file that vanished: the caller retries. */
+    exists = stat(path, &st) == 0;
+    if (in_dev(path) || (!exists && (lstat(path, &st) == 0 || !(flags & RL_SERIAL_MAY_CREATE)))) {
+        snprintf(err, errlen, "%s: no such device", path);
+        return RL_ENOTFOUND;
+    }
+    if (exists && !S_ISREG(st.st_mode) && !S_ISFIFO(st.st_mode)) {
+        snprintf(err, errlen, "%s: neither a serial device nor a file", path);
+        return RL_ENODEV;
+    }
     /* a plain file: the frames are recorded (append) */
-    s->fd = open(path, O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+    s->fd = open(path, O_WRONLY | O_APPEND | O_CLOEXEC | (exists ? 0 : O_CREAT | O_EXCL), 0644);
     if (s->fd < 0) {
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
         return RL_ENOTFOUND;
@@ -104,6 +125,10 @@ rl_err rl_serial_write(rl_serial *s, const uint8_t *p, size_t n, int timeout_ms)
             if (q.revents & (POLLERR | POLLHUP | POLLNVAL))
                 return RL_ENODEV;
             continue;
+        }
+        if (w < 0 && errno == EPIPE && !s->own) {
+            s->broken = 1; /* standard output's reader went: it never comes back */
+            return RL_EIO;
         }
         return w < 0 && (errno == EIO || errno == ENXIO || errno == ENODEV || errno == EBADF ||
                          errno == EPIPE)

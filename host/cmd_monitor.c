@@ -14,6 +14,7 @@
 #include "rl_cli.h"
 #include "rl_cmd.h"
 #include "rl_frame.h"
+#include "rl_serial.h"
 
 static const char *monitor_help =
     "usage: ringloc monitor [--baud 115200] [--follow] DEVICE|FILE\n"
@@ -74,7 +75,13 @@ int rl_cmd_monitor(int argc, char **argv)
     while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
         switch (c) {
         case 'p': link_path = optarg; break;
-        case 'b': if (!rl_cli_int(C, "--baud", optarg, &baud)) return RL_EXIT_USAGE; break;
+        case 'b':
+            if (!rl_cli_int(C, "--baud", optarg, &baud))
+                return RL_EXIT_USAGE;
+            if (!rl_serial_baud_ok(baud))
+                return rl_cli_fail(C, RL_EXIT_USAGE, "--baud: %d is not a supported baud rate "
+                                   "(9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600)", baud);
+            break;
         case 'f': follow = 1; break;
         case 'h': fputs(monitor_help, stdout); return 0;
         default: return rl_cli_fail(C, RL_EXIT_USAGE, "see 'ringloc monitor --help'");
@@ -104,13 +111,15 @@ int rl_cmd_monitor(int argc, char **argv)
             return rl_cli_fail(C, RL_EXIT_FAIL, "%s: %s", src, strerror(errno));
         if (fstat(fd, &st) == 0 && S_ISCHR(st.st_mode)) {
             struct termios t;
+            /* a serial line or a pty: read until stopped; another character
+             * device (/dev/null) ends like a file */
             if (tcgetattr(fd, &t) == 0) {
                 cfmakeraw(&t);
                 t.c_cc[VMIN] = 1;
                 t.c_cc[VTIME] = 0;
                 tcsetattr(fd, TCSANOW, &t);
+                follow = 1;
             }
-            follow = 1; /* a device: read until stopped */
         }
     }
     rl_decoder_init(&d);
@@ -120,7 +129,8 @@ int rl_cmd_monitor(int argc, char **argv)
             struct pollfd p;
             p.fd = fd;
             p.events = POLLIN;
-            if (poll(&p, 1, 200) == 0)
+            /* nothing yet, or a signal (the loop's test sees it): no blocking read */
+            if (poll(&p, 1, 200) <= 0)
                 continue;
         }
         n = read(fd, buf, sizeof buf);

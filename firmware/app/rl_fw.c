@@ -39,16 +39,28 @@ typedef struct {
     rl_serial s;
     const char *path;
     int baud;
+    int opened; /* once: a reopen creates nothing */
+    const char *prefix;
 } out_ctx;
 
 static rl_err out_open(void *ctx, char *err, size_t errlen)
 {
     out_ctx *o = (out_ctx *)ctx;
-    return rl_serial_open(&o->s, o->path, o->baud, err, errlen);
+    rl_err e = rl_serial_open(&o->s, o->path, o->baud, o->opened ? 0 : RL_SERIAL_MAY_CREATE, err,
+                              errlen);
+    if (e == RL_OK)
+        o->opened = 1;
+    return e;
 }
 static rl_err out_write(void *ctx, const uint8_t *p, size_t n)
 {
-    return rl_serial_write(&((out_ctx *)ctx)->s, p, n, 100);
+    out_ctx *o = (out_ctx *)ctx;
+    rl_err e = rl_serial_write(&o->s, p, n, 100);
+    if (o->s.broken && !stop_flag) {
+        fprintf(stderr, "%s: serial: standard output closed (broken pipe); stopping\n", o->prefix);
+        stop_flag = 1;
+    }
+    return e;
 }
 static void out_close(void *ctx)
 {
@@ -121,6 +133,7 @@ static int make_recognizer(const char *C, const fw_setup *s, rl_heap_recog *hr)
 static void wire_io(const fw_setup *s, out_ctx *octx, const char *prefix, rl_run_io *io)
 {
     octx->path = s->cfg.serial;
+    octx->prefix = prefix;
     octx->baud = s->cfg.baud;
     memset(io, 0, sizeof *io);
     io->cam = &s->cam;
@@ -140,6 +153,7 @@ static void on_signals(void)
     sa.sa_handler = on_signal;
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGHUP, &sa, NULL); /* a closed terminal or a service reload: stop with the summary */
     signal(SIGPIPE, SIG_IGN); /* a vanished reader is a write error, not a death */
 }
 
@@ -220,7 +234,7 @@ int rl_fw_main(const char *C, int argc, char **argv)
                     "%ld timeouts, %ld serial errors, %ld frames dropped%s\n",
             prefix, runner.frames, runner.poses, runner.statuses, runner.camera_errors,
             runner.camera_timeouts, runner.serial_errors, runner.dropped,
-            stop_flag ? " (stopped by signal)" : "");
+            stop_flag ? (octx.s.broken ? " (standard output closed)" : " (stopped by signal)") : "");
     rl_heap_recog_free(&hr);
     return 0;
 }

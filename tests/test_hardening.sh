@@ -1,0 +1,103 @@
+#!/bin/sh
+# Faults the firmware and the tools must survive (issue 18), as a user
+# meets them: each check fails without its fix.
+# usage: test_hardening.sh RINGLOC PATHS_DIR TMPDIR
+set -u
+R=$1
+D=$(cd "$2" && pwd)
+T=$3
+rm -rf "$T"
+mkdir -p "$T"
+pass=0
+fail=0
+ok() { pass=$((pass + 1)); }
+bad() { echo "FAIL: $*"; fail=$((fail + 1)); }
+
+# a long drive: the rendered frames listed many times over
+: >"$T/frames.txt"
+for k in 1 2 3 4 5 6 7 8; do ls "$D"/straight_*.png "$D"/rect_*.png >>"$T/frames.txt"; done
+cfg() { # SERIAL RATE
+    cat <<CFG
+camera: {backend: png, device: $T/frames.txt, width: 640, height: 480, rate: $2}
+calibration: $D/camera.yaml
+map: $D/map.yaml
+robot: $D/robot.yaml
+serial: {device: $1, baud: 115200}
+CFG
+}
+
+# 1. a serial device that is not there is never made a file, in /dev or
+#    as the dangling link of a pty monitor that went away; the loop says
+#    so and keeps retrying
+dev=/dev/ttyRLTEST$$
+cfg "$dev" 200 >"$T/nodev.yaml"
+"$R" run --config "$T/nodev.yaml" 2>"$T/nodev.err"; rc=$?
+if [ -e "$dev" ]; then bad "$dev was created"; rm -f "$dev"; else ok; fi
+grep -q "$dev: no such device; retrying" "$T/nodev.err" && ! grep -q " 0 serial errors" "$T/nodev.err" && ok ||
+    bad "absent device: rc $rc: $(tail -3 "$T/nodev.err")"
+ln -s /dev/pts/nonexistent$$ "$T/dangling"
+cfg "$T/dangling" 200 >"$T/dangling.yaml"
+"$R" run --config "$T/dangling.yaml" 2>"$T/dangling.err"
+[ -L "$T/dangling" ] && [ ! -e /dev/pts/nonexistent$$ ] && grep -q "no such device" "$T/dangling.err" && ok ||
+    bad "dangling link: $(tail -2 "$T/dangling.err")"
+
+# 2. a pty monitor restarted in the middle of a run gets the frames sent
+#    after its restart
+cfg "$T/tty" 40 >"$T/pty.yaml"
+"$R" monitor --pty "$T/tty" >"$T/first.jsonl" 2>/dev/null &
+m1=$!
+i=0
+while [ ! -L "$T/tty" ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+"$R" run --config "$T/pty.yaml" 2>"$T/pty.err" &
+run=$!
+sleep 1.5
+kill -TERM $m1
+wait $m1 2>/dev/null
+sleep 0.5
+"$R" monitor --pty "$T/tty" >"$T/second.jsonl" 2>/dev/null &
+m2=$!
+sleep 2
+kill -TERM $run
+wait $run
+i=0
+while kill -0 $m2 2>/dev/null && [ $i -lt 30 ]; do sleep 0.1; i=$((i + 1)); done
+kill $m2 2>/dev/null
+wait $m2 2>/dev/null
+n1=$(grep -c '"type"' "$T/first.jsonl")
+n2=$(grep -c '"type"' "$T/second.jsonl")
+[ "$n1" -gt 10 ] && [ "$n2" -gt 20 ] && [ ! -f "$T/tty" ] && ok ||
+    bad "pty restart: $n1 frames before, $n2 after: $(tail -3 "$T/pty.err")"
+
+# 3. monitor: a character device that is no serial line ends like a file;
+#    --pty stops on SIGTERM before any writer came; a baud of 0 is refused
+timeout 5 "$R" monitor /dev/null >/dev/null 2>&1; rc=$?
+[ $rc = 0 ] && ok || bad "monitor /dev/null: rc $rc (124: it never ended)"
+"$R" monitor --pty "$T/idle" >/dev/null 2>&1 &
+m=$!
+sleep 0.5
+kill -TERM $m
+i=0
+while kill -0 $m 2>/dev/null && [ $i -lt 20 ]; do sleep 0.1; i=$((i + 1)); done
+if kill -0 $m 2>/dev/null; then bad "monitor --pty ignored SIGTERM"; kill -KILL $m; else ok; fi
+wait $m 2>/dev/null
+"$R" monitor --baud 0 "$T/first.jsonl" 2>"$T/err"; rc=$?
+[ $rc = 2 ] && grep -q "baud: 0 is not a supported baud rate" "$T/err" && ok || bad "monitor --baud 0: rc $rc"
+
+# 4. run: SIGHUP stops it with its summary; standard output piped into a
+#    reader that goes away stops it at once, saying why
+cfg "$T/hup.bin" 20 >"$T/hup.yaml"
+"$R" run --config "$T/hup.yaml" 2>"$T/hup.err" &
+pid=$!
+sleep 1
+kill -HUP $pid
+wait $pid; rc=$?
+[ $rc = 0 ] && grep -q "frames dropped (stopped by signal)" "$T/hup.err" && ok || bad "SIGHUP: rc $rc: $(tail -1 "$T/hup.err")"
+cfg - 20 >"$T/pipe.yaml"
+start=$(date +%s)
+"$R" run --config "$T/pipe.yaml" 2>"$T/pipe.err" | head -c 100 >/dev/null
+took=$(( $(date +%s) - start ))
+grep -q "standard output closed (broken pipe); stopping" "$T/pipe.err" && [ $took -lt 3 ] && ok ||
+    bad "broken pipe: ${took}s: $(tail -2 "$T/pipe.err")"
+
+echo "$pass passed, $fail failed"
+[ "$fail" = 0 ]
