@@ -17,11 +17,13 @@ void rl_camera_defaults(rl_camera *cam, int width, int height, double hfov)
 rl_err rl_camera_check(const rl_camera *cam)
 {
     int i;
-    if (cam->width <= 0 || cam->height <= 0 || !(cam->fx > 0.0) || !(cam->fy > 0.0) ||
-        !isfinite(cam->fx) || !isfinite(cam->fy) || !isfinite(cam->cx) || !isfinite(cam->cy))
+    if (cam->width <= 0 || cam->height <= 0 || !(cam->fx >= RL_CAMERA_MIN_F) ||
+        !(cam->fx <= RL_CAMERA_MAX_F) || !(cam->fy >= RL_CAMERA_MIN_F) || !(cam->fy <= RL_CAMERA_MAX_F) ||
+        !(fabs(cam->cx - 0.5 * cam->width) <= 1.5 * cam->width) ||
+        !(fabs(cam->cy - 0.5 * cam->height) <= 1.5 * cam->height))
         return RL_ERANGE;
     for (i = 0; i < 8; i++)
-        if (!isfinite(cam->k[i]))
+        if (!(fabs(cam->k[i]) <= RL_CAMERA_MAX_K))
             return RL_ERANGE;
     return RL_OK;
 }

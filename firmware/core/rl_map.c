@@ -1,5 +1,7 @@
 #include "rl_map.h"
 
+#include <math.h>
+
 int rl_map_find(const rl_map *map, int id)
 {
     int i;
@@ -18,7 +20,8 @@ rl_err rl_map_check(const rl_map *map, int *bad)
         return RL_ERANGE;
     for (i = 0; i < map->count; i++) {
         *bad = i;
-        if (!rl_family_valid(&map->family, map->lm[i].id))
+        if (!rl_family_valid(&map->family, map->lm[i].id) ||
+            !(fabs(map->lm[i].x) <= RL_MAP_MAX_COORD) || !(fabs(map->lm[i].y) <= RL_MAP_MAX_COORD))
             return RL_ERANGE;
         for (j = 0; j < i; j++)
             if (map->lm[j].id == map->lm[i].id)

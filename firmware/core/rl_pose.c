@@ -100,7 +100,7 @@ rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mo
     int i, j, m = 0;
     double Z, tx, ty, yaw, c, s, sum2 = 0;
     if (cam == NULL || map == NULL || mount == NULL || out == NULL || (n > 0 && lm == NULL) ||
-        n < 0)
+        n < 0 || rl_camera_check(cam) != RL_OK)
         return RL_EINVAL;
     memset(out, 0, sizeof *out);
     Z = map->ceiling_height - mount->z;
@@ -108,6 +108,12 @@ rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mo
         return RL_ERANGE;
     for (i = 0; i < n && m < RL_MAX_LANDMARKS; i++) {
         int k = rl_map_find(map, lm[i].id);
+        if (!(fabs(lm[i].u - 0.5 * cam->width) <= 1.5 * cam->width) ||
+            !(fabs(lm[i].v - 0.5 * cam->height) <= 1.5 * cam->height)) {
+            /* no camera of this size sees a landmark there */
+            out->dropped[out->n_dropped++] = lm[i].id;
+            continue;
+        }
         if (k < 0) {
             out->n_unknown++;
             continue;
@@ -171,5 +177,10 @@ rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mo
     s = sin(out->yaw);
     out->x = tx - (c * mount->x - s * mount->y);
     out->y = ty - (s * mount->x + c * mount->y);
+    /* what leaves for JSON or the wire is a number, or there is no pose */
+    if (!isfinite(out->x) || !isfinite(out->y) || !isfinite(out->yaw) || !isfinite(out->residual) ||
+        !isfinite(out->cam_x) || !isfinite(out->cam_y) || !isfinite(out->cam_yaw) ||
+        !(fabs(out->x) <= 2 * RL_MAP_MAX_COORD) || !(fabs(out->y) <= 2 * RL_MAP_MAX_COORD))
+        return RL_ERANGE;
     return RL_OK;
 }

@@ -26,7 +26,16 @@ typedef struct {
  * (radians), principal point at the image centre. */
 void rl_camera_defaults(rl_camera *cam, int width, int height, double hfov);
 
-/* RL_OK if sizes and focal lengths are positive and finite. */
+/* Limits of a camera model: focal lengths in pixels, the principal point
+ * within a frame's size of the image, distortion coefficients. */
+#define RL_CAMERA_MIN_F 1.0
+#define RL_CAMERA_MAX_F 1e6
+#define RL_CAMERA_MAX_K 1e4
+
+/* RL_OK if the sizes are positive, the focal lengths in RL_CAMERA_MIN_F ..
+ * RL_CAMERA_MAX_F, the principal point within one frame's size of the
+ * image and every coefficient finite and at most RL_CAMERA_MAX_K; else
+ * RL_ERANGE. */
 RL_CHECK rl_err rl_camera_check(const rl_camera *cam);
 
 /* Apply the distortion model to normalized coordinates (x/z, y/z). */

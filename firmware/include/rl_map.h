@@ -29,7 +29,11 @@ typedef struct {
 /* Index of `id` in the map, or -1. */
 int rl_map_find(const rl_map *map, int id);
 
-/* Validate: diameter and height > 0, ids valid in the family and unique.
+/* Largest |x| or |y| of a landmark, metres. */
+#define RL_MAP_MAX_COORD 1e5
+
+/* Validate: diameter and height > 0, coordinates within RL_MAP_MAX_COORD,
+ * ids valid in the family and unique.
  * On failure *bad is the index of the first offending landmark (or -1 for
  * a map-level field). RL_ERANGE for an invalid id or size, RL_EFORMAT for
  * a duplicate. */

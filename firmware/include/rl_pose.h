@@ -79,8 +79,12 @@ void rl_pose_ceiling_point(const rl_camera *cam, const rl_offsets *offsets, doub
 
 /* Solve the pose from n identified landmarks. RL_ETOOFEW when fewer than
  * two usable (in the map, consistent) remain; RL_ERANGE when the camera is
- * not below the ceiling; RL_EINVAL for bad arguments. `out` always says
- * what was used and dropped. */
+ * not below the ceiling or the result is not finite (a calibration or map
+ * out of its limits); RL_EINVAL for bad arguments (a camera
+ * rl_camera_check refuses among them). Detections no camera of this size
+ * can see (more than a frame outside the image) are dropped. On RL_OK
+ * every number in `out` is finite and the pose within twice
+ * RL_MAP_MAX_COORD; `out` always says what was used and dropped. */
 RL_CHECK rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mount,
                               const rl_detection *lm, int n, const rl_offsets *offsets,
                               rl_pose *out);

@@ -33,7 +33,7 @@ rl_err rl_mapfile_load(const char *path, rl_map *map, char *err, size_t errlen)
         goto out;
     }
     if ((e = rl_yaml_double(&y, root, "diameter", NULL, 1, &map->diameter, err, errlen)) != RL_OK ||
-        (e = rl_yaml_double(&y, root, "ceiling_height", NULL, 1, &map->ceiling_height, err,
+        (e = rl_yaml_double_in(&y, root, "ceiling_height", NULL, 1, 0.0, 100.0, &map->ceiling_height, err,
                             errlen)) != RL_OK)
         goto out;
     if (!(map->diameter > 0.0) || map->diameter > 5.0) {
@@ -71,10 +71,12 @@ rl_err rl_mapfile_load(const char *path, rl_map *map, char *err, size_t errlen)
         if ((e = rl_yaml_int(&y, item, "id", label, 1, &lm->id, err, errlen)) != RL_OK)
             goto out;
         snprintf(label, sizeof label, "landmarks[%d].x", i);
-        if ((e = rl_yaml_double(&y, item, "x", label, 1, &lm->x, err, errlen)) != RL_OK)
+        if ((e = rl_yaml_double_in(&y, item, "x", label, 1, -RL_MAP_MAX_COORD, RL_MAP_MAX_COORD, &lm->x,
+                                   err, errlen)) != RL_OK)
             goto out;
         snprintf(label, sizeof label, "landmarks[%d].y", i);
-        if ((e = rl_yaml_double(&y, item, "y", label, 1, &lm->y, err, errlen)) != RL_OK)
+        if ((e = rl_yaml_double_in(&y, item, "y", label, 1, -RL_MAP_MAX_COORD, RL_MAP_MAX_COORD, &lm->y,
+                                   err, errlen)) != RL_OK)
             goto out;
         map->count = i + 1;
     }

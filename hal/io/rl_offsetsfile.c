@@ -39,10 +39,10 @@ rl_err rl_offsetsfile_load(const char *path, rl_offsets *o, char *err, size_t er
         goto out;
     }
     if ((e = rl_yaml_int(&y, root, "degree", NULL, 1, &o->degree, err, errlen)) != RL_OK ||
-        (e = rl_yaml_double(&y, root, "u0", NULL, 1, &o->u0, err, errlen)) != RL_OK ||
-        (e = rl_yaml_double(&y, root, "v0", NULL, 1, &o->v0, err, errlen)) != RL_OK ||
-        (e = rl_yaml_double(&y, root, "scale", NULL, 1, &o->scale, err, errlen)) != RL_OK ||
-        (e = rl_yaml_double(&y, root, "distance", NULL, 1, &o->distance, err, errlen)) != RL_OK)
+        (e = rl_yaml_double_in(&y, root, "u0", NULL, 1, -1e5, 1e5, &o->u0, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double_in(&y, root, "v0", NULL, 1, -1e5, 1e5, &o->v0, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double_in(&y, root, "scale", NULL, 1, 1e-3, 1e5, &o->scale, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double_in(&y, root, "distance", NULL, 1, 1e-3, 100, &o->distance, err, errlen)) != RL_OK)
         goto out;
     if (o->degree < 1 || o->degree > 3 || !(o->scale > 0) || !(o->distance > 0)) {
         e = rl_yaml_fail(&y, root, "degree", RL_ERANGE, err, errlen,

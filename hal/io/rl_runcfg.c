@@ -96,7 +96,7 @@ rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
         (e = path_key(&y, root, "offsets", NULL, 0, path, c->offsets, sizeof c->offsets, err, errlen)) != RL_OK ||
         (e = path_key(&y, ser, "device", "serial.device", 1, path, c->serial, sizeof c->serial, err, errlen)) != RL_OK ||
         (e = rl_yaml_int(&y, ser, "baud", "serial.baud", 0, &c->baud, err, errlen)) != RL_OK ||
-        (e = rl_yaml_double(&y, root, "log_interval", NULL, 0, &c->log_interval, err, errlen)) != RL_OK)
+        (e = rl_yaml_double_in(&y, root, "log_interval", NULL, 0, 0, 86400, &c->log_interval, err, errlen)) != RL_OK)
         goto out;
     /* device paths like /dev/serial0 are absolute; relative ones are files */
     if (rl_yaml_get(&y, ser, "baud") != NULL)

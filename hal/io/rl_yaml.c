@@ -175,6 +175,20 @@ rl_err rl_yaml_double(rl_yaml *y, yaml_node_t *map, const char *key, const char 
     return RL_OK;
 }
 
+rl_err rl_yaml_double_in(rl_yaml *y, yaml_node_t *map, const char *key, const char *label,
+                         int required, double lo, double hi, double *out, char *err, size_t errlen)
+{
+    double v = *out;
+    rl_err e = rl_yaml_double(y, map, key, label, required, &v, err, errlen);
+    if (e != RL_OK)
+        return e;
+    if (rl_yaml_get(y, map, key) != NULL && !(v >= lo && v <= hi))
+        return rl_yaml_fail(y, rl_yaml_get(y, map, key), label ? label : key, RL_ERANGE, err, errlen,
+                            "%g is out of range (%g .. %g)", v, lo, hi);
+    *out = v;
+    return RL_OK;
+}
+
 rl_err rl_yaml_int(rl_yaml *y, yaml_node_t *map, const char *key, const char *label,
                    int required, int *out, char *err, size_t errlen)
 {

@@ -60,6 +60,10 @@ rl_err rl_yaml_fail(rl_yaml *y, yaml_node_t *node, const char *key, rl_err code,
 RL_CHECK rl_err rl_yaml_double(rl_yaml *y, yaml_node_t *map, const char *key,
                                const char *label, int required, double *out, char *err,
                                size_t errlen);
+/* The same, the number also within [lo, hi] (RL_ERANGE naming the range). */
+RL_CHECK rl_err rl_yaml_double_in(rl_yaml *y, yaml_node_t *map, const char *key,
+                                  const char *label, int required, double lo, double hi,
+                                  double *out, char *err, size_t errlen);
 RL_CHECK rl_err rl_yaml_int(rl_yaml *y, yaml_node_t *map, const char *key, const char *label,
                             int required, int *out, char *err, size_t errlen);
 RL_CHECK rl_err rl_yaml_string(rl_yaml *y, yaml_node_t *map, const char *key,

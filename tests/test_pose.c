@@ -1,0 +1,113 @@
+/* The pose never leaves as a number that is not one (issue 18): camera
+ * models and maps out of their limits are refused, and detections no
+ * camera can produce give an error, never a pose of NaN or infinity.
+ * The geometry itself is checked against OpenCV in test_locate. */
+#include "rl_test.h"
+#include <math.h>
+#include "rl_camera.h"
+#include "rl_map.h"
+#include "rl_pose.h"
+
+static rl_camera camera(void)
+{
+    rl_camera c;
+    rl_camera_defaults(&c, 640, 480, 70.0 * 3.14159265358979 / 180.0);
+    return c;
+}
+
+static void test_camera_limits(void **state)
+{
+    rl_camera c = camera();
+    (void)state;
+    assert_int_equal(rl_camera_check(&c), RL_OK);
+    c.fx = c.fy = 1e-300; /* accepted once: a NaN pose followed */
+    assert_int_equal(rl_camera_check(&c), RL_ERANGE);
+    c = camera();
+    c.fy = 2e6;
+    assert_int_equal(rl_camera_check(&c), RL_ERANGE);
+    c = camera();
+    c.cx = 1e9;
+    assert_int_equal(rl_camera_check(&c), RL_ERANGE);
+    c = camera();
+    c.k[0] = 1e300;
+    assert_int_equal(rl_camera_check(&c), RL_ERANGE);
+    c = camera();
+    c.k[1] = NAN;
+    assert_int_equal(rl_camera_check(&c), RL_ERANGE);
+}
+
+static rl_map map2(double x1)
+{
+    static rl_map m;
+    memset(&m, 0, sizeof m);
+    m.family.bits = 5;
+    m.diameter = 0.21;
+    m.ceiling_height = 2.75;
+    m.count = 2;
+    m.lm[0].id = 3;
+    m.lm[0].x = 0.0;
+    m.lm[1].id = 7;
+    m.lm[1].x = x1;
+    return m;
+}
+
+static void test_map_limits(void **state)
+{
+    rl_map m = map2(0.61);
+    int bad;
+    (void)state;
+    assert_int_equal(rl_map_check(&m, &bad), RL_OK);
+    m = map2(1e300); /* accepted once: "residual": inf followed */
+    assert_int_equal(rl_map_check(&m, &bad), RL_ERANGE);
+    assert_int_equal(bad, 1);
+    m = map2(NAN);
+    assert_int_equal(rl_map_check(&m, &bad), RL_ERANGE);
+}
+
+static void test_no_pose_from_impossible_detections(void **state)
+{
+    rl_camera c = camera();
+    rl_map m = map2(0.61);
+    rl_mount mount = {0, 0, 0.88, 0};
+    rl_detection d[2];
+    rl_pose p;
+    static const double far[3] = {1e308, -1e308, 1e200};
+    int k;
+    (void)state;
+    for (k = 0; k < 3; k++) {
+        rl_err e;
+        memset(d, 0, sizeof d);
+        d[0].id = 3;
+        d[0].u = 320;
+        d[0].v = 240;
+        d[0].radius = 25;
+        d[1].id = 7;
+        d[1].u = far[k];
+        d[1].v = 240;
+        d[1].radius = 25;
+        e = rl_pose_solve(&c, &m, &mount, d, 2, NULL, &p);
+        if (e == RL_OK && !(isfinite(p.x) && isfinite(p.y) && isfinite(p.yaw) && isfinite(p.residual)))
+            fail_msg("u = %g: a pose of (%g, %g, %g), residual %g", far[k], p.x, p.y, p.yaw, p.residual);
+        assert_int_not_equal(e, RL_OK);
+    }
+    /* both beyond any image: the distance between them agrees with the
+     * map's (both huge), and a pose 4e305 m away came out */
+    d[0].u = d[1].u = 1e308;
+    d[1].v = 390;
+    if (rl_pose_solve(&c, &m, &mount, d, 2, NULL, &p) == RL_OK)
+        fail_msg("a pose of (%g, %g, %g) from detections at u = 1e308", p.x, p.y, p.yaw);
+    c.fx = c.fy = 1e-300;
+    d[0].u = 320;
+    d[1].u = 400;
+    assert_int_not_equal(rl_pose_solve(&c, &m, &mount, d, 2, NULL, &p), RL_OK);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_camera_limits),
+        cmocka_unit_test(test_map_limits),
+        cmocka_unit_test(test_no_pose_from_impossible_detections),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
