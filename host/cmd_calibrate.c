@@ -51,10 +51,13 @@ int rl_cmd_calibrate(int argc, char **argv)
         case 'p':
             if (sscanf(optarg, "%lf,%lf,%lf%c", &px, &py, &pyaw, &tail) != 3)
                 return rl_cli_fail(C, RL_EXIT_USAGE, "--pose: '%s' is not X,Y,YAW (metres, radians)", optarg);
+            if (!(fabs(px) <= RL_MAP_MAX_COORD && fabs(py) <= RL_MAP_MAX_COORD && fabs(pyaw) <= 7))
+                return rl_cli_fail(C, RL_EXIT_USAGE, "--pose: %s is out of range (|x|, |y| <= %g m, "
+                                   "|yaw| <= 7 rad)", optarg, RL_MAP_MAX_COORD);
             have_pose = 1;
             break;
         case 'd':
-            if (!rl_cli_int(C, "--degree", optarg, &o.degree))
+            if (!rl_cli_int(C, "--degree", optarg, 1, 3, &o.degree))
                 return RL_EXIT_USAGE;
             if (o.degree < 1 || o.degree > 3)
                 return rl_cli_fail(C, RL_EXIT_USAGE, "--degree: %d is not 1, 2 or 3", o.degree);

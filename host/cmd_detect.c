@@ -44,7 +44,7 @@ int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config
         else return rl_cli_fail(cmd, RL_EXIT_USAGE, "--local: '%s' is not auto, always or never", arg), -1;
         return 1;
     case 's':
-        if (!rl_cli_double(cmd, "--min-score", arg, &cfg->min_score))
+        if (!rl_cli_double(cmd, "--min-score", arg, 0.01, 1.0, &cfg->min_score))
             return -1;
         if (!(cfg->min_score > 0 && cfg->min_score <= 1))
             return rl_cli_fail(cmd, RL_EXIT_USAGE, "--min-score: %s is outside (0, 1]", arg), -1;

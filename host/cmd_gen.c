@@ -64,7 +64,7 @@ int rl_cmd_gen(int argc, char **argv)
         case 'i': ids_arg = optarg; break;
         case 'm': map_path = optarg; break;
         case 'd':
-            if (!rl_cli_double(C, "--diameter", optarg, &diameter))
+            if (!rl_cli_double(C, "--diameter", optarg, 0.001, 5.0, &diameter))
                 return RL_EXIT_USAGE;
             have_diameter = 1;
             break;
@@ -73,7 +73,7 @@ int rl_cmd_gen(int argc, char **argv)
         case 'S': svg = optarg; break;
         case 'N': png = optarg; break;
         case 'x':
-            if (!rl_cli_int(C, "--px", optarg, &px))
+            if (!rl_cli_int(C, "--px", optarg, 16, 8000, &px))
                 return RL_EXIT_USAGE;
             break;
         case 'h': fputs(gen_help, stdout); return 0;
@@ -90,8 +90,6 @@ int rl_cmd_gen(int argc, char **argv)
     if (paper == NULL)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--paper: unknown paper '%s' (%s)", paper_name,
                            rl_paper_names());
-    if (px < 16 || px > 8000)
-        return rl_cli_fail(C, RL_EXIT_USAGE, "--px: %d is outside 16 .. 8000", px);
 
     if (map_path != NULL) {
         if (rl_mapfile_load(map_path, &map, err, sizeof err) != RL_OK)

@@ -76,7 +76,7 @@ int rl_cmd_monitor(int argc, char **argv)
         switch (c) {
         case 'p': link_path = optarg; break;
         case 'b':
-            if (!rl_cli_int(C, "--baud", optarg, &baud))
+            if (!rl_cli_int(C, "--baud", optarg, 0, 10000000, &baud))
                 return RL_EXIT_USAGE;
             if (!rl_serial_baud_ok(baud))
                 return rl_cli_fail(C, RL_EXIT_USAGE, "--baud: %d is not a supported baud rate "

@@ -58,20 +58,20 @@ int rl_cmd_plan(int argc, char **argv)
     optind = 1;
     while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
         switch (c) {
-        case 'n': if (!rl_cli_int(C, "--landmarks", optarg, &in.landmarks)) return RL_EXIT_USAGE; break;
+        case 'n': if (!rl_cli_int(C, "--landmarks", optarg, 1, 1000000, &in.landmarks)) return RL_EXIT_USAGE; break;
         case 'c': cam_path = optarg; break;
-        case 'r': if (!rl_cli_size(C, "--resolution", optarg, &in.width, &in.height)) return RL_EXIT_USAGE; break;
-        case 'f': if (!rl_cli_double(C, "--hfov", optarg, &hfov)) return RL_EXIT_USAGE; break;
-        case 'd': if (!rl_cli_double(C, "--distance", optarg, &in.distance)) return RL_EXIT_USAGE; break;
-        case 'H': if (!rl_cli_double(C, "--ceiling-height", optarg, &ceiling)) return RL_EXIT_USAGE; break;
-        case 'Z': if (!rl_cli_double(C, "--camera-height", optarg, &cam_z)) return RL_EXIT_USAGE; break;
-        case 'm': if (!rl_cli_double(C, "--min-ring-px", optarg, &in.min_ring_px)) return RL_EXIT_USAGE; break;
+        case 'r': if (!rl_cli_size(C, "--resolution", optarg, RL_MAX_IMAGE_DIM, &in.width, &in.height)) return RL_EXIT_USAGE; break;
+        case 'f': if (!rl_cli_double(C, "--hfov", optarg, 1, 179, &hfov)) return RL_EXIT_USAGE; break;
+        case 'd': if (!rl_cli_double(C, "--distance", optarg, 0.05, 100, &in.distance)) return RL_EXIT_USAGE; break;
+        case 'H': if (!rl_cli_double(C, "--ceiling-height", optarg, 0.05, 100, &ceiling)) return RL_EXIT_USAGE; break;
+        case 'Z': if (!rl_cli_double(C, "--camera-height", optarg, 0, 100, &cam_z)) return RL_EXIT_USAGE; break;
+        case 'm': if (!rl_cli_double(C, "--min-ring-px", optarg, 0.5, 100, &in.min_ring_px)) return RL_EXIT_USAGE; break;
         case 'p': paper_name = optarg; break;
-        case 'g': if (!rl_cli_size(C, "--grid", optarg, &cols, &rows)) return RL_EXIT_USAGE; break;
-        case 'P': if (!rl_cli_double(C, "--pitch", optarg, &pitch)) return RL_EXIT_USAGE; break;
+        case 'g': if (!rl_cli_size(C, "--grid", optarg, 10000, &cols, &rows)) return RL_EXIT_USAGE; break;
+        case 'P': if (!rl_cli_double(C, "--pitch", optarg, 0.01, 100, &pitch)) return RL_EXIT_USAGE; break;
         case 'o': map_out = optarg; break;
         case 'F': pdf = optarg; break;
-        case 'D': if (!rl_cli_double(C, "--diameter", optarg, &diameter)) return RL_EXIT_USAGE; break;
+        case 'D': if (!rl_cli_double(C, "--diameter", optarg, 0.001, 5, &diameter)) return RL_EXIT_USAGE; break;
         case 'h': fputs(plan_help, stdout); return 0;
         default: return rl_cli_fail(C, RL_EXIT_USAGE, "see 'ringloc plan --help'");
         }
@@ -102,7 +102,7 @@ int rl_cmd_plan(int argc, char **argv)
         return rl_cli_fail(C, RL_EXIT_USAGE, "give --distance M, or --ceiling-height above "
                                              "--camera-height (the camera must be below the ceiling)");
     if (cols > 0 && in.landmarks == 0)
-        in.landmarks = cols * rows;
+        in.landmarks = (long)cols * rows > 1000000 ? 1000001 : cols * rows;
     if (in.landmarks <= 0)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--landmarks: how many landmarks does the site need?");
     if (!(in.min_ring_px > 0))
@@ -148,7 +148,7 @@ int rl_cmd_plan(int argc, char **argv)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--grid needs --pitch P (recommended %.3f)", out.pitch);
     if (!(ceiling > 0))
         return rl_cli_fail(C, RL_EXIT_USAGE, "--grid needs --ceiling-height (it goes into the map)");
-    if (cols * rows > (1 << out.bits) - 2 || cols * rows > RL_MAX_MAP_LANDMARKS)
+    if ((long)cols * rows > (1 << out.bits) - 2 || (long)cols * rows > RL_MAX_MAP_LANDMARKS)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--grid %dx%d needs %d ids; ring%d has %d", cols,
                            rows, cols * rows, out.bits, (1 << out.bits) - 2);
     if (pitch > out.pitch_max && out.pitch_max > 0)

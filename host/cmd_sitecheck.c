@@ -357,11 +357,11 @@ int rl_cmd_sitecheck(int argc, char **argv)
         case 'c': camera = optarg; break;
         case 'o': k.out = optarg; break;
         case 'j': json = 1; break;
-        case 'r': if (!rl_cli_double(C, "--radius-px", optarg, &r) || !(r >= 4 && r <= 1000)) return rl_cli_fail(C, RL_EXIT_USAGE, "--radius-px: expected 4 .. 1000"); break;
-        case 'D': if (!rl_cli_double(C, "--diameter", optarg, &diameter) || !(diameter > 0 && diameter < 10)) return rl_cli_fail(C, RL_EXIT_USAGE, "--diameter: expected metres in (0, 10)"); break;
-        case 'Z': if (!rl_cli_double(C, "--distance", optarg, &distance) || !(distance > 0.05 && distance < 100)) return rl_cli_fail(C, RL_EXIT_USAGE, "--distance: expected metres in (0.05, 100)"); break;
-        case 'n': if (!rl_cli_int(C, "--rounds", optarg, &k.rounds) || k.rounds < 1 || k.rounds > 100) return rl_cli_fail(C, RL_EXIT_USAGE, "--rounds: expected 1 .. 100"); break;
-        case 'S': if (!rl_cli_int(C, "--seed", optarg, &seed) || seed < 0) return rl_cli_fail(C, RL_EXIT_USAGE, "--seed: expected an integer >= 0"); break;
+        case 'r': if (!rl_cli_double(C, "--radius-px", optarg, 4, 1000, &r)) return RL_EXIT_USAGE; break;
+        case 'D': if (!rl_cli_double(C, "--diameter", optarg, 0.001, 5, &diameter)) return RL_EXIT_USAGE; break;
+        case 'Z': if (!rl_cli_double(C, "--distance", optarg, 0.05, 100, &distance)) return RL_EXIT_USAGE; break;
+        case 'n': if (!rl_cli_int(C, "--rounds", optarg, 1, 100, &k.rounds)) return RL_EXIT_USAGE; break;
+        case 'S': if (!rl_cli_int(C, "--seed", optarg, 0, 2147483647L, &seed)) return RL_EXIT_USAGE; break;
         case 'L':
             if (rl_cli_recog_option(C, c, optarg, &cfg, &family) < 0)
                 return RL_EXIT_USAGE;

@@ -40,7 +40,7 @@ expect 2 '--diameter: 0.300 m cannot be printed on a4' -- "$R" gen --id 3 --diam
 expect 2 '--diameter: 0.005 m cannot be printed' -- "$R" gen --id 3 --diameter 0.005 --pdf "$T/x.pdf"
 expect 2 "--diameter: 'abc' is not a number" -- "$R" gen --id 3 --diameter abc --pdf "$T/x.pdf"
 expect 2 "--paper: unknown paper 'b5'" -- "$R" gen --id 3 --paper b5 --pdf "$T/x.pdf"
-expect 2 '--px: 5 is outside' -- "$R" gen --id 3 --png "$T/x.png" --px 5
+expect 2 '--px: 5 is out of range \(16 .. 8000\)' -- "$R" gen --id 3 --png "$T/x.png" --px 5
 expect 2 'nothing to write' -- "$R" gen --id 3
 expect 2 'either --id or --map' -- "$R" gen --pdf "$T/x.pdf"
 expect 1 '/nonexistent/dir/x.pdf' -- "$R" gen --id 3 --diameter 0.15 --pdf /nonexistent/dir/x.pdf

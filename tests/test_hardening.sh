@@ -99,5 +99,43 @@ took=$(( $(date +%s) - start ))
 grep -q "standard output closed (broken pipe); stopping" "$T/pipe.err" && [ $took -lt 3 ] && ok ||
     bad "broken pipe: ${took}s: $(tail -2 "$T/pipe.err")"
 
+# 5. numbers out of their range, from files and the command line: one
+#    error line naming the file and key (or the option), never a NaN pose
+one_error() { # WHAT EXPECTED-RC PATTERN COMMAND...
+    what=$1 want=$2 pat=$3
+    shift 3
+    timeout 20 "$@" >"$T/out" 2>"$T/err"; rc=$?
+    if [ $rc = "$want" ] && [ "$(wc -l <"$T/err")" = 1 ] && grep -q -- "$pat" "$T/err" && ! grep -qi nan "$T/out"; then
+        ok
+    else
+        bad "$what: rc $rc: $(head -2 "$T/err")"
+    fi
+}
+frame=$(head -1 "$T/frames.txt")
+sed 's/data: \[\([0-9.]*\), 0, \([0-9.]*\), 0, \([0-9.]*\)/data: [1e-300, 0, \2, 0, 1e-300/' "$D/camera.yaml" >"$T/cam_tiny.yaml"
+one_error "fx 1e-300" 1 "cam_tiny.yaml:[0-9]*: camera_matrix: fx 1e-300" \
+    "$R" locate --camera "$T/cam_tiny.yaml" --map "$D/map.yaml" --robot "$D/robot.yaml" "$frame"
+awk 'NR == 1, /x:/ { if (!done && sub(/x: [-0-9.]+/, "x: 1e308")) done = 1 } { print }' "$D/map.yaml" >"$T/map_far.yaml"
+one_error "map x 1e308" 1 "map_far.yaml:[0-9]*: landmarks\[0\].x: 1e+308 is out of range" \
+    "$R" locate --camera "$D/camera.yaml" --map "$T/map_far.yaml" --robot "$D/robot.yaml" "$frame"
+python3 -c "print('landmarks: ' + '[' * 200000 + ']' * 200000)" >"$T/deep.yaml" 2>/dev/null ||
+    awk 'BEGIN { printf "landmarks: "; for (i = 0; i < 200000; i++) printf "["; for (i = 0; i < 200000; i++) printf "]"; print "" }' >"$T/deep.yaml"
+one_error "200,000 levels of YAML" 1 "deep.yaml:1: nested more than 64 levels deep" \
+    "$R" locate --camera "$D/camera.yaml" --map "$T/deep.yaml" --robot "$D/robot.yaml" "$frame"
+printf 'family: ring5\ndiameter: 0.21\nceiling_height: 2.75\ndiameter: 0.5\nlandmarks: []\n' >"$T/dup.yaml"
+one_error "a doubled key" 1 "dup.yaml:4: diameter: given twice (first at line 2)" \
+    "$R" locate --camera "$D/camera.yaml" --map "$T/dup.yaml" --robot "$D/robot.yaml" "$frame"
+printf 'camera_mount: {x: 0, y: 0, z: 0.88, z: 5}\n' >"$T/dup_robot.yaml"
+one_error "a doubled key in a flow mapping" 1 "dup_robot.yaml:1: z: given twice (first at line 1)" \
+    "$R" locate --camera "$D/camera.yaml" --map "$D/map.yaml" --robot "$T/dup_robot.yaml" "$frame"
+sed 's/^serial:.*/serial: {device: x.bin, baud: 115200}\nlog_interval: -5/' "$T/hup.yaml" >"$T/logint.yaml"
+one_error "log_interval -5" 1 "logint.yaml:[0-9]*: log_interval: -5 is out of range" "$R" run --config "$T/logint.yaml"
+one_error "plan --distance 1e300" 2 "distance: 1e300 is out of range" \
+    "$R" plan --landmarks 30 --resolution 640x480 --hfov 70 --distance 1e300
+one_error "plan --grid 65536x65536" 2 "grid: 65536x65536: each side at most" \
+    "$R" plan --resolution 640x480 --hfov 70 --distance 1.87 --grid 65536x65536 --pitch 0.61 --ceiling-height 2.75
+one_error "calibrate-offsets --pose nan" 2 "pose: nan,nan,nan is out of range" \
+    "$R" calibrate-offsets --map "$D/map.yaml" --robot "$D/robot.yaml" --pose nan,nan,nan --out "$T/o.yaml" "$frame"
+
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

@@ -186,8 +186,8 @@ static int parse_args(const char *C, const char *prefix, int argc, char **argv,
         switch (c) {
         case 'c': *config = optarg; break;
         case 'n':
-            if (!rl_cli_int(C, "--frames", optarg, &v) || v < 0)
-                return rl_cli_fail(C, RL_EXIT_USAGE, "--frames: expected a count >= 0");
+            if (!rl_cli_int(C, "--frames", optarg, 0, 2147483647L, &v))
+                return RL_EXIT_USAGE;
             *max_frames = v;
             break;
         case 'h': printf(run_help, prefix); *done = 1; return 0;

@@ -34,7 +34,8 @@ int rl_cli_fail(const char *cmd, int code, const char *fmt, ...)
     return code;
 }
 
-int rl_cli_double(const char *cmd, const char *opt, const char *s, double *out)
+int rl_cli_double(const char *cmd, const char *opt, const char *s, double lo, double hi,
+                  double *out)
 {
     char *end;
     double v;
@@ -44,11 +45,15 @@ int rl_cli_double(const char *cmd, const char *opt, const char *s, double *out)
         rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: '%s' is not a number", opt, s);
         return 0;
     }
+    if (!(v >= lo && v <= hi)) {
+        rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: %s is out of range (%g .. %g)", opt, s, lo, hi);
+        return 0;
+    }
     *out = v;
     return 1;
 }
 
-int rl_cli_int(const char *cmd, const char *opt, const char *s, int *out)
+int rl_cli_int(const char *cmd, const char *opt, const char *s, long lo, long hi, int *out)
 {
     char *end;
     long v;
@@ -58,16 +63,27 @@ int rl_cli_int(const char *cmd, const char *opt, const char *s, int *out)
         rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: '%s' is not an integer", opt, s);
         return 0;
     }
+    if (v < lo || v > hi) {
+        rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: %s is out of range (%ld .. %ld)", opt, s, lo, hi);
+        return 0;
+    }
     *out = (int)v;
     return 1;
 }
 
-int rl_cli_size(const char *cmd, const char *opt, const char *s, int *w, int *h)
+int rl_cli_size(const char *cmd, const char *opt, const char *s, int max, int *w, int *h)
 {
     char tail;
-    if (sscanf(s, "%dx%d%c", w, h, &tail) != 2 || *w <= 0 || *h <= 0) {
+    long a, b;
+    if (sscanf(s, "%ldx%ld%c", &a, &b, &tail) != 2 || a <= 0 || b <= 0) {
         rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: '%s' is not a size like 640x480", opt, s);
         return 0;
     }
+    if (a > max || b > max) {
+        rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: %s: each side at most %d", opt, s, max);
+        return 0;
+    }
+    *w = (int)a;
+    *h = (int)b;
     return 1;
 }

@@ -7,7 +7,7 @@
  * names the file or option at fault.
  *
  *   int frames;
- *   if (!rl_cli_int("run", "--frames", "12", &frames))
+ *   if (!rl_cli_int("run", "--frames", "12", 0, 1000000, &frames))
  *       use(RL_EXIT_USAGE);                // the error line is printed
  */
 #ifndef RL_CLI_H
@@ -31,11 +31,12 @@ int rl_cli_fail(const char *cmd, int code, const char *fmt, ...)
 #endif
     ;
 
-/* Parse an option value; on failure print a usage error naming the option
- * and return 0. */
-int rl_cli_double(const char *cmd, const char *opt, const char *s, double *out);
-int rl_cli_int(const char *cmd, const char *opt, const char *s, int *out);
-/* "640x480" -> 640, 480 */
-int rl_cli_size(const char *cmd, const char *opt, const char *s, int *w, int *h);
+/* Parse an option value, a number within [lo, hi]; on failure print a
+ * usage error naming the option (and the range) and return 0. */
+int rl_cli_double(const char *cmd, const char *opt, const char *s, double lo, double hi,
+                  double *out);
+int rl_cli_int(const char *cmd, const char *opt, const char *s, long lo, long hi, int *out);
+/* "640x480" -> 640, 480, each 1 .. max */
+int rl_cli_size(const char *cmd, const char *opt, const char *s, int max, int *w, int *h);
 
 #endif

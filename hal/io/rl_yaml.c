@@ -9,6 +9,65 @@
 
 /* Largest configuration file read; ringloc's files are a few kB. */
 #define RL_YAML_MAX_BYTES (4L << 20)
+/* Deepest nesting of mappings and lists; ringloc's files nest 3 deep.
+ * (libyaml takes time quadratic in the depth: 40,000 levels, 3 s.) */
+#define RL_YAML_MAX_DEPTH 64
+
+/* 1 if no collection in the text nests deeper than RL_YAML_MAX_DEPTH;
+ * else 0 with *line where it does (a malformed text passes: the full
+ * parse reports it). The events stop at the first level too deep. */
+static int depth_ok(const char *text, size_t n, unsigned long *line)
+{
+    yaml_parser_t parser;
+    yaml_event_t ev;
+    int depth = 0, ok = 1, done = 0;
+    if (!yaml_parser_initialize(&parser))
+        return 1;
+    yaml_parser_set_input_string(&parser, (const unsigned char *)text, n);
+    while (!done && ok) {
+        if (!yaml_parser_parse(&parser, &ev))
+            break;
+        if (ev.type == YAML_SEQUENCE_START_EVENT || ev.type == YAML_MAPPING_START_EVENT) {
+            if (++depth > RL_YAML_MAX_DEPTH) {
+                ok = 0;
+                *line = (unsigned long)ev.start_mark.line + 1;
+            }
+        } else if (ev.type == YAML_SEQUENCE_END_EVENT || ev.type == YAML_MAPPING_END_EVENT) {
+            depth--;
+        }
+        done = ev.type == YAML_STREAM_END_EVENT;
+        yaml_event_delete(&ev);
+    }
+    yaml_parser_delete(&parser);
+    return ok;
+}
+
+/* The first key that a mapping of the document holds twice: 1 with both
+ * nodes, else 0. */
+static int duplicate_key(yaml_document_t *doc, yaml_node_t **first, yaml_node_t **again)
+{
+    yaml_node_t *node;
+    for (node = doc->nodes.start; node < doc->nodes.top; node++) {
+        yaml_node_pair_t *a, *b;
+        if (node->type != YAML_MAPPING_NODE)
+            continue;
+        for (b = node->data.mapping.pairs.start; b < node->data.mapping.pairs.top; b++) {
+            yaml_node_t *kb = yaml_document_get_node(doc, b->key);
+            if (kb == NULL || kb->type != YAML_SCALAR_NODE)
+                continue;
+            for (a = node->data.mapping.pairs.start; a < b; a++) {
+                yaml_node_t *ka = yaml_document_get_node(doc, a->key);
+                if (ka && ka->type == YAML_SCALAR_NODE &&
+                    strcmp((const char *)ka->data.scalar.value, (const char *)kb->data.scalar.value) == 0) {
+                    *first = ka;
+                    *again = kb;
+                    return 1;
+                }
+            }
+        }
+    }
+    return 0;
+}
 
 rl_err rl_yaml_load(rl_yaml *y, const char *path, char *err, size_t errlen)
 {
@@ -32,7 +91,11 @@ rl_err rl_yaml_load(rl_yaml *y, const char *path, char *err, size_t errlen)
     }
     n = (long)fread(text, 1, RL_YAML_MAX_BYTES + 1, f);
     if (ferror(f) || n > RL_YAML_MAX_BYTES) {
-        snprintf(err, errlen, "%s: %s", path, n > RL_YAML_MAX_BYTES ? "file too large for a configuration file" : strerror(errno));
+        if (n > RL_YAML_MAX_BYTES)
+            snprintf(err, errlen, "%s: larger than %ld MB: not a configuration file", path,
+                     RL_YAML_MAX_BYTES >> 20);
+        else
+            snprintf(err, errlen, "%s: %s", path, strerror(errno));
         free(text);
         fclose(f);
         return RL_EIO;
@@ -46,6 +109,15 @@ rl_err rl_yaml_load(rl_yaml *y, const char *path, char *err, size_t errlen)
         for (i = 0; i < n && text[i] != '\n'; i++)
             text[i] = ' ';
         text[0] = '#';
+    }
+    {
+        unsigned long line = 0;
+        if (!depth_ok(text, (size_t)n, &line)) {
+            snprintf(err, errlen, "%s:%lu: nested more than %d levels deep: not a ringloc file", path,
+                     line, RL_YAML_MAX_DEPTH);
+            free(text);
+            return RL_EFORMAT;
+        }
     }
     if (!yaml_parser_initialize(&parser)) {
         free(text);
@@ -69,6 +141,16 @@ rl_err rl_yaml_load(rl_yaml *y, const char *path, char *err, size_t errlen)
         snprintf(err, errlen, "%s: empty file, expected a YAML mapping", path);
         rl_yaml_free(y);
         return RL_EFORMAT;
+    }
+    {
+        yaml_node_t *first, *again;
+        if (duplicate_key(&y->doc, &first, &again)) {
+            snprintf(err, errlen, "%s:%lu: %s: given twice (first at line %lu)", path,
+                     (unsigned long)again->start_mark.line + 1, (const char *)again->data.scalar.value,
+                     (unsigned long)first->start_mark.line + 1);
+            rl_yaml_free(y);
+            return RL_EFORMAT;
+        }
     }
     return RL_OK;
 }
