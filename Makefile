@@ -8,6 +8,8 @@
 #   make demo            the firmware on a bundled drive: poses over a pty, report
 #   make bench           recognition benchmarks (figures, not pass/fail)
 #   make bench-real REAL=DIR  ringloc and AprilTag 3 on real photos with landmarks placed in them
+#   make fuzz [FUZZ_SECONDS=60]  libFuzzer (clang, ASan + UBSan) on the recognizer, the PNG
+#                        reader, the YAML loaders, the pose solver, the frame decoder
 #   make cross BOARD=rpi4                 cross build for a board, tests under qemu
 #   make package BOARD=rpi4               the board's .deb (build-rpi4/package/)
 #   make flash BOARD=rpi4 TARGET=pi@robot [DRY_RUN=1]  install it over ssh
@@ -18,7 +20,29 @@ BUILD_ASAN ?= build-asan
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 
-.PHONY: all deps host host-test host-test-asan bench bench-real demo clean
+.PHONY: all deps host host-test host-test-asan bench bench-real demo fuzz clean
+
+# Fuzzing: each target FUZZ_SECONDS, from the committed seeds
+# (tests/fuzz/corpus/NAME) into a working corpus in $(BUILD_FUZZ); a crash
+# stops the run and leaves its input there as crash-NAME-*.
+BUILD_FUZZ   ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_TARGETS ?= recog png yaml pose frame
+
+fuzz:
+	@sh tools/deps.sh fuzz
+	cmake -S . -B $(BUILD_FUZZ) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+	  -DRL_FUZZ=ON -DCMAKE_BUILD_TYPE=Debug $(CMAKE_ARGS)
+	cmake --build $(BUILD_FUZZ) -j $(JOBS)
+	@for t in $(FUZZ_TARGETS); do \
+	  mkdir -p $(BUILD_FUZZ)/corpus/$$t && \
+	  echo "fuzz_$$t: $(FUZZ_SECONDS) s" && \
+	  $(BUILD_FUZZ)/tests/fuzz/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
+	    -print_final_stats=1 -artifact_prefix=$(BUILD_FUZZ)/crash-$$t- \
+	    $(BUILD_FUZZ)/corpus/$$t tests/fuzz/corpus/$$t 2>$(BUILD_FUZZ)/fuzz_$$t.log || \
+	    { tail -40 $(BUILD_FUZZ)/fuzz_$$t.log; echo "fuzz_$$t: FAILED (input in $(BUILD_FUZZ)/crash-$$t-*)"; exit 1; }; \
+	  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" $(BUILD_FUZZ)/fuzz_$$t.log | tr '\n' ' '; echo; \
+	done
 
 # Boards (boards/<name>): cross build, tests under qemu, package, install.
 BOARD       ?= rpi4

@@ -83,23 +83,38 @@ rl_err rl_cam_open_png(rl_cam *c, const rl_cam_config *cc, char *err, size_t err
         FILE *f = fopen(dev, "r");
         const char *slash = strrchr(dev, '/');
         int dirlen = slash ? (int)(slash - dev + 1) : 0;
-        while (f && fgets(line, sizeof line, f)) {
+        if (f == NULL) {
+            snprintf(err, errlen, "%s: %s", dev, strerror(errno));
+            return RL_ENOTFOUND;
+        }
+        while (fgets(line, sizeof line, f)) {
+            size_t len;
             line[strcspn(line, "\r\n")] = '\0';
             if (line[0] == '\0' || line[0] == '#')
                 continue;
             if (n == cap) {
+                char **more = realloc(names, sizeof *names * (size_t)(cap ? 2 * cap : 64));
+                if (more == NULL)
+                    break;
+                names = more;
                 cap = cap ? 2 * cap : 64;
-                names = realloc(names, sizeof *names * (size_t)cap);
             }
-            names[n] = malloc((size_t)dirlen + strlen(line) + 1);
+            len = (size_t)dirlen + strlen(line) + 1;
+            if ((names[n] = malloc(len)) == NULL)
+                break;
             if (line[0] == '/')
-                strcpy(names[n], line);
+                snprintf(names[n], len, "%s", line);
             else
-                sprintf(names[n], "%.*s%s", dirlen, dev, line);
+                snprintf(names[n], len, "%.*s%s", dirlen, dev, line);
             n++;
         }
-        if (f)
+        if (!feof(f)) {
             fclose(f);
+            rl_png_list_free(names, n);
+            snprintf(err, errlen, "%s: out of memory reading the list", dev);
+            return RL_ENOMEM;
+        }
+        fclose(f);
     }
     if (n == 0) {
         snprintf(err, errlen, "%s: no PNG frames", dev);
@@ -107,7 +122,12 @@ rl_err rl_cam_open_png(rl_cam *c, const rl_cam_config *cc, char *err, size_t err
         return RL_ENOTFOUND;
     }
     s = calloc(1, sizeof *s);
-    s->frames = calloc((size_t)n, sizeof *s->frames);
+    if (s == NULL || (s->frames = calloc((size_t)n, sizeof *s->frames)) == NULL) {
+        free(s);
+        rl_png_list_free(names, n);
+        snprintf(err, errlen, "%s: out of memory for %d frames", dev, n);
+        return RL_ENOMEM;
+    }
     for (i = 0; i < n; i++) {
         if (e == RL_OK && (e = rl_png_read_gray(names[i], &s->frames[i], err, errlen)) == RL_OK) {
             s->n++;

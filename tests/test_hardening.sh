@@ -137,5 +137,10 @@ one_error "plan --grid 65536x65536" 2 "grid: 65536x65536: each side at most" \
 one_error "calibrate-offsets --pose nan" 2 "pose: nan,nan,nan is out of range" \
     "$R" calibrate-offsets --map "$D/map.yaml" --robot "$D/robot.yaml" --pose nan,nan,nan --out "$T/o.yaml" "$frame"
 
+sed '0,/rows: 3/s//rows: 65536/; 0,/cols: 3/s//cols: 65536/' "$D/camera.yaml" >"$T/cam_huge.yaml"
+one_error "a 65536x65536 camera matrix" 1 "cam_huge.yaml:[0-9]*: camera_matrix: rows x cols is 65536x65536 but data has 9" \
+    "$R" locate --camera "$T/cam_huge.yaml" --map "$D/map.yaml" --robot "$D/robot.yaml" "$frame"
+one_error "a folder as a frame" 1 "$T: a folder, not a PNG image" "$R" detect "$T"
+
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

@@ -1,13 +1,14 @@
 #!/bin/sh
 # Check, and install when possible, what ringloc needs to build and test.
 #
-#   tools/deps.sh [--check] [host|cross]
+#   tools/deps.sh [--check] [host|cross|fuzz]
 #
 # cross: the aarch64 cross build too (Debian's gcc-aarch64-linux-gnu,
 # arm64 libraries through multiarch, qemu-user to run its tests).
 #
 # As root it installs what is missing with apt-get (Debian, Ubuntu,
 # Raspberry Pi OS); otherwise it prints the exact apt-get line and fails.
+# fuzz: clang and its libFuzzer runtime, libpng and libyaml only.
 # --check only reports. Called first by `make host`, `make host-test`,
 # `make demo` and `make bench`.
 set -eu
@@ -17,7 +18,7 @@ profile=host
 for arg in "$@"; do
     case "$arg" in
     --check) check_only=1 ;;
-    host|cross) profile=$arg ;;
+    host|cross|fuzz) profile=$arg ;;
     -h|--help) sed -n '2,10s/^# \{0,1\}//p' "$0"; exit 0 ;;
     *) echo "deps.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
     esac
@@ -33,20 +34,33 @@ need_pkg() { # package-name test-command...
 have() { command -v "$1"; }
 pc() { have pkg-config && pkg-config --exists "$1"; }
 
-need_pkg cmake have cmake
-need_pkg make have make
-need_pkg gcc have cc
-need_pkg g++ have c++
-need_pkg pkg-config have pkg-config
-need_pkg libcmocka-dev pc cmocka
-need_pkg libpng-dev pc libpng
-need_pkg libyaml-dev pc yaml-0.1
-need_pkg libcairo2-dev pc cairo
-need_pkg libopencv-dev pc opencv4
-need_pkg libapriltag-dev pc apriltag
-need_pkg poppler-utils have pdftoppm
+fuzzer() { printf 'int LLVMFuzzerTestOneInput(const unsigned char *d, unsigned long n) { return 0; }\n' |
+    clang -fsanitize=fuzzer -x c - -o /dev/null; }
+if [ "$profile" = fuzz ]; then
+    need_pkg cmake have cmake
+    need_pkg make have make
+    need_pkg pkg-config have pkg-config
+    need_pkg clang have clang
+    need_pkg libclang-rt-dev fuzzer
+    need_pkg libpng-dev pc libpng
+    need_pkg libyaml-dev pc yaml-0.1
+fi
+if [ "$profile" != fuzz ]; then
+    need_pkg cmake have cmake
+    need_pkg make have make
+    need_pkg gcc have cc
+    need_pkg g++ have c++
+    need_pkg pkg-config have pkg-config
+    need_pkg libcmocka-dev pc cmocka
+    need_pkg libpng-dev pc libpng
+    need_pkg libyaml-dev pc yaml-0.1
+    need_pkg libcairo2-dev pc cairo
+    need_pkg libopencv-dev pc opencv4
+    need_pkg libapriltag-dev pc apriltag
+    need_pkg poppler-utils have pdftoppm
 
-need_pkg file have file
+    need_pkg file have file
+fi
 [ "$profile" = host ] && need_pkg libcamera-dev pc libcamera
 foreign=""
 if [ "$profile" = cross ]; then

@@ -28,7 +28,7 @@ static rl_err read_matrix(rl_yaml *y, yaml_node_t *root, const char *key, double
         snprintf(label, sizeof label, "%s.cols", key);
         if ((e = rl_yaml_int(y, m, "cols", label, 0, &cols, err, errlen)) != RL_OK)
             return e;
-        if (rows >= 0 && cols >= 0 && rows * cols != n)
+        if (rows >= 0 && cols >= 0 && (long long)rows * cols != n)
             return rl_yaml_fail(y, m, key, RL_EFORMAT, err, errlen,
                                 "rows x cols is %dx%d but data has %d values", rows, cols, n);
     }

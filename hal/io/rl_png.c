@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <strings.h>
 
 /* libpng reports through callbacks and longjmp; this carries the message
@@ -68,6 +69,13 @@ rl_err rl_png_read_gray(const char *path, rl_image *out, char *err, size_t errle
     if (f == NULL)
         return fail(err, errlen, errno == ENOENT ? RL_ENOTFOUND : RL_EIO, path,
                     strerror(errno));
+    {
+        struct stat st;
+        if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
+            fclose(f);
+            return fail(err, errlen, RL_EFORMAT, path, "a folder, not a PNG image");
+        }
+    }
     got = fread(sig, 1, sizeof sig, f);
     if (got == 0) {
         fclose(f);

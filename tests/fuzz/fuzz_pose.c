@@ -1,0 +1,70 @@
+/* The pose solver on arbitrary detections, calibrations, maps and mounts
+ * (raw doubles from the input): RL_OK only with every number finite. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "rl_camera.h"
+#include "rl_map.h"
+#include "rl_pose.h"
+
+static rl_map map;
+
+static double take(const uint8_t **p, size_t *n)
+{
+    double v = 0;
+    if (*n >= sizeof v) {
+        memcpy(&v, *p, sizeof v);
+        *p += sizeof v;
+        *n -= sizeof v;
+    }
+    return v;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    rl_camera cam;
+    rl_mount mount;
+    rl_detection det[8];
+    rl_pose pose;
+    int i, nd, nm;
+    if (size < 2)
+        return 0;
+    nd = data[0] % 9;
+    nm = 1 + data[1] % 8;
+    data += 2;
+    size -= 2;
+    rl_camera_defaults(&cam, 640, 480, 1.2);
+    cam.model = (rl_dist_model)(size > 0 ? data[0] % 3 : 0);
+    cam.fx = take(&data, &size);
+    cam.fy = take(&data, &size);
+    cam.cx = take(&data, &size);
+    cam.cy = take(&data, &size);
+    for (i = 0; i < 8; i++)
+        cam.k[i] = take(&data, &size);
+    mount.x = take(&data, &size);
+    mount.y = take(&data, &size);
+    mount.z = take(&data, &size);
+    mount.yaw = take(&data, &size);
+    memset(&map, 0, sizeof map);
+    map.family.bits = 5;
+    map.diameter = 0.21;
+    map.ceiling_height = take(&data, &size);
+    map.count = nm;
+    for (i = 0; i < nm; i++) {
+        map.lm[i].id = i + 1;
+        map.lm[i].x = take(&data, &size);
+        map.lm[i].y = take(&data, &size);
+    }
+    memset(det, 0, sizeof det);
+    for (i = 0; i < nd; i++) {
+        det[i].id = 1 + i % 9;
+        det[i].u = take(&data, &size);
+        det[i].v = take(&data, &size);
+        det[i].radius = 25;
+    }
+    if (rl_pose_solve(&cam, &map, &mount, det, nd, NULL, &pose) == RL_OK &&
+        !(isfinite(pose.x) && isfinite(pose.y) && isfinite(pose.yaw) && isfinite(pose.residual)))
+        abort();
+    return 0;
+}
