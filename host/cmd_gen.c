@@ -10,7 +10,7 @@
 
 static const char *gen_help =
     "usage: ringloc gen [--family ring5] (--id ID[,ID...] | --map MAP.yaml)\n"
-    "                   [--diameter 0.21] [--paper a4] [--pdf FILE] [--svg FILE]\n"
+    "                   [--diameter 0.21] [--paper a4] [--margin 5] [--pdf FILE] [--svg FILE]\n"
     "                   [--png FILE --px N]\n\n"
     "Print-ready landmarks per shared/landmark-spec.md: one landmark per page at\n"
     "its exact printed diameter, crop marks, and the id in small type.\n\n"
@@ -18,7 +18,9 @@ static const char *gen_help =
     "  --id LIST       landmark ids, comma-separated (1 .. 2^N-2)\n"
     "  --map FILE      every landmark of a map YAML (family and diameter from it)\n"
     "  --diameter M    printed outer diameter in metres (default 0.21)\n"
-    "  --paper NAME    a4, letter, a3, tabloid (default a4)\n"
+    "  --paper NAME    a4, letter, a3, tabloid (default: the first the landmark fits)\n"
+    "  --margin MM     the printer's unprintable border: nothing is drawn nearer an\n"
+    "                  edge (default 5)\n"
     "  --pdf FILE      all landmarks in one PDF, a page each\n"
     "  --svg FILE      SVG page (FILE-ID.svg per landmark when there are several)\n"
     "  --png FILE      PNG for tests, landmark --px pixels across (default 400)\n"
@@ -45,11 +47,12 @@ int rl_cmd_gen(int argc, char **argv)
         {"map", required_argument, 0, 'm'},    {"diameter", required_argument, 0, 'd'},
         {"paper", required_argument, 0, 'p'},  {"pdf", required_argument, 0, 'P'},
         {"svg", required_argument, 0, 'S'},    {"png", required_argument, 0, 'N'},
-        {"px", required_argument, 0, 'x'},     {"help", no_argument, 0, 'h'},
+        {"px", required_argument, 0, 'x'},     {"margin", required_argument, 0, 'M'},
+        {"help", no_argument, 0, 'h'},
         {0, 0, 0, 0}};
     const char *C = "gen", *family = NULL, *ids_arg = NULL, *map_path = NULL;
-    const char *paper_name = "a4", *pdf = NULL, *svg = NULL, *png = NULL;
-    double diameter = 0.21;
+    const char *paper_name = NULL, *pdf = NULL, *svg = NULL, *png = NULL;
+    double diameter = 0.21, margin = RL_PRINT_MARGIN_MM;
     int have_diameter = 0, px = 400, c, i, n = 0;
     static int ids[RL_MAX_MAP_LANDMARKS];
     static rl_map map;
@@ -69,6 +72,10 @@ int rl_cmd_gen(int argc, char **argv)
             have_diameter = 1;
             break;
         case 'p': paper_name = optarg; break;
+        case 'M':
+            if (!rl_cli_double(C, "--margin", optarg, 0, 50, &margin))
+                return RL_EXIT_USAGE;
+            break;
         case 'P': pdf = optarg; break;
         case 'S': svg = optarg; break;
         case 'N': png = optarg; break;
@@ -86,8 +93,8 @@ int rl_cmd_gen(int argc, char **argv)
         return rl_cli_fail(C, RL_EXIT_USAGE, "give either --id or --map (see --help)");
     if (!pdf && !svg && !png)
         return rl_cli_fail(C, RL_EXIT_USAGE, "nothing to write: give --pdf, --svg or --png");
-    paper = rl_paper_find(paper_name);
-    if (paper == NULL)
+    paper = paper_name ? rl_paper_find(paper_name) : NULL;
+    if (paper_name && paper == NULL)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--paper: unknown paper '%s' (%s)", paper_name,
                            rl_paper_names());
 
@@ -130,11 +137,21 @@ int rl_cmd_gen(int argc, char **argv)
         if (n == 0)
             return rl_cli_fail(C, RL_EXIT_USAGE, "--id: no ids given");
     }
-    if ((pdf || svg) && (diameter < RL_PRINT_MIN_DIAMETER || diameter > rl_print_max_diameter(paper)))
+    if ((pdf || svg) && paper == NULL && (paper = rl_paper_fitting(diameter, margin)) == NULL)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--diameter: %.3f m fits no paper (%s) within %g mm "
+                           "margins", diameter, rl_paper_names(), margin);
+    if ((pdf || svg) && paper == NULL)
+        paper = rl_paper_find("a4");
+    if ((pdf || svg) && diameter < RL_PRINT_MIN_DIAMETER)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--diameter: %.3f m is below the smallest printable, "
+                           "%.3f m", diameter, RL_PRINT_MIN_DIAMETER);
+    if ((pdf || svg) && diameter > rl_print_max_diameter(paper, margin) + 1e-9)
         return rl_cli_fail(C, RL_EXIT_USAGE,
-                           "--diameter: %.3f m cannot be printed on %s paper (%.3f .. %.3f m)",
-                           diameter, paper->name, RL_PRINT_MIN_DIAMETER,
-                           rl_print_max_diameter(paper));
+                           "--diameter: %.3f m does not fit %s paper within %g mm margins: the "
+                           "largest that does is %.3f m%s%s", diameter, paper->name, margin,
+                           rl_print_max_diameter(paper, margin),
+                           rl_paper_fitting(diameter, margin) ? "; or --paper " : "",
+                           rl_paper_fitting(diameter, margin) ? rl_paper_fitting(diameter, margin)->name : "");
     if ((pdf || svg) && 1.25 * diameter > paper->w_mm / 1000.0)
         fprintf(stderr, "ringloc gen: note: the white quiet zone (1.25 x diameter = %.0f mm) is wider "
                         "than %s paper; hang it on a light ceiling or leave white around it\n",
@@ -154,8 +171,9 @@ int rl_cmd_gen(int argc, char **argv)
         if (rl_print_png(name, &fam, ids[i], px, err, sizeof err) != RL_OK)
             return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
     }
-    fprintf(stderr, "ringloc gen: %d landmark%s of ring%d, %.0f mm%s%s%s%s%s%s\n", n,
-            n == 1 ? "" : "s", fam.bits, diameter * 1000, pdf ? " -> " : "", pdf ? pdf : "",
+    fprintf(stderr, "ringloc gen: %d landmark%s of ring%d, %.0f mm%s%s%s%s%s%s%s%s\n", n,
+            n == 1 ? "" : "s", fam.bits, diameter * 1000, pdf || svg ? " on " : "",
+            pdf || svg ? paper->name : "", pdf ? " -> " : "", pdf ? pdf : "",
             svg ? " -> " : "", svg ? svg : "", png ? " -> " : "", png ? png : "");
     return 0;
 }

@@ -82,7 +82,7 @@ int rl_cmd_plan(int argc, char **argv)
     if (paper == NULL)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--paper: unknown paper '%s' (%s)", paper_name,
                            rl_paper_names());
-    in.max_diameter = rl_print_max_diameter(paper);
+    in.max_diameter = rl_print_max_diameter(paper, RL_PRINT_MARGIN_MM);
     if (cam_path != NULL) {
         rl_camera cam;
         if (rl_camfile_load(cam_path, &cam, err, sizeof err) != RL_OK)

@@ -29,9 +29,22 @@ const char *rl_paper_names(void)
     return "a4, letter, a3, tabloid";
 }
 
-double rl_print_max_diameter(const rl_paper *paper)
+double rl_print_max_diameter(const rl_paper *paper, double margin_mm)
 {
-    return paper->w_mm / 1000.0;
+    double side = paper->w_mm < paper->h_mm ? paper->w_mm : paper->h_mm;
+    /* the crop marks lie inside the disk's bounding square; whole
+     * millimetres, with a quarter millimetre a side for the printer's
+     * (and a rasterizer's) rounding */
+    return floor(side - 2 * margin_mm - 0.5) / 1000.0;
+}
+
+const rl_paper *rl_paper_fitting(double diameter, double margin_mm)
+{
+    size_t i;
+    for (i = 0; i < sizeof papers / sizeof papers[0]; i++)
+        if (diameter <= rl_print_max_diameter(&papers[i], margin_mm) + 1e-9)
+            return &papers[i];
+    return NULL;
 }
 
 void rl_print_landmark(cairo_t *cr, const rl_family *fam, int id, double cx, double cy, double R)
@@ -68,20 +81,23 @@ void rl_print_landmark(cairo_t *cr, const rl_family *fam, int id, double cx, dou
     cairo_restore(cr);
 }
 
+/* Crop marks: an L in each corner of the landmark's bounding square,
+ * along its edges and inside it (the disk touches the square only at the
+ * middle of each side), so they are on the page whenever the disk is. */
 static void crop_marks(cairo_t *cr, double cx, double cy, double half)
 {
-    double len = 6 * MM_TO_PT, gap = 2 * MM_TO_PT;
+    double len = (half < 30 * MM_TO_PT ? 0.2 * half : 6 * MM_TO_PT), w = 0.25;
     int sx, sy;
     cairo_save(cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_set_line_width(cr, 0.25);
+    cairo_set_line_width(cr, w);
     for (sx = -1; sx <= 1; sx += 2)
         for (sy = -1; sy <= 1; sy += 2) {
-            double x = cx + sx * half, y = cy + sy * half;
-            cairo_move_to(cr, x + sx * gap, y);
-            cairo_line_to(cr, x + sx * (gap + len), y);
-            cairo_move_to(cr, x, y + sy * gap);
-            cairo_line_to(cr, x, y + sy * (gap + len));
+            /* the corner, moved in by half the line so the ink stays inside */
+            double x = cx + sx * (half - w / 2), y = cy + sy * (half - w / 2);
+            cairo_move_to(cr, x - sx * len, y);
+            cairo_line_to(cr, x, y);
+            cairo_line_to(cr, x, y - sy * len);
         }
     cairo_stroke(cr);
     cairo_restore(cr);

@@ -28,17 +28,28 @@ const rl_paper *rl_paper_find(const char *name);
 /* "a4, letter, a3, tabloid" for messages. */
 const char *rl_paper_names(void);
 
-/* Smallest and largest printable diameter on a paper, metres. */
+/* Smallest printable diameter, metres, and the unprintable border every
+ * printer leaves (default margin): nothing is drawn nearer an edge. */
 #define RL_PRINT_MIN_DIAMETER 0.02
-double rl_print_max_diameter(const rl_paper *paper);
+#define RL_PRINT_MARGIN_MM 5.0
+
+/* Largest diameter (metres) whose disk and crop marks stay margin_mm from
+ * every edge of the paper. */
+double rl_print_max_diameter(const rl_paper *paper, double margin_mm);
+
+/* The first paper of a4, letter, a3, tabloid that the diameter fits within
+ * margin_mm, or NULL. */
+const rl_paper *rl_paper_fitting(double diameter, double margin_mm);
 
 /* Draw the black zones of landmark `id`, centre (cx, cy), radius R, in the
  * current user units of cr. */
 void rl_print_landmark(cairo_t *cr, const rl_family *fam, int id, double cx, double cy, double R);
 
 /* One page per landmark: centred at its printed diameter (metres), crop
- * marks at the corners of its bounding square, a small label outside the
- * quiet zone. `pos` (may be NULL) gives map positions for the labels. */
+ * marks inside the corners of its bounding square (on the page whenever
+ * the disk is), a small label below. `pos` (may be NULL) gives map
+ * positions for the labels. The caller checks the diameter against
+ * rl_print_max_diameter. */
 RL_CHECK rl_err rl_print_pdf(const char *path, const rl_paper *paper, const rl_family *fam,
                              const int *ids, const rl_map_landmark *pos, int n,
                              double diameter, char *err, size_t errlen);

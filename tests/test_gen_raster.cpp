@@ -143,6 +143,55 @@ static void test_pdf_prints_exact_diameter(void **)
     }
 }
 
+// Issue 18: at the largest diameter a paper allows, the whole disk and the
+// crop marks are on the page, at least 5 mm (50 px at 254 dpi) from every
+// edge; one step larger is refused naming that diameter.
+static void test_pdf_keeps_the_margin(void **)
+{
+    const char *papers[] = {"a4", "letter"};
+    const double side_mm[] = {210.0, 215.9};
+    for (int k = 0; k < 2; k++) {
+        const char *paper = papers[k];
+        double dmax = std::floor(side_mm[k] - 10.5) / 1000.0; // whole mm, 5 mm margins
+        char d[32];
+        std::snprintf(d, sizeof d, "%.4f", dmax);
+        std::string pdf = tmpdir + "/gen_max_" + paper + ".pdf", stem = tmpdir + "/gen_max_" + paper;
+        assert_int_equal(run(ringloc + " gen --id 25 --diameter " + d + " --paper " + paper + " --pdf " + pdf), 0);
+        std::snprintf(d, sizeof d, "%.4f", dmax + 0.001);
+        assert_int_not_equal(run("(" + ringloc + " gen --id 25 --diameter " + d + " --paper " + paper +
+                                 " --pdf " + tmpdir + "/too_big.pdf 2>" + tmpdir + "/too_big.err)"), 0);
+        char want[64];
+        std::snprintf(want, sizeof want, "the largest that does is %.3f m", dmax);
+        assert_int_equal(run("grep -q '" + std::string(want) + "' " + tmpdir + "/too_big.err"), 0);
+        assert_int_equal(run("pdftoppm -r 254 -gray -png -singlefile " + pdf + " " + stem), 0);
+        cv::Mat g = cv::imread(stem + ".png", cv::IMREAD_GRAYSCALE);
+        assert_false(g.empty());
+        // every mark on the page, the label's grey type included
+        cv::Mat ink = g < 250;
+        cv::Rect box = cv::boundingRect(ink);
+        if (box.x < 50 || box.y < 50 || g.cols - (box.x + box.width) < 50 || g.rows - (box.y + box.height) < 50)
+            fail_msg("%s: ink from (%d, %d) to (%d, %d) on a %dx%d page: within 5 mm of an edge", paper,
+                     box.x, box.y, box.x + box.width, box.y + box.height, g.cols, g.rows);
+        // the whole disk: its width is the diameter
+        cv::Mat body = g.clone();
+        cv::rectangle(body, cv::Rect(0, g.rows - 300, g.cols, 300), 255, cv::FILLED);
+        double cx, cy;
+        centre_of_dark(body, cx, cy);
+        std::vector<double> got = crossings(body, cx, cy, dmax * 5000 + 30, 3); // id 25: 3 edges
+        if (std::fabs(2 * got[0] - dmax * 10000) > 4.0)
+            fail_msg("%s: printed diameter %.2f mm, want %.1f mm", paper, 2 * got[0] / 10, dmax * 1000);
+        // a crop mark in each corner of the disk's square, inside it
+        double R = dmax * 5000;
+        for (int sx = -1; sx <= 1; sx += 2)
+            for (int sy = -1; sy <= 1; sy += 2) {
+                cv::Rect corner((int)(cx + sx * R - (sx > 0 ? 42 : 2)), (int)(cy + sy * R - (sy > 0 ? 42 : 2)), 44, 44);
+                corner &= cv::Rect(0, 0, g.cols, g.rows);
+                if (cv::countNonZero(ink(corner)) < 20)
+                    fail_msg("%s: no crop mark at corner (%d, %d) of the square around (%.1f, %.1f), R %.1f: %d px of ink", paper, sx, sy, cx, cy, R, cv::countNonZero(ink(corner)));
+            }
+    }
+}
+
 static void test_pdf_map_pages_and_svg(void **)
 {
     std::string map = tmpdir + "/gen_map.yaml", pdf = tmpdir + "/gen_map.pdf";
@@ -183,6 +232,7 @@ int main(int argc, char **argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_png_zone_radii_every_family),
         cmocka_unit_test(test_pdf_prints_exact_diameter),
+        cmocka_unit_test(test_pdf_keeps_the_margin),
         cmocka_unit_test(test_pdf_map_pages_and_svg),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
