@@ -10,6 +10,8 @@
 #   make bench-real REAL=DIR  ringloc and AprilTag 3 on real photos with landmarks placed in them
 #   make fuzz [FUZZ_SECONDS=60]  libFuzzer (clang, ASan + UBSan) on the recognizer, the PNG
 #                        reader, the YAML loaders, the pose solver, the frame decoder
+#   make soak [SOAK_FRAMES=200000]  the firmware's loop for a long run, its serial line
+#                        vanishing every few seconds: heap calls, RSS, frames after reopening
 #   make cross BOARD=rpi4                 cross build for a board, tests under qemu
 #   make package BOARD=rpi4               the board's .deb (build-rpi4/package/)
 #   make flash BOARD=rpi4 TARGET=pi@robot [DRY_RUN=1]  install it over ssh
@@ -20,7 +22,16 @@ BUILD_ASAN ?= build-asan
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 
-.PHONY: all deps host host-test host-test-asan bench bench-real demo fuzz clean
+.PHONY: all deps host host-test host-test-asan bench bench-real demo fuzz soak clean
+
+SOAK_FRAMES ?= 200000
+SOAK_DIR    ?= $(BUILD)/soak
+
+soak: host
+	@[ -f $(SOAK_DIR)/map.yaml ] || $(BUILD)/tools/ringloc-render --out $(SOAK_DIR) --path rect \
+	  --frames 16 --mount 0.12,-0.03,0.02 --write-map $(SOAK_DIR)/map.yaml \
+	  --write-camera $(SOAK_DIR)/camera.yaml --write-robot $(SOAK_DIR)/robot.yaml
+	$(BUILD)/tools/ringloc-soak --frames $(SOAK_FRAMES) --reopen-every 3 $(SOAK_DIR)
 
 # Fuzzing: each target FUZZ_SECONDS, from the committed seeds
 # (tests/fuzz/corpus/NAME) into a working corpus in $(BUILD_FUZZ); a crash

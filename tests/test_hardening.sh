@@ -50,13 +50,16 @@ i=0
 while [ ! -L "$T/tty" ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
 "$R" run --config "$T/pty.yaml" 2>"$T/pty.err" &
 run=$!
-sleep 1.5
+# frames through the first monitor (a sanitizer build starts slowly)
+i=0
+while [ "$(grep -c '"type"' "$T/first.jsonl")" -lt 10 ] && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done
 kill -TERM $m1
 wait $m1 2>/dev/null
 sleep 0.5
 "$R" monitor --pty "$T/tty" >"$T/second.jsonl" 2>/dev/null &
 m2=$!
-sleep 2
+i=0
+while [ "$(grep -c '"type"' "$T/second.jsonl")" -lt 21 ] && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done
 kill -TERM $run
 wait $run
 i=0

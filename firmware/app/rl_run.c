@@ -70,10 +70,6 @@ static void send_msg(rl_runner *r, rl_msg *m)
     uint64_t now = r->io.clock.now_us(r->io.clock.ctx);
     rl_err e;
     m->seq = r->seq++;
-    if (m->type == RL_FRAME_POSE)
-        r->poses++;
-    else
-        r->statuses++;
     if (!r->out_up) {
         if (now < r->out_retry_at) {
             r->dropped++;
@@ -99,7 +95,13 @@ static void send_msg(rl_runner *r, rl_msg *m)
         r->out_backoff = next_backoff(r, r->out_backoff);
         r->serial_errors++;
         r->dropped++;
+        return;
     }
+    /* sent: the summary counts what reached the line */
+    if (m->type == RL_FRAME_POSE)
+        r->poses++;
+    else
+        r->statuses++;
 }
 
 static void send_status(rl_runner *r, int reason, int identified, int candidates, uint64_t t_us)

@@ -1,0 +1,237 @@
+/* ringloc-soak: the firmware's loop for a long run, with the serial line
+ * going away and coming back, measured.
+ *
+ *   ringloc-soak [--frames 200000] [--reopen-every 3] SITE_DIR
+ *
+ * SITE_DIR holds what `ringloc-render --path ... --write-map --write-camera
+ * --write-robot` writes (map.yaml, camera.yaml, robot.yaml, *.png). The
+ * loop (rl_run, as `ringloc-fw` runs it) reads the frames from the PNG
+ * camera, looping, as fast as it can; its serial line is a double that
+ * vanishes every --reopen-every seconds (writes fail with "no device", and
+ * opening fails for 0.3 s) and then comes back. It prints frames per
+ * second, heap calls after start-up (malloc and friends are counted through
+ * the linker's --wrap), RSS at the 10,000th and the last frame, the frames
+ * delivered after each reopening, and every kind of log line seen; it
+ * exits 1 when a heap call happened after start-up, RSS grew by 1% or more,
+ * or a reopening delivered no frame. */
+#define _GNU_SOURCE
+#include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "rl_camfile.h"
+#include "rl_clock.h"
+#include "rl_heap_recog.h"
+#include "rl_mapfile.h"
+#include "rl_robotfile.h"
+#include "rl_run.h"
+
+/* ---- heap calls, counted once the loop has started ---- */
+static volatile int counting;
+static volatile long heap_calls;
+void *__real_malloc(size_t n);
+void *__real_calloc(size_t a, size_t b);
+void *__real_realloc(void *p, size_t n);
+void __real_free(void *p);
+void *__wrap_malloc(size_t n);
+void *__wrap_calloc(size_t a, size_t b);
+void *__wrap_realloc(void *p, size_t n);
+void __wrap_free(void *p);
+void *__wrap_malloc(size_t n) { heap_calls += counting; return __real_malloc(n); }
+void *__wrap_calloc(size_t a, size_t b) { heap_calls += counting; return __real_calloc(a, b); }
+void *__wrap_realloc(void *p, size_t n) { heap_calls += counting; return __real_realloc(p, n); }
+void __wrap_free(void *p) { heap_calls += counting && p != NULL; __real_free(p); }
+
+/* ---- the serial line that goes away ---- */
+#define MAX_REOPENS 4096
+typedef struct {
+    uint64_t period_us, gone_until, next_gone;
+    int up;
+    long reopens, delivered[MAX_REOPENS], bytes;
+} line_double;
+
+static rl_err line_open(void *ctx, char *err, size_t errlen)
+{
+    line_double *l = (line_double *)ctx;
+    uint64_t now = rl_clock_now_us();
+    if (now < l->gone_until) {
+        snprintf(err, errlen, "/dev/ttySOAK: no such device");
+        return RL_ENOTFOUND;
+    }
+    l->up = 1;
+    if (l->reopens < MAX_REOPENS)
+        l->delivered[l->reopens] = 0;
+    l->reopens++;
+    l->next_gone = now + l->period_us;
+    return RL_OK;
+}
+
+static rl_err line_write(void *ctx, const uint8_t *p, size_t n)
+{
+    line_double *l = (line_double *)ctx;
+    uint64_t now = rl_clock_now_us();
+    (void)p;
+    if (!l->up)
+        return RL_ENODEV;
+    if (now >= l->next_gone) { /* unplugged: gone for 0.3 s */
+        l->up = 0;
+        l->gone_until = now + 300000;
+        return RL_ENODEV;
+    }
+    l->bytes += (long)n;
+    if (l->reopens <= MAX_REOPENS)
+        l->delivered[l->reopens - 1]++;
+    return RL_OK;
+}
+
+static void line_close(void *ctx)
+{
+    ((line_double *)ctx)->up = 0;
+}
+
+/* ---- log line kinds ---- */
+#define MAX_KINDS 32
+static char kinds[MAX_KINDS][64];
+static long kind_count[MAX_KINDS];
+static int n_kinds;
+
+static void log_kind(void *ctx, const char *line)
+{
+    char k[64];
+    int i;
+    size_t len = strcspn(line, ";(0123456789");
+    (void)ctx;
+    snprintf(k, sizeof k, "%.*s", (int)(len < 60 ? len : 60), line);
+    for (i = 0; i < n_kinds; i++)
+        if (strcmp(kinds[i], k) == 0) {
+            kind_count[i]++;
+            return;
+        }
+    if (n_kinds < MAX_KINDS) {
+        snprintf(kinds[n_kinds], sizeof kinds[0], "%s", k);
+        kind_count[n_kinds++] = 1;
+    }
+}
+
+static long rss_kb(void)
+{
+    long pages = 0, rss = 0;
+    FILE *f = fopen("/proc/self/statm", "r");
+    if (f) {
+        if (fscanf(f, "%ld %ld", &pages, &rss) != 2)
+            rss = 0;
+        fclose(f);
+    }
+    return rss * (sysconf(_SC_PAGESIZE) / 1024);
+}
+
+int main(int argc, char **argv)
+{
+    static const struct option opts[] = {{"frames", required_argument, 0, 'n'},
+                                         {"reopen-every", required_argument, 0, 'r'},
+                                         {"help", no_argument, 0, 'h'},
+                                         {0, 0, 0, 0}};
+    static rl_map map;
+    static rl_result res;
+    static rl_runner runner;
+    static line_double line;
+    static char path[4096], err[512], list[4096];
+    rl_camera calib;
+    rl_mount mount;
+    rl_recog_config cfg;
+    rl_heap_recog hr;
+    rl_cam_config cc;
+    rl_run_io io;
+    long frames = 200000, rss_start = 0, rss_end, i, empty = 0;
+    double every = 3.0, t0, t1;
+    int c, bad = 0;
+    const char *dir;
+    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+        switch (c) {
+        case 'n': frames = atol(optarg); break;
+        case 'r': every = atof(optarg); break;
+        case 'h': fputs("usage: ringloc-soak [--frames 200000] [--reopen-every 3] SITE_DIR\n", stdout); return 0;
+        default: return 2;
+        }
+    }
+    if (optind != argc - 1 || frames < 20000 || !(every > 0.5 && every < 3600)) {
+        fprintf(stderr, "ringloc-soak: give SITE_DIR (--frames >= 20000, --reopen-every 0.5 .. 3600 s)\n");
+        return 2;
+    }
+    dir = argv[optind];
+    snprintf(path, sizeof path, "%s/map.yaml", dir);
+    if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK) goto fail;
+    snprintf(path, sizeof path, "%s/camera.yaml", dir);
+    if (rl_camfile_load(path, &calib, err, sizeof err) != RL_OK) goto fail;
+    snprintf(path, sizeof path, "%s/robot.yaml", dir);
+    if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK) goto fail;
+    rl_recog_defaults(&cfg);
+    rl_heap_recog_init_map(&hr, &cfg, &map);
+    if (rl_heap_recog_prepare(&hr, calib.width, calib.height) != RL_OK) {
+        snprintf(err, sizeof err, "cannot make the recognizer for %dx%d", calib.width, calib.height);
+        goto fail;
+    }
+    snprintf(list, sizeof list, "%s", dir);
+    rl_cam_defaults(&cc);
+    cc.backend = "png";
+    cc.device = list;
+    cc.loop = 1;
+    cc.rate = 0;
+    memset(&io, 0, sizeof io);
+    io.cam = &cc;
+    io.clock = rl_clock_system();
+    io.log = log_kind;
+    line.period_us = (uint64_t)(every * 1e6);
+    io.out.open = line_open;
+    io.out.write = line_write;
+    io.out.close = line_close;
+    io.out.ctx = &line;
+    rl_run_init(&runner, &io, hr.rec, &calib, &map, &mount, &res);
+    runner.log_interval_us = 0; /* every line, for its kind */
+    t0 = (double)rl_clock_now_us();
+    for (i = 0; runner.frames < frames; i++) {
+        if (rl_run_step(&runner) == RL_ENOTFOUND) {
+            snprintf(err, sizeof err, "%s: the camera ended", dir);
+            goto fail;
+        }
+        if (runner.frames == 100)
+            counting = 1; /* start-up is over: the camera is open, the line up */
+        if (runner.frames == 10000 && rss_start == 0)
+            rss_start = rss_kb();
+        if (runner.frames % 20000 == 0 && runner.frames > 0 && i > 0)
+            fprintf(stderr, "ringloc-soak: %ld of %ld frames\r", runner.frames, frames);
+    }
+    counting = 0;
+    t1 = (double)rl_clock_now_us();
+    rss_end = rss_kb();
+    rl_run_close(&runner);
+    fprintf(stderr, "\n");
+    printf("frames               %ld in %.1f s, %.0f per second (poses %ld, status %ld)\n", runner.frames,
+           (t1 - t0) / 1e6, runner.frames / ((t1 - t0) / 1e6), runner.poses, runner.statuses);
+    printf("heap calls           %ld after start-up (%.4f per frame)\n", heap_calls,
+           (double)heap_calls / (double)runner.frames);
+    printf("RSS                  %ld kB at frame 10,000, %ld kB at the last (%+.2f%%)\n", rss_start,
+           rss_end, 100.0 * (double)(rss_end - rss_start) / (double)rss_start);
+    printf("serial reopenings    %ld; frames delivered after each:", line.reopens);
+    for (i = 0; i < line.reopens && i < MAX_REOPENS; i++) {
+        if (i < 12 || i == line.reopens - 1)
+            printf(" %ld", line.delivered[i]);
+        else if (i == 12)
+            printf(" ...");
+        /* the last one may be cut short by the end of the run */
+        empty += line.delivered[i] == 0 && i < line.reopens - 1;
+    }
+    printf("\nlog line kinds      ");
+    for (i = 0; i < n_kinds; i++)
+        printf(" \"%s\" x%ld%s", kinds[i], kind_count[i], i + 1 < n_kinds ? "," : "");
+    printf("\n");
+    if (heap_calls > 0) { printf("FAIL: heap calls after start-up\n"); bad = 1; }
+    if (rss_start <= 0 || rss_end > rss_start * 1.01) { printf("FAIL: RSS grew by 1%% or more\n"); bad = 1; }
+    if (line.reopens < 2 || empty > 0) { printf("FAIL: %ld reopenings delivered no frame\n", empty); bad = 1; }
+    rl_heap_recog_free(&hr);
+    return bad;
+fail:
+    fprintf(stderr, "ringloc-soak: %s\n", err);
+    return 1;
+}
