@@ -99,7 +99,7 @@ cfg - 20 >"$T/pipe.yaml"
 start=$(date +%s)
 "$R" run --config "$T/pipe.yaml" 2>"$T/pipe.err" | head -c 100 >/dev/null
 took=$(( $(date +%s) - start ))
-grep -q "standard output closed (broken pipe); stopping" "$T/pipe.err" && [ $took -lt 3 ] && ok ||
+grep -q "standard output closed (broken pipe); stopping" "$T/pipe.err" && [ $took -lt 8 ] && ok ||
     bad "broken pipe: ${took}s: $(tail -2 "$T/pipe.err")"
 
 # 5. numbers out of their range, from files and the command line: one

@@ -252,6 +252,25 @@ static void test_code_ring_of_merged_landmark_is_not_a_landmark(void **state)
     assert_true(found_dark);
 }
 
+/* A fine checkerboard has a run every pixel or two, more than the run
+ * capacity (RL_PIXELS_PER_RUN): the frame is recognized as far as the
+ * capacity goes, the rest counted as left out, never an error. */
+static void test_checkerboard_is_no_error(void **state)
+{
+    rl_recog_config cfg;
+    rl_image img = rl_image_view(W, H, W, frame);
+    int x, y;
+    (void)state;
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++)
+            frame[y * W + x] = (x + y) % 2 ? 255 : 0;
+    rl_recog_defaults(&cfg);
+    init(&cfg);
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
+    assert_int_equal(res.n_landmarks, 0);
+    assert_true(res.dropped.regions + res.dropped.lights >= 1);
+}
+
 static void test_stride_is_honoured(void **state)
 {
     rl_recog_config cfg;
@@ -438,6 +457,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_finds_what_was_drawn),
         cmocka_unit_test(test_stride_is_honoured),
+        cmocka_unit_test(test_checkerboard_is_no_error),
         cmocka_unit_test(test_inner_ring_is_not_a_landmark),
         cmocka_unit_test(test_soft_blob_next_to_light_is_not_a_landmark),
         cmocka_unit_test(test_code_ring_of_merged_landmark_is_not_a_landmark),

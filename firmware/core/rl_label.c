@@ -21,7 +21,7 @@ rl_err rl_label_init(rl_label *lb, rl_ws *ws, int width, int height, int cap_run
     lb->max_height = height;
     lb->cap_runs = cap_runs;
     lb->cap_regions = cap_regions;
-    lb->n_runs = lb->n_regions = lb->overflow = 0;
+    lb->n_runs = lb->n_regions = lb->overflow = lb->rows_left = 0;
     if ((e = rl_ws_alloc(ws, (size_t)cap_runs * sizeof(uint16_t), RL_WS_ALIGN, (void **)&lb->x0)) != RL_OK ||
         (e = rl_ws_alloc(ws, (size_t)cap_runs * sizeof(uint16_t), RL_WS_ALIGN, (void **)&lb->x1)) != RL_OK ||
         (e = rl_ws_alloc(ws, (size_t)cap_runs * sizeof(int32_t), RL_WS_ALIGN, (void **)&lb->tag)) != RL_OK ||
@@ -177,8 +177,18 @@ static rl_err collect_runs(rl_label *lb, const rl_image *img, int lo, int hi, co
             while (x < img->width &&
                    (unsigned)(row[x] - lo) < (unsigned)((his ? his[x >> sh] : hi) - lo))
                 x++;
-            if ((e = add_run(lb, a, x - 1, &n, &j, prev_end)) != RL_OK)
-                return e;
+            if ((e = add_run(lb, a, x - 1, &n, &j, prev_end)) != RL_OK) {
+                /* out of runs (a frame of noise or a fine pattern): the
+                 * rows before this one are labelled, this one and the rest
+                 * are left out and counted */
+                int k;
+                lb->rows_left = img->height - y;
+                n = lb->row[y];
+                for (k = y + 1; k <= img->height; k++)
+                    lb->row[k] = n;
+                lb->n_runs = n;
+                return RL_OK;
+            }
         }
         prev_start = start;
         prev_end = n;
@@ -266,7 +276,7 @@ static rl_err label(rl_label *lb, const rl_image *img, int lo, int hi, const rl_
         return RL_EINVAL;
     lb->width = img->width;
     lb->height = img->height;
-    lb->n_runs = lb->n_regions = lb->overflow = 0;
+    lb->n_runs = lb->n_regions = lb->overflow = lb->rows_left = 0;
     if ((e = collect_runs(lb, img, lo < 0 ? 0 : lo, hi, map)) != RL_OK)
         return e;
     resolve_regions(lb, min_area);

@@ -32,6 +32,7 @@ typedef struct {
     int cap_runs, cap_regions;
     int n_runs, n_regions;
     int overflow;             /* regions dropped because cap_regions was reached */
+    int rows_left;            /* rows not labelled because cap_runs was reached */
     uint16_t *x0, *x1;        /* run extents, inclusive */
     int32_t *tag;             /* per run: union-find parent, then region index or -1 */
     int32_t *row;             /* row y's runs are row[y] .. row[y+1]-1 */
@@ -49,9 +50,9 @@ RL_CHECK rl_err rl_label_init(rl_label *lb, rl_ws *ws, int width, int height, in
 /* Label pixels with lo <= I < hi in img: any image up to 65535 wide and
  * at most as high as the height given at init (a frame, or a window of
  * it). Regions of fewer than min_area pixels are dropped. RL_EINVAL for a
- * larger image. RL_ELIMIT if the image has more
- * runs than cap_runs (a frame of noise); regions past cap_regions are
- * counted in lb->overflow, not an error. */
+ * larger image. Neither limit is an error: past cap_runs (a frame of
+ * noise, a fine pattern) the rows left are counted in lb->rows_left and
+ * not labelled; regions past cap_regions are counted in lb->overflow. */
 RL_CHECK rl_err rl_label_band(rl_label *lb, const rl_image *img, int lo, int hi, int min_area);
 
 /* Thresholds per tile: pixel (x, y) is dark when I < hi[(y / tile) * nx +

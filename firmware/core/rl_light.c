@@ -13,7 +13,7 @@ rl_err rl_light_find(rl_label *lb, const rl_image *img, int level, int min_area,
     half = rl_image_view(img->width, (H + 1) / 2, img->stride * 2, img->data);
     if ((e = rl_label_band(lb, &half, level, 256, min_area)) != RL_OK)
         return e;
-    res->dropped.lights += lb->overflow;
+    res->dropped.lights += lb->overflow + (lb->rows_left > 0);
     for (i = 0; i < lb->n_regions; i++) {
         const rl_region *g = &lb->reg[i];
         rl_box b;

@@ -219,7 +219,9 @@ rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
     if ((e = rl_label_dark(&rec->dark, img, &rec->illum.map, speck)) != RL_OK)
         return e;
     res->n_regions = rec->dark.n_regions;
-    res->dropped.regions = rec->dark.overflow;
+    /* regions never examined: past the capacity, or in rows past the
+     * run capacity (at least one there) */
+    res->dropped.regions = rec->dark.overflow + (rec->dark.rows_left > 0);
     /* 3. CLR extraction */
     ncand = rl_clr_find(&rec->dark, &rec->cfg, res, cand, RL_MAX_CANDIDATES);
     /* 4. identification: ICLRs and UCLRs */

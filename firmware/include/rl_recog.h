@@ -91,8 +91,10 @@ typedef struct {
 
 /* What a compile-time limit (rl_config.h) left out of one frame's result. */
 typedef struct {
-    int regions;       /* dark regions past RL_MAX_REGIONS (never examined) */
-    int lights;        /* light regions past RL_MAX_LIGHTS */
+    int regions;       /* dark regions past RL_MAX_REGIONS, plus one when rows past the
+                          run capacity were left out (never examined) */
+    int lights;        /* light regions past RL_MAX_LIGHTS, plus one when rows past the
+                          run capacity were left out */
     int candidates;    /* CLRs past RL_MAX_CANDIDATES, unidentified ones included */
     int landmarks;     /* identified landmarks past RL_MAX_LANDMARKS */
 } rl_dropped;

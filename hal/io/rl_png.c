@@ -46,6 +46,23 @@ void rl_png_free(rl_image *img)
     memset(img, 0, sizeof *img);
 }
 
+/* One row of 1-4 channels (grey, grey + alpha, RGB, RGBA) to grey. */
+static void to_grey(const uint8_t *s, int channels, png_uint_32 w, uint8_t *d)
+{
+    png_uint_32 x;
+    if (channels <= 2) {
+        for (x = 0; x < w; x++)
+            d[x] = s[(size_t)x * (size_t)channels];
+        return;
+    }
+    for (x = 0; x < w; x++) {
+        const uint8_t *p = s + (size_t)x * (size_t)channels;
+        /* BT.601 luma in fixed point, rounded: the same weights as
+         * OpenCV's RGB2GRAY. */
+        d[x] = (uint8_t)((299u * p[0] + 587u * p[1] + 114u * p[2] + 500u) / 1000u);
+    }
+}
+
 rl_err rl_png_read_gray(const char *path, rl_image *out, char *err, size_t errlen)
 {
     FILE *f;
@@ -58,8 +75,8 @@ rl_err rl_png_read_gray(const char *path, rl_image *out, char *err, size_t errle
     png_bytep *volatile rows = NULL;
     uint8_t *volatile gray = NULL;
     char what[220];
-    png_uint_32 w, h, y, x;
-    int channels;
+    png_uint_32 w, h, y;
+    int channels, passes;
     size_t rowbytes;
 
     if (out == NULL || path == NULL)
@@ -136,40 +153,37 @@ rl_err rl_png_read_gray(const char *path, rl_image *out, char *err, size_t errle
 #else
     png_set_strip_16(png);
 #endif
-    png_set_interlace_handling(png);
+    passes = png_set_interlace_handling(png);
     png_read_update_info(png, info);
     channels = png_get_channels(png, info);
     rowbytes = png_get_rowbytes(png, info);
     if (channels < 1 || channels > 4 || rowbytes != (size_t)w * (size_t)channels)
         longjmp(ctx.jmp, 1);
 
-    raw = (uint8_t *)malloc(rowbytes * h);
-    rows = (png_bytep *)malloc(sizeof(png_bytep) * h);
+    /* an interlaced image needs all its rows at once; any other is read a
+     * row at a time into one row's buffer (an 8192 x 8192 RGBA image takes
+     * the grey frame and 32 kB, not 256 MB more) */
+    raw = (uint8_t *)malloc(rowbytes * (passes > 1 ? h : 1));
+    rows = (png_bytep *)malloc(sizeof(png_bytep) * (passes > 1 ? h : 1));
     gray = (uint8_t *)malloc((size_t)w * h);
     if (raw == NULL || rows == NULL || gray == NULL) {
         snprintf(ctx.msg, sizeof ctx.msg, "out of memory");
         longjmp(ctx.jmp, 1);
     }
-    for (y = 0; y < h; y++)
-        rows[y] = raw + (size_t)y * rowbytes;
-    png_read_image(png, rows);
+    if (passes > 1) {
+        for (y = 0; y < h; y++)
+            rows[y] = raw + (size_t)y * rowbytes;
+        png_read_image(png, rows);
+    }
+    for (y = 0; y < h; y++) {
+        const uint8_t *s = passes > 1 ? rows[y] : raw;
+        uint8_t *d = gray + (size_t)y * w;
+        if (passes == 1)
+            png_read_row(png, raw, NULL);
+        to_grey(s, channels, w, d);
+    }
     png_read_end(png, NULL);
 
-    for (y = 0; y < h; y++) {
-        const uint8_t *s = rows[y];
-        uint8_t *d = gray + (size_t)y * w;
-        if (channels <= 2) {
-            for (x = 0; x < w; x++)
-                d[x] = s[(size_t)x * (size_t)channels];
-        } else {
-            for (x = 0; x < w; x++) {
-                const uint8_t *p = s + (size_t)x * (size_t)channels;
-                /* BT.601 luma in fixed point, rounded: the same weights as
-                 * OpenCV's RGB2GRAY. */
-                d[x] = (uint8_t)((299u * p[0] + 587u * p[1] + 114u * p[2] + 500u) / 1000u);
-            }
-        }
-    }
     png_destroy_read_struct(&png, &info, NULL);
     fclose(f);
     free(raw);
