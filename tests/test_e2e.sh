@@ -3,16 +3,7 @@
 # over the rendered paths, pose frames through a pseudo-terminal, decoded
 # by `ringloc monitor`; every pose checked against the renderer's truth.
 # usage: test_e2e.sh RINGLOC PATHS_DIR TMPDIR
-set -u
-R=$1
-D=$(cd "$2" && pwd)
-T=$3
-rm -rf "$T"
-mkdir -p "$T"
-pass=0
-fail=0
-ok() { pass=$((pass + 1)); }
-bad() { echo "FAIL: $*"; fail=$((fail + 1)); }
+. "$(dirname "$0")/sh_lib.sh"
 
 (cd "$D" && ls straight_*.png rect_*.png circle_*.png) >"$T/frames.txt"
 sed 's|^|'"$D"'/|' "$T/frames.txt" >"$T/frames_abs.txt"

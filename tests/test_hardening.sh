@@ -2,16 +2,7 @@
 # Faults the firmware and the tools must survive (issue 18), as a user
 # meets them: each check fails without its fix.
 # usage: test_hardening.sh RINGLOC PATHS_DIR TMPDIR
-set -u
-R=$1
-D=$(cd "$2" && pwd)
-T=$3
-rm -rf "$T"
-mkdir -p "$T"
-pass=0
-fail=0
-ok() { pass=$((pass + 1)); }
-bad() { echo "FAIL: $*"; fail=$((fail + 1)); }
+. "$(dirname "$0")/sh_lib.sh"
 
 # a long drive: the rendered frames listed many times over
 : >"$T/frames.txt"

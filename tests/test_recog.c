@@ -123,34 +123,38 @@ static void test_inner_ring_is_not_a_landmark(void **state)
     }
 }
 
-/* Gaussian blur of a W x H float image, sigma px, in place (edges
- * clamped): the test's own, not the recognizer's. */
+/* One pass of a Gaussian (kernel k of radius rad, sum 1) along rows
+ * (dx = 1) or columns (dx = 0) of a W x H float image, edges clamped. */
+static void blur_pass(const float *in, float *out, const double *k, int rad, int dx)
+{
+    int i, x, y;
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            double a = 0;
+            for (i = -rad; i <= rad; i++) {
+                int xx = dx ? x + i : x, yy = dx ? y : y + i;
+                xx = xx < 0 ? 0 : xx >= W ? W - 1 : xx;
+                yy = yy < 0 ? 0 : yy >= H ? H - 1 : yy;
+                a += k[i + rad] * in[yy * W + xx];
+            }
+            out[y * W + x] = (float)a;
+        }
+}
+
+/* Gaussian blur of a W x H float image, sigma px, in place: the test's
+ * own, not the recognizer's. */
 static void blur_float(float *im, double sigma)
 {
     static float tmp[H * W];
     double k[64], sum = 0;
-    int rad = (int)ceil(3 * sigma), i, x, y;
+    int rad = (int)ceil(3 * sigma), i;
     assert_true(rad < 32);
     for (i = -rad; i <= rad; i++)
         sum += k[i + rad] = exp(-0.5 * i * i / (sigma * sigma));
-    for (y = 0; y < H; y++)
-        for (x = 0; x < W; x++) {
-            double a = 0;
-            for (i = -rad; i <= rad; i++) {
-                int xx = x + i < 0 ? 0 : x + i >= W ? W - 1 : x + i;
-                a += k[i + rad] * im[y * W + xx];
-            }
-            tmp[y * W + x] = (float)(a / sum);
-        }
-    for (y = 0; y < H; y++)
-        for (x = 0; x < W; x++) {
-            double a = 0;
-            for (i = -rad; i <= rad; i++) {
-                int yy = y + i < 0 ? 0 : y + i >= H ? H - 1 : y + i;
-                a += k[i + rad] * tmp[yy * W + x];
-            }
-            im[y * W + x] = (float)(a / sum);
-        }
+    for (i = -rad; i <= rad; i++)
+        k[i + rad] /= sum;
+    blur_pass(im, tmp, k, rad, 1);
+    blur_pass(tmp, im, k, rad, 0);
 }
 
 /* A soft dark blob next to a lamp (a shade, a fixture's edge out of
