@@ -110,7 +110,7 @@ one_error() { # WHAT EXPECTED-RC PATTERN COMMAND...
 }
 frame=$(head -1 "$T/frames.txt")
 sed 's/data: \[\([0-9.]*\), 0, \([0-9.]*\), 0, \([0-9.]*\)/data: [1e-300, 0, \2, 0, 1e-300/' "$D/camera.yaml" >"$T/cam_tiny.yaml"
-one_error "fx 1e-300" 1 "cam_tiny.yaml:[0-9]*: camera_matrix: fx 1e-300" \
+one_error "fx 1e-300" 1 "cam_tiny.yaml:[0-9]*: camera_matrix: 640x480, fx 1e-300" \
     "$R" locate --camera "$T/cam_tiny.yaml" --map "$D/map.yaml" --robot "$D/robot.yaml" "$frame"
 awk 'NR == 1, /x:/ { if (!done && sub(/x: [-0-9.]+/, "x: 1e308")) done = 1 } { print }' "$D/map.yaml" >"$T/map_far.yaml"
 one_error "map x 1e308" 1 "map_far.yaml:[0-9]*: landmarks\[0\].x: 1e+308 is out of range" \

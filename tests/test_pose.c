@@ -32,6 +32,9 @@ static void test_camera_limits(void **state)
     c.k[0] = 1e300;
     assert_int_equal(rl_camera_check(&c), RL_ERANGE);
     c = camera();
+    c.width = 100000;
+    assert_int_equal(rl_camera_check(&c), RL_ERANGE);
+    c = camera();
     c.k[1] = NAN;
     assert_int_equal(rl_camera_check(&c), RL_ERANGE);
 }

@@ -2,6 +2,7 @@
 
 #include <math.h>
 #include <string.h>
+#include "rl_config.h"
 
 void rl_camera_defaults(rl_camera *cam, int width, int height, double hfov)
 {
@@ -17,7 +18,8 @@ void rl_camera_defaults(rl_camera *cam, int width, int height, double hfov)
 rl_err rl_camera_check(const rl_camera *cam)
 {
     int i;
-    if (cam->width <= 0 || cam->height <= 0 || !(cam->fx >= RL_CAMERA_MIN_F) ||
+    if (cam->width <= 0 || cam->height <= 0 || cam->width > RL_MAX_IMAGE_DIM ||
+        cam->height > RL_MAX_IMAGE_DIM || !(cam->fx >= RL_CAMERA_MIN_F) ||
         !(cam->fx <= RL_CAMERA_MAX_F) || !(cam->fy >= RL_CAMERA_MIN_F) || !(cam->fy <= RL_CAMERA_MAX_F) ||
         !(fabs(cam->cx - 0.5 * cam->width) <= 1.5 * cam->width) ||
         !(fabs(cam->cy - 0.5 * cam->height) <= 1.5 * cam->height))

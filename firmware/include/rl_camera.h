@@ -32,7 +32,7 @@ void rl_camera_defaults(rl_camera *cam, int width, int height, double hfov);
 #define RL_CAMERA_MAX_F 1e6
 #define RL_CAMERA_MAX_K 1e4
 
-/* RL_OK if the sizes are positive, the focal lengths in RL_CAMERA_MIN_F ..
+/* RL_OK if the sizes are 1 .. RL_MAX_IMAGE_DIM, the focal lengths in RL_CAMERA_MIN_F ..
  * RL_CAMERA_MAX_F, the principal point within one frame's size of the
  * image and every coefficient finite and at most RL_CAMERA_MAX_K; else
  * RL_ERANGE. */

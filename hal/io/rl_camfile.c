@@ -3,6 +3,7 @@
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include "rl_config.h"
 #include "rl_yaml.h"
 
 /* Read a matrix node {rows, cols, data: [...]} (ROS and OpenCV share this
@@ -116,10 +117,11 @@ rl_err rl_camfile_load(const char *path, rl_camera *cam, char *err, size_t errle
     cam->model = nd == 8 ? RL_DIST_RATIONAL : nd > 0 ? RL_DIST_PLUMB_BOB : RL_DIST_NONE;
     if (rl_camera_check(cam) != RL_OK) {
         e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "camera_matrix"), "camera_matrix", RL_ERANGE,
-                         err, errlen, "fx %g, fy %g, cx %g, cy %g or a distortion coefficient out of "
-                         "range (focal lengths %g .. %g px, the principal point within a frame of "
-                         "the image, coefficients within +-%g)", cam->fx, cam->fy, cam->cx, cam->cy,
-                         RL_CAMERA_MIN_F, RL_CAMERA_MAX_F, RL_CAMERA_MAX_K);
+                         err, errlen, "%dx%d, fx %g, fy %g, cx %g, cy %g or a distortion "
+                         "coefficient out of range (sizes 1 .. %d, focal lengths %g .. %g px, the "
+                         "principal point within a frame of the image, coefficients within +-%g)",
+                         cam->width, cam->height, cam->fx, cam->fy, cam->cx, cam->cy,
+                         RL_MAX_IMAGE_DIM, RL_CAMERA_MIN_F, RL_CAMERA_MAX_F, RL_CAMERA_MAX_K);
         goto out;
     }
 out:
