@@ -22,14 +22,9 @@ rl_err rl_robotfile_load(const char *path, rl_mount *m, char *err, size_t errlen
     }
     if ((e = rl_yaml_double_in(&y, cm, "x", "camera_mount.x", 0, -100, 100, &m->x, err, errlen)) != RL_OK ||
         (e = rl_yaml_double_in(&y, cm, "y", "camera_mount.y", 0, -100, 100, &m->y, err, errlen)) != RL_OK ||
-        (e = rl_yaml_double(&y, cm, "z", "camera_mount.z", 1, &m->z, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double_in(&y, cm, "z", "camera_mount.z", 1, 0, 20, &m->z, err, errlen)) != RL_OK ||
         (e = rl_yaml_double_in(&y, cm, "yaw", "camera_mount.yaw", 0, -7, 7, &m->yaw, err, errlen)) != RL_OK)
         goto out;
-    if (m->z < 0 || m->z > 20) {
-        e = rl_yaml_fail(&y, rl_yaml_get(&y, cm, "z"), "camera_mount.z", RL_ERANGE, err, errlen,
-                         "%g m is not a camera height above the floor", m->z);
-        goto out;
-    }
 out:
     rl_yaml_free(&y);
     return e;
