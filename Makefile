@@ -3,13 +3,14 @@
 #
 #   make host            build the host binaries into build/
 #   make host-test       build and run every test (CTest)
-#   make host-test-asan  the same tests under AddressSanitizer + UBSan (build-asan/),
+#   make host-test-asan  the same tests built with clang under AddressSanitizer + UBSan (build-asan/),
 #                        with the plain-C matcher (RL_NO_VECTOR_EXT) instead of the vector one
 #   make demo            the firmware on a bundled drive: poses over a pty, report
 #   make bench           recognition benchmarks (figures, not pass/fail)
 #   make bench-real REAL=DIR  ringloc and AprilTag 3 on real photos with landmarks placed in them
 #   make fuzz [FUZZ_SECONDS=60]  libFuzzer (clang, ASan + UBSan) on the recognizer, the PNG
-#                        reader, the YAML loaders, the pose solver, the frame decoder
+#                        reader, the YAML loaders, the pose solver, the frame decoder;
+#                        MSan on those without libpng and libyaml
 #   make soak [SOAK_FRAMES=200000]  the firmware's loop for a long run, its serial line
 #                        vanishing every few seconds: heap calls, RSS, frames after reopening
 #   make cross BOARD=rpi4                 cross build for a board, tests under qemu
@@ -33,27 +34,26 @@ soak: host
 	  --write-camera $(SOAK_DIR)/camera.yaml --write-robot $(SOAK_DIR)/robot.yaml
 	$(BUILD)/tools/ringloc-soak --frames $(SOAK_FRAMES) --reopen-every 3 $(SOAK_DIR)
 
-# Fuzzing: each target FUZZ_SECONDS, from the committed seeds
-# (tests/fuzz/corpus/NAME) into a working corpus in $(BUILD_FUZZ); a crash
-# stops the run and leaves its input there as crash-NAME-*.
-BUILD_FUZZ   ?= build-fuzz
-FUZZ_SECONDS ?= 60
-FUZZ_TARGETS ?= recog png yaml pose frame
+# Fuzzing: each target FUZZ_SECONDS under ASan + UBSan, and the targets
+# without libpng and libyaml under MSan too, JOBS at a time
+# (tools/fuzz.sh); a crash stops the run and leaves its input beside the
+# target as crash-NAME-*.
+BUILD_FUZZ        ?= build-fuzz
+BUILD_FUZZ_MSAN   ?= build-fuzz-msan
+FUZZ_SECONDS      ?= 60
+FUZZ_TARGETS      ?= recog png yaml pose frame
+FUZZ_MSAN_TARGETS ?= recog pose frame
 
 fuzz:
 	@sh tools/deps.sh fuzz
 	cmake -S . -B $(BUILD_FUZZ) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
 	  -DRL_FUZZ=ON -DCMAKE_BUILD_TYPE=Debug $(CMAKE_ARGS)
 	cmake --build $(BUILD_FUZZ) -j $(JOBS)
-	@for t in $(FUZZ_TARGETS); do \
-	  mkdir -p $(BUILD_FUZZ)/corpus/$$t && \
-	  echo "fuzz_$$t: $(FUZZ_SECONDS) s" && \
-	  $(BUILD_FUZZ)/tests/fuzz/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
-	    -print_final_stats=1 -artifact_prefix=$(BUILD_FUZZ)/crash-$$t- \
-	    $(BUILD_FUZZ)/corpus/$$t tests/fuzz/corpus/$$t 2>$(BUILD_FUZZ)/fuzz_$$t.log || \
-	    { tail -40 $(BUILD_FUZZ)/fuzz_$$t.log; echo "fuzz_$$t: FAILED (input in $(BUILD_FUZZ)/crash-$$t-*)"; exit 1; }; \
-	  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" $(BUILD_FUZZ)/fuzz_$$t.log | tr '\n' ' '; echo; \
-	done
+	cmake -S . -B $(BUILD_FUZZ_MSAN) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+	  -DRL_FUZZ=ON -DRL_FUZZ_SANITIZE=memory -DCMAKE_BUILD_TYPE=Debug $(CMAKE_ARGS)
+	cmake --build $(BUILD_FUZZ_MSAN) -j $(JOBS)
+	sh tools/fuzz.sh $(FUZZ_SECONDS) $(JOBS) $(foreach t,$(FUZZ_TARGETS),$(BUILD_FUZZ):$(t)) \
+	  $(foreach t,$(FUZZ_MSAN_TARGETS),$(BUILD_FUZZ_MSAN):$(t))
 
 # Boards (boards/<name>): cross build, tests under qemu, package, install.
 BOARD       ?= rpi4
@@ -94,11 +94,10 @@ host: deps $(BUILD)/CMakeCache.txt
 host-test: host
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-$(BUILD_ASAN)/CMakeCache.txt: | deps
-	cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=Debug -DRL_SANITIZE=ON -DRL_NO_VECTOR_EXT=ON \
-	  -DRL_FIXTURE_COUNT=12 $(CMAKE_ARGS)
-
-host-test-asan: deps $(BUILD_ASAN)/CMakeCache.txt
+host-test-asan:
+	@sh tools/deps.sh asan
+	cmake -S . -B $(BUILD_ASAN) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+	  -DCMAKE_BUILD_TYPE=Debug -DRL_SANITIZE=ON -DRL_NO_VECTOR_EXT=ON -DRL_FIXTURE_COUNT=12 $(CMAKE_ARGS)
 	cmake --build $(BUILD_ASAN) -j $(JOBS)
 	cd $(BUILD_ASAN) && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp ctest --output-on-failure -j $(JOBS)
 
@@ -124,4 +123,4 @@ bench-real: host
 	$(BUILD)/tools/ringloc-bench --real $(REAL)
 
 clean:
-	rm -rf $(BUILD) $(BUILD_ASAN)
+	rm -rf $(BUILD) $(BUILD_ASAN) $(BUILD_FUZZ) $(BUILD_FUZZ_MSAN)

@@ -2,7 +2,10 @@
 // interface outside. The camera streams YUV420; its Y plane is the grey
 // image, lent straight from the mmapped buffer (no copy). Requests are
 // queued once at start and re-queued on release, so grabbing allocates
-// nothing. Built only where libcamera is found (hal/CMakeLists.txt).
+// nothing. Exposure and gain: automatic (AeEnable), or manual
+// (ExposureTime, AnalogueGain) as configured. The capture time is the
+// request's SensorTimestamp (CLOCK_MONOTONIC, as rl_clock). Built only
+// where libcamera is found (hal/CMakeLists.txt).
 #include <libcamera/libcamera.h>
 #include <sys/mman.h>
 #include <chrono>
@@ -13,6 +16,7 @@
 #include <memory>
 #include <mutex>
 #include <new>
+#include <optional>
 #include <vector>
 
 extern "C" {
@@ -91,8 +95,11 @@ rl_err lc_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
     f->t_us = rl_clock_now_us();
     {
         const FrameBuffer *b = r->buffers().begin()->second;
-        if (b->metadata().timestamp > 0)
-            f->t_us = b->metadata().timestamp / 1000u; // CLOCK_MONOTONIC nanoseconds
+        std::optional<int64_t> sensor = r->metadata().get(controls::SensorTimestamp);
+        if (sensor && *sensor > 0)
+            f->t_us = static_cast<uint64_t>(*sensor) / 1000u; // start of exposure, monotonic ns
+        else if (b->metadata().timestamp > 0)
+            f->t_us = b->metadata().timestamp / 1000u;
     }
     f->img = rl_image_view(s->width, s->height, s->stride, const_cast<uint8_t *>(s->maps[slot].y));
     return RL_OK;
@@ -185,12 +192,89 @@ extern "C" rl_err rl_cam_open_libcamera(rl_cam *c, const rl_cam_config *cc, char
         s->maps.push_back(mp);
         s->requests.push_back(std::move(r));
     }
+    ControlList ctrls(controls::controls);
+    const ControlInfoMap &offered = s->camera->controls();
+    if (cc->exposure_us > 0 || cc->gain > 0) {
+        if (offered.find(&controls::AeEnable) != offered.end())
+            ctrls.set(controls::AeEnable, false);
+        if (cc->exposure_us > 0) {
+            if (offered.find(&controls::ExposureTime) == offered.end())
+                return fail(c, s, err, errlen, RL_EUNSUPPORTED, "offers no ExposureTime control");
+            ctrls.set(controls::ExposureTime, static_cast<int32_t>(cc->exposure_us));
+        }
+        if (cc->gain > 0) {
+            if (offered.find(&controls::AnalogueGain) == offered.end())
+                return fail(c, s, err, errlen, RL_EUNSUPPORTED, "offers no AnalogueGain control");
+            ctrls.set(controls::AnalogueGain, static_cast<float>(cc->gain));
+        }
+    } else if (offered.find(&controls::AeEnable) != offered.end()) {
+        ctrls.set(controls::AeEnable, true);
+    }
     s->camera->requestCompleted.connect(s, &State::completed);
-    if (s->camera->start() != 0)
+    if (s->camera->start(&ctrls) != 0)
         return fail(c, s, err, errlen, RL_EIO, "cannot start streaming");
     for (auto &r : s->requests)
         s->camera->queueRequest(r.get());
     c->state = s;
     c->ops = &lc_ops;
+    char ex[48], ga[48];
+    if (cc->exposure_us > 0)
+        std::snprintf(ex, sizeof ex, "exposure %d us", cc->exposure_us);
+    else
+        std::snprintf(ex, sizeof ex, "exposure auto");
+    if (cc->gain > 0)
+        std::snprintf(ga, sizeof ga, "gain %g", cc->gain);
+    else
+        std::snprintf(ga, sizeof ga, "gain auto");
+    std::snprintf(c->info, sizeof c->info, "libcamera %s, YUV420 %dx%d lent as is, %s, %s",
+                  s->camera->id().c_str(), s->width, s->height, ex, ga);
+    return RL_OK;
+}
+
+extern "C" rl_err rl_cam_probe_libcamera(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx, char *err,
+                                         size_t errlen)
+{
+    setenv("LIBCAMERA_LOG_LEVELS", "*:ERROR", 0);
+    CameraManager cm;
+    if (cm.start() != 0) {
+        std::snprintf(err, errlen, "libcamera: cannot start the camera manager");
+        return RL_ENODEV;
+    }
+    auto cams = cm.cameras();
+    size_t which = cc->device && *cc->device ? std::strtoul(cc->device, nullptr, 10) : 0;
+    char text[512];
+    if (cams.empty() || which >= cams.size()) {
+        std::snprintf(err, errlen, "libcamera camera %s: %s", cc->device ? cc->device : "0",
+                      cams.empty() ? "no camera found" : "no camera of that index");
+        cm.stop();
+        return RL_ENOTFOUND;
+    }
+    for (size_t i = 0; i < cams.size(); i++) {
+        std::snprintf(text, sizeof text, "libcamera camera %zu: %s%s", i, cams[i]->id().c_str(),
+                      i == which ? " (configured)" : "");
+        line(ctx, text);
+    }
+    {
+        std::shared_ptr<Camera> cam = cams[which];
+        std::unique_ptr<CameraConfiguration> conf = cam->generateConfiguration({StreamRole::Viewfinder});
+        line(ctx, "formats (* ringloc takes it):");
+        if (conf && !conf->empty()) {
+            const StreamFormats &fm = conf->at(0).formats();
+            for (const PixelFormat &pf : fm.pixelformats()) {
+                SizeRange r = fm.range(pf);
+                std::snprintf(text, sizeof text, "  %c %-10s %s", pf == formats::YUV420 ? '*' : ' ',
+                              pf.toString().c_str(), r.toString().c_str());
+                line(ctx, text);
+            }
+        }
+        line(ctx, "controls:");
+        for (const auto &kv : cam->controls()) {
+            std::snprintf(text, sizeof text, "  control %-32s %s", kv.first->name().c_str(),
+                          kv.second.toString().c_str());
+            line(ctx, text);
+        }
+    }
+    cams.clear();
+    cm.stop();
     return RL_OK;
 }

@@ -1,6 +1,11 @@
 /* PNG-sequence camera: a directory of PNGs (sorted by name) or a text file
- * listing one PNG per line, played at a rate. Every frame is decoded at
- * open, so grabbing never allocates or touches the disk. */
+ * listing one PNG per line (relative to the list's folder), played at a
+ * rate. A frame is decoded when it is grabbed, into one block sized at
+ * open, so memory does not grow with the list and grabbing never
+ * allocates; a list file is read a line at a time. A frame that cannot be
+ * read, or is not the camera's size, is reported (RL_EFORMAT, the reason
+ * in c->error) and skipped; with loop set the sequence starts again at its
+ * end. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,8 +15,14 @@
 #include "rl_png.h"
 
 typedef struct {
-    rl_image *frames;
-    int n;
+    char **names;          /* a directory's PNGs, or NULL for a list file */
+    int n, at;             /* names, and the next one */
+    FILE *list;            /* a list file, read as frames are grabbed */
+    int dirlen;            /* the list's folder: its first dirlen characters */
+    char dev[512], path[1600];
+    int width, height;     /* every frame's size */
+    void *block;
+    size_t cap;
     long next;
     uint64_t t0, period_us;
     int loop;
@@ -20,21 +31,58 @@ typedef struct {
 static void png_close(rl_cam *c)
 {
     png_state *s = (png_state *)c->state;
-    int i;
     if (s == NULL)
         return;
-    for (i = 0; i < s->n; i++)
-        rl_png_free(&s->frames[i]);
-    free(s->frames);
+    rl_png_list_free(s->names, s->n);
+    if (s->list != NULL)
+        fclose(s->list);
+    free(s->block);
     free(s);
+}
+
+/* The next frame's path into s->path; 0 at the end of the sequence. */
+static int next_name(png_state *s)
+{
+    char line[1024];
+    if (s->list == NULL) {
+        if (s->at == s->n)
+            return 0;
+        snprintf(s->path, sizeof s->path, "%s", s->names[s->at++]);
+        return 1;
+    }
+    while (fgets(line, sizeof line, s->list) != NULL) {
+        line[strcspn(line, "\r\n")] = '\0';
+        if (line[0] == '\0' || line[0] == '#')
+            continue;
+        if (line[0] == '/')
+            snprintf(s->path, sizeof s->path, "%s", line);
+        else
+            snprintf(s->path, sizeof s->path, "%.*s%s", s->dirlen, s->dev, line);
+        return 1;
+    }
+    return 0;
+}
+
+static void rewind_names(png_state *s)
+{
+    s->at = 0;
+    if (s->list != NULL)
+        rewind(s->list);
 }
 
 static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
 {
     png_state *s = (png_state *)c->state;
     uint64_t due, now;
-    if (s->next >= s->n && !s->loop)
-        return RL_ENOTFOUND;
+    rl_err e;
+    char err[sizeof c->error];
+    if (!next_name(s)) {
+        if (!s->loop)
+            return RL_ENOTFOUND;
+        rewind_names(s);
+        if (!next_name(s))
+            return RL_ENOTFOUND; /* the list was emptied while playing */
+    }
     /* pace to the rate: frame k is due at t0 + k * period */
     due = s->t0 + (uint64_t)s->next * s->period_us;
     now = rl_clock_now_us();
@@ -46,11 +94,20 @@ static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
         }
         rl_clock_sleep_us(wait);
     }
-    f->index = s->next;
-    f->slot = (int)(s->next % s->n);
-    f->img = s->frames[f->slot];
+    f->index = s->next++;
+    f->slot = 0;
     f->t_us = rl_clock_now_us();
-    s->next++;
+    e = rl_png_read_gray_into(s->path, s->block, s->cap, &f->img, err, sizeof err);
+    if (e == RL_OK && (f->img.width != s->width || f->img.height != s->height)) {
+        snprintf(err, sizeof err, "%.160s: frame is %dx%d, the camera's are %dx%d", s->path,
+                 f->img.width, f->img.height, s->width, s->height);
+        e = RL_EFORMAT;
+    }
+    if (e != RL_OK) {
+        snprintf(c->error, sizeof c->error, "%s", err);
+        memset(&f->img, 0, sizeof f->img);
+        return RL_EFORMAT;
+    }
     return RL_OK;
 }
 
@@ -62,87 +119,74 @@ static void png_release(rl_cam *c, rl_cam_frame *f)
 
 static const rl_cam_ops png_ops = {png_grab, png_release, png_close};
 
+/* The frames' size: the configured one, else the first frame whose
+ * header reads. */
+static rl_err frame_size(png_state *s, const rl_cam_config *cc, char *err, size_t errlen)
+{
+    char first[320];
+    int tried = 0;
+    if (!next_name(s)) {
+        snprintf(err, errlen, "%s: no PNG frames", s->dev);
+        return RL_ENOTFOUND;
+    }
+    rewind_names(s);
+    if (cc->width > 0 && cc->height > 0) {
+        s->width = cc->width;
+        s->height = cc->height;
+        return RL_OK;
+    }
+    first[0] = '\0';
+    while (next_name(s)) {
+        char why[320];
+        if (rl_png_size(s->path, &s->width, &s->height, why, sizeof why) == RL_OK &&
+            (cc->width <= 0 || s->width == cc->width) && (cc->height <= 0 || s->height == cc->height)) {
+            rewind_names(s);
+            return RL_OK;
+        }
+        if (tried++ == 0)
+            snprintf(first, sizeof first, "%s", why);
+    }
+    rewind_names(s);
+    snprintf(err, errlen, "%s: no readable PNG frame (the first: %s)", s->dev, first);
+    return RL_ENOTFOUND;
+}
+
 rl_err rl_cam_open_png(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen)
 {
-    char **names = NULL, line[1024];
-    int n = 0, cap = 0, i;
     struct stat st;
     png_state *s;
-    rl_err e = RL_OK;
-    const char *dev = cc->device;
-    if (dev == NULL || stat(dev, &st) != 0) {
-        snprintf(err, errlen, "%s: %s", dev ? dev : "(none)", dev ? strerror(errno) : "no PNG directory or list given");
+    rl_err e;
+    const char *dev = cc->device, *slash;
+    if (dev == NULL || dev[0] == '\0' || stat(dev, &st) != 0) {
+        snprintf(err, errlen, "%s: %s", dev && dev[0] ? dev : "(none)",
+                 dev && dev[0] ? strerror(errno) : "no PNG directory or list given");
         return RL_ENOTFOUND;
     }
-    if (S_ISDIR(st.st_mode)) {
-        if ((e = rl_png_list(dev, &names, &n, err, errlen)) != RL_OK)
-            return e;
-        cap = n;
-    } else {
-        /* a list file: one PNG per line, relative to the list's folder */
-        FILE *f = fopen(dev, "r");
-        const char *slash = strrchr(dev, '/');
-        int dirlen = slash ? (int)(slash - dev + 1) : 0;
-        if (f == NULL) {
-            snprintf(err, errlen, "%s: %s", dev, strerror(errno));
-            return RL_ENOTFOUND;
-        }
-        while (fgets(line, sizeof line, f)) {
-            size_t len;
-            line[strcspn(line, "\r\n")] = '\0';
-            if (line[0] == '\0' || line[0] == '#')
-                continue;
-            if (n == cap) {
-                char **more = realloc(names, sizeof *names * (size_t)(cap ? 2 * cap : 64));
-                if (more == NULL)
-                    break;
-                names = more;
-                cap = cap ? 2 * cap : 64;
-            }
-            len = (size_t)dirlen + strlen(line) + 1;
-            if ((names[n] = malloc(len)) == NULL)
-                break;
-            if (line[0] == '/')
-                snprintf(names[n], len, "%s", line);
-            else
-                snprintf(names[n], len, "%.*s%s", dirlen, dev, line);
-            n++;
-        }
-        if (!feof(f)) {
-            fclose(f);
-            rl_png_list_free(names, n);
-            snprintf(err, errlen, "%s: out of memory reading the list", dev);
-            return RL_ENOMEM;
-        }
-        fclose(f);
-    }
-    if (n == 0) {
-        snprintf(err, errlen, "%s: no PNG frames", dev);
-        rl_png_list_free(names, 0);
-        return RL_ENOTFOUND;
-    }
-    s = calloc(1, sizeof *s);
-    if (s == NULL || (s->frames = calloc((size_t)n, sizeof *s->frames)) == NULL) {
-        free(s);
-        rl_png_list_free(names, n);
-        snprintf(err, errlen, "%s: out of memory for %d frames", dev, n);
+    if ((s = calloc(1, sizeof *s)) == NULL) {
+        snprintf(err, errlen, "%s: out of memory", dev);
         return RL_ENOMEM;
     }
-    for (i = 0; i < n; i++) {
-        if (e == RL_OK && (e = rl_png_read_gray(names[i], &s->frames[i], err, errlen)) == RL_OK) {
-            s->n++;
-            if ((cc->width && s->frames[i].width != cc->width) ||
-                (cc->height && s->frames[i].height != cc->height)) {
-                snprintf(err, errlen, "%s: frame is %dx%d, the camera is configured for %dx%d",
-                         names[i], s->frames[i].width, s->frames[i].height, cc->width, cc->height);
-                e = RL_EINVAL;
-            }
-        }
-        free(names[i]);
-    }
-    free(names);
     c->state = s;
     c->ops = &png_ops;
+    snprintf(s->dev, sizeof s->dev, "%s", dev);
+    slash = strrchr(s->dev, '/');
+    s->dirlen = slash ? (int)(slash - s->dev + 1) : 0;
+    if (S_ISDIR(st.st_mode))
+        e = rl_png_list(dev, &s->names, &s->n, err, errlen);
+    else if ((s->list = fopen(dev, "r")) == NULL) {
+        snprintf(err, errlen, "%s: %s", dev, strerror(errno));
+        e = RL_ENOTFOUND;
+    } else
+        e = RL_OK;
+    if (e == RL_OK)
+        e = frame_size(s, cc, err, errlen);
+    if (e == RL_OK) {
+        s->cap = rl_png_block_size(s->width, s->height);
+        if ((s->block = malloc(s->cap)) == NULL) {
+            snprintf(err, errlen, "%s: out of memory for %dx%d frames", dev, s->width, s->height);
+            e = RL_ENOMEM;
+        }
+    }
     if (e != RL_OK) {
         rl_cam_close(c);
         return e;
@@ -150,5 +194,36 @@ rl_err rl_cam_open_png(rl_cam *c, const rl_cam_config *cc, char *err, size_t err
     s->loop = cc->loop;
     s->period_us = cc->rate > 0 ? (uint64_t)(1e6 / cc->rate) : 0;
     s->t0 = rl_clock_now_us();
+    return RL_OK;
+}
+
+rl_err rl_cam_probe_png(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx, char *err, size_t errlen)
+{
+    rl_cam c;
+    png_state *s;
+    char text[700];
+    long n = 0, bad = 0;
+    int w = 0, h = 0;
+    rl_err e;
+    memset(&c, 0, sizeof c);
+    if ((e = rl_cam_open_png(&c, cc, err, errlen)) != RL_OK)
+        return e;
+    s = (png_state *)c.state;
+    while (next_name(s)) {
+        char why[320];
+        n++;
+        if (rl_png_size(s->path, &w, &h, why, sizeof why) != RL_OK || w != s->width || h != s->height)
+            bad++;
+    }
+    char rate[48];
+    if (cc->rate > 0)
+        snprintf(rate, sizeof rate, "%g frames per second", cc->rate);
+    else
+        snprintf(rate, sizeof rate, "as fast as they decode");
+    snprintf(text, sizeof text, "png %s: %ld frames of %dx%d%s, %ld not readable or of another size, "
+             "played at %s%s", s->dev, n, s->width, s->height, cc->width > 0 ? " (configured)" : "", bad,
+             rate, cc->loop ? ", looping" : "");
+    line(ctx, text);
+    rl_cam_close(&c);
     return RL_OK;
 }

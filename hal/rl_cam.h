@@ -1,12 +1,16 @@
 /* rl_cam: the camera, where a frame enters.
  *
  * One interface, several backends chosen by name at run time: "png" (a
- * directory or list of PNG files played at a rate, for the host and the
- * demo), "v4l2" (USB webcams, mmap streaming, GREY or YUYV), "libcamera"
- * (the Raspberry Pi camera; built only where libcamera is found). A frame
- * is lent, not copied: grab gives a view into the backend's buffer with
- * its capture time (rl_clock.h), release gives it back. A test double is
- * one more backend: rl_cam_config.open.
+ * directory or list of PNG files played at a rate and decoded one at a
+ * time, for the host and the demo), "v4l2" (USB webcams and CSI drivers,
+ * mmap streaming, the best of GREY, NV12, YU12, YUYV, UYVY and MJPEG the
+ * device offers), "libcamera" (the Raspberry Pi camera; built only where
+ * libcamera is found). A frame is lent, not copied where its format
+ * allows: grab gives a view into the backend's buffer with its capture
+ * time from the driver (rl_clock.h's monotonic clock), release gives it
+ * back. Exposure and gain are automatic unless set. A test double is one
+ * more backend (rl_cam_config.open), or a fake device under the V4L2
+ * backend (rl_cam_config.v4l2_sys, rl_v4l2_sys.h).
  *
  *   rl_cam cam;
  *   rl_cam_config cc;
@@ -34,6 +38,7 @@
 
 struct rl_cam;
 struct rl_cam_config;
+struct rl_v4l2_sys;
 /* A backend's open: fills c->ops and c->state. */
 typedef rl_err (*rl_cam_open_fn)(struct rl_cam *c, const struct rl_cam_config *cc, char *err,
                                  size_t errlen);
@@ -44,6 +49,9 @@ typedef struct rl_cam_config {
     int width, height;   /* wanted size (0: the device's) */
     double rate;         /* frames per second (png: playback rate; 0 = as fast as possible) */
     int loop;            /* png: start again at the end instead of RL_ENOTFOUND */
+    int exposure_us;     /* 0: automatic exposure; else the exposure time, microseconds */
+    double gain;         /* 0: automatic gain; else the (analogue) gain */
+    const struct rl_v4l2_sys *v4l2_sys; /* v4l2: its system calls (NULL: the real ones) */
     rl_cam_open_fn open; /* a backend not named above (a test double); NULL: by name */
     void *open_arg;      /* for that backend */
 } rl_cam_config;
@@ -65,6 +73,8 @@ typedef struct rl_cam {
     const rl_cam_ops *ops;
     void *state;         /* backend's, allocated at open (never per frame) */
     char name[160];      /* device, for messages */
+    char error[384];     /* why the last grab failed, naming the file or device ("" if unknown) */
+    char info[256];      /* what was opened: format, size, exposure (for the log) */
 } rl_cam;
 
 void rl_cam_defaults(rl_cam_config *cc);
@@ -75,15 +85,29 @@ void rl_cam_defaults(rl_cam_config *cc);
 RL_CHECK rl_err rl_cam_open(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen);
 
 /* Wait up to timeout_ms for the next frame: RL_ETIMEOUT if none came,
- * RL_ENOTFOUND at the end of a PNG sequence, RL_EIO / RL_ENODEV when the
- * device failed (close and open again). */
+ * RL_ENOTFOUND at the end of a PNG sequence, RL_EFORMAT for a bad frame
+ * that was skipped (grab again), RL_EIO / RL_ENODEV when the device
+ * failed (close and open again). c->error says why. */
 RL_CHECK rl_err rl_cam_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f);
 void rl_cam_release(rl_cam *c, rl_cam_frame *f);
 void rl_cam_close(rl_cam *c);
+
+/* Describe the device of cc (formats, sizes, controls) without
+ * streaming, a line at a time through line(ctx, text). err names the
+ * device on failure. */
+typedef void (*rl_cam_line_fn)(void *ctx, const char *text);
+RL_CHECK rl_err rl_cam_probe(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx, char *err,
+                             size_t errlen);
 
 /* Backends (hal/cam_*.c). */
 RL_CHECK rl_err rl_cam_open_png(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen);
 RL_CHECK rl_err rl_cam_open_v4l2(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen);
 RL_CHECK rl_err rl_cam_open_libcamera(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen);
+RL_CHECK rl_err rl_cam_probe_png(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx, char *err,
+                                 size_t errlen);
+RL_CHECK rl_err rl_cam_probe_v4l2(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx, char *err,
+                                  size_t errlen);
+RL_CHECK rl_err rl_cam_probe_libcamera(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx,
+                                       char *err, size_t errlen);
 
 #endif

@@ -44,7 +44,7 @@ int rl_cmd_calibrate(int argc, char **argv)
     memset(&o, 0, sizeof o);
     o.degree = 2;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+    while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
         switch (c) {
         case 'm': map_path = optarg; break;
         case 'r': robot_path = optarg; break;
@@ -64,7 +64,7 @@ int rl_cmd_calibrate(int argc, char **argv)
             break;
         case 'o': out = optarg; break;
         case 'h': fputs(calib_help, stdout); return 0;
-        default: return rl_cli_fail(C, RL_EXIT_USAGE, "see 'ringloc calibrate-offsets --help'");
+        default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
     }
     if (!map_path || !robot_path || !have_pose || !out)

@@ -88,7 +88,7 @@ int rl_cmd_detect(int argc, char **argv)
 
     rl_recog_defaults(&cfg);
     optind = 1;
-    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+    while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
         int r = rl_cli_recog_option(C, c, optarg, &cfg, &family);
         if (r < 0)
             return RL_EXIT_USAGE;
@@ -98,7 +98,7 @@ int rl_cmd_detect(int argc, char **argv)
         case 'm': map_path = optarg; break;
         case 'a': annotate = optarg; break;
         case 'h': fputs(detect_help, stdout); return 0;
-        default: return rl_cli_fail(C, RL_EXIT_USAGE, "see 'ringloc detect --help'");
+        default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
     }
     if (optind >= argc)

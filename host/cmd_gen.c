@@ -61,7 +61,7 @@ int rl_cmd_gen(int argc, char **argv)
     char err[512], name[1024];
 
     optind = 1;
-    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+    while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
         switch (c) {
         case 'f': family = optarg; break;
         case 'i': ids_arg = optarg; break;
@@ -84,7 +84,7 @@ int rl_cmd_gen(int argc, char **argv)
                 return RL_EXIT_USAGE;
             break;
         case 'h': fputs(gen_help, stdout); return 0;
-        default: return rl_cli_fail(C, RL_EXIT_USAGE, "see 'ringloc gen --help'");
+        default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
     }
     if (optind < argc)
@@ -124,7 +124,7 @@ int rl_cmd_gen(int argc, char **argv)
         while (*s) {
             char *end;
             long v = strtol(s, &end, 10);
-            if (end == s || (*end != ',' && *end != '\0'))
+            if (end == s || (*end != ',' && *end != '\0') || (*end == ',' && end[1] == '\0'))
                 return rl_cli_fail(C, RL_EXIT_USAGE, "--id: '%s' is not a list of ids", ids_arg);
             if (!rl_family_valid(&fam, (int)v) || v != (int)v)
                 return rl_cli_fail(C, RL_EXIT_USAGE, "--id: %ld is not in ring%d (valid ids 1 .. %d)",

@@ -54,7 +54,7 @@ int rl_cmd_locate(int argc, char **argv)
 
     rl_recog_defaults(&cfg);
     optind = 1;
-    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+    while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
         int r = rl_cli_recog_option(C, c, optarg, &cfg, &family);
         if (r < 0)
             return RL_EXIT_USAGE;
@@ -67,7 +67,7 @@ int rl_cmd_locate(int argc, char **argv)
         case 'o': off_path = optarg; break;
         case 'a': annotate = optarg; break;
         case 'h': fputs(locate_help, stdout); return 0;
-        default: return rl_cli_fail(C, RL_EXIT_USAGE, "see 'ringloc locate --help'");
+        default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
     }
     if (!cam_path || !map_path || !robot_path)

@@ -72,7 +72,7 @@ int rl_cmd_monitor(int argc, char **argv)
     uint8_t buf[4096];
 
     optind = 1;
-    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+    while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
         switch (c) {
         case 'p': link_path = optarg; break;
         case 'b':
@@ -84,7 +84,7 @@ int rl_cmd_monitor(int argc, char **argv)
             break;
         case 'f': follow = 1; break;
         case 'h': fputs(monitor_help, stdout); return 0;
-        default: return rl_cli_fail(C, RL_EXIT_USAGE, "see 'ringloc monitor --help'");
+        default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
     }
     if ((link_path == NULL) == (optind >= argc))

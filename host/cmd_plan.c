@@ -56,7 +56,7 @@ int rl_cmd_plan(int argc, char **argv)
 
     rl_plan_defaults(&in);
     optind = 1;
-    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+    while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
         switch (c) {
         case 'n': if (!rl_cli_int(C, "--landmarks", optarg, 1, 1000000, &in.landmarks)) return RL_EXIT_USAGE; break;
         case 'c': cam_path = optarg; break;
@@ -73,7 +73,7 @@ int rl_cmd_plan(int argc, char **argv)
         case 'F': pdf = optarg; break;
         case 'D': if (!rl_cli_double(C, "--diameter", optarg, 0.001, 5, &diameter)) return RL_EXIT_USAGE; break;
         case 'h': fputs(plan_help, stdout); return 0;
-        default: return rl_cli_fail(C, RL_EXIT_USAGE, "see 'ringloc plan --help'");
+        default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
     }
     if (optind < argc)

@@ -350,7 +350,7 @@ int rl_cmd_sitecheck(int argc, char **argv)
     k.rounds = 3;
     rl_recog_defaults(&cfg);
     optind = 1;
-    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+    while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
         switch (c) {
         case 'f': family = optarg; break;
         case 'm': mapfile = optarg; break;
@@ -367,7 +367,7 @@ int rl_cmd_sitecheck(int argc, char **argv)
                 return RL_EXIT_USAGE;
             break;
         case 'h': fputs(help, stdout); return 0;
-        default: return rl_cli_fail(C, RL_EXIT_USAGE, "see 'ringloc site-check --help'");
+        default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
     }
     if (optind >= argc)

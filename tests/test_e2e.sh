@@ -60,9 +60,9 @@ grep -v '^map:' "$T/ringloc.yaml" >"$T/bad3.yaml"
 "$R" run --config "$T/bad3.yaml" 2>"$T/err"; rc=$?
 [ $rc = 1 ] && grep -qE "bad3.yaml:[0-9]+: map: missing key" "$T/err" && ok || bad "missing map: $(cat "$T/err")"
 
-# a camera that is not there: the loop keeps going and says so in status
-# frames, and SIGTERM stops it cleanly
-sed 's|device: frames_abs.txt|device: /nonexistent/frames|; s|device: tty|device: status.bin|' "$T/ringloc.yaml" >"$T/nocam.yaml"
+# a camera device that is not there (yet): the loop keeps going and says
+# so in status frames, and SIGTERM stops it cleanly
+sed 's|backend: png, device: frames_abs.txt|backend: v4l2, device: /nonexistent/video9|; s|device: tty|device: status.bin|' "$T/ringloc.yaml" >"$T/nocam.yaml"
 "$R" run --config "$T/nocam.yaml" 2>"$T/nocam.err" &
 pid=$!
 sleep 1.5
@@ -70,7 +70,7 @@ kill -TERM $pid
 wait $pid; rc=$?
 "$R" monitor "$T/status.bin" >"$T/status.jsonl" 2>/dev/null
 st=$(grep -c '"type": "status", .*"reason": 2' "$T/status.jsonl")
-[ $rc = 0 ] && [ "$st" -ge 3 ] && grep -q "stopped by signal" "$T/nocam.err" && grep -q "/nonexistent/frames" "$T/nocam.err" && ok ||
+[ $rc = 0 ] && [ "$st" -ge 3 ] && grep -q "stopped by signal" "$T/nocam.err" && grep -q "/nonexistent/video9" "$T/nocam.err" && ok ||
     bad "missing camera: rc $rc, $st status frames: $(cat "$T/nocam.err")"
 lines=$(grep -c "camera:" "$T/nocam.err")
 [ "$lines" -le 3 ] && ok || bad "$lines camera log lines in 1.5 s: not rate-limited"

@@ -139,5 +139,28 @@ one_error "a 65536x65536 camera matrix" 1 "cam_huge.yaml:[0-9]*: camera_matrix: 
     "$R" locate --camera "$T/cam_huge.yaml" --map "$D/map.yaml" --robot "$D/robot.yaml" "$frame"
 one_error "a folder as a frame" 1 "$T: a folder, not a PNG image" "$R" detect "$T"
 
+# 6. the PNG camera: a frame that cannot be read is reported and skipped,
+#    the others still give poses; with loop: true the list plays again
+printf '%s\n' "$T/absent.png" "$frame" "$T" "$frame" >"$T/mixed.txt"
+cfg - 0 | sed "s|device: $T/frames.txt|device: $T/mixed.txt|" >"$T/mixed.yaml"
+"$R" run --config "$T/mixed.yaml" >"$T/mixed.bin" 2>"$T/mixed.err"; rc=$?
+[ $rc = 0 ] && grep -q "camera: $T/absent.png: No such file or directory; frame skipped" "$T/mixed.err" &&
+    grep -q ": 2 frames, 2 poses, 2 status frames, 0 camera errors, 2 bad frames," "$T/mixed.err" && ok ||
+    bad "bad frames in the list: rc $rc: $(cat "$T/mixed.err")"
+cfg - 0 | sed "s|device: $T/frames.txt|device: $T/mixed.txt|; s|rate: 0|rate: 0, loop: true|" >"$T/loop.yaml"
+"$R" run --config "$T/loop.yaml" --frames 9 >"$T/loop.bin" 2>"$T/loop.err"; rc=$?
+[ $rc = 0 ] && grep -q ": 9 frames, 9 poses, " "$T/loop.err" && ok ||
+    bad "loop: rc $rc: $(tail -1 "$T/loop.err")"
+
+# 7. --probe describes the configured camera and exits, reading nothing
+#    else; a V4L2 device that is not there is one error line
+"$R" run --config "$T/mixed.yaml" --probe >"$T/probe.out" 2>"$T/probe.err"; rc=$?
+[ $rc = 0 ] && grep -q "png $T/mixed.txt: 4 frames of 640x480 (configured), 2 not readable" "$T/probe.out" && ok ||
+    bad "probe: rc $rc: $(cat "$T/probe.out" "$T/probe.err")"
+sed "s|backend: png, device: $T/frames.txt|backend: v4l2, device: /dev/videoRLTEST$$|" "$T/nodev.yaml" >"$T/v4l2.yaml"
+"$R" run --config "$T/v4l2.yaml" --probe >"$T/probe.out" 2>"$T/probe.err"; rc=$?
+[ $rc = 1 ] && [ "$(wc -l <"$T/probe.err")" = 1 ] && grep -q "camera: /dev/videoRLTEST$$: no such device" "$T/probe.err" && ok ||
+    bad "probe of an absent device: rc $rc: $(cat "$T/probe.err")"
+
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

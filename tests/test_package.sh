@@ -20,7 +20,7 @@ deb=$(ls "$T"/out/ringloc_*_"$ARCH".deb 2>/dev/null | head -1)
 check "a ringloc_*_$ARCH.deb is built" test -f "$deb"
 dpkg-deb -f "$deb" >"$T/control"
 check "architecture is $ARCH" grep -qx "Architecture: $ARCH" "$T/control"
-check "dependencies declared" grep -qE '^Depends: .*libc6.*libpng16-16.*libyaml' "$T/control"
+check "dependencies declared" grep -qE '^Depends: .*libc6.*libpng16-16.*libyaml.*libturbojpeg0' "$T/control"
 check "the robot's package needs no cairo" sh -c "! grep -q cairo '$T/control'"
 dpkg-deb -c "$deb" >"$T/files"
 check "firmware binary in /usr/bin" grep -q '\./usr/bin/ringloc-fw$' "$T/files"
@@ -36,7 +36,7 @@ check "postinst enables the service" grep -q 'systemctl enable ringloc.service' 
 check "binary is for $ARCH" sh -c "file '$T/root/usr/bin/ringloc-fw' | grep -q '$( [ "$ARCH" = arm64 ] && echo aarch64 || echo x86-64 )'"
 # what the firmware binary links: no cairo, no OpenCV (readelf reads any arch)
 readelf -d "$T/root/usr/bin/ringloc-fw" >"$T/needed" 2>&1
-check "ringloc-fw links libpng and libyaml" sh -c "grep -q 'libpng' '$T/needed' && grep -q 'libyaml' '$T/needed'"
+check "ringloc-fw links libpng, libyaml and libturbojpeg" sh -c "grep -q 'libpng' '$T/needed' && grep -q 'libyaml' '$T/needed' && grep -q 'libturbojpeg' '$T/needed'"
 check "ringloc-fw links neither cairo nor OpenCV" sh -c "! grep -qiE 'cairo|opencv' '$T/needed'"
 tools=$(ls "$T"/out/ringloc-tools_*_"$ARCH".deb 2>/dev/null | head -1)
 check "a ringloc-tools_*_$ARCH.deb is built" test -f "$tools"

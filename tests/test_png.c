@@ -43,15 +43,64 @@ static uint8_t luma(int r, int g, int b)
     return (uint8_t)(y + 0.5);
 }
 
+/* Read with rl_png_read_gray, and into a block of exactly
+ * rl_png_block_size: both give the same pixels. */
 static void read_ok(const char *p, int w, int h, rl_image *img)
 {
+    static uint8_t block[1 << 20];
     char err[256] = "";
+    rl_image into;
+    int y;
     rl_err e = rl_png_read_gray(p, img, err, sizeof err);
     if (e != RL_OK)
         fail_msg("%s", err);
     assert_int_equal(img->width, w);
     assert_int_equal(img->height, h);
     assert_true(img->stride >= w);
+    assert_true(rl_png_block_size(w, h) <= sizeof block);
+    e = rl_png_read_gray_into(p, block, rl_png_block_size(w, h), &into, err, sizeof err);
+    if (e != RL_OK)
+        fail_msg("into a block: %s", err);
+    assert_int_equal(into.width, w);
+    assert_int_equal(into.height, h);
+    assert_true((uint8_t *)into.data >= block && (uint8_t *)into.data + (size_t)w * h <= block + sizeof block);
+    for (y = 0; y < h; y++)
+        assert_memory_equal(into.data + (size_t)y * into.stride, img->data + (size_t)y * img->stride, (size_t)w);
+}
+
+/* A block sized for a smaller frame refuses a larger one, naming it; the
+ * size comes from the header alone. */
+static void test_block_too_small(void **state)
+{
+    static uint8_t px[640 * 480], block[4 << 20];
+    char err[256] = "";
+    rl_image img;
+    int w = 0, h = 0;
+    (void)state;
+    memset(px, 90, sizeof px);
+    rl_test_path(path, sizeof path, "block.png");
+    write_raw(path, 640, 480, 8, PNG_COLOR_TYPE_GRAY, px, 640, 1, NULL, 0);
+    assert_int_equal(rl_png_size(path, &w, &h, err, sizeof err), RL_OK);
+    assert_int_equal(w, 640);
+    assert_int_equal(h, 480);
+    assert_int_equal(rl_png_read_gray_into(path, block, rl_png_block_size(32, 24), &img, err, sizeof err),
+                     RL_ELIMIT);
+    assert_non_null(strstr(err, path));
+    assert_true(rl_png_block_size(640, 480) <= sizeof block);
+    assert_int_equal(rl_png_read_gray_into(path, block, rl_png_block_size(640, 480), &img, err, sizeof err),
+                     RL_OK);
+    assert_int_equal(img.data[640 * 479 + 639], 90);
+    {
+        /* the widest pixel, interlaced: 16-bit RGBA fits the block too */
+        static uint16_t rgba[640 * 480 * 4];
+        int i;
+        for (i = 0; i < 640 * 480 * 4; i++)
+            rgba[i] = (uint16_t)(i % 4 == 3 ? 65535 : 40000);
+        write_raw(path, 640, 480, 16, PNG_COLOR_TYPE_RGBA, (const uint8_t *)rgba, 640 * 8, 1, NULL, 0);
+        assert_int_equal(rl_png_read_gray_into(path, block, rl_png_block_size(640, 480), &img, err,
+                                               sizeof err), RL_OK);
+        assert_int_equal(img.data[640 * 240 + 320], luma(156, 156, 156)); /* 40000 / 257 = 155.6 */
+    }
 }
 
 static void test_gray8_and_interlaced(void **state)
@@ -300,7 +349,12 @@ static void test_random_corruption_never_crashes(void **state)
         }
         put_bytes(bad, buf, trial % 5 == 0 ? n - (long)(seed % 50) : n);
         if (rl_png_read_gray(bad, &img, err, sizeof err) == RL_OK) {
+            static uint8_t block[1 << 20];
+            rl_image into;
             ok++;
+            /* what one reader accepts, the other reads the same */
+            assert_int_equal(rl_png_read_gray_into(bad, block, sizeof block, &into, err, sizeof err), RL_OK);
+            assert_memory_equal(into.data, img.data, (size_t)img.width * (size_t)img.height);
             rl_png_free(&img);
         } else {
             failed++;
@@ -315,6 +369,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_gray8_and_interlaced),
+        cmocka_unit_test(test_block_too_small),
         cmocka_unit_test(test_gray16_and_gray1),
         cmocka_unit_test(test_rgb_rgba_palette_grayalpha),
         cmocka_unit_test(test_write_then_read),

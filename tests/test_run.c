@@ -24,7 +24,7 @@ void *__wrap_calloc(size_t a, size_t b) { allocations++; return __real_calloc(a,
 void *__wrap_realloc(void *p, size_t n) { allocations++; return __real_realloc(p, n); }
 
 /* ---- a scripted camera ---- */
-enum { OK, FAIL_OPEN, GRAB_EIO, GRAB_TIMEOUT, WRONG_SIZE, END };
+enum { OK, FAIL_OPEN, GRAB_EIO, GRAB_TIMEOUT, WRONG_SIZE, DAMAGED, END };
 typedef struct {
     const int *script; /* what each grab (or open) does */
     int pos, opens, closes, is_open;
@@ -46,6 +46,10 @@ static rl_err cam_grab(rl_cam *cm, int timeout_ms, rl_cam_frame *f)
         return RL_EIO;
     if (what == GRAB_TIMEOUT)
         return RL_ETIMEOUT;
+    if (what == DAMAGED) {
+        snprintf(cm->error, sizeof cm->error, "/dev/video9: frame %d is flagged damaged by the driver; dropped", c->pos);
+        return RL_EFORMAT;
+    }
     f->img = what == WRONG_SIZE ? c->small : c->img;
     f->t_us = 1000000u + (uint64_t)c->pos * 100000u;
     f->index = c->pos;
@@ -285,6 +289,25 @@ static void test_bad_frame_does_not_stop_the_loop(void **state)
     assert_pose_right(&out.msgs[2]);
 }
 
+/* A frame the camera could not give whole is skipped: counted, a
+ * status frame (camera error), and no reopening. */
+static void test_damaged_frame_is_skipped(void **state)
+{
+    static const int script[] = {OK, DAMAGED, DAMAGED, OK, END};
+    (void)state;
+    start(script);
+    run_to_end();
+    assert_int_equal(out.n, 4);
+    assert_pose_right(&out.msgs[0]);
+    assert_int_equal(out.msgs[1].type, RL_FRAME_STATUS);
+    assert_int_equal(out.msgs[1].reason, RL_STATUS_CAMERA_ERROR);
+    assert_int_equal(out.msgs[2].reason, RL_STATUS_CAMERA_ERROR);
+    assert_pose_right(&out.msgs[3]);
+    assert_int_equal(runner.bad_frames, 2);
+    assert_int_equal(runner.camera_errors, 0);
+    assert_int_equal(cam.opens, 1);
+}
+
 static void test_logs_are_rate_limited(void **state)
 {
     static int script[64];
@@ -310,6 +333,7 @@ int main(void)
         cmocka_unit_test(test_timeouts_reopen_the_camera),
         cmocka_unit_test(test_serial_write_fails_and_recovers),
         cmocka_unit_test(test_bad_frame_does_not_stop_the_loop),
+        cmocka_unit_test(test_damaged_frame_is_skipped),
         cmocka_unit_test(test_logs_are_rate_limited),
     };
     return cmocka_run_group_tests(tests, setup, teardown);

@@ -1,7 +1,7 @@
 #!/bin/sh
 # Check, and install when possible, what ringloc needs to build and test.
 #
-#   tools/deps.sh [--check] [host|cross|fuzz]
+#   tools/deps.sh [--check] [host|cross|fuzz|asan]
 #
 # cross: the aarch64 cross build too (Debian's gcc-aarch64-linux-gnu,
 # arm64 libraries through multiarch, qemu-user to run its tests).
@@ -9,6 +9,7 @@
 # As root it installs what is missing with apt-get (Debian, Ubuntu,
 # Raspberry Pi OS); otherwise it prints the exact apt-get line and fails.
 # fuzz: clang and its libFuzzer runtime, libpng and libyaml only.
+# asan: the host's packages and clang (the sanitizer test build).
 # --check only reports. Called first by `make host`, `make host-test`,
 # `make demo` and `make bench`.
 set -eu
@@ -18,7 +19,7 @@ profile=host
 for arg in "$@"; do
     case "$arg" in
     --check) check_only=1 ;;
-    host|cross|fuzz) profile=$arg ;;
+    host|cross|fuzz|asan) profile=$arg ;;
     -h|--help) sed -n '2,10s/^# \{0,1\}//p' "$0"; exit 0 ;;
     *) echo "deps.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
     esac
@@ -36,7 +37,7 @@ pc() { have pkg-config && pkg-config --exists "$1"; }
 
 fuzzer() { printf 'int LLVMFuzzerTestOneInput(const unsigned char *d, unsigned long n) { return 0; }\n' |
     clang -fsanitize=fuzzer -x c - -o /dev/null; }
-if [ "$profile" = fuzz ]; then
+if [ "$profile" = fuzz ] || [ "$profile" = asan ]; then
     need_pkg cmake have cmake
     need_pkg make have make
     need_pkg pkg-config have pkg-config
@@ -54,6 +55,7 @@ if [ "$profile" != fuzz ]; then
     need_pkg libcmocka-dev pc cmocka
     need_pkg libpng-dev pc libpng
     need_pkg libyaml-dev pc yaml-0.1
+    need_pkg libturbojpeg0-dev pc libturbojpeg
     need_pkg libcairo2-dev pc cairo
     need_pkg libopencv-dev pc opencv4
     need_pkg libapriltag-dev pc apriltag
@@ -61,7 +63,7 @@ if [ "$profile" != fuzz ]; then
 
     need_pkg file have file
 fi
-[ "$profile" = host ] && need_pkg libcamera-dev pc libcamera
+[ "$profile" = host ] || [ "$profile" = asan ] && need_pkg libcamera-dev pc libcamera
 foreign=""
 if [ "$profile" = cross ]; then
     arm() { [ -f "/usr/lib/aarch64-linux-gnu/pkgconfig/$1.pc" ]; }
@@ -70,6 +72,7 @@ if [ "$profile" = cross ]; then
     need_pkg qemu-user have qemu-aarch64
     need_pkg libpng-dev:arm64 arm libpng
     need_pkg libyaml-dev:arm64 arm yaml-0.1
+    need_pkg libturbojpeg0-dev:arm64 arm libturbojpeg
     need_pkg libcairo2-dev:arm64 arm cairo
     need_pkg libcmocka-dev:arm64 arm cmocka
     if ! dpkg --print-foreign-architectures 2>/dev/null | grep -qx arm64; then

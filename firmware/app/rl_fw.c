@@ -18,14 +18,17 @@
 #include "rl_clock.h"
 
 static const char *run_help =
-    "usage: %s --config ringloc.yaml [--frames N]\n\n"
+    "usage: %s --config ringloc.yaml [--frames N] [--probe]\n\n"
     "The firmware: grab frames from the camera, recognize landmarks, compute the\n"
     "robot's pose and send it as ARCOS-framed pose frames on the serial line (a\n"
     "status frame when there is no pose). Camera and serial faults are survived:\n"
     "the device is reopened with backoff and status frames say what happened.\n"
     "Stops on SIGINT/SIGTERM, at the end of a PNG sequence, or after N frames.\n"
     "Logs go to standard error, repeated lines at most every log_interval s.\n"
-    "See rl_runcfg.h or the README for the configuration file.\n";
+    "See rl_runcfg.h or the README for the configuration file.\n\n"
+    "  --frames N   stop after N frames\n"
+    "  --probe      list what the configured camera offers (formats, sizes,\n"
+    "               controls) and exit\n";
 
 static volatile sig_atomic_t stop_flag;
 
@@ -111,6 +114,25 @@ static int load_setup(const char *C, const char *config, fw_setup *s)
     s->cam.width = cfg->cam_width;
     s->cam.height = cfg->cam_height;
     s->cam.rate = cfg->cam_rate;
+    s->cam.loop = cfg->cam_loop;
+    s->cam.exposure_us = (int)(cfg->cam_exposure_us + 0.5);
+    s->cam.gain = cfg->cam_gain;
+    /* a camera streams the calibration's size unless told otherwise */
+    if (s->cam.width == 0 && s->cam.height == 0) {
+        s->cam.width = s->calib.width;
+        s->cam.height = s->calib.height;
+    }
+    if (strcmp(cfg->cam_backend, "png") == 0) {
+        /* files do not appear later, as a device may: a missing or empty
+         * sequence is a configuration error; the frames are the
+         * calibration's size (others are reported and skipped) */
+        rl_cam probe;
+        s->cam.width = s->calib.width;
+        s->cam.height = s->calib.height;
+        if (rl_cam_open(&probe, &s->cam, err, sizeof err) != RL_OK)
+            return !rl_cli_fail(C, RL_EXIT_FAIL, "%s: camera.device: %s", config, err);
+        rl_cam_close(&probe);
+    }
     return 1;
 }
 
@@ -171,10 +193,11 @@ static void run_loop(rl_runner *runner, long max_frames)
 /* --config and --frames; 0 to go on, else the exit code (--help: 0 with
  * *done set). */
 static int parse_args(const char *C, const char *prefix, int argc, char **argv,
-                      const char **config, long *max_frames, int *done)
+                      const char **config, long *max_frames, int *probe, int *done)
 {
     static const struct option opts[] = {{"config", required_argument, 0, 'c'},
                                          {"frames", required_argument, 0, 'n'},
+                                         {"probe", no_argument, 0, 'p'},
                                          {"help", no_argument, 0, 'h'},
                                          {0, 0, 0, 0}};
     char hint[160];
@@ -182,7 +205,7 @@ static int parse_args(const char *C, const char *prefix, int argc, char **argv,
     *done = 0;
     optind = 1;
     snprintf(hint, sizeof hint, "see '%s --help'", prefix);
-    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+    while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
         switch (c) {
         case 'c': *config = optarg; break;
         case 'n':
@@ -190,14 +213,42 @@ static int parse_args(const char *C, const char *prefix, int argc, char **argv,
                 return RL_EXIT_USAGE;
             *max_frames = v;
             break;
+        case 'p': *probe = 1; break;
         case 'h': printf(run_help, prefix); *done = 1; return 0;
-        default: return rl_cli_fail(C, RL_EXIT_USAGE, "%s", hint);
+        default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
     }
     if (optind < argc)
         return rl_cli_fail(C, RL_EXIT_USAGE, "unexpected argument '%s' (%s)", argv[optind], hint);
     if (*config == NULL)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--config FILE is required (%s)", hint);
+    return 0;
+}
+
+static void print_line(void *ctx, const char *text)
+{
+    (void)ctx;
+    printf("%s\n", text);
+}
+
+/* --probe: the configuration's camera described; only ringloc.yaml is
+ * read, so a camera can be looked at before the rest is set up. */
+static int probe_camera(const char *C, const char *config)
+{
+    static rl_runcfg cfg;
+    rl_cam_config cc;
+    char err[768];
+    if (rl_runcfg_load(config, &cfg, err, sizeof err) != RL_OK)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    rl_cam_defaults(&cc);
+    cc.backend = cfg.cam_backend;
+    cc.device = cfg.cam_device;
+    cc.width = cfg.cam_width;
+    cc.height = cfg.cam_height;
+    cc.rate = cfg.cam_rate;
+    cc.loop = cfg.cam_loop;
+    if (rl_cam_probe(&cc, print_line, NULL, err, sizeof err) != RL_OK)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "camera: %s", err);
     return 0;
 }
 
@@ -212,11 +263,13 @@ int rl_fw_main(const char *C, int argc, char **argv)
     rl_run_io io;
     const char *config = NULL;
     long max_frames = 0;
-    int rc, done;
+    int rc, done, probe = 0;
 
     rl_cli_prefix(C, prefix, sizeof prefix);
-    if ((rc = parse_args(C, prefix, argc, argv, &config, &max_frames, &done)) != 0 || done)
+    if ((rc = parse_args(C, prefix, argc, argv, &config, &max_frames, &probe, &done)) != 0 || done)
         return rc;
+    if (probe)
+        return probe_camera(C, config);
     /* start-up: everything that can fail in configuration fails here, once */
     if (!load_setup(C, config, &s) || !make_recognizer(C, &s, &hr))
         return RL_EXIT_FAIL;
@@ -231,9 +284,9 @@ int rl_fw_main(const char *C, int argc, char **argv)
             s.cfg.cam_backend, s.cfg.cam_device, s.map.count, s.cfg.map, s.cfg.serial, s.cfg.baud);
     run_loop(&runner, max_frames);
     fprintf(stderr, "%s: %ld frames, %ld poses, %ld status frames, %ld camera errors, "
-                    "%ld timeouts, %ld serial errors, %ld frames dropped%s\n",
+                    "%ld bad frames, %ld timeouts, %ld serial errors, %ld frames dropped%s\n",
             prefix, runner.frames, runner.poses, runner.statuses, runner.camera_errors,
-            runner.camera_timeouts, runner.serial_errors, runner.dropped,
+            runner.bad_frames, runner.camera_timeouts, runner.serial_errors, runner.dropped,
             stop_flag ? (octx.s.broken ? " (standard output closed)" : " (stopped by signal)") : "");
     rl_heap_recog_free(&hr);
     return 0;

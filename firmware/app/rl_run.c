@@ -149,7 +149,7 @@ rl_err rl_run_step(rl_runner *r)
                 r->cam_up = 1;
                 r->timeouts = 0;
                 r->cam_backoff = r->backoff_min_us;
-                logf_(r, RL_LOG_INFO, "camera: %s", "open");
+                logf_(r, RL_LOG_INFO, "camera: open%s%s", r->cam.info[0] ? ": " : "", r->cam.info);
                 return RL_OK;
             }
             r->camera_errors++;
@@ -180,9 +180,16 @@ rl_err rl_run_step(rl_runner *r)
         }
         return RL_OK;
     }
+    if (e == RL_EFORMAT) {
+        /* a frame that could not be read: reported and skipped */
+        r->bad_frames++;
+        logf_(r, RL_LOG_FRAME, "camera: %s; frame skipped", r->cam.error[0] ? r->cam.error : "bad frame");
+        send_status(r, RL_STATUS_CAMERA_ERROR, 0, 0, now);
+        return RL_OK;
+    }
     if (e != RL_OK) {
         r->camera_errors++;
-        logf_(r, RL_LOG_CAMERA, "camera: %s; reopening", rl_strerror(e));
+        logf_(r, RL_LOG_CAMERA, "camera: %s; reopening", r->cam.error[0] ? r->cam.error : rl_strerror(e));
         camera_down(r, now);
         send_status(r, RL_STATUS_CAMERA_ERROR, 0, 0, now);
         return RL_OK;

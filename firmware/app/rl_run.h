@@ -82,6 +82,7 @@ typedef struct {
     long suppressed[RL_LOG_KINDS];
     /* counters */
     long frames, poses, statuses, camera_errors, camera_timeouts, serial_errors, dropped;
+    long bad_frames;            /* frames the camera could not read, skipped */
     long local_used;
 } rl_runner;
 

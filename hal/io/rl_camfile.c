@@ -29,6 +29,8 @@ static rl_err read_matrix(rl_yaml *y, yaml_node_t *root, const char *key, double
         snprintf(label, sizeof label, "%s.cols", key);
         if ((e = rl_yaml_int(y, m, "cols", label, 0, &cols, err, errlen)) != RL_OK)
             return e;
+        if ((rl_yaml_get(y, m, "rows") != NULL && rows < 1) || (rl_yaml_get(y, m, "cols") != NULL && cols < 1))
+            return rl_yaml_fail(y, m, key, RL_EFORMAT, err, errlen, "rows and cols must each be at least 1");
         if (rows >= 0 && cols >= 0 && (long long)rows * cols != n)
             return rl_yaml_fail(y, m, key, RL_EFORMAT, err, errlen,
                                 "rows x cols is %dx%d but data has %d values", rows, cols, n);

@@ -34,6 +34,25 @@ int rl_cli_fail(const char *cmd, int code, const char *fmt, ...)
     return code;
 }
 
+int rl_cli_getopt(const char *cmd, int argc, char **argv, const struct option *opts)
+{
+    char prefix[128];
+    int c, at;
+    opterr = 0;
+    c = getopt_long(argc, argv, ":h", opts, NULL);
+    if (c != '?' && c != ':')
+        return c;
+    rl_cli_prefix(cmd, prefix, sizeof prefix);
+    at = optind > 1 && optind <= argc ? optind - 1 : 0;
+    if (c == ':')
+        rl_cli_fail(cmd, RL_EXIT_USAGE, "option '%s' needs a value (see '%s --help')", argv[at], prefix);
+    else if (optopt != 0)
+        rl_cli_fail(cmd, RL_EXIT_USAGE, "unknown option '-%c' (see '%s --help')", optopt, prefix);
+    else
+        rl_cli_fail(cmd, RL_EXIT_USAGE, "unknown option '%s' (see '%s --help')", argv[at], prefix);
+    return '?';
+}
+
 int rl_cli_double(const char *cmd, const char *opt, const char *s, double lo, double hi,
                   double *out)
 {

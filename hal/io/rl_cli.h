@@ -13,6 +13,7 @@
 #ifndef RL_CLI_H
 #define RL_CLI_H
 
+#include <getopt.h>
 #include <stddef.h>
 
 #define RL_EXIT_FAIL 1
@@ -30,6 +31,11 @@ int rl_cli_fail(const char *cmd, int code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
+
+/* getopt_long for a command whose only short option is -h: an unknown
+ * option or a missing value prints one usage error naming it and the
+ * command's --help, and returns '?'. */
+int rl_cli_getopt(const char *cmd, int argc, char **argv, const struct option *opts);
 
 /* Parse an option value, a number within [lo, hi]; on failure print a
  * usage error naming the option (and the range) and return 0. */

@@ -5,6 +5,9 @@
 #include <string.h>
 #include "rl_yaml.h"
 
+static const char *const top_keys[] = {"family", "diameter", "ceiling_height", "landmarks", NULL};
+static const char *const landmark_keys[] = {"id", "x", "y", NULL};
+
 rl_err rl_mapfile_load(const char *path, rl_map *map, char *err, size_t errlen)
 {
     rl_yaml y;
@@ -24,7 +27,8 @@ rl_err rl_mapfile_load(const char *path, rl_map *map, char *err, size_t errlen)
                          "expected a mapping with family, diameter, ceiling_height, landmarks");
         goto out;
     }
-    if ((e = rl_yaml_string(&y, root, "family", NULL, 1, &fam, err, errlen)) != RL_OK)
+    if ((e = rl_yaml_only(&y, root, NULL, top_keys, err, errlen)) != RL_OK ||
+        (e = rl_yaml_string(&y, root, "family", NULL, 1, &fam, err, errlen)) != RL_OK)
         goto out;
     e = rl_family_parse(fam, &map->family);
     if (e != RL_OK) {
@@ -67,6 +71,8 @@ rl_err rl_mapfile_load(const char *path, rl_map *map, char *err, size_t errlen)
             e = rl_yaml_fail(&y, item, label, RL_EFORMAT, err, errlen, "expected {id, x, y}");
             goto out;
         }
+        if ((e = rl_yaml_only(&y, item, label, landmark_keys, err, errlen)) != RL_OK)
+            goto out;
         snprintf(label, sizeof label, "landmarks[%d].id", i);
         if ((e = rl_yaml_int(&y, item, "id", label, 1, &lm->id, err, errlen)) != RL_OK)
             goto out;

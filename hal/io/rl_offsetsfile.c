@@ -21,6 +21,8 @@ static rl_err read_list(rl_yaml *y, yaml_node_t *root, const char *key, double *
     return RL_OK;
 }
 
+static const char *const keys[] = {"type", "degree", "u0", "v0", "scale", "distance", "forward", "left", NULL};
+
 rl_err rl_offsetsfile_load(const char *path, rl_offsets *o, char *err, size_t errlen)
 {
     rl_yaml y;
@@ -31,7 +33,8 @@ rl_err rl_offsetsfile_load(const char *path, rl_offsets *o, char *err, size_t er
     if ((e = rl_yaml_load(&y, path, err, errlen)) != RL_OK)
         return e;
     root = rl_yaml_root(&y);
-    if ((e = rl_yaml_string(&y, root, "type", NULL, 1, &type, err, errlen)) != RL_OK)
+    if ((e = rl_yaml_only(&y, root, NULL, keys, err, errlen)) != RL_OK ||
+        (e = rl_yaml_string(&y, root, "type", NULL, 1, &type, err, errlen)) != RL_OK)
         goto out;
     if (strcmp(type, "ringloc_offsets") != 0) {
         e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "type"), "type", RL_EFORMAT, err, errlen,

@@ -2,6 +2,7 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <png.h>
 #include <setjmp.h>
 #include <stdio.h>
@@ -9,6 +10,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <strings.h>
+#include <unistd.h>
 
 /* libpng reports through callbacks and longjmp; this carries the message
  * back to the caller so that the file name and libpng's reason reach the
@@ -46,6 +48,77 @@ void rl_png_free(rl_image *img)
     memset(img, 0, sizeof *img);
 }
 
+/* ---- reading ----
+ * One decoder for both kinds of caller: memory comes from the heap
+ * (rl_png_read_gray) or from the caller's block, libpng's own included
+ * (rl_png_read_gray_into); the file is read with read(2) through a
+ * buffer, so no FILE is allocated either. */
+typedef struct {
+    png_ctx ctx;              /* first: libpng's error pointer */
+    int fd;
+    unsigned char buf[16384];
+    size_t pos, len;
+    uint8_t *block;           /* NULL: the heap */
+    size_t cap, used;
+    int short_of_block;
+} png_reader;
+
+/* Memory from the caller's block: 16-byte aligned, never freed until
+ * the next read; NULL (and short_of_block set) when it is used up. */
+static void *bump(png_reader *r, size_t n)
+{
+    size_t at = (r->used + 15u) & ~(size_t)15u;
+    if (at > r->cap || n > r->cap - at) {
+        r->short_of_block = 1;
+        return NULL;
+    }
+    r->used = at + n;
+    return r->block + at;
+}
+
+/* libpng's own allocations, in block mode */
+static png_voidp block_malloc(png_structp png, png_alloc_size_t n)
+{
+    return bump((png_reader *)png_get_mem_ptr(png), n);
+}
+
+static void block_free(png_structp png, png_voidp p)
+{
+    (void)png;
+    (void)p;
+}
+
+static void *take(png_reader *r, size_t n)
+{
+    return r->block == NULL ? malloc(n) : bump(r, n);
+}
+
+static int refill(png_reader *r)
+{
+    ssize_t got;
+    do
+        got = read(r->fd, r->buf, sizeof r->buf);
+    while (got < 0 && errno == EINTR);
+    r->pos = 0;
+    r->len = got > 0 ? (size_t)got : 0;
+    return got > 0;
+}
+
+static void on_read(png_structp png, png_bytep out, png_size_t n)
+{
+    png_reader *r = (png_reader *)png_get_io_ptr(png);
+    while (n > 0) {
+        size_t k;
+        if (r->pos == r->len && !refill(r))
+            png_error(png, "file ends early");
+        k = r->len - r->pos < n ? r->len - r->pos : n;
+        memcpy(out, r->buf + r->pos, k);
+        r->pos += k;
+        out += k;
+        n -= k;
+    }
+}
+
 /* One row of 1-4 channels (grey, grey + alpha, RGB, RGBA) to grey. */
 static void to_grey(const uint8_t *s, int channels, png_uint_32 w, uint8_t *d)
 {
@@ -63,14 +136,64 @@ static void to_grey(const uint8_t *s, int channels, png_uint_32 w, uint8_t *d)
     }
 }
 
-rl_err rl_png_read_gray(const char *path, rl_image *out, char *err, size_t errlen)
+/* Open path and check the signature; the image size from the IHDR chunk
+ * (always first), refused before any pixel buffer exists when it is over
+ * the limit. On success the reader's buffer holds the file's start. */
+static rl_err open_png(png_reader *r, const char *path, png_uint_32 *w, png_uint_32 *h, char *err,
+                       size_t errlen)
 {
-    FILE *f;
-    unsigned char sig[24];
-    size_t got;
+    struct stat st;
+    char what[220];
+    do
+        r->fd = open(path, O_RDONLY | O_CLOEXEC);
+    while (r->fd < 0 && errno == EINTR);
+    if (r->fd < 0)
+        return fail(err, errlen, errno == ENOENT ? RL_ENOTFOUND : RL_EIO, path, strerror(errno));
+    if (fstat(r->fd, &st) == 0 && S_ISDIR(st.st_mode))
+        return fail(err, errlen, RL_EFORMAT, path, "a folder, not a PNG image");
+    r->pos = r->len = 0;
+    while (r->len < 24) {
+        ssize_t got = read(r->fd, r->buf + r->len, 24 - r->len);
+        if (got < 0 && errno == EINTR)
+            continue;
+        if (got < 0)
+            return fail(err, errlen, RL_EIO, path, strerror(errno));
+        if (got == 0)
+            break;
+        r->len += (size_t)got;
+    }
+    if (r->len == 0)
+        return fail(err, errlen, RL_EFORMAT, path, "empty file, not a PNG image");
+    if (r->len < 8 || png_sig_cmp(r->buf, 0, 8) != 0)
+        return fail(err, errlen, RL_EFORMAT, path, "not a PNG file");
+    if (r->len < 24 || memcmp(r->buf + 12, "IHDR", 4) != 0)
+        return fail(err, errlen, RL_EFORMAT, path, "corrupt or truncated PNG (no IHDR chunk first)");
+    *w = ((png_uint_32)r->buf[16] << 24) | ((png_uint_32)r->buf[17] << 16) |
+         ((png_uint_32)r->buf[18] << 8) | r->buf[19];
+    *h = ((png_uint_32)r->buf[20] << 24) | ((png_uint_32)r->buf[21] << 16) |
+         ((png_uint_32)r->buf[22] << 8) | r->buf[23];
+    if (*w > RL_PNG_MAX_DIM || *h > RL_PNG_MAX_DIM) {
+        snprintf(what, sizeof what, "image is %lux%lu, larger than the %dx%d limit",
+                 (unsigned long)*w, (unsigned long)*h, RL_PNG_MAX_DIM, RL_PNG_MAX_DIM);
+        return fail(err, errlen, RL_ELIMIT, path, what);
+    }
+    r->pos = 8; /* libpng is told the signature was read */
+    return RL_OK;
+}
+
+static void close_png(png_reader *r)
+{
+    if (r->fd >= 0)
+        close(r->fd);
+    r->fd = -1;
+}
+
+/* Decode the open file to grey in memory from take(); the reader's fd is
+ * closed by the caller. */
+static rl_err decode(png_reader *r, const char *path, rl_image *out, char *err, size_t errlen)
+{
     png_structp png = NULL;
     png_infop info = NULL;
-    png_ctx ctx;
     uint8_t *volatile raw = NULL;
     png_bytep *volatile rows = NULL;
     uint8_t *volatile gray = NULL;
@@ -79,72 +202,38 @@ rl_err rl_png_read_gray(const char *path, rl_image *out, char *err, size_t errle
     int channels, passes;
     size_t rowbytes;
 
-    if (out == NULL || path == NULL)
-        return RL_EINVAL;
-    memset(out, 0, sizeof *out);
-    f = fopen(path, "rb");
-    if (f == NULL)
-        return fail(err, errlen, errno == ENOENT ? RL_ENOTFOUND : RL_EIO, path,
-                    strerror(errno));
-    {
-        struct stat st;
-        if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
-            fclose(f);
-            return fail(err, errlen, RL_EFORMAT, path, "a folder, not a PNG image");
-        }
-    }
-    got = fread(sig, 1, sizeof sig, f);
-    if (got == 0) {
-        fclose(f);
-        return fail(err, errlen, RL_EFORMAT, path, "empty file, not a PNG image");
-    }
-    if (got < 8 || png_sig_cmp(sig, 0, 8) != 0) {
-        fclose(f);
-        return fail(err, errlen, RL_EFORMAT, path, "not a PNG file");
-    }
-    /* Refuse huge images from the IHDR chunk (always first) before libpng
-     * reads further or any pixel buffer exists. */
-    if (got == sizeof sig && memcmp(sig + 12, "IHDR", 4) == 0) {
-        unsigned long iw = ((unsigned long)sig[16] << 24) | ((unsigned long)sig[17] << 16) |
-                           ((unsigned long)sig[18] << 8) | sig[19];
-        unsigned long ih = ((unsigned long)sig[20] << 24) | ((unsigned long)sig[21] << 16) |
-                           ((unsigned long)sig[22] << 8) | sig[23];
-        if (iw > RL_PNG_MAX_DIM || ih > RL_PNG_MAX_DIM) {
-            fclose(f);
-            snprintf(what, sizeof what, "image is %lux%lu, larger than the %dx%d limit", iw,
-                     ih, RL_PNG_MAX_DIM, RL_PNG_MAX_DIM);
-            return fail(err, errlen, RL_ELIMIT, path, what);
-        }
-    }
-    if (fseek(f, 8, SEEK_SET) != 0) {
-        fclose(f);
-        return fail(err, errlen, RL_EIO, path, strerror(errno));
-    }
-    png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &ctx, on_error, on_warning);
+    if (r->block != NULL)
+        png = png_create_read_struct_2(PNG_LIBPNG_VER_STRING, &r->ctx, on_error, on_warning, r,
+                                       block_malloc, block_free);
+    else
+        png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &r->ctx, on_error, on_warning);
     if (png != NULL)
         info = png_create_info_struct(png);
     if (png == NULL || info == NULL) {
         png_destroy_read_struct(&png, NULL, NULL);
-        fclose(f);
-        return fail(err, errlen, RL_ENOMEM, path, "out of memory");
+        return fail(err, errlen, r->block ? RL_ELIMIT : RL_ENOMEM, path,
+                    r->block ? "larger than the frame buffer" : "out of memory");
     }
-    ctx.msg[0] = '\0';
-    if (setjmp(ctx.jmp)) {
+    r->ctx.msg[0] = '\0';
+    if (setjmp(r->ctx.jmp)) {
         png_destroy_read_struct(&png, &info, NULL);
-        fclose(f);
-        free(raw);
-        free(rows);
-        free(gray);
-        snprintf(what, sizeof what, "corrupt or truncated PNG (%s)", ctx.msg);
+        if (r->block == NULL) {
+            free(raw);
+            free(rows);
+            free(gray);
+        }
+        if (r->short_of_block)
+            return fail(err, errlen, RL_ELIMIT, path, "larger than the frame buffer");
+        snprintf(what, sizeof what, "corrupt or truncated PNG (%s)", r->ctx.msg);
         return fail(err, errlen, RL_EFORMAT, path, what);
     }
-    png_init_io(png, f);
+    png_set_read_fn(png, r, on_read);
     png_set_sig_bytes(png, 8);
     png_read_info(png, info);
     w = png_get_image_width(png, info);
     h = png_get_image_height(png, info);
     if (w > RL_PNG_MAX_DIM || h > RL_PNG_MAX_DIM) /* IHDR was not where expected */
-        longjmp(ctx.jmp, 1);
+        longjmp(r->ctx.jmp, 1);
 
     png_set_palette_to_rgb(png);
     png_set_expand_gray_1_2_4_to_8(png);
@@ -158,17 +247,17 @@ rl_err rl_png_read_gray(const char *path, rl_image *out, char *err, size_t errle
     channels = png_get_channels(png, info);
     rowbytes = png_get_rowbytes(png, info);
     if (channels < 1 || channels > 4 || rowbytes != (size_t)w * (size_t)channels)
-        longjmp(ctx.jmp, 1);
+        longjmp(r->ctx.jmp, 1);
 
     /* an interlaced image needs all its rows at once; any other is read a
      * row at a time into one row's buffer (an 8192 x 8192 RGBA image takes
      * the grey frame and 32 kB, not 256 MB more) */
-    raw = (uint8_t *)malloc(rowbytes * (passes > 1 ? h : 1));
-    rows = (png_bytep *)malloc(sizeof(png_bytep) * (passes > 1 ? h : 1));
-    gray = (uint8_t *)malloc((size_t)w * h);
+    gray = (uint8_t *)take(r, (size_t)w * h);
+    raw = (uint8_t *)take(r, rowbytes * (passes > 1 ? h : 1));
+    rows = (png_bytep *)take(r, sizeof(png_bytep) * (passes > 1 ? h : 1));
     if (raw == NULL || rows == NULL || gray == NULL) {
-        snprintf(ctx.msg, sizeof ctx.msg, "out of memory");
-        longjmp(ctx.jmp, 1);
+        snprintf(r->ctx.msg, sizeof r->ctx.msg, "out of memory");
+        longjmp(r->ctx.jmp, 1);
     }
     if (passes > 1) {
         for (y = 0; y < h; y++)
@@ -177,19 +266,93 @@ rl_err rl_png_read_gray(const char *path, rl_image *out, char *err, size_t errle
     }
     for (y = 0; y < h; y++) {
         const uint8_t *s = passes > 1 ? rows[y] : raw;
-        uint8_t *d = gray + (size_t)y * w;
         if (passes == 1)
             png_read_row(png, raw, NULL);
-        to_grey(s, channels, w, d);
+        to_grey(s, channels, w, gray + (size_t)y * w);
     }
     png_read_end(png, NULL);
 
     png_destroy_read_struct(&png, &info, NULL);
-    fclose(f);
-    free(raw);
-    free(rows);
+    if (r->block == NULL) {
+        free(raw);
+        free(rows);
+    }
     *out = rl_image_view((int)w, (int)h, (int)w, gray);
     return RL_OK;
+}
+
+static rl_err read_gray(png_reader *r, const char *path, rl_image *out, char *err, size_t errlen)
+{
+    png_uint_32 w, h;
+    rl_err e;
+    r->fd = -1;
+    r->used = 0;
+    r->short_of_block = 0;
+    if ((e = open_png(r, path, &w, &h, err, errlen)) == RL_OK)
+        e = decode(r, path, out, err, errlen);
+    close_png(r);
+    return e;
+}
+
+rl_err rl_png_read_gray(const char *path, rl_image *out, char *err, size_t errlen)
+{
+    png_reader *r;
+    rl_err e;
+    if (out == NULL || path == NULL)
+        return RL_EINVAL;
+    memset(out, 0, sizeof *out);
+    if ((r = (png_reader *)malloc(sizeof *r)) == NULL)
+        return fail(err, errlen, RL_ENOMEM, path, "out of memory");
+    r->block = NULL;
+    r->cap = 0;
+    e = read_gray(r, path, out, err, errlen);
+    free(r);
+    return e;
+}
+
+/* libpng's own working memory for a frame w pixels wide: its structs,
+ * zlib's state and 32 kB window, two rows of the widest pixel (16-bit
+ * RGBA), and room for ancillary chunks. */
+#define PNG_WORK_BYTES(w) ((size_t)256 * 1024 + (size_t)(w) * 32u)
+
+size_t rl_png_block_size(int w, int h)
+{
+    size_t gray = (size_t)w * (size_t)h;
+    /* the grey frame, the rows before conversion (all of them when
+     * interlaced, 4 bytes a pixel at most), their pointers, libpng */
+    return sizeof(png_reader) + 64 + gray + 4 * gray + sizeof(png_bytep) * (size_t)h + PNG_WORK_BYTES(w);
+}
+
+rl_err rl_png_read_gray_into(const char *path, void *block, size_t cap, rl_image *out, char *err,
+                             size_t errlen)
+{
+    png_reader *r;
+    uintptr_t a = ((uintptr_t)block + 15u) & ~(uintptr_t)15u;
+    if (out == NULL || path == NULL || block == NULL)
+        return RL_EINVAL;
+    memset(out, 0, sizeof *out);
+    if (cap < sizeof *r + 64)
+        return fail(err, errlen, RL_ELIMIT, path, "larger than the frame buffer");
+    r = (png_reader *)a;
+    r->block = (uint8_t *)(r + 1);
+    r->cap = cap - (size_t)((uint8_t *)r->block - (uint8_t *)block);
+    return read_gray(r, path, out, err, errlen);
+}
+
+rl_err rl_png_size(const char *path, int *w, int *h, char *err, size_t errlen)
+{
+    png_reader *r;
+    png_uint_32 pw = 0, ph = 0;
+    rl_err e;
+    if ((r = (png_reader *)malloc(sizeof *r)) == NULL)
+        return fail(err, errlen, RL_ENOMEM, path, "out of memory");
+    r->fd = -1;
+    e = open_png(r, path, &pw, &ph, err, errlen);
+    close_png(r);
+    free(r);
+    *w = (int)pw;
+    *h = (int)ph;
+    return e;
 }
 
 static rl_err write_png(const char *path, int w, int h, int color_type, const uint8_t *data,

@@ -3,8 +3,10 @@
  * Reading turns any PNG (1/2/4/8/16-bit gray, gray+alpha, RGB, RGBA,
  * palette) into an 8-bit luminance image, as the paper does with colour:
  * Y = 0.299 R + 0.587 G + 0.114 B, alpha dropped, 16-bit scaled to 8.
- * Host code owns the pixels it reads (malloc); free them with
- * rl_png_free. The core never sees this module.
+ * rl_png_read_gray allocates the pixels (free them with rl_png_free);
+ * rl_png_read_gray_into decodes into the caller's block with nothing
+ * allocated, libpng's own memory and the file's buffer included (the PNG
+ * camera, a frame at a time). The core never sees this module.
  *
  *   rl_image img;
  *   char err[256];
@@ -32,6 +34,20 @@
  * corrupt, truncated), RL_ELIMIT (larger than RL_PNG_MAX_DIM),
  * RL_ENOMEM (out of memory). */
 RL_CHECK rl_err rl_png_read_gray(const char *path, rl_image *out, char *err, size_t errlen);
+
+/* Bytes of the block rl_png_read_gray_into needs for frames up to w x h
+ * (any colour type, interlaced or not). */
+size_t rl_png_block_size(int w, int h);
+
+/* As rl_png_read_gray, into block (cap bytes, from rl_png_block_size):
+ * *out views the block until the next read into it. RL_ELIMIT when the
+ * file needs more (a larger frame, a huge ancillary chunk). */
+RL_CHECK rl_err rl_png_read_gray_into(const char *path, void *block, size_t cap, rl_image *out,
+                                      char *err, size_t errlen);
+
+/* The image size from the file's header, nothing decoded; the errors of
+ * rl_png_read_gray. */
+RL_CHECK rl_err rl_png_size(const char *path, int *w, int *h, char *err, size_t errlen);
 
 /* Free pixels from rl_png_read_gray and zero the view. */
 void rl_png_free(rl_image *img);

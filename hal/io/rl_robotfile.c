@@ -5,6 +5,9 @@
 #include <string.h>
 #include "rl_yaml.h"
 
+static const char *const top_keys[] = {"camera_mount", NULL};
+static const char *const mount_keys[] = {"x", "y", "z", "yaw", NULL};
+
 rl_err rl_robotfile_load(const char *path, rl_mount *m, char *err, size_t errlen)
 {
     rl_yaml y;
@@ -20,7 +23,9 @@ rl_err rl_robotfile_load(const char *path, rl_mount *m, char *err, size_t errlen
                          cm ? "expected {x, y, z, yaw}" : "missing key");
         goto out;
     }
-    if ((e = rl_yaml_double_in(&y, cm, "x", "camera_mount.x", 0, -100, 100, &m->x, err, errlen)) != RL_OK ||
+    if ((e = rl_yaml_only(&y, root, NULL, top_keys, err, errlen)) != RL_OK ||
+        (e = rl_yaml_only(&y, cm, "camera_mount", mount_keys, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double_in(&y, cm, "x", "camera_mount.x", 0, -100, 100, &m->x, err, errlen)) != RL_OK ||
         (e = rl_yaml_double_in(&y, cm, "y", "camera_mount.y", 0, -100, 100, &m->y, err, errlen)) != RL_OK ||
         (e = rl_yaml_double_in(&y, cm, "z", "camera_mount.z", 1, 0, 20, &m->z, err, errlen)) != RL_OK ||
         (e = rl_yaml_double_in(&y, cm, "yaw", "camera_mount.yaw", 0, -7, 7, &m->yaw, err, errlen)) != RL_OK)

@@ -36,6 +36,26 @@ static rl_err score_key(rl_yaml *y, yaml_node_t *map, const char *key, const cha
     return e;
 }
 
+static const char *const top_keys[] = {"camera", "calibration", "map", "robot", "offsets",
+                                       "serial", "recognition", "log_interval", NULL};
+static const char *const camera_keys[] = {"backend", "device", "width", "height", "rate", "loop",
+                                          "exposure", "gain", NULL};
+
+/* "auto" (0) or a number within lo .. hi */
+static rl_err auto_or(rl_yaml *y, yaml_node_t *cam, const char *key, const char *label, double lo, double hi,
+                      double *out, char *err, size_t errlen)
+{
+    yaml_node_t *n = rl_yaml_get(y, cam, key);
+    const char *t = rl_yaml_text(n);
+    if (n != NULL && t != NULL && strcmp(t, "auto") == 0) {
+        *out = 0;
+        return RL_OK;
+    }
+    return rl_yaml_double_in(y, cam, key, label, 0, lo, hi, out, err, errlen);
+}
+static const char *const serial_keys[] = {"device", "baud", NULL};
+static const char *const recognition_keys[] = {"local", "min_score", "local_min_score", NULL};
+
 rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
 {
     rl_yaml y;
@@ -66,7 +86,16 @@ rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
                          ser ? "expected {device, baud}" : "missing key");
         goto out;
     }
-    if ((e = rl_yaml_string(&y, cam, "backend", "camera.backend", 1, &s, err, errlen)) != RL_OK)
+    if (rec != NULL && rec->type != YAML_MAPPING_NODE) {
+        e = rl_yaml_fail(&y, rec, "recognition", RL_EFORMAT, err, errlen,
+                         "expected {local, min_score, local_min_score}");
+        goto out;
+    }
+    if ((e = rl_yaml_only(&y, root, NULL, top_keys, err, errlen)) != RL_OK ||
+        (e = rl_yaml_only(&y, cam, "camera", camera_keys, err, errlen)) != RL_OK ||
+        (e = rl_yaml_only(&y, ser, "serial", serial_keys, err, errlen)) != RL_OK ||
+        (e = rl_yaml_only(&y, rec, "recognition", recognition_keys, err, errlen)) != RL_OK ||
+        (e = rl_yaml_string(&y, cam, "backend", "camera.backend", 1, &s, err, errlen)) != RL_OK)
         goto out;
     if (strcmp(s, "png") != 0 && strcmp(s, "v4l2") != 0 && strcmp(s, "libcamera") != 0) {
         e = rl_yaml_fail(&y, rl_yaml_get(&y, cam, "backend"), "camera.backend", RL_EFORMAT, err,
@@ -83,7 +112,10 @@ rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
         snprintf(c->cam_device, sizeof c->cam_device, "%s", s);
     if ((e = rl_yaml_int(&y, cam, "width", "camera.width", 0, &c->cam_width, err, errlen)) != RL_OK ||
         (e = rl_yaml_int(&y, cam, "height", "camera.height", 0, &c->cam_height, err, errlen)) != RL_OK ||
-        (e = rl_yaml_double(&y, cam, "rate", "camera.rate", 0, &c->cam_rate, err, errlen)) != RL_OK)
+        (e = rl_yaml_double(&y, cam, "rate", "camera.rate", 0, &c->cam_rate, err, errlen)) != RL_OK ||
+        (e = rl_yaml_bool(&y, cam, "loop", "camera.loop", 0, &c->cam_loop, err, errlen)) != RL_OK ||
+        (e = auto_or(&y, cam, "exposure", "camera.exposure", 1, 10e6, &c->cam_exposure_us, err, errlen)) != RL_OK ||
+        (e = auto_or(&y, cam, "gain", "camera.gain", 1e-3, 1e4, &c->cam_gain, err, errlen)) != RL_OK)
         goto out;
     if (c->cam_width < 0 || c->cam_height < 0 || c->cam_rate < 0 || c->cam_rate > 1000) {
         e = rl_yaml_fail(&y, cam, "camera", RL_ERANGE, err, errlen,

@@ -7,6 +7,9 @@
  *     width: 640
  *     height: 480
  *     rate: 10               # frames per second
+ *     loop: false            # png: start again at the end of the frames
+ *     exposure: auto         # auto, or the exposure time in microseconds
+ *     gain: auto             # auto, or the analogue gain
  *   calibration: camera.yaml # ROS camera_info or OpenCV YAML
  *   map: map.yaml
  *   robot: robot.yaml
@@ -37,6 +40,9 @@ typedef struct {
     char cam_backend[32], cam_device[512];
     int cam_width, cam_height;  /* 0: the device's */
     double cam_rate;            /* frames per second (default 10) */
+    int cam_loop;               /* png: start again at the end (default false) */
+    double cam_exposure_us;     /* 0: auto (default); else microseconds */
+    double cam_gain;            /* 0: auto (default); else the analogue gain */
     char calibration[512], map[512], robot[512], offsets[512];
     char serial[512];
     int baud;

@@ -217,6 +217,33 @@ rl_err rl_yaml_fail(rl_yaml *y, yaml_node_t *node, const char *key, rl_err code,
     return code;
 }
 
+rl_err rl_yaml_only(rl_yaml *y, yaml_node_t *map, const char *prefix, const char *const *keys,
+                    char *err, size_t errlen)
+{
+    yaml_node_pair_t *p;
+    if (map == NULL || map->type != YAML_MAPPING_NODE)
+        return RL_OK;
+    for (p = map->data.mapping.pairs.start; p < map->data.mapping.pairs.top; p++) {
+        yaml_node_t *k = yaml_document_get_node(&y->doc, p->key);
+        const char *name = k && k->type == YAML_SCALAR_NODE ? (const char *)k->data.scalar.value : "?";
+        char label[128], known[256];
+        size_t used = 0;
+        int i, found = 0;
+        for (i = 0; keys[i] != NULL && !found; i++)
+            found = strcmp(keys[i], name) == 0;
+        if (found)
+            continue;
+        known[0] = '\0';
+        for (i = 0; keys[i] != NULL && used < sizeof known; i++) {
+            int w = snprintf(known + used, sizeof known - used, "%s%s", i ? ", " : "", keys[i]);
+            used += w > 0 ? (size_t)w : 0;
+        }
+        snprintf(label, sizeof label, "%s%s%s", prefix ? prefix : "", prefix ? "." : "", name);
+        return rl_yaml_fail(y, k, label, RL_EFORMAT, err, errlen, "unknown key (expected %s)", known);
+    }
+    return RL_OK;
+}
+
 int rl_yaml_parse_double(const char *s, double *out)
 {
     char *end;
@@ -309,4 +336,24 @@ rl_err rl_yaml_string(rl_yaml *y, yaml_node_t *map, const char *key, const char 
                             "expected a text value, got a list or mapping");
     *out = rl_yaml_text(n);
     return RL_OK;
+}
+
+rl_err rl_yaml_bool(rl_yaml *y, yaml_node_t *map, const char *key, const char *label, int required,
+                    int *out, char *err, size_t errlen)
+{
+    static const char *const yes[] = {"true", "True", "TRUE", "yes", "Yes", "on", NULL};
+    static const char *const no[] = {"false", "False", "FALSE", "no", "No", "off", NULL};
+    const char *s = NULL;
+    int i;
+    rl_err e = rl_yaml_string(y, map, key, label, required, &s, err, errlen);
+    if (e != RL_OK || s == NULL)
+        return e;
+    for (i = 0; yes[i] != NULL; i++)
+        if (strcmp(s, yes[i]) == 0)
+            return *out = 1, RL_OK;
+    for (i = 0; no[i] != NULL; i++)
+        if (strcmp(s, no[i]) == 0)
+            return *out = 0, RL_OK;
+    return rl_yaml_fail(y, rl_yaml_get(y, map, key), label ? label : key, RL_EFORMAT, err, errlen,
+                        "expected true or false, got '%s'", s);
 }

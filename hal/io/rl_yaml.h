@@ -70,6 +70,17 @@ RL_CHECK rl_err rl_yaml_string(rl_yaml *y, yaml_node_t *map, const char *key,
                                const char *label, int required, const char **out, char *err,
                                size_t errlen);
 
+/* true/false (also yes/no, on/off) into *out as 1/0. */
+RL_CHECK rl_err rl_yaml_bool(rl_yaml *y, yaml_node_t *map, const char *key, const char *label,
+                             int required, int *out, char *err, size_t errlen);
+
+/* Every key of mapping `map` is one of `keys` (NULL-terminated), so a
+ * misspelt key is an error, not a default: RL_EFORMAT naming the first
+ * other key ("prefix.key", prefix may be NULL) and the known ones. A
+ * node that is not a mapping is left to the typed lookups (RL_OK). */
+RL_CHECK rl_err rl_yaml_only(rl_yaml *y, yaml_node_t *map, const char *prefix,
+                             const char *const *keys, char *err, size_t errlen);
+
 /* Parse a scalar as a number; 1 on success. */
 int rl_yaml_parse_double(const char *s, double *out);
 
