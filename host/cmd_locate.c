@@ -20,7 +20,8 @@ static const char *locate_help =
     "Recognize landmarks and compute the robot's pose (REP-103, map frame) for\n"
     "each image. Prints the detect JSON line with one more field:\n"
     "  \"pose\": {\"x\": 1.2034, \"y\": 0.5021, \"yaw\": 0.0312, \"landmarks_used\": 4,\n"
-    "           \"residual\": 0.0021, \"dropped\": []}\n"
+    "           \"residual\": 0.0021, \"sigma\": {\"x\": 0.0011, \"y\": 0.0009, \"yaw\": 0.0004},\n"
+    "           \"tilt\": {\"roll\": 0.0012, \"pitch\": -0.0051, \"solved\": true}, \"dropped\": []}\n"
     "in metres and radians, or \"pose\": null with \"pose_error\" saying why.\n\n"
     "  --camera FILE    ROS camera_info or OpenCV calibration YAML\n"
     "  --map FILE       landmark map YAML (family, diameter, ceiling_height, landmarks)\n"
@@ -116,8 +117,10 @@ int rl_cmd_locate(int argc, char **argv)
         rl_report_json_open(stdout, argv[i], &res, &cfg.family, us);
         if (e == RL_OK) {
             printf(", \"pose\": {\"x\": %.4f, \"y\": %.4f, \"yaw\": %.4f, \"landmarks_used\": %d, "
-                   "\"residual\": %.4f, \"dropped\": [",
-                   pose.x, pose.y, pose.yaw, pose.used, pose.residual);
+                   "\"residual\": %.4f, \"sigma\": {\"x\": %.4f, \"y\": %.4f, \"yaw\": %.5f}, "
+                   "\"tilt\": {\"roll\": %.5f, \"pitch\": %.5f, \"solved\": %s}, \"dropped\": [",
+                   pose.x, pose.y, pose.yaw, pose.used, pose.residual, pose.sigma_x, pose.sigma_y,
+                   pose.sigma_yaw, pose.roll, pose.pitch, pose.tilt_solved ? "true" : "false");
             for (k = 0; k < pose.n_dropped; k++)
                 printf("%s%d", k ? ", " : "", pose.dropped[k]);
             printf("]}}\n");

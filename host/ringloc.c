@@ -20,6 +20,7 @@ static const command commands[] = {
     {"detect", rl_cmd_detect, "recognize landmarks in PNG images (JSON lines)"},
     {"locate", rl_cmd_locate, "the robot's pose from PNG images (JSON lines)"},
     {"calibrate-offsets", rl_cmd_calibrate, "fit the paper's pixel-to-offset maps from a known pose"},
+    {"calibrate-mount", rl_cmd_mount, "the camera's fixed tilt on the robot, from recorded frames"},
 };
 
 static void usage(FILE *out)

@@ -14,6 +14,7 @@ int rl_cmd_plan(int argc, char **argv);
 int rl_cmd_detect(int argc, char **argv);
 int rl_cmd_locate(int argc, char **argv);
 int rl_cmd_calibrate(int argc, char **argv);
+int rl_cmd_mount(int argc, char **argv);
 int rl_cmd_run(int argc, char **argv);
 int rl_cmd_monitor(int argc, char **argv);
 int rl_cmd_sitecheck(int argc, char **argv);

@@ -167,6 +167,10 @@ for v in nan .inf abc 1e309 "[0]" ""; do
         key robot "$robot" "$k" "s/\\b$k: [-0-9.]*/$k: $v/"
     done
 done
+for v in nan 1 -0.6 abc "[0]"; do
+    key robot "$robot" roll "s/yaw: \([-0-9.]*\)}/yaw: \1, roll: $v}/"
+    key robot "$robot" pitch "s/yaw: \([-0-9.]*\)}/yaw: \1, pitch: $v}/"
+done
 key robot "$robot" "z negative" "s/z: 0.8800/z: -0.88/"
 key robot "$robot" "z above the ceiling" "s/z: 0.8800/z: 3/"
 key robot "$robot" "no mount" "s/camera_mount/camera_mnt/"

@@ -71,7 +71,7 @@ static void test_no_pose_from_impossible_detections(void **state)
 {
     rl_camera c = camera();
     rl_map m = map2(0.61);
-    rl_mount mount = {0, 0, 0.88, 0};
+    rl_mount mount = {0, 0, 0.88, 0, 0, 0};
     rl_detection d[2];
     rl_pose p;
     static const double far[3] = {1e308, -1e308, 1e200};

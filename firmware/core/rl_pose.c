@@ -2,10 +2,11 @@
 
 #include <math.h>
 #include <string.h>
+#include "rl_pose_fit.h"
 
 void rl_mount_defaults(rl_mount *m, double z)
 {
-    m->x = m->y = m->yaw = 0.0;
+    m->x = m->y = m->yaw = m->roll = m->pitch = 0.0;
     m->z = z;
 }
 
@@ -59,15 +60,9 @@ void rl_pose_ceiling_point(const rl_camera *cam, const rl_offsets *offsets, doub
     }
 }
 
-typedef struct {
-    int id;
-    double px, py; /* observed, camera horizontal frame */
-    double mx, my; /* map */
-} pair_pt;
-
 /* Least-squares rotation and translation taking p onto m (2-D Procrustes
  * without scale): the rotation angle has a closed form. */
-static void rigid_fit(const pair_pt *pt, int n, double *tx, double *ty, double *yaw)
+static void rigid_fit(const rl_pose_pt *pt, int n, double *tx, double *ty, double *yaw)
 {
     double pcx = 0, pcy = 0, mcx = 0, mcy = 0, sc = 0, ss = 0, c, s;
     int i;
@@ -93,40 +88,86 @@ static void rigid_fit(const pair_pt *pt, int n, double *tx, double *ty, double *
     *ty = mcy - (s * pcx + c * pcy);
 }
 
-rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mount,
-                     const rl_detection *lm, int n, const rl_offsets *offsets, rl_pose *out)
+/* The ideal (undistorted) image of a landmark's centre from the centre of
+ * its outer edge. Through a distorting lens a circle's edge is centred
+ * off the image of its centre, by (R^2 / 4) times the lens map's
+ * Laplacian (R: the radius in normalized units; the mean of D(c + R u)
+ * over the circle): taken off before undistorting. */
+static void centre_ray(const rl_camera *cam, double u, double v, double radius, double *x, double *y)
 {
-    pair_pt pt[RL_MAX_LANDMARKS];
-    int i, j, m = 0;
-    double Z, tx, ty, yaw, c, s, sum2 = 0;
-    if (cam == NULL || map == NULL || mount == NULL || out == NULL || (n > 0 && lm == NULL) ||
-        n < 0 || rl_camera_check(cam) != RL_OK)
-        return RL_EINVAL;
-    memset(out, 0, sizeof *out);
-    Z = map->ceiling_height - mount->z;
-    if (!(Z > 0))
-        return RL_ERANGE;
-    for (i = 0; i < n && m < RL_MAX_LANDMARKS; i++) {
-        int k = rl_map_find(map, lm[i].id);
-        if (!(fabs(lm[i].u - 0.5 * cam->width) <= 1.5 * cam->width) ||
-            !(fabs(lm[i].v - 0.5 * cam->height) <= 1.5 * cam->height)) {
-            /* no camera of this size sees a landmark there */
-            out->dropped[out->n_dropped++] = lm[i].id;
-            continue;
-        }
-        if (k < 0) {
-            out->n_unknown++;
-            continue;
-        }
-        pt[m].id = lm[i].id;
-        rl_pose_ceiling_point(cam, offsets, Z, lm[i].u, lm[i].v, &pt[m].px, &pt[m].py);
-        pt[m].mx = map->lm[k].x;
-        pt[m].my = map->lm[k].y;
-        m++;
+    double xd = (u - cam->cx) / cam->fx, yd = (v - cam->cy) / cam->fy, x0, y0, h = 0.01, k;
+    double d[5][2];
+    static const double at[5][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    int i;
+    rl_camera_undistort(cam, xd, yd, &x0, &y0);
+    if (cam->model == RL_DIST_NONE) {
+        *x = x0;
+        *y = y0;
+        return;
     }
-    /* Consistency: distances between observed points must match the map's
-     * (a rigid motion keeps them). Drop the landmark that disagrees with
-     * most others until all agree; two that disagree cannot be told apart. */
+    for (i = 0; i < 5; i++)
+        rl_camera_distort(cam, x0 + h * at[i][0], y0 + h * at[i][1], &d[i][0], &d[i][1]);
+    k = radius * radius / 4.0 / (h * h);
+    xd -= k * (d[1][0] + d[2][0] + d[3][0] + d[4][0] - 4 * d[0][0]);
+    yd -= k * (d[1][1] + d[2][1] + d[3][1] + d[4][1] - 4 * d[0][1]);
+    rl_camera_undistort(cam, xd, yd, x, y);
+}
+
+/* The mount's rotation (its tilt about the robot's axes, then the
+ * camera's yaw), the ceiling and the centre noise. */
+static void make_model(const rl_camera *cam, const rl_map *map, const rl_mount *mount, rl_pose_model *md)
+{
+    double T[9], Y[9];
+    rl_pose_fit_rotation(0, mount->pitch, mount->roll, T);
+    rl_pose_fit_rotation(mount->yaw, 0, 0, Y);
+    rl_pose_fit_mul(T, Y, md->Rm);
+    md->mount = mount;
+    md->height = map->ceiling_height;
+    md->sn = RL_POSE_PIXEL_SIGMA / sqrt(cam->fx * cam->fy);
+    md->prior = RL_POSE_TILT_PRIOR;
+}
+
+/* One detection as a point: its ray and, for a level robot, where that
+ * meets the ceiling in the robot frame (the offset map's point with
+ * offsets). 0 if the ray misses the ceiling. */
+static int observe(const rl_camera *cam, const rl_map *map, const rl_pose_model *md, const rl_offsets *offsets,
+                   const rl_detection *d, double Z, rl_pose_pt *p)
+{
+    const rl_mount *mount = md->mount;
+    if (offsets != NULL) {
+        /* the offset map is in the camera's horizontal frame */
+        double f, l;
+        rl_pose_ceiling_point(cam, offsets, Z, d->u, d->v, &f, &l);
+        p->px = mount->x + cos(mount->yaw) * f - sin(mount->yaw) * l;
+        p->py = mount->y + sin(mount->yaw) * f + cos(mount->yaw) * l;
+        p->xn = p->yn = 0;
+    } else {
+        /* the ray, tilted by the mount, meets the ceiling of a level robot */
+        const double *R = md->Rm;
+        double bf, bl, bu;
+        centre_ray(cam, d->u, d->v, 0.5 * map->diameter / Z, &p->xn, &p->yn);
+        bf = R[0] * -p->yn + R[1] * p->xn + R[2];
+        bl = R[3] * -p->yn + R[4] * p->xn + R[5];
+        bu = R[6] * -p->yn + R[7] * p->xn + R[8];
+        if (!(bu > 1e-6))
+            return 0;
+        p->px = mount->x + Z / bu * bf;
+        p->py = mount->y + Z / bu * bl;
+    }
+    p->id = d->id;
+    /* a centre from an arc the border left is less sure */
+    p->noise = d->complete ? 1.0 : 4.0;
+    p->w = 1.0;
+    return 1;
+}
+
+/* Consistency: distances between observed points must match the map's
+ * (a rigid motion keeps them). Drop the landmark that disagrees with most
+ * others until all agree; two that disagree cannot be told apart. Returns
+ * how many are left. */
+static int drop_inconsistent(rl_pose_pt *pt, int m, rl_pose *out)
+{
+    int i, j;
     for (;;) {
         int worst = -1, worst_bad = 0;
         for (i = 0; i < m; i++) {
@@ -137,7 +178,7 @@ rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mo
                     continue;
                 dp = hypot(pt[i].px - pt[j].px, pt[i].py - pt[j].py);
                 dm = hypot(pt[i].mx - pt[j].mx, pt[i].my - pt[j].my);
-                bad += fabs(dp - dm) > RL_POSE_PAIR_TOLERANCE + 0.02 * dm;
+                bad += fabs(dp - dm) > RL_POSE_PAIR_TOLERANCE + 0.04 * dm;
             }
             if (bad > worst_bad) {
                 worst_bad = bad;
@@ -145,42 +186,149 @@ rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mo
             }
         }
         if (worst < 0)
-            break;
+            return m;
         if (m <= 2) {
-            /* two landmarks that disagree: neither can be trusted */
             for (i = 0; i < m; i++)
                 out->dropped[out->n_dropped++] = pt[i].id;
-            m = 0;
-            break;
+            return 0;
         }
         out->dropped[out->n_dropped++] = pt[worst].id;
         pt[worst] = pt[--m];
     }
-    out->used = m;
-    if (m < 2)
-        return RL_ETOOFEW;
-    rigid_fit(pt, m, &tx, &ty, &yaw);
-    c = cos(yaw);
-    s = sin(yaw);
-    for (i = 0; i < m; i++) {
-        double fx = tx + c * pt[i].px - s * pt[i].py, fy = ty + s * pt[i].px + c * pt[i].py;
-        sum2 += (fx - pt[i].mx) * (fx - pt[i].mx) + (fy - pt[i].my) * (fy - pt[i].my);
+}
+
+/* The pinhole fits from the level start q: with three or more landmarks
+ * the tilted one, taken when it explains what the level one cannot (its
+ * two parameters lower the misfit, in units of its own residuals, by more
+ * than RL_POSE_TILT_EVIDENCE). q, cov, chi2 of the one taken. */
+static int fit_pinhole(rl_pose_model *md, rl_pose_pt *pt, int m, double *q, double *cov, double *chi2,
+                       rl_pose *out)
+{
+    double qt[RL_POSE_NQ], covt[RL_POSE_NQ * RL_POSE_NQ], chi2t = 0;
+    int solved = 0, i;
+    memcpy(qt, q, sizeof qt);
+    if (m >= 3) {
+        md->prior = RL_POSE_TILT_WEAK;
+        solved = rl_pose_fit_solve(md, pt, m, RL_POSE_NQ, qt, covt, &chi2t);
+        if (solved) {
+            out->fit_roll = qt[3];
+            out->fit_pitch = qt[4];
+            out->fit_sigma_roll = sqrt(covt[3 * RL_POSE_NQ + 3]);
+            out->fit_sigma_pitch = sqrt(covt[4 * RL_POSE_NQ + 4]);
+            out->fit_valid = 1;
+        }
     }
-    out->residual = sqrt(sum2 / m);
-    out->cam_x = tx;
-    out->cam_y = ty;
-    out->cam_yaw = yaw;
-    /* robot base from the camera: yaw_cam = yaw_robot + mount yaw, and the
-     * camera sits at the mount offset rotated by the robot's yaw */
-    out->yaw = atan2(sin(yaw - mount->yaw), cos(yaw - mount->yaw));
-    c = cos(out->yaw);
-    s = sin(out->yaw);
-    out->x = tx - (c * mount->x - s * mount->y);
-    out->y = ty - (s * mount->x + c * mount->y);
+    /* the paper's model: a level robot (the mount's tilt applied); with
+     * two landmarks its rocking is in the uncertainty, with more the
+     * landmarks showed it level */
+    md->prior = solved ? RL_POSE_TILT_LEVEL : RL_POSE_TILT_PRIOR;
+    for (i = 0; i < m; i++)
+        pt[i].w = 1;
+    if (!rl_pose_fit_solve(md, pt, m, 3, q, cov, chi2)) {
+        if (!solved)
+            return 0;
+        *chi2 = 1e300;
+    }
+    if (solved) {
+        double unit = fmax(1.0, chi2t / fmax(1.0, 2.0 * m - RL_POSE_NQ));
+        solved = (*chi2 - chi2t) / unit > RL_POSE_TILT_EVIDENCE;
+    }
+    if (solved) {
+        memcpy(q, qt, sizeof qt);
+        memcpy(cov, covt, sizeof covt);
+        *chi2 = chi2t;
+    }
+    out->tilt_solved = solved;
+    return 1;
+}
+
+/* The pose, the camera and the uncertainty from q into out; RL_ERANGE
+ * unless every number is finite and the pose within the map's limits. */
+static rl_err finish(const rl_pose_model *md, const double *q, int offsets, rl_pose *out)
+{
+    double Rc[9], C[3];
+    const rl_mount *mount = md->mount;
+    out->x = q[0];
+    out->y = q[1];
+    out->yaw = atan2(sin(q[2]), cos(q[2]));
+    rl_pose_fit_camera(md, q, Rc, C);
+    if (offsets) {
+        C[0] = q[0] + cos(q[2]) * mount->x - sin(q[2]) * mount->y;
+        C[1] = q[1] + sin(q[2]) * mount->x + cos(q[2]) * mount->y;
+    }
+    out->cam_x = C[0];
+    out->cam_y = C[1];
+    out->cam_yaw = atan2(Rc[3], Rc[0]);
+    out->roll = atan2(Rc[7], Rc[8]);
+    out->pitch = -asin(fmax(-1.0, fmin(1.0, Rc[6])));
     /* what leaves for JSON or the wire is a number, or there is no pose */
     if (!isfinite(out->x) || !isfinite(out->y) || !isfinite(out->yaw) || !isfinite(out->residual) ||
         !isfinite(out->cam_x) || !isfinite(out->cam_y) || !isfinite(out->cam_yaw) ||
+        !isfinite(out->sigma_x) || !isfinite(out->sigma_y) || !isfinite(out->sigma_yaw) ||
+        !isfinite(out->roll) || !isfinite(out->pitch) ||
         !(fabs(out->x) <= 2 * RL_MAP_MAX_COORD) || !(fabs(out->y) <= 2 * RL_MAP_MAX_COORD))
         return RL_ERANGE;
     return RL_OK;
+}
+
+rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mount,
+                     const rl_detection *lm, int n, const rl_offsets *offsets, rl_pose *out)
+{
+    rl_pose_pt pt[RL_MAX_LANDMARKS];
+    int i, m = 0;
+    double Z, c, s, sum2 = 0, q[RL_POSE_NQ], cov[RL_POSE_NQ * RL_POSE_NQ], chi2 = 0;
+    rl_pose_model md;
+    if (cam == NULL || map == NULL || mount == NULL || out == NULL || (n > 0 && lm == NULL) ||
+        n < 0 || rl_camera_check(cam) != RL_OK)
+        return RL_EINVAL;
+    memset(out, 0, sizeof *out);
+    Z = map->ceiling_height - mount->z;
+    if (!(Z > 0) || !(fabs(mount->roll) < 0.5) || !(fabs(mount->pitch) < 0.5))
+        return RL_ERANGE;
+    make_model(cam, map, mount, &md);
+    for (i = 0; i < n && m < RL_MAX_LANDMARKS; i++) {
+        int k = rl_map_find(map, lm[i].id);
+        if (!(fabs(lm[i].u - 0.5 * cam->width) <= 1.5 * cam->width) ||
+            !(fabs(lm[i].v - 0.5 * cam->height) <= 1.5 * cam->height)) {
+            /* no camera of this size sees a landmark there */
+            out->dropped[out->n_dropped++] = lm[i].id;
+        } else if (k < 0) {
+            out->n_unknown++;
+        } else if (!observe(cam, map, &md, offsets, &lm[i], Z, &pt[m])) {
+            out->dropped[out->n_dropped++] = lm[i].id;
+        } else {
+            pt[m].mx = map->lm[k].x;
+            pt[m].my = map->lm[k].y;
+            m++;
+        }
+    }
+    out->used = m = drop_inconsistent(pt, m, out);
+    if (m < 2)
+        return RL_ETOOFEW;
+    /* the level robot's pose: a rigid fit in the floor plane */
+    rigid_fit(pt, m, &q[0], &q[1], &q[2]);
+    q[3] = q[4] = 0;
+    c = cos(q[2]);
+    s = sin(q[2]);
+    for (i = 0; i < m; i++) {
+        double fx = q[0] + c * pt[i].px - s * pt[i].py, fy = q[1] + s * pt[i].px + c * pt[i].py;
+        sum2 += (fx - pt[i].mx) * (fx - pt[i].mx) + (fy - pt[i].my) * (fy - pt[i].my);
+    }
+    out->residual = sqrt(sum2 / m);
+    if (offsets != NULL) {
+        /* no camera model to fit against: the spread of the fit */
+        double spread = 0, noise = fmax(out->residual, 0.001);
+        for (i = 0; i < m; i++)
+            spread += (pt[i].px * pt[i].px + pt[i].py * pt[i].py);
+        out->sigma_x = out->sigma_y = noise / sqrt((double)m);
+        out->sigma_yaw = noise / sqrt(fmax(spread, 1e-6));
+    } else {
+        if (!fit_pinhole(&md, pt, m, q, cov, &chi2, out))
+            return RL_ERANGE;
+        out->sigma_x = sqrt(cov[0]);
+        out->sigma_y = sqrt(cov[RL_POSE_NQ + 1]);
+        out->sigma_yaw = sqrt(cov[2 * RL_POSE_NQ + 2]);
+        out->residual = sqrt(chi2 / m) * md.sn * Z;
+    }
+    return finish(&md, q, offsets != NULL, out);
 }

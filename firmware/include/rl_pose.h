@@ -7,7 +7,15 @@
  * (-yn Z, xn Z) in the camera's horizontal frame. A least-squares rigid
  * fit of those points to the map positions (the paper's two-landmark
  * method is its two-point case) gives the camera's position and heading,
- * and the mounting offset the robot's. Before fitting, pairwise distances
+ * and the mounting offset the robot's; the mount's own tilt is applied to
+ * every ray first. With three or more landmarks (pinhole model) the
+ * robot's tilt is solved too: a Gauss-Newton fit of the robot's pose and
+ * roll and pitch to the landmarks' image positions, the ceiling a plane at
+ * the map's height (a weak prior keeps the tilt of a poor geometry
+ * small). Every pose carries standard deviations from the fit's geometry
+ * and its residuals, pooled with the expected centre noise
+ * (RL_POSE_PIXEL_SIGMA); with two landmarks the robot's unknown rocking
+ * (RL_POSE_TILT_PRIOR) is in them too. Before fitting, pairwise distances
  * are checked against the map and landmarks that disagree (a wrong id, a
  * landmark moved since the map was made) are dropped and reported.
  *
@@ -31,9 +39,13 @@
 #include "rl_recog.h"
 
 /* The camera's optical centre in the robot frame (REP-103): x forward,
- * y left, z above the floor, yaw of the image's top edge from robot +x. */
+ * y left, z above the floor, yaw of the image's top edge from robot +x;
+ * roll (about the robot's x) and pitch (about its y) of the mount's tilt
+ * from vertical, radians. The camera's rotation in the robot frame is
+ * Ry(pitch) Rx(roll) Rz(yaw) of its axes (image top, image left, up). */
 typedef struct {
     double x, y, z, yaw;
+    double roll, pitch;
 } rl_mount;
 
 /* The paper's alternative to the pinhole model: the physical offset of a
@@ -50,6 +62,13 @@ typedef struct {
 
 typedef struct {
     double x, y, yaw;            /* robot base pose in the map frame, m and rad */
+    double sigma_x, sigma_y, sigma_yaw; /* their standard deviations, m and rad */
+    double roll, pitch;          /* the camera's tilt from vertical (its own x, y axes), rad */
+    int tilt_solved;             /* 1: attitude solved from the landmarks (3 or more);
+                                    0: the robot taken as level (the mount's tilt applied) */
+    int fit_valid;               /* three or more landmarks: the tilted fit, taken or not: */
+    double fit_roll, fit_pitch;  /* the robot's tilt it found (about its x and y), rad */
+    double fit_sigma_roll, fit_sigma_pitch;
     double cam_x, cam_y, cam_yaw;/* camera optical centre and heading */
     int used;                    /* landmarks in the fit */
     double residual;             /* RMS distance between map and fitted positions, m */
@@ -59,8 +78,20 @@ typedef struct {
 } rl_pose;
 
 /* Pairwise-distance tolerance: two landmarks agree when their distance
- * apart differs from the map's by at most this much plus 2% of it. */
-#define RL_POSE_PAIR_TOLERANCE 0.03
+ * apart differs from the map's by at most this much plus 4% of it (a
+ * tilted camera stretches the level model by up to 3%). */
+#define RL_POSE_PAIR_TOLERANCE 0.05
+
+/* Expected noise of a landmark centre, pixels; the rocking of a robot
+ * whose tilt is not solved (two landmarks), radians; the prior that keeps
+ * a solved tilt within reason, radians. */
+#define RL_POSE_PIXEL_SIGMA 0.15
+#define RL_POSE_TILT_PRIOR 0.005
+#define RL_POSE_TILT_WEAK 0.1
+#define RL_POSE_TILT_LEVEL 0.00002 /* left over when three or more show no tilt */
+/* How much better (chi-square, in units of the residual variance) the
+ * tilted fit must explain the centres than the level one to be taken. */
+#define RL_POSE_TILT_EVIDENCE 16.0
 
 /* Fill the mount of the spec's default mounting at height z. */
 void rl_mount_defaults(rl_mount *m, double z);

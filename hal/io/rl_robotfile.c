@@ -6,7 +6,7 @@
 #include "rl_yaml.h"
 
 static const char *const top_keys[] = {"camera_mount", NULL};
-static const char *const mount_keys[] = {"x", "y", "z", "yaw", NULL};
+static const char *const mount_keys[] = {"x", "y", "z", "yaw", "roll", "pitch", NULL};
 
 rl_err rl_robotfile_load(const char *path, rl_mount *m, char *err, size_t errlen)
 {
@@ -20,7 +20,7 @@ rl_err rl_robotfile_load(const char *path, rl_mount *m, char *err, size_t errlen
     cm = rl_yaml_get(&y, root, "camera_mount");
     if (cm == NULL || cm->type != YAML_MAPPING_NODE) {
         e = rl_yaml_fail(&y, cm ? cm : root, "camera_mount", RL_EFORMAT, err, errlen,
-                         cm ? "expected {x, y, z, yaw}" : "missing key");
+                         cm ? "expected {x, y, z, yaw, roll, pitch}" : "missing key");
         goto out;
     }
     if ((e = rl_yaml_only(&y, root, NULL, top_keys, err, errlen)) != RL_OK ||
@@ -28,7 +28,9 @@ rl_err rl_robotfile_load(const char *path, rl_mount *m, char *err, size_t errlen
         (e = rl_yaml_double_in(&y, cm, "x", "camera_mount.x", 0, -100, 100, &m->x, err, errlen)) != RL_OK ||
         (e = rl_yaml_double_in(&y, cm, "y", "camera_mount.y", 0, -100, 100, &m->y, err, errlen)) != RL_OK ||
         (e = rl_yaml_double_in(&y, cm, "z", "camera_mount.z", 1, 0, 20, &m->z, err, errlen)) != RL_OK ||
-        (e = rl_yaml_double_in(&y, cm, "yaw", "camera_mount.yaw", 0, -7, 7, &m->yaw, err, errlen)) != RL_OK)
+        (e = rl_yaml_double_in(&y, cm, "yaw", "camera_mount.yaw", 0, -7, 7, &m->yaw, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double_in(&y, cm, "roll", "camera_mount.roll", 0, -0.5, 0.5, &m->roll, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double_in(&y, cm, "pitch", "camera_mount.pitch", 0, -0.5, 0.5, &m->pitch, err, errlen)) != RL_OK)
         goto out;
 out:
     rl_yaml_free(&y);
@@ -43,7 +45,11 @@ rl_err rl_robotfile_save(const char *path, const rl_mount *m, char *err, size_t 
         return RL_EIO;
     }
     fprintf(f, "# camera optical centre in the robot frame (REP-103), z above the floor\n");
-    fprintf(f, "camera_mount: {x: %.4f, y: %.4f, z: %.4f, yaw: %.6f}\n", m->x, m->y, m->z, m->yaw);
+    if (m->roll != 0 || m->pitch != 0)
+        fprintf(f, "camera_mount: {x: %.4f, y: %.4f, z: %.4f, yaw: %.6f, roll: %.6f, pitch: %.6f}\n", m->x, m->y,
+                m->z, m->yaw, m->roll, m->pitch);
+    else
+        fprintf(f, "camera_mount: {x: %.4f, y: %.4f, z: %.4f, yaw: %.6f}\n", m->x, m->y, m->z, m->yaw);
     if (ferror(f) | (fclose(f) != 0)) {
         snprintf(err, errlen, "%s: write failed", path);
         return RL_EIO;

@@ -1,9 +1,11 @@
 /* rl_robotfile: robot YAML -> rl_mount.
  *
- *   camera_mount: {x: 0.0, y: 0.0, z: 0.880, yaw: 0.0}
+ *   camera_mount: {x: 0.0, y: 0.0, z: 0.880, yaw: 0.0, roll: 0.0, pitch: 0.0}
  *
  * The camera's optical centre in the robot frame; z above the floor. x, y
- * and yaw default to 0 (the spec's mounting); z is required.
+ * and yaw default to 0 (the spec's mounting); z is required. roll (about
+ * the robot's x) and pitch (about its y), radians, are the mount's tilt
+ * from vertical (`ringloc calibrate-mount` measures them; default 0).
  *
  *   rl_mount mount;
  *   char err[256];

@@ -46,6 +46,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     mount.y = take(&data, &size);
     mount.z = take(&data, &size);
     mount.yaw = take(&data, &size);
+    mount.roll = take(&data, &size) * 1e-3; /* mostly within the 0.5 rad a mount may have */
+    mount.pitch = take(&data, &size) * 1e-3;
     memset(&map, 0, sizeof map);
     map.family.bits = 5;
     map.diameter = 0.21;

@@ -54,6 +54,9 @@ typedef struct {
     double cam_z;          /* camera above floor, m */
     double tile, tile_px, tile_py; /* tile pitch and phase */
     double cx, cy, yaw;    /* camera optical centre and heading (image top) in the map */
+    double cz;             /* camera optical centre above the floor (the mount's z, rocked) */
+    double R[9];           /* camera (forward, left, up) to map, row-major */
+    double roll, pitch;    /* the camera's tilt from vertical (its own x and y axes) */
     double motion, motion_dir; /* motion blur: camera travel during exposure, m */
     double halo_amp, halo_sigma;
     double gain, vignette, blur, noise;
@@ -224,17 +227,41 @@ static double radiance(const scene *s, double X, double Y)
  * (+v), z up; image top is the robot's forward (+x_r), +u its left (+y_r). */
 static void map_to_pixel(const scene *s, double X, double Y, double *u, double *v)
 {
-    double c = cos(s->yaw), sn = sin(s->yaw), dx = X - s->cx, dy = Y - s->cy;
-    double xr = c * dx + sn * dy, yr = -sn * dx + c * dy;
-    rl_camera_project(&s->cam, yr / s->distance, -xr / s->distance, u, v);
+    const double *R = s->R;
+    double dx = X - s->cx, dy = Y - s->cy, dz = s->ceiling_height - s->cz;
+    double f = R[0] * dx + R[3] * dy + R[6] * dz, l = R[1] * dx + R[4] * dy + R[7] * dz,
+           up = R[2] * dx + R[5] * dy + R[8] * dz;
+    rl_camera_project(&s->cam, l / up, -f / up, u, v);
 }
 
 static void ray_to_map(const scene *s, double xn, double yn, double ox, double oy, double *X,
                        double *Y)
 {
-    double xr = -yn * s->distance, yr = xn * s->distance, c = cos(s->yaw), sn = sin(s->yaw);
-    *X = s->cx + ox + c * xr - sn * yr;
-    *Y = s->cy + oy + sn * xr + c * yr;
+    const double *R = s->R;
+    double f = -yn, l = xn;
+    double dx = R[0] * f + R[1] * l + R[2], dy = R[3] * f + R[4] * l + R[5], dz = R[6] * f + R[7] * l + R[8];
+    double t = (s->ceiling_height - s->cz) / dz;
+    *X = s->cx + ox + t * dx;
+    *Y = s->cy + oy + t * dy;
+}
+
+/* a = b c, 3 x 3 row-major */
+static void mat_mul(const double *b, const double *c, double *a)
+{
+    int i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            a[3 * i + j] = b[3 * i] * c[j] + b[3 * i + 1] * c[3 + j] + b[3 * i + 2] * c[6 + j];
+}
+
+/* Rz(yaw) Ry(pitch) Rx(roll) */
+static void rotation(double yaw, double pitch, double roll, double *R)
+{
+    double cz = cos(yaw), sz = sin(yaw), cy = cos(pitch), sy = sin(pitch), cx = cos(roll), sx = sin(roll);
+    double Rz[9] = {cz, -sz, 0, sz, cz, 0, 0, 0, 1}, Ry[9] = {cy, 0, sy, 0, 1, 0, -sy, 0, cy},
+           Rx[9] = {1, 0, 0, 0, cx, -sx, 0, sx, cx}, t[9];
+    mat_mul(Rz, Ry, t);
+    mat_mul(t, Rx, R);
 }
 
 /* Undistorted rays of every subsample, cached per camera. */
@@ -603,6 +630,7 @@ static int write_truth(const char *path, const char *image, const scene *s, doub
             s->cam.width, s->cam.height, s->fam.bits, s->diameter);
     fprintf(f, "distance: %.4f\ncamera: {x: %.6f, y: %.6f, yaw: %.6f}\n", s->distance, s->cx, s->cy, s->yaw);
     fprintf(f, "robot: {x: %.6f, y: %.6f, yaw: %.6f}\n", rx, ry, ryaw);
+    fprintf(f, "camera_tilt: {roll: %.6f, pitch: %.6f, z: %.6f}\n", s->roll, s->pitch, s->cz);
     fprintf(f, "twin: %s\nlandmarks:\n", s->twin ? "apriltag36h11" : "none");
     for (i = 0; i < s->n; i++) {
         const object *o = &s->obj[i];
@@ -634,7 +662,7 @@ static const char *help =
     "usage: ringloc-render --out DIR (--set NAME --count N | --path KIND --frames N)\n"
     "                      [--seed S] [--size 640x480] [--camera CAM.yaml] [--twin]\n"
     "                      [--mount X,Y,YAW] [--write-map FILE] [--write-camera FILE]\n"
-    "                      [--write-robot FILE]\n\n"
+    "                      [--write-robot FILE] [--rock SIGMA]\n\n"
     "Render ceiling fixtures with ground truth (NAME_NNN.png + NAME_NNN.yaml).\n"
     "  --set NAME      clean, cluttered, glare, border, clutter_only, dim, blur, motion,\n"
     "                  illum (vignetting, fall-off, a shadow, grey ink), degraded (blur\n"
@@ -649,7 +677,10 @@ static const char *help =
     "                  at the same places (NAME_NNN_tag.png)\n"
     "  --camera FILE   calibration to render with (default: 640x480, 70 deg, mild\n"
     "                  barrel distortion; --size scales it)\n"
-    "  --mount X,Y,YAW camera offset in the robot frame (default 0,0,0)\n";
+    "  --mount X,Y,YAW[,ROLL,PITCH]  camera offset in the robot frame, and its\n"
+    "                  tilt (radians, roll about the robot's x, pitch about its y;\n"
+    "                  default 0,0,0,0,0)\n"
+    "  --rock SIGMA    the robot rocks: a random tilt per frame and axis (radians)\n";
 
 /* mkdir -p */
 static int mkdir_p(const char *dir)
@@ -718,13 +749,13 @@ int main(int argc, char **argv)
         {"size", required_argument, 0, 'z'}, {"camera", required_argument, 0, 'c'},
         {"twin", no_argument, 0, 't'}, {"mount", required_argument, 0, 'm'},
         {"write-map", required_argument, 0, 'M'}, {"write-camera", required_argument, 0, 'C'},
-        {"write-robot", required_argument, 0, 'R'},
+        {"write-robot", required_argument, 0, 'R'}, {"rock", required_argument, 0, 'r'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     const char *out = NULL, *set = NULL, *path = NULL, *cam_path = NULL, *map_out = NULL,
                *cam_out = NULL, *robot_out = NULL;
     int count = 10, w = 640, h = 480, twin = 0, c, k, i;
     unsigned long seed = 1;
-    double mx = 0, my = 0, myaw = 0;
+    double mx = 0, my = 0, myaw = 0, mroll = 0, mpitch = 0, rock = 0;
     static scene s;
     rl_camera cam;
     set_kind kind = SET_CLEAN;
@@ -747,8 +778,15 @@ int main(int argc, char **argv)
         case 'c': cam_path = optarg; break;
         case 't': twin = 1; break;
         case 'm':
-            if (sscanf(optarg, "%lf,%lf,%lf", &mx, &my, &myaw) != 3) {
-                fprintf(stderr, "ringloc-render: --mount: '%s' is not X,Y,YAW\n", optarg);
+            k = sscanf(optarg, "%lf,%lf,%lf,%lf,%lf", &mx, &my, &myaw, &mroll, &mpitch);
+            if (k != 3 && k != 5) {
+                fprintf(stderr, "ringloc-render: --mount: '%s' is not X,Y,YAW[,ROLL,PITCH]\n", optarg);
+                return 2;
+            }
+            break;
+        case 'r':
+            if (sscanf(optarg, "%lf", &rock) != 1 || !(rock >= 0 && rock < 0.3)) {
+                fprintf(stderr, "ringloc-render: --rock: '%s' is not an angle 0 .. 0.3 rad\n", optarg);
                 return 2;
             }
             break;
@@ -788,6 +826,8 @@ int main(int argc, char **argv)
         mnt.x = mx;
         mnt.y = my;
         mnt.yaw = myaw;
+        mnt.roll = mroll;
+        mnt.pitch = mpitch;
         mnt.z = s.cam_z;
         if (rl_robotfile_save(robot_out, &mnt, err, sizeof err) != RL_OK) {
             fprintf(stderr, "ringloc-render: %s\n", err);
@@ -865,10 +905,25 @@ int main(int argc, char **argv)
             ryaw = urand(-M_PI, M_PI);
             snprintf(name, sizeof name, "%s_%03d", set, k);
         }
-        /* camera pose from the robot pose and the mount */
-        s.cx = rx + cos(ryaw) * mx - sin(ryaw) * my;
-        s.cy = ry + sin(ryaw) * mx + cos(ryaw) * my;
-        s.yaw = ryaw + myaw;
+        /* camera pose from the robot pose (rocking about its footprint on
+         * the floor) and the mount (which may be tilted) */
+        {
+            double Rr[9], Rm[9], rr = rock > 0 ? rock * nrand() : 0, rp = rock > 0 ? rock * nrand() : 0;
+            rotation(ryaw, rp, rr, Rr);
+            {
+                double T[9], Y[9]; /* the mount's tilt about the robot's axes, then its yaw */
+                rotation(0, mpitch, mroll, T);
+                rotation(myaw, 0, 0, Y);
+                mat_mul(T, Y, Rm);
+            }
+            mat_mul(Rr, Rm, s.R);
+            s.cx = rx + Rr[0] * mx + Rr[1] * my + Rr[2] * s.cam_z;
+            s.cy = ry + Rr[3] * mx + Rr[4] * my + Rr[5] * s.cam_z;
+            s.cz = Rr[6] * mx + Rr[7] * my + Rr[8] * s.cam_z;
+            s.yaw = atan2(s.R[3], s.R[0]);
+            s.pitch = -asin(s.R[6]);
+            s.roll = atan2(s.R[7], s.R[8]);
+        }
         {
             uint64_t keep = rng_state;
             if (kind == SET_PATH)

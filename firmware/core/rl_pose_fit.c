@@ -1,0 +1,208 @@
+#include "rl_pose_fit.h"
+
+#include <math.h>
+#include <string.h>
+
+void rl_pose_fit_mul(const double *a, const double *b, double *c)
+{
+    int i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            c[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
+}
+
+/* Rz(yaw) Ry(pitch) Rx(roll) */
+void rl_pose_fit_rotation(double yaw, double pitch, double roll, double *R)
+{
+    double cz = cos(yaw), sz = sin(yaw), cy = cos(pitch), sy = sin(pitch), cx = cos(roll), sx = sin(roll);
+    R[0] = cz * cy;
+    R[1] = cz * sy * sx - sz * cx;
+    R[2] = cz * sy * cx + sz * sx;
+    R[3] = sz * cy;
+    R[4] = sz * sy * sx + cz * cx;
+    R[5] = sz * sy * cx - cz * sx;
+    R[6] = -sy;
+    R[7] = cy * sx;
+    R[8] = cy * cx;
+}
+
+
+void rl_pose_fit_camera(const rl_pose_model *md, const double *q, double *Rc, double *C)
+{
+    double Rr[9];
+    const rl_mount *m = md->mount;
+    rl_pose_fit_rotation(q[2], q[4], q[3], Rr);
+    rl_pose_fit_mul(Rr, md->Rm, Rc);
+    C[0] = q[0] + Rr[0] * m->x + Rr[1] * m->y + Rr[2] * m->z;
+    C[1] = q[1] + Rr[3] * m->x + Rr[4] * m->y + Rr[5] * m->z;
+    C[2] = Rr[6] * m->x + Rr[7] * m->y + Rr[8] * m->z;
+}
+
+/* Where map point (X, Y) on the ceiling appears, normalized; 0 if behind. */
+static int predict(const rl_pose_model *md, const double *q, double X, double Y, double *xn, double *yn)
+{
+    double Rc[9], C[3], d[3], f, l, u;
+    rl_pose_fit_camera(md, q, Rc, C);
+    d[0] = X - C[0];
+    d[1] = Y - C[1];
+    d[2] = md->height - C[2];
+    f = Rc[0] * d[0] + Rc[3] * d[1] + Rc[6] * d[2];
+    l = Rc[1] * d[0] + Rc[4] * d[1] + Rc[7] * d[2];
+    u = Rc[2] * d[0] + Rc[5] * d[1] + Rc[8] * d[2];
+    if (!(u > 1e-6))
+        return 0;
+    *xn = l / u;
+    *yn = -f / u;
+    return 1;
+}
+
+/* Weighted residuals: two per landmark (image), two for the tilt prior. */
+static int residuals(const rl_pose_model *md, const rl_pose_pt *pt, int m, const double *q, double *r)
+{
+    int i;
+    for (i = 0; i < m; i++) {
+        double xn, yn;
+        if (!predict(md, q, pt[i].mx, pt[i].my, &xn, &yn))
+            return 0;
+        r[2 * i] = (pt[i].xn - xn) / (md->sn * pt[i].noise) * pt[i].w;
+        r[2 * i + 1] = (pt[i].yn - yn) / (md->sn * pt[i].noise) * pt[i].w;
+    }
+    r[2 * m] = -q[3] / md->prior;
+    r[2 * m + 1] = -q[4] / md->prior;
+    return 1;
+}
+
+/* Solve A x = b (n x n, row-major) by elimination with partial pivoting;
+ * A and b are overwritten. 0 if singular. */
+static int solve(double *A, double *b, int n)
+{
+    int i, j, k;
+    for (k = 0; k < n; k++) {
+        int p = k;
+        for (i = k + 1; i < n; i++)
+            if (fabs(A[i * n + k]) > fabs(A[p * n + k]))
+                p = i;
+        if (!(fabs(A[p * n + k]) > 1e-300))
+            return 0;
+        if (p != k) {
+            for (j = 0; j < n; j++) {
+                double t = A[k * n + j];
+                A[k * n + j] = A[p * n + j];
+                A[p * n + j] = t;
+            }
+            {
+                double t = b[k];
+                b[k] = b[p];
+                b[p] = t;
+            }
+        }
+        for (i = k + 1; i < n; i++) {
+            double f = A[i * n + k] / A[k * n + k];
+            for (j = k; j < n; j++)
+                A[i * n + j] -= f * A[k * n + j];
+            b[i] -= f * b[k];
+        }
+    }
+    for (i = n - 1; i >= 0; i--) {
+        for (j = i + 1; j < n; j++)
+            b[i] -= A[i * n + j] * b[j];
+        b[i] /= A[i * n + i];
+    }
+    return 1;
+}
+
+/* The normal matrix J'J and gradient J'r of the free parameters (the
+ * first nf of q), J by central differences. 0 if a landmark fell behind. */
+static int normal_equations(const rl_pose_model *md, const rl_pose_pt *pt, int m, const double *q, int nf,
+                            double *A, double *g, double *chi2)
+{
+    double r0[2 * RL_MAX_LANDMARKS + 2], rp[2 * RL_MAX_LANDMARKS + 2], rm[2 * RL_MAX_LANDMARKS + 2];
+    double J[RL_POSE_NQ][2 * RL_MAX_LANDMARKS + 2];
+    int nr = 2 * m + 2, a, b, k;
+    if (!residuals(md, pt, m, q, r0))
+        return 0;
+    for (a = 0; a < nf; a++) {
+        double qp[RL_POSE_NQ], qm[RL_POSE_NQ], h = 1e-6;
+        memcpy(qp, q, sizeof qp);
+        memcpy(qm, q, sizeof qm);
+        qp[a] += h;
+        qm[a] -= h;
+        if (!residuals(md, pt, m, qp, rp) || !residuals(md, pt, m, qm, rm))
+            return 0;
+        for (k = 0; k < nr; k++)
+            J[a][k] = -(rp[k] - rm[k]) / (2 * h); /* d(prediction)/dq, weighted */
+    }
+    *chi2 = 0;
+    for (k = 0; k < 2 * m; k++)
+        *chi2 += r0[k] * r0[k];
+    for (a = 0; a < nf; a++) {
+        g[a] = 0;
+        for (k = 0; k < nr; k++)
+            g[a] += J[a][k] * r0[k];
+        for (b = 0; b < nf; b++) {
+            double sum = 0;
+            for (k = 0; k < nr; k++)
+                sum += J[a][k] * J[b][k];
+            A[a * nf + b] = sum;
+        }
+    }
+    return 1;
+}
+
+/* Gauss-Newton on the first nf parameters of q; the covariance of all
+ * five (the fixed ones through the prior) into cov, scaled by the pooled
+ * noise factor. 0 if it failed. */
+int rl_pose_fit_solve(const rl_pose_model *md, rl_pose_pt *pt, int m, int nf, double *q, double *cov, double *chi2)
+{
+    double A[RL_POSE_NQ * RL_POSE_NQ], g[RL_POSE_NQ];
+    int it, a, b, dof;
+    for (it = 0; it < 16; it++) {
+        /* Huber weights from the residuals of the last step: a centre
+         * more than two of its sigmas off counts less */
+        if (it >= 2) {
+            double r[2 * RL_MAX_LANDMARKS + 2];
+            for (a = 0; a < m; a++)
+                pt[a].w = 1;
+            if (!residuals(md, pt, m, q, r))
+                return 0;
+            for (a = 0; a < m; a++) {
+                double e = hypot(r[2 * a], r[2 * a + 1]);
+                pt[a].w = e > 2.0 ? sqrt(2.0 / e) : 1.0;
+            }
+        }
+        double step = 0;
+        if (!normal_equations(md, pt, m, q, nf, A, g, chi2) || !solve(A, g, nf))
+            return 0;
+        for (a = 0; a < nf; a++) {
+            q[a] += g[a];
+            step += g[a] * g[a];
+        }
+        if (!(fabs(q[3]) < 0.5 && fabs(q[4]) < 0.5) || !isfinite(step))
+            return 0;
+        if (step < 1e-20 && it >= 3)
+            break;
+    }
+    /* covariance: (J'J)^-1 over all five, the prior bounding the tilt */
+    if (!normal_equations(md, pt, m, q, RL_POSE_NQ, A, g, chi2))
+        return 0;
+    for (b = 0; b < RL_POSE_NQ; b++) {
+        double Ac[RL_POSE_NQ * RL_POSE_NQ], e[RL_POSE_NQ];
+        memcpy(Ac, A, sizeof Ac);
+        for (a = 0; a < RL_POSE_NQ; a++)
+            e[a] = a == b;
+        if (!solve(Ac, e, RL_POSE_NQ))
+            return 0;
+        for (a = 0; a < RL_POSE_NQ; a++)
+            cov[a * RL_POSE_NQ + b] = e[a];
+    }
+    /* the residuals say how noisy the centres were: pooled with the
+     * expected noise (three observations' worth) */
+    dof = 2 * m - nf;
+    if (dof > 0) {
+        double factor = (*chi2 + 3.0) / (dof + 3.0);
+        for (a = 0; a < RL_POSE_NQ * RL_POSE_NQ; a++)
+            cov[a] *= factor;
+    }
+    return 1;
+}
+

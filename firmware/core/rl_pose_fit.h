@@ -1,0 +1,53 @@
+/* rl_pose_fit: the robot's pose and tilt against the ceiling plane, the
+ * inside of rl_pose_solve. q = (x, y, yaw, roll, pitch) of the robot: it
+ * stands at (x, y) on the floor, rotated Rz(yaw) Ry(pitch) Rx(roll)
+ * about that point; the camera sits on it as the mount says. A robust
+ * Gauss-Newton fit of q to the landmarks' ideal image positions, with a
+ * prior on the tilt, and its covariance. Internal to the core.
+ *
+ *   rl_pose_model md;             // mount, its rotation, ceiling, noise, prior
+ *   rl_pose_pt pt[3];             // observed and map positions
+ *   double q[RL_POSE_NQ] = {0}, cov[RL_POSE_NQ * RL_POSE_NQ], chi2;
+ *   memset(&md, 0, sizeof md);
+ *   memset(pt, 0, sizeof pt);
+ *   if (rl_pose_fit_solve(&md, pt, 3, RL_POSE_NQ, q, cov, &chi2))
+ *       use(q[3], q[4], sqrt(cov[0]));
+ */
+#ifndef RL_POSE_FIT_H
+#define RL_POSE_FIT_H
+
+#include "rl_pose.h"
+
+typedef struct {
+    int id;
+    double xn, yn; /* observed, normalized ideal image coordinates (pinhole) */
+    double px, py; /* the ceiling point in the level robot frame */
+    double mx, my; /* map */
+    double noise;  /* the centre's expected noise, in units of the model's */
+    double w;      /* robust weight of the current fit (1: full) */
+} rl_pose_pt;
+
+#define RL_POSE_NQ 5
+typedef struct {
+    const rl_mount *mount;
+    double Rm[9];  /* camera axes in the robot frame */
+    double height; /* ceiling above the floor */
+    double sn;     /* centre noise in normalized units */
+    double prior;  /* sigma of the tilt prior, rad */
+} rl_pose_model;
+
+/* 3 x 3 row-major: c = a b; R = Rz(yaw) Ry(pitch) Rx(roll). */
+void rl_pose_fit_mul(const double *a, const double *b, double *c);
+void rl_pose_fit_rotation(double yaw, double pitch, double roll, double *R);
+
+/* The camera's rotation (its axes in the map) and centre for robot pose q. */
+void rl_pose_fit_camera(const rl_pose_model *md, const double *q, double *Rc, double *C);
+
+/* Fit the first nf (3: a level robot, 5: tilted too) parameters of q from
+ * its start; the covariance of all five into cov (the fixed ones through
+ * the prior), scaled by the pooled noise; chi2 of the image residuals.
+ * 0 if it failed (a landmark behind the camera, a tilt past 0.5 rad). */
+int rl_pose_fit_solve(const rl_pose_model *md, rl_pose_pt *pt, int m, int nf, double *q, double *cov,
+                      double *chi2);
+
+#endif
