@@ -15,7 +15,7 @@
 
 static const char *locate_help =
     "usage: ringloc locate --camera CAM.yaml --map MAP.yaml --robot ROBOT.yaml\n"
-    "                      [--offsets OFFSETS.yaml] [--annotate OUT.png]\n"
+    "                      [--offsets OFFSETS.yaml] [--annotate OUT.png] [--size WxH]\n"
     "                      [--local auto|always|never] [--min-score 0.8] IMAGE...\n\n"
     "Recognize landmarks and compute the robot's pose (REP-103, map frame) for\n"
     "each image. Prints the detect JSON line with one more field:\n"
@@ -25,7 +25,8 @@ static const char *locate_help =
     "in metres and radians, or \"pose\": null with \"pose_error\" saying why.\n\n"
     "  --camera FILE    ROS camera_info or OpenCV calibration YAML\n"
     "  --map FILE       landmark map YAML (family, diameter, ceiling_height, landmarks)\n"
-    "  --robot FILE     robot YAML: camera_mount {x, y, z, yaw}\n"
+    "  --robot FILE     robot YAML: camera_mount {x, y, z, yaw, roll, pitch}\n"
+    "  --size WxH       the image size, for a calibration that does not give it\n"
     "  --offsets FILE   pixel-to-offset polynomial from 'ringloc calibrate-offsets',\n"
     "                   used instead of the pinhole model\n"
     "  --annotate FILE  write the image with what was recognized drawn on it\n"
@@ -39,8 +40,9 @@ int rl_cmd_locate(int argc, char **argv)
         {"camera", required_argument, 0, 'c'}, {"map", required_argument, 0, 'm'},
         {"robot", required_argument, 0, 'r'}, {"offsets", required_argument, 0, 'o'},
         {"annotate", required_argument, 0, 'a'}, {"local", required_argument, 0, 'L'},
-        {"min-score", required_argument, 0, 's'}, {"help", no_argument, 0, 'h'},
-        {0, 0, 0, 0}};
+        {"min-score", required_argument, 0, 's'}, {"size", required_argument, 0, 'z'},
+        {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
+    int size_w = 0, size_h = 0;
     const char *C = "locate", *cam_path = NULL, *map_path = NULL, *robot_path = NULL,
                *off_path = NULL, *annotate = NULL, *family = NULL;
     rl_recog_config cfg;
@@ -67,6 +69,10 @@ int rl_cmd_locate(int argc, char **argv)
         case 'r': robot_path = optarg; break;
         case 'o': off_path = optarg; break;
         case 'a': annotate = optarg; break;
+        case 'z':
+            if (!rl_cli_size(C, "--size", optarg, RL_MAX_IMAGE_DIM, &size_w, &size_h))
+                return RL_EXIT_USAGE;
+            break;
         case 'h': fputs(locate_help, stdout); return 0;
         default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
@@ -75,7 +81,7 @@ int rl_cmd_locate(int argc, char **argv)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--camera, --map and --robot are required (see --help)");
     if (optind >= argc)
         return rl_cli_fail(C, RL_EXIT_USAGE, "no images given (see --help)");
-    if (rl_camfile_load(cam_path, &cam, err, sizeof err) != RL_OK ||
+    if (rl_camfile_load_sized(cam_path, size_w, size_h, &cam, err, sizeof err) != RL_OK ||
         rl_mapfile_load(map_path, &map, err, sizeof err) != RL_OK ||
         rl_robotfile_load(robot_path, &mount, err, sizeof err) != RL_OK ||
         (off_path && rl_offsetsfile_load(off_path, &offsets, err, sizeof err) != RL_OK))

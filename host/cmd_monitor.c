@@ -21,9 +21,12 @@ static const char *monitor_help =
     "       ringloc monitor --pty LINK\n\n"
     "Decode ringloc's pose and status frames (ARCOS framing) from a serial device or\n"
     "a recorded file and print one JSON line per frame:\n"
-    "  {\"type\": \"pose\", \"seq\": 7, \"time_ms\": 123456, \"x\": 1.203, \"y\": -0.502,\n"
-    "   \"yaw\": 0.312, \"landmarks_used\": 4, \"flags\": 1, \"residual\": 0.0021,\n"
-    "   \"latency_ms\": 8.5}\n"
+    "  {\"type\": \"pose\", \"version\": 2, \"seq\": 7, \"time_ms\": 123456, \"x\": 1.203,\n"
+    "   \"y\": -0.502, \"yaw\": 0.312, \"landmarks_used\": 4, \"flags\": 1, \"residual\": 0.0021,\n"
+    "   \"latency_ms\": 8.5, \"sigma\": {\"x\": 0.0011, \"y\": 0.0009, \"yaw\": 0.0004},\n"
+    "   \"tilt\": {\"roll\": 0.0012, \"pitch\": -0.0051}}\n"
+    "(flags: bit 0 the local pass was used, bit 1 the tilt was solved; version 1\n"
+    "frames, from older firmware, have no sigma and tilt)\n"
     "  {\"type\": \"status\", \"seq\": 9, \"time_ms\": 123520, \"reason\": 1,\n"
     "   \"landmarks_identified\": 1, \"candidates\": 3}\n"
     "Garbage and damaged frames are skipped (counted on exit).\n\n"
@@ -42,13 +45,18 @@ static void on_signal(int sig)
 
 static void print_msg(const rl_msg *m)
 {
-    if (m->type == RL_FRAME_POSE)
-        printf("{\"type\": \"pose\", \"seq\": %u, \"time_ms\": %lu, \"x\": %.3f, \"y\": %.3f, "
-               "\"yaw\": %.4f, \"landmarks_used\": %u, \"flags\": %u, \"residual\": %.4f, "
-               "\"latency_ms\": %.1f}\n",
-               m->seq, (unsigned long)m->time_ms, m->x_mm / 1000.0, m->y_mm / 1000.0,
+    if (m->type == RL_FRAME_POSE) {
+        printf("{\"type\": \"pose\", \"version\": %u, \"seq\": %u, \"time_ms\": %lu, \"x\": %.3f, "
+               "\"y\": %.3f, \"yaw\": %.4f, \"landmarks_used\": %u, \"flags\": %u, \"residual\": %.4f, "
+               "\"latency_ms\": %.1f",
+               m->version, m->seq, (unsigned long)m->time_ms, m->x_mm / 1000.0, m->y_mm / 1000.0,
                m->yaw_e4 / 1e4, m->used, m->flags, m->residual_e4 / 1e4, m->latency_e4 / 10.0);
-    else
+        if (m->version >= 2)
+            printf(", \"sigma\": {\"x\": %.4f, \"y\": %.4f, \"yaw\": %.4f}, \"tilt\": {\"roll\": %.4f, "
+                   "\"pitch\": %.4f}", m->sigma_x_e4 / 1e4, m->sigma_y_e4 / 1e4, m->sigma_yaw_e4 / 1e4,
+                   m->roll_e4 / 1e4, m->pitch_e4 / 1e4);
+        printf("}\n");
+    } else
         printf("{\"type\": \"status\", \"seq\": %u, \"time_ms\": %lu, \"reason\": %u, "
                "\"landmarks_identified\": %u, \"candidates\": %u}\n",
                m->seq, (unsigned long)m->time_ms, m->reason, m->identified, m->candidates);

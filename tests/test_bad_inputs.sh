@@ -189,6 +189,13 @@ done
 for v in fisheye_x "" "[plumb_bob]" 5; do
     key camera "$cam" distortion_model "s/^distortion_model: .*/distortion_model: $v/"
 done
+key camera "$cam" "4 coefficients, no model" "/^distortion_model/d;s/data: \[-0.12, 0.08, 0.0004, -0.0003, 0\]/data: [-0.12, 0.08, 0.0004, -0.0003]/;0,/cols: 5/s//cols: 4/"
+key camera "$cam" "fisheye with 5" "s/^distortion_model: .*/distortion_model: equidistant/"
+key camera "$cam" "fisheye_model 1 with plumb_bob" "s/^distortion_model: .*/distortion_model: plumb_bob\nfisheye_model: 1/"
+key camera "$cam" "fisheye_model 2" "s/^distortion_model: .*/fisheye_model: 2/"
+key camera "$cam" "tilted sensor" "s/^distortion_model: .*/distortion_model: rational_polynomial/;s/data: \[-0.12, 0.08, 0.0004, -0.0003, 0\]/data: [-0.12, 0.08, 0.0004, -0.0003, 0, 0, 0, 0, 0, 0, 0, 0, 0.01, 0]/;0,/cols: 5/s//cols: 14/"
+key camera "$cam" "7 coefficients" "/^distortion_model/d;s/data: \[-0.12, 0.08, 0.0004, -0.0003, 0\]/data: [-0.12, 0.08, 0.0004, -0.0003, 0, 0, 0]/;0,/cols: 5/s//cols: 7/"
+key camera "$cam" "no size, none given" "/^image_width/d;/^image_height/d"
 key camera "$cam" "rows 65536" "0,/rows: 3/s//rows: 65536/;0,/cols: 3/s//cols: 65536/"
 key camera "$cam" "rows 0" "0,/rows: 3/s//rows: 0/"
 key camera "$cam" "rows -3" "0,/rows: 3/s//rows: -3/"

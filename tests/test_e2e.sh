@@ -38,7 +38,7 @@ while read -r f; do
     name=${f%.png}
     truth=$(sed -n 's/^robot: {x: \([-0-9.]*\), y: \([-0-9.]*\), yaw: \([-0-9.]*\)}/\1 \2 \3/p' "$D/$name.yaml")
     line=$(sed -n "$((k + 1))p" "$T/poses.jsonl")
-    pose=$(echo "$line" | sed -n 's/.*"seq": \([0-9]*\),.*"x": \([-0-9.]*\), "y": \([-0-9.]*\), "yaw": \([-0-9.]*\).*/\1 \2 \3 \4/p')
+    pose=$(echo "$line" | sed -n 's/.*"seq": \([0-9]*\), "time_ms": [0-9]*, "x": \([-0-9.]*\), "y": \([-0-9.]*\), "yaw": \([-0-9.]*\).*/\1 \2 \3 \4/p')
     if awk -v t="$truth" -v p="$pose" -v k=$k 'BEGIN { split(t, a, " "); split(p, b, " ");
             dyaw = b[4] - a[3]; while (dyaw > 3.14159265) dyaw -= 6.2831853; while (dyaw < -3.14159265) dyaw += 6.2831853;
             exit !(b[1] == k && sqrt((a[1]-b[2])^2 + (a[2]-b[3])^2) <= 0.01 && (dyaw < 0 ? -dyaw : dyaw) <= 0.0087) }'; then

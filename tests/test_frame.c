@@ -64,8 +64,82 @@ static void test_pose_golden_bytes(void **state)
     m.flags = 1;
     m.residual_e4 = 21;
     m.latency_e4 = 85;
+    m.version = 1; /* the older frame, as firmware before issue 15 sent it */
     assert_int_equal(rl_frame_encode(&m, buf), 29);
     assert_memory_equal(buf, expect, 29);
+}
+
+/* Version 2: the same fields, then the sigmas and the tilt; the decoder
+ * reads both versions from one stream. */
+static void test_pose_v2_golden_bytes_and_both_versions_decode(void **state)
+{
+    rl_msg m, got;
+    rl_decoder d;
+    uint8_t buf[RL_FRAME_MAX], v1[RL_FRAME_MAX];
+    const uint8_t want[] = {0xFA, 0xFB, 36,
+                            0x50, 0x02, 0x07, 0x00,             /* type, version 2, seq 7 */
+                            0x40, 0xE2, 0x01, 0x00,             /* time 123456 ms */
+                            0xB3, 0x04, 0x00, 0x00,             /* x 1203 mm */
+                            0x0A, 0xFE, 0xFF, 0xFF,             /* y -502 mm */
+                            0x30, 0x0C,                         /* yaw 3120 e-4 rad */
+                            0x04, 0x03,                         /* used 4, flags: local, tilt solved */
+                            0x15, 0x00,                         /* residual 21 (2.1 mm) */
+                            0x55, 0x00,                         /* latency 85 (8.5 ms) */
+                            0x0B, 0x00,                         /* sigma x 11 (1.1 mm) */
+                            0x09, 0x00,                         /* sigma y 9 (0.9 mm) */
+                            0x04, 0x00,                         /* sigma yaw 4 e-4 rad */
+                            0x0C, 0x00,                         /* roll 12 e-4 rad */
+                            0xCD, 0xFF,                         /* pitch -51 e-4 rad */
+                            0x00, 0x00};
+    uint8_t expect[sizeof want];
+    uint32_t s = 0;
+    size_t i, n1, n2;
+    int k = 0;
+    (void)state;
+    memcpy(expect, want, sizeof want);
+    for (i = 0; i < 34; i += 2)
+        s = (s + (uint32_t)(want[3 + i] << 8 | want[4 + i])) & 0xFFFF;
+    expect[37] = (uint8_t)(s >> 8);
+    expect[38] = (uint8_t)s;
+    memset(&m, 0, sizeof m);
+    m.type = RL_FRAME_POSE;
+    m.seq = 7;
+    m.time_ms = 123456;
+    m.x_mm = 1203;
+    m.y_mm = -502;
+    m.yaw_e4 = 3120;
+    m.used = 4;
+    m.flags = 3;
+    m.residual_e4 = 21;
+    m.latency_e4 = 85;
+    m.sigma_x_e4 = 11;
+    m.sigma_y_e4 = 9;
+    m.sigma_yaw_e4 = 4;
+    m.roll_e4 = 12;
+    m.pitch_e4 = -51;
+    n2 = rl_frame_encode(&m, buf);
+    assert_int_equal(n2, 39);
+    assert_memory_equal(buf, expect, 39);
+    m.version = 1;
+    n1 = rl_frame_encode(&m, v1);
+    assert_int_equal(n1, 29);
+    rl_decoder_init(&d);
+    for (i = 0; i < n1; i++)
+        k += rl_decoder_push(&d, v1[i], &got);
+    assert_int_equal(k, 1);
+    assert_int_equal(got.version, 1);
+    assert_int_equal(got.x_mm, 1203);
+    assert_int_equal(got.sigma_x_e4, 0);
+    for (i = 0; i < n2; i++)
+        k += rl_decoder_push(&d, buf[i], &got);
+    assert_int_equal(k, 2);
+    assert_int_equal(got.version, 2);
+    assert_int_equal(got.sigma_x_e4, 11);
+    assert_int_equal(got.sigma_y_e4, 9);
+    assert_int_equal(got.sigma_yaw_e4, 4);
+    assert_int_equal(got.roll_e4, 12);
+    assert_int_equal(got.pitch_e4, -51);
+    assert_int_equal(d.bad, 0);
 }
 
 static void test_status_golden_bytes(void **state)
@@ -108,6 +182,15 @@ static void make_msg(rl_msg *m, unsigned i)
         m->flags = (uint8_t)(i & 1);
         m->residual_e4 = (uint16_t)(i * 3);
         m->latency_e4 = (uint16_t)(i * 5);
+        /* both versions in one stream */
+        m->version = (uint8_t)(i % 5 == 1 ? 1 : RL_FRAME_VERSION);
+        if (m->version == RL_FRAME_VERSION) {
+            m->sigma_x_e4 = (uint16_t)(i * 7);
+            m->sigma_y_e4 = (uint16_t)(i * 11);
+            m->sigma_yaw_e4 = (uint16_t)(i % 100);
+            m->roll_e4 = (int16_t)(i % 300) - 150;
+            m->pitch_e4 = (int16_t)(i % 200) - 100;
+        }
     } else {
         m->reason = (uint8_t)(1 + i % 4);
         m->identified = (uint8_t)(i % 2);
@@ -186,6 +269,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_checksum_vectors),
         cmocka_unit_test(test_pose_golden_bytes),
+        cmocka_unit_test(test_pose_v2_golden_bytes_and_both_versions_decode),
         cmocka_unit_test(test_status_golden_bytes),
         cmocka_unit_test(test_decoder_survives_damage),
         cmocka_unit_test(test_decoder_random_garbage),

@@ -162,5 +162,17 @@ sed "s|backend: png, device: $T/frames.txt|backend: v4l2, device: /dev/videoRLTE
 [ $rc = 1 ] && [ "$(wc -l <"$T/probe.err")" = 1 ] && grep -q "camera: /dev/videoRLTEST$$: no such device" "$T/probe.err" && ok ||
     bad "probe of an absent device: rc $rc: $(cat "$T/probe.err")"
 
+# 8. lens models: an OpenCV fisheye calibration (fisheye_model: 1) reads as
+#    the fisheye model, and one without an image size loads with --size
+fish=$(dirname "$0")/fixtures/fisheye_opencv.yaml
+"$R" locate --camera "$fish" --map "$D/map.yaml" --robot "$D/robot.yaml" "$frame" >"$T/fish.json" 2>"$T/fish.err"; rc=$?
+[ $rc = 0 ] && grep -q '"pose": ' "$T/fish.json" && ok || bad "fisheye file: rc $rc: $(cat "$T/fish.err")"
+grep -v "^image_" "$fish" >"$T/nosize.yaml"
+"$R" locate --camera "$T/nosize.yaml" --map "$D/map.yaml" --robot "$D/robot.yaml" "$frame" >/dev/null 2>"$T/nosize.err"; rc=$?
+"$R" locate --size 640x480 --camera "$T/nosize.yaml" --map "$D/map.yaml" --robot "$D/robot.yaml" "$frame" \
+    >"$T/nosize.json" 2>&1; rc2=$?
+[ $rc = 1 ] && grep -q "nosize.yaml:[0-9]*: image_width: missing, and no image size given" "$T/nosize.err" &&
+    [ $rc2 = 0 ] && grep -q '"width": 640' "$T/nosize.json" && ok || bad "size-less file: rc $rc, $rc2: $(cat "$T/nosize.err")"
+
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

@@ -6,6 +6,7 @@
 #include <random>
 #include <vector>
 #include <opencv2/calib3d.hpp>
+#include <fstream>
 #include <opencv2/core.hpp>
 extern "C" {
 #include <setjmp.h>
@@ -27,15 +28,27 @@ static rl_camera make_cam(int model)
     c.model = (rl_dist_model)model;
     double k5[5] = {-0.12, 0.08, 0.0004, -0.0003, -0.01};
     double k8[8] = {0.35, -0.2, 0.0006, -0.0004, 0.05, 0.47, -0.15, 0.04};
-    for (int i = 0; i < 8; i++)
-        c.k[i] = model == RL_DIST_RATIONAL ? k8[i] : model == RL_DIST_PLUMB_BOB && i < 5 ? k5[i] : 0;
+    double k12[12] = {-0.1, 0.05, 0.0005, -0.0002, -0.01, 0.02, 0.01, 0.001, 0.002, -0.001, -0.0015, 0.0008};
+    double kf[4] = {0.08, -0.03, 0.01, -0.002};
+    for (int i = 0; i < RL_CAMERA_MAX_COEFFS; i++)
+        c.k[i] = model == RL_DIST_RATIONAL ? (i < 8 ? k8[i] : 0)
+                 : model == RL_DIST_RATIONAL + 4 ? k12[i]
+                 : model == RL_DIST_PLUMB_BOB && i < 5 ? k5[i]
+                 : model == RL_DIST_FISHEYE && i < 4 ? kf[i] : 0;
+    if (model == RL_DIST_RATIONAL + 4) // the thin-prism lens: rational, 12 coefficients
+        c.model = RL_DIST_RATIONAL;
     return c;
+}
+
+static int n_coeffs(const rl_camera &c)
+{
+    return c.model == RL_DIST_FISHEYE ? 4 : c.model == RL_DIST_PLUMB_BOB ? 5 : c.k[8] != 0 ? 12 : 8;
 }
 
 static void cv_mats(const rl_camera &c, cv::Mat &K, cv::Mat &D)
 {
     K = (cv::Mat_<double>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
-    int n = c.model == RL_DIST_RATIONAL ? 8 : 5;
+    int n = n_coeffs(c);
     D = cv::Mat(1, n, CV_64F);
     for (int i = 0; i < n; i++)
         D.at<double>(i) = c.k[i];
@@ -43,7 +56,7 @@ static void cv_mats(const rl_camera &c, cv::Mat &K, cv::Mat &D)
 
 static void test_project_and_undistort_match_opencv(void **)
 {
-    for (int model : {RL_DIST_PLUMB_BOB, RL_DIST_RATIONAL}) {
+    for (int model : {(int)RL_DIST_PLUMB_BOB, (int)RL_DIST_RATIONAL, (int)RL_DIST_RATIONAL + 4, (int)RL_DIST_FISHEYE}) {
         rl_camera c = make_cam(model);
         cv::Mat K, D;
         cv_mats(c, K, D);
@@ -52,10 +65,16 @@ static void test_project_and_undistort_match_opencv(void **)
             for (double x = -0.95; x <= 0.95; x += 0.05)
                 obj.push_back({x, y, 1.0});
         std::vector<cv::Point2d> img;
-        cv::projectPoints(obj, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), K, D, img);
         std::vector<cv::Point2d> und;
-        cv::undistortPoints(img, und, K, D, cv::noArray(), cv::noArray(),
-                            cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-14));
+        if (c.model == RL_DIST_FISHEYE) {
+            cv::fisheye::projectPoints(obj, img, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), K, D);
+            cv::fisheye::undistortPoints(img, und, K, D, cv::noArray(), cv::noArray(),
+                                         cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-14));
+        } else {
+            cv::projectPoints(obj, cv::Vec3d(0, 0, 0), cv::Vec3d(0, 0, 0), K, D, img);
+            cv::undistortPoints(img, und, K, D, cv::noArray(), cv::noArray(),
+                                cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 100, 1e-14));
+        }
         double worst_p = 0, worst_u = 0;
         for (size_t i = 0; i < obj.size(); i++) {
             double u, v, xn, yn;

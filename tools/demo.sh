@@ -4,7 +4,9 @@
 # A robot drives straight, around a rectangle and in a circle under a
 # ceiling of ring landmarks (the paper's set-up: 640x480 camera 1.87 m
 # below the ceiling, 0.21 m landmarks 0.61 m apart, a camera mounted off
-# the robot's centre). `ringloc-fw` (the robot's firmware) plays the frames through its
+# the robot's centre and 1.4 degrees off vertical, the robot rocking about
+# half a degree). `ringloc calibrate-mount` first measures the mount's
+# tilt from the drive's frames. `ringloc-fw` (the robot's firmware) plays the frames through its
 # PNG-sequence camera and sends pose frames over a pseudo-terminal, as it
 # would over the serial line to the Pioneer; `ringloc monitor` decodes the
 # other end. Then a table per frame, a summary against the ground truth, an
@@ -17,21 +19,30 @@ DRIVE=$OUT/drive
 R=$B/host/ringloc
 FW=$B/firmware/app/ringloc-fw
 REN=$B/tools/ringloc-render
-MOUNT=0.12,-0.03,0.02
+MOUNT=0.12,-0.03,0.02,0.02,-0.015
+ROCK=0.01
 
 mkdir -p "$OUT"
 # the drive: rendered once with its ground truth, then reused
-if [ ! -f "$DRIVE/circle_019.yaml" ]; then
+if [ ! -f "$DRIVE/circle_019.yaml" ] || [ ! -f "$DRIVE/robot_true.yaml" ]; then
     echo "demo: rendering the drive (55 frames with ground truth) ..."
+    rm -rf "$DRIVE"
     mkdir -p "$DRIVE"
     "$REN" --write-map "$DRIVE/map.yaml" --write-camera "$DRIVE/camera.yaml" \
-        --write-robot "$DRIVE/robot.yaml" --mount $MOUNT
-    "$REN" --out "$DRIVE" --path straight --frames 15 --mount $MOUNT &
-    "$REN" --out "$DRIVE" --path rect --frames 20 --mount $MOUNT &
-    "$REN" --out "$DRIVE" --path circle --frames 20 --mount $MOUNT &
+        --write-robot "$DRIVE/robot_true.yaml" --mount $MOUNT
+    "$REN" --out "$DRIVE" --path straight --frames 15 --mount $MOUNT --rock $ROCK &
+    "$REN" --out "$DRIVE" --path rect --frames 20 --mount $MOUNT --rock $ROCK &
+    "$REN" --out "$DRIVE" --path circle --frames 20 --mount $MOUNT --rock $ROCK &
     wait
 fi
 DRIVE=$(cd "$DRIVE" && pwd)
+# the robot file as a user writes it (the tape measure's offsets, no tilt),
+# then the mount's tilt measured from the frames
+printf 'camera_mount: {x: 0.12, y: -0.03, z: 0.88, yaw: 0.02}\n' >"$DRIVE/robot_measured.yaml"
+echo "demo: ringloc calibrate-mount (the camera's tilt on the robot, from the drive's frames)"
+"$R" calibrate-mount --camera "$DRIVE/camera.yaml" --map "$DRIVE/map.yaml" --robot "$DRIVE/robot_measured.yaml" \
+    --out "$DRIVE/robot.yaml" "$DRIVE"/straight_*.png "$DRIVE"/rect_*.png
+echo "demo: the renderer's truth: $(grep -o 'roll: [-0-9.]*, pitch: [-0-9.]*' "$DRIVE/robot_true.yaml")"
 (cd "$DRIVE" && ls straight_*.png && ls rect_*.png && ls circle_*.png) >"$DRIVE/frames.txt"
 cat >"$OUT/ringloc.yaml" <<CFG
 # the firmware's configuration for the demo (see README: Files)

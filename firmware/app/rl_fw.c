@@ -91,7 +91,7 @@ static int load_setup(const char *C, const char *config, fw_setup *s)
     char err[768];
     rl_runcfg *cfg = &s->cfg;
     if (rl_runcfg_load(config, cfg, err, sizeof err) != RL_OK ||
-        rl_camfile_load(cfg->calibration, &s->calib, err, sizeof err) != RL_OK ||
+        rl_camfile_load_sized(cfg->calibration, cfg->cam_width, cfg->cam_height, &s->calib, err, sizeof err) != RL_OK ||
         rl_mapfile_load(cfg->map, &s->map, err, sizeof err) != RL_OK ||
         rl_robotfile_load(cfg->robot, &s->mount, err, sizeof err) != RL_OK ||
         (cfg->offsets[0] && rl_offsetsfile_load(cfg->offsets, &s->offsets, err, sizeof err) != RL_OK))

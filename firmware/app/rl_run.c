@@ -126,6 +126,11 @@ static uint16_t clampu16(double v)
     return v > 65535.0 ? 65535 : v < 0 ? 0 : (uint16_t)lround(v);
 }
 
+static int16_t clamp16(double v)
+{
+    return v > 32767.0 ? 32767 : v < -32767.0 ? -32767 : (int16_t)lround(v);
+}
+
 static void camera_down(rl_runner *r, uint64_t now)
 {
     rl_cam_close(&r->cam);
@@ -227,9 +232,15 @@ rl_err rl_run_step(rl_runner *r)
         m.y_mm = clamp32(pose.y * 1000.0);
         m.yaw_e4 = (int16_t)lround(pose.yaw * 1e4); /* |yaw| <= pi fits */
         m.used = (uint8_t)(pose.used > 255 ? 255 : pose.used);
-        m.flags = (uint8_t)local;
+        m.flags = (uint8_t)(local | (pose.tilt_solved ? 2 : 0));
         m.residual_e4 = clampu16(pose.residual * 1e4);
         m.latency_e4 = clampu16((double)(sent > f.t_us ? sent - f.t_us : 0) / 100.0);
+        m.version = RL_FRAME_VERSION;
+        m.sigma_x_e4 = clampu16(pose.sigma_x * 1e4);
+        m.sigma_y_e4 = clampu16(pose.sigma_y * 1e4);
+        m.sigma_yaw_e4 = clampu16(pose.sigma_yaw * 1e4);
+        m.roll_e4 = clamp16(pose.roll * 1e4);
+        m.pitch_e4 = clamp16(pose.pitch * 1e4);
         send_msg(r, &m);
     } else if (e == RL_ETOOFEW) {
         send_status(r, RL_STATUS_TOO_FEW, r->res->n_landmarks, r->res->n_candidates, f.t_us);

@@ -24,10 +24,17 @@ rl_err rl_camera_check(const rl_camera *cam)
         !(fabs(cam->cx - 0.5 * cam->width) <= 1.5 * cam->width) ||
         !(fabs(cam->cy - 0.5 * cam->height) <= 1.5 * cam->height))
         return RL_ERANGE;
-    for (i = 0; i < 8; i++)
+    for (i = 0; i < RL_CAMERA_MAX_COEFFS; i++)
         if (!(fabs(cam->k[i]) <= RL_CAMERA_MAX_K))
             return RL_ERANGE;
     return RL_OK;
+}
+
+/* theta_d of the fisheye model at ray angle theta */
+static double fisheye_theta_d(const double *k, double t)
+{
+    double t2 = t * t;
+    return t * (1.0 + t2 * (k[0] + t2 * (k[1] + t2 * (k[2] + t2 * k[3]))));
 }
 
 void rl_camera_distort(const rl_camera *cam, double x, double y, double *xd, double *yd)
@@ -39,13 +46,45 @@ void rl_camera_distort(const rl_camera *cam, double x, double y, double *xd, dou
         *yd = y;
         return;
     }
+    if (cam->model == RL_DIST_FISHEYE) {
+        double r = sqrt(x * x + y * y), s = r > 1e-12 ? fisheye_theta_d(k, atan(r)) / r : 1.0;
+        *xd = x * s;
+        *yd = y * s;
+        return;
+    }
     r2 = x * x + y * y;
     r4 = r2 * r2;
     r6 = r4 * r2;
     xy = x * y;
     radial = (1.0 + k[0] * r2 + k[1] * r4 + k[4] * r6) / (1.0 + k[5] * r2 + k[6] * r4 + k[7] * r6);
-    *xd = x * radial + 2.0 * k[2] * xy + k[3] * (r2 + 2.0 * x * x);
-    *yd = y * radial + k[2] * (r2 + 2.0 * y * y) + 2.0 * k[3] * xy;
+    *xd = x * radial + 2.0 * k[2] * xy + k[3] * (r2 + 2.0 * x * x) + k[8] * r2 + k[9] * r4;
+    *yd = y * radial + k[2] * (r2 + 2.0 * y * y) + 2.0 * k[3] * xy + k[10] * r2 + k[11] * r4;
+}
+
+/* Newton on theta_d(theta) = td, from theta = td; the ray's normalized
+ * point at that angle. */
+static void fisheye_undistort(const double *k, double xd, double yd, double *x, double *y)
+{
+    double td = sqrt(xd * xd + yd * yd), t = td, s;
+    int i;
+    if (td < 1e-12) {
+        *x = xd;
+        *y = yd;
+        return;
+    }
+    if (td > 1.5)
+        t = td = 1.5; /* beyond about 86 degrees off axis: no ceiling there */
+    for (i = 0; i < 20; i++) {
+        double t2 = t * t, f = fisheye_theta_d(k, t) - td;
+        double df = 1.0 + t2 * (3 * k[0] + t2 * (5 * k[1] + t2 * (7 * k[2] + t2 * 9 * k[3])));
+        double step = fabs(df) > 1e-9 ? f / df : 0;
+        t -= step;
+        if (fabs(step) < 1e-14)
+            break;
+    }
+    s = tan(t) / td;
+    *x = xd * s;
+    *y = yd * s;
 }
 
 /* Fixed-point iterations; converges for the mild distortion of the lenses
@@ -62,12 +101,16 @@ void rl_camera_undistort(const rl_camera *cam, double xd, double yd, double *x, 
         *y = yd;
         return;
     }
+    if (cam->model == RL_DIST_FISHEYE) {
+        fisheye_undistort(k, xd, yd, x, y);
+        return;
+    }
     for (i = 0; i < UNDISTORT_ITERATIONS; i++) {
         double r2 = ux * ux + uy * uy, r4 = r2 * r2, r6 = r4 * r2;
         double icdist = (1.0 + k[5] * r2 + k[6] * r4 + k[7] * r6) /
                         (1.0 + k[0] * r2 + k[1] * r4 + k[4] * r6);
-        double dx = 2.0 * k[2] * ux * uy + k[3] * (r2 + 2.0 * ux * ux);
-        double dy = k[2] * (r2 + 2.0 * uy * uy) + 2.0 * k[3] * ux * uy;
+        double dx = 2.0 * k[2] * ux * uy + k[3] * (r2 + 2.0 * ux * ux) + k[8] * r2 + k[9] * r4;
+        double dy = k[2] * (r2 + 2.0 * uy * uy) + 2.0 * k[3] * ux * uy + k[10] * r2 + k[11] * r4;
         double nx = (xd - dx) * icdist, ny = (yd - dy) * icdist;
         double step = fabs(nx - ux) + fabs(ny - uy);
         ux = nx;

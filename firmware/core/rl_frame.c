@@ -38,14 +38,15 @@ static uint32_t get32(const uint8_t *p)
 size_t rl_frame_encode(const rl_msg *m, uint8_t *buf)
 {
     uint8_t *pl = buf + 3;
-    size_t n = m->type == RL_FRAME_POSE ? RL_POSE_PAYLOAD : RL_STATUS_PAYLOAD;
+    int v1 = m->type == RL_FRAME_POSE && m->version == 1;
+    size_t n = m->type == RL_FRAME_POSE ? (v1 ? RL_POSE_V1_PAYLOAD : RL_POSE_PAYLOAD) : RL_STATUS_PAYLOAD;
     uint16_t sum;
     buf[0] = 0xFA;
     buf[1] = 0xFB;
     buf[2] = (uint8_t)(n + 2);
     memset(pl, 0, n);
     pl[0] = m->type == RL_FRAME_POSE ? RL_FRAME_POSE : RL_FRAME_STATUS;
-    pl[1] = RL_FRAME_VERSION;
+    pl[1] = m->type == RL_FRAME_POSE && !v1 ? RL_FRAME_VERSION : 1;
     put16(pl + 2, m->seq);
     put32(pl + 4, m->time_ms);
     if (m->type == RL_FRAME_POSE) {
@@ -56,6 +57,13 @@ size_t rl_frame_encode(const rl_msg *m, uint8_t *buf)
         pl[19] = m->flags;
         put16(pl + 20, m->residual_e4);
         put16(pl + 22, m->latency_e4);
+        if (!v1) {
+            put16(pl + 24, m->sigma_x_e4);
+            put16(pl + 26, m->sigma_y_e4);
+            put16(pl + 28, m->sigma_yaw_e4);
+            put16(pl + 30, (uint16_t)m->roll_e4);
+            put16(pl + 32, (uint16_t)m->pitch_e4);
+        }
     } else {
         pl[8] = m->reason;
         pl[9] = m->identified;
@@ -93,14 +101,16 @@ static int plausible(const rl_decoder *d)
         return -1;
     if (d->len >= 2 && d->buf[1] != 0xFB)
         return -1;
-    if (d->len >= 3 && d->buf[2] != RL_POSE_PAYLOAD + 2 && d->buf[2] != RL_STATUS_PAYLOAD + 2)
+    if (d->len >= 3 && d->buf[2] != RL_POSE_PAYLOAD + 2 && d->buf[2] != RL_POSE_V1_PAYLOAD + 2 &&
+        d->buf[2] != RL_STATUS_PAYLOAD + 2)
         return -1;
     if (d->len >= 4) {
-        uint8_t want = d->buf[2] == RL_POSE_PAYLOAD + 2 ? RL_FRAME_POSE : RL_FRAME_STATUS;
+        uint8_t want = d->buf[2] == RL_STATUS_PAYLOAD + 2 ? RL_FRAME_STATUS : RL_FRAME_POSE;
         if (d->buf[3] != want)
             return -1;
     }
-    if (d->len >= 5 && d->buf[4] != RL_FRAME_VERSION)
+    /* the count says the version: 36 a version 2 pose, 26 version 1 */
+    if (d->len >= 5 && d->buf[4] != (d->buf[2] == RL_POSE_PAYLOAD + 2 ? RL_FRAME_VERSION : 1))
         return -1;
     return 0;
 }
@@ -143,6 +153,14 @@ int rl_decoder_push(rl_decoder *d, uint8_t byte, rl_msg *m)
             m->flags = pl[19];
             m->residual_e4 = get16(pl + 20);
             m->latency_e4 = get16(pl + 22);
+            m->version = pl[1];
+            if (m->version == RL_FRAME_VERSION) {
+                m->sigma_x_e4 = get16(pl + 24);
+                m->sigma_y_e4 = get16(pl + 26);
+                m->sigma_yaw_e4 = get16(pl + 28);
+                m->roll_e4 = (int16_t)get16(pl + 30);
+                m->pitch_e4 = (int16_t)get16(pl + 32);
+            }
         } else {
             m->reason = pl[8];
             m->identified = pl[9];

@@ -1,5 +1,6 @@
-/* rl_camera: pinhole camera intrinsics with plumb_bob or rational
- * distortion (OpenCV / ROS camera_info conventions).
+/* rl_camera: pinhole camera intrinsics with plumb_bob, rational (with
+ * OpenCV's thin-prism terms) or fisheye (equidistant) distortion, in
+ * OpenCV / ROS camera_info conventions.
  *
  *   rl_camera cam;
  *   rl_camera_defaults(&cam, 640, 480, 70.0 * M_PI / 180);  // ideal lens
@@ -11,15 +12,18 @@
 
 typedef enum {
     RL_DIST_NONE = 0,      /* ideal pinhole */
+    RL_DIST_FISHEYE = 4,   /* k1 k2 k3 k4 of theta_d = theta (1 + k1 theta^2 + ... + k4 theta^8)
+                              (OpenCV fisheye, ROS equidistant) */
     RL_DIST_PLUMB_BOB = 5, /* k1 k2 p1 p2 k3 */
-    RL_DIST_RATIONAL = 8   /* k1 k2 p1 p2 k3 k4 k5 k6 */
+    RL_DIST_RATIONAL = 8   /* k1 k2 p1 p2 k3 k4 k5 k6, then thin prism s1 s2 s3 s4 (0 if not given) */
 } rl_dist_model;
+#define RL_CAMERA_MAX_COEFFS 12
 
 typedef struct {
     int width, height;      /* image size the calibration is for */
     double fx, fy, cx, cy;  /* camera matrix, pixels (pixel centres at integers) */
     rl_dist_model model;
-    double k[8];            /* distortion in OpenCV order; unused ones 0 */
+    double k[RL_CAMERA_MAX_COEFFS]; /* distortion in OpenCV order; unused ones 0 */
 } rl_camera;
 
 /* An ideal camera of the given size and horizontal field of view

@@ -7,10 +7,14 @@
  *   payload start, a leftover odd byte XORed in, sent high byte first).
  * Payload integers are little-endian.
  *
- * Pose, 24-byte payload:  u8 0x50, u8 version 1, u16 seq, u32 time (ms,
- *   monotonic capture time), i32 x (mm), i32 y (mm), i16 yaw (1e-4 rad),
- *   u8 landmarks used, u8 flags (bit 0: local pass used), u16 residual
- *   (0.1 mm), u16 latency capture -> send (0.1 ms).
+ * Pose, version 2, 34-byte payload: u8 0x50, u8 version 2, u16 seq, u32
+ *   time (ms, monotonic capture time), i32 x (mm), i32 y (mm), i16 yaw
+ *   (1e-4 rad), u8 landmarks used, u8 flags (bit 0: local pass used, bit
+ *   1: tilt solved), u16 residual (0.1 mm), u16 latency capture -> send
+ *   (0.1 ms), u16 sigma x (0.1 mm), u16 sigma y (0.1 mm), u16 sigma yaw
+ *   (1e-4 rad), i16 camera roll, i16 camera pitch (1e-4 rad, from
+ *   vertical). Version 1 (24 bytes) is the same without the last five
+ *   fields; the decoder reads both.
  * Status, 12-byte payload: u8 0x53, u8 version 1, u16 seq, u32 time,
  *   u8 reason (rl_status_reason), u8 landmarks identified, u8 candidates,
  *   u8 0.
@@ -36,11 +40,12 @@
 
 #define RL_FRAME_POSE 0x50
 #define RL_FRAME_STATUS 0x53
-#define RL_FRAME_VERSION 1
-#define RL_POSE_PAYLOAD 24
+#define RL_FRAME_VERSION 2      /* of pose frames; status frames are version 1 */
+#define RL_POSE_PAYLOAD 34
+#define RL_POSE_V1_PAYLOAD 24
 #define RL_STATUS_PAYLOAD 12
-/* Largest frame: header 2 + count 1 + payload 24 + checksum 2. */
-#define RL_FRAME_MAX 29
+/* Largest frame: header 2 + count 1 + payload 34 + checksum 2. */
+#define RL_FRAME_MAX 39
 
 typedef enum {
     RL_STATUS_TOO_FEW = 1,       /* fewer landmarks than a pose needs */
@@ -60,6 +65,10 @@ typedef struct {
     uint8_t flags;      /* bit 0: local pass used */
     uint16_t residual_e4; /* 0.1 mm */
     uint16_t latency_e4;  /* 0.1 ms */
+    uint8_t version;      /* of a pose frame: 2 (0 encodes as 2), or 1 without these: */
+    uint16_t sigma_x_e4, sigma_y_e4; /* 0.1 mm */
+    uint16_t sigma_yaw_e4;           /* 1e-4 rad */
+    int16_t roll_e4, pitch_e4;       /* 1e-4 rad */
     /* status */
     uint8_t reason;
     uint8_t identified;

@@ -53,13 +53,80 @@ static rl_err read_matrix(rl_yaml *y, yaml_node_t *root, const char *key, double
     return RL_OK;
 }
 
+/* The lens model from the model's name (ROS distortion_model, OpenCV's
+ * fisheye_model flag) and the number of coefficients; a combination that
+ * could mean two models is an error, never a guess. */
+static rl_err distortion(rl_yaml *y, yaml_node_t *root, const char *model, const double *D, int nd,
+                         rl_camera *cam, char *err, size_t errlen)
+{
+    yaml_node_t *dn = rl_yaml_get(y, root, "distortion_coefficients");
+    int fisheye_flag = -1, i;
+    rl_err e;
+    if (rl_yaml_get(y, root, "fisheye_model") != NULL &&
+        (e = rl_yaml_int(y, root, "fisheye_model", NULL, 0, &fisheye_flag, err, errlen)) != RL_OK)
+        return e;
+    if (fisheye_flag != -1 && fisheye_flag != 0 && fisheye_flag != 1)
+        return rl_yaml_fail(y, rl_yaml_get(y, root, "fisheye_model"), "fisheye_model", RL_EFORMAT, err, errlen,
+                            "%d is not 0 or 1", fisheye_flag);
+    if (model != NULL && (strcmp(model, "equidistant") == 0 || strcmp(model, "fisheye") == 0)) {
+        if (fisheye_flag == 0)
+            return rl_yaml_fail(y, rl_yaml_get(y, root, "fisheye_model"), "fisheye_model", RL_EFORMAT, err,
+                                errlen, "0 contradicts distortion_model %s", model);
+        fisheye_flag = 1;
+    } else if (model != NULL && strcmp(model, "plumb_bob") != 0 && strcmp(model, "rational_polynomial") != 0) {
+        return rl_yaml_fail(y, rl_yaml_get(y, root, "distortion_model"), "distortion_model", RL_EUNSUPPORTED, err,
+                            errlen, "'%s' is not supported (plumb_bob, rational_polynomial, equidistant)", model);
+    } else if (model != NULL && fisheye_flag == 1) {
+        return rl_yaml_fail(y, rl_yaml_get(y, root, "fisheye_model"), "fisheye_model", RL_EFORMAT, err, errlen,
+                            "1 contradicts distortion_model %s", model);
+    }
+    if (fisheye_flag == 1) {
+        if (nd != 4)
+            return rl_yaml_fail(y, dn ? dn : root, "distortion_coefficients", RL_EFORMAT, err, errlen,
+                                "a fisheye (equidistant) lens has 4 coefficients, not %d", nd);
+        cam->model = RL_DIST_FISHEYE;
+    } else if (model != NULL && strcmp(model, "plumb_bob") == 0) {
+        if (nd != 5)
+            return rl_yaml_fail(y, dn ? dn : root, "distortion_coefficients", RL_EFORMAT, err, errlen,
+                                "plumb_bob has 5 coefficients, not %d", nd);
+        cam->model = RL_DIST_PLUMB_BOB;
+    } else if (nd == 4 && fisheye_flag == -1 && model == NULL) {
+        return rl_yaml_fail(y, dn, "distortion_coefficients", RL_EFORMAT, err, errlen,
+                            "4 coefficients and no model: k1 k2 p1 p2 or a fisheye's k1..k4? say "
+                            "fisheye_model: 1 (or distortion_model: equidistant) or 0");
+    } else if (nd == 0 || nd == 4 || nd == 5 || nd == 8 || nd == 12 || nd == 14) {
+        /* OpenCV's standard model: 4, 5, 8, 12 or 14 coefficients */
+        if (model != NULL && strcmp(model, "rational_polynomial") == 0 && nd < 5)
+            return rl_yaml_fail(y, dn ? dn : root, "distortion_coefficients", RL_EFORMAT, err, errlen,
+                                "rational_polynomial has 5, 8, 12 or 14 coefficients, not %d", nd);
+        if (nd == 14 && (D[12] != 0.0 || D[13] != 0.0))
+            return rl_yaml_fail(y, dn, "distortion_coefficients", RL_EUNSUPPORTED, err, errlen,
+                                "the tilted-sensor terms tauX, tauY (%g, %g) are not supported", D[12], D[13]);
+        cam->model = nd > 5 ? RL_DIST_RATIONAL : nd > 0 ? RL_DIST_PLUMB_BOB : RL_DIST_NONE;
+        if (model != NULL && strcmp(model, "rational_polynomial") == 0)
+            cam->model = RL_DIST_RATIONAL;
+    } else {
+        return rl_yaml_fail(y, dn, "distortion_coefficients", RL_EFORMAT, err, errlen,
+                            "%d coefficients fit no model (plumb_bob 5, rational_polynomial 5, 8, 12 or 14, "
+                            "fisheye 4)", nd);
+    }
+    for (i = 0; i < nd && i < RL_CAMERA_MAX_COEFFS; i++)
+        cam->k[i] = D[i];
+    return RL_OK;
+}
+
 rl_err rl_camfile_load(const char *path, rl_camera *cam, char *err, size_t errlen)
+{
+    return rl_camfile_load_sized(path, 0, 0, cam, err, errlen);
+}
+
+rl_err rl_camfile_load_sized(const char *path, int width, int height, rl_camera *cam, char *err, size_t errlen)
 {
     rl_yaml y;
     yaml_node_t *root;
     double K[9], D[14];
     const char *model = NULL;
-    int nk, nd = 0, i;
+    int nk, nd = 0;
     rl_err e;
 
     memset(cam, 0, sizeof *cam);
@@ -72,9 +139,21 @@ rl_err rl_camfile_load(const char *path, rl_camera *cam, char *err, size_t errle
                          "expected a ROS camera_info or OpenCV calibration mapping");
         goto out;
     }
-    if ((e = rl_yaml_int(&y, root, "image_width", NULL, 1, &cam->width, err, errlen)) != RL_OK ||
-        (e = rl_yaml_int(&y, root, "image_height", NULL, 1, &cam->height, err, errlen)) != RL_OK)
+    /* OpenCV's calibration files may leave the size out: then it is the
+     * caller's (the run configuration, --size) */
+    if (width > 0 && height > 0 && rl_yaml_get(&y, root, "image_width") == NULL &&
+        rl_yaml_get(&y, root, "image_height") == NULL) {
+        cam->width = width;
+        cam->height = height;
+    } else if (rl_yaml_get(&y, root, "image_width") == NULL && rl_yaml_get(&y, root, "image_height") == NULL) {
+        e = rl_yaml_fail(&y, root, "image_width", RL_EFORMAT, err, errlen,
+                         "missing, and no image size given (--size WxH, or camera width and height in "
+                         "ringloc.yaml)");
         goto out;
+    } else if ((e = rl_yaml_int(&y, root, "image_width", NULL, 1, &cam->width, err, errlen)) != RL_OK ||
+               (e = rl_yaml_int(&y, root, "image_height", NULL, 1, &cam->height, err, errlen)) != RL_OK) {
+        goto out;
+    }
     if (cam->width <= 0 || cam->height <= 0) {
         e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "image_width"), "image_width", RL_ERANGE,
                          err, errlen, "image size %dx%d is not positive", cam->width, cam->height);
@@ -98,25 +177,8 @@ rl_err rl_camfile_load(const char *path, rl_camera *cam, char *err, size_t errle
                          RL_EFORMAT, err, errlen, "expected [fx 0 cx; 0 fy cy; 0 0 1]");
         goto out;
     }
-    if (model != NULL && strcmp(model, "plumb_bob") != 0 &&
-        strcmp(model, "rational_polynomial") != 0) {
-        e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "distortion_model"), "distortion_model",
-                         RL_EUNSUPPORTED, err, errlen,
-                         "'%s' is not supported (plumb_bob or rational_polynomial)", model);
+    if ((e = distortion(&y, root, model, D, nd, cam, err, errlen)) != RL_OK)
         goto out;
-    }
-    if (model != NULL && strcmp(model, "rational_polynomial") == 0 ? nd != 8
-        : model != NULL ? nd != 5
-                        : !(nd == 0 || nd == 4 || nd == 5 || nd == 8)) {
-        e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "distortion_coefficients"),
-                         "distortion_coefficients", RL_EFORMAT, err, errlen,
-                         "%d coefficients do not fit %s (plumb_bob 5, rational_polynomial 8)",
-                         nd, model ? model : "any model");
-        goto out;
-    }
-    for (i = 0; i < nd; i++)
-        cam->k[i] = D[i];
-    cam->model = nd == 8 ? RL_DIST_RATIONAL : nd > 0 ? RL_DIST_PLUMB_BOB : RL_DIST_NONE;
     if (rl_camera_check(cam) != RL_OK) {
         e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "camera_matrix"), "camera_matrix", RL_ERANGE,
                          err, errlen, "%dx%d, fx %g, fy %g, cx %g, cy %g or a distortion "
@@ -134,7 +196,8 @@ out:
 rl_err rl_camfile_save(const char *path, const rl_camera *cam, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "w");
-    int i, n = cam->model == RL_DIST_RATIONAL ? 8 : 5;
+    int i, n = cam->model == RL_DIST_FISHEYE ? 4 : cam->model != RL_DIST_RATIONAL ? 5
+             : (cam->k[8] != 0 || cam->k[9] != 0 || cam->k[10] != 0 || cam->k[11] != 0) ? 12 : 8;
     if (f == NULL) {
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
         return RL_EIO;
@@ -143,7 +206,8 @@ rl_err rl_camfile_save(const char *path, const rl_camera *cam, char *err, size_t
             cam->height);
     fprintf(f, "camera_matrix:\n  rows: 3\n  cols: 3\n  data: [%.9g, 0, %.9g, 0, %.9g, %.9g, 0, 0, 1]\n",
             cam->fx, cam->cx, cam->fy, cam->cy);
-    fprintf(f, "distortion_model: %s\n", n == 8 ? "rational_polynomial" : "plumb_bob");
+    fprintf(f, "distortion_model: %s\n", cam->model == RL_DIST_FISHEYE ? "equidistant"
+                                         : cam->model == RL_DIST_RATIONAL ? "rational_polynomial" : "plumb_bob");
     fprintf(f, "distortion_coefficients:\n  rows: 1\n  cols: %d\n  data: [", n);
     for (i = 0; i < n; i++)
         fprintf(f, "%s%.9g", i ? ", " : "", cam->k[i]);

@@ -3,10 +3,15 @@
  * Recognised automatically:
  * - ROS camera_info YAML: image_width, image_height, camera_matrix {rows,
  *   cols, data}, distortion_model (plumb_bob: 5 coefficients,
- *   rational_polynomial: 8), distortion_coefficients {data};
+ *   rational_polynomial: 5, 8, 12 (thin prism) or 14 (tilted sensor, only
+ *   when its terms are 0), equidistant: 4), distortion_coefficients {data};
  * - OpenCV FileStorage YAML ("%YAML:1.0", camera_matrix and
- *   distortion_coefficients as !!opencv-matrix; image_width and
- *   image_height are required there too).
+ *   distortion_coefficients as !!opencv-matrix): the standard model by
+ *   the count (5, 8, 12, 14), fisheye_model: 1 (OpenCV's calibration
+ *   sample) for a fisheye's 4; 4 coefficients without a model are
+ *   ambiguous (k1 k2 p1 p2, or a fisheye) and an error. image_width and
+ *   image_height may be left out when the caller knows the size
+ *   (rl_camfile_load_sized).
  * Errors name the file, line and key (wrong matrix sizes, missing keys).
  *
  *   rl_camera calib;
@@ -21,6 +26,10 @@
 #include "rl_camera.h"
 
 RL_CHECK rl_err rl_camfile_load(const char *path, rl_camera *cam, char *err, size_t errlen);
+/* The same; width x height (0 x 0: none) is the image size when the file
+ * gives none. */
+RL_CHECK rl_err rl_camfile_load_sized(const char *path, int width, int height, rl_camera *cam, char *err,
+                                      size_t errlen);
 
 /* Write a ROS camera_info YAML. */
 RL_CHECK rl_err rl_camfile_save(const char *path, const rl_camera *cam, char *err,
