@@ -143,6 +143,100 @@ static std::vector<rl_detection> observe(const rl_camera &c, const rl_map &m, co
     return out;
 }
 
+// Rz(yaw) Ry(pitch) Rx(roll), row-major, written out here independently
+// of the solver's own.
+static void rot(double yaw, double pitch, double roll, double *R)
+{
+    double cz = std::cos(yaw), sz = std::sin(yaw), cy = std::cos(pitch), sy = std::sin(pitch),
+           cx = std::cos(roll), sx = std::sin(roll);
+    cv::Matx33d Rz(cz, -sz, 0, sz, cz, 0, 0, 0, 1), Ry(cy, 0, sy, 0, 1, 0, -sy, 0, cy), Rx(1, 0, 0, 0, cx, -sx, 0, sx, cx);
+    cv::Matx33d M = Rz * Ry * Rx;
+    for (int k = 0; k < 9; k++)
+        R[k] = M.val[k];
+}
+
+// The image of the map's landmarks from a robot at (x, y, yaw) tilted by
+// (roll, pitch) about its footprint; edge centres, or the centres' images.
+static std::vector<rl_detection> observe_tilted(const rl_camera &c, const rl_map &m, const rl_mount &mt, double x,
+                                                double y, double yaw, double roll, double pitch, bool edge,
+                                                cv::Matx33d *Rcam = nullptr, cv::Vec3d *Ccam = nullptr)
+{
+    double Rr[9], Rt[9], Ry[9];
+    rot(yaw, pitch, roll, Rr);
+    rot(0, mt.pitch, mt.roll, Rt);
+    rot(mt.yaw, 0, 0, Ry);
+    cv::Matx33d R_robot(Rr), R_cam = R_robot * cv::Matx33d(Rt) * cv::Matx33d(Ry);
+    cv::Vec3d C = cv::Vec3d(x, y, 0) + R_robot * cv::Vec3d(mt.x, mt.y, mt.z);
+    if (Rcam) *Rcam = R_cam;
+    if (Ccam) *Ccam = C;
+    std::vector<rl_detection> out;
+    for (int i = 0; i < m.count; i++) {
+        double u = 0, v = 0;
+        for (int a = 0; a < 360; a++) {
+            double r = edge ? m.diameter / 2 : 0, t = a * M_PI / 180, ue, ve;
+            cv::Vec3d d = R_cam.t() * (cv::Vec3d(m.lm[i].x + r * std::cos(t), m.lm[i].y + r * std::sin(t),
+                                                  m.ceiling_height) - C);
+            rl_camera_project(&c, d[1] / d[2], -d[0] / d[2], &ue, &ve);
+            u += ue / 360;
+            v += ve / 360;
+        }
+        if (u < 20 || v < 20 || u > c.width - 20 || v > c.height - 20)
+            continue;
+        rl_detection det;
+        std::memset(&det, 0, sizeof det);
+        det.id = m.lm[i].id;
+        det.u = u;
+        det.v = v;
+        det.radius = 25;
+        det.complete = 1;
+        out.push_back(det);
+    }
+    return out;
+}
+
+// A tilted robot (and a tilted mount): the solved pose is the true one, the
+// camera's tilt the true one, and solvePnP on the centres' images puts the
+// camera where ringloc does.
+static void test_tilted_pose_against_truth_and_solvepnp(void **)
+{
+    rl_camera c = make_cam(RL_DIST_PLUMB_BOB);
+    cv::Mat K, D;
+    cv_mats(c, K, D);
+    rl_map m = site_map();
+    rl_mount mt = {0.12, -0.04, 0.88, 0.3, 0.01, -0.015};
+    for (double tilt : {0.03, -0.02}) {
+        cv::Matx33d Rc;
+        cv::Vec3d Cc;
+        std::vector<rl_detection> d = observe_tilted(c, m, mt, 1.7, 1.4, 0.4, tilt, -0.7 * tilt, true, &Rc, &Cc);
+        std::vector<rl_detection> dc = observe_tilted(c, m, mt, 1.7, 1.4, 0.4, tilt, -0.7 * tilt, false);
+        rl_pose p;
+        assert_true(d.size() >= 6);
+        assert_int_equal(rl_pose_solve(&c, &m, &mt, d.data(), (int)d.size(), NULL, &p), RL_OK);
+        assert_true(p.tilt_solved);
+        // exact data; the edge offsets are modelled to second order
+        if (std::hypot(p.x - 1.7, p.y - 1.4) > 3e-4 || std::fabs(p.yaw - 0.4) > 1e-4)
+            fail_msg("tilt %.2f: pose (%.5f, %.5f, %.5f), truth (1.7, 1.4, 0.4)", tilt, p.x, p.y, p.yaw);
+        // the camera's tilt from vertical, from its true rotation
+        double roll = std::atan2(Rc(2, 1), Rc(2, 2)), pitch = -std::asin(Rc(2, 0));
+        assert_true(std::fabs(p.roll - roll) < 3e-4 && std::fabs(p.pitch - pitch) < 3e-4);
+        std::vector<cv::Point3d> w;
+        std::vector<cv::Point2d> im;
+        for (auto &o : dc) {
+            int k = rl_map_find(&m, o.id);
+            w.push_back({m.lm[k].x, m.lm[k].y, m.ceiling_height});
+            im.push_back({o.u, o.v});
+        }
+        cv::Mat rvec, tvec, R;
+        assert_true(cv::solvePnP(w, im, K, D, rvec, tvec, false, cv::SOLVEPNP_ITERATIVE));
+        cv::Rodrigues(rvec, R);
+        cv::Mat C = -R.t() * tvec;
+        double dcv = std::hypot(C.at<double>(0) - p.cam_x, C.at<double>(1) - p.cam_y);
+        if (dcv > 0.001 || std::hypot(C.at<double>(0) - Cc[0], C.at<double>(1) - Cc[1]) > 0.001)
+            fail_msg("camera: ringloc (%.4f, %.4f), solvePnP (%.4f, %.4f), truth (%.4f, %.4f)", p.cam_x, p.cam_y,
+                     C.at<double>(0), C.at<double>(1), Cc[0], Cc[1]);
+    }
+}
+
 static void test_pose_exact_and_mount(void **)
 {
     rl_camera c = make_cam(RL_DIST_PLUMB_BOB);
@@ -259,6 +353,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_project_and_undistort_match_opencv),
         cmocka_unit_test(test_pose_exact_and_mount),
+        cmocka_unit_test(test_tilted_pose_against_truth_and_solvepnp),
         cmocka_unit_test(test_pose_drops_a_misplaced_landmark),
         cmocka_unit_test(test_pose_too_few),
         cmocka_unit_test(test_pose_agrees_with_solvepnp),

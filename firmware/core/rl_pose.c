@@ -125,6 +125,7 @@ static void make_model(const rl_camera *cam, const rl_map *map, const rl_mount *
     md->height = map->ceiling_height;
     md->sn = RL_POSE_PIXEL_SIGMA / sqrt(cam->fx * cam->fy);
     md->prior = RL_POSE_TILT_PRIOR;
+    md->radius = 0.5 * map->diameter;
 }
 
 /* One detection as a point: its ray and, for a level robot, where that

@@ -39,10 +39,12 @@ void rl_pose_fit_camera(const rl_pose_model *md, const double *q, double *Rc, do
 }
 
 /* Where map point (X, Y) on the ceiling appears, normalized; 0 if behind. */
-static int predict(const rl_pose_model *md, const double *q, double X, double Y, double *xn, double *yn)
+/* Where ceiling point (X, Y) appears, normalized, for the camera Rc, C;
+ * 0 if behind it. */
+static int image_of(const rl_pose_model *md, const double *Rc, const double *C, double X, double Y, double *xn,
+                    double *yn)
 {
-    double Rc[9], C[3], d[3], f, l, u;
-    rl_pose_fit_camera(md, q, Rc, C);
+    double d[3], f, l, u;
     d[0] = X - C[0];
     d[1] = Y - C[1];
     d[2] = md->height - C[2];
@@ -53,6 +55,33 @@ static int predict(const rl_pose_model *md, const double *q, double X, double Y,
         return 0;
     *xn = l / u;
     *yn = -f / u;
+    return 1;
+}
+
+/* What the recognizer measures for the landmark at (X, Y): the centre of
+ * its outer edge, which a tilted view puts off the image of its centre by
+ * (R^2 / 4) times the plane-to-image map's Laplacian (R the landmark's
+ * radius; the mean of the map over the circle, to second order). */
+static int predict(const rl_pose_model *md, const double *q, double X, double Y, double *xn, double *yn)
+{
+    static const double at[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    double Rc[9], C[3], sx = 0, sy = 0, r = md->radius;
+    int i;
+    rl_pose_fit_camera(md, q, Rc, C);
+    if (!image_of(md, Rc, C, X, Y, xn, yn))
+        return 0;
+    if (r <= 0)
+        return 1;
+    for (i = 0; i < 4; i++) {
+        double x, y;
+        if (!image_of(md, Rc, C, X + r * at[i][0], Y + r * at[i][1], &x, &y))
+            return 0;
+        sx += x - *xn;
+        sy += y - *yn;
+    }
+    /* the Laplacian from steps of r, times r^2 / 4 */
+    *xn += sx / 4;
+    *yn += sy / 4;
     return 1;
 }
 

@@ -34,6 +34,7 @@ typedef struct {
     double height; /* ceiling above the floor */
     double sn;     /* centre noise in normalized units */
     double prior;  /* sigma of the tilt prior, rad */
+    double radius; /* the landmarks' outer radius on the ceiling, m (0: centres as points) */
 } rl_pose_model;
 
 /* 3 x 3 row-major: c = a b; R = Rz(yaw) Ry(pitch) Rx(roll). */

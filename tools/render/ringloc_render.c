@@ -680,7 +680,8 @@ static const char *help =
     "  --mount X,Y,YAW[,ROLL,PITCH]  camera offset in the robot frame, and its\n"
     "                  tilt (radians, roll about the robot's x, pitch about its y;\n"
     "                  default 0,0,0,0,0)\n"
-    "  --rock SIGMA    the robot rocks: a random tilt per frame and axis (radians)\n";
+    "  --rock SIGMA    the robot rocks: a random tilt per frame and axis (radians)\n"
+    "  --look SET      with --path: the frames look as that set's do (degraded, dim, ...)\n";
 
 /* mkdir -p */
 static int mkdir_p(const char *dir)
@@ -750,7 +751,10 @@ int main(int argc, char **argv)
         {"twin", no_argument, 0, 't'}, {"mount", required_argument, 0, 'm'},
         {"write-map", required_argument, 0, 'M'}, {"write-camera", required_argument, 0, 'C'},
         {"write-robot", required_argument, 0, 'R'}, {"rock", required_argument, 0, 'r'},
+        {"look", required_argument, 0, 'l'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
+    const char *look = NULL;
+    set_kind look_kind = SET_PATH;
     const char *out = NULL, *set = NULL, *path = NULL, *cam_path = NULL, *map_out = NULL,
                *cam_out = NULL, *robot_out = NULL;
     int count = 10, w = 640, h = 480, twin = 0, c, k, i;
@@ -784,6 +788,7 @@ int main(int argc, char **argv)
                 return 2;
             }
             break;
+        case 'l': look = optarg; break;
         case 'r':
             if (sscanf(optarg, "%lf", &rock) != 1 || !(rock >= 0 && rock < 0.3)) {
                 fprintf(stderr, "ringloc-render: --rock: '%s' is not an angle 0 .. 0.3 rad\n", optarg);
@@ -874,6 +879,18 @@ int main(int argc, char **argv)
     } else {
         double x, y, yaw;
         kind = SET_PATH;
+        if (look != NULL) {
+            /* a path drive with the looks of a set (not lens: that changes
+             * the camera the calibration was written for) */
+            for (i = 0; i < (int)(sizeof set_names / sizeof set_names[0]) - 1; i++)
+                if (strcmp(look, set_names[i]) == 0)
+                    break;
+            if (i == (int)(sizeof set_names / sizeof set_names[0]) - 1 || (set_kind)i == SET_LENS) {
+                fprintf(stderr, "ringloc-render: --look: '%s' is not a set's look (lens excepted)\n", look);
+                return 2;
+            }
+            look_kind = (set_kind)i;
+        }
         if (path_pose(path, 0, 2, &x, &y, &yaw) != 0) {
             fprintf(stderr, "ringloc-render: --path: '%s' is not straight, rect or circle\n", path);
             return 2;
@@ -895,7 +912,7 @@ int main(int argc, char **argv)
             rng_next();
         s.n = 0;
         s.twin = 0;
-        effects(&s, kind);
+        effects(&s, kind == SET_PATH ? look_kind : kind);
         if (kind == SET_PATH) {
             path_pose(path, k, count, &rx, &ry, &ryaw);
             snprintf(name, sizeof name, "%s_%03d", path, k);
