@@ -273,36 +273,50 @@ static double wrap(double a)
     return atan2(sin(a), cos(a));
 }
 
+/* The folder's map, calibration and robot. */
+static void load_site(rl_map *map, rl_camera *cam, rl_mount *mount)
+{
+    char path[1024], err[512];
+    snprintf(path, sizeof path, "%s/map.yaml", paths_dir);
+    if (rl_mapfile_load(path, map, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    snprintf(path, sizeof path, "%s/camera.yaml", paths_dir);
+    if (rl_camfile_load(path, cam, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    snprintf(path, sizeof path, "%s/robot.yaml", paths_dir);
+    if (rl_robotfile_load(path, mount, err, sizeof err) != RL_OK) fail_msg("%s", err);
+}
+
+/* Frame k of a drive recognized into res, its truth into t; 0 past the
+ * last frame. */
+static int recognize_frame(const char *kind, int k, truth *t)
+{
+    char path[1024], err[512];
+    rl_image img;
+    double us;
+    FILE *f;
+    snprintf(path, sizeof path, "%s/%s_%03d.yaml", paths_dir, kind, k);
+    if ((f = fopen(path, "r")) == NULL)
+        return 0;
+    fclose(f);
+    assert_int_equal(truth_load(path, t), 0);
+    snprintf(path, sizeof path, "%s/%s", paths_dir, t->image);
+    if (rl_png_read_gray(path, &img, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    assert_int_equal(rl_report_run(&hr, &img, &res, &us), RL_OK);
+    rl_png_free(&img);
+    return 1;
+}
+
 static void path_accuracy(void **state)
 {
     const char *kind = (const char *)*state;
     static rl_map map;
     rl_camera cam;
     rl_mount mount;
-    char path[1024], err[512];
     double pos = 0, yaw = 0, zx = 0, zy = 0, zyaw = 0;
     int k, frames = 0;
-    snprintf(path, sizeof path, "%s/map.yaml", paths_dir);
-    if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK) fail_msg("%s", err);
-    snprintf(path, sizeof path, "%s/camera.yaml", paths_dir);
-    if (rl_camfile_load(path, &cam, err, sizeof err) != RL_OK) fail_msg("%s", err);
-    snprintf(path, sizeof path, "%s/robot.yaml", paths_dir);
-    if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK) fail_msg("%s", err);
-    for (k = 0; k < 1000; k++) {
-        truth t;
-        rl_image img;
+    truth t;
+    load_site(&map, &cam, &mount);
+    for (k = 0; recognize_frame(kind, k, &t); k++) {
         rl_pose pose;
-        double us;
-        FILE *f;
-        snprintf(path, sizeof path, "%s/%s_%03d.yaml", paths_dir, kind, k);
-        if ((f = fopen(path, "r")) == NULL)
-            break;
-        fclose(f);
-        assert_int_equal(truth_load(path, &t), 0);
-        snprintf(path, sizeof path, "%s/%s", paths_dir, t.image);
-        if (rl_png_read_gray(path, &img, err, sizeof err) != RL_OK) fail_msg("%s", err);
-        assert_int_equal(rl_report_run(&hr, &img, &res, &us), RL_OK);
-        rl_png_free(&img);
         assert_int_equal(rl_pose_solve(&cam, &map, &mount, res.landmarks, res.n_landmarks, NULL, &pose), RL_OK);
         assert_int_equal(pose.n_dropped, 0);
         pos += hypot(pose.x - t.robot_x, pose.y - t.robot_y);
@@ -352,35 +366,18 @@ static void mount_accuracy(void **state)
     static rl_map map;
     rl_camera cam;
     rl_mount mount;
-    char path[1024], err[512];
     double all = 0, two = 0;
     int k, q, frames = 0;
+    truth t;
     (void)state;
-    snprintf(path, sizeof path, "%s/map.yaml", paths_dir);
-    if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK) fail_msg("%s", err);
-    snprintf(path, sizeof path, "%s/camera.yaml", paths_dir);
-    if (rl_camfile_load(path, &cam, err, sizeof err) != RL_OK) fail_msg("%s", err);
-    snprintf(path, sizeof path, "%s/robot.yaml", paths_dir);
-    if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    load_site(&map, &cam, &mount);
     assert_true(fabs(mount.roll) > 0.01 && fabs(mount.pitch) > 0.01); /* calibrated, not left at 0 */
     for (q = 0; q < 3; q++)
-        for (k = 0; k < 1000; k++) {
-            truth t;
-            rl_image img;
+        for (k = 0; recognize_frame(kinds[q], k, &t); k++) {
             rl_pose pose;
             rl_detection pair[2];
-            double us, best[2] = {1e9, 1e9};
+            double best[2] = {1e9, 1e9};
             int j;
-            FILE *f;
-            snprintf(path, sizeof path, "%s/%s_%03d.yaml", paths_dir, kinds[q], k);
-            if ((f = fopen(path, "r")) == NULL)
-                break;
-            fclose(f);
-            assert_int_equal(truth_load(path, &t), 0);
-            snprintf(path, sizeof path, "%s/%s", paths_dir, t.image);
-            if (rl_png_read_gray(path, &img, err, sizeof err) != RL_OK) fail_msg("%s", err);
-            assert_int_equal(rl_report_run(&hr, &img, &res, &us), RL_OK);
-            rl_png_free(&img);
             assert_int_equal(rl_pose_solve(&cam, &map, &mount, res.landmarks, res.n_landmarks, NULL, &pose), RL_OK);
             all += hypot(pose.x - t.robot_x, pose.y - t.robot_y);
             for (j = 0; j < res.n_landmarks; j++) {

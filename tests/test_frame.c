@@ -23,6 +23,22 @@ static void test_checksum_vectors(void **state)
     }
 }
 
+/* The pose of the golden frames. */
+static void golden_pose(rl_msg *m)
+{
+    memset(m, 0, sizeof *m);
+    m->type = RL_FRAME_POSE;
+    m->seq = 7;
+    m->time_ms = 123456;
+    m->x_mm = 1203;
+    m->y_mm = -502;
+    m->yaw_e4 = 3120;
+    m->used = 4;
+    m->flags = 1;
+    m->residual_e4 = 21;
+    m->latency_e4 = 85;
+}
+
 static void test_pose_golden_bytes(void **state)
 {
     rl_msg m;
@@ -53,17 +69,7 @@ static void test_pose_golden_bytes(void **state)
             s = (s + (uint32_t)(want[3 + i] << 8 | want[4 + i])) & 0xFFFF;
         assert_int_equal(sum, s);
     }
-    memset(&m, 0, sizeof m);
-    m.type = RL_FRAME_POSE;
-    m.seq = 7;
-    m.time_ms = 123456;
-    m.x_mm = 1203;
-    m.y_mm = -502;
-    m.yaw_e4 = 3120;
-    m.used = 4;
-    m.flags = 1;
-    m.residual_e4 = 21;
-    m.latency_e4 = 85;
+    golden_pose(&m);
     m.version = 1; /* the older frame, as firmware before issue 15 sent it */
     assert_int_equal(rl_frame_encode(&m, buf), 29);
     assert_memory_equal(buf, expect, 29);
@@ -101,17 +107,8 @@ static void test_pose_v2_golden_bytes_and_both_versions_decode(void **state)
         s = (s + (uint32_t)(want[3 + i] << 8 | want[4 + i])) & 0xFFFF;
     expect[37] = (uint8_t)(s >> 8);
     expect[38] = (uint8_t)s;
-    memset(&m, 0, sizeof m);
-    m.type = RL_FRAME_POSE;
-    m.seq = 7;
-    m.time_ms = 123456;
-    m.x_mm = 1203;
-    m.y_mm = -502;
-    m.yaw_e4 = 3120;
-    m.used = 4;
+    golden_pose(&m);
     m.flags = 3;
-    m.residual_e4 = 21;
-    m.latency_e4 = 85;
     m.sigma_x_e4 = 11;
     m.sigma_y_e4 = 9;
     m.sigma_yaw_e4 = 4;

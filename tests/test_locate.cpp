@@ -107,42 +107,6 @@ static rl_map site_map(void)
     return m;
 }
 
-// Image positions of the map's landmarks seen from a robot pose.
-static std::vector<rl_detection> observe(const rl_camera &c, const rl_map &m, const rl_mount &mt,
-                                         double x, double y, double yaw, double noise = 0, bool edge = true)
-{
-    std::mt19937 rng(5);
-    std::normal_distribution<double> n(0, noise > 0 ? noise : 1);
-    double cyaw = yaw + mt.yaw, cx = x + std::cos(yaw) * mt.x - std::sin(yaw) * mt.y,
-           cy = y + std::sin(yaw) * mt.x + std::cos(yaw) * mt.y, Z = m.ceiling_height - mt.z;
-    std::vector<rl_detection> out;
-    for (int i = 0; i < m.count; i++) {
-        double dx = m.lm[i].x - cx, dy = m.lm[i].y - cy;
-        double fwd = std::cos(cyaw) * dx + std::sin(cyaw) * dy, left = -std::sin(cyaw) * dx + std::cos(cyaw) * dy;
-        double u = 0, v = 0;
-        // what an edge fit sees: the mean of the outer edge's image
-        // through the lens (not the image of the centre)
-        for (int a = 0; a < 360; a++) {
-            double r = edge ? m.diameter / 2 : 0, t = a * M_PI / 180, ue, ve;
-            double f = fwd + r * std::cos(t), l = left + r * std::sin(t);
-            rl_camera_project(&c, l / Z, -f / Z, &ue, &ve);
-            u += ue / 360;
-            v += ve / 360;
-        }
-        if (u < 20 || v < 20 || u > c.width - 20 || v > c.height - 20)
-            continue;
-        rl_detection d;
-        std::memset(&d, 0, sizeof d);
-        d.id = m.lm[i].id;
-        d.u = u + (noise > 0 ? n(rng) : 0);
-        d.v = v + (noise > 0 ? n(rng) : 0);
-        d.radius = 25;
-        d.complete = 1;
-        out.push_back(d);
-    }
-    return out;
-}
-
 // Rz(yaw) Ry(pitch) Rx(roll), row-major, written out here independently
 // of the solver's own.
 static void rot(double yaw, double pitch, double roll, double *R)
@@ -156,7 +120,8 @@ static void rot(double yaw, double pitch, double roll, double *R)
 }
 
 // The image of the map's landmarks from a robot at (x, y, yaw) tilted by
-// (roll, pitch) about its footprint; edge centres, or the centres' images.
+// (roll, pitch) about its footprint: what an edge fit sees (the mean of the
+// outer edge's image through the lens), or the centres' images.
 static std::vector<rl_detection> observe_tilted(const rl_camera &c, const rl_map &m, const rl_mount &mt, double x,
                                                 double y, double yaw, double roll, double pitch, bool edge,
                                                 cv::Matx33d *Rcam = nullptr, cv::Vec3d *Ccam = nullptr)
@@ -190,6 +155,21 @@ static std::vector<rl_detection> observe_tilted(const rl_camera &c, const rl_map
         det.radius = 25;
         det.complete = 1;
         out.push_back(det);
+    }
+    return out;
+}
+
+// Image positions of the map's landmarks seen from a level robot, with
+// pixel noise.
+static std::vector<rl_detection> observe(const rl_camera &c, const rl_map &m, const rl_mount &mt,
+                                         double x, double y, double yaw, double noise = 0, bool edge = true)
+{
+    std::mt19937 rng(5);
+    std::normal_distribution<double> n(0, noise > 0 ? noise : 1);
+    std::vector<rl_detection> out = observe_tilted(c, m, mt, x, y, yaw, 0, 0, edge);
+    for (auto &d : out) {
+        d.u += noise > 0 ? n(rng) : 0;
+        d.v += noise > 0 ? n(rng) : 0;
     }
     return out;
 }
