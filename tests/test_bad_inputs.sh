@@ -245,6 +245,9 @@ rkey "s/^camera: {backend: png/camera: {backend: png, rate: 5/"
 rkey "\$a camera: {backend: png}"
 rkey "s/^robot:/robt:/"
 rkey "s/^log_interval/log_intervl/;\$a log_intervl: 5" log_intervl
+for v in "{dir: r, every: 0}" "{dir: r, every: abc}" "{dir: r, max_mb: 0}" "{dir: r, max_mb: nan}" "{every: 3}" "5" "{dir: r, evry: 3}"; do
+    rkey "\$a record: $v" record
+done
 rkey "\$a recognition: {locl: auto}" recognition.locl
 rkey "\$a recognition: 5" recognition
 

@@ -12,13 +12,14 @@
 #include "rl_mapfile.h"
 #include "rl_offsetsfile.h"
 #include "rl_robotfile.h"
+#include "rl_record.h"
 #include "rl_run.h"
 #include "rl_runcfg.h"
 #include "rl_serial.h"
 #include "rl_clock.h"
 
 static const char *run_help =
-    "usage: %s --config ringloc.yaml [--frames N] [--probe]\n\n"
+    "usage: %s --config ringloc.yaml [--frames N] [--record DIR] [--probe]\n\n"
     "The firmware: grab frames from the camera, recognize landmarks, compute the\n"
     "robot's pose and send it as ARCOS-framed pose frames on the serial line (a\n"
     "status frame when there is no pose). Camera and serial faults are survived:\n"
@@ -27,6 +28,9 @@ static const char *run_help =
     "Logs go to standard error, repeated lines at most every log_interval s.\n"
     "See rl_runcfg.h or the README for the configuration file.\n\n"
     "  --frames N   stop after N frames\n"
+    "  --record DIR save one frame in record.every (default 10) as PNG into DIR,\n"
+    "               with DIR/frames.txt (name, capture time ms) for 'ringloc survey'\n"
+    "               or playing back; at most record.max_mb (1000) on disk\n"
     "  --probe      list what the configured camera offers (formats, sizes,\n"
     "               controls) and exit\n";
 
@@ -193,11 +197,12 @@ static void run_loop(rl_runner *runner, long max_frames)
 /* --config and --frames; 0 to go on, else the exit code (--help: 0 with
  * *done set). */
 static int parse_args(const char *C, const char *prefix, int argc, char **argv,
-                      const char **config, long *max_frames, int *probe, int *done)
+                      const char **config, long *max_frames, int *probe, const char **record, int *done)
 {
     static const struct option opts[] = {{"config", required_argument, 0, 'c'},
                                          {"frames", required_argument, 0, 'n'},
                                          {"probe", no_argument, 0, 'p'},
+                                         {"record", required_argument, 0, 'R'},
                                          {"help", no_argument, 0, 'h'},
                                          {0, 0, 0, 0}};
     char hint[160];
@@ -214,6 +219,7 @@ static int parse_args(const char *C, const char *prefix, int argc, char **argv,
             *max_frames = v;
             break;
         case 'p': *probe = 1; break;
+        case 'R': *record = optarg; break;
         case 'h': printf(run_help, prefix); *done = 1; return 0;
         default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
@@ -252,6 +258,11 @@ static int probe_camera(const char *C, const char *config)
     return 0;
 }
 
+static void record_frame(void *ctx, const rl_cam_frame *f)
+{
+    rl_record_offer((rl_record *)ctx, &f->img, f->index, f->t_us);
+}
+
 int rl_fw_main(const char *C, int argc, char **argv)
 {
     static fw_setup s;
@@ -263,10 +274,12 @@ int rl_fw_main(const char *C, int argc, char **argv)
     rl_run_io io;
     const char *config = NULL;
     long max_frames = 0;
-    int rc, done, probe = 0;
+    static rl_record rec;
+    const char *record = NULL;
+    int rc, done, probe = 0, recording = 0;
 
     rl_cli_prefix(C, prefix, sizeof prefix);
-    if ((rc = parse_args(C, prefix, argc, argv, &config, &max_frames, &probe, &done)) != 0 || done)
+    if ((rc = parse_args(C, prefix, argc, argv, &config, &max_frames, &probe, &record, &done)) != 0 || done)
         return rc;
     if (probe)
         return probe_camera(C, config);
@@ -274,6 +287,23 @@ int rl_fw_main(const char *C, int argc, char **argv)
     if (!load_setup(C, config, &s) || !make_recognizer(C, &s, &hr))
         return RL_EXIT_FAIL;
     wire_io(&s, &octx, prefix, &io);
+    if (record != NULL)
+        snprintf(s.cfg.record_dir, sizeof s.cfg.record_dir, "%s", record);
+    if (s.cfg.record_dir[0]) {
+        rl_record_config rcc;
+        char err[512];
+        rl_record_defaults(&rcc);
+        rcc.dir = s.cfg.record_dir;
+        rcc.every = s.cfg.record_every;
+        rcc.max_mb = s.cfg.record_max_mb;
+        if (rl_record_start(&rec, &rcc, s.calib.width, s.calib.height, err, sizeof err) != RL_OK) {
+            rl_heap_recog_free(&hr);
+            return rl_cli_fail(C, RL_EXIT_FAIL, "record: %s", err);
+        }
+        io.frame = record_frame;
+        io.frame_ctx = &rec;
+        recording = 1;
+    }
     rl_run_init(&runner, &io, hr.rec, &s.calib, &s.map, &s.mount, &res);
     runner.offsets = s.cfg.offsets[0] ? &s.offsets : NULL;
     runner.log_interval_us = (uint64_t)(s.cfg.log_interval * 1e6);
@@ -288,6 +318,11 @@ int rl_fw_main(const char *C, int argc, char **argv)
             prefix, runner.frames, runner.poses, runner.statuses, runner.camera_errors,
             runner.bad_frames, runner.camera_timeouts, runner.serial_errors, runner.dropped,
             stop_flag ? (octx.s.broken ? " (standard output closed)" : " (stopped by signal)") : "");
+    if (recording) {
+        rl_record_stop(&rec);
+        fprintf(stderr, "%s: recorded %ld frames (%.1f MB) to %s, %ld skipped while the disk was behind%s%s\n",
+                prefix, rec.saved, rec.bytes / 1e6, rec.dir, rec.skipped, rec.error[0] ? "; " : "", rec.error);
+    }
     rl_heap_recog_free(&hr);
     return 0;
 }

@@ -209,6 +209,8 @@ rl_err rl_run_step(rl_runner *r)
         send_status(r, RL_STATUS_CONFIG_ERROR, 0, 0, f.t_us);
         return RL_OK;
     }
+    if (r->io.frame != NULL)
+        r->io.frame(r->io.frame_ctx, &f);
     e = rl_recog_run(r->rec, &f.img, r->res);
     rl_cam_release(&r->cam, &f);
     if (e != RL_OK) {

@@ -53,6 +53,10 @@ typedef struct {
     rl_clock clock;           /* rl_clock_system(), or a test's */
     void (*log)(void *ctx, const char *line); /* one line, no newline */
     void *log_ctx;
+    /* each frame the loop will recognize, while it is lent (a recorder
+     * copies some; NULL: none) */
+    void (*frame)(void *ctx, const rl_cam_frame *f);
+    void *frame_ctx;
 } rl_run_io;
 
 /* Kinds of log line; each kind is printed at most once per log interval. */

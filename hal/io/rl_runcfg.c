@@ -37,7 +37,8 @@ static rl_err score_key(rl_yaml *y, yaml_node_t *map, const char *key, const cha
 }
 
 static const char *const top_keys[] = {"camera", "calibration", "map", "robot", "offsets",
-                                       "serial", "recognition", "log_interval", NULL};
+                                       "serial", "recognition", "log_interval", "record", NULL};
+static const char *const record_keys[] = {"dir", "every", "max_mb", NULL};
 static const char *const camera_keys[] = {"backend", "device", "width", "height", "rate", "loop",
                                           "exposure", "gain", NULL};
 
@@ -69,6 +70,8 @@ rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
     c->min_score = 0.80;
     c->local_min_score = 0.75;
     c->log_interval = 5.0;
+    c->record_every = 10;
+    c->record_max_mb = 1000;
     snprintf(c->cam_backend, sizeof c->cam_backend, "png");
     if ((e = rl_yaml_load(&y, path, err, errlen)) != RL_OK)
         return e;
@@ -133,6 +136,26 @@ rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
     /* device paths like /dev/serial0 are absolute; relative ones are files */
     if (rl_yaml_get(&y, ser, "baud") != NULL)
         c->baud_line = (int)rl_yaml_get(&y, ser, "baud")->start_mark.line + 1;
+    {
+        yaml_node_t *recd = rl_yaml_get(&y, root, "record");
+        if (recd != NULL && recd->type != YAML_MAPPING_NODE) {
+            e = rl_yaml_fail(&y, recd, "record", RL_EFORMAT, err, errlen, "expected {dir, every, max_mb}");
+            goto out;
+        }
+        if (recd != NULL &&
+            ((e = rl_yaml_only(&y, recd, "record", record_keys, err, errlen)) != RL_OK ||
+             (e = path_key(&y, recd, "dir", "record.dir", 1, path, c->record_dir, sizeof c->record_dir, err,
+                           errlen)) != RL_OK ||
+             (e = rl_yaml_int(&y, recd, "every", "record.every", 0, &c->record_every, err, errlen)) != RL_OK ||
+             (e = rl_yaml_double_in(&y, recd, "max_mb", "record.max_mb", 0, 0.1, 1e7, &c->record_max_mb, err,
+                                    errlen)) != RL_OK))
+            goto out;
+        if (c->record_every < 1 || c->record_every > 100000) {
+            e = rl_yaml_fail(&y, rl_yaml_get(&y, recd, "every"), "record.every", RL_ERANGE, err, errlen,
+                             "%d is out of range (1 .. 100000)", c->record_every);
+            goto out;
+        }
+    }
     if (rec != NULL) {
         s = NULL;
         if ((e = rl_yaml_string(&y, rec, "local", "recognition.local", 0, &s, err, errlen)) != RL_OK)

@@ -22,6 +22,10 @@
  *     min_score: 0.80        # global pass
  *     local_min_score: 0.75  # local pass
  *   log_interval: 5          # seconds between repeats of one kind of log line
+ *   record:                  # optional: save frames while running
+ *     dir: /var/lib/ringloc/drive
+ *     every: 10              # one frame in this many
+ *     max_mb: 1000           # stop recording at this much on disk
  *
  * Relative paths are relative to the configuration file's folder.
  *
@@ -50,6 +54,9 @@ typedef struct {
     rl_local_policy local;
     double min_score, local_min_score;
     double log_interval;
+    char record_dir[512];       /* "" : no recording */
+    int record_every;           /* default 10 */
+    double record_max_mb;       /* default 1000 */
 } rl_runcfg;
 
 /* Read path into c (defaults for what it leaves out). RL_ENOTFOUND,

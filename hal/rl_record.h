@@ -1,0 +1,71 @@
+/* rl_record: saving the camera's frames while the firmware runs, for a
+ * survey (`ringloc survey`) or a bug report, without slowing the pose
+ * frames. Every Nth frame is copied into one of a few buffers made at
+ * start; a writer thread encodes it as PNG into the folder and appends
+ * "name time_ms" to its frames.txt (a list the PNG camera plays back).
+ * When every buffer is still being written, the frame is skipped and
+ * counted, never waited for; at max_mb on disk recording stops.
+ *
+ *   rl_record rec;
+ *   rl_record_config rc;
+ *   char err[256];
+ *   rl_record_defaults(&rc);
+ *   rc.dir = "/var/lib/ringloc/drive";
+ *   if (rl_record_start(&rec, &rc, 640, 480, err, sizeof err) == RL_OK) {
+ *       rl_record_offer(&rec, &frame, 0, 1000);   // from the loop, each frame
+ *       rl_record_stop(&rec);                     // waits for the writer
+ *       use(rec.saved, rec.skipped, rec.bytes);
+ *   }
+ */
+#ifndef RL_RECORD_H
+#define RL_RECORD_H
+
+#include <pthread.h>
+#include <stddef.h>
+#include <stdint.h>
+#include "rl_error.h"
+#include "rl_image.h"
+
+#define RL_RECORD_SLOTS 4
+
+typedef struct {
+    const char *dir;   /* folder, made if missing */
+    int every;         /* keep one frame in this many (default 10) */
+    double max_mb;     /* stop once this much is on disk (default 1000) */
+} rl_record_config;
+
+typedef struct {
+    char dir[512];
+    int every, width, height;
+    uint64_t max_bytes;
+    uint8_t *buf[RL_RECORD_SLOTS];
+    long index[RL_RECORD_SLOTS];
+    uint64_t t_us[RL_RECORD_SLOTS];
+    int full[RL_RECORD_SLOTS];   /* waiting for the writer */
+    pthread_t writer;
+    pthread_mutex_t lock;
+    pthread_cond_t wake;
+    int quit, running, stopped; /* stopped: at max_mb, or a write failed (under lock) */
+    int write_failed;            /* the writer's own: max_mb reached, or a write failed */
+    long offered;
+    /* what happened, read after rl_record_stop */
+    long saved, skipped;
+    uint64_t bytes;
+    char error[1024];            /* why recording stopped early ("" if it did not) */
+} rl_record;
+
+void rl_record_defaults(rl_record_config *c);
+
+/* Make the folder and the buffers for w x h frames, start the writer.
+ * RL_EIO (err names the folder), RL_ENOMEM. */
+RL_CHECK rl_err rl_record_start(rl_record *r, const rl_record_config *c, int w, int h, char *err,
+                                size_t errlen);
+
+/* From the loop: keep the frame if it is one in every N and a buffer is
+ * free (a copy; never blocks on the disk). */
+void rl_record_offer(rl_record *r, const rl_image *img, long index, uint64_t t_us);
+
+/* Write what is waiting, stop the writer, free the buffers. */
+void rl_record_stop(rl_record *r);
+
+#endif
