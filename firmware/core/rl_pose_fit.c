@@ -39,47 +39,33 @@ void rl_pose_fit_camera(const rl_pose_model *md, const double *q, double *Rc, do
 }
 
 /* Where map point (X, Y) on the ceiling appears, normalized; 0 if behind. */
-/* Where ceiling point (X, Y) appears, normalized, for the camera Rc, C;
- * 0 if behind it. */
-static int image_of(const rl_pose_model *md, const double *Rc, const double *C, double X, double Y, double *xn,
-                    double *yn)
+/* What the recognizer measures for the landmark at (X, Y), seen by the
+ * camera Rc, C: the centre of its outer edge, which a tilted view puts off
+ * the image of its centre by (R^2 / 4) times the plane-to-image map's
+ * Laplacian (R the landmark's radius; the mean of the map over the
+ * circle, to second order), from the images of four points R away. */
+static int predict(const rl_pose_model *md, const double *Rc, const double *C, double X, double Y, double *xn,
+                   double *yn)
 {
-    double d[3], f, l, u;
-    d[0] = X - C[0];
-    d[1] = Y - C[1];
-    d[2] = md->height - C[2];
-    f = Rc[0] * d[0] + Rc[3] * d[1] + Rc[6] * d[2];
-    l = Rc[1] * d[0] + Rc[4] * d[1] + Rc[7] * d[2];
-    u = Rc[2] * d[0] + Rc[5] * d[1] + Rc[8] * d[2];
+    double dx = X - C[0], dy = Y - C[1], dz = md->height - C[2], r = md->radius, sx = 0, sy = 0;
+    double f = Rc[0] * dx + Rc[3] * dy + Rc[6] * dz, l = Rc[1] * dx + Rc[4] * dy + Rc[7] * dz,
+           u = Rc[2] * dx + Rc[5] * dy + Rc[8] * dz;
+    int i;
     if (!(u > 1e-6))
         return 0;
     *xn = l / u;
     *yn = -f / u;
-    return 1;
-}
-
-/* What the recognizer measures for the landmark at (X, Y): the centre of
- * its outer edge, which a tilted view puts off the image of its centre by
- * (R^2 / 4) times the plane-to-image map's Laplacian (R the landmark's
- * radius; the mean of the map over the circle, to second order). */
-static int predict(const rl_pose_model *md, const double *q, double X, double Y, double *xn, double *yn)
-{
-    static const double at[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-    double Rc[9], C[3], sx = 0, sy = 0, r = md->radius;
-    int i;
-    rl_pose_fit_camera(md, q, Rc, C);
-    if (!image_of(md, Rc, C, X, Y, xn, yn))
-        return 0;
     if (r <= 0)
         return 1;
     for (i = 0; i < 4; i++) {
-        double x, y;
-        if (!image_of(md, Rc, C, X + r * at[i][0], Y + r * at[i][1], &x, &y))
+        /* the map's step of r along x (rows 0, 1 of Rc's columns) or y */
+        double s = i & 1 ? -r : r, sf = s * Rc[i < 2 ? 0 : 3], sl = s * Rc[i < 2 ? 1 : 4],
+               su = s * Rc[i < 2 ? 2 : 5];
+        if (!(u + su > 1e-6))
             return 0;
-        sx += x - *xn;
-        sy += y - *yn;
+        sx += (l + sl) / (u + su) - *xn;
+        sy += -(f + sf) / (u + su) - *yn;
     }
-    /* the Laplacian from steps of r, times r^2 / 4 */
     *xn += sx / 4;
     *yn += sy / 4;
     return 1;
@@ -88,10 +74,12 @@ static int predict(const rl_pose_model *md, const double *q, double X, double Y,
 /* Weighted residuals: two per landmark (image), two for the tilt prior. */
 static int residuals(const rl_pose_model *md, const rl_pose_pt *pt, int m, const double *q, double *r)
 {
+    double Rc[9], C[3];
     int i;
+    rl_pose_fit_camera(md, q, Rc, C);
     for (i = 0; i < m; i++) {
         double xn, yn;
-        if (!predict(md, q, pt[i].mx, pt[i].my, &xn, &yn))
+        if (!predict(md, Rc, C, pt[i].mx, pt[i].my, &xn, &yn))
             return 0;
         r[2 * i] = (pt[i].xn - xn) / (md->sn * pt[i].noise) * pt[i].w;
         r[2 * i + 1] = (pt[i].yn - yn) / (md->sn * pt[i].noise) * pt[i].w;
@@ -145,21 +133,21 @@ static int solve(double *A, double *b, int n)
 static int normal_equations(const rl_pose_model *md, const rl_pose_pt *pt, int m, const double *q, int nf,
                             double *A, double *g, double *chi2)
 {
-    double r0[2 * RL_MAX_LANDMARKS + 2], rp[2 * RL_MAX_LANDMARKS + 2], rm[2 * RL_MAX_LANDMARKS + 2];
+    double r0[2 * RL_MAX_LANDMARKS + 2], rp[2 * RL_MAX_LANDMARKS + 2];
     double J[RL_POSE_NQ][2 * RL_MAX_LANDMARKS + 2];
     int nr = 2 * m + 2, a, b, k;
     if (!residuals(md, pt, m, q, r0))
         return 0;
     for (a = 0; a < nf; a++) {
-        double qp[RL_POSE_NQ], qm[RL_POSE_NQ], h = 1e-6;
+        /* forward differences: metres and radians alike, a step of 1e-7
+         * is far below what the fit resolves and far above rounding */
+        double qp[RL_POSE_NQ], h = 1e-7;
         memcpy(qp, q, sizeof qp);
-        memcpy(qm, q, sizeof qm);
         qp[a] += h;
-        qm[a] -= h;
-        if (!residuals(md, pt, m, qp, rp) || !residuals(md, pt, m, qm, rm))
+        if (!residuals(md, pt, m, qp, rp))
             return 0;
         for (k = 0; k < nr; k++)
-            J[a][k] = -(rp[k] - rm[k]) / (2 * h); /* d(prediction)/dq, weighted */
+            J[a][k] = -(rp[k] - r0[k]) / h; /* d(prediction)/dq, weighted */
     }
     *chi2 = 0;
     for (k = 0; k < 2 * m; k++)
@@ -208,7 +196,7 @@ int rl_pose_fit_solve(const rl_pose_model *md, rl_pose_pt *pt, int m, int nf, do
         }
         if (!(fabs(q[3]) < 0.5 && fabs(q[4]) < 0.5) || !isfinite(step))
             return 0;
-        if (step < 1e-20 && it >= 3)
+        if (step < 1e-18 && it >= 3)
             break;
     }
     /* covariance: (J'J)^-1 over all five, the prior bounding the tilt */
