@@ -112,7 +112,14 @@ bench: host
 	done
 	@[ -f $(BENCH_DIR)/glare/glare_000.png ] || \
 	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/glare --set glare --count $(BENCH_FRAMES) --seed 3
-	$(BUILD)/tools/ringloc-bench $(BENCH_DIR)/640x480 $(BENCH_DIR)/1280x960 --local $(BENCH_DIR)/glare
+	@[ -f $(BENCH_DIR)/drive/circle_007.png ] || { \
+	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/drive --path straight --frames 8 --rock 0.03 \
+	    --mount 0.12,-0.03,0.02 --write-map $(BENCH_DIR)/drive/map.yaml \
+	    --write-camera $(BENCH_DIR)/drive/camera.yaml --write-robot $(BENCH_DIR)/drive/robot.yaml && \
+	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/drive --path rect --frames 8 --rock 0.03 --mount 0.12,-0.03,0.02 && \
+	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/drive --path circle --frames 8 --rock 0.03 --mount 0.12,-0.03,0.02; }
+	$(BUILD)/tools/ringloc-bench $(BENCH_DIR)/640x480 $(BENCH_DIR)/1280x960 --local $(BENCH_DIR)/glare \
+	  --pose $(BENCH_DIR)/drive
 
 # Real ceiling photos (PNG, never committed: their path on the command
 # line) with ring landmarks and AprilTag twins placed in them.

@@ -18,8 +18,11 @@
 #include <string.h>
 #include <apriltag/apriltag.h>
 #include <apriltag/tag36h11.h>
+#include "rl_camfile.h"
+#include "rl_mapfile.h"
 #include "rl_png.h"
 #include "rl_clock.h"
+#include "rl_robotfile.h"
 #include "rl_report.h"
 #include "bench_real.h"
 
@@ -192,6 +195,69 @@ static int bench_local(const char *dir)
     return 0;
 }
 
+/* The pose solver on a drive's frames (map.yaml, camera.yaml, robot.yaml
+ * and straight/rect/circle_NNN.png, as ringloc-render --path writes):
+ * microseconds per pose against the same frames' recognition. */
+static int bench_pose(const char *dir)
+{
+    static const char *kinds[] = {"straight", "rect", "circle"};
+    static rl_result res;
+    static rl_map map;
+    static double pose_us[MAX_FRAMES], recog_us[MAX_FRAMES];
+    rl_camera cam;
+    rl_mount mount;
+    rl_recog_config cfg;
+    rl_heap_recog hr;
+    char path[2048], err[512];
+    int q, k, n = 0, solved = 0;
+    snprintf(path, sizeof path, "%s/map.yaml", dir);
+    if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK) goto fail;
+    snprintf(path, sizeof path, "%s/camera.yaml", dir);
+    if (rl_camfile_load(path, &cam, err, sizeof err) != RL_OK) goto fail;
+    snprintf(path, sizeof path, "%s/robot.yaml", dir);
+    if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK) goto fail;
+    rl_recog_defaults(&cfg);
+    rl_heap_recog_init(&hr, &cfg);
+    for (q = 0; q < 3; q++)
+        for (k = 0; k < MAX_FRAMES && n < MAX_FRAMES; k++) {
+            rl_image img;
+            rl_pose pose;
+            double t[REPEAT], r[REPEAT];
+            int i, j, bad = 0;
+            snprintf(path, sizeof path, "%s/%s_%03d.png", dir, kinds[q], k);
+            if (rl_png_read_gray(path, &img, err, sizeof err) != RL_OK)
+                break;
+            for (i = 0; i < REPEAT; i++) {
+                uint64_t a;
+                if (rl_report_run(&hr, &img, &res, &r[i]) != RL_OK)
+                    break;
+                a = rl_clock_now_us();
+                for (j = 0; j < 20; j++)
+                    bad |= rl_pose_solve(&cam, &map, &mount, res.landmarks, res.n_landmarks, NULL, &pose) != RL_OK;
+                t[i] = (double)(rl_clock_now_us() - a) / 20.0;
+            }
+            rl_png_free(&img);
+            if (i < REPEAT || bad)
+                continue;
+            solved += pose.tilt_solved;
+            pose_us[n] = least(t, REPEAT);
+            recog_us[n] = least(r, REPEAT);
+            n++;
+        }
+    rl_heap_recog_free(&hr);
+    if (n == 0) {
+        fprintf(stderr, "ringloc-bench: %s: no drive frames (straight/rect/circle_NNN.png)\n", dir);
+        return 1;
+    }
+    printf("pose: %d frames (the tilt solved in %d), %.1f us per pose (median of the least of %d runs), "
+           "%.0f%% of the same frames' recognition (%.1f us)\n", n, solved, median(pose_us, n), REPEAT,
+           100.0 * median(pose_us, n) / median(recog_us, n), median(recog_us, n));
+    return 0;
+fail:
+    fprintf(stderr, "ringloc-bench: %s\n", err);
+    return 1;
+}
+
 int main(int argc, char **argv)
 {
     apriltag_family_t *tf;
@@ -200,8 +266,9 @@ int main(int argc, char **argv)
     int i, rc = 0, header = 0;
     if (argc < 2 || strcmp(argv[1], "--help") == 0) {
         fprintf(argc < 2 ? stderr : stdout,
-                "usage: ringloc-bench DIR... [--local GLARE_DIR] [--real PHOTO_DIR]\n"
+                "usage: ringloc-bench DIR... [--local GLARE_DIR] [--pose DRIVE_DIR] [--real PHOTO_DIR]\n"
                 "  DIR: twin frames from ringloc-render --twin; GLARE_DIR: its --set glare frames;\n"
+                "  DRIVE_DIR: a drive from ringloc-render --path (map, camera, robot files);\n"
                 "  PHOTO_DIR: real ceiling photos (PNG) to place rings and AprilTag twins into\n");
         return argc < 2 ? 2 : 0;
     }
@@ -216,6 +283,10 @@ int main(int argc, char **argv)
     for (i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--real") == 0 && i + 1 < argc) {
             rc |= rl_bench_real(argv[++i], 3, 1, 25.7, td, tf);
+            continue;
+        }
+        if (strcmp(argv[i], "--pose") == 0 && i + 1 < argc) {
+            rc |= bench_pose(argv[++i]);
             continue;
         }
         if (strcmp(argv[i], "--local") == 0 && i + 1 < argc) {
