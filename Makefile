@@ -96,6 +96,9 @@ host-test: host
 
 host-test-asan:
 	@sh tools/deps.sh asan
+	@if [ -f $(BUILD_ASAN)/CMakeCache.txt ] && ! grep -q '^CMAKE_C_COMPILER:.*clang' $(BUILD_ASAN)/CMakeCache.txt; then \
+	  echo "host-test-asan: $(BUILD_ASAN) was configured for another compiler; starting it afresh with clang"; \
+	  rm -rf $(BUILD_ASAN); fi
 	cmake -S . -B $(BUILD_ASAN) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
 	  -DCMAKE_BUILD_TYPE=Debug -DRL_SANITIZE=ON -DRL_NO_VECTOR_EXT=ON -DRL_FIXTURE_COUNT=12 $(CMAKE_ARGS)
 	cmake --build $(BUILD_ASAN) -j $(JOBS)
