@@ -11,20 +11,39 @@ void rl_cam_defaults(rl_cam_config *cc)
     cc->rate = 10.0;
 }
 
+/* The backends by name: how each opens and describes its device. */
+typedef rl_err (*probe_fn)(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx, char *err, size_t errlen);
+static const struct {
+    const char *name;
+    rl_cam_open_fn open;
+    probe_fn probe;
+} backends[] = {
+    {"png", rl_cam_open_png, rl_cam_probe_png},
+    {"v4l2", rl_cam_open_v4l2, rl_cam_probe_v4l2},
+    {"libcamera", rl_cam_open_libcamera, rl_cam_probe_libcamera},
+};
+
+/* The backend cc names (none: png), or -1 with err saying so. */
+static int backend(const rl_cam_config *cc, char *err, size_t errlen)
+{
+    int i;
+    for (i = 0; i < (int)(sizeof backends / sizeof backends[0]); i++)
+        if (cc->backend == NULL ? i == 0 : strcmp(cc->backend, backends[i].name) == 0)
+            return i;
+    snprintf(err, errlen, "camera backend '%s' is not png, v4l2 or libcamera", cc->backend);
+    return -1;
+}
+
 rl_err rl_cam_open(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen)
 {
+    int b;
     memset(c, 0, sizeof *c);
     snprintf(c->name, sizeof c->name, "%s", cc->device ? cc->device : "");
     if (cc->open != NULL)
         return cc->open(c, cc, err, errlen);
-    if (cc->backend == NULL || strcmp(cc->backend, "png") == 0)
-        return rl_cam_open_png(c, cc, err, errlen);
-    if (strcmp(cc->backend, "v4l2") == 0)
-        return rl_cam_open_v4l2(c, cc, err, errlen);
-    if (strcmp(cc->backend, "libcamera") == 0)
-        return rl_cam_open_libcamera(c, cc, err, errlen);
-    snprintf(err, errlen, "camera backend '%s' is not png, v4l2 or libcamera", cc->backend);
-    return RL_EUNSUPPORTED;
+    if ((b = backend(cc, err, errlen)) < 0)
+        return RL_EUNSUPPORTED;
+    return backends[b].open(c, cc, err, errlen);
 }
 
 rl_err rl_cam_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
@@ -51,14 +70,8 @@ void rl_cam_close(rl_cam *c)
 
 rl_err rl_cam_probe(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx, char *err, size_t errlen)
 {
-    if (cc->backend == NULL || strcmp(cc->backend, "png") == 0)
-        return rl_cam_probe_png(cc, line, ctx, err, errlen);
-    if (strcmp(cc->backend, "v4l2") == 0)
-        return rl_cam_probe_v4l2(cc, line, ctx, err, errlen);
-    if (strcmp(cc->backend, "libcamera") == 0)
-        return rl_cam_probe_libcamera(cc, line, ctx, err, errlen);
-    snprintf(err, errlen, "camera backend '%s' is not png, v4l2 or libcamera", cc->backend);
-    return RL_EUNSUPPORTED;
+    int b = backend(cc, err, errlen);
+    return b < 0 ? RL_EUNSUPPORTED : backends[b].probe(cc, line, ctx, err, errlen);
 }
 
 #ifndef RL_HAVE_LIBCAMERA

@@ -75,6 +75,16 @@ static void test_pose_golden_bytes(void **state)
     assert_memory_equal(buf, expect, 29);
 }
 
+/* Feed n bytes to the decoder: how many frames came out (the last in *m). */
+static int push_all(rl_decoder *d, const uint8_t *p, size_t n, rl_msg *m)
+{
+    size_t i;
+    int k = 0;
+    for (i = 0; i < n; i++)
+        k += rl_decoder_push(d, p[i], m);
+    return k;
+}
+
 /* Version 2: the same fields, then the sigmas and the tilt; the decoder
  * reads both versions from one stream. */
 static void test_pose_v2_golden_bytes_and_both_versions_decode(void **state)
@@ -121,14 +131,12 @@ static void test_pose_v2_golden_bytes_and_both_versions_decode(void **state)
     n1 = rl_frame_encode(&m, v1);
     assert_int_equal(n1, 29);
     rl_decoder_init(&d);
-    for (i = 0; i < n1; i++)
-        k += rl_decoder_push(&d, v1[i], &got);
+    k = push_all(&d, v1, n1, &got);
     assert_int_equal(k, 1);
     assert_int_equal(got.version, 1);
     assert_int_equal(got.x_mm, 1203);
     assert_int_equal(got.sigma_x_e4, 0);
-    for (i = 0; i < n2; i++)
-        k += rl_decoder_push(&d, buf[i], &got);
+    k += push_all(&d, buf, n2, &got);
     assert_int_equal(k, 2);
     assert_int_equal(got.version, 2);
     assert_int_equal(got.sigma_x_e4, 11);

@@ -115,24 +115,18 @@ static int load_setup(const char *C, const char *config, fw_setup *s)
     rl_cam_defaults(&s->cam);
     s->cam.backend = cfg->cam_backend;
     s->cam.device = cfg->cam_device;
-    s->cam.width = cfg->cam_width;
-    s->cam.height = cfg->cam_height;
+    /* the calibration's size (a configured one was checked to be it above):
+     * a device streams it, a PNG frame of another size is skipped */
+    s->cam.width = s->calib.width;
+    s->cam.height = s->calib.height;
     s->cam.rate = cfg->cam_rate;
     s->cam.loop = cfg->cam_loop;
     s->cam.exposure_us = (int)(cfg->cam_exposure_us + 0.5);
     s->cam.gain = cfg->cam_gain;
-    /* a camera streams the calibration's size unless told otherwise */
-    if (s->cam.width == 0 && s->cam.height == 0) {
-        s->cam.width = s->calib.width;
-        s->cam.height = s->calib.height;
-    }
     if (strcmp(cfg->cam_backend, "png") == 0) {
         /* files do not appear later, as a device may: a missing or empty
-         * sequence is a configuration error; the frames are the
-         * calibration's size (others are reported and skipped) */
+         * sequence is a configuration error */
         rl_cam probe;
-        s->cam.width = s->calib.width;
-        s->cam.height = s->calib.height;
         if (rl_cam_open(&probe, &s->cam, err, sizeof err) != RL_OK)
             return !rl_cli_fail(C, RL_EXIT_FAIL, "%s: camera.device: %s", config, err);
         rl_cam_close(&probe);

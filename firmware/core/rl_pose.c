@@ -309,16 +309,18 @@ rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mo
     /* the level robot's pose: a rigid fit in the floor plane */
     rigid_fit(pt, m, &q[0], &q[1], &q[2]);
     q[3] = q[4] = 0;
-    c = cos(q[2]);
-    s = sin(q[2]);
-    for (i = 0; i < m; i++) {
-        double fx = q[0] + c * pt[i].px - s * pt[i].py, fy = q[1] + s * pt[i].px + c * pt[i].py;
-        sum2 += (fx - pt[i].mx) * (fx - pt[i].mx) + (fy - pt[i].my) * (fy - pt[i].my);
-    }
-    out->residual = sqrt(sum2 / m);
     if (offsets != NULL) {
-        /* no camera model to fit against: the spread of the fit */
-        double spread = 0, noise = fmax(out->residual, 0.001);
+        /* no camera model to fit against: the misfit and spread of the
+         * rigid fit */
+        double spread = 0, noise;
+        c = cos(q[2]);
+        s = sin(q[2]);
+        for (i = 0; i < m; i++) {
+            double fx = q[0] + c * pt[i].px - s * pt[i].py, fy = q[1] + s * pt[i].px + c * pt[i].py;
+            sum2 += (fx - pt[i].mx) * (fx - pt[i].mx) + (fy - pt[i].my) * (fy - pt[i].my);
+        }
+        out->residual = sqrt(sum2 / m);
+        noise = fmax(out->residual, 0.001);
         for (i = 0; i < m; i++)
             spread += (pt[i].px * pt[i].px + pt[i].py * pt[i].py);
         out->sigma_x = out->sigma_y = noise / sqrt((double)m);

@@ -130,14 +130,27 @@ static int solve(double *A, double *b, int n)
 
 /* The normal matrix J'J and gradient J'r of the free parameters (the
  * first nf of q), J by central differences. 0 if a landmark fell behind. */
-static int normal_equations(const rl_pose_model *md, const rl_pose_pt *pt, int m, const double *q, int nf,
-                            double *A, double *g, double *chi2)
+static int normal_equations(const rl_pose_model *md, rl_pose_pt *pt, int m, const double *q, int nf,
+                            int reweight, double *A, double *g, double *chi2)
 {
     double r0[2 * RL_MAX_LANDMARKS + 2], rp[2 * RL_MAX_LANDMARKS + 2];
     double J[RL_POSE_NQ][2 * RL_MAX_LANDMARKS + 2];
     int nr = 2 * m + 2, a, b, k;
+    if (reweight)
+        for (a = 0; a < m; a++)
+            pt[a].w = 1;
     if (!residuals(md, pt, m, q, r0))
         return 0;
+    if (reweight) {
+        /* Huber weights from these residuals: a centre more than two of
+         * its sigmas off counts less (the residuals are linear in them) */
+        for (a = 0; a < m; a++) {
+            double e = hypot(r0[2 * a], r0[2 * a + 1]);
+            pt[a].w = e > 2.0 ? sqrt(2.0 / e) : 1.0;
+            r0[2 * a] *= pt[a].w;
+            r0[2 * a + 1] *= pt[a].w;
+        }
+    }
     for (a = 0; a < nf; a++) {
         /* forward differences: metres and radians alike, a step of 1e-7
          * is far below what the fit resolves and far above rounding */
@@ -174,21 +187,9 @@ int rl_pose_fit_solve(const rl_pose_model *md, rl_pose_pt *pt, int m, int nf, do
     double A[RL_POSE_NQ * RL_POSE_NQ], g[RL_POSE_NQ];
     int it, a, b, dof;
     for (it = 0; it < 16; it++) {
-        /* Huber weights from the residuals of the last step: a centre
-         * more than two of its sigmas off counts less */
-        if (it >= 2) {
-            double r[2 * RL_MAX_LANDMARKS + 2];
-            for (a = 0; a < m; a++)
-                pt[a].w = 1;
-            if (!residuals(md, pt, m, q, r))
-                return 0;
-            for (a = 0; a < m; a++) {
-                double e = hypot(r[2 * a], r[2 * a + 1]);
-                pt[a].w = e > 2.0 ? sqrt(2.0 / e) : 1.0;
-            }
-        }
         double step = 0;
-        if (!normal_equations(md, pt, m, q, nf, A, g, chi2) || !solve(A, g, nf))
+        /* robust weights from the third step on, once near the answer */
+        if (!normal_equations(md, pt, m, q, nf, it >= 2, A, g, chi2) || !solve(A, g, nf))
             return 0;
         for (a = 0; a < nf; a++) {
             q[a] += g[a];
@@ -200,7 +201,7 @@ int rl_pose_fit_solve(const rl_pose_model *md, rl_pose_pt *pt, int m, int nf, do
             break;
     }
     /* covariance: (J'J)^-1 over all five, the prior bounding the tilt */
-    if (!normal_equations(md, pt, m, q, RL_POSE_NQ, A, g, chi2))
+    if (!normal_equations(md, pt, m, q, RL_POSE_NQ, 0, A, g, chi2))
         return 0;
     for (b = 0; b < RL_POSE_NQ; b++) {
         double Ac[RL_POSE_NQ * RL_POSE_NQ], e[RL_POSE_NQ];
