@@ -6,7 +6,7 @@
 #   make host-test-asan  the same tests built with clang under AddressSanitizer + UBSan (build-asan/),
 #                        with the plain-C matcher (RL_NO_VECTOR_EXT) instead of the vector one
 #   make demo            the firmware on a bundled drive: poses over a pty, report
-#   make bench           recognition benchmarks (figures, not pass/fail)
+#   make bench           recognition, pose and survey benchmarks (figures, not pass/fail)
 #   make bench-real REAL=DIR  ringloc and AprilTag 3 on real photos with landmarks placed in them
 #   make fuzz [FUZZ_SECONDS=60]  libFuzzer (clang, ASan + UBSan) on the recognizer, the PNG
 #                        reader, the YAML loaders, the pose solver, the frame decoder;
@@ -123,6 +123,13 @@ bench: host
 	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/drive --path circle --frames 8 --rock 0.03 --mount 0.12,-0.03,0.02; }
 	$(BUILD)/tools/ringloc-bench $(BENCH_DIR)/640x480 $(BENCH_DIR)/1280x960 --local $(BENCH_DIR)/glare \
 	  --pose $(BENCH_DIR)/drive
+	@[ -f $(BENCH_DIR)/survey/detect.jsonl ] || $(BUILD)/tools/ringloc-survey-synth --out $(BENCH_DIR)/survey
+	@echo "survey: 2,000 landmarks (ring6, ids repeating) from 20,000 frames of detect JSON lines, one thread:"
+	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 $(BUILD)/host/ringloc survey --family ring6 \
+	  --camera $(BENCH_DIR)/survey/camera.yaml --robot $(BENCH_DIR)/survey/robot.yaml --origin 61 --axis 62 \
+	  --out $(BENCH_DIR)/survey/survey.yaml $(BENCH_DIR)/survey/detect.jsonl 2>/dev/null
+	@echo "survey against the site's truth:"
+	@$(BUILD)/tools/ringloc-survey-synth --compare $(BENCH_DIR)/survey/map_true.yaml $(BENCH_DIR)/survey/survey.yaml
 
 # Real ceiling photos (PNG, never committed: their path on the command
 # line) with ring landmarks and AprilTag twins placed in them.

@@ -17,7 +17,7 @@ static const char *detect_help =
     "print one JSON object per image per line:\n"
     "  {\"image\": \"a.png\", \"width\": 640, \"height\": 480, \"elapsed_us\": 412.0,\n"
     "   \"landmarks\": [{\"id\": 25, \"code\": \"11001\", \"u\": 301.42, \"v\": 122.07,\n"
-    "   \"radius\": 25.8, \"score\": 0.93, \"pass\": \"global\", \"complete\": true}],\n"
+    "   \"radius\": 25.83, \"score\": 0.93, \"pass\": \"global\", \"complete\": true}],\n"
     "   \"unidentified\": 1, \"dropped\": {\"regions\": 0, \"lights\": 0,\n"
     "   \"candidates\": 0, \"landmarks\": 0}}\n"
     "elapsed_us is the recognition time in-process, file I/O excluded; dropped\n"

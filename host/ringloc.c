@@ -5,6 +5,17 @@
 #include "rl_cli.h"
 #include "rl_cmd.h"
 
+#ifndef RL_HAVE_SURVEY
+static int no_survey(int argc, char **argv)
+{
+    (void)argc;
+    (void)argv;
+    return rl_cli_fail("survey", RL_EXIT_USAGE, "not in this build (a firmware-only build: the survey runs on a "
+                       "desktop, `make host`)");
+}
+#define rl_cmd_survey no_survey
+#endif
+
 typedef struct {
     const char *name;
     int (*run)(int argc, char **argv);
@@ -21,6 +32,7 @@ static const command commands[] = {
     {"locate", rl_cmd_locate, "the robot's pose from PNG images (JSON lines)"},
     {"calibrate-offsets", rl_cmd_calibrate, "fit the paper's pixel-to-offset maps from a known pose"},
     {"calibrate-mount", rl_cmd_mount, "the camera's fixed tilt on the robot, from recorded frames"},
+    {"survey", rl_cmd_survey, "build the map from recorded frames (no tape measure)"},
 };
 
 static void usage(FILE *out)

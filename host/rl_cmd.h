@@ -18,6 +18,7 @@ int rl_cmd_mount(int argc, char **argv);
 int rl_cmd_run(int argc, char **argv);
 int rl_cmd_monitor(int argc, char **argv);
 int rl_cmd_sitecheck(int argc, char **argv);
+int rl_cmd_survey(int argc, char **argv);
 
 /* The recognition options detect, locate and site-check share (--family
  * 'f', --local 'L', --min-score 's'): 1 if c was one of them (applied),

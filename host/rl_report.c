@@ -42,7 +42,7 @@ void rl_report_json_open(FILE *f, const char *image, const rl_result *res, const
         if (rl_family_code(fam, d->id, code, sizeof code) != RL_OK)
             code[0] = '\0';
         fprintf(f,
-                "%s{\"id\": %d, \"code\": \"%s\", \"u\": %.2f, \"v\": %.2f, \"radius\": %.1f, "
+                "%s{\"id\": %d, \"code\": \"%s\", \"u\": %.2f, \"v\": %.2f, \"radius\": %.2f, "
                 "\"score\": %.3f, \"pass\": \"%s\", \"complete\": %s}",
                 i ? ", " : "", d->id, code, d->u, d->v, d->radius, d->score,
                 d->pass == RL_PASS_LOCAL ? "local" : "global", d->complete ? "true" : "false");

@@ -59,6 +59,13 @@ opt detect min-score "-2 1.5" "$frame"
 opt locate min-score "-2 1.5" --camera "$cam" --map "$map" --robot "$robot" "$frame"
 opt calibrate-offsets degree "0 4 2.5" --map "$map" --robot "$robot" --pose 1,1,0 --out "$T/o.yaml" "$frame"
 opt run frames "-1 2.5" --config "$D/none.yaml"
+sv="--camera $cam --robot $robot --origin 1 --axis 8 --out $T/s.yaml"
+opt survey diameter "0 -0.21 10" $sv "$frame"
+opt survey ceiling-height "0 -2.75" $sv "$frame"
+opt survey axis-distance "0 -1" $sv "$frame"
+opt survey gate "0 -0.3" $sv "$frame"
+opt survey origin "0 -1 2.5" --camera "$cam" --robot "$robot" --axis 8 --out "$T/s.yaml" "$frame"
+opt survey axis "0 -1 2.5" --camera "$cam" --robot "$robot" --origin 1 --out "$T/s.yaml" "$frame"
 opt monitor baud "0 -9600 12345 2.5" "$T/none.bin"
 
 # option values that are not numbers but are still wrong
@@ -112,6 +119,26 @@ file run config
 file gen map --pdf "$T/g.pdf"
 file detect map "$frame"
 file plan camera --landmarks 30 --distance 1.87
+file survey camera --robot "$robot" --origin 1 --axis 8 --out "$T/s.yaml" "$frame"
+file survey robot --camera "$cam" --origin 1 --axis 8 --out "$T/s.yaml" "$frame"
+file survey map $sv "$frame"
+expect 2 "origin" "$R" survey $sv --origin 40 "$frame"
+expect 2 "same landmark" "$R" survey --camera "$cam" --robot "$robot" --origin 8 --axis 8 --out "$T/s.yaml" "$frame"
+expect 2 "not both" "$R" survey $sv --ceiling-height 2.75 --axis-distance 3 "$frame"
+expect 2 "required" "$R" survey --camera "$cam" "$frame"
+# detect's JSON lines as survey frames
+"$R" detect "$frame" >"$T/good.jsonl"
+for bad in 'not json' '[1, 2]' '{"image": "a.png"}' '{"landmarks": [{"id": 40, "u": 1, "v": 2, "radius": 20}]}' \
+    '{"landmarks": [{"id": 5, "u": "x", "v": 2, "radius": 20}]}' '{"width": 320, "height": 240, "landmarks": []}' \
+    '{"landmarks": [{"id": 5, "u": 1e309, "v": 2, "radius": 20}]}' '{"landmarks": [{"id": 5, "u": 1, "v": 2, "radius": -3}]}'; do
+    { cat "$T/good.jsonl"; printf '%s\n' "$bad"; } >"$T/bad.jsonl"
+    desc="$bad" expect 1 "bad.jsonl:2" "$R" survey $sv "$T/bad.jsonl"
+done
+desc=
+: >"$T/empty.jsonl"
+expect 1 "empty.jsonl" "$R" survey $sv "$T/empty.jsonl"
+expect 1 "folder" "$R" survey $sv "$T/folder"
+expect 1 "absent.png" "$R" survey $sv "$T/absent.png"
 for f in "$T/absent.png" "$T/folder" "$T/empty.png" "$T/trunc.png" "$T/half.png" "$T/pnm.png" "$T/garbage.yaml"; do
     expect 1 "$(basename "$f")" "$R" detect "$f"
 done

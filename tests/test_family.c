@@ -120,6 +120,23 @@ static void test_dark_at(void **state)
     assert_int_equal(rl_family_dark_at(&f, 25, 0.0), 1);
 }
 
+/* The outer black band's inner edge, by hand for ring5 (zone k's outer
+ * radius 0.8 sqrt((6 - k) / 5)): 00111 (7) white zones 1-2 inside the ring,
+ * 0.180 R wide: 0.8; 01010 (10) zone 1 white but only 0.085 R: none;
+ * 10011 (19) black zone 1, white 2-3 (0.209 R): 0.7155; 11110 (30) the
+ * white central disk: 0.3578. */
+static void band_inner_by_hand(void **state)
+{
+    rl_family f;
+    (void)state;
+    assert_int_equal(rl_family_init(&f, 5), RL_OK);
+    assert_true(fabs(rl_family_band_inner(&f, 7) - 0.8) < 1e-9);
+    assert_true(rl_family_band_inner(&f, 10) == 0.0);
+    assert_true(fabs(rl_family_band_inner(&f, 19) - 0.8 * sqrt(4.0 / 5)) < 1e-9);
+    assert_true(fabs(rl_family_band_inner(&f, 30) - 0.8 * sqrt(1.0 / 5)) < 1e-9);
+    assert_true(rl_family_band_inner(&f, 31) == 0.0); /* not an id */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -128,6 +145,7 @@ int main(void)
         cmocka_unit_test(test_round_trip_every_id_every_family),
         cmocka_unit_test(test_radii_equal_area),
         cmocka_unit_test(test_dark_at),
+        cmocka_unit_test(band_inner_by_hand),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

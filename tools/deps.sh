@@ -33,6 +33,7 @@ need_pkg() { # package-name test-command...
     fi
 }
 have() { command -v "$1"; }
+ceres() { ls /usr/lib/*/cmake/Ceres/CeresConfig.cmake /usr/lib/cmake/Ceres/CeresConfig.cmake 2>/dev/null | grep -q .; }
 pc() { have pkg-config && pkg-config --exists "$1"; }
 
 fuzzer() { printf 'int LLVMFuzzerTestOneInput(const unsigned char *d, unsigned long n) { return 0; }\n' |
@@ -59,6 +60,8 @@ if [ "$profile" != fuzz ]; then
     need_pkg libcairo2-dev pc cairo
     need_pkg libopencv-dev pc opencv4
     need_pkg libapriltag-dev pc apriltag
+    need_pkg libceres-dev ceres
+    need_pkg libjson-c-dev pc json-c
     need_pkg poppler-utils have pdftoppm
 
     need_pkg file have file

@@ -134,3 +134,39 @@ void rl_camera_unproject(const rl_camera *cam, double u, double v, double *x, do
 {
     rl_camera_undistort(cam, (u - cam->cx) / cam->fx, (v - cam->cy) / cam->fy, x, y);
 }
+
+/* The edge's centre is the mean of D(c + R u) over the circle: D(c) plus
+ * R^2 / 4 times D's Laplacian (a five-point stencil here). */
+void rl_camera_centre(const rl_camera *cam, double u, double v, double radius, double *x, double *y)
+{
+    double xd = (u - cam->cx) / cam->fx, yd = (v - cam->cy) / cam->fy, x0, y0, h = 0.01, k;
+    double d[5][2];
+    static const double at[5][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    int i;
+    rl_camera_undistort(cam, xd, yd, &x0, &y0);
+    if (cam->model == RL_DIST_NONE) {
+        *x = x0;
+        *y = y0;
+        return;
+    }
+    for (i = 0; i < 5; i++)
+        rl_camera_distort(cam, x0 + h * at[i][0], y0 + h * at[i][1], &d[i][0], &d[i][1]);
+    k = radius * radius / 4.0 / (h * h);
+    xd -= k * (d[1][0] + d[2][0] + d[3][0] + d[4][0] - 4 * d[0][0]);
+    yd -= k * (d[1][1] + d[2][1] + d[3][1] + d[4][1] - 4 * d[0][1]);
+    rl_camera_undistort(cam, xd, yd, x, y);
+}
+
+double rl_camera_radius(const rl_camera *cam, double u, double v, double r)
+{
+    static const double at[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    double x0, y0, sum = 0;
+    int i;
+    rl_camera_unproject(cam, u, v, &x0, &y0);
+    for (i = 0; i < 4; i++) {
+        double x, y;
+        rl_camera_unproject(cam, u + r * at[i][0], v + r * at[i][1], &x, &y);
+        sum += hypot(x - x0, y - y0);
+    }
+    return sum / 4;
+}

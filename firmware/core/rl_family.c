@@ -99,3 +99,20 @@ int rl_family_dark_at(const rl_family *fam, int id, double rho)
         k = 1;
     return rl_family_bit(fam, id, k);
 }
+
+double rl_family_band_inner(const rl_family *fam, int id)
+{
+    double rad[RL_MAX_BITS + 2];
+    int k = 1, j;
+    if (!rl_family_valid(fam, id))
+        return 0;
+    rl_family_radii(fam, rad);
+    while (k <= fam->bits && rl_family_bit(fam, id, k))
+        k++;
+    if (k > fam->bits)
+        return 0;
+    for (j = k; j <= fam->bits && !rl_family_bit(fam, id, j); j++)
+        ;
+    /* zone k's outer radius is rad[k]; white down to zone j's outer one */
+    return rad[k] - (j > fam->bits ? 0.0 : rad[j]) >= RL_FAMILY_BAND_WHITE ? rad[k] : 0.0;
+}

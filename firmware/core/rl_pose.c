@@ -60,72 +60,12 @@ void rl_pose_ceiling_point(const rl_camera *cam, const rl_offsets *offsets, doub
     }
 }
 
-/* Least-squares rotation and translation taking p onto m (2-D Procrustes
- * without scale): the rotation angle has a closed form. */
-static void rigid_fit(const rl_pose_pt *pt, int n, double *tx, double *ty, double *yaw)
-{
-    double pcx = 0, pcy = 0, mcx = 0, mcy = 0, sc = 0, ss = 0, c, s;
-    int i;
-    for (i = 0; i < n; i++) {
-        pcx += pt[i].px;
-        pcy += pt[i].py;
-        mcx += pt[i].mx;
-        mcy += pt[i].my;
-    }
-    pcx /= n;
-    pcy /= n;
-    mcx /= n;
-    mcy /= n;
-    for (i = 0; i < n; i++) {
-        double ax = pt[i].px - pcx, ay = pt[i].py - pcy, bx = pt[i].mx - mcx, by = pt[i].my - mcy;
-        sc += ax * bx + ay * by;
-        ss += ax * by - ay * bx;
-    }
-    *yaw = atan2(ss, sc);
-    c = cos(*yaw);
-    s = sin(*yaw);
-    *tx = mcx - (c * pcx - s * pcy);
-    *ty = mcy - (s * pcx + c * pcy);
-}
-
-/* The ideal (undistorted) image of a landmark's centre from the centre of
- * its outer edge. Through a distorting lens a circle's edge is centred
- * off the image of its centre, by (R^2 / 4) times the lens map's
- * Laplacian (R: the radius in normalized units; the mean of D(c + R u)
- * over the circle): taken off before undistorting. */
-static void centre_ray(const rl_camera *cam, double u, double v, double radius, double *x, double *y)
-{
-    double xd = (u - cam->cx) / cam->fx, yd = (v - cam->cy) / cam->fy, x0, y0, h = 0.01, k;
-    double d[5][2];
-    static const double at[5][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-    int i;
-    rl_camera_undistort(cam, xd, yd, &x0, &y0);
-    if (cam->model == RL_DIST_NONE) {
-        *x = x0;
-        *y = y0;
-        return;
-    }
-    for (i = 0; i < 5; i++)
-        rl_camera_distort(cam, x0 + h * at[i][0], y0 + h * at[i][1], &d[i][0], &d[i][1]);
-    k = radius * radius / 4.0 / (h * h);
-    xd -= k * (d[1][0] + d[2][0] + d[3][0] + d[4][0] - 4 * d[0][0]);
-    yd -= k * (d[1][1] + d[2][1] + d[3][1] + d[4][1] - 4 * d[0][1]);
-    rl_camera_undistort(cam, xd, yd, x, y);
-}
-
-/* The mount's rotation (its tilt about the robot's axes, then the
- * camera's yaw), the ceiling and the centre noise. */
+/* The mount's rotation, the ceiling and the centre noise. */
 static void make_model(const rl_camera *cam, const rl_map *map, const rl_mount *mount, rl_pose_model *md)
 {
-    double T[9], Y[9];
-    rl_pose_fit_rotation(0, mount->pitch, mount->roll, T);
-    rl_pose_fit_rotation(mount->yaw, 0, 0, Y);
-    rl_pose_fit_mul(T, Y, md->Rm);
-    md->mount = mount;
-    md->height = map->ceiling_height;
+    rl_pose_fit_model(md, mount, map->ceiling_height, 0.5 * map->diameter);
     md->sn = RL_POSE_PIXEL_SIGMA / sqrt(cam->fx * cam->fy);
     md->prior = RL_POSE_TILT_PRIOR;
-    md->radius = 0.5 * map->diameter;
 }
 
 /* One detection as a point: its ray and, for a level robot, where that
@@ -144,16 +84,9 @@ static int observe(const rl_camera *cam, const rl_map *map, const rl_pose_model 
         p->xn = p->yn = 0;
     } else {
         /* the ray, tilted by the mount, meets the ceiling of a level robot */
-        const double *R = md->Rm;
-        double bf, bl, bu;
-        centre_ray(cam, d->u, d->v, 0.5 * map->diameter / Z, &p->xn, &p->yn);
-        bf = R[0] * -p->yn + R[1] * p->xn + R[2];
-        bl = R[3] * -p->yn + R[4] * p->xn + R[5];
-        bu = R[6] * -p->yn + R[7] * p->xn + R[8];
-        if (!(bu > 1e-6))
+        rl_camera_centre(cam, d->u, d->v, 0.5 * map->diameter / Z, &p->xn, &p->yn);
+        if (!rl_pose_fit_level_point(md, Z, p->xn, p->yn, &p->px, &p->py))
             return 0;
-        p->px = mount->x + Z / bu * bf;
-        p->py = mount->y + Z / bu * bl;
     }
     p->id = d->id;
     /* a centre from an arc the border left is less sure */
@@ -307,7 +240,7 @@ rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mo
     if (m < 2)
         return RL_ETOOFEW;
     /* the level robot's pose: a rigid fit in the floor plane */
-    rigid_fit(pt, m, &q[0], &q[1], &q[2]);
+    rl_pose_fit_rigid(pt, m, &q[0], &q[1], &q[2]);
     q[3] = q[4] = 0;
     if (offsets != NULL) {
         /* no camera model to fit against: the misfit and spread of the

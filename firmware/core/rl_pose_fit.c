@@ -26,6 +26,60 @@ void rl_pose_fit_rotation(double yaw, double pitch, double roll, double *R)
     R[8] = cy * cx;
 }
 
+void rl_pose_fit_model(rl_pose_model *md, const rl_mount *mount, double height, double radius)
+{
+    double T[9], Y[9];
+    /* the mount's tilt about the robot's axes, then the camera's yaw */
+    rl_pose_fit_rotation(0, mount->pitch, mount->roll, T);
+    rl_pose_fit_rotation(mount->yaw, 0, 0, Y);
+    rl_pose_fit_mul(T, Y, md->Rm);
+    md->mount = mount;
+    md->height = height;
+    md->radius = radius;
+    md->sn = 1.0;
+    md->prior = 1.0;
+}
+
+int rl_pose_fit_level_point(const rl_pose_model *md, double Z, double xn, double yn, double *px, double *py)
+{
+    const double *R = md->Rm;
+    double bf = R[0] * -yn + R[1] * xn + R[2], bl = R[3] * -yn + R[4] * xn + R[5],
+           bu = R[6] * -yn + R[7] * xn + R[8];
+    if (!(bu > 1e-6))
+        return 0;
+    *px = md->mount->x + Z / bu * bf;
+    *py = md->mount->y + Z / bu * bl;
+    return 1;
+}
+
+/* Least-squares rotation and translation taking p onto m (2-D Procrustes
+ * without scale): the rotation angle has a closed form. */
+void rl_pose_fit_rigid(const rl_pose_pt *pt, int n, double *tx, double *ty, double *yaw)
+{
+    double pcx = 0, pcy = 0, mcx = 0, mcy = 0, sc = 0, ss = 0, c, s;
+    int i;
+    for (i = 0; i < n; i++) {
+        pcx += pt[i].px;
+        pcy += pt[i].py;
+        mcx += pt[i].mx;
+        mcy += pt[i].my;
+    }
+    pcx /= n;
+    pcy /= n;
+    mcx /= n;
+    mcy /= n;
+    for (i = 0; i < n; i++) {
+        double ax = pt[i].px - pcx, ay = pt[i].py - pcy, bx = pt[i].mx - mcx, by = pt[i].my - mcy;
+        sc += ax * bx + ay * by;
+        ss += ax * by - ay * bx;
+    }
+    *yaw = atan2(ss, sc);
+    c = cos(*yaw);
+    s = sin(*yaw);
+    *tx = mcx - (c * pcx - s * pcy);
+    *ty = mcy - (s * pcx + c * pcy);
+}
+
 
 void rl_pose_fit_camera(const rl_pose_model *md, const double *q, double *Rc, double *C)
 {
@@ -38,13 +92,12 @@ void rl_pose_fit_camera(const rl_pose_model *md, const double *q, double *Rc, do
     C[2] = Rr[6] * m->x + Rr[7] * m->y + Rr[8] * m->z;
 }
 
-/* Where map point (X, Y) on the ceiling appears, normalized; 0 if behind. */
 /* What the recognizer measures for the landmark at (X, Y), seen by the
  * camera Rc, C: the centre of its outer edge, which a tilted view puts off
  * the image of its centre by (R^2 / 4) times the plane-to-image map's
  * Laplacian (R the landmark's radius; the mean of the map over the
  * circle, to second order), from the images of four points R away. */
-static int predict(const rl_pose_model *md, const double *Rc, const double *C, double X, double Y, double *xn,
+int rl_pose_fit_predict(const rl_pose_model *md, const double *Rc, const double *C, double X, double Y, double *xn,
                    double *yn)
 {
     double dx = X - C[0], dy = Y - C[1], dz = md->height - C[2], r = md->radius, sx = 0, sy = 0;
@@ -79,7 +132,7 @@ static int residuals(const rl_pose_model *md, const rl_pose_pt *pt, int m, const
     rl_pose_fit_camera(md, q, Rc, C);
     for (i = 0; i < m; i++) {
         double xn, yn;
-        if (!predict(md, Rc, C, pt[i].mx, pt[i].my, &xn, &yn))
+        if (!rl_pose_fit_predict(md, Rc, C, pt[i].mx, pt[i].my, &xn, &yn))
             return 0;
         r[2 * i] = (pt[i].xn - xn) / (md->sn * pt[i].noise) * pt[i].w;
         r[2 * i + 1] = (pt[i].yn - yn) / (md->sn * pt[i].noise) * pt[i].w;

@@ -41,8 +41,26 @@ typedef struct {
 void rl_pose_fit_mul(const double *a, const double *b, double *c);
 void rl_pose_fit_rotation(double yaw, double pitch, double roll, double *R);
 
+/* The mount's rotation Rm, the ceiling's height and the landmarks'
+ * radius into md (sn and prior 1: the caller's to set). */
+void rl_pose_fit_model(rl_pose_model *md, const rl_mount *mount, double height, double radius);
+
+/* Where the ray of normalized image point (xn, yn) meets the ceiling Z
+ * above the camera of a level robot, in the robot frame; 0 if it misses. */
+int rl_pose_fit_level_point(const rl_pose_model *md, double Z, double xn, double yn, double *px, double *py);
+
+/* Least-squares rotation and translation taking the points p onto m
+ * (2-D Procrustes without scale). */
+void rl_pose_fit_rigid(const rl_pose_pt *pt, int n, double *tx, double *ty, double *yaw);
+
 /* The camera's rotation (its axes in the map) and centre for robot pose q. */
 void rl_pose_fit_camera(const rl_pose_model *md, const double *q, double *Rc, double *C);
+
+/* Where the recognizer sees the centre of the landmark at map (X, Y)
+ * from the camera Rc, C (normalized, the tilted view's edge-centre offset
+ * included); 0 if behind the camera. */
+int rl_pose_fit_predict(const rl_pose_model *md, const double *Rc, const double *C, double X, double Y, double *xn,
+                        double *yn);
 
 /* Fit the first nf (3: a level robot, 5: tilted too) parameters of q from
  * its start; the covariance of all five into cov (the fixed ones through

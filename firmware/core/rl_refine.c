@@ -117,3 +117,47 @@ void rl_refine_radius_shaped(const rl_image *img, double cx, double cy, const rl
             return;
         }
 }
+
+/* The profile's halfway crossing going from index `from` to `to`; 0 if none. */
+static int crossing(const double *prof, int from, int to, double half, double lo, double step, double *at)
+{
+    int i, dir = to > from ? 1 : -1;
+    for (i = from; i != to; i += dir)
+        if ((prof[i] - half) * (prof[i + dir] - half) <= 0 && prof[i] != prof[i + dir]) {
+            *at = lo + (i + dir * (half - prof[i]) / (prof[i + dir] - prof[i])) * step;
+            return 1;
+        }
+    return 0;
+}
+
+void rl_refine_radius_band(const rl_image *img, const rl_family *fam, int id, double cx, double cy, double *r)
+{
+    double rho = rl_family_band_inner(fam, id), prof[EDGE_SAMPLES], lo, hi, step, black = 1e9, white = -1e9,
+           half, ro, ri, est;
+    int i, iin, iout, imin = 0;
+    if (!(rho > 0))
+        return;
+    lo = (rho - 0.6 * RL_FAMILY_BAND_WHITE) * *r;
+    hi = 1.3 * *r;
+    step = (hi - lo) / (EDGE_SAMPLES - 1);
+    if (!mean_profile(img, cx, cy, NULL, lo, step, prof))
+        return;
+    iin = (int)((rho * *r - lo) / step);
+    iout = (int)((*r - lo) / step);
+    for (i = iin; i <= iout && i < EDGE_SAMPLES; i++)
+        if (prof[i] < black) {
+            black = prof[i];
+            imin = i;
+        }
+    for (i = iout; i < EDGE_SAMPLES; i++)
+        if (prof[i] > white)
+            white = prof[i];
+    if (white - black < 10.0)
+        return;
+    half = 0.5 * (black + white);
+    if (!crossing(prof, imin, EDGE_SAMPLES - 1, half, lo, step, &ro) || !crossing(prof, imin, 0, half, lo, step, &ri))
+        return;
+    est = (ro + ri) / (1.0 + rho);
+    if (fabs(est - *r) < 0.05 * *r)
+        *r = est;
+}

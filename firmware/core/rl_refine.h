@@ -7,6 +7,7 @@
 #ifndef RL_REFINE_H
 #define RL_REFINE_H
 
+#include "rl_family.h"
 #include "rl_image.h"
 #include "rl_profile.h"
 #include "rl_recog.h"
@@ -24,6 +25,15 @@ void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, doub
  * a threshold crossing, not the 50% one). Only rays that stay inside the
  * image are used; *r is kept when there is no clear edge. */
 void rl_refine_radius(const rl_image *img, double cx, double cy, double *r);
+
+/* The outer radius of an identified landmark from both edges of its
+ * outermost black band (the outer ring and the black code zones just
+ * inside it), each at the halfway crossing: a tone curve or a blur that
+ * moves one edge's crossing moves the other's the opposite way, so the
+ * band's mid radius, rescaled, is the printed radius unbiased. Only when
+ * the band's inner edge is clear (rl_family_band_inner); *r is kept
+ * otherwise. */
+void rl_refine_radius_band(const rl_image *img, const rl_family *fam, int id, double cx, double cy, double *r);
 
 /* The same with radii in the shape's metric (rl_profile.h). */
 void rl_refine_radius_shaped(const rl_image *img, double cx, double cy, const rl_shape *sh,

@@ -55,4 +55,16 @@ void rl_camera_project(const rl_camera *cam, double x, double y, double *u, doub
 /* Pixel -> normalized ideal coordinates (distortion removed). */
 void rl_camera_unproject(const rl_camera *cam, double u, double v, double *x, double *y);
 
+/* The ideal normalized image of a circle's centre from the pixel centre
+ * of its outer edge (u, v), radius its radius in normalized units.
+ * Through a distorting lens the edge is centred off the centre's image by
+ * (radius^2 / 4) times the lens map's Laplacian; taken off, then
+ * undistorted. */
+void rl_camera_centre(const rl_camera *cam, double u, double v, double radius, double *x, double *y);
+
+/* The radius in normalized ideal units of a circle whose image has
+ * radius r px about (u, v): the mean distance of the four points r px
+ * left, right, above and below, undistorted. */
+double rl_camera_radius(const rl_camera *cam, double u, double v, double r);
+
 #endif

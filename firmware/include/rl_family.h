@@ -55,6 +55,12 @@ RL_CHECK rl_err rl_family_id(const rl_family *fam, const char *code, int *id);
  * code zone k, so r[N + 1] = 0. `r` holds N + 2 values. */
 void rl_family_radii(const rl_family *fam, double *r);
 
+/* The inner radius (in R) of the id's outermost black band (the outer
+ * ring and the black code zones just inside it) when its inner edge is
+ * clear: the white inside at least RL_FAMILY_BAND_WHITE R wide; else 0. */
+#define RL_FAMILY_BAND_WHITE 0.12
+double rl_family_band_inner(const rl_family *fam, int id);
+
 /* Colour of a point at normalized radius rho = distance / R: 1 black,
  * 0 white (outside the landmark is white). */
 int rl_family_dark_at(const rl_family *fam, int id, double rho);

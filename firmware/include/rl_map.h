@@ -16,6 +16,7 @@
 typedef struct {
     int id;      /* landmark id in the map's family */
     double x, y; /* centre on the ceiling, map frame, metres */
+    double sigma_x, sigma_y; /* their standard deviations from a survey, m; 0: not known */
 } rl_map_landmark;
 
 typedef struct {

@@ -6,7 +6,7 @@
 #include "rl_yaml.h"
 
 static const char *const top_keys[] = {"family", "diameter", "ceiling_height", "landmarks", NULL};
-static const char *const landmark_keys[] = {"id", "x", "y", NULL};
+static const char *const landmark_keys[] = {"id", "x", "y", "sigma_x", "sigma_y", NULL};
 
 rl_err rl_mapfile_load(const char *path, rl_map *map, char *err, size_t errlen)
 {
@@ -84,6 +84,12 @@ rl_err rl_mapfile_load(const char *path, rl_map *map, char *err, size_t errlen)
         if ((e = rl_yaml_double_in(&y, item, "y", label, 1, -RL_MAP_MAX_COORD, RL_MAP_MAX_COORD, &lm->y,
                                    err, errlen)) != RL_OK)
             goto out;
+        snprintf(label, sizeof label, "landmarks[%d].sigma_x", i);
+        if ((e = rl_yaml_double_in(&y, item, "sigma_x", label, 0, 0.0, 10.0, &lm->sigma_x, err, errlen)) != RL_OK)
+            goto out;
+        snprintf(label, sizeof label, "landmarks[%d].sigma_y", i);
+        if ((e = rl_yaml_double_in(&y, item, "sigma_y", label, 0, 0.0, 10.0, &lm->sigma_y, err, errlen)) != RL_OK)
+            goto out;
         map->count = i + 1;
     }
     e = rl_map_check(map, &bad);
@@ -103,6 +109,23 @@ out:
     return e;
 }
 
+void rl_mapfile_put_header(FILE *f, const rl_family *fam, double diameter, double ceiling_height)
+{
+    fprintf(f, "family: ring%d          # shared/landmark-spec.md\n", fam->bits);
+    fprintf(f, "diameter: %.4f        # printed outer diameter, metres\n", diameter);
+    fprintf(f, "ceiling_height: %.5f  # ceiling above the floor, metres\n", ceiling_height);
+    fprintf(f, "landmarks:\n");
+}
+
+void rl_mapfile_put_landmark(FILE *f, const rl_map_landmark *lm)
+{
+    if (lm->sigma_x > 0 || lm->sigma_y > 0)
+        fprintf(f, "  - {id: %d, x: %.5f, y: %.5f, sigma_x: %.5f, sigma_y: %.5f}\n", lm->id, lm->x, lm->y,
+                lm->sigma_x, lm->sigma_y);
+    else
+        fprintf(f, "  - {id: %d, x: %.4f, y: %.4f}\n", lm->id, lm->x, lm->y);
+}
+
 rl_err rl_mapfile_save(const char *path, const rl_map *map, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "w");
@@ -111,13 +134,9 @@ rl_err rl_mapfile_save(const char *path, const rl_map *map, char *err, size_t er
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
         return RL_EIO;
     }
-    fprintf(f, "family: ring%d          # shared/landmark-spec.md\n", map->family.bits);
-    fprintf(f, "diameter: %.4f        # printed outer diameter, metres\n", map->diameter);
-    fprintf(f, "ceiling_height: %.4f  # ceiling above the floor, metres\n", map->ceiling_height);
-    fprintf(f, "landmarks:\n");
+    rl_mapfile_put_header(f, &map->family, map->diameter, map->ceiling_height);
     for (i = 0; i < map->count; i++)
-        fprintf(f, "  - {id: %d, x: %.4f, y: %.4f}\n", map->lm[i].id, map->lm[i].x,
-                map->lm[i].y);
+        rl_mapfile_put_landmark(f, &map->lm[i]);
     if (ferror(f) | (fclose(f) != 0)) {
         snprintf(err, errlen, "%s: write failed", path);
         return RL_EIO;

@@ -196,19 +196,34 @@ static double rect_gap(const object *o, double X, double Y)
     return sqrt(lx * lx + ly * ly);
 }
 
-static double radiance(const scene *s, double X, double Y)
+/* The objects that can touch each 0.1 m cell of the frame's view of the
+ * ceiling (in the scene's order), so that a sample looks at a few of
+ * them, not all: the picture is the same. */
+#define GRID_CELL 0.1
+#define GRID_MAX 128
+typedef struct {
+    double x0, y0;
+    int nx, ny;
+    int start[GRID_MAX * GRID_MAX + 1];
+    int *idx;
+} obj_grid;
+
+static double radiance(const scene *s, const obj_grid *g, double X, double Y)
 {
     double v = tile_radiance(s, X, Y), halo = 0;
-    int i;
+    int gx = (int)floor((X - g->x0) / GRID_CELL), gy = (int)floor((Y - g->y0) / GRID_CELL), k, k0, k1;
+    int all = gx < 0 || gy < 0 || gx >= g->nx || gy >= g->ny;
+    k0 = all ? 0 : g->start[gy * g->nx + gx];
+    k1 = all ? s->n : g->start[gy * g->nx + gx + 1];
     /* objects later in the list lie on top */
-    for (i = 0; i < s->n; i++) {
-        const object *o = &s->obj[i];
+    for (k = k0; k < k1; k++) {
+        const object *o = &s->obj[all ? k : g->idx[k]];
         double dx = X - o->x, dy = Y - o->y, reach = o->a > o->b ? o->a : o->b;
         double c, sn, r;
         if ((o->kind == OBJ_LIGHT || o->kind == OBJ_DOWNLIGHT) &&
             fabs(dx) < reach + 8 * s->halo_sigma && fabs(dy) < reach + 8 * s->halo_sigma) {
-            double g = o->kind == OBJ_LIGHT ? rect_gap(o, X, Y) : fmax(0, sqrt(dx * dx + dy * dy) - 0.8 * o->a);
-            halo += s->halo_amp * exp(-g / s->halo_sigma) * (o->kind == OBJ_LIGHT ? 1.0 : 0.4);
+            double gap = o->kind == OBJ_LIGHT ? rect_gap(o, X, Y) : fmax(0, sqrt(dx * dx + dy * dy) - 0.8 * o->a);
+            halo += s->halo_amp * exp(-gap / s->halo_sigma) * (o->kind == OBJ_LIGHT ? 1.0 : 0.4);
         }
         if (fabs(dx) > reach * 1.5 || fabs(dy) > reach * 1.5)
             continue;
@@ -335,12 +350,77 @@ static double illumination(const scene *s, double du, double dv)
     return f;
 }
 
+/* The grid over what the frame sees (every 4th pixel's ray, moved both
+ * ways by the motion blur, and a margin). 0, or -1 out of memory. */
+static int build_grid(const scene *s, obj_grid *g)
+{
+    int W = s->cam.width, H = s->cam.height, x, y, i, cx, cy, pass, n = 0;
+    double b[4] = {1e30, 1e30, -1e30, -1e30}, m = 0.5 * s->motion + 0.05;
+    for (y = 0; y < H; y += 4)
+        for (x = 0; x < W; x += 4) {
+            const double *r = ray_table + 2 * (((size_t)y * W + x) * SUB * SUB);
+            double X, Y;
+            ray_to_map(s, r[0], r[1], 0, 0, &X, &Y);
+            b[0] = fmin(b[0], X), b[1] = fmin(b[1], Y), b[2] = fmax(b[2], X), b[3] = fmax(b[3], Y);
+        }
+    g->x0 = b[0] - m;
+    g->y0 = b[1] - m;
+    g->nx = (int)ceil((b[2] + m - g->x0) / GRID_CELL);
+    g->ny = (int)ceil((b[3] + m - g->y0) / GRID_CELL);
+    g->idx = NULL;
+    if (!(g->nx > 0 && g->ny > 0 && g->nx <= GRID_MAX && g->ny <= GRID_MAX)) {
+        g->nx = g->ny = 0; /* every sample looks at every object */
+        return 0;
+    }
+    /* count, then fill (pass 1), each object into the cells its reach touches */
+    for (pass = 0; pass < 2; pass++) {
+        if (pass == 1) {
+            for (i = 0, n = 0; i < g->nx * g->ny; i++) {
+                int c = g->start[i];
+                g->start[i] = n;
+                n += c;
+            }
+            g->start[g->nx * g->ny] = n;
+            g->idx = malloc(sizeof(int) * (size_t)(n + 1));
+            if (!g->idx)
+                return -1;
+        } else {
+            memset(g->start, 0, sizeof(int) * (size_t)(g->nx * g->ny + 1));
+        }
+        for (i = 0; i < s->n; i++) {
+            const object *o = &s->obj[i];
+            double reach = o->a > o->b ? o->a : o->b, e = reach * 1.5;
+            int x0, x1, y0, y1;
+            if (o->kind == OBJ_LIGHT || o->kind == OBJ_DOWNLIGHT)
+                e = fmax(e, reach + 8 * s->halo_sigma);
+            e += 1e-9;
+            x0 = (int)floor((o->x - e - g->x0) / GRID_CELL), x1 = (int)floor((o->x + e - g->x0) / GRID_CELL);
+            y0 = (int)floor((o->y - e - g->y0) / GRID_CELL), y1 = (int)floor((o->y + e - g->y0) / GRID_CELL);
+            for (cy = y0 < 0 ? 0 : y0; cy <= y1 && cy < g->ny; cy++)
+                for (cx = x0 < 0 ? 0 : x0; cx <= x1 && cx < g->nx; cx++) {
+                    int c = cy * g->nx + cx;
+                    if (pass == 0)
+                        g->start[c]++;
+                    else
+                        g->idx[g->start[c]++] = i;
+                }
+        }
+        if (pass == 1) /* start[c] now ends cell c: shift back */
+            for (i = g->nx * g->ny; i > 0; i--)
+                g->start[i] = g->start[i - 1];
+        if (pass == 1)
+            g->start[0] = 0;
+    }
+    return 0;
+}
+
 static int render(const scene *s, uint8_t *out)
 {
     int W = s->cam.width, H = s->cam.height, x, y, a, b;
     double *lin = malloc(sizeof(double) * (size_t)W * H);
     double rmax = sqrt(s->cam.cx * s->cam.cx + s->cam.cy * s->cam.cy);
-    if (!lin || build_rays(&s->cam) != 0)
+    static obj_grid grid;
+    if (!lin || build_rays(&s->cam) != 0 || build_grid(s, &grid) != 0)
         return -1;
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
@@ -352,7 +432,7 @@ static int render(const scene *s, uint8_t *out)
                     double t = (b * SUB + a + 0.5) / (SUB * SUB) - 0.5, X, Y;
                     ray_to_map(s, r[0], r[1], t * s->motion * cos(s->motion_dir),
                                t * s->motion * sin(s->motion_dir), &X, &Y);
-                    acc += radiance(s, X, Y);
+                    acc += radiance(s, &grid, X, Y);
                 }
             acc /= SUB * SUB;
             acc *= 1.0 - s->vignette * (du * du + dv * dv) / (rmax * rmax);
@@ -368,6 +448,7 @@ static int render(const scene *s, uint8_t *out)
         out[x] = (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v + 0.5);
     }
     free(lin);
+    free(grid.idx);
     return 0;
 }
 
@@ -425,6 +506,38 @@ static int site_id(int i, int j)
     return (int)((((unsigned)(j * SITE_COLS + i)) * 7u) % 30u) + 1;
 }
 
+/* Where the site's landmarks hang: on the grid, or (--site irregular)
+ * each shifted by up to 15 cm and the whole layout turned 5 degrees, as
+ * taped up by hand; --move shifts one landmark after that. Independent of
+ * the frames' random numbers. */
+static double site_xy[SITE_ROWS * SITE_COLS][2];
+
+static void site_layout(double tile, int irregular, int move_id, double mdx, double mdy)
+{
+    uint64_t st = 0x2545F4914F6CDD1Dull;
+    double cx = SITE_COLS * tile / 2, cy = SITE_ROWS * tile / 2, th = irregular ? 0.087 : 0;
+    int i, j;
+    for (j = 0; j < SITE_ROWS; j++)
+        for (i = 0; i < SITE_COLS; i++) {
+            double x = (i + 0.5) * tile, y = (j + 0.5) * tile, *p = site_xy[j * SITE_COLS + i];
+            if (irregular) {
+                double r, a;
+                st ^= st << 13, st ^= st >> 7, st ^= st << 17;
+                r = 0.15 * sqrt((double)(st >> 11) / 9007199254740992.0);
+                st ^= st << 13, st ^= st >> 7, st ^= st << 17;
+                a = 2 * M_PI * (double)(st >> 11) / 9007199254740992.0;
+                x += r * cos(a);
+                y += r * sin(a);
+            }
+            p[0] = cx + cos(th) * (x - cx) - sin(th) * (y - cy);
+            p[1] = cy + sin(th) * (x - cx) + cos(th) * (y - cy);
+            if (site_id(i, j) == move_id) {
+                p[0] += mdx;
+                p[1] += mdy;
+            }
+        }
+}
+
 static void site_scene(scene *s, set_kind kind)
 {
     int i, j;
@@ -434,7 +547,7 @@ static void site_scene(scene *s, set_kind kind)
             double x = (i + 0.5) * s->tile, y = (j + 0.5) * s->tile;
             int inside = i >= 0 && j >= 0 && i < SITE_COLS && j < SITE_ROWS;
             if (inside)
-                add_landmark(s, x, y, site_id(i, j));
+                add_landmark(s, site_xy[j * SITE_COLS + i][0], site_xy[j * SITE_COLS + i][1], site_id(i, j));
             else if ((i + j) % 3 == 0)
                 add_obj(s, OBJ_LIGHT, x, y, 0, 0.29, 0.29, 0);
             else if ((i * 7 + j) % 5 == 0 && kind == SET_PATH)
@@ -662,7 +775,8 @@ static const char *help =
     "usage: ringloc-render --out DIR (--set NAME --count N | --path KIND --frames N)\n"
     "                      [--seed S] [--size 640x480] [--camera CAM.yaml] [--twin]\n"
     "                      [--mount X,Y,YAW] [--write-map FILE] [--write-camera FILE]\n"
-    "                      [--write-robot FILE] [--rock SIGMA]\n\n"
+    "                      [--write-robot FILE] [--rock SIGMA] [--site grid|irregular]\n"
+    "                      [--move ID,DX,DY]\n\n"
     "Render ceiling fixtures with ground truth (NAME_NNN.png + NAME_NNN.yaml).\n"
     "  --set NAME      clean, cluttered, glare, border, clutter_only, dim, blur, motion,\n"
     "                  illum (vignetting, fall-off, a shadow, grey ink), degraded (blur\n"
@@ -671,8 +785,12 @@ static const char *help =
     "                  ellipses; replaces the camera's distortion):\n"
     "                  random scenes around the paper's set-up (ring5, 0.21 m landmarks,\n"
     "                  1.87 m from camera to ceiling, 0.61 m tiles)\n"
-    "  --path KIND     straight, rect or circle: frames along a robot path under a fixed\n"
-    "                  site of 6x5 landmarks 0.61 m apart (the map of --write-map)\n"
+    "  --path KIND     straight, rect, circle or survey (back and forth over the whole\n"
+    "                  site, weaving): frames along a robot path under a fixed site of\n"
+    "                  6x5 landmarks 0.61 m apart (the map of --write-map)\n"
+    "  --site LAYOUT   grid (default) or irregular: each landmark up to 15 cm off the\n"
+    "                  grid, the layout turned 5 degrees (a site taped up by hand)\n"
+    "  --move ID,DX,DY the site's landmark ID moved by (DX, DY) m\n"
     "  --twin          also render each frame with AprilTag 36h11 tags of the same size\n"
     "                  at the same places (NAME_NNN_tag.png)\n"
     "  --camera FILE   calibration to render with (default: 640x480, 70 deg, mild\n"
@@ -721,6 +839,22 @@ static int path_pose(const char *kind, int k, int n, double *x, double *y, doubl
         else if (p < w + h) { *x = 2.7; *y = 0.9 + p - w; *yaw = M_PI / 2; }
         else if (p < 2 * w + h) { *x = 2.7 - (p - w - h); *y = 2.1; *yaw = M_PI; }
         else { *x = 0.9; *y = 2.1 - (p - 2 * w - h); *yaw = -M_PI / 2; }
+    } else if (strcmp(kind, "survey") == 0) {
+        /* back and forth in three rows across the site, weaving */
+        double row = 3.05, turn = 0.9, L = 3 * row + 2 * turn, p = t * L, w = 0.5 * sin(2 * M_PI * 7 * t);
+        int r = (int)(p / (row + turn));
+        double q = p - r * (row + turn);
+        if (r > 2)
+            r = 2, q = row;
+        if (q < row) {
+            *x = r % 2 ? 3.35 - q : 0.3 + q;
+            *y = 0.6 + 0.9 * r;
+            *yaw = (r % 2 ? M_PI : 0) + w;
+        } else {
+            *x = r % 2 ? 0.3 : 3.35;
+            *y = 0.6 + 0.9 * r + (q - row);
+            *yaw = M_PI / 2 + w;
+        }
     } else {
         return -1;
     }
@@ -751,7 +885,8 @@ int main(int argc, char **argv)
         {"twin", no_argument, 0, 't'}, {"mount", required_argument, 0, 'm'},
         {"write-map", required_argument, 0, 'M'}, {"write-camera", required_argument, 0, 'C'},
         {"write-robot", required_argument, 0, 'R'}, {"rock", required_argument, 0, 'r'},
-        {"look", required_argument, 0, 'l'},
+        {"look", required_argument, 0, 'l'}, {"site", required_argument, 0, 'G'},
+        {"move", required_argument, 0, 'V'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     const char *look = NULL;
     set_kind look_kind = SET_PATH;
@@ -759,7 +894,8 @@ int main(int argc, char **argv)
                *cam_out = NULL, *robot_out = NULL;
     int count = 10, w = 640, h = 480, twin = 0, c, k, i;
     unsigned long seed = 1;
-    double mx = 0, my = 0, myaw = 0, mroll = 0, mpitch = 0, rock = 0;
+    double mx = 0, my = 0, myaw = 0, mroll = 0, mpitch = 0, rock = 0, mdx = 0, mdy = 0;
+    int irregular = 0, move_id = 0;
     static scene s;
     rl_camera cam;
     set_kind kind = SET_CLEAN;
@@ -789,6 +925,20 @@ int main(int argc, char **argv)
             }
             break;
         case 'l': look = optarg; break;
+        case 'G':
+            if (strcmp(optarg, "grid") != 0 && strcmp(optarg, "irregular") != 0) {
+                fprintf(stderr, "ringloc-render: --site: '%s' is not grid or irregular\n", optarg);
+                return 2;
+            }
+            irregular = strcmp(optarg, "irregular") == 0;
+            break;
+        case 'V':
+            if (sscanf(optarg, "%d,%lf,%lf", &move_id, &mdx, &mdy) != 3 || move_id < 1 || move_id > 30 ||
+                !(fabs(mdx) < 1 && fabs(mdy) < 1)) {
+                fprintf(stderr, "ringloc-render: --move: '%s' is not ID,DX,DY (an id 1..30, up to 1 m)\n", optarg);
+                return 2;
+            }
+            break;
         case 'r':
             if (sscanf(optarg, "%lf", &rock) != 1 || !(rock >= 0 && rock < 0.3)) {
                 fprintf(stderr, "ringloc-render: --rock: '%s' is not an angle 0 .. 0.3 rad\n", optarg);
@@ -822,6 +972,7 @@ int main(int argc, char **argv)
     s.ceiling_height = 2.75;
     s.cam_z = s.ceiling_height - s.distance;
     s.tile = 0.61;
+    site_layout(s.tile, irregular, move_id, mdx, mdy);
     if (cam_out && rl_camfile_save(cam_out, &cam, err, sizeof err) != RL_OK) {
         fprintf(stderr, "ringloc-render: %s\n", err);
         return 1;
@@ -849,8 +1000,8 @@ int main(int argc, char **argv)
             for (a = 0; a < SITE_COLS; a++) {
                 rl_map_landmark *lm = &map.lm[map.count++];
                 lm->id = site_id(a, b);
-                lm->x = (a + 0.5) * s.tile;
-                lm->y = (b + 0.5) * s.tile;
+                lm->x = site_xy[b * SITE_COLS + a][0];
+                lm->y = site_xy[b * SITE_COLS + a][1];
             }
         if (rl_mapfile_save(map_out, &map, err, sizeof err) != RL_OK) {
             fprintf(stderr, "ringloc-render: %s\n", err);
@@ -892,7 +1043,7 @@ int main(int argc, char **argv)
             look_kind = (set_kind)i;
         }
         if (path_pose(path, 0, 2, &x, &y, &yaw) != 0) {
-            fprintf(stderr, "ringloc-render: --path: '%s' is not straight, rect or circle\n", path);
+            fprintf(stderr, "ringloc-render: --path: '%s' is not straight, rect, circle or survey\n", path);
             return 2;
         }
     }

@@ -1,0 +1,274 @@
+#include "rl_survey_input.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <json-c/json.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include "rl_png.h"
+
+void rl_survey_input_init(rl_survey_input *in, const rl_camera *cam, const rl_family *fam, rl_survey *sv,
+                          rl_heap_recog *hr)
+{
+    memset(in, 0, sizeof *in);
+    in->cam = cam;
+    in->fam = fam;
+    in->sv = sv;
+    in->hr = hr;
+}
+
+/* One frame's detections (the identified ones) into the survey. */
+static rl_err add_frame(rl_survey_input *in, const char *name, const rl_detection *d, int n)
+{
+    rl_survey_obs obs[RL_MAX_LANDMARKS];
+    int i, m = 0;
+    for (i = 0; i < n && m < RL_MAX_LANDMARKS; i++) {
+        rl_survey_obs *o = &obs[m];
+        double r = d[i].radius / in->cam->fx;
+        o->rn = 0;
+        o->noise = d[i].complete ? 1.0 : 4.0;
+        if (d[i].complete)
+            r = rl_camera_radius(in->cam, d[i].u, d[i].v, d[i].radius);
+        rl_camera_centre(in->cam, d[i].u, d[i].v, r, &o->xn, &o->yn);
+        /* the scale from radii measured both ways across the outer black
+         * band (unbiased), near the optical axis (where the lens
+         * distorts the landmark least) */
+        if (d[i].complete && rl_family_band_inner(in->fam, d[i].id) > 0 &&
+            o->xn * o->xn + o->yn * o->yn < RL_SURVEY_RADIUS_FIELD * RL_SURVEY_RADIUS_FIELD)
+            o->rn = r;
+        o->id = d[i].id;
+        if (o->xn == o->xn && o->yn == o->yn && (o->rn == o->rn))
+            m++;
+    }
+    in->frames++;
+    if (in->progress && in->frames % 50 == 0)
+        fprintf(stderr, "ringloc survey: %d frames read\r", in->frames);
+    return rl_survey_add_frame(in->sv, name, obs, m) == RL_OK ? RL_OK : RL_ENOMEM;
+}
+
+static rl_err png_frame(rl_survey_input *in, const char *path)
+{
+    static rl_result res;
+    rl_image img;
+    rl_err e;
+    char err[512];
+    if (in->hr == NULL) {
+        snprintf(in->err, sizeof in->err, "%s: PNG frames need the recognizer", path);
+        return RL_EINVAL;
+    }
+    if (rl_png_read_gray(path, &img, err, sizeof err) != RL_OK) {
+        fprintf(stderr, "ringloc survey: %s; left out\n", err);
+        in->unreadable++;
+        return RL_OK;
+    }
+    if (img.width != in->cam->width || img.height != in->cam->height) {
+        fprintf(stderr, "ringloc survey: %s: %dx%d, the calibration is for %dx%d; left out\n", path, img.width,
+                img.height, in->cam->width, in->cam->height);
+        in->unreadable++;
+        rl_png_free(&img);
+        return RL_OK;
+    }
+    e = rl_heap_recog_run(in->hr, &img, &res);
+    rl_png_free(&img);
+    if (e != RL_OK) {
+        fprintf(stderr, "ringloc survey: %s: recognition failed: %s; left out\n", path, rl_strerror(e));
+        in->unreadable++;
+        return RL_OK;
+    }
+    e = add_frame(in, path, res.landmarks, res.n_landmarks);
+    if (e != RL_OK)
+        snprintf(in->err, sizeof in->err, "out of memory after %d frames", in->frames);
+    return e;
+}
+
+/* A number field of a JSON object; 0 if missing or not a number. */
+static int json_num(json_object *o, const char *key, double *out)
+{
+    json_object *v;
+    if (!json_object_object_get_ex(o, key, &v) ||
+        !(json_object_is_type(v, json_type_double) || json_object_is_type(v, json_type_int)))
+        return 0;
+    *out = json_object_get_double(v);
+    return *out == *out;
+}
+
+/* One line of detect output: {"image", "width", "height", "landmarks": [{"id", "u", "v", "radius",
+ * "complete"}...]}. */
+static rl_err json_frame(rl_survey_input *in, const char *path, long line, const char *text)
+{
+    static rl_detection d[RL_MAX_LANDMARKS];
+    enum json_tokener_error je;
+    json_object *o = json_tokener_parse_verbose(text, &je), *lms, *v;
+    const char *name = NULL;
+    char label[1200];
+    int i, n, m = 0;
+    double w, h;
+    rl_err e = RL_EFORMAT;
+    if (o == NULL || !json_object_is_type(o, json_type_object)) {
+        snprintf(in->err, sizeof in->err, "%s:%ld: not a JSON object (%s)", path, line,
+                 o ? "another JSON value" : json_tokener_error_desc(je));
+        goto out;
+    }
+    if (!json_object_object_get_ex(o, "landmarks", &lms) || !json_object_is_type(lms, json_type_array)) {
+        snprintf(in->err, sizeof in->err, "%s:%ld: no \"landmarks\" list (is it `ringloc detect` output?)", path,
+                 line);
+        goto out;
+    }
+    if (json_num(o, "width", &w) && json_num(o, "height", &h) &&
+        ((int)w != in->cam->width || (int)h != in->cam->height)) {
+        snprintf(in->err, sizeof in->err, "%s:%ld: a %dx%d frame, the calibration is for %dx%d", path, line,
+                 (int)w, (int)h, in->cam->width, in->cam->height);
+        goto out;
+    }
+    if (json_object_object_get_ex(o, "image", &v) && json_object_is_type(v, json_type_string))
+        name = json_object_get_string(v);
+    n = (int)json_object_array_length(lms);
+    for (i = 0; i < n; i++) {
+        json_object *l = json_object_array_get_idx(lms, (size_t)i), *c;
+        double id;
+        if (!json_object_is_type(l, json_type_object) || !json_num(l, "id", &id) || !json_num(l, "u", &d[m].u) ||
+            !json_num(l, "v", &d[m].v) || !json_num(l, "radius", &d[m].radius)) {
+            snprintf(in->err, sizeof in->err, "%s:%ld: landmarks[%d] lacks a number id, u, v or radius", path, line,
+                     i);
+            goto out;
+        }
+        if (id != (int)id || !rl_family_valid(in->fam, (int)id)) {
+            snprintf(in->err, sizeof in->err, "%s:%ld: landmarks[%d]: id %g is not in ring%d (1 .. %d)", path, line,
+                     i, id, in->fam->bits, rl_family_count(in->fam));
+            goto out;
+        }
+        if (!(d[m].radius > 0 && d[m].radius < 1e5 && d[m].u > -1e5 && d[m].u < 1e5 && d[m].v > -1e5 &&
+              d[m].v < 1e5)) {
+            snprintf(in->err, sizeof in->err, "%s:%ld: landmarks[%d]: u, v or radius out of range", path, line, i);
+            goto out;
+        }
+        d[m].id = (int)id;
+        d[m].complete = !json_object_object_get_ex(l, "complete", &c) || json_object_get_boolean(c);
+        if (m < RL_MAX_LANDMARKS - 1)
+            m++;
+    }
+    if (name == NULL) {
+        snprintf(label, sizeof label, "%s:%ld", path, line);
+        name = label;
+    }
+    e = add_frame(in, name, d, m);
+    if (e != RL_OK)
+        snprintf(in->err, sizeof in->err, "out of memory after %d frames", in->frames);
+out:
+    if (o)
+        json_object_put(o);
+    return e;
+}
+
+static rl_err json_file(rl_survey_input *in, const char *path)
+{
+    FILE *f = fopen(path, "r");
+    char *buf = NULL;
+    size_t cap = 0;
+    long line = 0;
+    ssize_t len;
+    rl_err e = RL_OK;
+    if (f == NULL) {
+        snprintf(in->err, sizeof in->err, "%s: %s", path, strerror(errno));
+        return RL_ENOTFOUND;
+    }
+    while (e == RL_OK && (len = getline(&buf, &cap, f)) >= 0) {
+        line++;
+        while (len > 0 && (buf[len - 1] == '\n' || buf[len - 1] == '\r' || buf[len - 1] == ' '))
+            buf[--len] = '\0';
+        if (len == 0)
+            continue;
+        if (memchr(buf, '\0', (size_t)len)) {
+            snprintf(in->err, sizeof in->err, "%s:%ld: not text", path, line);
+            e = RL_EFORMAT;
+            break;
+        }
+        e = json_frame(in, path, line, buf);
+    }
+    if (e == RL_OK && ferror(f)) {
+        snprintf(in->err, sizeof in->err, "%s: read failed", path);
+        e = RL_EIO;
+    } else if (e == RL_OK && line == 0) {
+        snprintf(in->err, sizeof in->err, "%s: no frames in the file (empty)", path);
+        e = RL_ENOTFOUND;
+    }
+    free(buf);
+    fclose(f);
+    return e;
+}
+
+static int has_suffix(const char *s, const char *suf)
+{
+    size_t n = strlen(s), m = strlen(suf);
+    return n >= m && strcmp(s + n - m, suf) == 0;
+}
+
+static int cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+static rl_err folder(rl_survey_input *in, const char *path)
+{
+    DIR *dir = opendir(path);
+    struct dirent *ent;
+    char **names = NULL, full[4096];
+    int n = 0, cap = 0, i;
+    rl_err e = RL_OK;
+    if (dir == NULL) {
+        snprintf(in->err, sizeof in->err, "%s: %s", path, strerror(errno));
+        return RL_ENOTFOUND;
+    }
+    while ((ent = readdir(dir)) != NULL) {
+        if (!has_suffix(ent->d_name, ".png") || ent->d_name[0] == '.')
+            continue;
+        if (n == cap) {
+            char **p = realloc(names, (size_t)(cap ? 2 * cap : 256) * sizeof *names);
+            if (p == NULL) {
+                e = RL_ENOMEM;
+                break;
+            }
+            names = p;
+            cap = cap ? 2 * cap : 256;
+        }
+        if ((names[n] = strdup(ent->d_name)) == NULL) {
+            e = RL_ENOMEM;
+            break;
+        }
+        n++;
+    }
+    closedir(dir);
+    if (e == RL_OK && n == 0) {
+        snprintf(in->err, sizeof in->err, "%s: no PNG frames in the folder", path);
+        e = RL_ENOTFOUND;
+    } else if (e != RL_OK) {
+        snprintf(in->err, sizeof in->err, "%s: out of memory listing the folder", path);
+    }
+    if (e == RL_OK)
+        qsort(names, (size_t)n, sizeof *names, cmp_str);
+    for (i = 0; i < n; i++) {
+        if (e == RL_OK) {
+            snprintf(full, sizeof full, "%s/%s", path, names[i]);
+            e = png_frame(in, full);
+        }
+        free(names[i]);
+    }
+    free(names);
+    return e;
+}
+
+rl_err rl_survey_input_path(rl_survey_input *in, const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) != 0) {
+        snprintf(in->err, sizeof in->err, "%s: %s", path, strerror(errno));
+        return RL_ENOTFOUND;
+    }
+    if (S_ISDIR(st.st_mode))
+        return folder(in, path);
+    if (has_suffix(path, ".json") || has_suffix(path, ".jsonl") || has_suffix(path, ".ndjson"))
+        return json_file(in, path);
+    return png_frame(in, path);
+}
