@@ -9,7 +9,8 @@
 #   make bench           recognition, pose and survey benchmarks (figures, not pass/fail)
 #   make bench-real REAL=DIR  ringloc and AprilTag 3 on real photos with landmarks placed in them
 #   make fuzz [FUZZ_SECONDS=60]  libFuzzer (clang, ASan + UBSan) on the recognizer, the PNG
-#                        reader, the YAML loaders, the pose solver, the frame decoder;
+#                        reader, the YAML loaders, the pose solver, the frame decoder,
+#                        the survey's JSON-lines input and first map;
 #                        MSan on those without libpng and libyaml
 #   make soak [SOAK_FRAMES=200000]  the firmware's loop for a long run, its serial line
 #                        vanishing every few seconds: heap calls, RSS, frames after reopening
@@ -41,7 +42,7 @@ soak: host
 BUILD_FUZZ        ?= build-fuzz
 BUILD_FUZZ_MSAN   ?= build-fuzz-msan
 FUZZ_SECONDS      ?= 60
-FUZZ_TARGETS      ?= recog png yaml pose frame
+FUZZ_TARGETS      ?= recog png yaml pose frame survey
 FUZZ_MSAN_TARGETS ?= recog pose frame
 
 fuzz:

@@ -46,6 +46,7 @@ if [ "$profile" = fuzz ] || [ "$profile" = asan ]; then
     need_pkg libclang-rt-dev fuzzer
     need_pkg libpng-dev pc libpng
     need_pkg libyaml-dev pc yaml-0.1
+    need_pkg libjson-c-dev pc json-c
 fi
 if [ "$profile" != fuzz ]; then
     need_pkg cmake have cmake

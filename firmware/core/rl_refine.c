@@ -89,35 +89,6 @@ void rl_refine_radius(const rl_image *img, double cx, double cy, double *r)
     rl_refine_radius_shaped(img, cx, cy, NULL, r);
 }
 
-void rl_refine_radius_shaped(const rl_image *img, double cx, double cy, const rl_shape *sh,
-                             double *r)
-{
-    double prof[EDGE_SAMPLES], lo = 0.75 * *r, hi = 1.3 * *r, step = (hi - lo) / (EDGE_SAMPLES - 1);
-    double black = 1e9, white, half;
-    int i, imin = 0;
-    if (sh != NULL && rl_shape_is_circle(sh))
-        sh = NULL;
-    if (!mean_profile(img, cx, cy, sh, lo, step, prof))
-        return;
-    for (i = 0; i < EDGE_SAMPLES; i++)
-        if (prof[i] < black) {
-            black = prof[i];
-            imin = i;
-        }
-    white = prof[imin];
-    for (i = imin; i < EDGE_SAMPLES; i++)
-        if (prof[i] > white)
-            white = prof[i];
-    if (white - black < 10.0)
-        return;
-    half = 0.5 * (black + white);
-    for (i = imin; i < EDGE_SAMPLES - 1; i++)
-        if (prof[i] <= half && prof[i + 1] > half) {
-            *r = lo + (i + (half - prof[i]) / (prof[i + 1] - prof[i])) * step;
-            return;
-        }
-}
-
 /* The profile's halfway crossing going from index `from` to `to`; 0 if none. */
 static int crossing(const double *prof, int from, int to, double half, double lo, double step, double *at)
 {
@@ -130,28 +101,58 @@ static int crossing(const double *prof, int from, int to, double half, double lo
     return 0;
 }
 
+/* Index of the profile's least value in a .. b (inclusive), into *v. */
+static int darkest(const double *prof, int a, int b, double *v)
+{
+    int i, k = a;
+    for (i = a; i <= b && i < EDGE_SAMPLES; i++)
+        if (prof[i] < prof[k])
+            k = i;
+    *v = prof[k];
+    return k;
+}
+
+/* The profile's greatest value from a on. */
+static double brightest(const double *prof, int a)
+{
+    double w = prof[a];
+    int i;
+    for (i = a; i < EDGE_SAMPLES; i++)
+        if (prof[i] > w)
+            w = prof[i];
+    return w;
+}
+
+void rl_refine_radius_shaped(const rl_image *img, double cx, double cy, const rl_shape *sh,
+                             double *r)
+{
+    double prof[EDGE_SAMPLES], lo = 0.75 * *r, hi = 1.3 * *r, step = (hi - lo) / (EDGE_SAMPLES - 1);
+    double black, white;
+    int imin;
+    if (sh != NULL && rl_shape_is_circle(sh))
+        sh = NULL;
+    if (!mean_profile(img, cx, cy, sh, lo, step, prof))
+        return;
+    imin = darkest(prof, 0, EDGE_SAMPLES - 1, &black);
+    white = brightest(prof, imin);
+    if (white - black < 10.0)
+        return;
+    crossing(prof, imin, EDGE_SAMPLES - 1, 0.5 * (black + white), lo, step, r);
+}
+
 void rl_refine_radius_band(const rl_image *img, const rl_family *fam, int id, double cx, double cy, double *r)
 {
-    double rho = rl_family_band_inner(fam, id), prof[EDGE_SAMPLES], lo, hi, step, black = 1e9, white = -1e9,
-           half, ro, ri, est;
-    int i, iin, iout, imin = 0;
+    double rho = rl_family_band_inner(fam, id), prof[EDGE_SAMPLES], lo, step, black, white, half, ro, ri, est;
+    int iout, imin;
     if (!(rho > 0))
         return;
     lo = (rho - 0.6 * RL_FAMILY_BAND_WHITE) * *r;
-    hi = 1.3 * *r;
-    step = (hi - lo) / (EDGE_SAMPLES - 1);
+    step = (1.3 * *r - lo) / (EDGE_SAMPLES - 1);
     if (!mean_profile(img, cx, cy, NULL, lo, step, prof))
         return;
-    iin = (int)((rho * *r - lo) / step);
     iout = (int)((*r - lo) / step);
-    for (i = iin; i <= iout && i < EDGE_SAMPLES; i++)
-        if (prof[i] < black) {
-            black = prof[i];
-            imin = i;
-        }
-    for (i = iout; i < EDGE_SAMPLES; i++)
-        if (prof[i] > white)
-            white = prof[i];
+    imin = darkest(prof, (int)((rho * *r - lo) / step), iout, &black);
+    white = brightest(prof, iout);
     if (white - black < 10.0)
         return;
     half = 0.5 * (black + white);
