@@ -20,7 +20,9 @@ static const char *detect_help =
     "   \"radius\": 25.83, \"score\": 0.93, \"pass\": \"global\", \"complete\": true}],\n"
     "   \"unidentified\": 1, \"dropped\": {\"regions\": 0, \"lights\": 0,\n"
     "   \"candidates\": 0, \"landmarks\": 0}}\n"
-    "elapsed_us is the recognition time in-process, file I/O excluded; dropped\n"
+    "radius: measured across both edges of the outer black band where the code\n"
+    "leaves one clear (unbiased by blur). elapsed_us is the recognition time\n"
+    "in-process, file I/O excluded; dropped\n"
     "counts what the compile-time limits left out (0 on ordinary frames). An\n"
     "unreadable image gives an error line on stderr and the run goes on.\n\n"
     "  --family NAME     landmark family (default ring5; the map's with --map)\n"
@@ -87,6 +89,7 @@ int rl_cmd_detect(int argc, char **argv)
     char err[512], name[1024];
 
     rl_recog_defaults(&cfg);
+    cfg.band_radius = 1; /* radii a survey can take its scale from */
     optind = 1;
     while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
         int r = rl_cli_recog_option(C, c, optarg, &cfg, &family);

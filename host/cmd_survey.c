@@ -246,6 +246,7 @@ int rl_cmd_survey(int argc, char **argv)
     memset(&a, 0, sizeof a);
     rl_survey_defaults(&cfg);
     rl_recog_defaults(&rc);
+    rc.band_radius = 1; /* the scale from the radii */
     if ((r = parse(argc, argv, &a, &cfg, &rc)) != 0)
         return r < 0 ? 0 : r;
     if (rl_camfile_load(a.cam, &cam, err, sizeof err) != RL_OK ||

@@ -73,7 +73,7 @@ void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *
     if (taken &&
         !rl_inner_enclosed(img, res->levels.light, d.u, d.v, d.radius)) {
         d.id = m.id;
-        if (d.complete && rl_shape_is_circle(&c->shape))
+        if (rec->cfg.band_radius && d.complete && rl_shape_is_circle(&c->shape))
             rl_refine_radius_band(img, &rec->cfg.family, d.id, d.u, d.v, &d.radius);
         rl_result_add_landmark(res, &d);
     } else {

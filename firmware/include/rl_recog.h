@@ -72,6 +72,10 @@ typedef struct {
                              ceilings half the landmarks next to lights and most cut ones
                              are found only there, at a fraction of the frame's time) */
     double near_light;    /* DUCLR: gap to a light of at most this many radii (default 1.5) */
+    int band_radius;      /* 1: an identified whole landmark's radius from both edges of its
+                             outer black band, which no blur or tone curve biases (a
+                             survey's scale; some 2-8% more time); 0 (default): from its
+                             outer edge (the pose does not use it) */
 } rl_recog_config;
 
 typedef struct {
