@@ -6,11 +6,14 @@
  * placed: near where the previous frame's pose puts them (tracking), else
  * by pairs whose distance apart agrees with the map so far (finding the
  * place: on a site with unique ids each pair has one candidate). Two or
- * more consistent matches give the frame's pose (a rigid fit); its other
- * landmarks are placed from it. A frame that fits nowhere waits for a
- * later pass; one that never fits is LOST. Then the map is moved into the
- * survey's frame (origin at (0, 0), axis on +x, the scale of a measured
- * distance). */
+ * more consistent matches give the frame's pose (a rigid fit), taken only
+ * when the frame's other landmarks that it puts inside the mapped area
+ * mostly land on placed ones of their ids; its new landmarks are placed
+ * from it, level (a tilt fitted to one frame trades against its position
+ * and walks the map away; the rocking averages out). A frame that fits
+ * nowhere waits for a later pass; one that never fits is LOST. Then the
+ * map is moved into the survey's frame (origin at (0, 0), axis on +x, the
+ * scale of a measured distance). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -173,14 +176,18 @@ static int ray_point(const builder *b, const double *q, int i, double *out)
 }
 
 /* Votes for `pose`: observations with a landmark of their id near where
- * it puts them. */
-static int votes(const builder *b, const rl_survey_frame *f, const double *pose)
+ * it puts them; with `miss`, also those it puts inside the mapped area
+ * with none of their id there. */
+static int votes(const builder *b, const rl_survey_frame *f, const double *pose, int *miss)
 {
     int i, v = 0;
     for (i = 0; i < f->n; i++) {
         double q[2];
         to_map(pose, b->p + 2 * (f->first + i), q);
-        v += nearest(b, b->sv->obs[f->first + i].id, q, PAIR_TOL * 2, NULL, 0) >= 0;
+        if (nearest(b, b->sv->obs[f->first + i].id, q, PAIR_TOL * 2, NULL, 0) >= 0)
+            v++;
+        else if (miss != NULL && mapped_near(b, q, MAPPED))
+            (*miss)++;
     }
     return v;
 }
@@ -190,15 +197,7 @@ static int votes(const builder *b, const rl_survey_frame *f, const double *pose)
  * their id (a wrong pose puts them where other ids hang, or nothing). */
 static int supported(const builder *b, const rl_survey_frame *f, const double *pose)
 {
-    int i, hit = 0, miss = 0;
-    for (i = 0; i < f->n; i++) {
-        double q[2];
-        to_map(pose, b->p + 2 * (f->first + i), q);
-        if (nearest(b, b->sv->obs[f->first + i].id, q, PAIR_TOL * 2, NULL, 0) >= 0)
-            hit++;
-        else if (mapped_near(b, q, MAPPED))
-            miss++;
-    }
+    int miss = 0, hit = votes(b, f, pose, &miss);
     return hit >= 2 && miss <= hit / 3;
 }
 
@@ -225,7 +224,7 @@ static int find_place(const builder *b, const rl_survey_frame *f, double *pose)
                     pt[0].px = pi[0], pt[0].py = pi[1], pt[0].mx = sv->lm[A].x, pt[0].my = sv->lm[A].y;
                     pt[1].px = pj[0], pt[1].py = pj[1], pt[1].mx = sv->lm[B].x, pt[1].my = sv->lm[B].y;
                     rl_pose_fit_rigid(pt, 2, &hp[0], &hp[1], &hp[2]);
-                    v = votes(b, f, hp);
+                    v = votes(b, f, hp, NULL);
                     if (v > best) {
                         if (hypot(hp[0] - bp[0], hp[1] - bp[1]) > sv->cfg.gate)
                             second = best;
@@ -297,8 +296,6 @@ static int try_frame(builder *b, rl_survey_frame *f, const double *prev)
         ok = find_place(b, f, pose) && match_near(b, f, pose, b->sv->cfg.gate, match) >= 2;
     if (!ok || !supported(b, f, pose))
         return 0;
-    /* level: a tilt fitted to one frame trades against its position and
-     * walks the map away; the rocking averages out over the frames */
     q[0] = pose[0], q[1] = pose[1], q[2] = pose[2];
     place(b, f, q, match);
     return 1;
