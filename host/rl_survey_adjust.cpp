@@ -196,8 +196,10 @@ int drop_outlier_frames(rl_survey *sv, const Params &p)
 }
 
 // Residual statistics and each frame's RMS; the variance factor of the
-// centres and radii (the noise as it came out over as assumed), outliers
-// clipped as the loss clips them.
+// centres and radii (the noise as it came out over as assumed, outliers
+// clipped as the loss clips them), never below 1: residuals smaller than
+// the assumed noise do not make a landmark surer (its own centre bias
+// does not show in them).
 double summarize(rl_survey *sv, const Params &p)
 {
     const rl_survey_config *c = &sv->cfg;
@@ -238,7 +240,7 @@ double summarize(rl_survey *sv, const Params &p)
     }
     sv->rms_px = n_px ? std::sqrt(ss_px / n_px) : 0;
     long dof = n_res - 3L * sv->frames_used - 2L * sv->n_lm;
-    return dof > 0 ? std::max(ss_w / dof, 1e-6) : 1.0;
+    return dof > 0 ? std::max(ss_w / dof, 1.0) : 1.0;
 }
 
 // Covariances of the landmarks and the ceiling, scaled by the variance

@@ -69,22 +69,43 @@ static int cmp_move(const void *a, const void *b)
     return (x < y) - (x > y);
 }
 
-/* The standard deviation of pair p's distance along its direction: both
- * maps' own, and the spread of the fit (what neither map's covariance
- * holds: the origin's and axis's own errors, the two drives' systematic
- * differences). */
-static double sigma_along(const rl_survey *sv, const rl_map *old, const double *T, const pair *p, double fit)
+/* The variance of pair p's distance along direction (ux, uy) from both
+ * maps' covariances. */
+static double own_var(const rl_survey *sv, const rl_map *old, const double *T, const pair *p, double ux, double uy)
 {
     const rl_survey_landmark *l = &sv->lm[p->k];
     const rl_map_landmark *o = &old->lm[p->j];
-    double ux = l->x - p->ox, uy = l->y - p->oy, n = hypot(ux, uy), s2 = T[0] * T[0] + T[1] * T[1], v;
+    return ux * ux * l->cov[0] + 2 * ux * uy * l->cov[1] + uy * uy * l->cov[2] +
+           (T[0] * T[0] + T[1] * T[1]) * (ux * ux * o->sigma_x * o->sigma_x + uy * uy * o->sigma_y * o->sigma_y);
+}
+
+/* The standard deviation of pair p's distance along its direction: both
+ * maps' own, at least the typical landmark's (`floor`: the origin and the
+ * axis have none in their maps, yet are as uncertain as the rest against
+ * the others), and the spread of the fit (what the covariances do not
+ * hold: systematic differences between two drives). */
+static double sigma_along(const rl_survey *sv, const rl_map *old, const double *T, const pair *p, double floor,
+                          double spread)
+{
+    const rl_survey_landmark *l = &sv->lm[p->k];
+    double ux = l->x - p->ox, uy = l->y - p->oy, n = hypot(ux, uy), v;
     if (!(n > 0))
-        return 1;
-    ux /= n;
-    uy /= n;
-    v = ux * ux * l->cov[0] + 2 * ux * uy * l->cov[1] + uy * uy * l->cov[2];
-    v += s2 * (ux * ux * o->sigma_x * o->sigma_x + uy * uy * o->sigma_y * o->sigma_y);
-    return sqrt(v + fit * fit);
+        ux = 1, uy = 0, n = 1;
+    v = own_var(sv, old, T, p, ux / n, uy / n);
+    return sqrt(fmax(v, floor * floor) + spread * spread);
+}
+
+/* The median over the pairs of their own standard deviation (the mean of
+ * the two axes). */
+static double typical_sigma(const rl_survey *sv, const rl_map *old, const double *T, const pair *p, int n, double *tmp)
+{
+    int i;
+    if (n == 0)
+        return 0;
+    for (i = 0; i < n; i++)
+        tmp[i] = sqrt(0.5 * (own_var(sv, old, T, &p[i], 1, 0) + own_var(sv, old, T, &p[i], 0, 1)));
+    qsort(tmp, (size_t)n, sizeof *tmp, cmp_double);
+    return tmp[n / 2];
 }
 
 int rl_survey_moved(const rl_survey *sv, const rl_map *old, double sigmas, rl_survey_move *mv, int max)
@@ -93,7 +114,7 @@ int rl_survey_moved(const rl_survey *sv, const rl_map *old, double sigmas, rl_su
     double *d = malloc((size_t)(sv->n_lm + 1) * sizeof *d), T[4];
     rl_survey_move *all = malloc((size_t)(sv->n_lm + 1) * sizeof *all);
     int n = 0, k, j, it, moved = 0, i;
-    double spread = 0;
+    double spread = 0, floor = 0;
     if (p == NULL || d == NULL || all == NULL) {
         free(p), free(d), free(all);
         return -1;
@@ -130,11 +151,12 @@ int rl_survey_moved(const rl_survey *sv, const rl_map *old, double sigmas, rl_su
         med = d[n / 2];
         /* the median distance of a 2-D normal is 1.177 sigma */
         spread = med / 1.177;
+        floor = typical_sigma(sv, old, T, p, n, d);
         for (i = 0; i < n; i++)
-            p[i].in = p[i].d <= 4 * med + 1e-4 || p[i].d <= sigmas * sigma_along(sv, old, T, &p[i], spread);
+            p[i].in = p[i].d <= 4 * med + 1e-4 || p[i].d <= sigmas * sigma_along(sv, old, T, &p[i], floor, spread);
     }
     for (i = 0; i < n; i++) {
-        double s = sigma_along(sv, old, T, &p[i], spread);
+        double s = sigma_along(sv, old, T, &p[i], floor, spread);
         if (p[i].d > sigmas * s) {
             rl_survey_move *m = &all[moved++];
             m->id = sv->lm[p[i].k].id;

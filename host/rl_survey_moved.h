@@ -6,9 +6,11 @@
  * a little), robustly: pairs that disagree are left out of the fit and
  * the fit redone. A landmark moved when its distance from its old place
  * after the fit is more than `sigmas` times the standard deviation of
- * that distance: both maps' covariances along it, and the fit's own
- * spread (the landmarks' median distance after the fit, which holds what
- * the covariances do not: systematic differences between two drives).
+ * that distance: both maps' covariances along it (at least the typical
+ * landmark's: the origin and axis have none in their own maps), and the
+ * fit's own spread (the landmarks' median distance after the fit, which
+ * holds what the covariances do not: systematic differences between two
+ * drives).
  *
  *   static rl_survey sv;
  *   rl_survey_move mv[16];
