@@ -3,6 +3,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <json-c/json.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -117,9 +118,9 @@ static rl_err json_frame(rl_survey_input *in, const char *path, long line, const
         goto out;
     }
     if (json_num(o, "width", &w) && json_num(o, "height", &h) &&
-        ((int)w != in->cam->width || (int)h != in->cam->height)) {
-        snprintf(in->err, sizeof in->err, "%s:%ld: a %dx%d frame, the calibration is for %dx%d", path, line,
-                 (int)w, (int)h, in->cam->width, in->cam->height);
+        (w != in->cam->width || h != in->cam->height)) {
+        snprintf(in->err, sizeof in->err, "%s:%ld: a %gx%g frame, the calibration is for %dx%d", path, line, w, h,
+                 in->cam->width, in->cam->height);
         goto out;
     }
     if (json_object_object_get_ex(o, "image", &v) && json_object_is_type(v, json_type_string))
@@ -134,7 +135,7 @@ static rl_err json_frame(rl_survey_input *in, const char *path, long line, const
                      i);
             goto out;
         }
-        if (id != (int)id || !rl_family_valid(in->fam, (int)id)) {
+        if (!(id >= 1 && id <= 1 << 20) || id != floor(id) || !rl_family_valid(in->fam, (int)id)) {
             snprintf(in->err, sizeof in->err, "%s:%ld: landmarks[%d]: id %g is not in ring%d (1 .. %d)", path, line,
                      i, id, in->fam->bits, rl_family_count(in->fam));
             goto out;
