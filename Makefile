@@ -124,7 +124,8 @@ bench: host
 	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/drive --path circle --frames 8 --rock 0.03 --mount 0.12,-0.03,0.02; }
 	$(BUILD)/tools/ringloc-bench $(BENCH_DIR)/640x480 $(BENCH_DIR)/1280x960 --local $(BENCH_DIR)/glare \
 	  --pose $(BENCH_DIR)/drive
-	@[ -f $(BENCH_DIR)/survey/detect.jsonl ] || $(BUILD)/tools/ringloc-survey-synth --out $(BENCH_DIR)/survey
+	@[ -f $(BENCH_DIR)/survey/detect.jsonl ] || \
+	  $(BUILD)/tools/ringloc-survey-synth --camera $(BENCH_DIR)/drive/camera.yaml --out $(BENCH_DIR)/survey
 	@echo "survey: 2,000 landmarks (ring6, ids repeating) from 20,000 frames of detect JSON lines, one thread:"
 	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 $(BUILD)/host/ringloc survey --family ring6 \
 	  --camera $(BENCH_DIR)/survey/camera.yaml --robot $(BENCH_DIR)/survey/robot.yaml --origin 61 --axis 62 \

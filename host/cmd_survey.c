@@ -32,9 +32,10 @@ static const char *survey_help =
     "measured ceiling height or origin-axis distance when given (more exact).\n"
     "Writes MAP.yaml for locate and run, each landmark with its standard deviations,\n"
     "and prints one JSON line:\n"
-    "  {\"landmarks\": 30, \"frames\": 300, \"frames_used\": 296, \"ceiling_height\": 2.7503,\n"
-    "   \"sigma_ceiling_height\": 0.0004, \"rms_px\": 0.11, \"scale\": \"diameter\",\n"
-    "   \"least_certain\": {\"id\": 6, \"sigma\": 0.0009}, \"not_placed\": [], \"alone\": [],\n"
+    "  {\"landmarks\": 30, \"frames\": 300, \"frames_used\": 296, \"observations\": 3712,\n"
+    "   \"ceiling_height\": 2.7503, \"sigma_ceiling_height\": 0.0004, \"rms_px\": 0.11,\n"
+    "   \"scale\": \"diameter\", \"least_certain\": {\"id\": 6, \"sigma\": 0.0009},\n"
+    "   \"not_placed\": [], \"alone\": [],\n"
     "   \"left_out\": {\"few\": 3, \"lost\": 0, \"outlier\": 1, \"unreadable\": 0},\n"
     "   \"moved\": [{\"id\": 12, \"distance\": 0.0501, \"sigmas\": 61.2}], \"seconds\": 4.1,\n"
     "   \"cpu_seconds\": 4.0}\n"
@@ -181,9 +182,9 @@ static void report(const rl_survey *sv, int frames, int unreadable, const rl_sur
     }
     for (i = 0; i < sv->n_fr; i++)
         left[sv->fr[i].status]++;
-    printf("{\"landmarks\": %d, \"frames\": %d, \"frames_used\": %d, \"ceiling_height\": %.5f, "
+    printf("{\"landmarks\": %d, \"frames\": %d, \"frames_used\": %d, \"observations\": %d, \"ceiling_height\": %.5f, "
            "\"sigma_ceiling_height\": %.5f, \"rms_px\": %.3f, \"scale\": \"%s\", ",
-           placed, frames, sv->frames_used, sv->height, sv->sigma_height, sv->rms_px,
+           placed, frames, sv->frames_used, sv->obs_used, sv->height, sv->sigma_height, sv->rms_px,
            sv->cfg.ceiling_height > 0 ? "ceiling-height" : sv->cfg.axis_distance > 0 ? "axis-distance" : "diameter");
     if (worst >= 0)
         printf("\"least_certain\": {\"id\": %d, \"sigma\": %.5f}, ", sv->lm[worst].id, ws);
@@ -275,18 +276,18 @@ int rl_cmd_survey(int argc, char **argv)
         code = rl_cli_fail(C, RL_EXIT_FAIL, "%s", sv.err);
         goto out;
     }
-    if (a.old)
-        n_mv = rl_survey_moved(&sv, &old, 3.0, mv, RL_MAX_MAP_LANDMARKS);
+    if (a.old && (n_mv = rl_survey_moved(&sv, &old, 3.0, mv, RL_MAX_MAP_LANDMARKS)) < 0) {
+        code = rl_cli_fail(C, RL_EXIT_FAIL, "out of memory comparing with %s", a.old);
+        goto out;
+    }
     if (write_map(a.out, &sv, &rc.family, err, sizeof err) != RL_OK ||
-        (a.plot && rl_survey_plot(a.plot, &sv, mv, n_mv < RL_MAX_MAP_LANDMARKS ? n_mv : RL_MAX_MAP_LANDMARKS, err,
-                                  sizeof err) != RL_OK)) {
+        (a.plot && rl_survey_plot(a.plot, &sv, mv, n_mv, err, sizeof err) != RL_OK)) {
         code = rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
         goto out;
     }
     tell(&sv);
     clock_gettime(CLOCK_MONOTONIC, &t1);
-    report(&sv, in.frames + in.unreadable, in.unreadable, a.old ? mv : NULL,
-           n_mv < RL_MAX_MAP_LANDMARKS ? n_mv : RL_MAX_MAP_LANDMARKS,
+    report(&sv, in.frames + in.unreadable, in.unreadable, a.old ? mv : NULL, n_mv,
            (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
 out:
     rl_survey_free(&sv);

@@ -77,7 +77,6 @@ typedef struct {
     int first, n;                  /* its observations: obs[first .. first + n) */
     int status;
     double x, y, yaw, roll, pitch; /* robot pose, and its tilt (roll, pitch), m and rad */
-    double rms_px;                 /* RMS image residual after adjusting */
 } rl_survey_frame;
 
 typedef struct {
@@ -99,7 +98,7 @@ typedef struct {
     int n_lm;
     double height, sigma_height; /* ceiling above the floor and its standard deviation, m */
     double rms_px;               /* RMS image residual of the centres used, px */
-    int frames_used, obs_used, iterations;
+    int frames_used, obs_used;  /* in the fit */
     int n_alone, alone[64];      /* ids seen only in frames by themselves (the first 64) */
     char err[256];
 } rl_survey;

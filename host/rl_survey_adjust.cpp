@@ -25,14 +25,15 @@ namespace {
 // ceiling's height.
 struct View {
     const rl_survey_config *cfg;
+    const rl_pose_model *model; // the mount and the landmarks' radius, made once
     const rl_survey_obs *obs;
     bool radius;
 
     bool operator()(const double *q, const double *lm, const double *h, double *r) const
     {
-        rl_pose_model md;
-        double Rc[9], C[3], xn, yn, R = 0.5 * cfg->diameter;
-        rl_pose_fit_model(&md, &cfg->mount, h[0], R);
+        rl_pose_model md = *model;
+        double Rc[9], C[3], xn, yn, R = md.radius;
+        md.height = h[0];
         rl_pose_fit_camera(&md, q, Rc, C);
         if (!rl_pose_fit_predict(&md, Rc, C, lm[0], lm[1], &xn, &yn))
             return false;
@@ -63,6 +64,7 @@ struct Params {
     std::vector<double> q; // 5 per frame
     std::vector<double> lm; // 2 per landmark
     double h;
+    rl_pose_model model;   // the mount's rotation, the radius (the height is h)
 };
 
 bool use_radius(const rl_survey_config *c)
@@ -74,7 +76,7 @@ bool use_radius(const rl_survey_config *c)
 // false if it could not be evaluated.
 bool centre_px(const rl_survey *sv, const Params &p, int f, int i, double *px)
 {
-    View v{&sv->cfg, &sv->obs[i], false};
+    View v{&sv->cfg, &p.model, &sv->obs[i], false};
     double r[2];
     int k = sv->obs_lm[i];
     if (!v(&p.q[5 * f], &p.lm[2 * k], &p.h, r))
@@ -106,7 +108,6 @@ int solve(rl_survey *sv, Params &p, ceres::Problem &problem)
     opt.linear_solver_ordering.reset(order);
     ceres::Solver::Summary sum;
     ceres::Solve(opt, &problem, &sum);
-    sv->iterations += (int)sum.iterations.size();
     if (!sum.IsSolutionUsable()) {
         std::snprintf(sv->err, sizeof sv->err, "the solver failed: %s", sum.message.c_str());
         return 0;
@@ -133,10 +134,10 @@ void build_problem(rl_survey *sv, Params &p, ceres::Problem &problem, ceres::Los
             ceres::CostFunction *cost;
             if (r)
                 cost = new ceres::NumericDiffCostFunction<View, ceres::CENTRAL, 3, 5, 2, 1>(
-                    new View{c, &sv->obs[i], true});
+                    new View{c, &p.model, &sv->obs[i], true});
             else
                 cost = new ceres::NumericDiffCostFunction<View, ceres::CENTRAL, 2, 5, 2, 1>(
-                    new View{c, &sv->obs[i], false});
+                    new View{c, &p.model, &sv->obs[i], false});
             problem.AddResidualBlock(cost, loss, &p.q[5 * f], &p.lm[2 * k], &p.h);
         }
         problem.AddResidualBlock(new ceres::AutoDiffCostFunction<TiltPrior, 2, 5>(new TiltPrior{c->tilt_sigma}),
@@ -186,16 +187,17 @@ int drop_outlier_frames(rl_survey *sv, const Params &p)
         return 0;
     std::nth_element(all.begin(), all.begin() + all.size() / 2, all.end());
     // the median of a 2-D normal's norm is 1.177 sigma
-    double sigma = std::max(all[all.size() / 2] / 1.177, 0.02), dropped = 0;
+    double sigma = std::max(all[all.size() / 2] / 1.177, 0.02);
+    int dropped = 0;
     for (int f = 0; f < sv->n_fr; f++)
         if (sv->fr[f].status == RL_SURVEY_USED && frame_rms[f] > 8 * sigma) {
             sv->fr[f].status = RL_SURVEY_OUTLIER;
             dropped++;
         }
-    return (int)dropped;
+    return dropped;
 }
 
-// Residual statistics and each frame's RMS; the variance factor of the
+// Residual statistics; the variance factor of the
 // centres and radii (the noise as it came out over as assumed, outliers
 // clipped as the loss clips them), never below 1: residuals smaller than
 // the assumed noise do not make a landmark surer (its own centre bias
@@ -206,11 +208,12 @@ double summarize(rl_survey *sv, const Params &p)
     bool rad = use_radius(c);
     double ss_px = 0, ss_w = 0;
     long n_px = 0, n_res = 0;
+    long placed = 0;
     sv->frames_used = sv->obs_used = 0;
+    for (int k = 0; k < sv->n_lm; k++)
+        placed += sv->lm[k].status == RL_SURVEY_PLACED;
     for (int f = 0; f < sv->n_fr; f++) {
-        rl_survey_frame *fr = &sv->fr[f];
-        double ss = 0;
-        int n = 0;
+        const rl_survey_frame *fr = &sv->fr[f];
         if (fr->status != RL_SURVEY_USED)
             continue;
         sv->frames_used++;
@@ -220,13 +223,11 @@ double summarize(rl_survey *sv, const Params &p)
             double res[3];
             if (k < 0)
                 continue;
-            View v{c, &sv->obs[i], r};
+            View v{c, &p.model, &sv->obs[i], r};
             if (!v(&p.q[5 * f], &p.lm[2 * k], &p.h, res))
                 continue;
             double s = c->pixel_sigma * sv->obs[i].noise;
             double px2 = res[0] * res[0] * s * s + res[1] * res[1] * s * s;
-            ss += px2;
-            n++;
             if (sv->obs[i].noise <= 1.0) {
                 ss_px += px2;
                 n_px++;
@@ -236,10 +237,9 @@ double summarize(rl_survey *sv, const Params &p)
             n_res += r ? 3 : 2;
             sv->obs_used++;
         }
-        fr->rms_px = n ? std::sqrt(ss / n) : 0;
     }
     sv->rms_px = n_px ? std::sqrt(ss_px / n_px) : 0;
-    long dof = n_res - 3L * sv->frames_used - 2L * sv->n_lm;
+    long dof = n_res - 3L * sv->frames_used - 2L * placed;
     return dof > 0 ? std::max(ss_w / dof, 1.0) : 1.0;
 }
 
@@ -292,6 +292,7 @@ extern "C" rl_err rl_survey_adjust(rl_survey *sv)
     p.q.assign(5 * (size_t)sv->n_fr, 0.0);
     p.lm.assign(2 * (size_t)sv->n_lm, 0.0);
     p.h = sv->height;
+    rl_pose_fit_model(&p.model, &sv->cfg.mount, sv->height, 0.5 * sv->cfg.diameter);
     for (int f = 0; f < sv->n_fr; f++) {
         const rl_survey_frame *fr = &sv->fr[f];
         double q[5] = {fr->x, fr->y, fr->yaw, fr->roll, fr->pitch};

@@ -32,7 +32,6 @@ typedef struct {
     double *p;     /* level-model point of every observation, robot frame: x, y */
     int *head;     /* first landmark of each id, -1 */
     int *next;     /* next landmark of the same id */
-    int max_id;
     double *sum;   /* running sums of each landmark's placings: x, y, count */
     int repeats;   /* an id was placed at two places */
     int *cell;     /* landmarks by where they were placed: first in each hash bucket, -1 */
@@ -461,7 +460,6 @@ rl_err rl_survey_build(rl_survey *sv)
             max_id = sv->obs[i].id;
     memset(&b, 0, sizeof b);
     b.sv = sv;
-    b.max_id = max_id;
     free(sv->lm);
     free(sv->obs_lm);
     sv->n_lm = 0;

@@ -169,7 +169,9 @@ int rl_survey_moved(const rl_survey *sv, const rl_map *old, double sigmas, rl_su
         }
     }
     qsort(all, (size_t)moved, sizeof *all, cmp_move);
-    memcpy(mv, all, (size_t)(moved < max ? moved : max) * sizeof *mv);
+    if (moved > max)
+        moved = max;
+    memcpy(mv, all, (size_t)moved * sizeof *mv);
     free(p), free(d), free(all);
     return moved;
 }

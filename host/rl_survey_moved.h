@@ -32,9 +32,9 @@ typedef struct {
     double sigmas;       /* distance / its standard deviation */
 } rl_survey_move;
 
-/* The moved landmarks, largest first, up to max into mv; their number
- * (which may exceed max). Landmarks only one of the maps has are not
- * counted. */
+/* The moved landmarks, the most sigmas first, up to max into mv; how
+ * many it stored (-1 out of memory). Landmarks only one of the maps has
+ * are not counted. */
 int rl_survey_moved(const rl_survey *sv, const rl_map *old, double sigmas, rl_survey_move *mv, int max);
 
 #endif

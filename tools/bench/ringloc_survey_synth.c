@@ -2,14 +2,14 @@
  * lines, for timing the survey (make bench), and the survey's map
  * compared with that site's truth.
  *
- *   ringloc-survey-synth --out DIR [--cols 50 --rows 40 --frames 20000 --seed 1]
+ *   ringloc-survey-synth --camera CAM.yaml --out DIR [--cols 50 --rows 40 --frames 20000 --seed 1]
  *   ringloc-survey-synth --compare TRUTH.yaml SURVEY.yaml
  *
  * The site: a grid 0.61 m apart, each landmark up to 15 cm off it, ring6
  * ids repeating (1..60; 61 and 62 once, the origin and the axis). The
  * drive: back and forth over every row, weaving. Each frame's landmarks
- * are projected through the renderer's default camera (with its lens
- * distortion) onto the image, with 0.1 px of noise on centres and radii;
+ * are projected through the camera (the renderer's, --write-camera, in
+ * make bench) onto the image, with 0.1 px of noise on centres and radii;
  * the border cuts those that reach it. */
 #include <getopt.h>
 #include <math.h>
@@ -98,8 +98,9 @@ int main(int argc, char **argv)
         {"rows", required_argument, 0, 'r'}, {"frames", required_argument, 0, 'n'},
         {"seed", required_argument, 0, 's'}, {"compare", required_argument, 0, 'C'},
         {"noise", required_argument, 0, 'N'}, {"rock", required_argument, 0, 'K'},
+        {"camera", required_argument, 0, 'a'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
-    const char *out = NULL, *cmp = NULL;
+    const char *out = NULL, *cmp = NULL, *cam_path = NULL;
     int cols = 50, rows = 40, frames = 20000, c, i, j, k;
     unsigned long seed = 1;
     double noise = 0.1, rock = 0.01;
@@ -123,9 +124,10 @@ int main(int argc, char **argv)
         case 'C': cmp = optarg; break;
         case 'N': noise = atof(optarg); break;
         case 'K': rock = atof(optarg); break;
+        case 'a': cam_path = optarg; break;
         case 'h':
-            puts("usage: ringloc-survey-synth --out DIR [--cols 50] [--rows 40] [--frames 20000] [--seed 1]\n"
-                 "                            [--noise 0.1] [--rock 0.01]\n"
+            puts("usage: ringloc-survey-synth --camera CAM.yaml --out DIR [--cols 50] [--rows 40] [--frames 20000]\n"
+                 "                            [--seed 1] [--noise 0.1] [--rock 0.01]\n"
                  "       ringloc-survey-synth --compare TRUTH.yaml SURVEY.yaml");
             return 0;
         default: return 2;
@@ -133,10 +135,12 @@ int main(int argc, char **argv)
     }
     if (cmp)
         return optind < argc ? compare(cmp, argv[optind]) : (fprintf(stderr, "--compare TRUTH SURVEY\n"), 2);
-    if (!out || cols < 2 || rows < 2 || cols * rows > 20000 || frames < 1) {
-        fprintf(stderr, "ringloc-survey-synth: --out DIR, and at most 20000 landmarks (see --help)\n");
+    if (!out || !cam_path || cols < 2 || rows < 2 || cols * rows > 20000 || frames < 1) {
+        fprintf(stderr, "ringloc-survey-synth: --camera FILE, --out DIR, and at most 20000 landmarks (see --help)\n");
         return 2;
     }
+    if (rl_camfile_load(cam_path, &cam, err, sizeof err) != RL_OK)
+        return fprintf(stderr, "ringloc-survey-synth: %s\n", err), 1;
     mkdir(out, 0777);
     rng ^= seed * 0x2545F4914F6CDD1Dull;
     for (j = 0; j < rows; j++)
@@ -149,11 +153,6 @@ int main(int argc, char **argv)
         }
     site[(rows / 2) * cols + 1].id = 61;        /* the origin, near the middle of the left side */
     site[(rows / 2) * cols + cols - 2].id = 62; /* the axis, across the site */
-    /* the renderer's default camera */
-    rl_camera_defaults(&cam, 640, 480, 70.0 * M_PI / 180.0);
-    cam.model = RL_DIST_PLUMB_BOB;
-    cam.k[0] = -0.12, cam.k[1] = 0.08, cam.k[2] = 0.0004, cam.k[3] = -0.0003;
-    cam.fy = cam.fx * 1.002;
     rl_mount_defaults(&mount, 0.88);
     mount.x = 0.1;
     snprintf(path, sizeof path, "%s/camera.yaml", out);
@@ -195,7 +194,8 @@ int main(int argc, char **argv)
         q[3] = rock * nrand();
         q[4] = rock * nrand();
         rl_pose_fit_camera(&md, q, Rc, C);
-        fprintf(f, "{\"image\": \"synth_%05d\", \"width\": 640, \"height\": 480, \"landmarks\": [", k);
+        fprintf(f, "{\"image\": \"synth_%05d\", \"width\": %d, \"height\": %d, \"landmarks\": [", k, cam.width,
+                cam.height);
         for (i = 0; i < n; i++) {
             double xn, yn, u, v, rad;
             if (fabs(site[i].x - C[0]) > 2.5 || fabs(site[i].y - C[1]) > 2.5 ||

@@ -352,9 +352,24 @@ static double illumination(const scene *s, double du, double dv)
 
 /* The grid over what the frame sees (every 4th pixel's ray, moved both
  * ways by the motion blur, and a margin). 0, or -1 out of memory. */
+/* The grid cells an object's reach (1.5 times its size, a light's halo)
+ * touches, clipped to the grid. */
+static void object_cells(const scene *s, const obj_grid *g, const object *o, int *x0, int *x1, int *y0, int *y1)
+{
+    double reach = o->a > o->b ? o->a : o->b, e = reach * 1.5;
+    if (o->kind == OBJ_LIGHT || o->kind == OBJ_DOWNLIGHT)
+        e = fmax(e, reach + 8 * s->halo_sigma);
+    e += 1e-9;
+    *x0 = (int)fmax(0, floor((o->x - e - g->x0) / GRID_CELL));
+    *x1 = (int)fmin(g->nx - 1, floor((o->x + e - g->x0) / GRID_CELL));
+    *y0 = (int)fmax(0, floor((o->y - e - g->y0) / GRID_CELL));
+    *y1 = (int)fmin(g->ny - 1, floor((o->y + e - g->y0) / GRID_CELL));
+}
+
 static int build_grid(const scene *s, obj_grid *g)
 {
-    int W = s->cam.width, H = s->cam.height, x, y, i, cx, cy, pass, n = 0;
+    static int fill[GRID_MAX * GRID_MAX];
+    int W = s->cam.width, H = s->cam.height, x, y, i, cx, cy, pass;
     double b[4] = {1e30, 1e30, -1e30, -1e30}, m = 0.5 * s->motion + 0.05;
     for (y = 0; y < H; y += 4)
         for (x = 0; x < W; x += 4) {
@@ -372,44 +387,29 @@ static int build_grid(const scene *s, obj_grid *g)
         g->nx = g->ny = 0; /* every sample looks at every object */
         return 0;
     }
-    /* count, then fill (pass 1), each object into the cells its reach touches */
+    /* each object into the cells its reach touches: counted, then filled
+     * in the scene's order */
+    memset(g->start, 0, sizeof(int) * (size_t)(g->nx * g->ny + 1));
     for (pass = 0; pass < 2; pass++) {
-        if (pass == 1) {
-            for (i = 0, n = 0; i < g->nx * g->ny; i++) {
-                int c = g->start[i];
-                g->start[i] = n;
-                n += c;
-            }
-            g->start[g->nx * g->ny] = n;
-            g->idx = malloc(sizeof(int) * (size_t)(n + 1));
-            if (!g->idx)
-                return -1;
-        } else {
-            memset(g->start, 0, sizeof(int) * (size_t)(g->nx * g->ny + 1));
-        }
         for (i = 0; i < s->n; i++) {
-            const object *o = &s->obj[i];
-            double reach = o->a > o->b ? o->a : o->b, e = reach * 1.5;
             int x0, x1, y0, y1;
-            if (o->kind == OBJ_LIGHT || o->kind == OBJ_DOWNLIGHT)
-                e = fmax(e, reach + 8 * s->halo_sigma);
-            e += 1e-9;
-            x0 = (int)floor((o->x - e - g->x0) / GRID_CELL), x1 = (int)floor((o->x + e - g->x0) / GRID_CELL);
-            y0 = (int)floor((o->y - e - g->y0) / GRID_CELL), y1 = (int)floor((o->y + e - g->y0) / GRID_CELL);
-            for (cy = y0 < 0 ? 0 : y0; cy <= y1 && cy < g->ny; cy++)
-                for (cx = x0 < 0 ? 0 : x0; cx <= x1 && cx < g->nx; cx++) {
+            object_cells(s, g, &s->obj[i], &x0, &x1, &y0, &y1);
+            for (cy = y0; cy <= y1; cy++)
+                for (cx = x0; cx <= x1; cx++) {
                     int c = cy * g->nx + cx;
                     if (pass == 0)
-                        g->start[c]++;
+                        g->start[c + 1]++;
                     else
-                        g->idx[g->start[c]++] = i;
+                        g->idx[fill[c]++] = i;
                 }
         }
-        if (pass == 1) /* start[c] now ends cell c: shift back */
-            for (i = g->nx * g->ny; i > 0; i--)
-                g->start[i] = g->start[i - 1];
-        if (pass == 1)
-            g->start[0] = 0;
+        if (pass == 0) {
+            for (i = 0; i < g->nx * g->ny; i++)
+                g->start[i + 1] += g->start[i];
+            memcpy(fill, g->start, sizeof(int) * (size_t)(g->nx * g->ny));
+            if ((g->idx = malloc(sizeof(int) * (size_t)(g->start[g->nx * g->ny] + 1))) == NULL)
+                return -1;
+        }
     }
     return 0;
 }
