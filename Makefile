@@ -6,7 +6,7 @@
 #   make host-test-asan  the same tests built with clang under AddressSanitizer + UBSan (build-asan/),
 #                        with the plain-C matcher (RL_NO_VECTOR_EXT) instead of the vector one
 #   make demo            the firmware on a bundled drive: poses over a pty, report
-#   make bench           recognition, pose and survey benchmarks (figures, not pass/fail)
+#   make bench           recognition, pose, place and survey benchmarks (figures, not pass/fail)
 #   make bench-real REAL=DIR  ringloc and AprilTag 3 on real photos with landmarks placed in them
 #   make fuzz [FUZZ_SECONDS=60]  libFuzzer (clang, ASan + UBSan) on the recognizer, the PNG
 #                        reader, the YAML loaders, the pose solver, the frame decoder,
@@ -42,8 +42,8 @@ soak: host
 BUILD_FUZZ        ?= build-fuzz
 BUILD_FUZZ_MSAN   ?= build-fuzz-msan
 FUZZ_SECONDS      ?= 60
-FUZZ_TARGETS      ?= recog png yaml pose frame survey
-FUZZ_MSAN_TARGETS ?= recog pose frame
+FUZZ_TARGETS      ?= recog png yaml pose frame survey place
+FUZZ_MSAN_TARGETS ?= recog pose frame place
 
 fuzz:
 	@sh tools/deps.sh fuzz
@@ -122,8 +122,15 @@ bench: host
 	    --write-camera $(BENCH_DIR)/drive/camera.yaml --write-robot $(BENCH_DIR)/drive/robot.yaml && \
 	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/drive --path rect --frames 8 --rock 0.03 --mount 0.12,-0.03,0.02 && \
 	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/drive --path circle --frames 8 --rock 0.03 --mount 0.12,-0.03,0.02; }
+	@[ -f $(BENCH_DIR)/site/random_099.png ] || { mkdir -p $(BENCH_DIR)/site && \
+	  $(BUILD)/tools/ringloc-render --write-camera $(BENCH_DIR)/site/camera.yaml \
+	    --write-robot $(BENCH_DIR)/site/robot.yaml --mount 0.12,-0.03,0.02 && \
+	  $(BUILD)/host/ringloc plan --area 60x40 --pitch 0.61 --camera $(BENCH_DIR)/site/camera.yaml \
+	    --ceiling-height 2.75 --camera-height 0.88 --map-out $(BENCH_DIR)/site/map.yaml >$(BENCH_DIR)/site/plan.json && \
+	  $(BUILD)/tools/ringloc-render --site-map $(BENCH_DIR)/site/map.yaml --out $(BENCH_DIR)/site --path random \
+	    --frames 100 --seed 9 --mount 0.12,-0.03,0.02; }
 	$(BUILD)/tools/ringloc-bench $(BENCH_DIR)/640x480 $(BENCH_DIR)/1280x960 --local $(BENCH_DIR)/glare \
-	  --pose $(BENCH_DIR)/drive
+	  --pose $(BENCH_DIR)/drive --site $(BENCH_DIR)/site
 	@[ -f $(BENCH_DIR)/survey/detect.jsonl ] || \
 	  $(BUILD)/tools/ringloc-survey-synth --camera $(BENCH_DIR)/drive/camera.yaml --out $(BENCH_DIR)/survey
 	@echo "survey: 2,000 landmarks (ring6, ids repeating) from 20,000 frames of detect JSON lines, one thread:"

@@ -23,6 +23,22 @@ static const char *calib_help =
 
 #define MAX_SAMPLES 2048
 
+/* The landmark of `id` nearest (x, y): the one a camera there sees, on a
+ * map that repeats ids too; -1 if the map has none. */
+static int nearest_of_id(const rl_map *map, int id, double x, double y)
+{
+    int i, best = -1;
+    double best_d = 0;
+    for (i = 0; i < map->count; i++) {
+        double d = hypot(map->lm[i].x - x, map->lm[i].y - y);
+        if (map->lm[i].id == id && (best < 0 || d < best_d)) {
+            best = i;
+            best_d = d;
+        }
+    }
+    return best;
+}
+
 int rl_cmd_calibrate(int argc, char **argv)
 {
     static const struct option opts[] = {
@@ -34,7 +50,7 @@ int rl_cmd_calibrate(int argc, char **argv)
     static rl_map map;
     static rl_result res;
     double px = 0, py = 0, pyaw = 0, cx, cy, cyaw;
-    int have_pose = 0, c, i, j, n = 0, ids[RL_MAX_MAP_LANDMARKS];
+    int have_pose = 0, c, i, j, n = 0, ids[RL_MAX_IDS];
     rl_offsets o;
     rl_mount mount;
     rl_recog_config cfg;
@@ -101,7 +117,7 @@ int rl_cmd_calibrate(int argc, char **argv)
             return rl_cli_fail(C, RL_EXIT_FAIL, "%s: recognition failed", argv[i]);
         }
         for (j = 0; j < res.n_landmarks && n < MAX_SAMPLES; j++) {
-            int k = rl_map_find(&map, res.landmarks[j].id);
+            int k = nearest_of_id(&map, res.landmarks[j].id, cx, cy);
             double dx, dy;
             if (k < 0)
                 continue;

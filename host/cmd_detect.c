@@ -85,7 +85,7 @@ int rl_cmd_detect(int argc, char **argv)
     rl_heap_recog hr;
     static rl_result res;
     static rl_map map;
-    int c, i, failures = 0, ids[RL_MAX_MAP_LANDMARKS];
+    int c, i, failures = 0, ids[RL_MAX_IDS];
     char err[512], name[1024];
 
     rl_recog_defaults(&cfg);

@@ -7,6 +7,7 @@
 #include "rl_camfile.h"
 #include "rl_cli.h"
 #include "rl_cmd.h"
+#include "rl_heap_place.h"
 #include "rl_mapfile.h"
 #include "rl_offsetsfile.h"
 #include "rl_png.h"
@@ -22,7 +23,11 @@ static const char *locate_help =
     "  \"pose\": {\"x\": 1.2034, \"y\": 0.5021, \"yaw\": 0.0312, \"landmarks_used\": 4,\n"
     "           \"residual\": 0.0021, \"sigma\": {\"x\": 0.0011, \"y\": 0.0009, \"yaw\": 0.0004},\n"
     "           \"tilt\": {\"roll\": 0.0012, \"pitch\": -0.0051, \"solved\": true}, \"dropped\": []}\n"
-    "in metres and radians, or \"pose\": null with \"pose_error\" saying why.\n\n"
+    "in metres and radians, or \"pose\": null with \"pose_error\" saying why.\n"
+    "A map that repeats ids (a large site, 'ringloc plan --area') is searched for\n"
+    "the place whose constellation the frame shows; one more field says how:\n"
+    "  \"place\": {\"status\": \"found\", \"verified\": 9, \"runner_up\": 2, \"candidates\": 41}\n"
+    "(status ambiguous: no place leads the others clearly; no pose).\n\n"
     "  --camera FILE    ROS camera_info or OpenCV calibration YAML\n"
     "  --map FILE       landmark map YAML (family, diameter, ceiling_height, landmarks)\n"
     "  --robot FILE     robot YAML: camera_mount {x, y, z, yaw, roll, pitch}\n"
@@ -52,7 +57,10 @@ int rl_cmd_locate(int argc, char **argv)
     rl_camera cam;
     rl_mount mount;
     rl_offsets offsets;
-    int c, i, failures = 0, ids[RL_MAX_MAP_LANDMARKS];
+    int c, i, failures = 0, ids[RL_MAX_IDS];
+    rl_heap_place hp;
+    rl_place_found found;
+    rl_err e0;
     char err[512], name[1024];
 
     rl_recog_defaults(&cfg);
@@ -92,6 +100,8 @@ int rl_cmd_locate(int argc, char **argv)
         return rl_cli_fail(C, RL_EXIT_FAIL,
                            "%s: camera_mount.z %.3f m is not below the ceiling (%s: ceiling_height %.3f m)",
                            robot_path, mount.z, map_path, map.ceiling_height);
+    if ((e0 = rl_heap_place_init(&hp, &map, NULL)) != RL_OK)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: the place index: %s", map_path, rl_strerror(e0));
     rl_recog_use_map(&cfg, &map, ids);
     rl_heap_recog_init(&hr, &cfg);
     for (i = optind; i < argc; i++) {
@@ -118,9 +128,12 @@ int rl_cmd_locate(int argc, char **argv)
             rl_png_free(&img);
             continue;
         }
-        e = rl_pose_solve(&cam, &map, &mount, res.landmarks, res.n_landmarks,
-                          off_path ? &offsets : NULL, &pose);
+        e = rl_heap_place_solve(&hp, &cam, &map, &mount, res.landmarks, res.n_landmarks, off_path ? &offsets : NULL,
+                                NULL, &pose, &found);
         rl_report_json_open(stdout, argv[i], &res, &cfg.family, us);
+        if (hp.pl != NULL)
+            printf(", \"place\": {\"status\": \"%s\", \"verified\": %d, \"runner_up\": %d, \"candidates\": %d}",
+                   rl_place_status_name(found.status), found.verified, found.runner_up, found.candidates);
         if (e == RL_OK) {
             printf(", \"pose\": {\"x\": %.4f, \"y\": %.4f, \"yaw\": %.4f, \"landmarks_used\": %d, "
                    "\"residual\": %.4f, \"sigma\": {\"x\": %.4f, \"y\": %.4f, \"yaw\": %.5f}, "
@@ -134,7 +147,8 @@ int rl_cmd_locate(int argc, char **argv)
             printf(", \"pose\": null, \"pose_error\": \"%s\"}\n",
                    e == RL_ETOOFEW ? (pose.n_dropped ? "too few consistent landmarks (some disagree with the map)"
                                                      : "fewer than 2 landmarks identified")
-                                   : rl_strerror(e));
+                   : e == RL_EAMBIGUOUS ? "ambiguous: the landmarks fit more than one place of the map"
+                                        : rl_strerror(e));
         }
         fflush(stdout);
         if (annotate) {
@@ -153,5 +167,6 @@ int rl_cmd_locate(int argc, char **argv)
         rl_png_free(&img);
     }
     rl_heap_recog_free(&hr);
+    rl_heap_place_free(&hp);
     return failures ? RL_EXIT_FAIL : 0;
 }

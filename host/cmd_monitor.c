@@ -29,6 +29,8 @@ static const char *monitor_help =
     "frames, from older firmware, have no sigma and tilt)\n"
     "  {\"type\": \"status\", \"seq\": 9, \"time_ms\": 123520, \"reason\": 1,\n"
     "   \"landmarks_identified\": 1, \"candidates\": 3}\n"
+    "(reason: 1 too few landmarks, 2 camera error, 3 camera timeout, 4 configuration\n"
+    "error, 5 ambiguous: the landmarks fit several places of a map that repeats ids)\n"
     "Garbage and damaged frames are skipped (counted on exit).\n\n"
     "  --pty LINK   create a pseudo-terminal, make LINK point to its device (give\n"
     "               LINK to 'ringloc run' as serial.device), and decode what comes;\n"

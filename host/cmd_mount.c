@@ -8,6 +8,7 @@
 #include "rl_camfile.h"
 #include "rl_cli.h"
 #include "rl_cmd.h"
+#include "rl_heap_place.h"
 #include "rl_mapfile.h"
 #include "rl_png.h"
 #include "rl_report.h"
@@ -40,7 +41,9 @@ int rl_cmd_mount(int argc, char **argv)
     rl_mount mount, level;
     rl_recog_config cfg;
     rl_heap_recog hr;
-    int c, i, used = 0, frames = 0, ids[RL_MAX_MAP_LANDMARKS];
+    int c, i, used = 0, frames = 0, ids[RL_MAX_IDS];
+    rl_heap_place hp;
+    rl_place_found found;
     double sr = 0, sp = 0, srr = 0, spp = 0;
     char err[512];
 
@@ -66,6 +69,8 @@ int rl_cmd_mount(int argc, char **argv)
     /* the tilt is measured from a mount taken as vertical */
     level = mount;
     level.roll = level.pitch = 0;
+    if (rl_heap_place_init(&hp, &map, NULL) != RL_OK)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: the place index: out of memory", map_path);
     rl_recog_defaults(&cfg);
     rl_recog_use_map(&cfg, &map, ids);
     rl_heap_recog_init(&hr, &cfg);
@@ -82,7 +87,8 @@ int rl_cmd_mount(int argc, char **argv)
             fprintf(stderr, "ringloc %s: %s: %dx%d, the calibration is for %dx%d; left out\n", C, argv[i],
                     img.width, img.height, cam.width, cam.height);
         } else if (rl_report_run(&hr, &img, &res, &us) == RL_OK &&
-                   rl_pose_solve(&cam, &map, &level, res.landmarks, res.n_landmarks, NULL, &pose) == RL_OK &&
+                   rl_heap_place_solve(&hp, &cam, &map, &level, res.landmarks, res.n_landmarks, NULL, NULL, &pose,
+                                       &found) == RL_OK &&
                    pose.fit_valid) {
             sr += pose.fit_roll;
             sp += pose.fit_pitch;
@@ -95,6 +101,7 @@ int rl_cmd_mount(int argc, char **argv)
             fprintf(stderr, "ringloc %s: %d of %d frames\r", C, frames, argc - optind);
     }
     rl_heap_recog_free(&hr);
+    rl_heap_place_free(&hp);
     if (used < 3)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%d of %d frames show three or more landmarks of %s; at least 3 "
                            "such frames are needed", used, frames, map_path);

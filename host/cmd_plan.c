@@ -8,13 +8,17 @@
 #include "rl_cmd.h"
 #include "rl_mapfile.h"
 #include "rl_plan.h"
+#include "rl_plan_area.h"
 #include "rl_print.h"
 
 static const char *plan_help =
     "usage: ringloc plan --landmarks N (--camera CAM.yaml | --resolution WxH --hfov DEG)\n"
     "                    (--distance M | --ceiling-height H --camera-height Z)\n"
     "                    [--min-ring-px 2] [--paper a4]\n"
-    "                    [--grid COLSxROWS --pitch P [--map-out map.yaml] [--pdf FILE]]\n\n"
+    "                    [--grid COLSxROWS --pitch P [--map-out map.yaml] [--pdf FILE]]\n"
+    "       ringloc plan --area WxH --pitch P (camera options) --ceiling-height H --camera-height Z\n"
+    "                    [--family ring5] [--hamming 2] [--min-view 3] [--seed S]\n"
+    "                    [--map-out map.yaml] [--pdf FILE]\n\n"
     "The paper's design method as a calculator: recommends the family, the printed\n"
     "diameter and a grid pitch that keeps two whole landmarks in view anywhere,\n"
     "and prints the expected pixel size of every ring. With --grid it writes a map\n"
@@ -31,7 +35,47 @@ static const char *plan_help =
     "  --diameter M         use this diameter instead of the recommended one\n"
     "  --grid CxR --pitch P lay out C columns and R rows P metres apart\n"
     "  --map-out FILE       map YAML to write with --grid (default map.yaml)\n"
-    "  --pdf FILE           the map's landmarks, a page each, with --grid\n";
+    "  --pdf FILE           the map's landmarks, a page each, with --grid or --area\n\n"
+    "With --area it lays a grid of --pitch over a W x H metre site and gives it ids\n"
+    "from one small family, repeated, so that every view the camera can have with\n"
+    "at least --min-view whole landmarks shows a constellation (ids and where they\n"
+    "are) found nowhere else on the site, even with one id misread: one frame tells\n"
+    "the place (rl_place). Writes the map YAML (and the PDF) and prints its figures\n"
+    "as one JSON line (k_achieved: the smallest K it reached).\n"
+    "  --area WxH           the site's size, metres (e.g. 60x40)\n"
+    "  --family ringN       the family to reuse (default ring5)\n"
+    "  --hamming 2          only ids two code zones apart (ring5: 15 even-parity ids):\n"
+    "                       a single misread zone never gives another valid id\n"
+    "  --min-view K         views of K or more whole landmarks are unique (default 3)\n"
+    "  --seed S             random ids (default 1)\n";
+
+/* --area: the site's ids (cmd_plan_area.c) with this plan's view and diameter. */
+static int plan_area(const char *C, const rl_plan_input *in, const rl_plan_result *out, rl_err e,
+                     rl_plan_area *a, int hamming, double pitch, double diameter, double ceiling,
+                     const rl_paper *paper, const char *map_out, const char *pdf)
+{
+    if (out->bits != a->family.bits)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "internal error: the plan chose ring%d", out->bits);
+    if (e == RL_ERANGE && !(diameter > 0))
+        return rl_cli_fail(C, RL_EXIT_FAIL, "ring%d needs %.3f m landmarks, more than %s paper holds (%.3f m)",
+                           out->bits, out->diameter, paper->name, in->max_diameter);
+    if (!(pitch > 0))
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--area needs --pitch P (the paper's tiles: 0.61)");
+    if (!(ceiling > 0))
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--area needs --ceiling-height (it goes into the map)");
+    a->pitch = pitch;
+    a->view_w = out->view_w;
+    a->view_h = out->view_h;
+    a->diameter = diameter > 0 ? diameter : out->diameter;
+    a->ceiling = ceiling;
+    a->even_parity = hamming == 2;
+    a->min_view = a->min_view ? a->min_view : 3;
+    a->seed = a->seed ? a->seed : 1;
+    a->map_out = map_out ? map_out : "map.yaml";
+    a->pdf = pdf;
+    a->paper = paper;
+    return rl_plan_area_run(C, a);
+}
 
 int rl_cmd_plan(int argc, char **argv)
 {
@@ -43,7 +87,13 @@ int rl_cmd_plan(int argc, char **argv)
         {"paper", required_argument, 0, 'p'},      {"grid", required_argument, 0, 'g'},
         {"pitch", required_argument, 0, 'P'},      {"map-out", required_argument, 0, 'o'},
         {"pdf", required_argument, 0, 'F'},        {"diameter", required_argument, 0, 'D'},
+        {"area", required_argument, 0, 'A'},       {"family", required_argument, 0, 'y'},
+        {"hamming", required_argument, 0, 'M'},    {"min-view", required_argument, 0, 'K'},
+        {"seed", required_argument, 0, 'S'},
         {"help", no_argument, 0, 'h'},             {0, 0, 0, 0}};
+    rl_plan_area area = {0};
+    const char *family = NULL;
+    int hamming = 1;
     const char *C = "plan", *cam_path = NULL, *paper_name = "a4", *map_out = NULL, *pdf = NULL;
     double hfov = -1, ceiling = -1, cam_z = -1, pitch = -1, diameter = -1;
     int cols = 0, rows = 0, c, k, i, j;
@@ -72,6 +122,24 @@ int rl_cmd_plan(int argc, char **argv)
         case 'o': map_out = optarg; break;
         case 'F': pdf = optarg; break;
         case 'D': if (!rl_cli_double(C, "--diameter", optarg, 0.001, 5, &diameter)) return RL_EXIT_USAGE; break;
+        case 'A': {
+            int used = -1;
+            if (sscanf(optarg, "%lfx%lf%n", &area.width, &area.height, &used) != 2 || optarg[used] != '\0' ||
+                !(area.width > 0) ||
+                !(area.height > 0) || area.width > 10000 || area.height > 10000)
+                return rl_cli_fail(C, RL_EXIT_USAGE, "--area: '%s' is not a size in metres like 60x40", optarg);
+            break;
+        }
+        case 'y': family = optarg; break;
+        case 'M': if (!rl_cli_int(C, "--hamming", optarg, 1, 2, &hamming)) return RL_EXIT_USAGE; break;
+        case 'K': if (!rl_cli_int(C, "--min-view", optarg, 3, 100, &area.min_view)) return RL_EXIT_USAGE; break;
+        case 'S': {
+            int sd;
+            if (!rl_cli_int(C, "--seed", optarg, 0, 1000000000, &sd))
+                return RL_EXIT_USAGE;
+            area.seed = (unsigned long)sd;
+            break;
+        }
         case 'h': fputs(plan_help, stdout); return 0;
         default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
@@ -101,6 +169,15 @@ int rl_cmd_plan(int argc, char **argv)
     if (!(in.distance > 0))
         return rl_cli_fail(C, RL_EXIT_USAGE, "give --distance M, or --ceiling-height above "
                                              "--camera-height (the camera must be below the ceiling)");
+    if (area.width > 0) {
+        if (cols > 0)
+            return rl_cli_fail(C, RL_EXIT_USAGE, "give --area or --grid, not both");
+        if (rl_family_parse(family ? family : "ring5", &area.family) != RL_OK)
+            return rl_cli_fail(C, RL_EXIT_USAGE, "--family: '%s' is not ring2 .. ring%d", family, RL_MAX_BITS);
+        in.landmarks = rl_family_count(&area.family); /* the plan's diameter for this family */
+    } else if (family != NULL || hamming != 1 || area.min_view || area.seed) {
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--family, --hamming, --min-view and --seed go with --area");
+    }
     if (cols > 0 && in.landmarks == 0)
         in.landmarks = (long)cols * rows > 1000000 ? 1000001 : cols * rows;
     if (in.landmarks <= 0)
@@ -115,6 +192,8 @@ int rl_cmd_plan(int argc, char **argv)
                            (1 << RL_MAX_BITS) - 2, RL_MAX_BITS);
     if (e == RL_EINVAL)
         return rl_cli_fail(C, RL_EXIT_USAGE, "inputs must be positive");
+    if (area.width > 0)
+        return plan_area(C, &in, &out, e, &area, hamming, pitch, diameter, ceiling, paper, map_out, pdf);
     printf("ringloc plan: %d landmarks, %dx%d camera, fx %.1f px, %.3f m to the ceiling\n",
            in.landmarks, in.width, in.height, in.fx, in.distance);
     printf("  ceiling in view    %.3f x %.3f m (%.1f px per metre)\n", out.view_w, out.view_h,
@@ -176,7 +255,7 @@ int rl_cmd_plan(int argc, char **argv)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
     printf("  map                %s: %dx%d landmarks %.3f m apart\n", map_out, cols, rows, pitch);
     if (pdf != NULL) {
-        int ids[RL_MAX_MAP_LANDMARKS];
+        static int ids[RL_MAX_MAP_LANDMARKS];
         for (i = 0; i < map.count; i++)
             ids[i] = map.lm[i].id;
         if (rl_print_pdf(pdf, paper, &map.family, ids, map.lm, map.count, map.diameter, err,

@@ -338,7 +338,7 @@ int rl_cmd_sitecheck(int argc, char **argv)
         {"json", no_argument, 0, 'j'}, {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     const char *C = "site-check", *family = "ring5", *mapfile = NULL, *camera = NULL;
     static rl_map map;
-    static int ids[RL_MAX_MAP_LANDMARKS];
+    static int ids[RL_MAX_IDS];
     double diameter = 0.21, distance = 1.87, r = 0;
     int c, json = 0, n, i, seed = 1, rc;
     char **photos, err[512];

@@ -50,6 +50,23 @@ opt plan diameter "0 -0.2" --landmarks 30 $geom --distance 1.87
 opt plan ceiling-height "0 -2.75" --landmarks 30 $geom --camera-height 0.88
 opt plan camera-height "-1" --landmarks 30 $geom --ceiling-height 2.75
 opt plan pitch "0 -0.61" $geom --distance 1.87 --ceiling-height 2.75 --grid 6x5 --map-out "$T/m.yaml"
+area="--area 6x5 --pitch 0.61 $geom --distance 1.87 --ceiling-height 2.75 --map-out $T/m.yaml"
+opt plan hamming "0 3 2.5 -2" $area
+opt plan min-view "0 2 101 2.5" $area
+opt plan seed "-1 2.5 1e10" $area
+for v in abc 0x10 10x0 nanxnan infx5 1e9x1 -5x5 10 "" 5x5x5x; do
+    expect 2 "--area" "$R" plan --area "$v" --pitch 0.61 $geom --distance 1.87 --ceiling-height 2.75
+done
+expect 2 "--area needs --pitch" "$R" plan --area 6x5 $geom --distance 1.87 --ceiling-height 2.75
+expect 2 "--area needs --ceiling-height" "$R" plan --area 6x5 --pitch 0.61 $geom --distance 1.87
+expect 2 "give --area or --grid" "$R" plan $area --grid 6x5
+expect 2 "--family" "$R" plan $area --family ring9
+expect 2 "go with --area" "$R" plan $geom --distance 1.87 --landmarks 30 --hamming 2
+expect 2 "would overlap" "$R" plan --area 6x5 --pitch 0.1 $geom --distance 1.87 --ceiling-height 2.75
+expect 2 "more than a map holds" "$R" plan --area 600x600 --pitch 0.61 $geom --distance 1.87 --ceiling-height 2.75
+expect 2 "too few whole landmarks" "$R" plan --area 60x40 --pitch 2.5 $geom --distance 1.87 --ceiling-height 2.75
+expect 1 "/nonexistent/m.yaml" "$R" plan --area 6x5 --pitch 0.61 $geom --distance 1.87 --ceiling-height 2.75 \
+    --map-out /nonexistent/m.yaml
 opt site-check radius-px "0 -25 100000" --rounds 1 "$frame"
 opt site-check diameter "0 -0.21" --camera "$cam" --distance 1.87 --rounds 1 "$frame"
 opt site-check distance "0 -1.87" --camera "$cam" --rounds 1 "$frame"
@@ -178,7 +195,7 @@ for v in nan .inf abc 1e308 "[0]"; do
     key map "$map" x "0,/x: 0.3050/s//x: $v/"
     key map "$map" y "0,/y: 0.3050}/s//y: $v}/"
 done
-key map "$map" "duplicate id" "0,/{id: 8,/s//{id: 1,/"
+key map "$map" "overlapping landmarks" "0,/{id: 8, x: 0.9150/s//{id: 8, x: 0.4050/"
 key map "$map" "doubled key" "0,/{id: 1, x: 0.3050/s//{id: 1, x: 0.3050, x: 1/"
 key map "$map" "no family" "/^family:/d"
 key map "$map" "no diameter" "/^diameter:/d"

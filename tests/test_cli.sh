@@ -49,8 +49,11 @@ expect 1 '/nonexistent/dir/x.pdf' -- "$R" gen --id 3 --diameter 0.15 --pdf /none
 expect 1 "$T/nomap.yaml: No such file" -- "$R" gen --map "$T/nomap.yaml" --pdf "$T/x.pdf"
 printf 'family: ring5\ndiameter: 0.2\nceiling_height: 2.5\nlandmarks:\n  - {id: 3, x: 0, y: 0}\n  - {id: 40, x: 1, y: 0}\n' >"$T/badid.yaml"
 expect 1 "badid.yaml:6: landmarks\[1\].id: id 40 is not in ring5" -- "$R" gen --map "$T/badid.yaml" --pdf "$T/x.pdf"
+printf 'family: ring5\ndiameter: 0.2\nceiling_height: 2.5\nlandmarks:\n  - {id: 3, x: 0, y: 0}\n  - {id: 4, x: 0.15, y: 0}\n' >"$T/overlap.yaml"
+expect 1 "overlap.yaml:6: landmarks\[1\]: id 4 at \(0.15, 0\) overlaps landmarks\[0\] \(id 3 at \(0, 0\)\)" -- "$R" gen --map "$T/overlap.yaml" --pdf "$T/x.pdf"
+# a map may repeat ids (a large site reuses a small family's): each entry is its own landmark
 printf 'family: ring5\ndiameter: 0.2\nceiling_height: 2.5\nlandmarks:\n  - {id: 3, x: 0, y: 0}\n  - {id: 3, x: 1, y: 0}\n' >"$T/dup.yaml"
-expect 1 "dup.yaml:6: landmarks\[1\].id: duplicate id 3" -- "$R" gen --map "$T/dup.yaml" --pdf "$T/x.pdf"
+expect 0 "2 landmarks of ring5" -- "$R" gen --map "$T/dup.yaml" --pdf "$T/x.pdf"
 printf 'family: ring5\ndiameter: 0.2\nlandmarks: []\n' >"$T/nokey.yaml"
 expect 1 "nokey.yaml:1: ceiling_height: missing key" -- "$R" gen --map "$T/nokey.yaml" --pdf "$T/x.pdf"
 printf 'family: ring5\ndiameter: [0.2\n' >"$T/broken.yaml"
@@ -58,6 +61,21 @@ expect 1 "broken.yaml:[0-9]+: malformed YAML" -- "$R" gen --map "$T/broken.yaml"
 printf 'family: ring5\ndiameter: 0.2\nceiling_height: 2.5\nlandmarks:\n  - {id: 3, x: zero, y: 0}\n' >"$T/nan.yaml"
 expect 1 "nan.yaml:5: landmarks\[0\].x: expected a number, got 'zero'" -- "$R" gen --map "$T/nan.yaml" --pdf "$T/x.pdf"
 expect 0 'ringloc gen: 1 landmark' -- "$R" gen --id 25 --diameter 0.15 --pdf "$T/ok.pdf"
+
+# plan --area: a small site from ring5's 30 ids, so they repeat; the JSON's counts by hand
+# (6 m / 0.61 = 9 columns, 5 m / 0.61 = 8 rows) and the map it wrote
+expect 0 '"cols": 9, "rows": 8, "landmarks": 72, "ids": [0-9]+, "even_parity": false, "min_view": 3, "k_achieved": 3, "all_unique": true' -- \
+    "$R" plan --area 6x5 --pitch 0.61 --hfov 70 --distance 1.87 --ceiling-height 2.75 --map-out "$T/site.yaml"
+n_lm=$(grep -c '{id:' "$T/site.yaml")
+n_ids=$(grep -o '{id: [0-9]*' "$T/site.yaml" | sort -u | wc -l)
+if [ "$n_lm" = 72 ] && [ "$n_ids" -le 30 ]; then pass=$((pass + 1)); else
+    echo "FAIL: plan --area wrote $n_lm landmarks with $n_ids ids (want 72, at most 30)"; fail=$((fail + 1)); fi
+expect 0 '"even_parity": true' -- "$R" plan --area 6x5 --pitch 0.61 --hfov 70 --distance 1.87 --ceiling-height 2.75 \
+    --hamming 2 --map-out "$T/site2.yaml"
+# even parity: each id's code has an even number of black zones
+odd=$(grep -o '{id: [0-9]*' "$T/site2.yaml" | sed 's/{id: //' | sort -un | while read -r i; do
+    b=0; v=$i; while [ "$v" -gt 0 ]; do b=$((b + v % 2)); v=$((v / 2)); done; [ $((b % 2)) = 1 ] && echo "$i"; done)
+if [ -z "$odd" ]; then pass=$((pass + 1)); else echo "FAIL: --hamming 2 used odd-parity ids: $odd"; fail=$((fail + 1)); fi
 
 # plan
 expect 2 'give --camera FILE, or --hfov' -- "$R" plan --landmarks 30 --distance 1.87

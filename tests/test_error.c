@@ -3,7 +3,7 @@
 
 static const rl_err all[] = {RL_EINVAL, RL_ENOMEM, RL_ELIMIT, RL_ERANGE, RL_EFORMAT, RL_EIO,
                              RL_ENOTFOUND, RL_ETIMEOUT, RL_ENODEV, RL_ETOOFEW,
-                             RL_EUNSUPPORTED};
+                             RL_EUNSUPPORTED, RL_EAMBIGUOUS};
 
 static void test_ok_is_zero_errors_negative(void **state)
 {

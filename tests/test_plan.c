@@ -2,6 +2,7 @@
  * 640x480, 70 degrees horizontal field of view, 1.87 m to the ceiling. */
 #include "rl_test.h"
 #include "rl_plan.h"
+#include "rl_site_plan.h"
 #include <math.h>
 
 /* Independent of rl_plan: fewest grid points of pitch p inside a w x h
@@ -99,11 +100,137 @@ static void test_family_choice_and_limits(void **state)
     assert_int_equal(rl_plan_compute(&in, &out), RL_EINVAL);
 }
 
+/* ---- rl_site_plan against brute force ---- */
+
+#define SITE_MAX 400
+static int site_ids[SITE_MAX];
+
+/* Independent of rl_site_plan: the grid points whose whole landmark a
+ * footprint holds, and the fewest ids that differ under any other grid
+ * motion (every quarter turn and every shift that keeps a point on the
+ * site), off-site points counting as different. */
+static int brute_view(const rl_site_plan_input *in, const rl_site_plan_result *r, double cx, double cy, double th,
+                      int *vx, int *vy)
+{
+    double hw = 0.5 * (in->view_w - in->diameter), hh = 0.5 * (in->view_h - in->diameter);
+    int i, j, n = 0;
+    for (j = 0; j < r->rows; j++)
+        for (i = 0; i < r->cols; i++) {
+            double dx = r->x0 + i * in->pitch - cx, dy = r->y0 + j * in->pitch - cy;
+            if (fabs(cos(th) * dx + sin(th) * dy) <= hw && fabs(-sin(th) * dx + cos(th) * dy) <= hh) {
+                vx[n] = i;
+                vy[n] = j;
+                n++;
+            }
+        }
+    return n;
+}
+
+static int brute_fewest_differences(const rl_site_plan_result *r, const int *vx, const int *vy, int n)
+{
+    int k, tx, ty, p, fewest = 1000;
+    for (k = 0; k < 4; k++)
+        for (ty = -2 * r->rows; ty <= 2 * r->rows; ty++)
+            for (tx = -2 * r->cols; tx <= 2 * r->cols; tx++) {
+                int diff = 0, on = 0;
+                if (k == 0 && tx == 0 && ty == 0)
+                    continue;
+                for (p = 0; p < n && diff < fewest; p++) {
+                    /* turn by k quarters about the origin, then shift */
+                    int x = vx[p], y = vy[p], q, t;
+                    for (q = 0; q < k; q++)
+                        t = x, x = -y, y = t;
+                    x += tx;
+                    y += ty;
+                    if (x < 0 || y < 0 || x >= r->cols || y >= r->rows) {
+                        diff++;
+                        continue;
+                    }
+                    on++;
+                    diff += site_ids[y * r->cols + x] != site_ids[vy[p] * r->cols + vx[p]];
+                }
+                if (on > 0 && diff < fewest)
+                    fewest = diff;
+            }
+    return fewest;
+}
+
+static void test_site_views_unique(void **state)
+{
+    rl_site_plan_input in;
+    rl_site_plan_result r;
+    uint64_t s = 99;
+    int k, checked = 0, i;
+    (void)state;
+    rl_site_plan_defaults(&in);
+    in.width = 9;
+    in.height = 7;
+    in.pitch = 0.61;
+    in.view_w = 2.62;
+    in.view_h = 1.96;
+    in.diameter = 0.195;
+    in.n_ids = 30;
+    in.bits = 5;
+    in.seed = 4;
+    assert_int_equal(rl_site_plan(&in, site_ids, SITE_MAX, &r), RL_OK);
+    assert_int_equal(r.cols, 14);
+    assert_int_equal(r.rows, 11);
+    assert_int_equal(r.k_achieved, 3);
+    assert_int_equal(r.failing, 0);
+    for (i = 0; i < r.cols * r.rows; i++) {
+        assert_true(site_ids[i] >= 1 && site_ids[i] <= 30);
+    }
+    /* views at random places and headings, none on the planner's own sampling */
+    for (k = 0; k < 600; k++) {
+        int vx[64], vy[64], n;
+        double cx, cy, th;
+        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        cx = in.clearance + (in.width - 2 * in.clearance) * (double)(s >> 11) / 9007199254740992.0;
+        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        cy = in.clearance + (in.height - 2 * in.clearance) * (double)(s >> 11) / 9007199254740992.0;
+        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        th = M_PI * (double)(s >> 11) / 9007199254740992.0;
+        n = brute_view(&in, &r, cx, cy, th, vx, vy);
+        if (n < r.k_achieved)
+            continue;
+        assert_true(brute_fewest_differences(&r, vx, vy, n) >= 2);
+        checked++;
+    }
+    assert_true(checked > 500);
+    {
+        /* the oracle can fail: a 5 x 5 block copied elsewhere makes a view over it not unique */
+        int vx[64], vy[64], n, a, b;
+        for (b = 0; b < 5; b++)
+            for (a = 0; a < 5; a++)
+                site_ids[(b + 5) * r.cols + a + 8] = site_ids[b * r.cols + a];
+        n = brute_view(&in, &r, r.x0 + 2 * in.pitch, r.y0 + 2 * in.pitch, 0.1, vx, vy);
+        assert_true(n >= 3);
+        assert_true(brute_fewest_differences(&r, vx, vy, n) < 2);
+    }
+    /* even parity only: every id's code has an even number of black zones */
+    in.even_parity = 1;
+    {
+        rl_err e = rl_site_plan(&in, site_ids, SITE_MAX, &r);
+        assert_int_equal(e, r.k_achieved > 3 ? RL_ELIMIT : RL_OK);
+    }
+    for (i = 0; i < r.cols * r.rows; i++) {
+        int b, bits = 0;
+        for (b = 0; b < 5; b++)
+            bits += (site_ids[i] >> b) & 1;
+        assert_int_equal(bits % 2, 0);
+    }
+    /* too small a grid for its ids, and refusals */
+    assert_int_equal(rl_site_plan(&in, site_ids, 10, &r), RL_ENOMEM);
+    in.pitch = 0;
+    assert_int_equal(rl_site_plan(&in, site_ids, SITE_MAX, &r), RL_EINVAL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_paper_setup),
         cmocka_unit_test(test_family_choice_and_limits),
+        cmocka_unit_test(test_site_views_unique),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -325,6 +325,58 @@ static void test_logs_are_rate_limited(void **state)
     assert_true(log_lines < 40 / 2);
 }
 
+/* Issue 16: a map that holds the frame's constellation twice (the same
+ * ids again 10 m away). With no prior every frame is ambiguous: status
+ * frames, reason 5, no pose. With the last pose known (0.1 s before the
+ * first frame) each frame is placed near it, tracked, and right. Nothing
+ * is allocated while the loop runs. */
+static void test_repeated_ids_ambiguous_then_tracked(void **state)
+{
+    static const int script[] = {OK, OK, OK, END};
+    static rl_map twice;
+    static unsigned char place_mem[1 << 16];
+    rl_place_config pc;
+    rl_place *pl;
+    long before;
+    int i;
+    (void)state;
+    twice = map;
+    for (i = 0; i < map.count; i++) {
+        twice.lm[map.count + i] = map.lm[i];
+        twice.lm[map.count + i].x += 10.0;
+    }
+    twice.count = 2 * map.count;
+    rl_place_defaults(&pc);
+    assert_true(rl_place_size(&twice, &pc) <= sizeof place_mem);
+    assert_int_equal(rl_place_init(&pl, &twice, &pc, place_mem, sizeof place_mem), RL_OK);
+    start(script);
+    runner.map = &twice;
+    runner.place = pl;
+    assert_int_equal(rl_run_step(&runner), RL_OK);
+    before = allocations;
+    run_to_end();
+    assert_int_equal(allocations - before, 0);
+    assert_int_equal(out.n, 3);
+    for (i = 0; i < 3; i++) {
+        assert_int_equal(out.msgs[i].type, RL_FRAME_STATUS);
+        assert_int_equal(out.msgs[i].reason, RL_STATUS_AMBIGUOUS);
+    }
+    assert_int_equal(runner.ambiguous, 3);
+    start(script);
+    runner.map = &twice;
+    runner.place = pl;
+    runner.have_pose = 1;
+    runner.last_pose.x = tr.robot_x + 0.05;
+    runner.last_pose.y = tr.robot_y - 0.05;
+    runner.last_pose.yaw = tr.robot_yaw + 0.05;
+    runner.last_pose_us = 1000000u; /* the first frame is at 1.1 s */
+    run_to_end();
+    assert_int_equal(out.n, 3);
+    for (i = 0; i < 3; i++)
+        assert_pose_right(&out.msgs[i]);
+    assert_int_equal(runner.tracked, 3);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -335,6 +387,7 @@ int main(void)
         cmocka_unit_test(test_bad_frame_does_not_stop_the_loop),
         cmocka_unit_test(test_damaged_frame_is_skipped),
         cmocka_unit_test(test_logs_are_rate_limited),
+        cmocka_unit_test(test_repeated_ids_ambiguous_then_tracked),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

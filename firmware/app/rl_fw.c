@@ -9,6 +9,7 @@
 #include "rl_camfile.h"
 #include "rl_cli.h"
 #include "rl_heap_recog.h"
+#include "rl_heap_place.h"
 #include "rl_mapfile.h"
 #include "rl_offsetsfile.h"
 #include "rl_robotfile.h"
@@ -265,6 +266,7 @@ int rl_fw_main(const char *C, int argc, char **argv)
     static out_ctx octx;
     static char prefix[128];
     rl_heap_recog hr;
+    rl_heap_place hp;
     rl_run_io io;
     const char *config = NULL;
     long max_frames = 0;
@@ -280,6 +282,10 @@ int rl_fw_main(const char *C, int argc, char **argv)
     /* start-up: everything that can fail in configuration fails here, once */
     if (!load_setup(C, config, &s) || !make_recognizer(C, &s, &hr))
         return RL_EXIT_FAIL;
+    if ((rc = rl_heap_place_init(&hp, &s.map, NULL)) != RL_OK) {
+        rl_heap_recog_free(&hr);
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: the place index: %s", s.cfg.map, rl_strerror((rl_err)rc));
+    }
     wire_io(&s, &octx, prefix, &io);
     if (record != NULL)
         snprintf(s.cfg.record_dir, sizeof s.cfg.record_dir, "%s", record);
@@ -292,6 +298,7 @@ int rl_fw_main(const char *C, int argc, char **argv)
         rcc.max_mb = s.cfg.record_max_mb;
         if (rl_record_start(&rec, &rcc, s.calib.width, s.calib.height, err, sizeof err) != RL_OK) {
             rl_heap_recog_free(&hr);
+            rl_heap_place_free(&hp);
             return rl_cli_fail(C, RL_EXIT_FAIL, "record: %s", err);
         }
         io.frame = record_frame;
@@ -300,12 +307,14 @@ int rl_fw_main(const char *C, int argc, char **argv)
     }
     rl_run_init(&runner, &io, hr.rec, &s.calib, &s.map, &s.mount, &res);
     runner.offsets = s.cfg.offsets[0] ? &s.offsets : NULL;
+    runner.place = hp.pl;
     runner.log_interval_us = (uint64_t)(s.cfg.log_interval * 1e6);
     if (s.cfg.cam_rate > 0)
         runner.timeout_ms = (int)(3000.0 / s.cfg.cam_rate) > 200 ? (int)(3000.0 / s.cfg.cam_rate) : 200;
     on_signals();
-    fprintf(stderr, "%s: %s camera %s, %d landmarks in %s, poses to %s at %d baud\n", prefix,
-            s.cfg.cam_backend, s.cfg.cam_device, s.map.count, s.cfg.map, s.cfg.serial, s.cfg.baud);
+    fprintf(stderr, "%s: %s camera %s, %d landmarks in %s%s, poses to %s at %d baud\n", prefix,
+            s.cfg.cam_backend, s.cfg.cam_device, s.map.count, s.cfg.map,
+            hp.pl ? " (ids repeat: places found from constellations)" : "", s.cfg.serial, s.cfg.baud);
     run_loop(&runner, max_frames);
     fprintf(stderr, "%s: %ld frames, %ld poses, %ld status frames, %ld camera errors, "
                     "%ld bad frames, %ld timeouts, %ld serial errors, %ld frames dropped%s\n",
@@ -317,6 +326,10 @@ int rl_fw_main(const char *C, int argc, char **argv)
         fprintf(stderr, "%s: recorded %ld frames (%.1f MB) to %s, %ld skipped while the disk was behind%s%s\n",
                 prefix, rec.saved, rec.bytes / 1e6, rec.dir, rec.skipped, rec.error[0] ? "; " : "", rec.error);
     }
+    if (hp.pl)
+        fprintf(stderr, "%s: %ld poses tracked from the last one, %ld frames ambiguous\n", prefix, runner.tracked,
+                runner.ambiguous);
     rl_heap_recog_free(&hr);
+    rl_heap_place_free(&hp);
     return 0;
 }

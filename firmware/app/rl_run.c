@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <string.h>
 
+static rl_err solve(rl_runner *r, uint64_t t_us, rl_pose *pose);
+
 void rl_run_init(rl_runner *r, const rl_run_io *io, rl_recog *rec, const rl_camera *calib,
                  const rl_map *map, const rl_mount *mount, rl_result *res)
 {
@@ -219,8 +221,7 @@ rl_err rl_run_step(rl_runner *r)
         send_status(r, RL_STATUS_TOO_FEW, 0, 0, f.t_us);
         return RL_OK;
     }
-    e = rl_pose_solve(r->calib, r->map, r->mount, r->res->landmarks, r->res->n_landmarks,
-                      r->offsets, &pose);
+    e = solve(r, f.t_us, &pose);
     for (i = 0; i < r->res->n_landmarks; i++)
         local |= r->res->landmarks[i].pass == RL_PASS_LOCAL;
     r->local_used += local;
@@ -246,11 +247,39 @@ rl_err rl_run_step(rl_runner *r)
         send_msg(r, &m);
     } else if (e == RL_ETOOFEW) {
         send_status(r, RL_STATUS_TOO_FEW, r->res->n_landmarks, r->res->n_candidates, f.t_us);
+    } else if (e == RL_EAMBIGUOUS) {
+        r->ambiguous++;
+        send_status(r, RL_STATUS_AMBIGUOUS, r->res->n_landmarks, r->res->n_candidates, f.t_us);
     } else {
         logf_(r, RL_LOG_FRAME, "pose: %s (check the map and robot heights)", rl_strerror(e));
         send_status(r, RL_STATUS_CONFIG_ERROR, r->res->n_landmarks, r->res->n_candidates, f.t_us);
     }
     return RL_OK;
+}
+
+/* The pose of the frame taken at t_us: by id, or on a map that repeats
+ * ids by place, with the last pose as the prior. */
+static rl_err solve(rl_runner *r, uint64_t t_us, rl_pose *pose)
+{
+    rl_place_prior prior;
+    rl_place_found found;
+    rl_err e;
+    if (r->place == NULL)
+        return rl_pose_solve(r->calib, r->map, r->mount, r->res->landmarks, r->res->n_landmarks, r->offsets, pose);
+    prior.valid = r->have_pose && t_us >= r->last_pose_us;
+    prior.x = r->last_pose.x;
+    prior.y = r->last_pose.y;
+    prior.yaw = r->last_pose.yaw;
+    prior.age = prior.valid ? (double)(t_us - r->last_pose_us) / 1e6 : 0;
+    e = rl_place_solve(r->place, r->calib, r->mount, r->res->landmarks, r->res->n_landmarks, r->offsets, &prior,
+                       pose, &found);
+    if (e == RL_OK) {
+        r->have_pose = 1;
+        r->last_pose = *pose;
+        r->last_pose_us = t_us;
+        r->tracked += found.status == RL_PLACE_TRACKED;
+    }
+    return e;
 }
 
 void rl_run_close(rl_runner *r)

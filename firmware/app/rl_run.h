@@ -1,7 +1,9 @@
 /* rl_run: the firmware's main loop, one step at a time.
  *
  * Each step grabs a frame from the camera, recognizes, localizes and sends
- * a pose frame, or a status frame saying why there is no pose. Faults are
+ * a pose frame, or a status frame saying why there is no pose (on a map
+ * that repeats ids, `place` finds which landmarks the frame shows, near
+ * the last pose first: a status "ambiguous" when no place is clear). Faults are
  * part of the loop, not exits: a camera that fails is closed and reopened
  * with backoff while status frames keep going out; a camera that times out
  * repeatedly is reopened; a serial line that disappears is reopened; a bad
@@ -35,6 +37,7 @@
 #include "rl_cam.h"
 #include "rl_clock.h"
 #include "rl_frame.h"
+#include "rl_place.h"
 #include "rl_pose.h"
 #include "rl_recog.h"
 
@@ -70,6 +73,7 @@ typedef struct {
     const rl_map *map;
     const rl_mount *mount;
     const rl_offsets *offsets;  /* NULL: pinhole model */
+    const rl_place *place;      /* the index of a map that repeats ids (NULL: ids unique) */
     rl_result *res;             /* caller's (large) */
     /* settings, defaults from rl_run_init */
     int timeout_ms;             /* a grab waits at most this long (500) */
@@ -88,6 +92,12 @@ typedef struct {
     long frames, poses, statuses, camera_errors, camera_timeouts, serial_errors, dropped;
     long bad_frames;            /* frames the camera could not read, skipped */
     long local_used;
+    long ambiguous;             /* frames whose landmarks fit several places */
+    long tracked;               /* poses found near the previous one */
+    /* the last pose, the prior of the next frame's place */
+    int have_pose;
+    rl_pose last_pose;
+    uint64_t last_pose_us;
 } rl_runner;
 
 void rl_run_init(rl_runner *r, const rl_run_io *io, rl_recog *rec, const rl_camera *calib,

@@ -15,6 +15,7 @@ const char *rl_strerror(rl_err e)
     case RL_ENODEV: return "no such device";
     case RL_ETOOFEW: return "too few landmarks";
     case RL_EUNSUPPORTED: return "not supported";
+    case RL_EAMBIGUOUS: return "ambiguous place";
     }
     return "unknown error";
 }

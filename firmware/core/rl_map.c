@@ -11,6 +11,13 @@ int rl_map_find(const rl_map *map, int id)
     return -1;
 }
 
+/* Whether landmarks i and j overlap: centres closer than the diameter. */
+static int overlap(const rl_map *map, int i, int j)
+{
+    double dx = map->lm[i].x - map->lm[j].x, dy = map->lm[i].y - map->lm[j].y, d = map->diameter;
+    return fabs(dx) < d && fabs(dy) < d && dx * dx + dy * dy < d * d;
+}
+
 rl_err rl_map_check(const rl_map *map, int *bad)
 {
     int i, j;
@@ -23,10 +30,37 @@ rl_err rl_map_check(const rl_map *map, int *bad)
         if (!rl_family_valid(&map->family, map->lm[i].id) ||
             !(fabs(map->lm[i].x) <= RL_MAP_MAX_COORD) || !(fabs(map->lm[i].y) <= RL_MAP_MAX_COORD))
             return RL_ERANGE;
-        for (j = 0; j < i; j++)
-            if (map->lm[j].id == map->lm[i].id)
-                return RL_EFORMAT;
     }
+    for (i = 0; i < map->count; i++)
+        for (j = 0; j < i; j++)
+            if (overlap(map, i, j)) {
+                *bad = i;
+                return RL_EFORMAT;
+            }
     *bad = -1;
     return RL_OK;
+}
+
+int rl_map_overlapped(const rl_map *map, int i)
+{
+    int j;
+    for (j = 0; j < map->count; j++)
+        if (j != i && overlap(map, i, j))
+            return j;
+    return -1;
+}
+
+int rl_map_repeats_ids(const rl_map *map)
+{
+    unsigned char seen[256 / 8] = {0};
+    int i;
+    for (i = 0; i < map->count; i++) {
+        unsigned id = (unsigned)map->lm[i].id;
+        if (id >= 256)
+            continue; /* not in any family: rl_map_check refuses it */
+        if (seen[id >> 3] & (1u << (id & 7)))
+            return 1;
+        seen[id >> 3] |= (unsigned char)(1u << (id & 7));
+    }
+    return 0;
 }

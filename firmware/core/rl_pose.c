@@ -205,23 +205,55 @@ static rl_err finish(const rl_pose_model *md, const double *q, int offsets, rl_p
     return RL_OK;
 }
 
+int rl_pose_level_point(const rl_camera *cam, const rl_map *map, const rl_mount *mount, const rl_offsets *offsets,
+                        const rl_detection *d, double *x, double *y)
+{
+    rl_pose_model md;
+    rl_pose_pt p;
+    double Z = map->ceiling_height - mount->z;
+    if (!(Z > 0))
+        return 0;
+    make_model(cam, map, mount, &md);
+    if (!observe(cam, map, &md, offsets, d, Z, &p))
+        return 0;
+    *x = p.px;
+    *y = p.py;
+    return 1;
+}
+
 rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mount,
                      const rl_detection *lm, int n, const rl_offsets *offsets, rl_pose *out)
+{
+    int match[RL_MAX_LANDMARKS], i;
+    if (map == NULL || n < 0 || (n > 0 && lm == NULL))
+        return RL_EINVAL;
+    if (n > RL_MAX_LANDMARKS)
+        n = RL_MAX_LANDMARKS; /* more than a frame reports (rl_result) */
+    for (i = 0; i < n; i++)
+        match[i] = rl_map_find(map, lm[i].id);
+    return rl_pose_solve_matched(cam, map, mount, lm, n, match, offsets, out);
+}
+
+rl_err rl_pose_solve_matched(const rl_camera *cam, const rl_map *map, const rl_mount *mount,
+                             const rl_detection *lm, int n, const int *match, const rl_offsets *offsets,
+                             rl_pose *out)
 {
     rl_pose_pt pt[RL_MAX_LANDMARKS];
     int i, m = 0;
     double Z, c, s, sum2 = 0, q[RL_POSE_NQ], cov[RL_POSE_NQ * RL_POSE_NQ], chi2 = 0;
     rl_pose_model md;
-    if (cam == NULL || map == NULL || mount == NULL || out == NULL || (n > 0 && lm == NULL) ||
+    if (cam == NULL || map == NULL || mount == NULL || out == NULL || (n > 0 && (lm == NULL || match == NULL)) ||
         n < 0 || rl_camera_check(cam) != RL_OK)
         return RL_EINVAL;
     memset(out, 0, sizeof *out);
+    if (n > RL_MAX_LANDMARKS)
+        n = RL_MAX_LANDMARKS; /* more than a frame reports (rl_result) */
     Z = map->ceiling_height - mount->z;
     if (!(Z > 0) || !(fabs(mount->roll) < 0.5) || !(fabs(mount->pitch) < 0.5))
         return RL_ERANGE;
     make_model(cam, map, mount, &md);
     for (i = 0; i < n && m < RL_MAX_LANDMARKS; i++) {
-        int k = rl_map_find(map, lm[i].id);
+        int k = match[i] < map->count ? match[i] : -1;
         if (!(fabs(lm[i].u - 0.5 * cam->width) <= 1.5 * cam->width) ||
             !(fabs(lm[i].v - 0.5 * cam->height) <= 1.5 * cam->height)) {
             /* no camera of this size sees a landmark there */

@@ -35,12 +35,22 @@ void rl_recog_defaults(rl_recog_config *cfg)
 
 void rl_recog_use_map(rl_recog_config *cfg, const rl_map *map, int *ids)
 {
-    int i;
+    int i, j, n = 0;
     cfg->family = map->family;
-    for (i = 0; i < map->count; i++)
-        ids[i] = map->lm[i].id;
+    for (i = 0; i < map->count; i++) {
+        /* each id once: a large site's map repeats them */
+        for (j = 0; j < n && ids[j] != map->lm[i].id; j++)
+            ;
+        if (j < n)
+            continue;
+        if (n == RL_MAX_IDS) {
+            n++; /* more than any family holds: rl_recog_init says RL_ELIMIT */
+            break;
+        }
+        ids[n++] = map->lm[i].id;
+    }
     cfg->ids = ids;
-    cfg->n_ids = map->count;
+    cfg->n_ids = n;
 }
 
 static int cap_runs(int w, int h)
@@ -59,7 +69,7 @@ static rl_err check_config(const rl_recog_config *cfg, int w, int h)
     if (cfg->ids != NULL) {
         if (cfg->n_ids <= 0)
             return RL_EINVAL;
-        if (cfg->n_ids > RL_MAX_MAP_LANDMARKS)
+        if (cfg->n_ids > RL_MAX_IDS)
             return RL_ELIMIT;
         for (i = 0; i < cfg->n_ids; i++)
             if (!rl_family_valid(&cfg->family, cfg->ids[i]))

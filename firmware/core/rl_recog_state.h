@@ -21,7 +21,7 @@
 struct rl_recog {
     rl_recog_config cfg;
     int width, height;
-    int ids[RL_MAX_MAP_LANDMARKS]; /* copy of cfg.ids */
+    int ids[RL_MAX_IDS]; /* copy of cfg.ids */
     rl_templates templates;        /* rendered at init */
     rl_label dark;  /* ROI labelling: the frame, then the local pass's windows */
     rl_label light; /* light-source labelling */

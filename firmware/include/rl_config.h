@@ -7,7 +7,7 @@
  * never cut silently.
  *
  *   static rl_detection kept[RL_MAX_LANDMARKS];   // room for every landmark of a frame
- *   use(kept, RL_MAX_MAP_LANDMARKS);
+ *   use(kept, RL_MAX_IDS);
  */
 #ifndef RL_CONFIG_H
 #define RL_CONFIG_H
@@ -48,9 +48,16 @@
 #define RL_PIXELS_PER_RUN 8
 #endif
 
-/* Most landmarks in one map. */
+/* Most landmarks in one map (a map may repeat ids: 60 m x 40 m at 0.61 m
+ * is about 6,500); an rl_map is 40 bytes per landmark of this. */
 #ifndef RL_MAX_MAP_LANDMARKS
-#define RL_MAX_MAP_LANDMARKS 256
+#define RL_MAX_MAP_LANDMARKS 8192
+#endif
+
+/* Most distinct ids a recognizer is told to look for (the largest family,
+ * ring8, has 254). */
+#ifndef RL_MAX_IDS
+#define RL_MAX_IDS 256
 #endif
 
 #endif

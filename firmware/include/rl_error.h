@@ -29,7 +29,8 @@ typedef enum {
     RL_ETIMEOUT = -8,   /* a device did not answer in time */
     RL_ENODEV = -9,     /* a device is missing or went away */
     RL_ETOOFEW = -10,   /* too few landmarks for a pose */
-    RL_EUNSUPPORTED = -11 /* a feature not built in or not supported */
+    RL_EUNSUPPORTED = -11, /* a feature not built in or not supported */
+    RL_EAMBIGUOUS = -12  /* the landmarks fit more than one place of the map */
 } rl_err;
 
 /* Short static message for an error code; never NULL, never allocates. */

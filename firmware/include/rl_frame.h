@@ -51,7 +51,8 @@ typedef enum {
     RL_STATUS_TOO_FEW = 1,       /* fewer landmarks than a pose needs */
     RL_STATUS_CAMERA_ERROR = 2,  /* the camera failed; reopening */
     RL_STATUS_CAMERA_TIMEOUT = 3,/* no frame in time */
-    RL_STATUS_CONFIG_ERROR = 4   /* the configuration cannot give a pose */
+    RL_STATUS_CONFIG_ERROR = 4,  /* the configuration cannot give a pose */
+    RL_STATUS_AMBIGUOUS = 5      /* the landmarks fit several places of a map that repeats ids */
 } rl_status_reason;
 
 typedef struct {

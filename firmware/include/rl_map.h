@@ -27,17 +27,25 @@ typedef struct {
     rl_map_landmark lm[RL_MAX_MAP_LANDMARKS];
 } rl_map;
 
-/* Index of `id` in the map, or -1. */
+/* Index of the first landmark with `id` in the map, or -1. */
 int rl_map_find(const rl_map *map, int id);
 
 /* Largest |x| or |y| of a landmark, metres. */
 #define RL_MAP_MAX_COORD 1e5
 
 /* Validate: diameter and height > 0, coordinates within RL_MAP_MAX_COORD,
- * ids valid in the family and unique.
+ * ids valid in the family, no two landmarks overlapping (centres closer
+ * than the diameter). Ids may repeat: a large site reuses a small
+ * family's ids (rl_place finds which landmark a frame sees).
  * On failure *bad is the index of the first offending landmark (or -1 for
  * a map-level field). RL_ERANGE for an invalid id or size, RL_EFORMAT for
- * a duplicate. */
+ * an overlap (rl_map_overlapped names the other landmark). */
 RL_CHECK rl_err rl_map_check(const rl_map *map, int *bad);
+
+/* Index of a landmark that overlaps landmark i, or -1. */
+int rl_map_overlapped(const rl_map *map, int i);
+
+/* 1 if some id appears more than once. */
+int rl_map_repeats_ids(const rl_map *map);
 
 #endif

@@ -120,4 +120,17 @@ RL_CHECK rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_
                               const rl_detection *lm, int n, const rl_offsets *offsets,
                               rl_pose *out);
 
+/* rl_pose_solve with the map landmark of each detection given: match[i]
+ * is lm[i]'s index in the map, or -1 when it is not in the map (counted
+ * in n_unknown). rl_pose_solve matches each id to its first entry; on a
+ * map that repeats ids rl_place_solve finds the match. */
+RL_CHECK rl_err rl_pose_solve_matched(const rl_camera *cam, const rl_map *map, const rl_mount *mount,
+                                      const rl_detection *lm, int n, const int *match,
+                                      const rl_offsets *offsets, rl_pose *out);
+
+/* Where detection d's centre meets the ceiling of a level robot, in the
+ * robot frame (forward, left), m; 0 if its ray misses the ceiling. */
+int rl_pose_level_point(const rl_camera *cam, const rl_map *map, const rl_mount *mount, const rl_offsets *offsets,
+                        const rl_detection *d, double *x, double *y);
+
 #endif

@@ -125,8 +125,9 @@ typedef struct rl_recog rl_recog;
 /* Fill every field with its default (ring5, every id). */
 void rl_recog_defaults(rl_recog_config *cfg);
 
-/* Recognize the landmarks of a map only: family and ids from it. `ids`
- * (RL_MAX_MAP_LANDMARKS) holds the ids until rl_recog_init copies them. */
+/* Recognize the landmarks of a map only: family and ids from it, each id
+ * once (a map may repeat them). `ids` (RL_MAX_IDS) holds the ids until
+ * rl_recog_init copies them. */
 void rl_recog_use_map(rl_recog_config *cfg, const rl_map *map, int *ids);
 
 /* Workspace bytes for frames of w x h with this configuration; 0 if the
@@ -137,7 +138,7 @@ size_t rl_recog_workspace_size(int w, int h, const rl_recog_config *cfg);
  * stays valid while mem does. RL_ENOMEM if size is less
  * than rl_recog_workspace_size(), RL_EINVAL / RL_ERANGE for a bad
  * configuration (ids outside the family, sizes), RL_ELIMIT for more ids
- * than RL_MAX_MAP_LANDMARKS. */
+ * than RL_MAX_IDS. */
 RL_CHECK rl_err rl_recog_init(rl_recog **rec, const rl_recog_config *cfg, int w, int h,
                               void *mem, size_t size);
 

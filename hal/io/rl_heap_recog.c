@@ -8,7 +8,7 @@ void rl_heap_recog_init(rl_heap_recog *hr, const rl_recog_config *cfg)
     memset(hr, 0, sizeof *hr);
     hr->cfg = *cfg;
     if (cfg->ids != NULL && cfg->n_ids > 0) {
-        int n = cfg->n_ids < RL_MAX_MAP_LANDMARKS ? cfg->n_ids : RL_MAX_MAP_LANDMARKS;
+        int n = cfg->n_ids < RL_MAX_IDS ? cfg->n_ids : RL_MAX_IDS;
         memcpy(hr->ids, cfg->ids, (size_t)n * sizeof(int));
         hr->cfg.ids = hr->ids; /* n_ids stays as given: init reports RL_ELIMIT */
     }
@@ -17,7 +17,7 @@ void rl_heap_recog_init(rl_heap_recog *hr, const rl_recog_config *cfg)
 void rl_heap_recog_init_map(rl_heap_recog *hr, const rl_recog_config *cfg, const rl_map *map)
 {
     rl_recog_config c = *cfg;
-    int ids[RL_MAX_MAP_LANDMARKS];
+    int ids[RL_MAX_IDS];
     rl_recog_use_map(&c, map, ids);
     rl_heap_recog_init(hr, &c);
 }

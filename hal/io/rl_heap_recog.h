@@ -19,14 +19,14 @@
 
 typedef struct {
     rl_recog_config cfg;
-    int ids[RL_MAX_MAP_LANDMARKS]; /* copy of cfg.ids */
+    int ids[RL_MAX_IDS]; /* copy of cfg.ids */
     rl_recog *rec;                 /* NULL until prepared */
     void *mem;
     size_t size;
     int width, height;             /* size rec is ready for; 0 before */
 } rl_heap_recog;
 
-/* Keep a copy of cfg (and of its ids, clipped to RL_MAX_MAP_LANDMARKS:
+/* Keep a copy of cfg (and of its ids, clipped to RL_MAX_IDS:
  * rl_recog_init refuses more); nothing is allocated yet. */
 void rl_heap_recog_init(rl_heap_recog *hr, const rl_recog_config *cfg);
 

@@ -96,11 +96,18 @@ rl_err rl_mapfile_load(const char *path, rl_map *map, char *err, size_t errlen)
     if (e != RL_OK && bad >= 0) {
         yaml_node_t *item = rl_yaml_item(&y, seq, bad);
         snprintf(label, sizeof label, "landmarks[%d].id", bad);
-        if (e == RL_ERANGE)
+        if (e == RL_ERANGE) {
             rl_yaml_fail(&y, item, label, e, err, errlen, "id %d is not in %s (1 .. %d)",
                          map->lm[bad].id, fam, rl_family_count(&map->family));
-        else
-            rl_yaml_fail(&y, item, label, e, err, errlen, "duplicate id %d", map->lm[bad].id);
+        } else {
+            int o = rl_map_overlapped(map, bad);
+            snprintf(label, sizeof label, "landmarks[%d]", bad);
+            rl_yaml_fail(&y, item, label, e, err, errlen,
+                         "id %d at (%g, %g) overlaps landmarks[%d] (id %d at (%g, %g)): centres "
+                         "closer than the diameter %g m",
+                         map->lm[bad].id, map->lm[bad].x, map->lm[bad].y, o, o >= 0 ? map->lm[o].id : 0,
+                         o >= 0 ? map->lm[o].x : 0, o >= 0 ? map->lm[o].y : 0, map->diameter);
+        }
     } else if (e != RL_OK) {
         rl_yaml_fail(&y, root, "map", e, err, errlen, "%s", rl_strerror(e));
     }

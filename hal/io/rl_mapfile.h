@@ -9,7 +9,8 @@
  *
  * sigma_x, sigma_y (optional): a surveyed position's standard deviations.
  * Errors name the file, line and key: missing keys, non-numbers, ids
- * outside the family, duplicate ids, too many landmarks.
+ * outside the family, overlapping landmarks, too many landmarks. Ids may
+ * repeat (a large site reuses a small family's ids).
  *
  *   rl_map site;
  *   char err[256];

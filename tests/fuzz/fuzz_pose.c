@@ -3,22 +3,12 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "fuzz_take.h"
 #include "rl_camera.h"
 #include "rl_map.h"
 #include "rl_pose.h"
 
 static rl_map map;
-
-static double take(const uint8_t **p, size_t *n)
-{
-    double v = 0;
-    if (*n >= sizeof v) {
-        memcpy(&v, *p, sizeof v);
-        *p += sizeof v;
-        *n -= sizeof v;
-    }
-    return v;
-}
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -36,33 +26,33 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     size -= 2;
     rl_camera_defaults(&cam, 640, 480, 1.2);
     cam.model = (rl_dist_model)(size > 0 ? data[0] % 3 : 0);
-    cam.fx = take(&data, &size);
-    cam.fy = take(&data, &size);
-    cam.cx = take(&data, &size);
-    cam.cy = take(&data, &size);
+    cam.fx = fuzz_take(&data, &size);
+    cam.fy = fuzz_take(&data, &size);
+    cam.cx = fuzz_take(&data, &size);
+    cam.cy = fuzz_take(&data, &size);
     for (i = 0; i < 8; i++)
-        cam.k[i] = take(&data, &size);
-    mount.x = take(&data, &size);
-    mount.y = take(&data, &size);
-    mount.z = take(&data, &size);
-    mount.yaw = take(&data, &size);
-    mount.roll = take(&data, &size) * 1e-3; /* mostly within the 0.5 rad a mount may have */
-    mount.pitch = take(&data, &size) * 1e-3;
+        cam.k[i] = fuzz_take(&data, &size);
+    mount.x = fuzz_take(&data, &size);
+    mount.y = fuzz_take(&data, &size);
+    mount.z = fuzz_take(&data, &size);
+    mount.yaw = fuzz_take(&data, &size);
+    mount.roll = fuzz_take(&data, &size) * 1e-3; /* mostly within the 0.5 rad a mount may have */
+    mount.pitch = fuzz_take(&data, &size) * 1e-3;
     memset(&map, 0, sizeof map);
     map.family.bits = 5;
     map.diameter = 0.21;
-    map.ceiling_height = take(&data, &size);
+    map.ceiling_height = fuzz_take(&data, &size);
     map.count = nm;
     for (i = 0; i < nm; i++) {
         map.lm[i].id = i + 1;
-        map.lm[i].x = take(&data, &size);
-        map.lm[i].y = take(&data, &size);
+        map.lm[i].x = fuzz_take(&data, &size);
+        map.lm[i].y = fuzz_take(&data, &size);
     }
     memset(det, 0, sizeof det);
     for (i = 0; i < nd; i++) {
         det[i].id = 1 + i % 9;
-        det[i].u = take(&data, &size);
-        det[i].v = take(&data, &size);
+        det[i].u = fuzz_take(&data, &size);
+        det[i].v = fuzz_take(&data, &size);
         det[i].radius = 25;
     }
     if (rl_pose_solve(&cam, &map, &mount, det, nd, NULL, &pose) == RL_OK &&

@@ -25,6 +25,7 @@
 #include "rl_robotfile.h"
 #include "rl_report.h"
 #include "bench_real.h"
+#include "bench_site.h"
 
 #define REPEAT 5
 #define MAX_FRAMES 256
@@ -266,9 +267,12 @@ int main(int argc, char **argv)
     int i, rc = 0, header = 0;
     if (argc < 2 || strcmp(argv[1], "--help") == 0) {
         fprintf(argc < 2 ? stderr : stdout,
-                "usage: ringloc-bench DIR... [--local GLARE_DIR] [--pose DRIVE_DIR] [--real PHOTO_DIR]\n"
+                "usage: ringloc-bench DIR... [--local GLARE_DIR] [--pose DRIVE_DIR] [--site SITE_DIR]\n"
+                "                     [--real PHOTO_DIR]\n"
                 "  DIR: twin frames from ringloc-render --twin; GLARE_DIR: its --set glare frames;\n"
                 "  DRIVE_DIR: a drive from ringloc-render --path (map, camera, robot files);\n"
+                "  SITE_DIR: a planned site (ringloc plan --area) and random_NNN.png frames under it\n"
+                "  (ringloc-render --site-map --path random);\n"
                 "  PHOTO_DIR: real ceiling photos (PNG) to place rings and AprilTag twins into\n");
         return argc < 2 ? 2 : 0;
     }
@@ -283,6 +287,10 @@ int main(int argc, char **argv)
     for (i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--real") == 0 && i + 1 < argc) {
             rc |= rl_bench_real(argv[++i], 3, 1, 25.7, td, tf);
+            continue;
+        }
+        if (strcmp(argv[i], "--site") == 0 && i + 1 < argc) {
+            rc |= rl_bench_site(argv[++i]);
             continue;
         }
         if (strcmp(argv[i], "--pose") == 0 && i + 1 < argc) {

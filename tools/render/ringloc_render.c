@@ -29,6 +29,7 @@
 #include "rl_mapfile.h"
 #include "rl_png.h"
 #include "rl_robotfile.h"
+#include "render_tour.h"
 
 #define MAX_OBJ 512
 #define SUB 3 /* subsamples per pixel axis */
@@ -555,9 +556,39 @@ static void site_scene(scene *s, set_kind kind)
         }
 }
 
+/* --site-map: the map's landmarks the camera can see, and ceiling things
+ * (sprinklers, smoke detectors, vents, ...) in some of the gaps between
+ * them, placed by the gap's grid cell (the same in every frame). */
+static rl_map site_map;
+static double site_spacing; /* the map's landmark spacing */
+
+static void map_scene(scene *s)
+{
+    double view = 0.5 * sqrt((double)s->cam.width * s->cam.width + (double)s->cam.height * s->cam.height) /
+                  s->cam.fx * s->distance * 1.05, p = site_spacing;
+    int i, j, ci = (int)floor(s->cx / p), cj = (int)floor(s->cy / p), r = (int)ceil(view / p) + 1;
+    s->tile_px = s->tile_py = 0;
+    for (i = 0; i < site_map.count; i++) {
+        const rl_map_landmark *lm = &site_map.lm[i];
+        if (hypot(lm->x - s->cx, lm->y - s->cy) < view + s->diameter)
+            add_landmark(s, lm->x, lm->y, lm->id);
+    }
+    for (j = cj - r; j <= cj + r; j++)
+        for (i = ci - r; i <= ci + r; i++) {
+            double h = hash2(i, j), x = (i + 0.5) * p, y = (j + 0.5) * p;
+            uint64_t keep = rng_state;
+            if (h > 0.25 || hypot(x - s->cx, y - s->cy) > view + p)
+                continue;
+            /* the kind and size from the cell too */
+            rng_state = (uint64_t)(h * 1e9) * 0x9E3779B97F4A7C15ull + 1;
+            add_clutter(s, x, y, h < 0.08);
+            rng_state = keep;
+        }
+}
+
 static void random_scene(scene *s, set_kind kind)
 {
-    int i, j, pool[RL_MAX_MAP_LANDMARKS], npool = rl_family_count(&s->fam);
+    int i, j, pool[RL_MAX_IDS], npool = rl_family_count(&s->fam);
     double view, reach;
     s->tile_px = urand(0, s->tile);
     s->tile_py = urand(0, s->tile);
@@ -799,7 +830,12 @@ static const char *help =
     "                  tilt (radians, roll about the robot's x, pitch about its y;\n"
     "                  default 0,0,0,0,0)\n"
     "  --rock SIGMA    the robot rocks: a random tilt per frame and axis (radians)\n"
-    "  --look SET      with --path: the frames look as that set's do (degraded, dim, ...)\n";
+    "  --look SET      with --path: the frames look as that set's do (degraded, dim, ...)\n"
+    "  --site-map FILE a large site's map (ringloc plan --area; any size, ids repeated):\n"
+    "                  frames under it with --path random (poses uniform over the\n"
+    "                  landmarks' extent, any heading) or --path tour (a drive over the\n"
+    "                  site, 0.1 m a frame, carried elsewhere halfway); its family,\n"
+    "                  diameter and ceiling height\n";
 
 /* mkdir -p */
 static int mkdir_p(const char *dir)
@@ -886,7 +922,7 @@ int main(int argc, char **argv)
         {"write-map", required_argument, 0, 'M'}, {"write-camera", required_argument, 0, 'C'},
         {"write-robot", required_argument, 0, 'R'}, {"rock", required_argument, 0, 'r'},
         {"look", required_argument, 0, 'l'}, {"site", required_argument, 0, 'G'},
-        {"move", required_argument, 0, 'V'},
+        {"move", required_argument, 0, 'V'}, {"site-map", required_argument, 0, 'E'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     const char *look = NULL;
     set_kind look_kind = SET_PATH;
@@ -896,6 +932,8 @@ int main(int argc, char **argv)
     unsigned long seed = 1;
     double mx = 0, my = 0, myaw = 0, mroll = 0, mpitch = 0, rock = 0, mdx = 0, mdy = 0;
     int irregular = 0, move_id = 0;
+    const char *site_path = NULL;
+    render_pose *poses = NULL;
     static scene s;
     rl_camera cam;
     set_kind kind = SET_CLEAN;
@@ -945,6 +983,7 @@ int main(int argc, char **argv)
                 return 2;
             }
             break;
+        case 'E': site_path = optarg; break;
         case 'M': map_out = optarg; break;
         case 'C': cam_out = optarg; break;
         case 'R': robot_out = optarg; break;
@@ -973,6 +1012,31 @@ int main(int argc, char **argv)
     s.cam_z = s.ceiling_height - s.distance;
     s.tile = 0.61;
     site_layout(s.tile, irregular, move_id, mdx, mdy);
+    if (site_path) {
+        int i2;
+        if (rl_mapfile_load(site_path, &site_map, err, sizeof err) != RL_OK) {
+            fprintf(stderr, "ringloc-render: %s\n", err);
+            return 1;
+        }
+        if (site_map.count < 2) {
+            fprintf(stderr, "ringloc-render: %s: a site needs two landmarks or more\n", site_path);
+            return 1;
+        }
+        s.fam = site_map.family;
+        s.diameter = site_map.diameter;
+        s.ceiling_height = site_map.ceiling_height;
+        s.distance = s.ceiling_height - s.cam_z;
+        if (!(s.distance > 0.3)) {
+            fprintf(stderr, "ringloc-render: %s: ceiling_height %.3f m is not above the camera (%.2f m)\n",
+                    site_path, s.ceiling_height, s.cam_z);
+            return 1;
+        }
+        /* the spacing: landmark 0's nearest neighbour (a planned grid is even) */
+        site_spacing = HUGE_VAL;
+        for (i2 = 1; i2 < site_map.count; i2++)
+            site_spacing = fmin(site_spacing, hypot(site_map.lm[i2].x - site_map.lm[0].x,
+                                                    site_map.lm[i2].y - site_map.lm[0].y));
+    }
     if (cam_out && rl_camfile_save(cam_out, &cam, err, sizeof err) != RL_OK) {
         fprintf(stderr, "ringloc-render: %s\n", err);
         return 1;
@@ -990,7 +1054,12 @@ int main(int argc, char **argv)
             return 1;
         }
     }
-    if (map_out) {
+    if (map_out && site_path) {
+        if (rl_mapfile_save(map_out, &site_map, err, sizeof err) != RL_OK) {
+            fprintf(stderr, "ringloc-render: %s\n", err);
+            return 1;
+        }
+    } else if (map_out) {
         static rl_map map;
         int a, b;
         map.family = s.fam;
@@ -1042,7 +1111,28 @@ int main(int argc, char **argv)
             }
             look_kind = (set_kind)i;
         }
-        if (path_pose(path, 0, 2, &x, &y, &yaw) != 0) {
+        if (site_path) {
+            render_area area = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+            if (strcmp(path, "random") != 0 && strcmp(path, "tour") != 0) {
+                fprintf(stderr, "ringloc-render: --path: with --site-map, random or tour ('%s')\n", path);
+                return 2;
+            }
+            for (i = 0; i < site_map.count; i++) {
+                area.x0 = fmin(area.x0, site_map.lm[i].x);
+                area.y0 = fmin(area.y0, site_map.lm[i].y);
+                area.x1 = fmax(area.x1, site_map.lm[i].x);
+                area.y1 = fmax(area.y1, site_map.lm[i].y);
+            }
+            poses = malloc(sizeof *poses * (size_t)(count > 0 ? count : 1));
+            if (poses == NULL) {
+                fprintf(stderr, "ringloc-render: out of memory\n");
+                return 1;
+            }
+            if (strcmp(path, "random") == 0)
+                render_random_poses(&area, seed, count, poses);
+            else
+                render_tour(&area, seed, count, 0.1, poses);
+        } else if (path_pose(path, 0, 2, &x, &y, &yaw) != 0) {
             fprintf(stderr, "ringloc-render: --path: '%s' is not straight, rect, circle or survey\n", path);
             return 2;
         }
@@ -1064,7 +1154,12 @@ int main(int argc, char **argv)
         s.n = 0;
         s.twin = 0;
         effects(&s, kind == SET_PATH ? look_kind : kind);
-        if (kind == SET_PATH) {
+        if (poses) {
+            rx = poses[k].x;
+            ry = poses[k].y;
+            ryaw = poses[k].yaw;
+            snprintf(name, sizeof name, "%s_%03d", path, k);
+        } else if (kind == SET_PATH) {
             path_pose(path, k, count, &rx, &ry, &ryaw);
             snprintf(name, sizeof name, "%s_%03d", path, k);
         } else {
@@ -1094,7 +1189,9 @@ int main(int argc, char **argv)
         }
         {
             uint64_t keep = rng_state;
-            if (kind == SET_PATH)
+            if (site_path)
+                map_scene(&s);
+            else if (kind == SET_PATH)
                 site_scene(&s, kind);
             else
                 random_scene(&s, kind);
@@ -1135,6 +1232,7 @@ int main(int argc, char **argv)
         }
     }
     free(px);
+    free(poses);
     /* the tag bitmaps live until exit: libapriltag does not export
      * image_u8_destroy (tests/lsan.supp) */
     tag36h11_destroy(tagfam);

@@ -1,0 +1,330 @@
+#include "rl_place.h"
+
+#include <math.h>
+#include <string.h>
+#include "rl_place_index.h"
+
+#define SEEDS 12      /* observations that propose places (the most reliable first) */
+#define TRACK_SEEDS 8 /* observations tracking looks near */
+#define NEAR_MAX 16   /* map landmarks of one id near a tracked prediction */
+
+/* One frame's identified landmarks on the ceiling of a level robot. */
+typedef struct {
+    int n;
+    int det[RL_MAX_LANDMARKS]; /* the detection it came from */
+    int id[RL_MAX_LANDMARKS];
+    double px[RL_MAX_LANDMARKS], py[RL_MAX_LANDMARKS]; /* robot frame, m */
+} obs_set;
+
+/* A place: the rigid motion from the robot frame to the map, and what it
+ * verified. */
+typedef struct {
+    double x, y, yaw;
+    int matched, conflicts;
+    int match[RL_MAX_LANDMARKS]; /* per observation: map landmark, or -1 */
+} place;
+
+typedef struct {
+    place best, second;
+    int have_best, have_second, candidates;
+    double gate;
+} search;
+
+/* Detections on the ceiling, complete ones first, then nearest the image
+ * centre (the best measured propose first). */
+static void observe_all(const rl_place *pl, const rl_camera *cam, const rl_mount *mount, const rl_detection *lm,
+                        int n, const rl_offsets *offsets, obs_set *o)
+{
+    double key[RL_MAX_LANDMARKS];
+    int i, j;
+    o->n = 0;
+    for (i = 0; i < n && i < RL_MAX_LANDMARKS; i++) {
+        double x, y, du = lm[i].u - cam->cx, dv = lm[i].v - cam->cy, k;
+        if (!(fabs(lm[i].u - 0.5 * cam->width) <= 1.5 * cam->width) ||
+            !(fabs(lm[i].v - 0.5 * cam->height) <= 1.5 * cam->height) ||
+            !rl_family_valid(&pl->map->family, lm[i].id) ||
+            !rl_pose_level_point(cam, pl->map, mount, offsets, &lm[i], &x, &y))
+            continue;
+        k = (lm[i].complete ? 0 : 1e12) + du * du + dv * dv;
+        for (j = o->n++; j > 0 && key[j - 1] > k; j--) {
+            key[j] = key[j - 1];
+            o->det[j] = o->det[j - 1];
+            o->id[j] = o->id[j - 1];
+            o->px[j] = o->px[j - 1];
+            o->py[j] = o->py[j - 1];
+        }
+        key[j] = k;
+        o->det[j] = i;
+        o->id[j] = lm[i].id;
+        o->px[j] = x;
+        o->py[j] = y;
+    }
+}
+
+static double wrap(double a)
+{
+    return atan2(sin(a), cos(a));
+}
+
+/* How far two landmarks' observed distance may be from the map's: the
+ * level model's errors (rocking, the ceiling's height) grow with it. */
+static double tolerance(double d)
+{
+    return 0.03 + 0.03 * d;
+}
+
+static double obs_distance(const obs_set *o, int i, int j)
+{
+    return hypot(o->px[i] - o->px[j], o->py[i] - o->py[j]);
+}
+
+/* The motion putting observations i and j on map landmarks a and b. */
+static void propose(const rl_map *map, const obs_set *o, int i, int j, int a, int b, place *p)
+{
+    double mx = map->lm[b].x - map->lm[a].x, my = map->lm[b].y - map->lm[a].y;
+    double ox = o->px[j] - o->px[i], oy = o->py[j] - o->py[i];
+    double yaw = atan2(my, mx) - atan2(oy, ox), c = cos(yaw), s = sin(yaw);
+    double cx = 0.5 * (o->px[i] + o->px[j]), cy = 0.5 * (o->py[i] + o->py[j]);
+    p->yaw = wrap(yaw);
+    p->x = 0.5 * (map->lm[a].x + map->lm[b].x) - (c * cx - s * cy);
+    p->y = 0.5 * (map->lm[a].y + map->lm[b].y) - (s * cx + c * cy);
+}
+
+/* Count the observations the place puts within the gate of a map landmark
+ * of their id (and those it puts on another id's). 0 as soon as it cannot
+ * reach `need`. */
+static int verify(const rl_place *pl, const obs_set *o, place *p, int need)
+{
+    double c = cos(p->yaw), s = sin(p->yaw);
+    int k;
+    p->matched = p->conflicts = 0;
+    for (k = 0; k < o->n; k++) {
+        double X = p->x + c * o->px[k] - s * o->py[k], Y = p->y + s * o->px[k] + c * o->py[k];
+        int m = rl_place_index_near(pl, X, Y, pl->cfg.gate, 0);
+        p->match[k] = -1;
+        if (m >= 0 && pl->map->lm[m].id == o->id[k]) {
+            p->match[k] = m;
+            p->matched++;
+        } else if (m >= 0) {
+            p->conflicts++;
+        }
+        if (p->matched + (o->n - k - 1) < need)
+            return 0;
+    }
+    return 1;
+}
+
+static int same_place(const search *s, const place *a, const place *b)
+{
+    return hypot(a->x - b->x, a->y - b->y) < 2 * s->gate && fabs(wrap(a->yaw - b->yaw)) < 0.1;
+}
+
+/* Keep the best place and the best of the other places. */
+static void consider(search *s, const place *p)
+{
+    if (!s->have_best || p->matched > s->best.matched) {
+        if (s->have_best && !same_place(s, &s->best, p)) {
+            s->second = s->best;
+            s->have_second = 1;
+        } else if (s->have_second && same_place(s, &s->second, p)) {
+            s->have_second = 0;
+        }
+        s->best = *p;
+        s->have_best = 1;
+    } else if (!same_place(s, &s->best, p) && (!s->have_second || p->matched > s->second.matched)) {
+        s->second = *p;
+        s->have_second = 1;
+    }
+}
+
+/* Places verifying fewer than this cannot change the decision. */
+static int needed(const search *s, int margin)
+{
+    int need = s->have_best ? s->best.matched - margin + 1 : 2;
+    return need < 2 ? 2 : need;
+}
+
+/* Every place the index proposes for observations i and j. */
+static void propose_pair(const rl_place *pl, const obs_set *o, int i, int j, int margin, search *s)
+{
+    const rl_place_pair *p, *end;
+    double d = obs_distance(o, i, j), t = tolerance(d);
+    if (d - t > pl->cfg.reach)
+        return;
+    rl_place_index_pairs(pl, o->id[i], o->id[j], d - t, d + t, &p, &end);
+    for (; p < end; p++) {
+        int turn;
+        for (turn = 0; turn < 2; turn++) {
+            /* which map landmark is observation i: the ids say, or (the
+             * same id twice) both ways */
+            int a = turn ? p->b : p->a, b = turn ? p->a : p->b;
+            place c;
+            if (pl->map->lm[a].id != o->id[i] || (turn && o->id[i] != o->id[j]))
+                continue;
+            propose(pl->map, o, i, j, a, b, &c);
+            s->candidates++;
+            if (verify(pl, o, &c, needed(s, margin)))
+                consider(s, &c);
+        }
+    }
+}
+
+/* Three observations close enough together that the index holds their
+ * map pairs, the most reliable first; 0 if there are none. */
+static int seed_triangle(const rl_place *pl, const obs_set *o, int *t)
+{
+    int n = o->n < SEEDS ? o->n : SEEDS, i, j, k;
+    for (k = 2; k < n; k++)
+        for (j = 1; j < k; j++)
+            for (i = 0; i < j; i++) {
+                double dij = obs_distance(o, i, j), dik = obs_distance(o, i, k), djk = obs_distance(o, j, k);
+                if (dij + tolerance(dij) <= pl->cfg.reach && dik + tolerance(dik) <= pl->cfg.reach &&
+                    djk + tolerance(djk) <= pl->cfg.reach) {
+                    t[0] = i;
+                    t[1] = j;
+                    t[2] = k;
+                    return 1;
+                }
+            }
+    return 0;
+}
+
+/* The search with no prior: a seed triangle's pairs, then (when the best
+ * place leaves an observation unverified) every pair of seeds. */
+static void search_all(const rl_place *pl, const obs_set *o, search *s)
+{
+    int t[3], n = o->n < SEEDS ? o->n : SEEDS, i, j, triangle = seed_triangle(pl, o, t);
+    if (triangle) {
+        propose_pair(pl, o, t[0], t[1], pl->cfg.margin, s);
+        propose_pair(pl, o, t[0], t[2], pl->cfg.margin, s);
+        propose_pair(pl, o, t[1], t[2], pl->cfg.margin, s);
+        if (s->have_best && s->best.matched == o->n)
+            return;
+    }
+    for (j = 1; j < n; j++)
+        for (i = 0; i < j; i++) {
+            int done = triangle && (i == t[0] || i == t[1] || i == t[2]) && (j == t[0] || j == t[1] || j == t[2]);
+            if (!done)
+                propose_pair(pl, o, i, j, pl->cfg.margin, s);
+        }
+}
+
+/* Tracking: places within the prior's bound, from the map landmarks of
+ * each id near where the prior puts the observations. */
+static void search_near(const rl_place *pl, const obs_set *o, const rl_place_prior *pr, search *s)
+{
+    const rl_map *map = pl->map;
+    double R = pl->cfg.max_speed * pr->age + pl->cfg.gate, turn = pl->cfg.max_turn * pr->age + 0.02;
+    double c = cos(pr->yaw), sn = sin(pr->yaw);
+    int near[TRACK_SEEDS][NEAR_MAX], cnt[TRACK_SEEDS], n = o->n < TRACK_SEEDS ? o->n : TRACK_SEEDS;
+    int i, j, a, b, first = -1, far = -1;
+    double far_d = 0;
+    for (i = 0; i < n; i++) {
+        double X = pr->x + c * o->px[i] - sn * o->py[i], Y = pr->y + sn * o->px[i] + c * o->py[i];
+        double r = R + turn * hypot(o->px[i], o->py[i]) + pl->cfg.gate;
+        cnt[i] = rl_place_index_within(pl, X, Y, r, o->id[i], near[i], NEAR_MAX);
+        if (cnt[i] > NEAR_MAX)
+            cnt[i] = NEAR_MAX; /* a bound too wide to tell: the global search decides */
+        if (cnt[i] > 0 && first < 0)
+            first = i;
+    }
+    if (first < 0)
+        return;
+    for (j = 0; j < n; j++)
+        if (j != first && cnt[j] > 0 && obs_distance(o, first, j) > far_d) {
+            far_d = obs_distance(o, first, j);
+            far = j;
+        }
+    if (far < 0)
+        return;
+    for (a = 0; a < cnt[first]; a++)
+        for (b = 0; b < cnt[far]; b++) {
+            int ma = near[first][a], mb = near[far][b];
+            double dm = hypot(map->lm[ma].x - map->lm[mb].x, map->lm[ma].y - map->lm[mb].y);
+            place p;
+            if (ma == mb || fabs(dm - far_d) > tolerance(far_d))
+                continue;
+            propose(map, o, first, far, ma, mb, &p);
+            if (hypot(p.x - pr->x, p.y - pr->y) > R || fabs(wrap(p.yaw - pr->yaw)) > turn)
+                continue;
+            s->candidates++;
+            if (verify(pl, o, &p, needed(s, 1)))
+                consider(s, &p);
+        }
+}
+
+/* The best place is taken when enough verify, it leads every other place
+ * by the margin and more land on their ids than on others'. */
+static int clear(const search *s, int min_landmarks, int margin)
+{
+    int second = s->have_second ? s->second.matched : 0;
+    return s->have_best && s->best.matched >= min_landmarks && s->best.matched - second >= margin &&
+           s->best.matched >= s->best.conflicts + margin;
+}
+
+static void report(const search *s, const obs_set *o, int status, rl_place_found *f)
+{
+    int k;
+    f->status = status;
+    f->verified = s->have_best ? s->best.matched : 0;
+    f->runner_up = s->have_second ? s->second.matched : 0;
+    f->candidates += s->candidates;
+    if (s->have_best) {
+        f->x = s->best.x;
+        f->y = s->best.y;
+        f->yaw = s->best.yaw;
+    }
+    if (status == RL_PLACE_FOUND || status == RL_PLACE_TRACKED)
+        for (k = 0; k < o->n; k++)
+            f->match[o->det[k]] = s->best.match[k];
+}
+
+rl_err rl_place_find(const rl_place *pl, const rl_camera *cam, const rl_mount *mount, const rl_detection *lm, int n,
+                     const rl_offsets *offsets, const rl_place_prior *prior, rl_place_found *found)
+{
+    obs_set o;
+    search s;
+    int i;
+    if (pl == NULL || cam == NULL || mount == NULL || found == NULL || n < 0 || (n > 0 && lm == NULL) ||
+        rl_camera_check(cam) != RL_OK)
+        return RL_EINVAL;
+    memset(found, 0, sizeof *found);
+    for (i = 0; i < RL_MAX_LANDMARKS; i++)
+        found->match[i] = -1;
+    observe_all(pl, cam, mount, lm, n, offsets, &o);
+    if (o.n < 2)
+        return RL_ETOOFEW;
+    memset(&s, 0, sizeof s);
+    s.gate = pl->cfg.gate;
+    if (prior != NULL && prior->valid && prior->age >= 0 && prior->age <= pl->cfg.track_age) {
+        search_near(pl, &o, prior, &s);
+        if (clear(&s, 2, 1)) {
+            report(&s, &o, RL_PLACE_TRACKED, found);
+            return RL_OK;
+        }
+        found->candidates = s.candidates;
+        memset(&s, 0, sizeof s);
+        s.gate = pl->cfg.gate;
+    }
+    search_all(pl, &o, &s);
+    if (clear(&s, pl->cfg.min_landmarks, pl->cfg.margin)) {
+        report(&s, &o, RL_PLACE_FOUND, found);
+        return RL_OK;
+    }
+    report(&s, &o, RL_PLACE_AMBIGUOUS, found);
+    return RL_EAMBIGUOUS;
+}
+
+rl_err rl_place_solve(const rl_place *pl, const rl_camera *cam, const rl_mount *mount, const rl_detection *lm,
+                      int n, const rl_offsets *offsets, const rl_place_prior *prior, rl_pose *pose,
+                      rl_place_found *found)
+{
+    rl_err e;
+    if (pose == NULL)
+        return RL_EINVAL;
+    memset(pose, 0, sizeof *pose);
+    if ((e = rl_place_find(pl, cam, mount, lm, n, offsets, prior, found)) != RL_OK)
+        return e;
+    return rl_pose_solve_matched(cam, pl->map, mount, lm, n < RL_MAX_LANDMARKS ? n : RL_MAX_LANDMARKS,
+                                 found->match, offsets, pose);
+}

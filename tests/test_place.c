@@ -1,0 +1,232 @@
+/* rl_place: the index against brute force, the map's new rules, and the
+ * finder's contract on small maps worked out by hand. */
+#include "rl_test.h"
+#include <math.h>
+#include <stdlib.h>
+#include "rl_place.h"
+#include "rl_place_index.h"
+
+static rl_map map;
+static unsigned char mem[1 << 20];
+
+/* A cols x rows grid at pitch p with ids from a fixed scramble of 1..30. */
+static void grid(int cols, int rows, double p)
+{
+    int i, j;
+    memset(&map, 0, sizeof map);
+    assert_int_equal(rl_family_init(&map.family, 5), RL_OK);
+    map.diameter = 0.2;
+    map.ceiling_height = 2.75;
+    for (j = 0; j < rows; j++)
+        for (i = 0; i < cols; i++) {
+            rl_map_landmark *lm = &map.lm[map.count++];
+            lm->id = (int)(((unsigned)(j * 7 + i * 11 + i * j * 3)) % 30u) + 1;
+            lm->x = i * p;
+            lm->y = j * p;
+        }
+}
+
+static rl_place *build(const rl_place_config *cfg)
+{
+    rl_place *pl;
+    size_t need = rl_place_size(&map, cfg);
+    assert_true(need > 0 && need <= sizeof mem);
+    assert_int_equal(rl_place_init(&pl, &map, cfg, mem, need), RL_OK);
+    assert_int_equal(rl_place_bytes(pl), need);
+    return pl;
+}
+
+/* The pair count and every bucket against all pairs counted by hand. */
+static void index_matches_brute_force(void **state)
+{
+    rl_place_config cfg;
+    rl_place *pl;
+    int a, b;
+    long brute = 0, found = 0;
+    (void)state;
+    grid(17, 11, 0.61);
+    rl_place_defaults(&cfg);
+    cfg.reach = 1.3;
+    pl = build(&cfg);
+    for (a = 0; a < map.count; a++)
+        for (b = a + 1; b < map.count; b++) {
+            double d = hypot(map.lm[a].x - map.lm[b].x, map.lm[a].y - map.lm[b].y);
+            const rl_place_pair *p, *end;
+            int hit = 0;
+            if (d > 1.3)
+                continue;
+            brute++;
+            /* the pair is in its ids' bucket at its distance */
+            rl_place_index_pairs(pl, map.lm[a].id, map.lm[b].id, d - 0.001, d + 0.001, &p, &end);
+            for (; p < end; p++)
+                hit += (p->a == a && p->b == b) || (p->a == b && p->b == a);
+            assert_int_equal(hit, 1);
+            found++;
+        }
+    assert_int_equal(rl_place_pairs(pl), brute);
+    assert_int_equal(found, brute);
+    /* 17 x 11 at 0.61 within 1.3 m: neighbours (0.61), diagonals (0.86) and two apart (1.22) */
+    assert_int_equal(brute, (16 * 11 + 17 * 10) + 2 * 16 * 10 + (15 * 11 + 17 * 9));
+}
+
+static void near_matches_brute_force(void **state)
+{
+    rl_place_config cfg;
+    rl_place *pl;
+    int k;
+    uint64_t s = 12345;
+    (void)state;
+    grid(9, 7, 0.61);
+    rl_place_defaults(&cfg);
+    pl = build(&cfg);
+    for (k = 0; k < 2000; k++) {
+        double x, y, best = 0.2;
+        int i, want = -1, id = k % 3 == 0 ? 0 : (int)(k % 30) + 1;
+        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        x = -1 + 7 * (double)(s >> 11) / 9007199254740992.0;
+        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        y = -1 + 6 * (double)(s >> 11) / 9007199254740992.0;
+        for (i = 0; i < map.count; i++) {
+            double d = hypot(map.lm[i].x - x, map.lm[i].y - y);
+            if (d <= best && (id == 0 || map.lm[i].id == id)) {
+                best = d;
+                want = i;
+            }
+        }
+        assert_int_equal(rl_place_index_near(pl, x, y, 0.2, id), want);
+    }
+}
+
+static void sizes_and_refusals(void **state)
+{
+    rl_place_config cfg;
+    rl_place *pl;
+    (void)state;
+    grid(5, 5, 0.61);
+    rl_place_defaults(&cfg);
+    assert_int_equal(rl_place_init(&pl, &map, &cfg, mem, rl_place_size(&map, &cfg) - 1), RL_ENOMEM);
+    cfg.margin = 0;
+    assert_int_equal(rl_place_size(&map, &cfg), 0);
+    assert_int_equal(rl_place_init(&pl, &map, &cfg, mem, sizeof mem), RL_EINVAL);
+    rl_place_defaults(&cfg);
+    map.lm[3].x = map.lm[2].x + 0.1; /* overlapping landmarks: a bad map */
+    map.lm[3].y = map.lm[2].y;
+    assert_int_equal(rl_place_size(&map, &cfg), 0);
+}
+
+/* The map's rules: ids may repeat, landmarks may not overlap. */
+static void map_repeats_but_never_overlaps(void **state)
+{
+    int bad;
+    (void)state;
+    grid(3, 1, 0.61);
+    map.lm[2].id = map.lm[0].id;
+    assert_int_equal(rl_map_check(&map, &bad), RL_OK);
+    assert_true(rl_map_repeats_ids(&map));
+    map.lm[2].x = map.lm[1].x + 0.19; /* closer than the diameter 0.2 */
+    assert_int_equal(rl_map_check(&map, &bad), RL_EFORMAT);
+    assert_int_equal(bad, 2);
+    assert_int_equal(rl_map_overlapped(&map, 2), 1);
+    grid(3, 1, 0.61);
+    map.lm[0].id = 1, map.lm[1].id = 2, map.lm[2].id = 3;
+    assert_false(rl_map_repeats_ids(&map));
+}
+
+/* Detections a level camera (straight up, at the robot's centre) sees of
+ * the map's landmarks at i: projected through a pinhole by hand. */
+static int view(const rl_camera *cam, const rl_mount *mount, double x, double y, double yaw, const int *which,
+                int n, rl_detection *d)
+{
+    double Z = map.ceiling_height - mount->z;
+    int k;
+    for (k = 0; k < n; k++) {
+        const rl_map_landmark *lm = &map.lm[which[k]];
+        double dx = lm->x - x, dy = lm->y - y;
+        double fwd = cos(yaw) * dx + sin(yaw) * dy, left = -sin(yaw) * dx + cos(yaw) * dy;
+        memset(&d[k], 0, sizeof d[k]);
+        d[k].id = lm->id;
+        d[k].u = cam->cx + cam->fx * left / Z; /* +u is left */
+        d[k].v = cam->cy - cam->fy * fwd / Z;  /* image top is forward */
+        d[k].radius = 20;
+        d[k].complete = 1;
+    }
+    return n;
+}
+
+/* Two copies of the same three ids in the same shape: no prior cannot
+ * tell them apart (ambiguous, no pose); a fourth landmark that only one
+ * copy has settles it; the prior settles it with two. */
+static void copies_are_ambiguous(void **state)
+{
+    rl_place_config cfg;
+    rl_place *pl;
+    rl_camera cam;
+    rl_mount mount;
+    rl_detection d[4];
+    rl_place_found f;
+    rl_place_prior prior = {1, 0.61, 0.0, 0.0, 0.1};
+    rl_pose pose;
+    int both[3] = {0, 1, 2}, with_fourth[4] = {0, 1, 2, 3}, two[2] = {0, 1}, i;
+    (void)state;
+    memset(&map, 0, sizeof map);
+    assert_int_equal(rl_family_init(&map.family, 5), RL_OK);
+    map.diameter = 0.2;
+    map.ceiling_height = 2.75;
+    /* ids 4 5 6 at (0,0) (0.61,0) (0,0.61), again 10 m away, and a 7 beside the first */
+    for (i = 0; i < 6; i++) {
+        map.lm[i].id = 4 + i % 3;
+        map.lm[i].x = (i % 3 == 1 ? 0.61 : 0) + (i >= 3 ? 10 : 0);
+        map.lm[i].y = i % 3 == 2 ? 0.61 : 0;
+    }
+    map.lm[6].id = 7;
+    map.lm[6].x = 0.61;
+    map.lm[6].y = 0.61;
+    map.count = 7;
+    rl_place_defaults(&cfg);
+    pl = build(&cfg);
+    rl_camera_defaults(&cam, 640, 480, 70 * M_PI / 180);
+    rl_mount_defaults(&mount, 0.88);
+    view(&cam, &mount, 0.3, 0.3, 0.4, both, 3, d);
+    assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 3, NULL, NULL, &pose, &f), RL_EAMBIGUOUS);
+    assert_int_equal(f.status, RL_PLACE_AMBIGUOUS);
+    assert_int_equal(f.verified, 3);
+    assert_int_equal(f.runner_up, 3);
+    /* the fourth, 7, is beside the first copy only */
+    with_fourth[3] = 6;
+    view(&cam, &mount, 0.3, 0.3, 0.4, with_fourth, 4, d);
+    assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 4, NULL, NULL, &pose, &f), RL_EAMBIGUOUS);
+    assert_int_equal(f.verified, 4);
+    assert_int_equal(f.runner_up, 3); /* a lead of one: the margin is two */
+    cfg.margin = 1;
+    pl = build(&cfg);
+    assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 4, NULL, NULL, &pose, &f), RL_OK);
+    assert_true(hypot(pose.x - 0.3, pose.y - 0.3) < 0.01);
+    for (i = 0; i < 4; i++)
+        assert_int_equal(f.match[i], with_fourth[i]);
+    /* two landmarks near the prior: the first copy, tracked */
+    rl_place_defaults(&cfg);
+    pl = build(&cfg);
+    prior.x = 0.35;
+    prior.y = 0.25;
+    prior.yaw = 0.45;
+    view(&cam, &mount, 0.3, 0.3, 0.4, two, 2, d);
+    assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 2, NULL, NULL, &pose, &f), RL_EAMBIGUOUS);
+    assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 2, NULL, &prior, &pose, &f), RL_OK);
+    assert_int_equal(f.status, RL_PLACE_TRACKED);
+    assert_true(hypot(pose.x - 0.3, pose.y - 0.3) < 0.01);
+    /* the same prior too old to use */
+    prior.age = 5;
+    assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 2, NULL, &prior, &pose, &f), RL_EAMBIGUOUS);
+    /* one detection: too few */
+    assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 1, NULL, &prior, &pose, &f), RL_ETOOFEW);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(index_matches_brute_force), cmocka_unit_test(near_matches_brute_force),
+        cmocka_unit_test(sizes_and_refusals), cmocka_unit_test(map_repeats_but_never_overlaps),
+        cmocka_unit_test(copies_are_ambiguous),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

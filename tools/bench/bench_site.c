@@ -1,0 +1,148 @@
+#include "bench_site.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "rl_camfile.h"
+#include "rl_clock.h"
+#include "rl_heap_place.h"
+#include "rl_heap_recog.h"
+#include "rl_mapfile.h"
+#include "rl_png.h"
+#include "rl_report.h"
+#include "rl_robotfile.h"
+
+#define FRAMES 512
+#define REPEAT 5
+#define INNER 20
+
+static int cmp(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp);
+    return n ? v[n / 2] : 0;
+}
+
+/* Least over REPEAT runs of INNER calls: microseconds per call. */
+static double time_find(const rl_heap_place *hp, const rl_camera *cam, const rl_mount *mount, const rl_result *res,
+                        const rl_place_prior *prior, int *ok)
+{
+    double best = HUGE_VAL;
+    int i, j;
+    *ok = 1;
+    for (i = 0; i < REPEAT; i++) {
+        uint64_t a = rl_clock_now_us();
+        for (j = 0; j < INNER; j++) {
+            rl_place_found f;
+            *ok &= rl_place_find(hp->pl, cam, mount, res->landmarks, res->n_landmarks, NULL, prior, &f) == RL_OK;
+        }
+        best = fmin(best, (double)(rl_clock_now_us() - a) / INNER);
+    }
+    return best;
+}
+
+static double time_solve(const rl_map *map, const rl_camera *cam, const rl_mount *mount, const rl_result *res,
+                         const rl_place_found *f)
+{
+    double best = HUGE_VAL;
+    int i, j;
+    for (i = 0; i < REPEAT; i++) {
+        uint64_t a = rl_clock_now_us();
+        for (j = 0; j < INNER; j++) {
+            rl_pose p;
+            (void)!rl_pose_solve_matched(cam, map, mount, res->landmarks, res->n_landmarks, f->match, NULL, &p);
+        }
+        best = fmin(best, (double)(rl_clock_now_us() - a) / INNER);
+    }
+    return best;
+}
+
+int rl_bench_site(const char *dir)
+{
+    static rl_map map;
+    static rl_result res;
+    static double find_us[FRAMES], track_us[FRAMES], recog_us[FRAMES], solve_us[FRAMES];
+    rl_camera cam;
+    rl_mount mount;
+    rl_recog_config cfg;
+    rl_heap_recog hr;
+    rl_heap_place hp;
+    char path[2048], err[512];
+    int ids[RL_MAX_IDS], k, n = 0, failed = 0;
+    uint64_t t0;
+    double build_ms;
+    snprintf(path, sizeof path, "%s/map.yaml", dir);
+    if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK)
+        goto fail;
+    snprintf(path, sizeof path, "%s/camera.yaml", dir);
+    if (rl_camfile_load(path, &cam, err, sizeof err) != RL_OK)
+        goto fail;
+    snprintf(path, sizeof path, "%s/robot.yaml", dir);
+    if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK)
+        goto fail;
+    t0 = rl_clock_now_us();
+    if (rl_heap_place_init(&hp, &map, NULL) != RL_OK || hp.pl == NULL) {
+        fprintf(stderr, "ringloc-bench: %s/map.yaml: no place index (are ids repeated?)\n", dir);
+        return 1;
+    }
+    build_ms = (double)(rl_clock_now_us() - t0) / 1000.0;
+    rl_recog_defaults(&cfg);
+    rl_recog_use_map(&cfg, &map, ids);
+    rl_heap_recog_init(&hr, &cfg);
+    for (k = 0; k < FRAMES; k++) {
+        rl_image img;
+        rl_place_found f;
+        rl_place_prior prior;
+        double r, best_r = HUGE_VAL;
+        int i, ok, ok2;
+        snprintf(path, sizeof path, "%s/random_%03d.png", dir, k);
+        if (rl_png_read_gray(path, &img, err, sizeof err) != RL_OK)
+            break;
+        for (i = 0; i < REPEAT; i++) {
+            if (rl_report_run(&hr, &img, &res, &r) != RL_OK)
+                break;
+            best_r = fmin(best_r, r);
+        }
+        rl_png_free(&img);
+        if (i < REPEAT || rl_place_find(hp.pl, &cam, &mount, res.landmarks, res.n_landmarks, NULL, NULL, &f) != RL_OK) {
+            failed++;
+            continue;
+        }
+        find_us[n] = time_find(&hp, &cam, &mount, &res, NULL, &ok);
+        /* tracking: the frame's own place as the last pose, a tenth of a second ago */
+        prior.valid = 1;
+        prior.x = f.x;
+        prior.y = f.y;
+        prior.yaw = f.yaw;
+        prior.age = 0.1;
+        track_us[n] = time_find(&hp, &cam, &mount, &res, &prior, &ok2);
+        solve_us[n] = time_solve(&map, &cam, &mount, &res, &f);
+        recog_us[n] = best_r;
+        failed += !ok || !ok2;
+        n++;
+    }
+    rl_heap_recog_free(&hr);
+    if (n == 0) {
+        fprintf(stderr, "ringloc-bench: %s: no random_NNN.png frames with a place\n", dir);
+        rl_heap_place_free(&hp);
+        return 1;
+    }
+    printf("place: a site of %d landmarks (%d ids): index %.1f bytes per landmark (%zu bytes, %ld pairs), built in "
+           "%.0f ms\n", map.count, rl_family_count(&map.family), (double)rl_place_bytes(hp.pl) / map.count,
+           rl_place_bytes(hp.pl), rl_place_pairs(hp.pl), build_ms);
+    printf("place: %d frames (%d without a place), median of the least of %d runs: %.1f us per frame with no prior, "
+           "%.1f us tracked; the pose solve after it %.1f us; recognition %.0f us (finding the place is %.1f%% of "
+           "it)\n", n, failed, REPEAT, median(find_us, n), median(track_us, n), median(solve_us, n),
+           median(recog_us, n), 100.0 * median(find_us, n) / median(recog_us, n));
+    rl_heap_place_free(&hp);
+    return 0;
+fail:
+    fprintf(stderr, "ringloc-bench: %s\n", err);
+    return 1;
+}
