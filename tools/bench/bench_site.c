@@ -29,35 +29,41 @@ static double median(double *v, int n)
     return n ? v[n / 2] : 0;
 }
 
-/* Least over REPEAT runs of INNER calls: microseconds per call. */
-static double time_find(const rl_heap_place *hp, const rl_camera *cam, const rl_mount *mount, const rl_result *res,
-                        const rl_place_prior *prior, int *ok)
+/* What is timed: one frame's place finding or pose solve. */
+typedef struct {
+    const rl_map *map;
+    const rl_heap_place *hp;
+    const rl_camera *cam;
+    const rl_mount *mount;
+    const rl_result *res;
+    const rl_place_prior *prior; /* find: NULL for none */
+    const rl_place_found *found; /* solve: the matches */
+    int ok;
+} job;
+
+static void find(job *j)
 {
-    double best = HUGE_VAL;
-    int i, j;
-    *ok = 1;
-    for (i = 0; i < REPEAT; i++) {
-        uint64_t a = rl_clock_now_us();
-        for (j = 0; j < INNER; j++) {
-            rl_place_found f;
-            *ok &= rl_place_find(hp->pl, cam, mount, res->landmarks, res->n_landmarks, NULL, prior, &f) == RL_OK;
-        }
-        best = fmin(best, (double)(rl_clock_now_us() - a) / INNER);
-    }
-    return best;
+    rl_place_found f;
+    j->ok &= rl_place_find(j->hp->pl, j->cam, j->mount, j->res->landmarks, j->res->n_landmarks, NULL, j->prior,
+                           &f) == RL_OK;
 }
 
-static double time_solve(const rl_map *map, const rl_camera *cam, const rl_mount *mount, const rl_result *res,
-                         const rl_place_found *f)
+static void solve(job *j)
+{
+    rl_pose p;
+    j->ok &= rl_pose_solve_matched(j->cam, j->map, j->mount, j->res->landmarks, j->res->n_landmarks,
+                                   j->found->match, NULL, &p) == RL_OK;
+}
+
+/* Least over REPEAT runs of INNER calls: microseconds per call. */
+static double least_us(void (*fn)(job *), job *j)
 {
     double best = HUGE_VAL;
-    int i, j;
+    int i, k;
     for (i = 0; i < REPEAT; i++) {
         uint64_t a = rl_clock_now_us();
-        for (j = 0; j < INNER; j++) {
-            rl_pose p;
-            (void)!rl_pose_solve_matched(cam, map, mount, res->landmarks, res->n_landmarks, f->match, NULL, &p);
-        }
+        for (k = 0; k < INNER; k++)
+            fn(j);
         best = fmin(best, (double)(rl_clock_now_us() - a) / INNER);
     }
     return best;
@@ -100,7 +106,7 @@ int rl_bench_site(const char *dir)
         rl_place_found f;
         rl_place_prior prior;
         double r, best_r = HUGE_VAL;
-        int i, ok, ok2;
+        int i;
         snprintf(path, sizeof path, "%s/random_%03d.png", dir, k);
         if (rl_png_read_gray(path, &img, err, sizeof err) != RL_OK)
             break;
@@ -114,17 +120,21 @@ int rl_bench_site(const char *dir)
             failed++;
             continue;
         }
-        find_us[n] = time_find(&hp, &cam, &mount, &res, NULL, &ok);
-        /* tracking: the frame's own place as the last pose, a tenth of a second ago */
-        prior.valid = 1;
-        prior.x = f.x;
-        prior.y = f.y;
-        prior.yaw = f.yaw;
-        prior.age = 0.1;
-        track_us[n] = time_find(&hp, &cam, &mount, &res, &prior, &ok2);
-        solve_us[n] = time_solve(&map, &cam, &mount, &res, &f);
+        {
+            job j = {&map, &hp, &cam, &mount, &res, NULL, &f, 1};
+            find_us[n] = least_us(find, &j);
+            /* tracking: the frame's own place as the last pose, a tenth of a second ago */
+            prior.valid = 1;
+            prior.x = f.x;
+            prior.y = f.y;
+            prior.yaw = f.yaw;
+            prior.age = 0.1;
+            j.prior = &prior;
+            track_us[n] = least_us(find, &j);
+            solve_us[n] = least_us(solve, &j);
+            failed += !j.ok;
+        }
         recog_us[n] = best_r;
-        failed += !ok || !ok2;
         n++;
     }
     rl_heap_recog_free(&hr);
