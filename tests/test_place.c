@@ -221,12 +221,43 @@ static void copies_are_ambiguous(void **state)
     assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 1, NULL, &prior, &pose, &f), RL_ETOOFEW);
 }
 
+/* Ids falling along the detections' order (the nearest the image centre
+ * first: 9, then 7, then 5): every pair is looked up with its higher id
+ * first, and still proposes the place. */
+static void ids_in_falling_order(void **state)
+{
+    rl_place_config cfg;
+    rl_place *pl;
+    rl_camera cam;
+    rl_mount mount;
+    rl_detection d[3];
+    rl_place_found f;
+    rl_pose pose;
+    int three[3] = {0, 1, 2};
+    (void)state;
+    grid(6, 5, 0.61);
+    map.lm[0].id = 9; /* at (0, 0), (0.61, 0), (1.22, 0) */
+    map.lm[1].id = 7;
+    map.lm[2].id = 5;
+    rl_place_defaults(&cfg);
+    pl = build(&cfg);
+    rl_camera_defaults(&cam, 640, 480, 70 * M_PI / 180);
+    rl_mount_defaults(&mount, 0.88);
+    /* the camera over landmark 0, facing +x: 0 at the centre, 1 and 2 further up */
+    view(&cam, &mount, 0.0, 0.05, 0.0, three, 3, d);
+    assert_true(hypot(d[0].u - cam.cx, d[0].v - cam.cy) < hypot(d[1].u - cam.cx, d[1].v - cam.cy));
+    assert_true(hypot(d[1].u - cam.cx, d[1].v - cam.cy) < hypot(d[2].u - cam.cx, d[2].v - cam.cy));
+    assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 3, NULL, NULL, &pose, &f), RL_OK);
+    assert_int_equal(f.verified, 3);
+    assert_true(hypot(pose.x - 0.0, pose.y - 0.05) < 0.01);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(index_matches_brute_force), cmocka_unit_test(near_matches_brute_force),
         cmocka_unit_test(sizes_and_refusals), cmocka_unit_test(map_repeats_but_never_overlaps),
-        cmocka_unit_test(copies_are_ambiguous),
+        cmocka_unit_test(copies_are_ambiguous), cmocka_unit_test(ids_in_falling_order),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -155,11 +155,11 @@ static void propose_pair(const rl_place *pl, const obs_set *o, int i, int j, int
     for (; p < end; p++) {
         int turn;
         for (turn = 0; turn < 2; turn++) {
-            /* which map landmark is observation i: the ids say, or (the
-             * same id twice) both ways */
+            /* which map landmark is observation i: the ids say (one way
+             * passes), or, the same id twice, both ways */
             int a = turn ? p->b : p->a, b = turn ? p->a : p->b;
             place c;
-            if (pl->map->lm[a].id != o->id[i] || (turn && o->id[i] != o->id[j]))
+            if (pl->map->lm[a].id != o->id[i])
                 continue;
             propose(pl->map, o, i, j, a, b, &c);
             s->candidates++;
