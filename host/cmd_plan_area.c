@@ -112,7 +112,6 @@ int rl_plan_area_run(const char *C, const rl_plan_area *a)
                            a->family.bits, a->even_parity ? " (even parity)" : "", in.gap);
     if (e != RL_OK && e != RL_ELIMIT)
         return rl_cli_fail(C, RL_EXIT_FAIL, "planning failed: %s", rl_strerror(e));
-    in.gap = in.gap == 0 ? 2 * a->pitch : in.gap;
     to_map(a, &r, ids, &map);
     if (rl_mapfile_save(a->map_out, &map, err, sizeof err) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);

@@ -92,15 +92,27 @@ static void propose(const rl_map *map, const obs_set *o, int i, int j, int a, in
 
 /* Count the observations the place puts within the gate of a map landmark
  * of their id (and those it puts on another id's). 0 as soon as it cannot
- * reach `need`. */
-static int verify(const rl_place *pl, const obs_set *o, place *p, int need)
+ * reach `need`. The pair that proposed it (observations i, j on map
+ * landmarks a, b; i < 0: none) counts without a look-up when the motion
+ * cannot have moved them out of the gate (half the distance tolerance). */
+static int verify(const rl_place *pl, const obs_set *o, place *p, int need, int i, int j, int a, int b)
 {
     double c = cos(p->yaw), s = sin(p->yaw);
-    int k;
+    int k, known = i >= 0 && 0.5 * tolerance(obs_distance(o, i, j)) <= pl->cfg.gate;
     p->matched = p->conflicts = 0;
+    if (known) {
+        p->match[i] = a;
+        p->match[j] = b;
+        p->matched = 2;
+    }
     for (k = 0; k < o->n; k++) {
-        double X = p->x + c * o->px[k] - s * o->py[k], Y = p->y + s * o->px[k] + c * o->py[k];
-        int m = rl_place_index_near(pl, X, Y, pl->cfg.gate, 0);
+        double X, Y;
+        int m;
+        if (known && (k == i || k == j))
+            continue;
+        X = p->x + c * o->px[k] - s * o->py[k];
+        Y = p->y + s * o->px[k] + c * o->py[k];
+        m = rl_place_index_near(pl, X, Y, pl->cfg.gate, 0);
         p->match[k] = -1;
         if (m >= 0 && pl->map->lm[m].id == o->id[k]) {
             p->match[k] = m;
@@ -108,7 +120,8 @@ static int verify(const rl_place *pl, const obs_set *o, place *p, int need)
         } else if (m >= 0) {
             p->conflicts++;
         }
-        if (p->matched + (o->n - k - 1) < need)
+        /* what is left to look at: the rest, less the pair when counted already */
+        if (p->matched + (o->n - k - 1) - (known ? (k < i) + (k < j) : 0) < need)
             return 0;
     }
     return 1;
@@ -163,7 +176,7 @@ static void propose_pair(const rl_place *pl, const obs_set *o, int i, int j, int
                 continue;
             propose(pl->map, o, i, j, a, b, &c);
             s->candidates++;
-            if (verify(pl, o, &c, needed(s, margin)))
+            if (verify(pl, o, &c, needed(s, margin), i, j, a, b))
                 consider(s, &c);
         }
     }
@@ -248,7 +261,7 @@ static void search_near(const rl_place *pl, const obs_set *o, const rl_place_pri
             if (hypot(p.x - pr->x, p.y - pr->y) > R || fabs(wrap(p.yaw - pr->yaw)) > turn)
                 continue;
             s->candidates++;
-            if (verify(pl, o, &p, needed(s, 1)))
+            if (verify(pl, o, &p, needed(s, 1), -1, -1, -1, -1))
                 consider(s, &p);
         }
 }
