@@ -56,7 +56,8 @@ rl_err rl_survey_add_frame(rl_survey *sv, const char *name, const rl_survey_obs 
         return RL_ENOMEM;
     f->first = sv->n_obs;
     f->n = n;
-    memcpy(sv->obs + sv->n_obs, obs, (size_t)n * sizeof *obs);
+    if (n > 0) /* a frame without landmarks: the array may not exist yet */
+        memcpy(sv->obs + sv->n_obs, obs, (size_t)n * sizeof *obs);
     sv->n_obs += n;
     sv->n_fr++;
     return RL_OK;
