@@ -1,4 +1,5 @@
 #include "bench_site.h"
+#include "bench_stats.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -16,18 +17,6 @@
 #define FRAMES 512
 #define REPEAT 5
 #define INNER 20
-
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp);
-    return n ? v[n / 2] : 0;
-}
 
 /* What is timed: one frame's place finding or pose solve. */
 typedef struct {
@@ -148,8 +137,8 @@ int rl_bench_site(const char *dir)
            rl_place_bytes(hp.pl), rl_place_pairs(hp.pl), build_ms);
     printf("place: %d frames (%d without a place), median of the least of %d runs: %.1f us per frame with no prior, "
            "%.1f us tracked; the pose solve after it %.1f us; recognition %.0f us (finding the place is %.1f%% of "
-           "it)\n", n, failed, REPEAT, median(find_us, n), median(track_us, n), median(solve_us, n),
-           median(recog_us, n), 100.0 * median(find_us, n) / median(recog_us, n));
+           "it)\n", n, failed, REPEAT, rl_bench_median(find_us, n), rl_bench_median(track_us, n), rl_bench_median(solve_us, n),
+           rl_bench_median(recog_us, n), 100.0 * rl_bench_median(find_us, n) / rl_bench_median(recog_us, n));
     rl_heap_place_free(&hp);
     return 0;
 fail:

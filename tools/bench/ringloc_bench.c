@@ -26,21 +26,10 @@
 #include "rl_report.h"
 #include "bench_real.h"
 #include "bench_site.h"
+#include "bench_stats.h"
 
 #define REPEAT 5
 #define MAX_FRAMES 256
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 static double least(const double *v, int n)
 {
@@ -127,7 +116,7 @@ static int bench_dir(const char *dir, apriltag_detector_t *td)
         free(names[i]);
     }
     {
-        double mr = median(t_rl, n) / 1000.0, ma = median(t_at, n) / 1000.0;
+        double mr = rl_bench_median(t_rl, n) / 1000.0, ma = rl_bench_median(t_at, n) / 1000.0;
         size_t ws = rl_recog_workspace_size(W, H, &cfg);
         printf("%4dx%-4d %6d %12.3f %12.3f %9.1fx %9d %9d %10zu %7.2f\n", W, H, n, mr, ma, ma / mr,
                found_rl, found_at, ws, (double)ws / ((double)W * H));
@@ -251,8 +240,8 @@ static int bench_pose(const char *dir)
         return 1;
     }
     printf("pose: %d frames (the tilt solved in %d), %.1f us per pose (median of the least of %d runs), "
-           "%.0f%% of the same frames' recognition (%.1f us)\n", n, solved, median(pose_us, n), REPEAT,
-           100.0 * median(pose_us, n) / median(recog_us, n), median(recog_us, n));
+           "%.0f%% of the same frames' recognition (%.1f us)\n", n, solved, rl_bench_median(pose_us, n), REPEAT,
+           100.0 * rl_bench_median(pose_us, n) / rl_bench_median(recog_us, n), rl_bench_median(recog_us, n));
     return 0;
 fail:
     fprintf(stderr, "ringloc-bench: %s\n", err);
