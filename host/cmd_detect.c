@@ -31,7 +31,13 @@ static const char *detect_help =
     "                    drawn (FILE-<image name>.png for several images)\n"
     "  --local POLICY    local pass: always (default), auto (the paper's: when fewer\n"
     "                    than 2 were identified) or never\n"
-    "  --min-score R     Pearson correlation needed to accept an id (default 0.80)\n";
+    "  --min-score R     Pearson correlation needed to accept an id (default 0.80)\n"
+    "  --gamma G|auto    the camera's tone curve, grey = light^(1/G): 2.2 for\n"
+    "                    sRGB-like cameras (V4L2, libcamera, webcams), 1 for one that\n"
+    "                    outputs linear light (machine-vision cameras with gamma off);\n"
+    "                    auto (default) learns which of the two the landmarks read\n"
+    "                    best through (\"gamma\" in the JSON). Identification undoes the\n"
+    "                    curve: blur and motion mix light, not grey levels\n";
 
 
 int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config *cfg,
@@ -45,6 +51,12 @@ int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config
         else if (strcmp(arg, "never") == 0) cfg->local = RL_LOCAL_NEVER;
         else return rl_cli_fail(cmd, RL_EXIT_USAGE, "--local: '%s' is not auto, always or never", arg), -1;
         return 1;
+    case 'g':
+        if (strcmp(arg, "auto") == 0) {
+            cfg->gamma = 0;
+            return 1;
+        }
+        return rl_cli_double(cmd, "--gamma", arg, 1.0, 3.0, &cfg->gamma) ? 1 : -1;
     case 's':
         if (!rl_cli_double(cmd, "--min-score", arg, 0.01, 1.0, &cfg->min_score))
             return -1;
@@ -78,7 +90,8 @@ int rl_cmd_detect(int argc, char **argv)
     static const struct option opts[] = {
         {"family", required_argument, 0, 'f'}, {"map", required_argument, 0, 'm'},
         {"annotate", required_argument, 0, 'a'}, {"local", required_argument, 0, 'L'},
-        {"min-score", required_argument, 0, 's'}, {"help", no_argument, 0, 'h'},
+        {"min-score", required_argument, 0, 's'}, {"gamma", required_argument, 0, 'g'},
+        {"help", no_argument, 0, 'h'},
         {0, 0, 0, 0}};
     const char *C = "detect", *family = NULL, *map_path = NULL, *annotate = NULL;
     rl_recog_config cfg;

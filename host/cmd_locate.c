@@ -17,7 +17,8 @@
 static const char *locate_help =
     "usage: ringloc locate --camera CAM.yaml --map MAP.yaml --robot ROBOT.yaml\n"
     "                      [--offsets OFFSETS.yaml] [--annotate OUT.png] [--size WxH]\n"
-    "                      [--local auto|always|never] [--min-score 0.8] IMAGE...\n\n"
+    "                      [--local auto|always|never] [--min-score 0.8]\n"
+    "                      [--interval 0.1 | --alone] IMAGE...\n\n"
     "Recognize landmarks and compute the robot's pose (REP-103, map frame) for\n"
     "each image. Prints the detect JSON line with one more field:\n"
     "  \"pose\": {\"x\": 1.2034, \"y\": 0.5021, \"yaw\": 0.0312, \"landmarks_used\": 4,\n"
@@ -27,7 +28,11 @@ static const char *locate_help =
     "A map that repeats ids (a large site, 'ringloc plan --area') is searched for\n"
     "the place whose constellation the frame shows; one more field says how:\n"
     "  \"place\": {\"status\": \"found\", \"verified\": 9, \"runner_up\": 2, \"candidates\": 41}\n"
-    "(status ambiguous: no place leads the others clearly; no pose).\n\n"
+    "(status ambiguous: no place leads the others clearly; no pose). The images\n"
+    "are taken as frames of one drive, in the order given: as 'ringloc run'\n"
+    "does, each frame's place is looked for near the last pose first (status\n"
+    "\"tracked\"), where two landmarks are enough; a recorded drive replays as it\n"
+    "ran.\n\n"
     "  --camera FILE    ROS camera_info or OpenCV calibration YAML\n"
     "  --map FILE       landmark map YAML (family, diameter, ceiling_height, landmarks)\n"
     "  --robot FILE     robot YAML: camera_mount {x, y, z, yaw, roll, pitch}\n"
@@ -36,7 +41,13 @@ static const char *locate_help =
     "                   used instead of the pinhole model\n"
     "  --annotate FILE  write the image with what was recognized drawn on it\n"
     "  --local POLICY   local pass: always (default), auto (the paper's: when fewer\n"
-    "                   than 2 were identified) or never\n";
+    "                   than 2 were identified) or never\n"
+    "  --gamma G|auto   the camera's tone curve (default auto), as for detect\n"
+    "  --interval S     seconds between the frames of the drive (default 0.1, as\n"
+    "                   recorded at 10 frames a second; 'every' of a recording\n"
+    "                   multiplies it): how far the robot can have moved\n"
+    "  --alone          each image alone, no previous pose (images of different\n"
+    "                   places or drives)\n";
 
 
 int rl_cmd_locate(int argc, char **argv)
@@ -45,7 +56,9 @@ int rl_cmd_locate(int argc, char **argv)
         {"camera", required_argument, 0, 'c'}, {"map", required_argument, 0, 'm'},
         {"robot", required_argument, 0, 'r'}, {"offsets", required_argument, 0, 'o'},
         {"annotate", required_argument, 0, 'a'}, {"local", required_argument, 0, 'L'},
-        {"min-score", required_argument, 0, 's'}, {"size", required_argument, 0, 'z'},
+        {"min-score", required_argument, 0, 's'}, {"gamma", required_argument, 0, 'g'},
+        {"size", required_argument, 0, 'z'},
+        {"interval", required_argument, 0, 'i'}, {"alone", no_argument, 0, 'A'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     int size_w = 0, size_h = 0;
     const char *C = "locate", *cam_path = NULL, *map_path = NULL, *robot_path = NULL,
@@ -57,7 +70,9 @@ int rl_cmd_locate(int argc, char **argv)
     rl_camera cam;
     rl_mount mount;
     rl_offsets offsets;
-    int c, i, failures = 0, ids[RL_MAX_IDS];
+    int c, i, failures = 0, ids[RL_MAX_IDS], alone = 0;
+    double interval = 0.1;
+    rl_place_prior prior;
     rl_heap_place hp;
     rl_place_found found;
     rl_err e0;
@@ -81,6 +96,11 @@ int rl_cmd_locate(int argc, char **argv)
             if (!rl_cli_size(C, "--size", optarg, RL_MAX_IMAGE_DIM, &size_w, &size_h))
                 return RL_EXIT_USAGE;
             break;
+        case 'i':
+            if (!rl_cli_double(C, "--interval", optarg, 0.001, 3600, &interval))
+                return RL_EXIT_USAGE;
+            break;
+        case 'A': alone = 1; break;
         case 'h': fputs(locate_help, stdout); return 0;
         default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
@@ -104,7 +124,8 @@ int rl_cmd_locate(int argc, char **argv)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s: the place index: %s", map_path, rl_strerror(e0));
     rl_recog_use_map(&cfg, &map, ids);
     rl_heap_recog_init(&hr, &cfg);
-    for (i = optind; i < argc; i++) {
+    memset(&prior, 0, sizeof prior);
+    for (i = optind; i < argc; i++, prior.age += interval) {
         rl_image img;
         double us = 0;
         rl_pose pose;
@@ -129,7 +150,14 @@ int rl_cmd_locate(int argc, char **argv)
             continue;
         }
         e = rl_heap_place_solve(&hp, &cam, &map, &mount, res.landmarks, res.n_landmarks, off_path ? &offsets : NULL,
-                                NULL, &pose, &found);
+                                alone ? NULL : &prior, &pose, &found);
+        if (e == RL_OK) { /* the next frame's prior */
+            prior.valid = 1;
+            prior.x = pose.x;
+            prior.y = pose.y;
+            prior.yaw = pose.yaw;
+            prior.age = 0;
+        }
         rl_report_json_open(stdout, argv[i], &res, &cfg.family, us);
         if (hp.pl != NULL)
             printf(", \"place\": {\"status\": \"%s\", \"verified\": %d, \"runner_up\": %d, \"candidates\": %d}",

@@ -15,23 +15,26 @@
 #include "rl_composite.h"
 #include "rl_mapfile.h"
 #include "rl_png.h"
+#include "rl_print.h"
 #include "rl_report.h"
 
 
 static const char *help =
     "usage: ringloc site-check [--family ring5] [--map MAP.yaml]\n"
     "                          [--radius-px R | --camera CAM.yaml --diameter 0.21 --distance 1.87]\n"
-    "                          [--rounds 3] [--seed 1] [--local auto|always|never]\n"
+    "                          [--sheet PAPER] [--rounds 3] [--seed 1] [--local auto|always|never]\n"
     "                          [--out DIR] [--json] PHOTO_DIR|PHOTO.png...\n\n"
     "Take photos of your own ceiling with the robot's camera (PNG, no landmarks up\n"
     "yet) and see what ringloc will do there:\n"
     "  1. the false landmarks it reports on the photos as they are (smoke detectors,\n"
     "     sprinklers, downlights...), per id;\n"
     "  2. the rates at which it identifies landmarks of your family and size placed\n"
-    "     into the photos the way a printed sheet would look there (paper as bright\n"
-    "     as the ceiling around it, grey ink, perspective, glare next to lamps, lens\n"
-    "     blur, sensor noise): wholly inside the image, within one radius of a light,\n"
-    "     and cut by the image border (up to half outside);\n"
+    "     into the photos the way the sheets you print would look there (the sheet's\n"
+    "     margins, paper about as bright as the ceiling around it, darker or\n"
+    "     lighter, grey ink, perspective, glare next to lamps, lens blur, sensor\n"
+    "     noise, all laid in light as a camera forms it): wholly inside the image,\n"
+    "     within one radius of a light, and cut by the image border (up to half\n"
+    "     outside), and per id;\n"
     "  3. which ids to leave out of the map because the site's own objects look\n"
     "     like them.\n\n"
     "  --family NAME     landmark family (default ring5; the map's with --map)\n"
@@ -41,9 +44,16 @@ static const char *help =
     "  --camera FILE     calibration of the robot's camera (focal length)\n"
     "  --diameter M      printed outer diameter (default 0.21 m)\n"
     "  --distance M      camera to ceiling (default 1.87 m)\n"
+    "  --sheet PAPER     the sheets the landmarks are printed on: letter, a4, a3,\n"
+    "                    tabloid or WxH in mm (default: the paper 'ringloc gen'\n"
+    "                    prints the diameter on; A3 for 0.21 m)\n"
     "  --rounds N        times each photo is used, with new places (default 3)\n"
     "  --seed S          placements and looks (default 1)\n"
     "  --local POLICY    local pass: auto, always or never (default: the firmware's)\n"
+    "  --gamma G|auto    the camera's tone curve, grey = light^(1/G): 2.2 for\n"
+    "                    sRGB-like cameras, 1 for one that outputs linear light; the\n"
+    "                    marks are laid in light through it (2.2 for auto, the\n"
+    "                    default) and recognized as detect --gamma says\n"
     "  --out DIR         write the composited frames with their truth (YAML) and an\n"
     "                    annotated image of every photo with a false landmark\n"
     "  --json            one JSON object instead of the table\n";
@@ -54,6 +64,7 @@ typedef struct {
     long placed[3], found[3], wrong[3];
     long false_as_is, false_composited, photos, frames;
     long false_by_id[256], wrong_by_id[256];
+    long placed_by_id[256], found_by_id[256]; /* every kind of place */
     double us_total;
 } tally;
 
@@ -175,8 +186,10 @@ static void photo_composited(check *k, const char *path, const rl_image *photo, 
         return;
     t->us_total += us;
     t->frames++;
-    for (i = 0; i < n; i++)
+    for (i = 0; i < n; i++) {
         t->placed[marks[i].kind]++;
+        t->placed_by_id[marks[i].id & 255]++;
+    }
     for (i = 0; i < res->n_landmarks; i++) {
         const rl_detection *d = &res->landmarks[i];
         int m = rl_composite_mark_at(marks, n, d->u, d->v);
@@ -184,6 +197,7 @@ static void photo_composited(check *k, const char *path, const rl_image *photo, 
             t->false_composited += !seen_as_is(as_is, d);
         } else if (d->id == marks[m].id) {
             t->found[marks[m].kind]++;
+            t->found_by_id[d->id & 255]++;
         } else {
             t->wrong[marks[m].kind]++;
             t->wrong_by_id[d->id & 255]++;
@@ -235,7 +249,12 @@ static void print_table(const tally *t, const check *k, FILE *f)
     for (i = 0; i < 3; i++)
         fprintf(f, "%-24s %8ld %10ld %7.1f%% %6ld\n", rows[i], t->placed[i], t->found[i],
                 pct(t->found[i], t->placed[i]), t->wrong[i]);
-    fprintf(f, "false landmarks on the photos as they are: %ld", t->false_as_is);
+    fprintf(f, "identified per id (placed, all kinds):");
+    for (i = 0; i < 256; i++)
+        if (t->placed_by_id[i])
+            fprintf(f, "%s %d %.0f%% (%ld)", i % 10 == 0 && i ? "\n " : "", i,
+                    pct(t->found_by_id[i], t->placed_by_id[i]), t->placed_by_id[i]);
+    fprintf(f, "\nfalse landmarks on the photos as they are: %ld", t->false_as_is);
     for (i = 0; i < 256; i++)
         if (t->false_by_id[i])
             fprintf(f, "%sid %d: %ld", any++ ? ", " : " (", i, t->false_by_id[i]);
@@ -258,7 +277,13 @@ static void print_json(const tally *t, const check *k, FILE *f)
     for (i = 0; i < 3; i++)
         fprintf(f, ", \"%s\": {\"placed\": %ld, \"identified\": %ld, \"rate\": %.4f, \"wrong\": %ld}",
                 keys[i], t->placed[i], t->found[i], pct(t->found[i], t->placed[i]) / 100.0, t->wrong[i]);
-    fprintf(f, ", \"false_as_is\": %ld, \"false_composited\": %ld, \"false_ids\": {", t->false_as_is,
+    fprintf(f, ", \"per_id\": {");
+    for (i = 0; i < 256; i++)
+        if (t->placed_by_id[i])
+            fprintf(f, "%s\"%d\": {\"placed\": %ld, \"identified\": %ld}", any++ ? ", " : "", i,
+                    t->placed_by_id[i], t->found_by_id[i]);
+    any = 0;
+    fprintf(f, "}, \"false_as_is\": %ld, \"false_composited\": %ld, \"false_ids\": {", t->false_as_is,
             t->false_composited);
     for (i = 0; i < 256; i++)
         if (t->false_by_id[i])
@@ -335,13 +360,17 @@ int rl_cmd_sitecheck(int argc, char **argv)
         {"diameter", required_argument, 0, 'D'}, {"distance", required_argument, 0, 'Z'},
         {"rounds", required_argument, 0, 'n'}, {"seed", required_argument, 0, 'S'},
         {"local", required_argument, 0, 'L'}, {"out", required_argument, 0, 'o'},
-        {"json", no_argument, 0, 'j'}, {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
+        {"json", no_argument, 0, 'j'}, {"sheet", required_argument, 0, 'P'},
+        {"gamma", required_argument, 0, 'g'},
+        {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     const char *C = "site-check", *family = "ring5", *mapfile = NULL, *camera = NULL;
     static rl_map map;
     static int ids[RL_MAX_IDS];
     double diameter = 0.21, distance = 1.87, r = 0;
     int c, json = 0, n, i, seed = 1, rc;
     char **photos, err[512];
+    const char *sheet_name = NULL;
+    rl_paper sheet;
     rl_recog_config cfg;
     rl_heap_recog hr;
     check k;
@@ -357,11 +386,13 @@ int rl_cmd_sitecheck(int argc, char **argv)
         case 'c': camera = optarg; break;
         case 'o': k.out = optarg; break;
         case 'j': json = 1; break;
+        case 'P': sheet_name = optarg; break;
         case 'r': if (!rl_cli_double(C, "--radius-px", optarg, 4, 1000, &r)) return RL_EXIT_USAGE; break;
         case 'D': if (!rl_cli_double(C, "--diameter", optarg, 0.001, 5, &diameter)) return RL_EXIT_USAGE; break;
         case 'Z': if (!rl_cli_double(C, "--distance", optarg, 0.05, 100, &distance)) return RL_EXIT_USAGE; break;
         case 'n': if (!rl_cli_int(C, "--rounds", optarg, 1, 100, &k.rounds)) return RL_EXIT_USAGE; break;
         case 'S': if (!rl_cli_int(C, "--seed", optarg, 0, 2147483647L, &seed)) return RL_EXIT_USAGE; break;
+        case 'g':
         case 'L':
             if (rl_cli_recog_option(C, c, optarg, &cfg, &family) < 0)
                 return RL_EXIT_USAGE;
@@ -393,8 +424,21 @@ int rl_cmd_sitecheck(int argc, char **argv)
         return RL_EXIT_FAIL;
     if (k.out && mkdir(k.out, 0777) != 0 && access_dir(k.out) != 0)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s: cannot create the folder", k.out);
+    if (sheet_name && !rl_paper_parse(sheet_name, &sheet))
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--sheet: '%s' is not %s or WxH in mm", sheet_name,
+                           rl_paper_names());
+    if (!sheet_name && rl_paper_fitting(diameter, RL_PRINT_MARGIN_MM) == NULL)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--diameter %.3f m fits no paper: give --sheet", diameter);
+    if (!sheet_name)
+        sheet = *rl_paper_fitting(diameter, RL_PRINT_MARGIN_MM);
+    if (fmin(sheet.w_mm, sheet.h_mm) < 1000 * diameter)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--sheet: %.0fx%.0f mm is narrower than the landmark (%.0f mm)",
+                           sheet.w_mm, sheet.h_mm, 1000 * diameter);
     rl_composite_defaults(&k.cc);
     k.cc.radius_px = r;
+    k.cc.gamma = cfg.gamma > 0 ? cfg.gamma : 2.2; /* the photos' camera: sRGB unless told */
+    k.cc.sheet_w = sheet.w_mm / 500.0 / diameter; /* in radii */
+    k.cc.sheet_h = sheet.h_mm / 500.0 / diameter;
     k.cc.seed = (uint64_t)seed;
     if ((n = list_photos(C, argc - optind, argv + optind, &photos)) < 0)
         return RL_EXIT_FAIL;

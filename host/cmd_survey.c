@@ -57,7 +57,7 @@ static const char *survey_help =
     "  --gate M             a landmark of the same id this far from where a frame's\n"
     "                       pose puts it is the same one (default 0.3 m; sites that\n"
     "                       repeat ids)\n"
-    "  --local POLICY, --min-score R  recognition options, as for detect\n"
+    "  --local POLICY, --min-score R, --gamma G|auto  recognition options, as for detect\n"
     "  --out FILE           the map to write\n";
 
 typedef struct {
@@ -74,7 +74,8 @@ static int parse(int argc, char **argv, survey_args *a, rl_survey_config *cfg, r
         {"ceiling-height", required_argument, 0, 'H'}, {"axis-distance", required_argument, 0, 'D'},
         {"map", required_argument, 0, 'm'}, {"plot", required_argument, 0, 'p'},
         {"gate", required_argument, 0, 'g'}, {"local", required_argument, 0, 'L'},
-        {"min-score", required_argument, 0, 's'}, {"out", required_argument, 0, 'o'},
+        {"min-score", required_argument, 0, 's'}, {"gamma", required_argument, 0, 'g'},
+        {"out", required_argument, 0, 'o'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     const char *C = "survey";
     int c;

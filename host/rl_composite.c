@@ -6,19 +6,20 @@
 #include <string.h>
 
 #define LIGHT_LEVEL 250 /* a lamp (or its glare) saturates */
-#define SHEET 1.3       /* the sheet's half side, radii: quiet zone and margin */
 
 void rl_composite_defaults(rl_composite_config *cc)
 {
     memset(cc, 0, sizeof *cc);
     cc->radius_px = 25.0;
+    cc->sheet_w = cc->sheet_h = 2.6;
+    cc->gamma = 2.2;
     cc->complete = 4;
     cc->near_light = 2;
     cc->cut = 2;
     cc->blur_min = 0.4;
     cc->blur_max = 1.1;
-    cc->ink_min = 0.05;
-    cc->ink_max = 0.25;
+    cc->ink_min = 0.02;
+    cc->ink_max = 0.08;
     cc->noise_max = 3.0;
     cc->aspect_min = 0.85;
     cc->seed = 1;
@@ -75,11 +76,23 @@ double rl_composite_visible(int W, int H, double u, double v, double r)
     return (double)in / all;
 }
 
-static int apart(const rl_site_mark *marks, int n, double u, double v, double r)
+/* The sheet's half diagonal and half of its longer side, radii. */
+static double sheet_reach(const rl_composite_config *cc)
+{
+    return 0.5 * hypot(cc->sheet_w, cc->sheet_h);
+}
+
+static double sheet_half_long(const rl_composite_config *cc)
+{
+    return 0.5 * (cc->sheet_w > cc->sheet_h ? cc->sheet_w : cc->sheet_h);
+}
+
+static int apart(const rl_composite_config *cc, const rl_site_mark *marks, int n, double u,
+                 double v, double r)
 {
     int i;
     for (i = 0; i < n; i++)
-        if (hypot(marks[i].u - u, marks[i].v - v) < 2.0 * SHEET * r + 2)
+        if (hypot(marks[i].u - u, marks[i].v - v) < 2.0 * sheet_reach(cc) * r + 2)
             return 0;
     return 1;
 }
@@ -88,7 +101,7 @@ static int apart(const rl_site_mark *marks, int n, double u, double v, double r)
 static int find_place(const rl_image *img, rl_composite_config *cc, rl_site_kind kind,
                       const rl_site_mark *marks, int n, double *pu, double *pv)
 {
-    double R = cc->radius_px, W = img->width, H = img->height, in = SHEET * R + 1;
+    double R = cc->radius_px, W = img->width, H = img->height, in = sheet_half_long(cc) * R + 1;
     int t;
     for (t = 0; t < 400; t++) {
         double u, v, gap;
@@ -101,13 +114,13 @@ static int find_place(const rl_image *img, rl_composite_config *cc, rl_site_kind
             if (rl_composite_visible(img->width, img->height, u, v, R) < 0.5)
                 continue;
             gap = light_distance(img, u, v, 2.6 * R) - R;
-            if (gap <= 1.5 * R || !apart(marks, n, u, v, R))
+            if (gap <= 1.5 * R || !apart(cc, marks, n, u, v, R))
                 continue;
         } else {
             u = urand(cc, in, W - 1 - in);
             v = urand(cc, in, H - 1 - in);
             gap = light_distance(img, u, v, 2.6 * R) - R;
-            if (!apart(marks, n, u, v, R) || gap < (SHEET - 1.0) * R + 1)
+            if (!apart(cc, marks, n, u, v, R) || gap < (sheet_half_long(cc) - 1.0) * R + 1)
                 continue; /* no lamp under the sheet */
             if (kind == RL_SITE_COMPLETE ? gap <= 1.5 * R : gap > R)
                 continue;
@@ -127,12 +140,13 @@ static void look(rl_composite_config *cc, const rl_image *img, rl_site_mark *m)
     m->aspect = urand(cc, cc->aspect_min, 1.0);
     m->angle = urand(cc, 0, M_PI);
     m->turn = urand(cc, 0, 2 * M_PI);
-    m->paper_gain = urand(cc, 1.0, 1.2);
+    m->paper_gain = urand(cc, 0.85, 1.25); /* ceilings darker and lighter than paper */
     m->ink = urand(cc, cc->ink_min, cc->ink_max);
     /* veiling glare: light scattered in the lens lifts the ink next to a lamp */
-    m->veil = gap < 2 * R ? urand(cc, 0.3, 1.0) * 60.0 * exp(-gap / R) : 0.0;
+    m->veil = gap < 2 * R ? urand(cc, 0.3, 1.0) * 0.12 * exp(-gap / R) : 0.0;
     m->blur = urand(cc, cc->blur_min, cc->blur_max);
     m->noise = urand(cc, 0.5, cc->noise_max);
+    m->read_noise = urand(cc, 0.05, 0.1 * cc->noise_max);
     m->visible = rl_composite_visible(img->width, img->height, m->u, m->v, m->r);
 }
 
@@ -182,11 +196,24 @@ double rl_composite_ring(const void *ctx, int id, double x, double y)
     return rho > 1.0 ? 0.0 : rl_family_dark_at((const rl_family *)ctx, id, rho);
 }
 
-/* Plane a + b x + c y fitted to the ceiling around a mark (an annulus,
- * lamps left out): the light falling on the sheet, gradients included. */
-static void local_light(const rl_image *img, const rl_site_mark *m, double *abc)
+/* Light (0 .. 1) of a grey level through the photos' tone curve, and back. */
+static double to_light(const rl_composite_config *cc, double g)
 {
-    double s[3][4] = {{0}}, R = m->r;
+    return pow(g / 255.0, cc->gamma);
+}
+
+static double to_grey(const rl_composite_config *cc, double l)
+{
+    return 255.0 * pow(l < 0 ? 0 : l > 1 ? 1 : l, 1.0 / cc->gamma);
+}
+
+/* Plane a + b x + c y fitted to the light of the ceiling around a mark
+ * (an annulus, lamps left out): the light falling on the sheet, gradients
+ * included. */
+static void local_light(const rl_image *img, const rl_composite_config *cc, const rl_site_mark *m,
+                        double *abc)
+{
+    double s[3][4] = {{0}}, R = m->r, lv;
     int x, y, k, j, x0 = (int)(m->u - 2.3 * R), y0 = (int)(m->v - 2.3 * R);
     for (y = y0; y <= (int)(m->v + 2.3 * R); y++)
         for (x = x0; x <= (int)(m->u + 2.3 * R); x++) {
@@ -196,18 +223,19 @@ static void local_light(const rl_image *img, const rl_site_mark *m, double *abc)
                 continue;
             if ((g = grey(img, x, y)) >= LIGHT_LEVEL)
                 continue;
+            lv = to_light(cc, g);
             f[0] = 1;
             f[1] = (x - m->u) / R;
             f[2] = (y - m->v) / R;
             for (k = 0; k < 3; k++) {
                 for (j = 0; j < 3; j++)
                     s[k][j] += f[k] * f[j];
-                s[k][3] += f[k] * g;
+                s[k][3] += f[k] * lv;
             }
         }
     /* too few ceiling pixels (a frame corner): a flat level */
     if (s[0][0] < 50 || !rl_solve3(s, abc)) {
-        abc[0] = s[0][0] > 0 ? s[0][3] / s[0][0] : 180;
+        abc[0] = s[0][0] > 0 ? s[0][3] / s[0][0] : to_light(cc, 180);
         abc[1] = abc[2] = 0;
     }
 }
@@ -259,62 +287,89 @@ static void to_sheet(const rl_site_mark *m, double x, double y, double *sx, doub
     *sy = -st * px + ct * py;
 }
 
-static void draw_one(rl_image *img, rl_composite_config *cc, const rl_site_mark *m,
-                     rl_composite_pattern pattern, const void *ctx)
-{
-    double abc[3], reach = SHEET * 1.42 * m->r + 3 * m->blur + 3;
-    int x0 = (int)floor(m->u - reach), y0 = (int)floor(m->v - reach);
-    int x1 = (int)ceil(m->u + reach), y1 = (int)ceil(m->v + reach), w, h, x, y, i, j;
+/* A patch of the frame around a mark: val its light, cov the sheet's
+ * coverage of each pixel. */
+typedef struct {
+    int x0, y0, w, h;
     float *val, *cov;
-    if (x0 < 0) x0 = 0;
-    if (y0 < 0) y0 = 0;
-    if (x1 > img->width - 1) x1 = img->width - 1;
-    if (y1 > img->height - 1) y1 = img->height - 1;
-    w = x1 - x0 + 1;
-    h = y1 - y0 + 1;
-    if (w <= 0 || h <= 0)
-        return;
-    val = malloc(sizeof(float) * (size_t)w * (size_t)h);
-    cov = calloc((size_t)w * (size_t)h, sizeof(float));
-    if (val == NULL || cov == NULL) {
-        free(val);
-        free(cov);
-        return;
-    }
-    local_light(img, m, abc);
-    for (y = y0; y <= y1; y++)
-        for (x = x0; x <= x1; x++) {
+} patch;
+
+/* The sheet laid over the photo's light in the patch (3 x 3 samples per
+ * pixel), unblurred. */
+static void lay_sheet(const rl_image *img, const rl_composite_config *cc, const rl_site_mark *m,
+                      rl_composite_pattern pattern, const void *ctx, patch *p)
+{
+    double abc[3], hw = 0.5 * cc->sheet_w, hh = 0.5 * cc->sheet_h;
+    int x, y, i, j;
+    local_light(img, cc, m, abc);
+    for (y = p->y0; y < p->y0 + p->h; y++)
+        for (x = p->x0; x < p->x0 + p->w; x++) {
             double light = abc[0] + abc[1] * (x - m->u) / m->r + abc[2] * (y - m->v) / m->r;
-            double paper = fmin(252.0, fmax(20.0, light * m->paper_gain)), ink = paper * m->ink + m->veil;
+            double paper = fmin(0.98, fmax(0.005, light * m->paper_gain)), ink = paper * m->ink + m->veil;
             double dark = 0, in = 0;
+            size_t k = (size_t)(y - p->y0) * (size_t)p->w + (size_t)(x - p->x0);
             for (j = 0; j < 3; j++)
-                for (i = 0; i < 3; i++) { /* 3 x 3 samples per pixel */
+                for (i = 0; i < 3; i++) {
                     double sx, sy;
                     to_sheet(m, x + (i - 1) / 3.0, y + (j - 1) / 3.0, &sx, &sy);
-                    if (fabs(sx) > SHEET || fabs(sy) > SHEET)
+                    if (fabs(sx) > hw || fabs(sy) > hh)
                         continue;
                     in += 1;
                     dark += pattern(ctx, m->id, sx, sy);
                 }
             in /= 9.0;
             dark /= 9.0;
-            cov[(y - y0) * w + x - x0] = (float)in;
-            val[(y - y0) * w + x - x0] =
-                (float)((1 - in) * grey(img, x, y) + in * paper - dark * (paper - ink));
+            p->cov[k] = (float)in;
+            p->val[k] = (float)((1 - in) * to_light(cc, grey(img, x, y)) + in * paper - dark * (paper - ink));
         }
-    blur_patch(val, w, h, m->blur);
-    blur_patch(cov, w, h, m->blur);
-    for (y = y0; y <= y1; y++)
-        for (x = x0; x <= x1; x++) {
-            double v;
-            if (cov[(y - y0) * w + x - x0] < 0.002)
+}
+
+/* The patch's light back to grey levels where the sheet reaches, with the
+ * sensor's noise: photon noise (about even in grey under the curve) and
+ * read noise in light, which the curve stretches in the dark. */
+static void develop(rl_image *img, rl_composite_config *cc, const rl_site_mark *m, const patch *p)
+{
+    int x, y;
+    for (y = 0; y < p->h; y++)
+        for (x = 0; x < p->w; x++) {
+            double l = p->val[y * p->w + x], slope, sg, v;
+            if (p->cov[y * p->w + x] < 0.002)
                 continue;
-            v = val[(y - y0) * w + x - x0] + m->noise * gauss(cc);
-            img->data[(size_t)y * (size_t)img->stride + (size_t)x] =
+            /* grey per unit of light at l (floored: the curve's foot is steep) */
+            slope = 255.0 / cc->gamma * pow(l > 0.002 ? l : 0.002, 1.0 / cc->gamma - 1.0);
+            sg = hypot(m->noise, slope * m->read_noise / 255.0);
+            v = to_grey(cc, l) + sg * gauss(cc);
+            img->data[(size_t)(p->y0 + y) * (size_t)img->stride + (size_t)(p->x0 + x)] =
                 (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v + 0.5);
         }
-    free(val);
-    free(cov);
+}
+
+static void draw_one(rl_image *img, rl_composite_config *cc, const rl_site_mark *m,
+                     rl_composite_pattern pattern, const void *ctx)
+{
+    double reach = sheet_reach(cc) * m->r + 3 * m->blur + 3;
+    int x1 = (int)ceil(m->u + reach), y1 = (int)ceil(m->v + reach);
+    patch p;
+    p.x0 = (int)floor(m->u - reach);
+    p.y0 = (int)floor(m->v - reach);
+    if (p.x0 < 0) p.x0 = 0;
+    if (p.y0 < 0) p.y0 = 0;
+    if (x1 > img->width - 1) x1 = img->width - 1;
+    if (y1 > img->height - 1) y1 = img->height - 1;
+    p.w = x1 - p.x0 + 1;
+    p.h = y1 - p.y0 + 1;
+    if (p.w <= 0 || p.h <= 0)
+        return;
+    p.val = malloc(sizeof(float) * (size_t)p.w * (size_t)p.h);
+    p.cov = calloc((size_t)p.w * (size_t)p.h, sizeof(float));
+    if (p.val != NULL && p.cov != NULL) {
+        lay_sheet(img, cc, m, pattern, ctx, &p);
+        blur_patch(p.val, p.w, p.h, m->blur);
+        blur_patch(p.cov, p.w, p.h, m->blur);
+        develop(img, cc, m, &p);
+    }
+    free(p.val);
+    free(p.cov);
 }
 
 void rl_composite_draw(rl_image *img, const rl_composite_config *cc, const rl_site_mark *marks,

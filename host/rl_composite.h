@@ -2,13 +2,17 @@
  * with the truth of where they are (host side: allocates).
  *
  * The photo is the site as the robot's camera sees it; a mark is put
- * there the way a printed sheet would look: a white square sheet (the
- * quiet zone and margin) whose paper is as bright as the ceiling around it
- * (a little brighter: paper is whiter than tiles), ink that is dark grey
- * rather than black, an ellipse and a rotation (perspective, a sheet not
+ * there the way a printed sheet would look: a white sheet of the size the
+ * user prints (letter, A4, A3: its margins are the quiet zone), whose paper
+ * is about as bright as the ceiling around it (darker or lighter), ink
+ * that is dark grey rather than black, an ellipse and a rotation (perspective, a sheet not
  * quite square to the camera), veiling glare that lifts the ink next to a
- * lamp, lens blur and sensor noise; each id once in a frame, as a map
- * holds it. Marks are placed in three kinds of
+ * lamp, lens blur and sensor noise. All of it in light, as a camera
+ * forms it: the photo's grey levels are turned into light through its
+ * tone curve (gamma), the sheet is laid and blurred there, and the result
+ * goes back through the curve with the sensor's noise (photon noise, and
+ * read noise that the curve stretches in the dark). Each id once in a
+ * frame, as a map holds it. Marks are placed in three kinds of
  * places: wholly inside and away from lights, within one radius of a
  * light, and cut by the image border (up to half outside).
  *
@@ -39,17 +43,20 @@ typedef struct {
     double visible;         /* fraction of the disk inside the image */
     /* how it looks */
     double paper_gain;      /* paper over the local ceiling level */
-    double ink;             /* ink reflectance over paper's */
-    double veil;            /* grey levels of glare added to the ink */
+    double ink;             /* ink's light over paper's */
+    double veil;            /* light of glare added to the ink, fraction of full scale */
     double blur;            /* lens blur, Gaussian sigma px */
-    double noise;           /* sensor noise, sigma DN */
+    double noise;           /* sensor noise, sigma DN of grey (photon noise, nearly even) */
+    double read_noise;      /* read noise, DN of light (stretched in the dark by the curve) */
 } rl_site_mark;
 
 typedef struct {
     double radius_px;       /* landmark radius in the image (default 25) */
+    double sheet_w, sheet_h;/* the sheet's sides, in landmark radii (default 2.6 x 2.6) */
+    double gamma;           /* the photos' tone curve (default 2.2, sRGB-like) */
     int complete, near_light, cut; /* marks per photo of each kind (4, 2, 2) */
     double blur_min, blur_max;     /* px (0.4, 1.1) */
-    double ink_min, ink_max;       /* (0.05, 0.25) */
+    double ink_min, ink_max;       /* ink's light over paper's (0.02, 0.08) */
     double noise_max;              /* DN (3) */
     double aspect_min;             /* (0.85) */
     uint64_t seed;                 /* (1) */

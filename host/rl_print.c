@@ -24,6 +24,24 @@ const rl_paper *rl_paper_find(const char *name)
     return NULL;
 }
 
+int rl_paper_parse(const char *s, rl_paper *out)
+{
+    const rl_paper *p = rl_paper_find(s);
+    double w, h;
+    char tail;
+    if (p != NULL) {
+        *out = *p;
+        return 1;
+    }
+    if (s == NULL || sscanf(s, "%lfx%lf%c", &w, &h, &tail) != 2 || !(w >= 10 && w <= 2000) ||
+        !(h >= 10 && h <= 2000))
+        return 0;
+    out->name = "custom";
+    out->w_mm = w;
+    out->h_mm = h;
+    return 1;
+}
+
 const char *rl_paper_names(void)
 {
     return "a4, letter, a3, tabloid";

@@ -25,6 +25,9 @@ typedef struct {
 
 /* Paper by name (a4, letter, a3, tabloid), or NULL. */
 const rl_paper *rl_paper_find(const char *name);
+/* A sheet by paper name, or as WxH in millimetres (10 .. 2000 each, as
+ * "300x300"); 0 when s is neither. A WxH sheet's name is "custom". */
+int rl_paper_parse(const char *s, rl_paper *out);
 /* "a4, letter, a3, tabloid" for messages. */
 const char *rl_paper_names(void);
 

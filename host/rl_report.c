@@ -34,8 +34,8 @@ void rl_report_json_open(FILE *f, const char *image, const rl_result *res, const
     int i;
     fprintf(f, "{\"image\": ");
     rl_json_string(f, image);
-    fprintf(f, ", \"width\": %d, \"height\": %d, \"elapsed_us\": %.1f, \"landmarks\": [",
-            res->width, res->height, elapsed_us);
+    fprintf(f, ", \"width\": %d, \"height\": %d, \"elapsed_us\": %.1f, \"gamma\": %.1f, \"landmarks\": [",
+            res->width, res->height, elapsed_us, res->gamma);
     for (i = 0; i < res->n_landmarks; i++) {
         const rl_detection *d = &res->landmarks[i];
         char code[RL_MAX_BITS + 1];

@@ -19,6 +19,7 @@
 #include "rl_match.h"
 #include "rl_polar.h"
 #include "rl_recog.h"
+#include "rl_tone.h"
 #include "rl_workspace.h"
 
 void example_use(int unused, ...);
@@ -37,6 +38,7 @@ extern rl_label lb;
 extern rl_templates tt;
 extern rl_profile p;
 extern rl_polar *pol;
+extern rl_tone tone;                 /* the camera's tone curve, undone */
 extern double cx, cy, r;             /* a candidate's centre and radius */
 extern int light;                    /* the frame's light threshold */
 extern int W, H, i, n, ids[8];

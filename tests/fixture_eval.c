@@ -52,6 +52,27 @@ bad:
     return -1;
 }
 
+double eval_per_id(const eval_counts *c, FILE *out, int *worst)
+{
+    double low = 1.0;
+    int id;
+    *worst = 0;
+    fprintf(out, "  per id:");
+    for (id = 1; id < RL_MAX_IDS; id++) {
+        double rate;
+        if (c->id_complete[id] == 0)
+            continue;
+        rate = (double)c->id_ident[id] / c->id_complete[id];
+        fprintf(out, " %d %d/%d", id, c->id_ident[id], c->id_complete[id]);
+        if (rate < low) {
+            low = rate;
+            *worst = id;
+        }
+    }
+    fprintf(out, "\n");
+    return low;
+}
+
 static const truth_landmark *nearest(const truth *t, double u, double v, double *dist)
 {
     const truth_landmark *best = NULL;
@@ -107,6 +128,10 @@ void eval_frame(const truth *t, const rl_result *res, eval_counts *c, int verbos
             found = hypot(d->u - l->u, d->v - l->v) < 0.5 * l->radius;
         }
         if (l->visible >= 1.0) {
+            if (l->id > 0 && l->id < RL_MAX_IDS) {
+                c->id_complete[l->id]++;
+                c->id_ident[l->id] += ident;
+            }
             c->complete++;
             c->complete_found += found;
             c->complete_ident += ident;

@@ -3,6 +3,7 @@
 #ifndef FIXTURE_EVAL_H
 #define FIXTURE_EVAL_H
 
+#include <stdio.h>
 #include "rl_recog.h"
 
 #define EVAL_MAX_TRUTH 64
@@ -29,10 +30,16 @@ typedef struct {
     double centre_err_sum;                           /* complete, identified: px */
     int centre_n;
     int local_found;
+    int id_complete[RL_MAX_IDS], id_ident[RL_MAX_IDS]; /* complete landmarks per id */
 } eval_counts;
 
 /* Load NAME.yaml next to NAME.png; 0 on success, else prints why. */
 int truth_load(const char *yaml, truth *t);
+
+/* The complete landmarks of each id seen, and how many identified, as
+ * one line ("  per id: 1 12/12, 2 9/10 ..."); the worst id's rate (1
+ * when none was seen), its id in *worst. */
+double eval_per_id(const eval_counts *c, FILE *out, int *worst);
 
 /* Match one result to its truth and add to the counts. */
 void eval_frame(const truth *t, const rl_result *res, eval_counts *c, int verbose);

@@ -84,18 +84,24 @@ static void test_fit_refuses_what_is_no_ellipse(void **state)
 #define H 240
 static uint8_t frame[W * H];
 
+static rl_tone tone;
+
 /* Every pixel of the frame tested against the shape's normalized radius
- * in double precision: the profile's bins as the formula defines them. */
+ * in double precision: the profile's bins as the formula defines them,
+ * the darkness of light through the tone curve written out (pow), and the
+ * plane's share of the spread by least squares on (1, x, y) solved by
+ * Cramer's rule (0 when the disk reaches past the frame). */
 static void brute_profile(double cx, double cy, double r, const rl_shape *sh, rl_profile *p)
 {
-    double ext = RL_PROFILE_EXTENT * r;
-    int x, y, k;
+    double ext = RL_PROFILE_EXTENT * r, m[3][3] = {{0}}, b[3] = {0}, ss = 0, sv = 0;
+    int x, y, k, i, j, cut = 0;
     memset(p, 0, sizeof *p);
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
             double dx = x - cx, dy = y - cy;
             double rho = sqrt(sh->a * dx * dx + 2 * sh->b * dx * dy + sh->c * dy * dy);
-            double v = 255 - frame[y * W + x];
+            double v = RL_TONE_MAX - floor(RL_TONE_MAX * pow(frame[y * W + x] / 255.0, 2.2) + 0.5);
+            double f[3] = {1, dx, dy};
             if (rho >= ext)
                 continue;
             k = (int)(rho / ext * RL_PROFILE_BINS);
@@ -103,7 +109,38 @@ static void brute_profile(double cx, double cy, double r, const rl_shape *sh, rl
             p->sx[k] += v;
             p->sxx += v * v;
             p->total += 1;
+            for (i = 0; i < 3; i++) {
+                for (j = 0; j < 3; j++)
+                    m[i][j] += f[i] * f[j];
+                b[i] += f[i] * v;
+            }
+            ss += v * v;
+            sv += v;
         }
+    /* any of the disk past the frame: the gather leaves the plane out there */
+    for (y = -H; y < 2 * H && !cut; y++)
+        for (x = -W; x < 2 * W && !cut; x++) {
+            double dx = x - cx, dy = y - cy;
+            cut = (x < 0 || y < 0 || x >= W || y >= H) &&
+                  sqrt(sh->a * dx * dx + 2 * sh->b * dx * dy + sh->c * dy * dy) < ext;
+        }
+    if (!cut && p->total > 16) {
+        /* explained by (1, x, y) less explained by 1 alone */
+        double d = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                   m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                   m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]), c[3];
+        for (i = 0; i < 3; i++) {
+            double a[3][3];
+            memcpy(a, m, sizeof a);
+            for (j = 0; j < 3; j++)
+                a[j][i] = b[j];
+            c[i] = (a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                    a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                    a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0])) / d;
+        }
+        p->plane = c[0] * b[0] + c[1] * b[1] + c[2] * b[2] - sv * sv / p->total;
+    }
+    (void)ss;
 }
 
 static void test_profile_matches_brute_force(void **state)
@@ -113,7 +150,8 @@ static void test_profile_matches_brute_force(void **state)
     (void)state;
     for (k = 0; k < W * H; k++) {
         rng = rng * 6364136223846793005ul + 1442695040888963407ul;
-        frame[k] = (uint8_t)(rng >> 56);
+        /* noise on a slope: a plane for the gather to find */
+        frame[k] = (uint8_t)((rng >> 57) + (k % W) / 3 + (k / W) / 4);
     }
     for (trial = 0; trial < 40; trial++) {
         /* circles and ellipses, whole and cut by every side */
@@ -122,10 +160,11 @@ static void test_profile_matches_brute_force(void **state)
                                 : rl_shape_circle();
         rl_profile got, want;
         double off = 0;
+        rl_tone_init(&tone, 2.2);
         if (trial % 2)
-            rl_profile_gather_shaped(&(rl_image){W, H, W, frame}, cx, cy, r, &sh, &got);
+            rl_profile_gather_shaped(&(rl_image){W, H, W, frame}, &tone, cx, cy, r, &sh, &got);
         else
-            rl_profile_gather(&(rl_image){W, H, W, frame}, cx, cy, r, &got);
+            rl_profile_gather(&(rl_image){W, H, W, frame}, &tone, cx, cy, r, &got);
         brute_profile(cx, cy, r, &sh, &want);
         /* a pixel whose radius lies within rounding of a bin's edge may
          * fall either side of it: a few at most */
@@ -134,7 +173,10 @@ static void test_profile_matches_brute_force(void **state)
         if (off > 4 || fabs(got.total - want.total) > 2)
             fail_msg("trial %d: %.0f pixels binned differently, %.0f of %.0f gathered", trial, off,
                      got.total, want.total);
-        assert_true(fabs(got.sxx - want.sxx) <= 2 * 255.0 * 255.0);
+        assert_true(fabs(got.sxx - want.sxx) <= 2.0 * RL_TONE_MAX * RL_TONE_MAX);
+        /* the plane: the same but for a few rim pixels' worth */
+        if (fabs(got.plane - want.plane) > 0.01 * want.plane + 2e4)
+            fail_msg("trial %d: plane %.0f, by least squares %.0f", trial, got.plane, want.plane);
     }
 }
 

@@ -239,7 +239,9 @@ static void test_ident_matches_direct_pearson(void **)
                 img.at<uchar>(y, x) = cv::saturate_cast<uchar>(210 - 0.7 * t.at<uchar>(y, x) + noise(rng));
         rl_image iv = rl_image_view(100, 100, (int)img.step, img.data);
         rl_profile p;
-        rl_profile_gather(&iv, cx, cy, R, &p);
+        rl_tone linear; // the drawing is linear in grey: a linear camera
+        rl_tone_init(&linear, 1.0);
+        rl_profile_gather(&iv, &linear, cx, cy, R, &p);
         rl_match m;
         rl_match_all(&id, &p, &m);
         assert_int_equal(m.id, true_id);
@@ -273,8 +275,9 @@ static void test_ident_matches_direct_pearson(void **)
         double r2d = rl_match_pearson(a.data(), c.data(), NULL, (int)a.size());
         if (std::fabs(r2d - m.score) > 0.03)
             fail_msg("trial %d: 2-D template %.4f, radial %.4f", trial, r2d, m.score);
-        // the gain: the template's black is 0.7 * 255 darker than its white
-        assert_true(std::fabs(m.contrast - 0.7 * 255) < 15);
+        // the gain: the template's black is 0.7 of the white point darker
+        // than its white (light in RL_TONE_MAX steps)
+        assert_true(std::fabs(m.contrast - 0.7 * RL_TONE_MAX) < 15 * RL_TONE_MAX / 255.0);
     }
 }
 

@@ -15,6 +15,7 @@
 #define LIGHT 240
 static uint8_t px[S * S], dk[S * S];
 static rl_polar pol;
+static rl_tone tone; /* the drawings are linear in grey: a linear camera */
 static uint8_t wsmem[1 << 20];
 
 /* Landmark `id` of radius r at (cx, cy) on paper, and a light patch in
@@ -59,6 +60,7 @@ static void init_ident(rl_templates *id)
 {
     rl_family f = {5};
     rl_ws ws;
+    rl_tone_init(&tone, 1.0);
     rl_ws_init(&ws, wsmem, sizeof wsmem);
     assert_int_equal(rl_templates_init(id, &ws, &f, NULL, 0), RL_OK);
 }
@@ -73,7 +75,7 @@ static void check_size(double r)
     rl_image img = draw(22, cx, cy, r);
     init_ident(&id);
     reference_count(cx, cy, r, &inside, &edge);
-    rl_polar_gather(&img, cx, cy, r, LIGHT, 20.0, &pol);
+    rl_polar_gather(&img, &tone, cx, cy, r, LIGHT, 20.0, &pol);
     rl_polar_profile(&pol, 0, 0, 1.0, &p);
     if (p.total < inside - 0.5 || p.total > inside + edge + 0.5)
         fail_msg("r %.0f: %.0f pixels gathered, %ld (+%ld on the rim) within reach", r, p.total,
@@ -109,7 +111,7 @@ static void test_moved_profiles(void **state)
     int ids[1] = {13};
     (void)state;
     init_ident(&id);
-    rl_polar_gather(&img, cx - 1.2, cy + 0.6, r, LIGHT, 20.0, &pol);
+    rl_polar_gather(&img, &tone, cx - 1.2, cy + 0.6, r, LIGHT, 20.0, &pol);
     rl_polar_profile(&pol, 0, 0, 1.0, &p);
     rl_match_ids(&id, &p, ids, 1, 0, &as_is);
     rl_polar_profile(&pol, 1.2, -0.6, 1.0, &p);
@@ -119,7 +121,7 @@ static void test_moved_profiles(void **state)
     if (!(back.score > as_is.score + 0.01 && away.score < as_is.score - 0.01))
         fail_msg("shift: as gathered %.3f, moved back %.3f, moved away %.3f", as_is.score,
                  back.score, away.score);
-    rl_polar_gather(&img, cx, cy, 0.94 * r, LIGHT, 20.0, &pol);
+    rl_polar_gather(&img, &tone, cx, cy, 0.94 * r, LIGHT, 20.0, &pol);
     rl_polar_profile(&pol, 0, 0, 1.0, &p);
     rl_match_ids(&id, &p, ids, 1, 0, &as_is);
     rl_polar_profile(&pol, 0, 0, 1.0 / 0.94, &p);

@@ -144,6 +144,7 @@ static int make_recognizer(const char *C, const fw_setup *s, rl_heap_recog *hr)
     rc.local = s->cfg.local;
     rc.min_score = s->cfg.min_score;
     rc.local_min_score = s->cfg.local_min_score;
+    rc.gamma = s->cfg.gamma;
     rl_heap_recog_init_map(hr, &rc, &s->map);
     if ((e = rl_heap_recog_prepare(hr, s->calib.width, s->calib.height)) != RL_OK)
         return !rl_cli_fail(C, RL_EXIT_FAIL, "cannot prepare recognition for %dx%d: %s",

@@ -39,11 +39,11 @@ static double quiet_zone(const rl_profile *p)
         n += p->n[k];
         s += p->sx[k];
     }
-    return n > 0 ? 255.0 - s / n : -1;
+    return n > 0 ? RL_TONE_MAX - s / n : -1;
 }
 
-double rl_accept_span(const rl_levels *local, const rl_profile *p)
+double rl_accept_span(const rl_levels *local, const rl_tone *tone, const rl_profile *p)
 {
-    double span = local->bg - local->fg, q = quiet_zone(p);
+    double span = rl_tone_light(tone, local->bg) - rl_tone_light(tone, local->fg), q = quiet_zone(p);
     return q > 0 && q < span ? q : span;
 }

@@ -51,10 +51,10 @@ int rl_accept(const rl_accept_rule *rule, const rl_match *m, double span);
 void rl_accept_levels_at(const rl_illum *il, const rl_levels *frame, double u, double v,
                          rl_levels *local);
 
-/* The grey span a candidate's contrast is judged against, from its plain
- * (not sector-normalized) profile p: the local levels' background to
- * foreground, or less where the landmark's own paper, its quiet zone, is
- * darker (a sheet in a shadow). */
-double rl_accept_span(const rl_levels *local, const rl_profile *p);
+/* The span of light a candidate's contrast is judged against, from its
+ * plain (not sector-normalized) profile p: the local levels' background
+ * to foreground as light (tone), or less where the landmark's own paper,
+ * its quiet zone, is darker (a sheet in a shadow). */
+double rl_accept_span(const rl_levels *local, const rl_tone *tone, const rl_profile *p);
 
 #endif

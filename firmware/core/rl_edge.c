@@ -81,8 +81,8 @@ static double steepest_rise(const float *prof, int ns, int ib, double span)
 /* The outer edge's radius along direction (c, s) from (cx, cy), between
  * the ring's black inside r and the paper's white outside it; -1 when the
  * ray leaves the image, meets light or shows no clear edge. */
-static double ray_edge(const rl_image *img, int light, double cx, double cy, double r, double c,
-                       double s)
+static double ray_edge(const rl_image *img, const rl_tone *tone, int light, double cx, double cy,
+                       double r, double c, double s)
 {
     float prof[EDGE_MAX_SAMPLES], black = 1e9f, white = -1e9f;
     int i, ns = (int)(EDGE_SPAN * r / EDGE_STEP) + 1, ib = 0, ir;
@@ -92,7 +92,7 @@ static double ray_edge(const rl_image *img, int light, double cx, double cy, dou
         step = EDGE_SPAN * r / (ns - 1);
     }
     if (!rl_ray_inside(img, x, y, x + (ns - 1) * step * c, y + (ns - 1) * step * s) ||
-        !rl_ray_sample(img, x, y, step * c, step * s, ns, light, prof))
+        !rl_ray_sample(img, tone, x, y, step * c, step * s, ns, light, prof))
         return -1;
     ir = (int)((r - r0) / step);
     for (i = 0; i < ns; i++) {
@@ -103,19 +103,19 @@ static double ray_edge(const rl_image *img, int light, double cx, double cy, dou
         if (i >= ir && prof[i] > white)
             white = prof[i];
     }
-    if (white - black < 15.0f || (at = steepest_rise(prof, ns, ib, white - black)) < 0)
+    if (white - black < 0.2f * white || white - black < 3.0f || (at = steepest_rise(prof, ns, ib, white - black)) < 0)
         return -1;
     return r0 + at * step;
 }
 
-int rl_edge_points(const rl_image *img, int light, double cx, double cy, double r, double *ex,
-                   double *ey)
+int rl_edge_points(const rl_image *img, const rl_tone *tone, int light, double cx, double cy,
+                   double r, double *ex, double *ey)
 {
     double dc[RL_EDGE_RAYS], ds[RL_EDGE_RAYS];
     int a, n = 0;
     rl_ray_dirs(RL_EDGE_RAYS, dc, ds);
     for (a = 0; a < RL_EDGE_RAYS; a++) {
-        double rr = ray_edge(img, light, cx, cy, r, dc[a], ds[a]);
+        double rr = ray_edge(img, tone, light, cx, cy, r, dc[a], ds[a]);
         if (rr < 0)
             continue;
         ex[n] = cx + rr * dc[a];
@@ -125,10 +125,11 @@ int rl_edge_points(const rl_image *img, int light, double cx, double cy, double 
     return n;
 }
 
-int rl_edge_fit_rays(const rl_image *img, int light, double *cx, double *cy, double *r)
+int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy,
+                     double *r)
 {
     double ex[RL_EDGE_RAYS], ey[RL_EDGE_RAYS], ncx = 0, ncy = 0, nr = 0;
-    int n = rl_edge_points(img, light, *cx, *cy, *r, ex, ey), pass, i;
+    int n = rl_edge_points(img, tone, light, *cx, *cy, *r, ex, ey), pass, i;
     if (n < RL_EDGE_RAYS / 4)
         return 0;
     for (pass = 0; pass < 2; pass++) {

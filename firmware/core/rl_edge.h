@@ -11,7 +11,7 @@
  *       w.frame_h = img.height;
  *       // lb has labelled win at threshold 90; its region 0 is the ring
  *       if (rl_edge_fit_outline(&lb, 0, &w, 90, light, &cx, &cy, &r) &&
- *           rl_edge_fit_rays(&img, light, &cx, &cy, &r))
+ *           rl_edge_fit_rays(&img, &tone, light, &cx, &cy, &r))
  *           use(cx, cy, r);
  *   }
  */
@@ -19,6 +19,7 @@
 #define RL_EDGE_H
 
 #include "rl_image.h"
+#include "rl_tone.h"
 #include "rl_label.h"
 
 /* A window of a W x H frame: its view and where it sits in the frame. */
@@ -45,8 +46,8 @@ int rl_edge_fit_outline(const rl_label *lb, int reg, const rl_edge_window *w, in
  * steepest rise after the ring's black within about a fifth of r of r;
  * rays that leave the image, run into light or show no clear edge give
  * none. The count is returned, the points in ex, ey (RL_EDGE_RAYS each). */
-int rl_edge_points(const rl_image *img, int light, double cx, double cy, double r, double *ex,
-                   double *ey);
+int rl_edge_points(const rl_image *img, const rl_tone *tone, int light, double cx, double cy,
+                   double r, double *ex, double *ey);
 
 /* Refine a landmark's centre and radius from its outer edge seen along
  * rays from (*cx, *cy): on each ray the edge is the steepest rise after
@@ -55,6 +56,7 @@ int rl_edge_points(const rl_image *img, int light, double cx, double cy, double 
  * the image or run into light are skipped; a circle is fitted to the edge
  * points, points far off it are dropped, it is fitted again and finished
  * geometrically. 1 on success (frame coordinates). */
-int rl_edge_fit_rays(const rl_image *img, int light, double *cx, double *cy, double *r);
+int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy,
+                     double *r);
 
 #endif

@@ -3,6 +3,14 @@
 #include <math.h>
 #include "rl_result.h"
 
+/* 1 when detections a and b are one landmark: centres closer than the
+ * larger radius (printed landmarks lie a diameter apart at least). */
+static int overlap(const rl_detection *a, const rl_detection *b)
+{
+    double r = a->radius > b->radius ? a->radius : b->radius, dx = a->u - b->u, dy = a->v - b->v;
+    return dx * dx + dy * dy < r * r;
+}
+
 void rl_filter_duplicates(rl_result *res)
 {
     unsigned char keep[RL_MAX_LANDMARKS];
@@ -11,7 +19,7 @@ void rl_filter_duplicates(rl_result *res)
         const rl_detection *d = &res->landmarks[i];
         keep[i] = 1;
         for (j = 0; j < res->n_landmarks && keep[i]; j++)
-            if (j != i && res->landmarks[j].id == d->id &&
+            if (j != i && overlap(&res->landmarks[j], d) &&
                 (res->landmarks[j].score > d->score || (res->landmarks[j].score == d->score && j < i)))
                 keep[i] = 0;
     }

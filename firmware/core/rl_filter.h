@@ -10,8 +10,10 @@
 
 #include "rl_recog.h"
 
-/* A map holds each id once: when one id is reported twice in a frame, the
- * better match stays and the others become unidentified. */
+/* Detections that overlap (centres closer than a radius) are one
+ * landmark: the better match stays, the others become unidentified. Two
+ * landmarks of one id at different places both stay: a large site's map
+ * repeats ids, and where it does not the pose finds which one fits. */
 void rl_filter_duplicates(rl_result *res);
 
 /* Landmarks in one frame have nearly the same size (the camera faces the

@@ -18,16 +18,17 @@
  * when that matches better than what they hold. An ellipse from a region's moments is perspective or the
  * lens's distortion, or a circle smeared by motion (its rings are not
  * ellipses then): the match tells which. */
-static int try_ellipse(const rl_image *img, const rl_templates *tt, const rl_shape *shape,
-                       double box_r, rl_detection *d, rl_profile *p, rl_match *m)
+static int try_ellipse(const rl_image *img, const rl_tone *tone, const rl_templates *tt,
+                       const rl_shape *shape, double box_r, rl_detection *d, rl_profile *p,
+                       rl_match *m)
 {
     rl_profile pe;
     rl_match me;
     double r = box_r; /* the radius search starts from the CLR box's */
     if (rl_shape_is_circle(shape))
         return 0;
-    rl_refine_radius_shaped(img, d->u, d->v, shape, &r);
-    rl_profile_gather_shaped(img, d->u, d->v, r, shape, &pe);
+    rl_refine_radius_shaped(img, tone, d->u, d->v, shape, &r);
+    rl_profile_gather_shaped(img, tone, d->u, d->v, r, shape, &pe);
     rl_match_all(tt, &pe, &me);
     if (!(me.score > m->score))
         return 0;
@@ -37,46 +38,57 @@ static int try_ellipse(const rl_image *img, const rl_templates *tt, const rl_sha
     return 1;
 }
 
-void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *c, rl_result *res)
+/* The circle (then the ellipse) at d's place through tone: d's radius and
+ * the match into *m; 1 when the rule takes it. */
+static int identify_through(const rl_recog *rec, const rl_image *img, const rl_tone *tone,
+                            const rl_clr *c, const rl_levels *local, int near_light, rl_detection *d,
+                            rl_match *m)
 {
     rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_GLOBAL);
-    rl_detection d;
-    rl_levels local;
     rl_profile p;
-    rl_match m;
-    double box_r;
+    /* a soft blob beside a lamp (a shade, a fixture's edge out of focus)
+     * matches the softest templates: there, as in the local pass, none is
+     * taken at them */
+    if (near_light)
+        rule.max_blur = RL_BLUR_LEVELS - 2;
+    double box_r = d->radius;
     int taken;
-    memset(&d, 0, sizeof d);
-    d.id = -1;
-    d.pass = RL_PASS_GLOBAL;
-    if (!rl_clr_geometry(&c->box, rec->width, rec->height, &d))
-        return;
-    res->n_candidates++;
+    rl_refine_radius(img, tone, d->u, d->v, &d->radius);
+    rl_profile_gather(img, tone, d->u, d->v, d->radius, &p);
+    rl_match_all(&rec->templates, &p, m);
+    taken = rl_accept(&rule, m, rl_accept_span(local, tone, &p));
+    if (!taken && try_ellipse(img, tone, &rec->templates, &c->shape, box_r, d, &p, m))
+        taken = rl_accept(&rule, m, rl_accept_span(local, tone, &p));
+    return taken;
+}
+
+int rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
+                   const rl_result *res, rl_detection *d)
+{
+    const rl_levels *frame = &res->levels;
+    rl_levels local;
+    rl_match m;
+    memset(d, 0, sizeof *d);
+    d->id = -1;
+    d->pass = RL_PASS_GLOBAL;
+    if (!rl_clr_geometry(&c->box, rec->width, rec->height, d))
+        return 0;
     /* the frame's levels as the light falls here */
-    rl_accept_levels_at(&rec->illum, &res->levels, d.u, d.v, &local);
-    if (d.complete)
-        rl_refine_centre(img, &local, &d.u, &d.v, d.radius);
-    if (d.visible < GLOBAL_MIN_VISIBLE) {
-        rl_refine_radius(img, d.u, d.v, &d.radius);
-        rl_result_add_unidentified(res, &d);
-        return;
+    rl_accept_levels_at(&rec->illum, frame, d->u, d->v, &local);
+    if (d->complete)
+        rl_refine_centre(img, &local, &d->u, &d->v, d->radius);
+    if (d->visible < GLOBAL_MIN_VISIBLE) {
+        rl_refine_radius(img, tone, d->u, d->v, &d->radius);
+        return 1;
     }
     /* as a circle first; an ellipse only when the circle is not taken */
-    box_r = d.radius;
-    rl_refine_radius(img, d.u, d.v, &d.radius);
-    rl_profile_gather(img, d.u, d.v, d.radius, &p);
-    rl_match_all(&rec->templates, &p, &m);
-    taken = rl_accept(&rule, &m, rl_accept_span(&local, &p));
-    if (!taken && try_ellipse(img, &rec->templates, &c->shape, box_r, &d, &p, &m))
-        taken = rl_accept(&rule, &m, rl_accept_span(&local, &p));
-    d.score = m.score;
-    if (taken &&
-        !rl_inner_enclosed(img, res->levels.light, d.u, d.v, d.radius)) {
-        d.id = m.id;
-        if (rec->cfg.band_radius && d.complete && rl_shape_is_circle(&c->shape))
-            rl_refine_radius_band(img, &rec->cfg.family, d.id, d.u, d.v, &d.radius);
-        rl_result_add_landmark(res, &d);
-    } else {
-        rl_result_add_unidentified(res, &d);
+    if (identify_through(rec, img, tone, c, &local,
+                         rl_result_light_gap(res, &c->box) <= rec->cfg.near_light * d->radius, d, &m) &&
+        !rl_inner_enclosed(img, frame->light, d->u, d->v, d->radius)) {
+        d->id = m.id;
+        if (rec->cfg.band_radius && d->complete && rl_shape_is_circle(&c->shape))
+            rl_refine_radius_band(img, tone, &rec->cfg.family, d->id, d->u, d->v, &d->radius);
     }
+    d->score = m.score;
+    return 1;
 }

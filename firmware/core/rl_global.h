@@ -4,7 +4,9 @@
  *   rl_clr c;
  *   c.box.x0 = 100; c.box.y0 = 80; c.box.x1 = 150; c.box.y1 = 131;   // an outer CLR
  *   c.shape = rl_shape_circle();
- *   rl_global_identify(rec, &img, &c, &res);
+ *   rl_detection d;
+ *   if (rl_global_read(rec, &img, &c, rec->tone, &res, &d))
+ *       use(d.id, d.score);   // d.id -1: a candidate, not identified
  */
 #ifndef RL_GLOBAL_H
 #define RL_GLOBAL_H
@@ -12,10 +14,12 @@
 #include "rl_clr.h"
 #include "rl_recog_state.h"
 
-/* Place the CLR of box b (centre and radius refined on the grey levels),
- * identify it if it is closed (complete, or with at most a sliver cut by
- * the border) and add it to res as a landmark or as unidentified. Corner
- * cuts are not candidates. */
-void rl_global_identify(const rl_recog *rec, const rl_image *img, const rl_clr *c, rl_result *res);
+/* Place the CLR c (centre and radius refined on the grey levels and, for
+ * the radius, light through tone), and identify it through tone if it is
+ * closed (complete, or with at most a sliver cut by the border): into *d,
+ * its id -1 when not identified. 0 when c is no candidate (a corner cut).
+ * res: the frame's levels and lights so far. */
+int rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
+                   const rl_result *res, rl_detection *d);
 
 #endif

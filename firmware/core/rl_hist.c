@@ -15,6 +15,11 @@
 #define LIGHT_MIN_LEVEL 235
 /* Least foreground/background separation (grey levels) for a dark class. */
 #define MIN_CONTRAST 12.0
+/* Least share of the pixels under the light threshold that makes a
+ * cluster a surface (ceiling, paper); fewer are the mixed pixels of
+ * blurred edges or small things. */
+#define SURFACE_MIN_SHARE 0.05
+
 
 void rl_hist_compute(const rl_image *img, rl_hist *h)
 {
@@ -242,16 +247,45 @@ static int light_threshold(const rl_hist *h)
     return t;
 }
 
-rl_err rl_hist_levels(const rl_hist *h, rl_levels *lv)
+/* Pixels in bins [a, b). */
+static double bins_count(const rl_hist *h, int a, int b)
+{
+    double n = 0;
+    int i;
+    for (i = a; i < b; i++)
+        n += h->bin[i];
+    return n;
+}
+
+/* The ROI threshold from the k clusters (their first bins in start). */
+static void dark_threshold(const rl_hist *h, const rl_tone *t, int k, const int *start,
+                           rl_levels *lv)
+{
+    double below = bins_count(h, 0, lv->light), ink = lv->centre[0], surface;
+    int m, s = k - 1;
+    if (!(below > 0) || k < 2) {
+        lv->threshold = 0; /* no dark class: nothing is foreground */
+        return;
+    }
+    for (m = 1; m < k; m++)
+        if (bins_count(h, start[m], m + 1 < k ? start[m + 1] : lv->light) >= SURFACE_MIN_SHARE * below) {
+            s = m;
+            break;
+        }
+    surface = lv->centre[s];
+    lv->threshold = surface - ink >= MIN_CONTRAST ? rl_tone_midway(t, ink, surface) : 0;
+}
+
+rl_err rl_hist_levels(const rl_hist *h, const rl_tone *tone, rl_levels *lv)
 {
     rl_err e;
-    int k;
+    int k, start[3];
     if (h == NULL || lv == NULL || h->total == 0)
         return RL_EINVAL;
     memset(lv, 0, sizeof *lv);
     lv->light = light_threshold(h);
     for (k = 3; k >= 1; k--) {
-        e = rl_hist_kmeans(h, 0, lv->light, k, lv->centre, NULL);
+        e = rl_hist_kmeans(h, 0, lv->light, k, lv->centre, start);
         if (e == RL_OK)
             break;
     }
@@ -260,9 +294,6 @@ rl_err rl_hist_levels(const rl_hist *h, rl_levels *lv)
     lv->k = k;
     lv->fg = lv->centre[0];
     lv->bg = lv->centre[k - 1];
-    if (k >= 2 && lv->centre[1] - lv->centre[0] >= MIN_CONTRAST)
-        lv->threshold = (int)(0.5 * (lv->centre[0] + lv->centre[1]) + 0.5);
-    else
-        lv->threshold = 0; /* no dark class: nothing is foreground */
+    dark_threshold(h, tone, k, start, lv);
     return RL_OK;
 }

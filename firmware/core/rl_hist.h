@@ -15,7 +15,7 @@
  *   rl_hist h;
  *   rl_levels lv;
  *   rl_hist_compute(&img, &h);
- *   if (rl_hist_levels(&h, &lv) == RL_OK)
+ *   if (rl_hist_levels(&h, &tone, &lv) == RL_OK)
  *       use(lv.threshold);     // dark is < threshold
  */
 #ifndef RL_HIST_H
@@ -25,6 +25,7 @@
 #include "rl_error.h"
 #include "rl_image.h"
 #include "rl_recog.h" /* rl_levels */
+#include "rl_tone.h"
 
 typedef struct {
     uint32_t bin[256];
@@ -45,7 +46,11 @@ void rl_hist_compute_rows(const rl_image *img, rl_hist *h, int row_step);
 RL_CHECK rl_err rl_hist_kmeans(const rl_hist *h, int lo, int hi, int k, double *centres,
                                int *start);
 
-/* Light threshold, K-means levels and the ROI threshold of a histogram. */
-RL_CHECK rl_err rl_hist_levels(const rl_hist *h, rl_levels *lv);
+/* Light threshold, K-means levels and the ROI threshold of a histogram:
+ * dark is what lies under halfway, in light (tone), from the ink to the
+ * darkest surface, the first cluster above the ink that holds a fair
+ * share of the frame (a cluster of a few percent between them is the
+ * mixed pixels of blurred edges, which motion makes many). */
+RL_CHECK rl_err rl_hist_levels(const rl_hist *h, const rl_tone *tone, rl_levels *lv);
 
 #endif

@@ -42,14 +42,14 @@ static int local_window(const rl_result *res, const rl_detection *u, double R, r
 
 /* Local clustering: the window's dark/paper threshold by K-means on its
  * histogram, light excluded; 0 when the window has no clear contrast. */
-static int local_threshold(const rl_image *win, int light, int *thr)
+static int local_threshold(const rl_image *win, const rl_tone *tone, int light, int *thr)
 {
     double centre[2];
     rl_hist h;
     rl_hist_compute_rows(win, &h, 4); /* every fourth row: over a thousand pixels still */
     if (rl_hist_kmeans(&h, 0, light, 2, centre, NULL) != RL_OK || centre[1] - centre[0] < 8.0)
         return 0;
-    *thr = (int)(0.5 * (centre[0] + centre[1]) + 0.5);
+    *thr = rl_tone_midway(tone, centre[0], centre[1]);
     return 1;
 }
 
@@ -88,7 +88,7 @@ static int local_locate(rl_recog *rec, const rl_image *img, const rl_result *res
     double tx, ty, tr = R;
     if (!local_window(res, u, R, &w) ||
         rl_image_sub(img, w.x0, w.y0, w.x1 - w.x0 + 1, w.y1 - w.y0 + 1, &win) != RL_OK ||
-        !local_threshold(&win, light, &thr) ||
+        !local_threshold(&win, rec->tone, light, &thr) ||
         rl_label_band(&rec->dark, &win, 0, thr, rl_recog_speck_area(&rec->cfg)) != RL_OK ||
         (reg = local_outer_ring(&rec->dark, &w, u, R)) < 0)
         return 0;
@@ -111,7 +111,7 @@ static int local_locate(rl_recog *rec, const rl_image *img, const rl_result *res
      * refines centre and radius once more) */
     tx = *cx;
     ty = *cy;
-    if (rl_edge_fit_rays(img, light, &tx, &ty, &tr)) {
+    if (rl_edge_fit_rays(img, rec->tone, light, &tx, &ty, &tr)) {
         *cx = tx;
         *cy = ty;
         *r = tr;
@@ -132,14 +132,14 @@ static int local_locate(rl_recog *rec, const rl_image *img, const rl_result *res
 
 /* The zone twins' best score against the ellipse e at radii around its
  * own, as m's runner-up when higher (as the search does for circles). */
-static void ellipse_twins(const rl_templates *tt, const rl_image *img, const rl_ellipse *e,
-                          rl_match *m)
+static void ellipse_twins(const rl_templates *tt, const rl_image *img, const rl_tone *tone,
+                          const rl_ellipse *e, rl_match *m)
 {
     int twins[2], n = rl_match_twins(tt, m->id, twins), k;
     for (k = 0; n > 0 && k < RL_SEARCH_TWIN_SCALES; k++) {
         rl_profile p;
         rl_match mm;
-        rl_profile_gather_shaped(img, e->cx, e->cy, e->r * rl_search_twin_scale[k], &e->shape, &p);
+        rl_profile_gather_shaped(img, tone, e->cx, e->cy, e->r * rl_search_twin_scale[k], &e->shape, &p);
         rl_match_ids(tt, &p, twins, n, -1, &mm);
         if (mm.id >= 0 && mm.score > m->second)
             m->second = mm.score;
@@ -148,8 +148,8 @@ static void ellipse_twins(const rl_templates *tt, const rl_image *img, const rl_
 
 /* The candidate at (cx, cy, r) as an ellipse fitted to its outer edge
  * (perspective, the lens: a circle's profile smears its zones): its match
- * into *m, the grey span its contrast counts against into *span (plain
- * grey levels, not sector-normalized) and the ellipse into *e; 0 when the
+ * into *m, the span of light its contrast counts against into *span (not
+ * sector-normalized) and the ellipse into *e; 0 when the
  * edge is no such ellipse. */
 static int local_ellipse(const rl_recog *rec, const rl_image *img, const rl_result *res,
                          double cx, double cy, double r, rl_ellipse *e, rl_match *m, double *span)
@@ -158,7 +158,7 @@ static int local_ellipse(const rl_recog *rec, const rl_image *img, const rl_resu
     int light = res->levels.light;
     rl_levels local;
     double ex[RL_EDGE_RAYS], ey[RL_EDGE_RAYS], aspect;
-    int n = rl_edge_points(img, light, cx, cy, r, ex, ey);
+    int n = rl_edge_points(img, rec->tone, light, cx, cy, r, ex, ey);
     rl_profile p;
     if (!rl_ellipse_fit(ex, ey, n, cx, cy, r, e))
         return 0;
@@ -166,12 +166,12 @@ static int local_ellipse(const rl_recog *rec, const rl_image *img, const rl_resu
     if (aspect < ELLIPSE_MIN_ASPECT || aspect > ELLIPSE_MAX_ASPECT ||
         hypot(e->cx - cx, e->cy - cy) > ELLIPSE_MAX_MOVE * r || fabs(e->r - r) > ELLIPSE_MAX_MOVE * r)
         return 0;
-    rl_profile_gather_shaped(img, e->cx, e->cy, e->r, &e->shape, &p);
+    rl_profile_gather_shaped(img, rec->tone, e->cx, e->cy, e->r, &e->shape, &p);
     rl_match_all(tt, &p, m);
     if (m->id >= 0)
-        ellipse_twins(tt, img, e, m);
+        ellipse_twins(tt, img, rec->tone, e, m);
     rl_accept_levels_at(&rec->illum, &res->levels, e->cx, e->cy, &local);
-    *span = rl_accept_span(&local, &p);
+    *span = rl_accept_span(&local, rec->tone, &p);
     return 1;
 }
 
@@ -192,7 +192,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     out->pass = RL_PASS_LOCAL;
     if (rl_geom_visible_in(W, H, cx, cy, r) < 0.5) /* more than half missing: not tried */
         return 0;
-    rl_search_identify(&rec->templates, rec->polar, img, light, &cx, &cy, &r, &m);
+    rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &cx, &cy, &r, &m);
     taken = rl_accept(&rule, &m, 255.0);
     if (!taken) {
         /* not as a circle: as the ellipse its edge may be */
@@ -219,14 +219,22 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     return 1;
 }
 
-/* A DUCLR: next to a light, or cut by the border with at most half of it
- * missing. */
+/* A UCLR of about the frame's landmark size is retried wherever it is:
+ * motion can break a landmark's outer ring (its inner ring is then the
+ * candidate, of about half the size) or smear its zones past what the
+ * frame's thresholds and one profile read. */
+#define UNREAD_MIN_SIZE 0.4
+#define UNREAD_MAX_SIZE 1.3
+
+/* A DUCLR: next to a light, cut by the border with at most half of it
+ * missing, or a landmark-sized UCLR the global pass could not read. */
 static int is_duclr(const rl_recog_config *cfg, const rl_result *res, const rl_detection *u,
                     double R)
 {
     int near_light = rl_result_light_gap(res, &u->box) <= cfg->near_light * R;
     int on_border = !u->complete;
-    return (near_light || on_border) && (!on_border || u->visible >= 0.5);
+    int landmark_sized = u->radius > UNREAD_MIN_SIZE * R && u->radius < UNREAD_MAX_SIZE * R;
+    return (near_light || on_border || landmark_sized) && (!on_border || u->visible >= 0.5);
 }
 
 void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res)

@@ -58,7 +58,7 @@ static int match_start(const rl_profile *p, profile_terms *z, rl_match *m)
         }
         sx = s0 + s1;
     }
-    vx = n * p->sxx - sx * sx;
+    vx = n * (p->sxx - p->plane) - sx * sx;
     if (!(vx > 0))
         return 0; /* a flat candidate correlates with nothing */
     z->n = n;

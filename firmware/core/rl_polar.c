@@ -47,18 +47,44 @@ static int ifloor(double v)
     return t > v ? t - 1 : t;
 }
 
-/* Clear the cells, fill the per-level table and the sector directions. */
-static void polar_setup(rl_polar *pol, double cx, double cy, double r, int light)
+/* The brightest grey level under `light` on a coarse grid over the
+ * candidate's disk of reach lim (at least 1). */
+static int brightest_below(const rl_image *img, double cx, double cy, double lim, int light)
+{
+    int x, y, top = 1;
+    int x0 = (int)(cx - lim), x1 = (int)(cx + lim), y0 = (int)(cy - lim), y1 = (int)(cy + lim);
+    if (x0 < 0) x0 = 0;
+    if (y0 < 0) y0 = 0;
+    if (x1 > img->width - 1) x1 = img->width - 1;
+    if (y1 > img->height - 1) y1 = img->height - 1;
+    for (y = y0; y <= y1; y += 2) {
+        const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
+        for (x = x0; x <= x1; x += 2)
+            if (row[x] < light && row[x] > top)
+                top = row[x];
+    }
+    return top;
+}
+
+/* Clear the cells, fill the per-level table and the sector directions.
+ * The table holds light (tone) in 8 bits, the candidate's brightest level
+ * at 255: a landmark in a dark corner keeps its steps. */
+static void polar_setup(rl_polar *pol, const rl_tone *tone, int top, double cx, double cy, double r,
+                        int light)
 {
     int k, sct;
+    double scale = 255.0 / (tone->light[top] > 1 ? tone->light[top] : 1);
     memset(pol->acc, 0, sizeof pol->acc);
     memset(pol->n, 0, sizeof pol->n);
     memset(pol->s, 0, sizeof pol->s);
     memset(pol->q, 0, sizeof pol->q);
     for (k = 0; k < 256; k++)
-        pol->lut[k] = k < light ? ((uint64_t)1 << PACK_N_SHIFT) | ((uint64_t)k << PACK_S_SHIFT) |
-                                      (uint64_t)(k * k)
+    {
+        double l = tone->light[k] * scale;
+        uint64_t v = (uint64_t)(l > 255 ? 255 : l + 0.5);
+        pol->lut[k] = k < light ? ((uint64_t)1 << PACK_N_SHIFT) | (v << PACK_S_SHIFT) | (v * v)
                                 : 0; /* light is not gathered */
+    }
     pol->cx = cx;
     pol->cy = cy;
     pol->r = r;
@@ -211,10 +237,11 @@ static void merge_octants(rl_polar *pol)
     }
 }
 
-void rl_polar_gather(const rl_image *img, double cx, double cy, double r, int light,
-                     double min_contrast, rl_polar *pol)
+void rl_polar_gather(const rl_image *img, const rl_tone *tone, double cx, double cy, double r,
+                     int light, double min_contrast, rl_polar *pol)
 {
-    polar_setup(pol, cx, cy, r, light);
+    polar_setup(pol, tone, brightest_below(img, cx, cy, RL_PROFILE_EXTENT * r, light), cx, cy, r,
+                light);
     gather_cells(pol, img);
     sector_levels(pol, min_contrast);
     merge_octants(pol);
@@ -287,6 +314,7 @@ static void rescale_bins(const float *mn, const float *ms, const float *mq, doub
         }
         p->total = tn;
         p->sxx = tq;
+        p->plane = 0;
         return;
     }
     b = a * (0.5 - SHIFT_GUARD) - 0.5;
@@ -331,6 +359,7 @@ static void rescale_bins(const float *mn, const float *ms, const float *mq, doub
             q1 += w * mq[m];
         }
         p->sxx = tq;
+        p->plane = 0;
         p->total = tn;
     }
 }

@@ -8,7 +8,7 @@
  * radius without touching the image again.
  *
  *   static rl_polar pol;                        // large: not on a small stack
- *   rl_polar_gather(&img, cx, cy, r, light, 20.0, &pol);
+ *   rl_polar_gather(&img, &tone, cx, cy, r, light, 20.0, &pol);
  *   rl_profile p;
  *   rl_polar_profile(&pol, 0.5, 0.0, 1.02, &p); // centre 0.5 px right, radius +2%
  */
@@ -57,14 +57,15 @@ typedef struct {
                                               into the first half of the arrays */
 } rl_polar;
 
-/* Gather a candidate into polar cells and normalize each sector by its
- * own black and white; sectors with less than min_contrast grey levels
- * between them (washed out) are left out. After this the first
+/* Gather a candidate into polar cells, as light (tone->lin), and
+ * normalize each sector by its own black and white; sectors with less
+ * than min_contrast levels of light between them (washed out) are left
+ * out. After this the first
  * RL_SECTORS / 2 rows of cells hold the normalized darkness (count, sum,
  * sum of squares) of each octant, its two sectors summed, and ux, uy the
  * octants' middle directions. */
-void rl_polar_gather(const rl_image *img, double cx, double cy, double r, int light,
-                    double min_contrast, rl_polar *pol);
+void rl_polar_gather(const rl_image *img, const rl_tone *tone, double cx, double cy, double r,
+                     int light, double min_contrast, rl_polar *pol);
 
 /* The profile of pol with the centre moved by (dx, dy) px and the radius
  * multiplied by scale (1 = as gathered). */

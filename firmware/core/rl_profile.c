@@ -28,9 +28,55 @@ static void row_span(const rl_shape *sh, double cx, double dy, double ext, int *
     *xb = (int)floor(mid + h);
 }
 
+/* Sums over the gathered pixels for the plane that light falling across a
+ * candidate adds: coordinates relative to the centre, their squares and
+ * products, and their products with the darkness. */
+typedef struct {
+    double n, v, x, y, xx, yy, xy, xv, yv;
+    int clipped; /* the image's border cut the disk */
+} plane_sums;
+
+/* Add a row's pixels x0 .. x1 at dy (rv: their darkness summed, rxv: the
+ * sum of x v in absolute x) to the plane sums. */
+static void plane_row(plane_sums *ps, double cx, double dy, int x0, int x1, double rv, double rxv)
+{
+    double n = x1 - x0 + 1, a = x0 - cx, b = x1 - cx;
+    /* sums of dx and dx^2 for dx = a, a + 1, .., b */
+    double sx = 0.5 * n * (a + b), sxx = (b * (b + 1) * (2 * b + 1) - (a - 1) * a * (2 * a - 1)) / 6.0;
+    if (n <= 0)
+        return;
+    ps->n += n;
+    ps->v += rv;
+    ps->x += sx;
+    ps->y += n * dy;
+    ps->xx += sxx;
+    ps->yy += n * dy * dy;
+    ps->xy += sx * dy;
+    ps->xv += rxv - cx * rv;
+    ps->yv += dy * rv;
+}
+
+/* The part of the darkness's sum of squares a plane explains; 0 for a disk
+ * the border cut (there a plane is not apart from the rings). */
+static double plane_explained(const plane_sums *ps)
+{
+    double cxx, cyy, cxy, cxv, cyv, det;
+    if (ps->clipped || ps->n < 16)
+        return 0;
+    cxx = ps->xx - ps->x * ps->x / ps->n;
+    cyy = ps->yy - ps->y * ps->y / ps->n;
+    cxy = ps->xy - ps->x * ps->y / ps->n;
+    cxv = ps->xv - ps->x * ps->v / ps->n;
+    cyv = ps->yv - ps->y * ps->v / ps->n;
+    det = cxx * cyy - cxy * cxy;
+    if (!(det > 0))
+        return 0;
+    return (cyy * cxv * cxv - 2 * cxy * cxv * cyv + cxx * cyv * cyv) / det;
+}
+
 /* Pixels binned by the shape's normalized radius, a circle's included. */
-static void gather(const rl_image *img, double cx, double cy, double r, const rl_shape *sh,
-                   rl_profile *p)
+static void gather(const rl_image *img, const rl_tone *tone, double cx, double cy, double r,
+                   const rl_shape *sh, rl_profile *p)
 {
     double ext = RL_PROFILE_EXTENT * r, scale = RL_PROFILE_BINS / ext;
     /* the ellipse's extent along y */
@@ -39,8 +85,11 @@ static void gather(const rl_image *img, double cx, double cy, double r, const rl
     int y, k, y0 = (int)ceil(cy - hy), y1 = (int)floor(cy + hy);
     /* two sets of sums, even and odd pixels: neighbours share a bin, and
      * one set would make every add wait on the one before */
-    uint64_t acc[2][RL_PROFILE_BINS], sxx = 0;
+    uint64_t acc[2][RL_PROFILE_BINS], sxx = 0; /* (count, sum) packed: 2^32 / 1023 pixels a bin */
+    plane_sums ps;
     memset(acc, 0, sizeof acc);
+    memset(&ps, 0, sizeof ps);
+    ps.clipped = y0 < 0 || y1 > img->height - 1;
     /* pixels outside the image are not gathered: a cut landmark meets cut
      * templates */
     if (y0 < 0) y0 = 0;
@@ -50,8 +99,10 @@ static void gather(const rl_image *img, double cx, double cy, double r, const rl
         double dy = y - cy;
         float b2dy = (float)(2 * sh->b * dy), cdy2 = (float)(sh->c * dy * dy);
         int x0, x1, xs;
-        uint32_t rs = 0;
+        uint64_t rs = 0, rv = 0, rxv = 0; /* a row's squares (1023^2 each), sum, x v */
         row_span(sh, cx, dy, ext, &x0, &x1);
+        if (x0 <= x1 && (x0 < 0 || x1 > img->width - 1))
+            ps.clipped = 1;
         if (x0 < 0) x0 = 0;
         if (x1 > img->width - 1) x1 = img->width - 1;
         for (xs = x0; xs <= x1; xs += GATHER_CHUNK) {
@@ -69,14 +120,18 @@ static void gather(const rl_image *img, double cx, double cy, double r, const rl
                 }
             }
             for (i = 0; i < nx; i++) {
-                uint32_t v = 255u - row[xs + i];
+                uint32_t v = tone->dark[row[xs + i]];
                 acc[i & 1][bin[i]] += PACK_COUNT + v;
                 rs += v * v;
+                rv += v;
+                rxv += (uint64_t)(xs + i) * v;
             }
         }
         sxx += rs;
+        plane_row(&ps, cx, dy, x0, x1, (double)rv, (double)rxv);
     }
     p->sxx = (double)sxx;
+    p->plane = plane_explained(&ps);
     p->total = 0;
     for (k = 0; k < RL_PROFILE_BINS; k++) {
         uint64_t w = acc[0][k] + acc[1][k];
@@ -86,17 +141,18 @@ static void gather(const rl_image *img, double cx, double cy, double r, const rl
     }
 }
 
-void rl_profile_gather(const rl_image *img, double cx, double cy, double r, rl_profile *p)
+void rl_profile_gather(const rl_image *img, const rl_tone *tone, double cx, double cy, double r,
+                       rl_profile *p)
 {
     rl_shape circle = rl_shape_circle();
-    gather(img, cx, cy, r, &circle, p);
+    gather(img, tone, cx, cy, r, &circle, p);
 }
 
-void rl_profile_gather_shaped(const rl_image *img, double cx, double cy, double r,
-                              const rl_shape *sh, rl_profile *p)
+void rl_profile_gather_shaped(const rl_image *img, const rl_tone *tone, double cx, double cy,
+                              double r, const rl_shape *sh, rl_profile *p)
 {
     rl_shape circle = rl_shape_circle();
-    gather(img, cx, cy, r, sh ? sh : &circle, p);
+    gather(img, tone, cx, cy, r, sh ? sh : &circle, p);
 }
 
 rl_shape rl_shape_circle(void)

@@ -2,19 +2,21 @@
  *
  * Landmarks are rotationally symmetric, so what identification needs of a
  * candidate is, per radial bin, how many pixels fall in it and the sum of
- * their darkness (255 - I), plus the sum of squared darkness over every
+ * their darkness (RL_TONE_MAX less their light, rl_tone.h), plus the sum of squared darkness over every
  * pixel. Because that last sum is taken per pixel, anything that varies
  * around a ring (asymmetric clutter, a wrong centre) still lowers Pearson's
- * r exactly as a 2-D correlation would. Pixels outside the image are not
+ * r exactly as a 2-D correlation would; all but a plane, which light
+ * falling across a landmark adds and no ring explains. Pixels outside the image are not
  * gathered: a landmark cut by the border meets templates cut the same way.
  *
  *   rl_profile p;
- *   rl_profile_gather(&img, cx, cy, r, &p);   // p.total pixels within 1.2 r
+ *   rl_profile_gather(&img, &tone, cx, cy, r, &p);   // p.total pixels within 1.2 r
  */
 #ifndef RL_PROFILE_H
 #define RL_PROFILE_H
 
 #include "rl_image.h"
+#include "rl_tone.h"
 
 /* Radial bins of a profile: at R = 24 px a bin is 0.45 px wide, so bin
  * quantization costs under 0.01 of correlation. */
@@ -47,17 +49,23 @@ double rl_shape_step(const rl_shape *sh, double c, double s);
 
 typedef struct {
     double n[RL_PROFILE_BINS];  /* pixels per bin */
-    double sx[RL_PROFILE_BINS]; /* sum of darkness per bin */
+    double sx[RL_PROFILE_BINS]; /* sum of darkness per bin (0 .. RL_TONE_MAX a pixel) */
     double sxx;                 /* sum of squared darkness over all pixels */
+    double plane;               /* the part of the spread about the mean that a plane
+                                   explains (light falling across the candidate: a lamp's
+                                   glare, vignetting), left out of the correlation; 0 for
+                                   a disk the border cuts */
     double total;               /* pixels in all bins */
 } rl_profile;
 
-/* Gather the pixels of img within RL_PROFILE_EXTENT * r of (cx, cy). */
-void rl_profile_gather(const rl_image *img, double cx, double cy, double r, rl_profile *p);
+/* Gather the pixels of img within RL_PROFILE_EXTENT * r of (cx, cy), their
+ * darkness in light (tone->dark). */
+void rl_profile_gather(const rl_image *img, const rl_tone *tone, double cx, double cy, double r,
+                       rl_profile *p);
 
 /* The same with radii measured in the shape's metric (an ellipse's
  * pixels binned by their normalized radius). */
-void rl_profile_gather_shaped(const rl_image *img, double cx, double cy, double r,
-                              const rl_shape *sh, rl_profile *p);
+void rl_profile_gather_shaped(const rl_image *img, const rl_tone *tone, double cx, double cy,
+                              double r, const rl_shape *sh, rl_profile *p);
 
 #endif

@@ -22,8 +22,8 @@ int rl_ray_inside(const rl_image *img, double x0, double y0, double x1, double y
            x1 < img->width - 1 && y0 < img->height - 1 && y1 < img->height - 1;
 }
 
-int rl_ray_sample(const rl_image *img, double x, double y, double dx, double dy, int n,
-                  int light, float *out)
+int rl_ray_sample(const rl_image *img, const rl_tone *tone, double x, double y, double dx,
+                  double dy, int n, int light, float *out)
 {
     float fx0 = (float)x, fy0 = (float)y, fdx = (float)dx, fdy = (float)dy;
     int i, st = img->stride;
@@ -36,8 +36,8 @@ int rl_ray_sample(const rl_image *img, double x, double y, double dx, double dy,
             return 0;
         fx = px - (float)x0;
         fy = py - (float)y0;
-        top = (float)p00 + fx * (float)(p01 - p00);
-        bot = (float)p10 + fx * (float)(p11 - p10);
+        top = tone->light[p00] + fx * (tone->light[p01] - tone->light[p00]);
+        bot = tone->light[p10] + fx * (tone->light[p11] - tone->light[p10]);
         out[i] = top + fy * (bot - top);
     }
     return 1;

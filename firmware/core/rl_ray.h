@@ -1,27 +1,28 @@
-/* rl_ray: grey levels along straight rays from a candidate's centre
- * (internal).
+/* rl_ray: light along straight rays from a candidate's centre, the
+ * camera's tone curve undone (internal).
  *
  *   double c[16], s[16];
  *   float g[40];
  *   rl_ray_dirs(16, c, s);
  *   if (rl_ray_inside(&img, cx, cy, cx + 10 * c[0], cy + 10 * s[0]) &&
- *       rl_ray_sample(&img, cx, cy, 0.25 * c[0], 0.25 * s[0], 40, light, g))
+ *       rl_ray_sample(&img, &tone, cx, cy, 0.25 * c[0], 0.25 * s[0], 40, light, g))
  *       use(g[0], g[39]);
  */
 #ifndef RL_RAY_H
 #define RL_RAY_H
 
 #include "rl_image.h"
+#include "rl_tone.h"
 
 /* Directions of n rays at angles (a + 0.5) 2 pi / n, a = 0 .. n - 1. */
 void rl_ray_dirs(int n, double *c, double *s);
 
-/* Bilinear grey levels at (x + i dx, y + i dy), i = 0 .. n - 1, into
- * out[0 .. n). Every sample must lie in [0, width - 1) x [0, height - 1)
+/* Bilinear light (tone->light of the four pixels) at (x + i dx, y + i dy),
+ * i = 0 .. n - 1, into out[0 .. n). Every sample must lie in [0, width - 1) x [0, height - 1)
  * (the caller checks the ends). 0 as soon as a sample touches a pixel at
  * or above `light` (256: none), else 1. */
-int rl_ray_sample(const rl_image *img, double x, double y, double dx, double dy, int n,
-                  int light, float *out);
+int rl_ray_sample(const rl_image *img, const rl_tone *tone, double x, double y, double dx,
+                  double dy, int n, int light, float *out);
 
 /* 1 if the segment from (x0, y0) to (x1, y1) stays where rl_ray_sample
  * can read. */

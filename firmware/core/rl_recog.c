@@ -31,6 +31,7 @@ void rl_recog_defaults(rl_recog_config *cfg)
     cfg->local = RL_LOCAL_ALWAYS;
     cfg->near_light = 1.5;
     cfg->min_contrast = 0.5;
+    cfg->gamma = 0.0;
 }
 
 void rl_recog_use_map(rl_recog_config *cfg, const rl_map *map, int *ids)
@@ -78,7 +79,8 @@ static rl_err check_config(const rl_recog_config *cfg, int w, int h)
     if (!(cfg->min_radius >= 0) || !(cfg->max_radius >= 0) || !(cfg->min_score > 0) ||
         cfg->min_score > 1 || !(cfg->local_min_score > 0) || cfg->local_min_score > 1 ||
         !(cfg->min_lead >= 1) || !(cfg->local_min_lead >= 1) || !(cfg->min_contrast >= 0) ||
-        !(cfg->size_tolerance > 0) || !(cfg->near_light >= 0) || cfg->need < 1)
+        !(cfg->size_tolerance > 0) || !(cfg->near_light >= 0) || cfg->need < 1 ||
+        !(cfg->gamma == 0.0 || (cfg->gamma >= 1.0 && cfg->gamma <= 3.0)))
         return RL_EINVAL;
     return RL_OK;
 }
@@ -133,6 +135,8 @@ static void resolve_config(rl_recog *rec, const rl_recog_config *cfg, int w, int
         int n = cfg->family.bits;
         rec->cfg.min_radius = 1.0 / (RL_OUTER_RING_INNER * (1.0 - sqrt((double)(n - 1) / n)));
     }
+    rl_tones_init(&rec->tones, cfg->gamma);
+    rec->tone = rl_tones_current(&rec->tones);
     rec->width = w;
     rec->height = h;
 }
@@ -176,26 +180,59 @@ int rl_recog_speck_area(const rl_recog_config *cfg)
 
 /* 1. histogram analysis: light sources, foreground and background; 0 when
  * the frame has no dark class (nothing to find). */
-static int analyse_histogram(const rl_image *img, rl_result *res)
+static int analyse_histogram(const rl_image *img, const rl_tone *tone, rl_result *res)
 {
     rl_hist h;
     /* every fourth row suffices for the levels (76,800 pixels of a 640 x 480
      * frame), every other or every row in small frames */
     rl_hist_compute_rows(img, &h, img->height >= 240 ? 4 : img->height >= 120 ? 2 : 1);
-    if (rl_hist_levels(&h, &res->levels) != RL_OK)
+    if (rl_hist_levels(&h, tone, &res->levels) != RL_OK)
         return 0; /* a frame that is all light */
     return 1;
 }
 
-/* 4. identification of the outer CLRs (a CLR inside another's box is an
- * inner ring). */
-static void identify_clrs(const rl_recog *rec, const rl_image *img, const rl_clr *cand, int n,
-                          rl_result *res)
+/* Read the outer CLRs (a CLR inside another's box is an inner ring)
+ * through tone t: into res when `into` (landmarks and unidentified),
+ * else only how many are identified and their scores summed. */
+static void read_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n, int t, int into,
+                      rl_result *res, int *found, double *score)
 {
     int i;
-    for (i = 0; i < n; i++)
-        if (!rl_clr_is_inner(cand, n, i))
-            rl_global_identify(rec, img, &cand[i], res);
+    *found = 0;
+    *score = 0;
+    for (i = 0; i < n; i++) {
+        rl_detection d;
+        if (rl_clr_is_inner(cand, n, i) || !rl_global_read(rec, img, &cand[i], &rec->tones.tone[t], res, &d))
+            continue;
+        *found += d.id >= 0;
+        *score += d.id >= 0 ? d.score : 0;
+        if (!into)
+            continue;
+        res->n_candidates++;
+        if (d.id >= 0)
+            rl_result_add_landmark(res, &d);
+        else
+            rl_result_add_unidentified(res, &d);
+    }
+}
+
+/* 4. identification of the outer CLRs through the camera's tone curve:
+ * the configured one, or, while it is being learned, the one the frame's
+ * landmarks read best through (rl_tones.h): the others are read first,
+ * counting only, then the one taken into res. */
+static void identify_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n,
+                          rl_result *res)
+{
+    int which[RL_TONES_MAX], found[RL_TONES_MAX], nt = rl_tones_to_try(&rec->tones, which), t;
+    double score[RL_TONES_MAX];
+    for (t = 0; t < nt && nt > 1; t++)
+        read_clrs(rec, img, cand, n, which[t], 0, res, &found[t], &score[t]);
+    t = nt > 1 ? which[rl_tones_vote(&rec->tones, which, nt, found, score)] : which[0];
+    if (nt == 1)
+        rl_tones_vote(&rec->tones, which, 1, NULL, NULL);
+    rec->tone = &rec->tones.tone[t];
+    res->gamma = rec->tones.gamma[t];
+    read_clrs(rec, img, cand, n, t, 1, res, &found[0], &score[0]);
 }
 
 static int local_wanted(const rl_recog_config *cfg, const rl_result *res)
@@ -214,10 +251,11 @@ rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
     if (img->width != rec->width || img->height != rec->height || img->stride > INT_MAX / 2)
         return RL_EINVAL;
     rl_result_clear(res, rec->width, rec->height);
+    res->gamma = rl_tones_gamma(&rec->tones);
     speck = rl_recog_speck_area(&rec->cfg);
 
     /* 1. histogram analysis, and the light sources it finds */
-    if (!analyse_histogram(img, res))
+    if (!analyse_histogram(img, rec->tone, res))
         return RL_OK;
     if ((e = rl_light_find(&rec->light, img, res->levels.light, speck, res)) != RL_OK)
         return e;

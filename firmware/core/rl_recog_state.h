@@ -17,12 +17,15 @@
 #include "rl_polar.h"
 #include "rl_recog.h"
 #include "rl_templates.h"
+#include "rl_tones.h"
 
 struct rl_recog {
     rl_recog_config cfg;
     int width, height;
     int ids[RL_MAX_IDS]; /* copy of cfg.ids */
     rl_templates templates;        /* rendered at init */
+    rl_tones tones; /* the camera's tone curve, configured or learned */
+    const rl_tone *tone; /* the one this frame is read through (in tones) */
     rl_label dark;  /* ROI labelling: the frame, then the local pass's windows */
     rl_label light; /* light-source labelling */
     rl_illum illum; /* the ceiling's light across the frame: per-tile thresholds */

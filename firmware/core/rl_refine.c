@@ -51,8 +51,8 @@ void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, doub
 
 /* The mean profile over the rays inside the image, from lo in steps of
  * step; 0 when too few rays are inside. */
-static int mean_profile(const rl_image *img, double cx, double cy, const rl_shape *sh, double lo,
-                        double step, double *prof)
+static int mean_profile(const rl_image *img, const rl_tone *tone, double cx, double cy,
+                        const rl_shape *sh, double lo, double step, double *prof)
 {
     double ca[EDGE_ANGLES], sa[EDGE_ANGLES], hi = lo + (EDGE_SAMPLES - 1) * step;
     float g[EDGE_SAMPLES];
@@ -72,7 +72,7 @@ static int mean_profile(const rl_image *img, double cx, double cy, const rl_shap
          * that is there */
         if (!rl_ray_inside(img, cx + lo * c, cy + lo * s, cx + hi * c, cy + hi * s))
             continue;
-        rl_ray_sample(img, cx + lo * c, cy + lo * s, step * c, step * s, EDGE_SAMPLES, 256, g);
+        rl_ray_sample(img, tone, cx + lo * c, cy + lo * s, step * c, step * s, EDGE_SAMPLES, 256, g);
         for (i = 0; i < EDGE_SAMPLES; i++)
             prof[i] += g[i];
         used++;
@@ -84,9 +84,9 @@ static int mean_profile(const rl_image *img, double cx, double cy, const rl_shap
     return 1;
 }
 
-void rl_refine_radius(const rl_image *img, double cx, double cy, double *r)
+void rl_refine_radius(const rl_image *img, const rl_tone *tone, double cx, double cy, double *r)
 {
-    rl_refine_radius_shaped(img, cx, cy, NULL, r);
+    rl_refine_radius_shaped(img, tone, cx, cy, NULL, r);
 }
 
 /* The profile's halfway crossing going from index `from` to `to`; 0 if none. */
@@ -112,6 +112,13 @@ static int darkest(const double *prof, int a, int b, double *v)
     return k;
 }
 
+/* An edge from black to white light that noise does not make: a fair
+ * part of the white's light, whatever the exposure. */
+static int clear_edge(double black, double white)
+{
+    return white - black >= 0.15 * white && white - black >= 2.0;
+}
+
 /* The profile's greatest value from a on. */
 static double brightest(const double *prof, int a)
 {
@@ -123,24 +130,25 @@ static double brightest(const double *prof, int a)
     return w;
 }
 
-void rl_refine_radius_shaped(const rl_image *img, double cx, double cy, const rl_shape *sh,
-                             double *r)
+void rl_refine_radius_shaped(const rl_image *img, const rl_tone *tone, double cx, double cy,
+                             const rl_shape *sh, double *r)
 {
     double prof[EDGE_SAMPLES], lo = 0.75 * *r, hi = 1.3 * *r, step = (hi - lo) / (EDGE_SAMPLES - 1);
     double black, white;
     int imin;
     if (sh != NULL && rl_shape_is_circle(sh))
         sh = NULL;
-    if (!mean_profile(img, cx, cy, sh, lo, step, prof))
+    if (!mean_profile(img, tone, cx, cy, sh, lo, step, prof))
         return;
     imin = darkest(prof, 0, EDGE_SAMPLES - 1, &black);
     white = brightest(prof, imin);
-    if (white - black < 10.0)
+    if (!clear_edge(black, white))
         return;
     crossing(prof, imin, EDGE_SAMPLES - 1, 0.5 * (black + white), lo, step, r);
 }
 
-void rl_refine_radius_band(const rl_image *img, const rl_family *fam, int id, double cx, double cy, double *r)
+void rl_refine_radius_band(const rl_image *img, const rl_tone *tone, const rl_family *fam, int id,
+                           double cx, double cy, double *r)
 {
     double rho = rl_family_band_inner(fam, id), prof[EDGE_SAMPLES], lo, step, black, white, half, ro, ri, est;
     int iout, imin;
@@ -148,12 +156,12 @@ void rl_refine_radius_band(const rl_image *img, const rl_family *fam, int id, do
         return;
     lo = (rho - 0.6 * RL_FAMILY_BAND_WHITE) * *r;
     step = (1.3 * *r - lo) / (EDGE_SAMPLES - 1);
-    if (!mean_profile(img, cx, cy, NULL, lo, step, prof))
+    if (!mean_profile(img, tone, cx, cy, NULL, lo, step, prof))
         return;
     iout = (int)((*r - lo) / step);
     imin = darkest(prof, (int)((rho * *r - lo) / step), iout, &black);
     white = brightest(prof, iout);
-    if (white - black < 10.0)
+    if (!clear_edge(black, white))
         return;
     half = 0.5 * (black + white);
     if (!crossing(prof, imin, EDGE_SAMPLES - 1, half, lo, step, &ro) || !crossing(prof, imin, 0, half, lo, step, &ri))

@@ -2,7 +2,7 @@
  * global identification (internal).
  *
  *   rl_refine_centre(&img, &res.levels, &d.u, &d.v, d.radius);   // d: a CLR
- *   rl_refine_radius(&img, d.u, d.v, &d.radius);
+ *   rl_refine_radius(&img, &tone, d.u, d.v, &d.radius);
  */
 #ifndef RL_REFINE_H
 #define RL_REFINE_H
@@ -19,12 +19,14 @@
  * image; unchanged otherwise. */
 void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r);
 
-/* Outer radius: the mean grey level on circles of growing radius drops to
- * the outer ring's black and rises to the paper's white; where it crosses
- * halfway is the printed edge, whatever the blur (a symmetric blur moves
- * a threshold crossing, not the 50% one). Only rays that stay inside the
- * image are used; *r is kept when there is no clear edge. */
-void rl_refine_radius(const rl_image *img, double cx, double cy, double *r);
+/* Outer radius: the mean light (the tone curve undone, rl_tone.h) on
+ * circles of growing radius drops to the outer ring's black and rises to
+ * the paper's white; where it crosses halfway is the printed edge,
+ * whatever the blur (a symmetric blur of light moves a threshold
+ * crossing, not the 50% one; in grey levels the tone curve would move it
+ * inwards). Only rays that stay inside the image are used; *r is kept
+ * when there is no clear edge. */
+void rl_refine_radius(const rl_image *img, const rl_tone *tone, double cx, double cy, double *r);
 
 /* The outer radius of an identified landmark from both edges of its
  * outermost black band (the outer ring and the black code zones just
@@ -33,10 +35,11 @@ void rl_refine_radius(const rl_image *img, double cx, double cy, double *r);
  * band's mid radius, rescaled, is the printed radius unbiased. Only when
  * the band's inner edge is clear (rl_family_band_inner); *r is kept
  * otherwise. */
-void rl_refine_radius_band(const rl_image *img, const rl_family *fam, int id, double cx, double cy, double *r);
+void rl_refine_radius_band(const rl_image *img, const rl_tone *tone, const rl_family *fam, int id,
+                           double cx, double cy, double *r);
 
 /* The same with radii in the shape's metric (rl_profile.h). */
-void rl_refine_radius_shaped(const rl_image *img, double cx, double cy, const rl_shape *sh,
-                             double *r);
+void rl_refine_radius_shaped(const rl_image *img, const rl_tone *tone, double cx, double cy,
+                             const rl_shape *sh, double *r);
 
 #endif

@@ -8,7 +8,8 @@
 static const double search_shift[SEARCH_ROUNDS] = {1.0, 0.5};
 static const double search_scale[SEARCH_ROUNDS] = {0.03, 0.015};
 #define SWEEP_SCALE 1.06
-/* Sectors with less grey-level contrast than this are washed out. */
+/* Sectors with less contrast than this (light, the candidate's brightest
+ * at 255) are washed out. */
 #define SECTOR_MIN_CONTRAST 20.0
 /* Most likely ids: the best and up to three one code zone away. */
 #define LIKELY_IDS 4
@@ -101,13 +102,14 @@ static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, do
     }
 }
 
-void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *img, int light,
-                        double *cx, double *cy, double *r, rl_match *m)
+void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *img,
+                        const rl_tone *tone, int light, double *cx, double *cy, double *r,
+                        rl_match *m)
 {
     rl_profile p;
     int ids[LIKELY_IDS], n;
     search_state st;
-    rl_polar_gather(img, *cx, *cy, *r, light, SECTOR_MIN_CONTRAST, pol);
+    rl_polar_gather(img, tone, *cx, *cy, *r, light, SECTOR_MIN_CONTRAST, pol);
     rl_polar_profile(pol, 0, 0, 1.0, &p);
     rl_match_all(tt, &p, m);
     if (m->id < 0)

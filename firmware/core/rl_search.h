@@ -16,7 +16,7 @@
  * runner-up.
  *
  *   rl_match m;
- *   rl_search_identify(&tt, pol, &img, light, &cx, &cy, &r, &m);
+ *   rl_search_identify(&tt, pol, &img, &tone, light, &cx, &cy, &r, &m);
  *   use(m.id, cx, cy, r);
  */
 #ifndef RL_SEARCH_H
@@ -34,7 +34,8 @@ extern const double rl_search_twin_scale[RL_SEARCH_TWIN_SCALES];
 /* Identify the candidate at (*cx, *cy, *r) with pol as scratch; the
  * centre and radius are updated to the best fit, the match of every id
  * there is in *m (m->id < 0: nothing matched). */
-void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *img, int light,
-                        double *cx, double *cy, double *r, rl_match *m);
+void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *img,
+                        const rl_tone *tone, int light, double *cx, double *cy, double *r,
+                        rl_match *m);
 
 #endif

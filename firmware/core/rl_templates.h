@@ -2,9 +2,13 @@
  * against (internal).
  *
  * For every id of the recognizer and every blur level, the landmark's mean
- * darkness (0 white .. 1 black) in each radial bin of a profile. Blurs are
- * Gaussian, as fractions of R, so defocus and motion blur match a blurred
- * template instead of reading as another code. The table is bin-major:
+ * darkness (0 white .. 1 black) in each radial bin of a profile. A blur
+ * level is a Gaussian (defocus) and a straight motion during the
+ * exposure, as fractions of R, so a blurred or moving landmark matches a
+ * blurred template instead of reading as another code. Motion smears a
+ * landmark along one direction only; a profile averages every direction,
+ * so the moving templates are that average too (the same for any
+ * direction of motion). The table is bin-major:
  * for each bin, the value of every (id, blur) column side by side, padded
  * to whole blocks of RL_MATCH_BLOCK columns, so the matcher walks the
  * profile once and updates a block of columns together.
@@ -21,8 +25,10 @@
 #include "rl_profile.h"
 #include "rl_workspace.h"
 
-/* Template blurs, as Gaussian sigma in units of R. */
-#define RL_BLUR_LEVELS 4
+/* Template blur levels (Gaussian sigma and motion, in units of R),
+ * ordered so that the last is the softest (rl_accept: the local pass
+ * takes none there). */
+#define RL_BLUR_LEVELS 7
 /* Columns scored together by the matcher (rl_match_kernel.h). */
 #define RL_MATCH_BLOCK 8
 

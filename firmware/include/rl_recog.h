@@ -76,6 +76,13 @@ typedef struct {
                              outer black band, which no blur or tone curve biases (a
                              survey's scale; some 2-8% more time); 0 (default): from its
                              outer edge (the pose does not use it) */
+    double gamma;         /* the camera's tone curve, grey = 255 (light / white)^(1 / gamma):
+                             2.2 for the sRGB-like output of most cameras (V4L2,
+                             libcamera, webcams), 1 for one that outputs linear light
+                             (machine-vision cameras with gamma off); 1 .. 3, or 0
+                             (default): learned from the landmarks, between 2.2 and 1.
+                             Blur and motion mix light, so identification reads light
+                             (the curve undone), never grey levels */
 } rl_recog_config;
 
 typedef struct {
@@ -116,6 +123,8 @@ typedef struct {
     rl_box lights[RL_MAX_LIGHTS];
     int local_tried;    /* DUCLRs the local pass retried */
     int local_found;    /* of those, identified */
+    double gamma;       /* the tone curve the frame was read through (rl_recog_config.gamma:
+                           the configured one, or the one learned) */
     rl_dropped dropped; /* what the limits left out (all 0 on ordinary frames) */
 } rl_result;
 

@@ -54,8 +54,19 @@ static rl_err auto_or(rl_yaml *y, yaml_node_t *cam, const char *key, const char 
     }
     return rl_yaml_double_in(y, cam, key, label, 0, lo, hi, out, err, errlen);
 }
+/* recognition.gamma: auto (0), or a tone curve's exponent 1 .. 3. */
+static rl_err gamma_key(rl_yaml *y, yaml_node_t *rec, double *out, char *err, size_t errlen)
+{
+    const char *t = rl_yaml_text(rl_yaml_get(y, rec, "gamma"));
+    if (t != NULL && strcmp(t, "auto") == 0) {
+        *out = 0;
+        return RL_OK;
+    }
+    return rl_yaml_double_in(y, rec, "gamma", "recognition.gamma", 0, 1.0, 3.0, out, err, errlen);
+}
+
 static const char *const serial_keys[] = {"device", "baud", NULL};
-static const char *const recognition_keys[] = {"local", "min_score", "local_min_score", NULL};
+static const char *const recognition_keys[] = {"local", "min_score", "local_min_score", "gamma", NULL};
 
 rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
 {
@@ -69,6 +80,7 @@ rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
     c->local = RL_LOCAL_ALWAYS;
     c->min_score = 0.80;
     c->local_min_score = 0.75;
+    c->gamma = 0; /* auto */
     c->log_interval = 5.0;
     c->record_every = 10;
     c->record_max_mb = 1000;
@@ -91,7 +103,7 @@ rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
     }
     if (rec != NULL && rec->type != YAML_MAPPING_NODE) {
         e = rl_yaml_fail(&y, rec, "recognition", RL_EFORMAT, err, errlen,
-                         "expected {local, min_score, local_min_score}");
+                         "expected {local, min_score, local_min_score, gamma}");
         goto out;
     }
     if ((e = rl_yaml_only(&y, root, NULL, top_keys, err, errlen)) != RL_OK ||
@@ -171,7 +183,8 @@ rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
             }
         }
         if ((e = score_key(&y, rec, "min_score", "recognition.min_score", &c->min_score, err, errlen)) != RL_OK ||
-            (e = score_key(&y, rec, "local_min_score", "recognition.local_min_score", &c->local_min_score, err, errlen)) != RL_OK)
+            (e = score_key(&y, rec, "local_min_score", "recognition.local_min_score", &c->local_min_score, err, errlen)) != RL_OK ||
+            (e = gamma_key(&y, rec, &c->gamma, err, errlen)) != RL_OK)
             goto out;
     }
 out:

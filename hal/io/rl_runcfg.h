@@ -21,6 +21,7 @@
  *     local: always          # always (default) | auto (the paper's) | never
  *     min_score: 0.80        # global pass
  *     local_min_score: 0.75  # local pass
+ *     gamma: auto            # the camera's tone curve: auto, 2.2 (sRGB), 1 (linear)
  *   log_interval: 5          # seconds between repeats of one kind of log line
  *   record:                  # optional: save frames while running
  *     dir: /var/lib/ringloc/drive
@@ -53,6 +54,7 @@ typedef struct {
     int baud_line;      /* line of serial.baud (0: not given), for the caller's check */
     rl_local_policy local;
     double min_score, local_min_score;
+    double gamma;          /* the camera's tone curve (rl_recog_config.gamma; 0: auto) */
     double log_interval;
     char record_dir[512];       /* "" : no recording */
     int record_every;           /* default 10 */

@@ -29,6 +29,8 @@
 #include "rl_mapfile.h"
 #include "rl_png.h"
 #include "rl_robotfile.h"
+#include "render_sensor.h"
+#include "rl_print.h"
 #include "render_tour.h"
 
 #define MAX_OBJ 512
@@ -59,8 +61,12 @@ typedef struct {
     double R[9];           /* camera (forward, left, up) to map, row-major */
     double roll, pitch;    /* the camera's tilt from vertical (its own x and y axes) */
     double motion, motion_dir; /* motion blur: camera travel during exposure, m */
+    double motion_turn;        /* motion blur: the camera's turn during exposure, rad */
     double halo_amp, halo_sigma;
-    double gain, vignette, blur, noise;
+    double gain, vignette;     /* exposure (1: the paper near the white point), vignetting */
+    render_sensor se;          /* optics' blur, sensor, tone curve */
+    double sheet_w, sheet_h;   /* the landmarks' sheet, m (0: as wide as the landmark, A4's ratio) */
+    double ceiling;            /* the ceiling's brightness, times the default tile's */
     double ink;                /* the landmarks' ink radiance (INK: black; more: grey) */
     double ramp, ramp_dir;     /* light falling off across the frame: fraction, direction */
     double shadow, shadow_at, shadow_dir; /* a shadow (a wall beside the ceiling): depth, edge, side */
@@ -113,7 +119,7 @@ static double vnoise(double x, double y)
 static apriltag_family_t *tagfam;
 static image_u8_t *tag_images[32];
 
-static double tile_radiance(const scene *s, double X, double Y)
+static double tile_pattern(const scene *s, double X, double Y)
 {
     double u = (X - s->tile_px) / s->tile, v = (Y - s->tile_py) / s->tile;
     double fu = (u - floor(u)) * s->tile, fv = (v - floor(v)) * s->tile;
@@ -126,6 +132,12 @@ static double tile_radiance(const scene *s, double X, double Y)
     /* fissured mineral tile: fine noise and a few darker pits */
     return TILE + 0.05 * (vnoise(X * 90, Y * 90) - 0.5) + 0.03 * (vnoise(X * 20, Y * 20) - 0.5) -
            (vnoise(X * 300, Y * 300) > 0.93 ? 0.15 : 0.0);
+}
+
+/* The ceiling as bright as the scene says (darker or lighter than paper). */
+static double tile_radiance(const scene *s, double X, double Y)
+{
+    return s->ceiling * tile_pattern(s, X, Y);
 }
 
 /* Radiance of an object at local coordinates (lx, ly), or -1 if outside. */
@@ -304,40 +316,6 @@ static int build_rays(const rl_camera *cam)
     return 0;
 }
 
-static void gauss_blur(double *img, int W, int H, double sigma)
-{
-    int rad = (int)ceil(3 * sigma), x, y, k;
-    double *k1, *tmp, sum = 0;
-    if (sigma <= 0.05)
-        return;
-    k1 = malloc(sizeof(double) * (2 * rad + 1));
-    tmp = malloc(sizeof(double) * (size_t)W * H);
-    for (k = -rad; k <= rad; k++)
-        sum += k1[k + rad] = exp(-0.5 * k * k / (sigma * sigma));
-    for (k = 0; k <= 2 * rad; k++)
-        k1[k] /= sum;
-    for (y = 0; y < H; y++)
-        for (x = 0; x < W; x++) {
-            double acc = 0;
-            for (k = -rad; k <= rad; k++) {
-                int xx = x + k < 0 ? 0 : x + k >= W ? W - 1 : x + k;
-                acc += k1[k + rad] * img[(size_t)y * W + xx];
-            }
-            tmp[(size_t)y * W + x] = acc;
-        }
-    for (y = 0; y < H; y++)
-        for (x = 0; x < W; x++) {
-            double acc = 0;
-            for (k = -rad; k <= rad; k++) {
-                int yy = y + k < 0 ? 0 : y + k >= H ? H - 1 : y + k;
-                acc += k1[k + rad] * tmp[(size_t)yy * W + x];
-            }
-            img[(size_t)y * W + x] = acc;
-        }
-    free(k1);
-    free(tmp);
-}
-
 /* Light across the frame at normalized image offset (du, dv) from the
  * centre: a linear fall-off, and a soft-edged shadow on one side. */
 static double illumination(const scene *s, double du, double dv)
@@ -415,12 +393,16 @@ static int build_grid(const scene *s, obj_grid *g)
     return 0;
 }
 
+static double rng_normal(void) { return nrand(); }
+static double rng_uniform(void) { return urand(0, 1); }
+
 static int render(const scene *s, uint8_t *out)
 {
-    int W = s->cam.width, H = s->cam.height, x, y, a, b;
+    int W = s->cam.width, H = s->cam.height, x, y, a, b, e;
     double *lin = malloc(sizeof(double) * (size_t)W * H);
     double rmax = sqrt(s->cam.cx * s->cam.cx + s->cam.cy * s->cam.cy);
     static obj_grid grid;
+    render_rng rng = {rng_normal, rng_uniform};
     if (!lin || build_rays(&s->cam) != 0 || build_grid(s, &grid) != 0)
         return -1;
     for (y = 0; y < H; y++)
@@ -429,9 +411,11 @@ static int render(const scene *s, uint8_t *out)
             for (b = 0; b < SUB; b++)
                 for (a = 0; a < SUB; a++) {
                     const double *r = ray_table + 2 * ((((size_t)y * W + x) * SUB + b) * SUB + a);
-                    /* motion blur: each subsample at its own instant */
+                    /* motion blur: each subsample at its own instant, the
+                     * camera moved and turned (about its axis) by then */
                     double t = (b * SUB + a + 0.5) / (SUB * SUB) - 0.5, X, Y;
-                    ray_to_map(s, r[0], r[1], t * s->motion * cos(s->motion_dir),
+                    double c = cos(t * s->motion_turn), sn = sin(t * s->motion_turn);
+                    ray_to_map(s, c * r[0] - sn * r[1], sn * r[0] + c * r[1], t * s->motion * cos(s->motion_dir),
                                t * s->motion * sin(s->motion_dir), &X, &Y);
                     acc += radiance(s, &grid, X, Y);
                 }
@@ -440,26 +424,32 @@ static int render(const scene *s, uint8_t *out)
             acc *= illumination(s, du / rmax, dv / rmax);
             lin[(size_t)y * W + x] = acc * s->gain;
         }
-    /* tone curve first (the sensor clips), then optics blur, then noise */
-    for (x = 0; x < W * H; x++)
-        lin[x] = 255.0 * pow(fmin(1.0, fmax(0.0, lin[x])), 1 / 2.2);
-    gauss_blur(lin, W, H, s->blur);
-    for (x = 0; x < W * H; x++) {
-        double v = lin[x] + (s->noise > 0 ? s->noise * nrand() : 0);
-        out[x] = (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v + 0.5);
-    }
+    e = render_sensor_develop(&s->se, lin, W, H, &rng, out);
     free(lin);
     free(grid.idx);
-    return 0;
+    return e;
 }
 
 /* ---- scenes ---- */
 
+/* (the kinds' numbers seed the frames: new ones go at the end) */
 typedef enum { SET_CLEAN, SET_CLUTTERED, SET_GLARE, SET_BORDER, SET_CLUTTER_ONLY, SET_DIM,
-               SET_BLUR, SET_MOTION, SET_ILLUM, SET_DEGRADED, SET_LENS, SET_PATH } set_kind;
+               SET_BLUR, SET_MOTION, SET_ILLUM, SET_DEGRADED, SET_LENS, SET_PATH, SET_MOVING,
+               SET_HELDOUT, SET_REPEATS, SET_COUNT } set_kind;
 
-static const char *set_names[] = {"clean", "cluttered", "glare", "border", "clutter_only",
-                                  "dim", "blur", "motion", "illum", "degraded", "lens", "path"};
+static const char *set_names[SET_COUNT] = {"clean", "cluttered", "glare", "border", "clutter_only",
+                                           "dim", "blur", "motion", "illum", "degraded", "lens", "path",
+                                           "moving", "heldout", "repeats"};
+
+/* The set called name (a drive's "path" is none), or -1. */
+static int set_by_name(const char *name)
+{
+    int i;
+    for (i = 0; i < SET_COUNT; i++)
+        if (i != SET_PATH && strcmp(name, set_names[i]) == 0)
+            return i;
+    return -1;
+}
 
 static int add_obj(scene *s, obj_kind k, double x, double y, double rot, double a, double b, int id)
 {
@@ -474,8 +464,13 @@ static int add_obj(scene *s, obj_kind k, double x, double y, double rot, double 
 static void add_landmark(scene *s, double x, double y, int id)
 {
     double R = s->diameter / 2, rot = urand(-0.15, 0.15) + (rng_next() & 1 ? M_PI / 2 : 0);
-    /* printed on a sheet (A4 proportions), rotated as taped */
-    add_obj(s, OBJ_PAPER, x, y, rot, R * (s->twin ? 1.25 : 1.0), R * 1.414 * (s->twin ? 1.25 : 1.0), 0);
+    double a = R, b = R * 1.414;
+    if (s->sheet_w > 0) { /* a paper size, the landmark in its middle */
+        a = 0.5 * s->sheet_w;
+        b = 0.5 * s->sheet_h;
+    }
+    /* printed on a sheet, rotated as taped */
+    add_obj(s, OBJ_PAPER, x, y, rot, a, b, 0);
     add_obj(s, OBJ_LANDMARK, x, y, s->twin ? rot : 0, R, R, id);
 }
 
@@ -621,9 +616,13 @@ static void random_scene(scene *s, set_kind kind)
             }
             if (p < 0.55 && d < view + s->diameter && npool > 0) {
                 int pick = (int)(rng_next() % (unsigned)npool), id = pool[pick];
-                pool[pick] = pool[--npool];
+                if (kind != SET_REPEATS)
+                    pool[pick] = pool[--npool];
+                else if (npool > 4)
+                    npool = 4; /* four ids: a frame holds each two or three times */
                 add_landmark(s, x + urand(-0.04, 0.04), y + urand(-0.04, 0.04), id);
-                if (kind == SET_GLARE && urand(0, 1) < 0.6) {
+                if ((kind == SET_GLARE && urand(0, 1) < 0.6) ||
+                    ((kind == SET_MOVING || kind == SET_HELDOUT) && urand(0, 1) < 0.25)) {
                     /* a light 2 to 6 cm from the landmark's edge, on one side */
                     object *lm = &s->obj[s->n - 1];
                     double gap = urand(0.02, 0.06), hw = 0.29, side = (double)(rng_next() % 4);
@@ -635,7 +634,8 @@ static void random_scene(scene *s, set_kind kind)
             } else if (p < 0.65 && kind != SET_CLEAN) {
                 add_obj(s, OBJ_LIGHT, x, y, 0, 0.29, 0.29, 0);
             } else if (p < 0.85 && (kind == SET_CLUTTERED || kind == SET_BORDER || kind == SET_DIM ||
-                                    kind == SET_ILLUM || kind == SET_DEGRADED || kind == SET_LENS)) {
+                                    kind == SET_ILLUM || kind == SET_DEGRADED || kind == SET_LENS ||
+                                    kind == SET_MOVING || kind == SET_HELDOUT)) {
                 add_clutter(s, x + urand(-0.12, 0.12), y + urand(-0.12, 0.12), p < 0.72);
             }
         }
@@ -653,25 +653,78 @@ static void random_scene(scene *s, set_kind kind)
     }
 }
 
+/* The scene's sheets: paper `name` (a paper rl_paper_find knows). */
+static void use_sheet(scene *s, const char *name)
+{
+    const rl_paper *p = rl_paper_find(name);
+    s->sheet_w = p->w_mm / 1000.0;
+    s->sheet_h = p->h_mm / 1000.0;
+}
+
+/* A robot moving in dim light, the development set: blur on the light,
+ * motion of any direction and a turn, short exposures on sensors of
+ * several sizes, sheets of every paper on ceilings darker and lighter
+ * than the paper. */
+static void moving_effects(scene *s)
+{
+    static const char *papers[] = {"letter", "a4", "a3"};
+    int k = (int)(rng_next() % 4);
+    s->se.blur = urand(0.6, 1.4);
+    s->motion = urand(1.0, 6.0) / s->cam.fx * s->distance;
+    s->motion_dir = urand(0, 2 * M_PI);
+    s->motion_turn = urand(-0.015, 0.015);
+    s->gain = urand(0.25, 0.7);
+    s->se.full_well = urand(2500, 9000);
+    s->se.read_noise = urand(1.5, 4.0);
+    s->vignette = urand(0.1, 0.4);
+    s->ceiling = urand(0.55, 1.3);
+    if (k < 3)
+        use_sheet(s, papers[k]);
+}
+
+/* The set nothing is tuned on: another optics (a defocus disk), another
+ * tone curve (sRGB), 12-bit raw values, the paper's letter sheets (3 mm
+ * beside a 0.21 m landmark). Its figures are read, never worked towards. */
+static void heldout_effects(scene *s)
+{
+    s->se.tone = RENDER_TONE_SRGB;
+    s->se.adc_bits = 12;
+    s->se.blur = urand(0.3, 0.8);
+    s->se.defocus = urand(0.5, 1.3);
+    s->motion = urand(2.0, 6.0) / s->cam.fx * s->distance;
+    s->motion_dir = urand(0, 2 * M_PI);
+    s->motion_turn = urand(-0.015, 0.015);
+    s->gain = urand(0.3, 0.5);
+    s->se.full_well = urand(3000, 6000);
+    s->se.read_noise = urand(2.0, 4.0);
+    s->vignette = urand(0.2, 0.45);
+    s->ceiling = urand(0.6, 1.25);
+    use_sheet(s, "letter");
+}
+
 static void effects(scene *s, set_kind kind)
 {
     s->gain = 1.0;
     s->vignette = 0.15;
-    s->blur = 0.5;
-    s->noise = 1.5;
+    render_sensor_defaults(&s->se);
+    s->se.blur = 0.5;
+    s->se.read_noise = 1.5;
     s->motion = 0;
+    s->motion_turn = 0;
+    s->sheet_w = s->sheet_h = 0;
+    s->ceiling = 1.0;
     s->halo_amp = urand(0.3, 0.7);
     s->halo_sigma = urand(0.03, 0.07);
     s->ink = INK;
     s->ramp = s->shadow = 0;
     switch (kind) {
-    case SET_CLEAN: s->vignette = 0.1; s->noise = 1.0; break;
-    case SET_CLUTTERED: s->vignette = urand(0.1, 0.4); s->blur = urand(0.4, 1.0); s->noise = urand(1, 3); s->gain = urand(0.7, 1.1); break;
+    case SET_CLEAN: s->vignette = 0.1; s->se.read_noise = 1.0; break;
+    case SET_CLUTTERED: s->vignette = urand(0.1, 0.4); s->se.blur = urand(0.4, 1.0); s->se.read_noise = urand(1, 3); s->gain = urand(0.7, 1.1); break;
     case SET_GLARE: s->halo_amp = urand(0.5, 0.9); s->halo_sigma = urand(0.04, 0.07); break;
     case SET_BORDER: s->vignette = 0.3; break;
-    case SET_CLUTTER_ONLY: s->blur = urand(0.4, 1.0); s->noise = 2; break;
-    case SET_DIM: s->gain = urand(0.25, 0.4); s->noise = 2.5; s->vignette = 0.35; break;
-    case SET_BLUR: s->blur = urand(1.2, 1.8); break;
+    case SET_CLUTTER_ONLY: s->se.blur = urand(0.4, 1.0); s->se.read_noise = 2; break;
+    case SET_DIM: s->gain = urand(0.25, 0.4); s->se.read_noise = 2.5; s->vignette = 0.35; break;
+    case SET_BLUR: s->se.blur = urand(1.2, 1.8); break;
     case SET_MOTION: s->motion = urand(0.015, 0.03); s->motion_dir = urand(0, 2 * M_PI); break;
     case SET_ILLUM:
         /* what real ceilings do to a frame: lens vignetting as strong as a
@@ -684,16 +737,25 @@ static void effects(scene *s, set_kind kind)
         s->shadow_at = urand(0.4, 0.8);
         s->shadow_dir = urand(0, 2 * M_PI);
         s->ink = urand(0.06, 0.2);
-        s->blur = urand(0.5, 1.0);
-        s->noise = urand(1.5, 3);
+        s->se.blur = urand(0.5, 1.0);
+        s->se.read_noise = urand(1.5, 3);
         break;
     case SET_DEGRADED:
-        /* blur 1.1 px, 4 px of motion, 0.35 of the exposure, read noise 3 DN */
-        s->blur = 1.1;
+        /* blur 1.1 px, 4 px of motion, 0.35 of the exposure on a sensor:
+         * photon noise (4,500 e- at the white point) and read noise 3 DN
+         * before the tone curve */
+            s->se.blur = 1.1;
         s->motion = 4.0 / s->cam.fx * s->distance;
         s->motion_dir = urand(0, 2 * M_PI);
         s->gain = 0.35;
-        s->noise = 3.0;
+        s->se.full_well = 4500;
+        s->se.read_noise = 3.0;
+        break;
+    case SET_MOVING:
+        moving_effects(s);
+        break;
+    case SET_HELDOUT:
+        heldout_effects(s);
         break;
     case SET_LENS:
         /* a wide-angle M12 lens (3.6 mm class) as on the real photos:
@@ -703,10 +765,12 @@ static void effects(scene *s, set_kind kind)
         s->cam.k[0] = -0.22;
         s->cam.k[1] = 0.04;
         s->vignette = urand(0.35, 0.55);
-        s->blur = urand(0.5, 0.9);
-        s->noise = urand(1.5, 2.5);
+        s->se.blur = urand(0.5, 0.9);
+        s->se.read_noise = urand(1.5, 2.5);
         break;
-    case SET_PATH: break;
+    case SET_REPEATS: s->vignette = urand(0.1, 0.3); break;
+    case SET_PATH:
+    case SET_COUNT: break;
     }
 }
 
@@ -796,7 +860,12 @@ static int write_truth(const char *path, const char *image, const scene *s, doub
     if (n == 0)
         fprintf(f, "  []\n");
     fprintf(f, "effects: {gain: %.3f, vignette: %.3f, blur: %.3f, noise: %.3f, motion: %.4f, halo: %.3f}\n",
-            s->gain, s->vignette, s->blur, s->noise, s->motion, s->halo_amp);
+            s->gain, s->vignette, s->se.blur, s->se.read_noise, s->motion, s->halo_amp);
+    fprintf(f, "sensor: {full_well: %.0f, defocus: %.2f, tone: %s, adc_bits: %d, motion_px: %.2f, "
+            "motion_turn: %.4f}\n",
+            s->se.full_well, s->se.defocus, s->se.tone == RENDER_TONE_SRGB ? "srgb" : "gamma2.2",
+            s->se.adc_bits, s->motion / s->distance * s->cam.fx, s->motion_turn);
+    fprintf(f, "sheet: {width: %.4f, height: %.4f, ceiling: %.3f}\n", s->sheet_w, s->sheet_h, s->ceiling);
     return fclose(f);
 }
 
@@ -807,13 +876,19 @@ static const char *help =
     "                      [--seed S] [--size 640x480] [--camera CAM.yaml] [--twin]\n"
     "                      [--mount X,Y,YAW] [--write-map FILE] [--write-camera FILE]\n"
     "                      [--write-robot FILE] [--rock SIGMA] [--site grid|irregular]\n"
-    "                      [--move ID,DX,DY]\n\n"
+    "                      [--move ID,DX,DY] [--look SET] [--sheet PAPER]\n\n"
     "Render ceiling fixtures with ground truth (NAME_NNN.png + NAME_NNN.yaml).\n"
     "  --set NAME      clean, cluttered, glare, border, clutter_only, dim, blur, motion,\n"
     "                  illum (vignetting, fall-off, a shadow, grey ink), degraded (blur\n"
     "                  1.1 px, 4 px motion, 0.35 exposure, 3 DN noise), lens (a wide-angle\n"
     "                  lens's barrel distortion, k1 -0.22: landmarks at the border as\n"
-    "                  ellipses; replaces the camera's distortion):\n"
+    "                  ellipses; replaces the camera's distortion), moving (a robot\n"
+    "                  moving in dim light: blur, motion of any direction and a turn,\n"
+    "                  photon and read noise, sheets of every paper on ceilings darker\n"
+    "                  and lighter than paper), heldout (the same kind of frames by\n"
+    "                  other optics, tone curve and raw depth, letter sheets: nothing\n"
+    "                  is tuned on it), repeats (four ids, each two or three times a\n"
+    "                  frame):\n"
     "                  random scenes around the paper's set-up (ring5, 0.21 m landmarks,\n"
     "                  1.87 m from camera to ceiling, 0.61 m tiles)\n"
     "  --path KIND     straight, rect, circle or survey (back and forth over the whole\n"
@@ -831,6 +906,9 @@ static const char *help =
     "                  default 0,0,0,0,0)\n"
     "  --rock SIGMA    the robot rocks: a random tilt per frame and axis (radians)\n"
     "  --look SET      with --path: the frames look as that set's do (degraded, dim, ...)\n"
+    "  --sheet PAPER   the landmarks' sheets: letter, a4, a3, tabloid or WxH in mm\n"
+    "                  (default: as wide as the landmark, A4's proportions; the\n"
+    "                  moving set draws letter, A4, A3 or that, heldout letter)\n"
     "  --site-map FILE a large site's map (ringloc plan --area; any size, ids repeated):\n"
     "                  frames under it with --path random (poses uniform over the\n"
     "                  landmarks' extent, any heading) or --path tour (a drive over the\n"
@@ -923,6 +1001,7 @@ int main(int argc, char **argv)
         {"write-robot", required_argument, 0, 'R'}, {"rock", required_argument, 0, 'r'},
         {"look", required_argument, 0, 'l'}, {"site", required_argument, 0, 'G'},
         {"move", required_argument, 0, 'V'}, {"site-map", required_argument, 0, 'E'},
+        {"sheet", required_argument, 0, 'P'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     const char *look = NULL;
     set_kind look_kind = SET_PATH;
@@ -932,6 +1011,7 @@ int main(int argc, char **argv)
     unsigned long seed = 1;
     double mx = 0, my = 0, myaw = 0, mroll = 0, mpitch = 0, rock = 0, mdx = 0, mdy = 0;
     int irregular = 0, move_id = 0;
+    rl_paper sheet = {NULL, 0, 0};
     const char *site_path = NULL;
     render_pose *poses = NULL;
     static scene s;
@@ -984,6 +1064,12 @@ int main(int argc, char **argv)
             }
             break;
         case 'E': site_path = optarg; break;
+        case 'P':
+            if (!rl_paper_parse(optarg, &sheet)) {
+                fprintf(stderr, "ringloc-render: --sheet: '%s' is not %s or WxH in mm\n", optarg, rl_paper_names());
+                return 2;
+            }
+            break;
         case 'M': map_out = optarg; break;
         case 'C': cam_out = optarg; break;
         case 'R': robot_out = optarg; break;
@@ -1088,10 +1174,7 @@ int main(int argc, char **argv)
         return 2;
     }
     if (set) {
-        for (i = 0; i < (int)(sizeof set_names / sizeof set_names[0]) - 1; i++)
-            if (strcmp(set, set_names[i]) == 0)
-                break;
-        if (i == (int)(sizeof set_names / sizeof set_names[0]) - 1) {
+        if ((i = set_by_name(set)) < 0) {
             fprintf(stderr, "ringloc-render: --set: unknown set '%s'\n", set);
             return 2;
         }
@@ -1102,10 +1185,7 @@ int main(int argc, char **argv)
         if (look != NULL) {
             /* a path drive with the looks of a set (not lens: that changes
              * the camera the calibration was written for) */
-            for (i = 0; i < (int)(sizeof set_names / sizeof set_names[0]) - 1; i++)
-                if (strcmp(look, set_names[i]) == 0)
-                    break;
-            if (i == (int)(sizeof set_names / sizeof set_names[0]) - 1 || (set_kind)i == SET_LENS) {
+            if ((i = set_by_name(look)) < 0 || (set_kind)i == SET_LENS) {
                 fprintf(stderr, "ringloc-render: --look: '%s' is not a set's look (lens excepted)\n", look);
                 return 2;
             }
@@ -1154,6 +1234,10 @@ int main(int argc, char **argv)
         s.n = 0;
         s.twin = 0;
         effects(&s, kind == SET_PATH ? look_kind : kind);
+        if (sheet.name != NULL) {
+            s.sheet_w = sheet.w_mm / 1000.0;
+            s.sheet_h = sheet.h_mm / 1000.0;
+        }
         if (poses) {
             rx = poses[k].x;
             ry = poses[k].y;

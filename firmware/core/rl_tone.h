@@ -1,0 +1,46 @@
+/* rl_tone: the camera's tone curve, undone for identification (internal).
+ *
+ * A camera's grey level is not proportional to light: sensors count
+ * light, and the camera maps it to grey through a tone curve (sRGB-like,
+ * g = 255 (E / E_white)^(1 / gamma) with gamma near 2.2) that lifts the
+ * dark end. Blur and motion mix light, not grey levels, so in grey levels
+ * a blurred edge is no longer the symmetric step the templates hold: dark
+ * zones shrink and white ones swell by about a pixel at a robot's blur,
+ * which reads a landmark's radius short and turns a black first code zone
+ * into a white one (its zone twin). Identification therefore works on
+ * light: every grey level it reads goes through these tables first, in
+ * RL_TONE_MAX steps (a landmark in a dark corner still spans many). The
+ * regions (thresholds, labels) are found on grey levels: an increasing
+ * map keeps their order, and their thresholds are placed halfway in light.
+ *
+ *   rl_tone t;
+ *   rl_tone_init(&t, 2.2);     // t.light[128] == 224.5, t.dark[128] == 798
+ *   double span = rl_tone_light(&t, 180.0) - rl_tone_light(&t, 40.0);
+ */
+#ifndef RL_TONE_H
+#define RL_TONE_H
+
+#include <stdint.h>
+
+/* Light of the white point (grey 255). */
+#define RL_TONE_MAX 1023
+
+typedef struct {
+    float light[256];   /* light of each grey level, 0 .. RL_TONE_MAX */
+    uint16_t dark[256]; /* RL_TONE_MAX - light, rounded: the darkness profiles sum */
+} rl_tone;
+
+/* The tables for a tone curve of exponent gamma (1: a linear camera). */
+void rl_tone_init(rl_tone *t, double gamma);
+
+/* Light of a grey level between the table's entries (linear in between);
+ * levels outside 0 .. 255 are clamped. */
+double rl_tone_light(const rl_tone *t, double grey);
+
+/* The grey level where light is halfway between that of grey levels g0
+ * and g1: the threshold that splits a blurred edge between them where a
+ * symmetric blur leaves the printed edge (pixels below it are the darker
+ * side). */
+int rl_tone_midway(const rl_tone *t, double g0, double g1);
+
+#endif

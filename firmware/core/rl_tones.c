@@ -1,0 +1,63 @@
+#include "rl_tones.h"
+
+#include <math.h>
+
+/* Votes of past frames fade by this much a frame: a change of camera
+ * settings is followed within some twenty frames. */
+#define VOTE_FADE 0.9
+
+void rl_tones_init(rl_tones *ts, double gamma)
+{
+    int k;
+    ts->n = gamma > 0 ? 1 : 2;
+    ts->gamma[0] = gamma > 0 ? gamma : 2.2; /* cameras for robots mostly speak sRGB */
+    ts->gamma[1] = 1.0;
+    for (k = 0; k < ts->n; k++) {
+        rl_tone_init(&ts->tone[k], ts->gamma[k]);
+        ts->votes[k] = 0;
+    }
+    ts->current = 0;
+    ts->frames = 0;
+}
+
+static int settled(const rl_tones *ts)
+{
+    return ts->n < 2 || fabs(ts->votes[0] - ts->votes[1]) >= RL_TONES_SETTLE;
+}
+
+int rl_tones_to_try(const rl_tones *ts, int *which)
+{
+    which[0] = ts->current;
+    if (ts->n < 2 || (settled(ts) && ts->frames % RL_TONES_RECHECK != 0))
+        return 1;
+    which[1] = 1 - ts->current;
+    return 2;
+}
+
+int rl_tones_vote(rl_tones *ts, const int *which, int n, const int *identified, const double *score)
+{
+    int k, best = 0;
+    ts->frames++;
+    if (n < 2)
+        return 0;
+    for (k = 1; k < n; k++)
+        if (identified[k] > identified[best] || (identified[k] == identified[best] && score[k] > score[best]))
+            best = k;
+    if (identified[best] == 0)
+        return 0; /* nothing to learn from: the current curve stays */
+    for (k = 0; k < ts->n; k++)
+        ts->votes[k] *= VOTE_FADE;
+    ts->votes[which[best]] += 1.0;
+    ts->current = ts->votes[0] >= ts->votes[1] ? 0 : 1;
+    return best;
+}
+
+const rl_tone *rl_tones_current(const rl_tones *ts)
+{
+    return &ts->tone[ts->current];
+}
+
+double rl_tones_gamma(const rl_tones *ts)
+{
+    return ts->gamma[ts->current];
+}

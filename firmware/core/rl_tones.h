@@ -1,0 +1,58 @@
+/* rl_tones: the tone curve a frame is read through: the configured one,
+ * or, when the configuration leaves it open (gamma 0, the default), the
+ * one the landmarks read best through, learned frame by frame (internal).
+ *
+ * Cameras differ: the sRGB-like output of V4L2, libcamera and webcams
+ * (gamma near 2.2) and the linear output of machine-vision cameras with
+ * gamma off (1). Read through the wrong curve, blurred zones swell or
+ * shrink and a few landmarks pass for their zone twins, so the curve is
+ * not guessed: while unsettled, each frame's candidates are read through
+ * both and the curve that identifies more of them (then with the higher
+ * scores) is the frame's, and earns a vote. Once one curve leads by
+ * RL_TONES_SETTLE votes only it is read, and both again every
+ * RL_TONES_RECHECK frames (a camera's settings can change).
+ *
+ *   rl_tones ts;
+ *   int which[RL_TONES_MAX], n = 0, k;
+ *   rl_tones_init(&ts, 0.0);                  // auto
+ *   n = rl_tones_to_try(&ts, which);           // 2 at first
+ *   for (k = 0; k < n; k++)
+ *       use(&ts.tone[which[k]]);               // read the frame's candidates
+ *   rl_tones_vote(&ts, which, n, (int[]){5, 3}, (double[]){4.6, 2.7});
+ *   use(rl_tones_current(&ts), rl_tones_gamma(&ts));
+ */
+#ifndef RL_TONES_H
+#define RL_TONES_H
+
+#include "rl_tone.h"
+
+#define RL_TONES_MAX 2
+#define RL_TONES_SETTLE 6.0
+#define RL_TONES_RECHECK 16
+
+typedef struct {
+    rl_tone tone[RL_TONES_MAX];
+    double gamma[RL_TONES_MAX];
+    double votes[RL_TONES_MAX];
+    int n;        /* curves to choose from: 1 when configured */
+    int current;  /* the curve frames are read through now */
+    unsigned frames;
+} rl_tones;
+
+/* gamma 1 .. 3: that curve only; 0: choose between 1 and 2.2. */
+void rl_tones_init(rl_tones *ts, double gamma);
+
+/* The curves to read this frame through (indices into ts->tone, the
+ * current one first), their count. */
+int rl_tones_to_try(const rl_tones *ts, int *which);
+
+/* After a frame read through the n curves of which[]: identified[k]
+ * landmarks with scores summing to score[k] through which[k]. The better
+ * becomes current, with a vote (and the votes of past frames fade); its
+ * index into which[] is returned. */
+int rl_tones_vote(rl_tones *ts, const int *which, int n, const int *identified, const double *score);
+
+const rl_tone *rl_tones_current(const rl_tones *ts);
+double rl_tones_gamma(const rl_tones *ts);
+
+#endif
