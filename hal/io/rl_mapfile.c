@@ -3,6 +3,7 @@
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include "rl_outfile.h"
 #include "rl_yaml.h"
 
 static const char *const top_keys[] = {"family", "diameter", "ceiling_height", "landmarks", NULL};
@@ -135,18 +136,15 @@ void rl_mapfile_put_landmark(FILE *f, const rl_map_landmark *lm)
 
 rl_err rl_mapfile_save(const char *path, const rl_map *map, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "w");
+    rl_outfile o;
+    FILE *f;
+    rl_err e;
     int i;
-    if (f == NULL) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        return RL_EIO;
-    }
+    if ((e = rl_outfile_open(&o, path, err, errlen)) != RL_OK)
+        return e;
+    f = o.f;
     rl_mapfile_put_header(f, &map->family, map->diameter, map->ceiling_height);
     for (i = 0; i < map->count; i++)
         rl_mapfile_put_landmark(f, &map->lm[i]);
-    if (ferror(f) | (fclose(f) != 0)) {
-        snprintf(err, errlen, "%s: write failed", path);
-        return RL_EIO;
-    }
-    return RL_OK;
+    return rl_outfile_commit(&o, err, errlen);
 }
