@@ -181,16 +181,16 @@ cfg - 0 | sed "s|device: $T/frames.txt|device: $T/rec_list.txt|" >"$T/norec.yaml
 "$R" run --config "$T/norec.yaml" >"$T/norec.bin" 2>/dev/null
 { cat "$T/norec.yaml"; printf 'record: {dir: rec, every: 3}\n'; } >"$T/rec.yaml"
 "$R" run --config "$T/rec.yaml" >"$T/rec.bin" 2>"$T/rec.err"; rc=$?
-n=$(ls "$T/rec"/frame_*.png 2>/dev/null | wc -l)
-"$R" detect "$T/rec/frame_0000003.png" | sed 's/.*"landmarks"/"landmarks"/; s/"elapsed_us": [0-9.]*//' >"$T/rec_det.txt"
+n=$(ls "$T/rec/drive_001"/frame_*.png 2>/dev/null | wc -l)
+"$R" detect "$T/rec/drive_001/frame_0000003.png" | sed 's/.*"landmarks"/"landmarks"/; s/"elapsed_us": [0-9.]*//' >"$T/rec_det.txt"
 "$R" detect "$(sed -n 4p "$T/rec_list.txt")" | sed 's/.*"landmarks"/"landmarks"/; s/"elapsed_us": [0-9.]*//' >"$T/orig_det.txt"
-[ $rc = 0 ] && [ "$n" = 4 ] && [ "$(wc -l <"$T/rec/frames.txt")" = 4 ] && grep -q "recorded 4 frames" "$T/rec.err" &&
+[ $rc = 0 ] && [ "$n" = 4 ] && [ "$(wc -l <"$T/rec/drive_001/frames.txt")" = 4 ] && grep -q "recorded 4 frames" "$T/rec.err" &&
     grep -q ": 12 frames, 12 poses" "$T/rec.err" && cmp -s "$T/rec_det.txt" "$T/orig_det.txt" &&
     [ "$(wc -c <"$T/rec.bin")" = "$(wc -c <"$T/norec.bin")" ] && ok ||
     bad "recording: rc $rc, $n frames: $(tail -2 "$T/rec.err")"
 { cat "$T/norec.yaml"; printf 'record: {dir: rec_small, every: 1, max_mb: 0.1}\n'; } >"$T/rec_small.yaml"
 "$R" run --config "$T/rec_small.yaml" >/dev/null 2>"$T/rec_small.err"; rc=$?
-n=$(ls "$T/rec_small"/frame_*.png 2>/dev/null | wc -l)
+n=$(ls "$T/rec_small/drive_001"/frame_*.png 2>/dev/null | wc -l)
 [ $rc = 0 ] && [ "$n" -ge 1 ] && [ "$n" -lt 12 ] && grep -q "max_mb; recording stopped" "$T/rec_small.err" &&
     grep -q ": 12 frames, 12 poses" "$T/rec_small.err" && ok || bad "max_mb: rc $rc, $n frames: $(tail -1 "$T/rec_small.err")"
 "$R" run --config "$T/norec.yaml" --record /proc/ringloc_rec 2>"$T/rec_bad.err"; rc=$?
