@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 #include <strings.h>
 #include <unistd.h>
+#include "rl_infile.h"
 #include "rl_outfile.h"
 
 /* libpng reports through callbacks and longjmp; this carries the message
@@ -143,15 +144,10 @@ static void to_grey(const uint8_t *s, int channels, png_uint_32 w, uint8_t *d)
 static rl_err open_png(png_reader *r, const char *path, png_uint_32 *w, png_uint_32 *h, char *err,
                        size_t errlen)
 {
-    struct stat st;
     char what[220];
-    do
-        r->fd = open(path, O_RDONLY | O_CLOEXEC);
-    while (r->fd < 0 && errno == EINTR);
-    if (r->fd < 0)
-        return fail(err, errlen, errno == ENOENT ? RL_ENOTFOUND : RL_EIO, path, strerror(errno));
-    if (fstat(r->fd, &st) == 0 && S_ISDIR(st.st_mode))
-        return fail(err, errlen, RL_EFORMAT, path, "a folder, not a PNG image");
+    rl_err e;
+    if ((r->fd = rl_infile_open(path, "a PNG image", &e, err, errlen)) < 0)
+        return e;
     r->pos = r->len = 0;
     while (r->len < 24) {
         ssize_t got = read(r->fd, r->buf + r->len, 24 - r->len);

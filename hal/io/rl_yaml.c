@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "rl_infile.h"
 
 /* Largest configuration file read; ringloc's files are a few kB. */
 #define RL_YAML_MAX_BYTES (4L << 20)
@@ -78,10 +79,10 @@ rl_err rl_yaml_load(rl_yaml *y, const char *path, char *err, size_t errlen)
     int ok;
     memset(y, 0, sizeof *y);
     y->path = path;
-    f = fopen(path, "rb");
-    if (f == NULL) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        return errno == ENOENT ? RL_ENOTFOUND : RL_EIO;
+    {
+        rl_err e;
+        if ((f = rl_infile_fopen(path, "a YAML file", &e, err, errlen)) == NULL)
+            return e;
     }
     text = (char *)malloc(RL_YAML_MAX_BYTES + 1);
     if (text == NULL) {
