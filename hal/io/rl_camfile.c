@@ -44,7 +44,7 @@ static rl_err read_matrix(rl_yaml *y, yaml_node_t *root, const char *key, double
     }
     for (i = 0; i < n; i++) {
         yaml_node_t *it = rl_yaml_item(y, data, i);
-        if (!rl_yaml_parse_double(rl_yaml_text(it), &vals[i])) {
+        if (!rl_yaml_parse_double(rl_yaml_number_text(it), &vals[i])) {
             snprintf(label, sizeof label, "%s.data[%d]", key, i);
             return rl_yaml_fail(y, it, label, RL_EFORMAT, err, errlen, "expected a number");
         }

@@ -15,7 +15,7 @@ static rl_err read_list(rl_yaml *y, yaml_node_t *root, const char *key, double *
         return rl_yaml_fail(y, seq ? seq : root, key, RL_EFORMAT, err, errlen,
                             "expected a list of %d coefficients", n);
     for (i = 0; i < n; i++)
-        if (!rl_yaml_parse_double(rl_yaml_text(rl_yaml_item(y, seq, i)), &c[i]))
+        if (!rl_yaml_parse_double(rl_yaml_number_text(rl_yaml_item(y, seq, i)), &c[i]))
             return rl_yaml_fail(y, rl_yaml_item(y, seq, i), key, RL_EFORMAT, err, errlen,
                                 "item %d is not a number", i);
     return RL_OK;
