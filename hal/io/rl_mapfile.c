@@ -1,6 +1,7 @@
 #include "rl_mapfile.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include "rl_outfile.h"
@@ -151,9 +152,12 @@ void rl_mapfile_put_header(FILE *f, const rl_family *fam, double diameter, doubl
 
 void rl_mapfile_put_landmark(FILE *f, const rl_map_landmark *lm)
 {
+    /* a sigma is written at least at the file's resolution (0.01 mm): 0
+     * (the survey's axis landmark across its axis) would claim a landmark
+     * known exactly, which the loader refuses */
     if (lm->sigma_x > 0 || lm->sigma_y > 0)
         fprintf(f, "  - {id: %d, x: %.5f, y: %.5f, sigma_x: %.5f, sigma_y: %.5f}\n", lm->id, lm->x, lm->y,
-                lm->sigma_x, lm->sigma_y);
+                fmax(lm->sigma_x, 1e-5), fmax(lm->sigma_y, 1e-5));
     else
         fprintf(f, "  - {id: %d, x: %.4f, y: %.4f}\n", lm->id, lm->x, lm->y);
 }
