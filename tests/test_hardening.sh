@@ -284,5 +284,21 @@ n=$(ls -A "$T/rec4/drive_001" | grep -vc '^frames.txt$')
     [ "$(grep -c "recording stopped" "$T/rec4.err")" = 2 ] && ok ||
     bad "recording under a file-size limit: $n frames: $(cat "$T/rec4.err")"
 
+# 14. monitor marks fields out of their range (issue 28): frames made by
+#     hand from the frame format (rl_frame.h), ARCOS checksum summed by hand
+bytes() { for b; do printf "\\$(printf %03o "0x$b")"; done; }
+{   # a status frame with reason 200; sum 0x5301 + 0xC800 = 0x1B01
+    bytes FA FB 0E 53 01 00 00 00 00 00 00 C8 00 00 00 1B 01
+    # a pose frame, version 2, yaw 32767e-4 rad (beyond pi); sum 0x5002 + 0xFF7F = 0x4F81
+    bytes FA FB 24 50 02 00 00 00 00 00 00 00 00 00 00 00 00 00 00 FF 7F
+    bytes 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 4F 81
+    # an ordinary status frame (reason 1): nothing marked; sum 0x5301 + 0x0100 = 0x5401
+    bytes FA FB 0E 53 01 00 00 00 00 00 00 01 00 00 00 54 01
+} >"$T/odd.bin"
+timeout 5 "$R" monitor "$T/odd.bin" >"$T/odd.jsonl" 2>/dev/null
+[ "$(sed -n 1p "$T/odd.jsonl" | grep -c '"reason": 200.*"out_of_range": \["reason"\]')" = 1 ] &&
+    [ "$(sed -n 2p "$T/odd.jsonl" | grep -c '"yaw": 3.2767.*"out_of_range": \["yaw"\]')" = 1 ] &&
+    [ "$(sed -n 3p "$T/odd.jsonl" | grep -c 'out_of_range')" = 0 ] && ok || bad "monitor's out-of-range fields: $(cat "$T/odd.jsonl")"
+
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]
