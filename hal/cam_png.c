@@ -12,6 +12,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "rl_cam.h"
+#include "rl_infile.h"
 #include "rl_png.h"
 
 typedef struct {
@@ -173,10 +174,9 @@ rl_err rl_cam_open_png(rl_cam *c, const rl_cam_config *cc, char *err, size_t err
     s->dirlen = slash ? (int)(slash - s->dev + 1) : 0;
     if (S_ISDIR(st.st_mode))
         e = rl_png_list(dev, &s->names, &s->n, err, errlen);
-    else if ((s->list = fopen(dev, "r")) == NULL) {
-        snprintf(err, errlen, "%s: %s", dev, strerror(errno));
-        e = RL_ENOTFOUND;
-    } else
+    else if ((s->list = rl_infile_fopen(dev, "a folder of PNG images or a list of them", &e, err, errlen)) == NULL)
+        e = e == RL_EIO ? RL_ENOTFOUND : e;
+    else
         e = RL_OK;
     if (e == RL_OK)
         e = frame_size(s, cc, err, errlen);

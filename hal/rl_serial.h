@@ -24,6 +24,7 @@ typedef struct {
     int is_tty;
     int own;          /* fd is ours to close (not stdout) */
     int broken;       /* standard output's reader has gone (a broken pipe) */
+    int errnum;       /* the last failed write's errno (0: none) */
     char path[256];
 } rl_serial;
 

@@ -88,7 +88,7 @@ rl_err rl_serial_open(rl_serial *s, const char *path, int baud, unsigned flags, 
         snprintf(err, errlen, "%s: no such device", path);
         return RL_ENOTFOUND;
     }
-    if (exists && !S_ISREG(st.st_mode) && !S_ISFIFO(st.st_mode)) {
+    if (exists && !S_ISREG(st.st_mode)) { /* a FIFO too: opening one would wait for a reader */
         snprintf(err, errlen, "%s: neither a serial device nor a file", path);
         return RL_ENODEV;
     }
@@ -105,6 +105,7 @@ rl_err rl_serial_open(rl_serial *s, const char *path, int baud, unsigned flags, 
 rl_err rl_serial_write(rl_serial *s, const uint8_t *p, size_t n, int timeout_ms)
 {
     size_t done = 0;
+    s->errnum = 0;
     if (s->fd < 0)
         return RL_ENODEV;
     while (done < n) {
@@ -126,6 +127,7 @@ rl_err rl_serial_write(rl_serial *s, const uint8_t *p, size_t n, int timeout_ms)
                 return RL_ENODEV;
             continue;
         }
+        s->errnum = w < 0 ? errno : EIO;
         if (w < 0 && errno == EPIPE && !s->own) {
             s->broken = 1; /* standard output's reader went: it never comes back */
             return RL_EIO;

@@ -45,8 +45,39 @@ static void on_signal(int sig)
     stop_flag = 1;
 }
 
+/* The fields a well-formed frame cannot hold (a yaw beyond pi, a flag or
+ * status reason ringloc does not send, a tilt beyond 90 degrees), as the
+ * JSON list ", \"out_of_range\": [...]" (empty when all are in range). */
+static void out_of_range(const rl_msg *m, char *out, size_t len)
+{
+    const char *bad[6];
+    int n = 0, i;
+    size_t used;
+    if (m->type == RL_FRAME_POSE) {
+        if (m->yaw_e4 > 31416 || m->yaw_e4 < -31416)
+            bad[n++] = "yaw";
+        if (m->flags & ~3u)
+            bad[n++] = "flags";
+        if (m->version >= 2 && (m->roll_e4 > 15708 || m->roll_e4 < -15708))
+            bad[n++] = "tilt.roll";
+        if (m->version >= 2 && (m->pitch_e4 > 15708 || m->pitch_e4 < -15708))
+            bad[n++] = "tilt.pitch";
+    } else if (m->reason < RL_STATUS_TOO_FEW || m->reason > RL_STATUS_AMBIGUOUS)
+        bad[n++] = "reason";
+    out[0] = '\0';
+    if (n == 0)
+        return;
+    used = (size_t)snprintf(out, len, ", \"out_of_range\": [");
+    for (i = 0; i < n && used < len; i++)
+        used += (size_t)snprintf(out + used, len - used, "%s\"%s\"", i ? ", " : "", bad[i]);
+    if (used < len)
+        snprintf(out + used, len - used, "]");
+}
+
 static void print_msg(const rl_msg *m)
 {
+    char flagged[128];
+    out_of_range(m, flagged, sizeof flagged);
     if (m->type == RL_FRAME_POSE) {
         printf("{\"type\": \"pose\", \"version\": %u, \"seq\": %u, \"time_ms\": %lu, \"x\": %.3f, "
                "\"y\": %.3f, \"yaw\": %.4f, \"landmarks_used\": %u, \"flags\": %u, \"residual\": %.4f, "
@@ -57,11 +88,11 @@ static void print_msg(const rl_msg *m)
             printf(", \"sigma\": {\"x\": %.4f, \"y\": %.4f, \"yaw\": %.4f}, \"tilt\": {\"roll\": %.4f, "
                    "\"pitch\": %.4f}", m->sigma_x_e4 / 1e4, m->sigma_y_e4 / 1e4, m->sigma_yaw_e4 / 1e4,
                    m->roll_e4 / 1e4, m->pitch_e4 / 1e4);
-        printf("}\n");
+        printf("%s}\n", flagged);
     } else
         printf("{\"type\": \"status\", \"seq\": %u, \"time_ms\": %lu, \"reason\": %u, "
-               "\"landmarks_identified\": %u, \"candidates\": %u}\n",
-               m->seq, (unsigned long)m->time_ms, m->reason, m->identified, m->candidates);
+               "\"landmarks_identified\": %u, \"candidates\": %u%s}\n",
+               m->seq, (unsigned long)m->time_ms, m->reason, m->identified, m->candidates, flagged);
     fflush(stdout);
 }
 

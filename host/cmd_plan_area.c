@@ -1,11 +1,11 @@
 /* ringloc plan --area: a large site's ids, every view unique (rl_site_plan). */
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 #include <stdlib.h>
 #include <time.h>
 #include "rl_cli.h"
 #include "rl_mapfile.h"
+#include "rl_outfile.h"
 #include "rl_plan_area.h"
 #include "rl_print.h"
 #include "rl_site_plan.h"
@@ -17,21 +17,14 @@ static void progress(void *ctx, int stage, long failing)
             failing ? "; ids redrawn" : "");
 }
 
-/* Whether path can be written (a new file is not left behind). */
+/* Whether path can be written (its temporary made and removed: nothing
+ * left behind, the target untouched). */
 static int writable(const char *path, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "r");
-    int existed = f != NULL;
-    if (f)
-        fclose(f);
-    f = fopen(path, "a");
-    if (f == NULL) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+    rl_outfile o;
+    if (rl_outfile_open(&o, path, err, errlen) != RL_OK)
         return 0;
-    }
-    fclose(f);
-    if (!existed)
-        remove(path);
+    rl_outfile_abort(&o);
     return 1;
 }
 

@@ -14,6 +14,7 @@
 #include "rl_cmd.h"
 #include "rl_composite.h"
 #include "rl_mapfile.h"
+#include "rl_outfile.h"
 #include "rl_png.h"
 #include "rl_print.h"
 #include "rl_report.h"
@@ -128,15 +129,19 @@ static int seen_as_is(const rl_result *as_is, const rl_detection *d)
 static void write_truth(const char *path, const char *image, const rl_site_mark *m, int n)
 {
     static const char *kinds[] = {"complete", "near_light", "cut"};
-    FILE *f = fopen(path, "w");
+    rl_outfile o;
+    char err[1200];
     int i;
-    if (f == NULL)
+    if (rl_outfile_open(&o, path, err, sizeof err) != RL_OK) {
+        fprintf(stderr, "ringloc site-check: %s\n", err);
         return;
-    fprintf(f, "image: %s\nlandmarks:\n", image);
+    }
+    fprintf(o.f, "image: %s\nlandmarks:\n", image);
     for (i = 0; i < n; i++)
-        fprintf(f, "  - {id: %d, u: %.3f, v: %.3f, radius: %.3f, kind: %s, visible: %.3f}\n",
+        fprintf(o.f, "  - {id: %d, u: %.3f, v: %.3f, radius: %.3f, kind: %s, visible: %.3f}\n",
                 m[i].id, m[i].u, m[i].v, m[i].r, kinds[m[i].kind], m[i].visible);
-    fclose(f);
+    if (rl_outfile_commit(&o, err, sizeof err) != RL_OK)
+        fprintf(stderr, "ringloc site-check: %s\n", err);
 }
 
 typedef struct {

@@ -1,5 +1,4 @@
 /* ringloc survey: the map from a recorded drive (rl_survey). */
-#include <errno.h>
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
@@ -10,6 +9,7 @@
 #include "rl_cli.h"
 #include "rl_cmd.h"
 #include "rl_mapfile.h"
+#include "rl_outfile.h"
 #include "rl_robotfile.h"
 #include "rl_survey.h"
 #include "rl_survey_input.h"
@@ -129,12 +129,13 @@ static int parse(int argc, char **argv, survey_args *a, rl_survey_config *cfg, r
 
 static rl_err write_map(const char *path, const rl_survey *sv, const rl_family *fam, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "w");
+    rl_outfile o;
+    FILE *f;
     int i;
-    if (f == NULL) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        return RL_EIO;
-    }
+    rl_err e;
+    if ((e = rl_outfile_open(&o, path, err, errlen)) != RL_OK)
+        return e;
+    f = o.f;
     fprintf(f, "# ringloc survey: %d frames used, RMS %.3f px; origin %d, axis %d\n", sv->frames_used,
             sv->rms_px, sv->cfg.origin_id, sv->cfg.axis_id);
     rl_mapfile_put_header(f, fam, sv->cfg.diameter, sv->height);
@@ -150,11 +151,7 @@ static rl_err write_map(const char *path, const rl_survey *sv, const rl_family *
         m.sigma_y = sqrt(fmax(0, l->cov[2]));
         rl_mapfile_put_landmark(f, &m);
     }
-    if (ferror(f) | (fclose(f) != 0)) {
-        snprintf(err, errlen, "%s: write failed", path);
-        return RL_EIO;
-    }
-    return RL_OK;
+    return rl_outfile_commit(&o, err, errlen);
 }
 
 static void print_ids(const rl_survey *sv, int status)

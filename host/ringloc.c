@@ -48,6 +48,7 @@ static void usage(FILE *out)
 int main(int argc, char **argv)
 {
     size_t i;
+    rl_cli_start("ringloc");
     if (argc < 2) {
         usage(stderr);
         return RL_EXIT_USAGE;

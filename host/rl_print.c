@@ -1,10 +1,12 @@
 #include "rl_print.h"
 
 #include <cairo-pdf.h>
+#include <errno.h>
 #include <cairo-svg.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "rl_outfile.h"
 
 #define MM_TO_PT (72.0 / 25.4)
 
@@ -157,17 +159,49 @@ static rl_err surface_status(cairo_surface_t *s, const char *path, char *err, si
     return RL_EIO;
 }
 
-static rl_err finish(cairo_t *cr, cairo_surface_t *s, const char *path, char *err, size_t errlen)
+/* cairo's stream callback: into the temporary file (the first write error
+ * is kept with its errno, so the line says why, not cairo's "error while
+ * writing to output stream"). */
+static cairo_status_t to_outfile(void *closure, const unsigned char *data, unsigned int length)
 {
-    rl_err e;
-    cairo_status_t st = cairo_status(cr);
-    cairo_destroy(cr);
+    return rl_outfile_write((rl_outfile *)closure, data, length) == 0 ? CAIRO_STATUS_SUCCESS
+                                                                       : CAIRO_STATUS_WRITE_ERROR;
+}
+
+/* After drawing: cairo's own status (the context's, then the surface's
+ * once finished) joins the file's, which is committed or removed. */
+static rl_err finish(cairo_t *cr, cairo_surface_t *s, rl_outfile *o, char *err, size_t errlen)
+{
+    cairo_status_t st = cr ? cairo_status(cr) : CAIRO_STATUS_SUCCESS;
+    if (cr)
+        cairo_destroy(cr);
     cairo_surface_finish(s);
-    e = surface_status(s, path, err, errlen);
+    if (st == CAIRO_STATUS_SUCCESS)
+        st = cairo_surface_status(s);
     cairo_surface_destroy(s);
-    if (e == RL_OK && st != CAIRO_STATUS_SUCCESS) {
-        snprintf(err, errlen, "%s: %s", path, cairo_status_to_string(st));
-        e = RL_EIO;
+    if (st != CAIRO_STATUS_SUCCESS && o->errnum == 0) {
+        rl_outfile_abort(o);
+        snprintf(err, errlen, "%s: %s", o->path, cairo_status_to_string(st));
+        return RL_EIO;
+    }
+    if (st != CAIRO_STATUS_SUCCESS)
+        rl_outfile_set_error(o, EIO);
+    return rl_outfile_commit(o, err, errlen);
+}
+
+/* A PDF or SVG surface of the paper's size writing into a new outfile. */
+static rl_err vector_surface(int svg, const char *path, const rl_paper *paper, rl_outfile *o,
+                             cairo_surface_t **s, char *err, size_t errlen)
+{
+    double w = paper->w_mm * MM_TO_PT, h = paper->h_mm * MM_TO_PT;
+    rl_err e;
+    if ((e = rl_outfile_open(o, path, err, errlen)) != RL_OK)
+        return e;
+    *s = svg ? cairo_svg_surface_create_for_stream(to_outfile, o, w, h)
+             : cairo_pdf_surface_create_for_stream(to_outfile, o, w, h);
+    if ((e = surface_status(*s, path, err, errlen)) != RL_OK) {
+        cairo_surface_destroy(*s);
+        rl_outfile_abort(o);
     }
     return e;
 }
@@ -178,19 +212,17 @@ rl_err rl_print_pdf(const char *path, const rl_paper *paper, const rl_family *fa
 {
     cairo_surface_t *s;
     cairo_t *cr;
+    rl_outfile o;
     int i;
     rl_err e;
-    s = cairo_pdf_surface_create(path, paper->w_mm * MM_TO_PT, paper->h_mm * MM_TO_PT);
-    if ((e = surface_status(s, path, err, errlen)) != RL_OK) {
-        cairo_surface_destroy(s);
+    if ((e = vector_surface(0, path, paper, &o, &s, err, errlen)) != RL_OK)
         return e;
-    }
     cr = cairo_create(s);
     for (i = 0; i < n; i++) {
         page(cr, paper, fam, ids[i], pos ? &pos[i] : NULL, diameter);
         cairo_show_page(cr);
     }
-    return finish(cr, s, path, err, errlen);
+    return finish(cr, s, &o, err, errlen);
 }
 
 rl_err rl_print_svg(const char *path, const rl_paper *paper, const rl_family *fam, int id,
@@ -198,16 +230,14 @@ rl_err rl_print_svg(const char *path, const rl_paper *paper, const rl_family *fa
 {
     cairo_surface_t *s;
     cairo_t *cr;
+    rl_outfile o;
     rl_err e;
-    s = cairo_svg_surface_create(path, paper->w_mm * MM_TO_PT, paper->h_mm * MM_TO_PT);
-    if ((e = surface_status(s, path, err, errlen)) != RL_OK) {
-        cairo_surface_destroy(s);
+    if ((e = vector_surface(1, path, paper, &o, &s, err, errlen)) != RL_OK)
         return e;
-    }
     cairo_svg_surface_set_document_unit(s, CAIRO_SVG_UNIT_MM);
     cr = cairo_create(s);
     page(cr, paper, fam, id, pos, diameter);
-    return finish(cr, s, path, err, errlen);
+    return finish(cr, s, &o, err, errlen);
 }
 
 int rl_print_png_side(int px)
@@ -239,13 +269,20 @@ rl_err rl_print_png(const char *path, const rl_family *fam, int id, int px, char
 
 rl_err rl_print_surface_png(cairo_surface_t *s, const char *path, char *err, size_t errlen)
 {
+    rl_outfile o;
+    rl_err e;
     cairo_status_t st;
     cairo_surface_flush(s);
-    st = cairo_surface_write_to_png(s, path);
-    cairo_surface_destroy(s);
-    if (st != CAIRO_STATUS_SUCCESS) {
+    if ((e = rl_outfile_open(&o, path, err, errlen)) != RL_OK) {
+        cairo_surface_destroy(s);
+        return e;
+    }
+    st = cairo_surface_write_to_png_stream(s, to_outfile, &o);
+    if (st != CAIRO_STATUS_SUCCESS && o.errnum == 0) {
+        cairo_surface_destroy(s);
+        rl_outfile_abort(&o);
         snprintf(err, errlen, "%s: cannot write PNG (%s)", path, cairo_status_to_string(st));
         return RL_EIO;
     }
-    return RL_OK;
+    return finish(NULL, s, &o, err, errlen);
 }

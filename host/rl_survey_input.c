@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "rl_infile.h"
 #include "rl_png.h"
 
 void rl_survey_input_init(rl_survey_input *in, const rl_camera *cam, const rl_family *fam, rl_survey *sv,
@@ -165,16 +166,14 @@ out:
 
 static rl_err json_file(rl_survey_input *in, const char *path)
 {
-    FILE *f = fopen(path, "r");
     char *buf = NULL;
     size_t cap = 0;
     long line = 0;
     ssize_t len;
     rl_err e = RL_OK;
-    if (f == NULL) {
-        snprintf(in->err, sizeof in->err, "%s: %s", path, strerror(errno));
-        return RL_ENOTFOUND;
-    }
+    FILE *f = rl_infile_fopen(path, "a file of detect JSON lines", &e, in->err, sizeof in->err);
+    if (f == NULL)
+        return e == RL_EIO ? RL_ENOTFOUND : e;
     while (e == RL_OK && (len = getline(&buf, &cap, f)) >= 0) {
         line++;
         while (len > 0 && (buf[len - 1] == '\n' || buf[len - 1] == '\r' || buf[len - 1] == ' '))

@@ -3,6 +3,7 @@
 #include <cairo.h>
 #include <math.h>
 #include <stdio.h>
+#include "rl_print.h"
 
 #define PLOT_W 1000
 #define PLOT_H 760
@@ -72,7 +73,6 @@ rl_err rl_survey_plot(const char *path, const rl_survey *sv, const rl_survey_mov
     view v;
     char text[200];
     int i, placed = 0;
-    cairo_status_t st;
 
     for (i = 0; i < sv->n_lm; i++)
         if (sv->lm[i].status == RL_SURVEY_PLACED) {
@@ -163,11 +163,5 @@ rl_err rl_survey_plot(const char *path, const rl_survey *sv, const rl_survey_mov
     cairo_move_to(cr, MARGIN, 30);
     cairo_show_text(cr, text);
     cairo_destroy(cr);
-    st = cairo_surface_write_to_png(s, path);
-    cairo_surface_destroy(s);
-    if (st != CAIRO_STATUS_SUCCESS) {
-        snprintf(err, errlen, "%s: %s", path, cairo_status_to_string(st));
-        return RL_EIO;
-    }
-    return RL_OK;
+    return rl_print_surface_png(s, path, err, errlen);
 }

@@ -40,7 +40,7 @@ set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "robot self-localization from ring-coded c
 set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE ${RL_DEB_ARCH})
 set(CPACK_DEBIAN_PACKAGE_SECTION misc)
 # the shared libraries each binary links (Debian bookworm / Raspberry Pi OS names)
-set(RL_FW_DEPENDS "libc6 (>= 2.34), libpng16-16, libyaml-0-2, libturbojpeg0")
+set(RL_FW_DEPENDS "libc6 (>= 2.34), libpng16-16, libyaml-0-2, libturbojpeg0, passwd")
 if(LIBCAMERA_FOUND)
   string(APPEND RL_FW_DEPENDS ", libstdc++6, libcamera0.0.3 | libcamera0.2 | libcamera0.3")
 endif()

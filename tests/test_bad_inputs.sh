@@ -120,11 +120,12 @@ printf '\211PNG\r\n\032\n' >"$T/trunc.png"
 head -c 3000 "$frame" >"$T/half.png"
 : >"$T/empty.png"
 printf 'P5\n640 480\n255\n' >"$T/pnm.png"
+mkfifo "$T/fifo" # a FIFO where a file is expected: refused at once, never waited on (issue 28)
 # file CMD OPTION ARGS...: CMD --OPTION f ARGS for every kind of bad file
 file() {
     cmd=$1 o=$2
     shift 2
-    for f in "$T/absent.yaml" "$T/folder" "$T/empty.yaml" "$T/garbage.yaml" "$frame"; do
+    for f in "$T/absent.yaml" "$T/folder" "$T/empty.yaml" "$T/garbage.yaml" "$frame" "$T/fifo"; do
         expect 1 "$(basename "$f")" "$R" "$cmd" "--$o" "$f" "$@"
     done
 }
@@ -156,7 +157,8 @@ desc=
 expect 1 "empty.jsonl" "$R" survey $sv "$T/empty.jsonl"
 expect 1 "folder" "$R" survey $sv "$T/folder"
 expect 1 "absent.png" "$R" survey $sv "$T/absent.png"
-for f in "$T/absent.png" "$T/folder" "$T/empty.png" "$T/trunc.png" "$T/half.png" "$T/pnm.png" "$T/garbage.yaml"; do
+for f in "$T/absent.png" "$T/folder" "$T/empty.png" "$T/trunc.png" "$T/half.png" "$T/pnm.png" "$T/garbage.yaml" \
+    "$T/fifo"; do
     expect 1 "$(basename "$f")" "$R" detect "$f"
 done
 expect 1 "site-check" "$R" site-check --rounds 1 "$T/folder"
@@ -195,6 +197,18 @@ for v in nan .inf abc 1e308 "[0]"; do
     key map "$map" x "0,/x: 0.3050/s//x: $v/"
     key map "$map" y "0,/y: 0.3050}/s//y: $v}/"
 done
+# issue 28: one document per file; a quoted, tagged or hex number is no
+# number; sigmas come in pairs, above 0; an id past 2^31 is out of range
+key map "$map" "a second document" '$a ---\nfamily: ring6'
+key map "$map" "a malformed second document" '$a ---\nfamily: ['
+key map "$map" "text after the end marker" '$a ...\njunk'
+key map "$map" "sigma_x alone" "0,/{id: 1, x: 0.3050, y: 0.3050}/s//{id: 1, x: 0.3050, y: 0.3050, sigma_x: 0.001}/"
+key map "$map" "sigma 0" "0,/{id: 1, x: 0.3050, y: 0.3050}/s//{id: 1, x: 0.3050, y: 0.3050, sigma_x: 0, sigma_y: 0.001}/"
+for v in '!!str 0.88' '"0.88"' "'0.88'" 0x1.cp-1 0X1P0; do
+    key robot "$robot" "z $v" "s/z: 0.8800/z: $v/"
+done
+sed "0,/{id: 1,/s//{id: 2147483648,/" "$map" >"$T/id31.yaml"
+expect 1 "landmarks[0].id: 2147483648 is out of range" "$R" detect --map "$T/id31.yaml" "$frame"
 key map "$map" "overlapping landmarks" "0,/{id: 8, x: 0.9150/s//{id: 8, x: 0.4050/"
 key map "$map" "doubled key" "0,/{id: 1, x: 0.3050/s//{id: 1, x: 0.3050, x: 1/"
 key map "$map" "no family" "/^family:/d"

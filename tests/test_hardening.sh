@@ -181,21 +181,124 @@ cfg - 0 | sed "s|device: $T/frames.txt|device: $T/rec_list.txt|" >"$T/norec.yaml
 "$R" run --config "$T/norec.yaml" >"$T/norec.bin" 2>/dev/null
 { cat "$T/norec.yaml"; printf 'record: {dir: rec, every: 3}\n'; } >"$T/rec.yaml"
 "$R" run --config "$T/rec.yaml" >"$T/rec.bin" 2>"$T/rec.err"; rc=$?
-n=$(ls "$T/rec"/frame_*.png 2>/dev/null | wc -l)
-"$R" detect "$T/rec/frame_0000003.png" | sed 's/.*"landmarks"/"landmarks"/; s/"elapsed_us": [0-9.]*//' >"$T/rec_det.txt"
+n=$(ls "$T/rec/drive_001"/frame_*.png 2>/dev/null | wc -l)
+"$R" detect "$T/rec/drive_001/frame_0000003.png" | sed 's/.*"landmarks"/"landmarks"/; s/"elapsed_us": [0-9.]*//' >"$T/rec_det.txt"
 "$R" detect "$(sed -n 4p "$T/rec_list.txt")" | sed 's/.*"landmarks"/"landmarks"/; s/"elapsed_us": [0-9.]*//' >"$T/orig_det.txt"
-[ $rc = 0 ] && [ "$n" = 4 ] && [ "$(wc -l <"$T/rec/frames.txt")" = 4 ] && grep -q "recorded 4 frames" "$T/rec.err" &&
+[ $rc = 0 ] && [ "$n" = 4 ] && [ "$(wc -l <"$T/rec/drive_001/frames.txt")" = 4 ] && grep -q "recorded 4 frames" "$T/rec.err" &&
     grep -q ": 12 frames, 12 poses" "$T/rec.err" && cmp -s "$T/rec_det.txt" "$T/orig_det.txt" &&
     [ "$(wc -c <"$T/rec.bin")" = "$(wc -c <"$T/norec.bin")" ] && ok ||
     bad "recording: rc $rc, $n frames: $(tail -2 "$T/rec.err")"
 { cat "$T/norec.yaml"; printf 'record: {dir: rec_small, every: 1, max_mb: 0.1}\n'; } >"$T/rec_small.yaml"
 "$R" run --config "$T/rec_small.yaml" >/dev/null 2>"$T/rec_small.err"; rc=$?
-n=$(ls "$T/rec_small"/frame_*.png 2>/dev/null | wc -l)
+n=$(ls "$T/rec_small/drive_001"/frame_*.png 2>/dev/null | wc -l)
 [ $rc = 0 ] && [ "$n" -ge 1 ] && [ "$n" -lt 12 ] && grep -q "max_mb; recording stopped" "$T/rec_small.err" &&
     grep -q ": 12 frames, 12 poses" "$T/rec_small.err" && ok || bad "max_mb: rc $rc, $n frames: $(tail -1 "$T/rec_small.err")"
 "$R" run --config "$T/norec.yaml" --record /proc/ringloc_rec 2>"$T/rec_bad.err"; rc=$?
 [ $rc = 1 ] && [ "$(wc -l <"$T/rec_bad.err")" = 1 ] && grep -q "record: /proc/ringloc_rec: cannot make the recording folder" "$T/rec_bad.err" &&
     ok || bad "unwritable recording folder: rc $rc: $(cat "$T/rec_bad.err")"
+
+# 10. outputs (issue 28): a failed write keeps the old file whole and says
+#     why in one line; no output is written through a link; SIGXFSZ at its
+#     default kills nothing (ringloc ignores it)
+limited() { # BLOCKS-OF-512 COMMAND...: under a file-size limit, SIGXFSZ at its default
+    blocks=$1; shift
+    sh -c 'ulimit -f "$0"; exec "$@"' "$blocks" "$@"
+}
+cp "$D/robot.yaml" "$T/robot.yaml"
+set -- "$D"/straight_00*.png
+limited 0 "$R" calibrate-mount --camera "$D/camera.yaml" --map "$D/map.yaml" --robot "$T/robot.yaml" \
+    --out "$T/robot.yaml" "$@" 2>&1 >/dev/null | cat >"$T/mount.err"
+[ "$(wc -l <"$T/mount.err")" = 1 ] && grep -q "robot.yaml: File too large" "$T/mount.err" &&
+    cmp -s "$D/robot.yaml" "$T/robot.yaml" && [ -z "$(ls -A "$T" | grep '^\.robot')" ] && ok ||
+    bad "calibrate-mount --out robot.yaml under ulimit -f 0: $(cat "$T/mount.err"), $(wc -c <"$T/robot.yaml") bytes"
+printf 'old map\n' >"$T/plan_map.yaml"
+limited 0 "$R" plan --landmarks 30 --resolution 640x480 --hfov 70 --distance 1.87 --grid 4x3 --pitch 0.61 \
+    --ceiling-height 2.75 --camera-height 0.88 --map-out "$T/plan_map.yaml" 2>&1 >/dev/null | cat >"$T/plan.err"
+grep -q "plan_map.yaml: File too large" "$T/plan.err" && [ "$(cat "$T/plan_map.yaml")" = "old map" ] && ok ||
+    bad "plan --map-out under 1 kB: $(cat "$T/plan.err")"
+limited 2 "$R" gen --family ring5 --id 25 --diameter 0.19 --pdf "$T/lm.pdf" 2>&1 >/dev/null | cat >"$T/gen.err"; rc=$?
+grep -q "lm.pdf: File too large" "$T/gen.err" && [ ! -e "$T/lm.pdf" ] && ok ||
+    bad "gen --pdf under 1 kB: $(cat "$T/gen.err"), $(ls -l "$T/lm.pdf" 2>&1)"
+limited 8 "$R" gen --family ring5 --id 25 --px 200 --png "$T/lm.png" 2>&1 >/dev/null | cat >"$T/genpng.err"
+grep -q "File too large" "$T/genpng.err" && ! ls "$T"/lm*.png "$T"/.lm* >/dev/null 2>&1 && ok ||
+    bad "gen --png under 4 kB: $(cat "$T/genpng.err"), $(ls "$T" | grep lm)"
+printf 'keep\n' >"$T/victim"
+ln -s "$T/victim" "$T/ann.png"
+"$R" detect --map "$D/map.yaml" --annotate "$T/ann.png" "$frame" >/dev/null 2>"$T/ann.err"; rc=$?
+[ $rc = 1 ] && grep -q "ann.png: is a symbolic link" "$T/ann.err" && [ "$(cat "$T/victim")" = keep ] && ok ||
+    bad "detect --annotate through a link: rc $rc: $(cat "$T/ann.err")"
+
+# 11. a FIFO where a file is expected is refused at once, never waited on
+mkfifo "$T/fifo"
+one_error "run --config FIFO" 1 "fifo: a FIFO, not a YAML file" "$R" run --config "$T/fifo"
+one_error "locate --camera FIFO" 1 "fifo: a FIFO, not a YAML file" \
+    "$R" locate --camera "$T/fifo" --map "$D/map.yaml" --robot "$D/robot.yaml" "$frame"
+one_error "detect --map FIFO" 1 "fifo: a FIFO, not a YAML file" "$R" detect --map "$T/fifo" "$frame"
+one_error "a FIFO as an image" 1 "fifo: a FIFO, not a PNG image" "$R" detect "$T/fifo"
+cfg "$T/fifo" 0 >"$T/fifo_serial.yaml"
+timeout 20 "$R" run --config "$T/fifo_serial.yaml" --frames 3 >/dev/null 2>"$T/fifo_serial.err"; rc=$?
+[ $rc = 1 ] && grep -q "neither a serial device nor a file" "$T/fifo_serial.err" && ok ||
+    bad "a FIFO as the serial line: rc $rc: $(tail -2 "$T/fifo_serial.err")"
+
+# 12. the serial line: /dev/full says why; nothing reached the line: exit 1
+cfg /dev/full 0 | sed "s|device: $T/frames.txt|device: $T/rec_list.txt|" >"$T/full.yaml"
+"$R" run --config "$T/full.yaml" >/dev/null 2>"$T/full.err"; rc=$?
+[ $rc = 1 ] && grep -q "serial: write failed (No space left on device)" "$T/full.err" &&
+    grep -q "no frame reached /dev/full" "$T/full.err" && ok || bad "/dev/full: rc $rc: $(cat "$T/full.err")"
+
+# 13. recording (issue 28): standard output closed gives no frame to the
+#     recorder's files; a second run gets its own folder; a planted link
+#     is never followed; a file-size limit stops recording, not the poses,
+#     and leaves no partial frame (nor a temporary one)
+{ cat "$T/norec.yaml"; printf 'record: {dir: rec2, every: 3}\n'; } >"$T/rec2.yaml"
+"$R" run --config "$T/rec2.yaml" >&- 2>"$T/rec2a.err"
+"$R" run --config "$T/rec2.yaml" >/dev/null 2>"$T/rec2b.err"
+good=0
+for f in "$T"/rec2/drive_00*/frame_*.png; do
+    [ "$(head -c 4 "$f" | od -An -c | tr -d ' ')" = "211PNG" ] && good=$((good + 1))
+done
+[ "$good" = 8 ] && [ "$(wc -l <"$T/rec2/drive_001/frames.txt")" = 4 ] &&
+    [ "$(wc -l <"$T/rec2/drive_002/frames.txt")" = 4 ] && grep -q "recording one frame in 3 to .*rec2/drive_002" "$T/rec2b.err" && ok ||
+    bad "two recordings, one with stdout closed: $good whole PNGs: $(ls -R "$T/rec2")"
+mkdir -p "$T/rec3" "$T/elsewhere"
+ln -s "$T/elsewhere" "$T/rec3/drive_001"
+"$R" run --config "$T/norec.yaml" --record "$T/rec3" >/dev/null 2>"$T/rec3.err"; rc=$?
+[ $rc = 0 ] && [ -z "$(ls -A "$T/elsewhere")" ] && [ "$(ls "$T/rec3/drive_002" | grep -c png)" = 2 ] && ok ||
+    bad "a planted drive_001 link: rc $rc: $(ls "$T/elsewhere"): $(tail -1 "$T/rec3.err")"
+ln -s "$T/elsewhere" "$T/rec_link"
+"$R" run --config "$T/norec.yaml" --record "$T/rec_link" >/dev/null 2>"$T/rec_link.err"; rc=$?
+[ $rc = 1 ] && grep -q "rec_link: not a folder" "$T/rec_link.err" && [ -z "$(ls -A "$T/elsewhere")" ] && ok ||
+    bad "a link as the recording folder: rc $rc: $(cat "$T/rec_link.err")"
+if [ "$(id -u)" = 0 ]; then
+    mkdir -p "$T/rec_other" && chown nobody "$T/rec_other"
+    "$R" run --config "$T/norec.yaml" --record "$T/rec_other" >/dev/null 2>"$T/rec_other.err"; rc=$?
+    [ $rc = 1 ] && grep -q "rec_other: belongs to another user" "$T/rec_other.err" && ok ||
+        bad "another user's recording folder: rc $rc: $(cat "$T/rec_other.err")"
+fi
+{ cat "$T/norec.yaml"; printf 'record: {dir: rec4, every: 1}\n'; } >"$T/rec4.yaml"
+sh -c 'ulimit -f 200; exec "$@"' sh "$R" run --config "$T/rec4.yaml" 2>"$T/rec4.err" |
+    cat >"$T/rec4.bin" # 100 kB a file: less than a frame
+n=$(ls -A "$T/rec4/drive_001" | grep -vc '^frames.txt$')
+[ "$n" = 0 ] && [ ! -s "$T/rec4/drive_001/frames.txt" ] && [ "$(wc -c <"$T/rec4.bin")" = "$(wc -c <"$T/norec.bin")" ] &&
+    grep -q "File too large; recording stopped" "$T/rec4.err" && grep -q ": 12 frames, 12 poses" "$T/rec4.err" &&
+    [ "$(grep -c "recording stopped" "$T/rec4.err")" = 2 ] && ok ||
+    bad "recording under a file-size limit: $n frames: $(cat "$T/rec4.err")"
+
+# 14. monitor marks fields out of their range (issue 28): frames made by
+#     hand from the frame format (rl_frame.h), ARCOS checksum summed by hand
+bytes() { for b; do printf "\\$(printf %03o "0x$b")"; done; }
+{   # a status frame with reason 200; sum 0x5301 + 0xC800 = 0x1B01
+    bytes FA FB 0E 53 01 00 00 00 00 00 00 C8 00 00 00 1B 01
+    # a pose frame, version 2, yaw 32767e-4 rad (beyond pi); sum 0x5002 + 0xFF7F = 0x4F81
+    bytes FA FB 24 50 02 00 00 00 00 00 00 00 00 00 00 00 00 00 00 FF 7F
+    bytes 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 4F 81
+    # an ordinary status frame (reason 1): nothing marked; sum 0x5301 + 0x0100 = 0x5401
+    bytes FA FB 0E 53 01 00 00 00 00 00 00 01 00 00 00 54 01
+} >"$T/odd.bin"
+timeout 5 "$R" monitor "$T/odd.bin" >"$T/odd.jsonl" 2>/dev/null
+[ "$(sed -n 1p "$T/odd.jsonl" | grep -c '"reason": 200.*"out_of_range": \["reason"\]')" = 1 ] &&
+    [ "$(sed -n 2p "$T/odd.jsonl" | grep -c '"yaw": 3.2767.*"out_of_range": \["yaw"\]')" = 1 ] &&
+    [ "$(sed -n 3p "$T/odd.jsonl" | grep -c 'out_of_range')" = 0 ] && ok || bad "monitor's out-of-range fields: $(cat "$T/odd.jsonl")"
 
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

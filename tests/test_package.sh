@@ -47,6 +47,50 @@ unit="$T/root/lib/systemd/system/ringloc.service"
 check "unit restarts on failure" grep -qx 'Restart=on-failure' "$unit"
 check "unit waits for the serial device" grep -q '^After=.*\.device' "$unit"
 check "unit runs the firmware on the packaged configuration" grep -qx 'ExecStart=/usr/bin/ringloc-fw --config /etc/ringloc/ringloc.yaml' "$unit"
+# the service: an unprivileged user, sandboxed (issue 28)
+check "unit runs as the ringloc user" grep -qx 'User=ringloc' "$unit"
+check "unit has its state folder" grep -qx 'StateDirectory=ringloc' "$unit"
+check "unit allows the serial line's device class" grep -qx 'DeviceAllow=char-ttyAMA rw' "$unit"
+check "unit allows V4L2 cameras" grep -qx 'DeviceAllow=char-video4linux rw' "$unit"
+check "the package declares passwd (useradd)" grep -qE '^Depends: .*passwd' "$T/control"
+if command -v systemd-analyze >/dev/null 2>&1; then
+    systemd-analyze security --offline=true "$unit" >"$T/security.txt" 2>&1
+    exposure=$(sed -n 's/.*Overall exposure level for [^:]*: \([0-9.]*\).*/\1/p' "$T/security.txt")
+    if [ -n "$exposure" ] && awk "BEGIN { exit !($exposure <= 3.5) }"; then
+        pass=$((pass + 1))
+        echo "systemd-analyze security: exposure $exposure"
+    else
+        echo "FAIL: systemd-analyze security: exposure '${exposure:-?}' (at most 3.5):"; tail -5 "$T/security.txt"
+        fail=$((fail + 1))
+    fi
+else
+    echo "FAIL: systemd-analyze is missing (tools/deps.sh installs the systemd package)"; fail=$((fail + 1))
+fi
+# the postinst as dpkg runs it (root, twice: an upgrade), systemctl a stub
+# so that nothing on this machine is enabled; what it made is removed again
+if [ "$(id -u)" = 0 ] && command -v useradd >/dev/null 2>&1; then
+    had_user=0; getent passwd ringloc >/dev/null && had_user=1
+    had_dir=0; [ -e /var/lib/ringloc ] && had_dir=1
+    mkdir -p "$T/stub"
+    printf '#!/bin/sh\nexit 0\n' >"$T/stub/systemctl"
+    chmod +x "$T/stub/systemctl"
+    PATH="$T/stub:$PATH" sh "$T/ctl/postinst" configure >"$T/postinst.log" 2>&1 &&
+        PATH="$T/stub:$PATH" sh "$T/ctl/postinst" configure >>"$T/postinst.log" 2>&1; rc=$?
+    check "postinst runs twice (rc $rc: $(head -2 "$T/postinst.log"))" test $rc = 0
+    check "postinst makes the system user ringloc" sh -c '[ "$(getent passwd ringloc | cut -d: -f3)" -lt 1000 ]'
+    check "ringloc cannot log in" sh -c 'getent passwd ringloc | grep -q ":/usr/sbin/nologin$"'
+    for group in video dialout; do
+        getent group "$group" >/dev/null &&
+            check "ringloc is in $group" sh -c "id -nG ringloc | tr ' ' '\n' | grep -qx $group"
+    done
+    check "/var/lib/ringloc is ringloc's, 0750" sh -c '[ "$(stat -c %U:%a /var/lib/ringloc)" = ringloc:750 ]'
+    [ "$(dpkg --print-architecture)" = "$ARCH" ] && check "the firmware runs as ringloc" sh -c "setpriv --reuid=ringloc --regid=ringloc --init-groups \
+        '$T/root/usr/bin/ringloc-fw' --help | grep -q usage"
+    [ $had_user = 1 ] || { userdel ringloc 2>/dev/null; getent group ringloc >/dev/null && groupdel ringloc; }
+    [ $had_dir = 1 ] || rmdir /var/lib/ringloc 2>/dev/null
+else
+    echo "postinst not run: needs root and useradd"
+fi
 if command -v systemd-analyze >/dev/null 2>&1; then
     # verify the unit as packaged, but with ExecStart on the unpacked binary
     # (this machine has no /usr/bin/ringloc-fw installed)

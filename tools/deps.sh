@@ -66,6 +66,8 @@ if [ "$profile" != fuzz ]; then
     need_pkg poppler-utils have pdftoppm
 
     need_pkg file have file
+    need_pkg systemd have systemd-analyze # the service unit's security check (test_package)
+    need_pkg passwd have useradd          # the package's postinst, run by test_package
 fi
 [ "$profile" = host ] || [ "$profile" = asan ] && need_pkg libcamera-dev pc libcamera
 foreign=""

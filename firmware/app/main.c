@@ -4,6 +4,6 @@
 
 int main(int argc, char **argv)
 {
-    rl_cli_set_program("ringloc-fw");
+    rl_cli_start("ringloc-fw");
     return rl_fw_main(NULL, argc, argv);
 }

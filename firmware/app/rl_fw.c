@@ -74,6 +74,11 @@ static void out_close(void *ctx)
 {
     rl_serial_close(&((out_ctx *)ctx)->s);
 }
+static const char *out_why(void *ctx)
+{
+    int en = ((out_ctx *)ctx)->s.errnum;
+    return en ? strerror(en) : NULL;
+}
 
 static void log_line(void *ctx, const char *line)
 {
@@ -162,6 +167,7 @@ static void wire_io(const fw_setup *s, out_ctx *octx, const char *prefix, rl_run
     io->out.open = out_open;
     io->out.write = out_write;
     io->out.close = out_close;
+    io->out.why = out_why;
     io->out.ctx = octx;
     io->clock = rl_clock_system();
     io->log = log_line;
@@ -254,9 +260,20 @@ static int probe_camera(const char *C, const char *config)
     return 0;
 }
 
+typedef struct {
+    rl_record rec;
+    const char *prefix;
+} record_ctx;
+
+/* Each frame offered to the recorder; when recording stopped (a full
+ * disk, the folder gone, max_mb) the log says so then, once. */
 static void record_frame(void *ctx, const rl_cam_frame *f)
 {
-    rl_record_offer((rl_record *)ctx, &f->img, f->index, f->t_us);
+    record_ctx *rc = (record_ctx *)ctx;
+    const char *news;
+    rl_record_offer(&rc->rec, &f->img, f->index, f->t_us);
+    if ((news = rl_record_news(&rc->rec)) != NULL)
+        log_line((void *)rc->prefix, news);
 }
 
 int rl_fw_main(const char *C, int argc, char **argv)
@@ -271,7 +288,7 @@ int rl_fw_main(const char *C, int argc, char **argv)
     rl_run_io io;
     const char *config = NULL;
     long max_frames = 0;
-    static rl_record rec;
+    static record_ctx rec;
     const char *record = NULL;
     int rc, done, probe = 0, recording = 0;
 
@@ -297,11 +314,13 @@ int rl_fw_main(const char *C, int argc, char **argv)
         rcc.dir = s.cfg.record_dir;
         rcc.every = s.cfg.record_every;
         rcc.max_mb = s.cfg.record_max_mb;
-        if (rl_record_start(&rec, &rcc, s.calib.width, s.calib.height, err, sizeof err) != RL_OK) {
+        if (rl_record_start(&rec.rec, &rcc, s.calib.width, s.calib.height, err, sizeof err) != RL_OK) {
             rl_heap_recog_free(&hr);
             rl_heap_place_free(&hp);
             return rl_cli_fail(C, RL_EXIT_FAIL, "record: %s", err);
         }
+        rec.prefix = prefix;
+        fprintf(stderr, "%s: recording one frame in %d to %s\n", prefix, rec.rec.every, rec.rec.dir);
         io.frame = record_frame;
         io.frame_ctx = &rec;
         recording = 1;
@@ -323,14 +342,17 @@ int rl_fw_main(const char *C, int argc, char **argv)
             runner.bad_frames, runner.camera_timeouts, runner.serial_errors, runner.dropped,
             stop_flag ? (octx.s.broken ? " (standard output closed)" : " (stopped by signal)") : "");
     if (recording) {
-        rl_record_stop(&rec);
+        rl_record_stop(&rec.rec);
         fprintf(stderr, "%s: recorded %ld frames (%.1f MB) to %s, %ld skipped while the disk was behind%s%s\n",
-                prefix, rec.saved, rec.bytes / 1e6, rec.dir, rec.skipped, rec.error[0] ? "; " : "", rec.error);
+                prefix, rec.rec.saved, rec.rec.bytes / 1e6, rec.rec.dir, rec.rec.skipped,
+                rec.rec.error[0] ? "; " : "", rec.rec.error);
     }
     if (hp.pl)
         fprintf(stderr, "%s: %ld poses tracked from the last one, %ld frames ambiguous\n", prefix, runner.tracked,
                 runner.ambiguous);
     rl_heap_recog_free(&hr);
     rl_heap_place_free(&hp);
+    if (runner.poses + runner.statuses == 0) /* nothing ever reached the line: a failed run */
+        return rl_cli_fail(C, RL_EXIT_FAIL, "no frame reached %s", s.cfg.serial);
     return 0;
 }

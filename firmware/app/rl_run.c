@@ -90,7 +90,8 @@ static void send_msg(rl_runner *r, rl_msg *m)
     }
     n = rl_frame_encode(m, buf);
     if ((e = r->io.out.write(r->io.out.ctx, buf, n)) != RL_OK) {
-        logf_(r, RL_LOG_SERIAL, "serial: write failed (%s); reopening", rl_strerror(e));
+        const char *why = r->io.out.why ? r->io.out.why(r->io.out.ctx) : NULL;
+        logf_(r, RL_LOG_SERIAL, "serial: write failed (%s); reopening", why ? why : rl_strerror(e));
         r->io.out.close(r->io.out.ctx);
         r->out_up = 0;
         r->out_retry_at = now + r->out_backoff;

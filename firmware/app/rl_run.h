@@ -47,6 +47,9 @@ typedef struct {
     rl_err (*open)(void *ctx, char *err, size_t errlen);
     rl_err (*write)(void *ctx, const uint8_t *p, size_t n);
     void (*close)(void *ctx);
+    /* the system's reason for the last failed write ("No space left on
+     * device"), or NULL (then the error code's message); may be NULL */
+    const char *(*why)(void *ctx);
     void *ctx;
 } rl_run_out;
 

@@ -1,9 +1,9 @@
 #include "rl_camfile.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 #include "rl_config.h"
+#include "rl_outfile.h"
 #include "rl_yaml.h"
 
 /* Read a matrix node {rows, cols, data: [...]} (ROS and OpenCV share this
@@ -44,7 +44,7 @@ static rl_err read_matrix(rl_yaml *y, yaml_node_t *root, const char *key, double
     }
     for (i = 0; i < n; i++) {
         yaml_node_t *it = rl_yaml_item(y, data, i);
-        if (!rl_yaml_parse_double(rl_yaml_text(it), &vals[i])) {
+        if (!rl_yaml_parse_double(rl_yaml_number_text(it), &vals[i])) {
             snprintf(label, sizeof label, "%s.data[%d]", key, i);
             return rl_yaml_fail(y, it, label, RL_EFORMAT, err, errlen, "expected a number");
         }
@@ -195,13 +195,14 @@ out:
 
 rl_err rl_camfile_save(const char *path, const rl_camera *cam, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "w");
+    rl_outfile o;
+    FILE *f;
+    rl_err e;
     int i, n = cam->model == RL_DIST_FISHEYE ? 4 : cam->model != RL_DIST_RATIONAL ? 5
              : (cam->k[8] != 0 || cam->k[9] != 0 || cam->k[10] != 0 || cam->k[11] != 0) ? 12 : 8;
-    if (f == NULL) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        return RL_EIO;
-    }
+    if ((e = rl_outfile_open(&o, path, err, errlen)) != RL_OK)
+        return e;
+    f = o.f;
     fprintf(f, "image_width: %d\nimage_height: %d\ncamera_name: ringloc\n", cam->width,
             cam->height);
     fprintf(f, "camera_matrix:\n  rows: 3\n  cols: 3\n  data: [%.9g, 0, %.9g, 0, %.9g, %.9g, 0, 0, 1]\n",
@@ -215,9 +216,5 @@ rl_err rl_camfile_save(const char *path, const rl_camera *cam, char *err, size_t
     fprintf(f, "rectification_matrix:\n  rows: 3\n  cols: 3\n  data: [1, 0, 0, 0, 1, 0, 0, 0, 1]\n");
     fprintf(f, "projection_matrix:\n  rows: 3\n  cols: 4\n  data: [%.9g, 0, %.9g, 0, 0, %.9g, %.9g, 0, 0, 0, 1, 0]\n",
             cam->fx, cam->cx, cam->fy, cam->cy);
-    if (ferror(f) | (fclose(f) != 0)) {
-        snprintf(err, errlen, "%s: write failed", path);
-        return RL_EIO;
-    }
-    return RL_OK;
+    return rl_outfile_commit(&o, err, errlen);
 }

@@ -1,16 +1,34 @@
 #include "rl_cli.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 static const char *program = "ringloc";
 
 void rl_cli_set_program(const char *name)
 {
     program = name;
+}
+
+void rl_cli_start(const char *name)
+{
+    int fd;
+    rl_cli_set_program(name);
+    /* a closed 0, 1 or 2 would be the next file opened (a recorded frame
+     * would get the pose frames meant for standard output) */
+    for (fd = 0; fd <= 2; fd++)
+        if (fcntl(fd, F_GETFD) < 0 && errno == EBADF) {
+            int n = open("/dev/null", fd == 0 ? O_RDONLY : O_WRONLY);
+            if (n >= 0 && n != fd) /* a lower one was closed too: it is reopened first */
+                close(n);
+        }
+    signal(SIGXFSZ, SIG_IGN); /* over a file-size limit: EFBIG, not a silent death */
 }
 
 void rl_cli_prefix(const char *cmd, char *out, size_t len)

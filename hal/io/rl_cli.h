@@ -22,6 +22,12 @@
 /* The program named in error lines ("ringloc" until set). */
 void rl_cli_set_program(const char *name);
 
+/* First thing in every main: rl_cli_set_program(name), descriptors 0-2
+ * opened on /dev/null where closed (no file opened later takes their
+ * place), and SIGXFSZ ignored (a file-size limit is then an error, EFBIG,
+ * reported like a full disk, instead of a silent death). */
+void rl_cli_start(const char *name);
+
 /* "PROGRAM CMD" (or "PROGRAM" when cmd is NULL or empty) into out. */
 void rl_cli_prefix(const char *cmd, char *out, size_t len);
 

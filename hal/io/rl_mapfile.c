@@ -1,12 +1,42 @@
 #include "rl_mapfile.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "rl_outfile.h"
 #include "rl_yaml.h"
 
 static const char *const top_keys[] = {"family", "diameter", "ceiling_height", "landmarks", NULL};
 static const char *const landmark_keys[] = {"id", "x", "y", "sigma_x", "sigma_y", NULL};
+
+/* A landmark's surveyed sigma_x and sigma_y: both or neither, each above 0
+ * (a survey never writes 0: it would weigh the landmark infinitely). */
+static rl_err read_sigmas(rl_yaml *y, yaml_node_t *item, int i, rl_map_landmark *lm, char *err, size_t errlen)
+{
+    static const char *const names[2] = {"sigma_x", "sigma_y"};
+    double *v[2];
+    char label[64];
+    int k;
+    rl_err e;
+    v[0] = &lm->sigma_x;
+    v[1] = &lm->sigma_y;
+    for (k = 0; k < 2; k++) {
+        yaml_node_t *n = rl_yaml_get(y, item, names[k]);
+        snprintf(label, sizeof label, "landmarks[%d].%s", i, names[k]);
+        if ((e = rl_yaml_double_in(y, item, names[k], label, 0, 0.0, 10.0, v[k], err, errlen)) != RL_OK)
+            return e;
+        if (n != NULL && !(*v[k] > 0))
+            return rl_yaml_fail(y, n, label, RL_ERANGE, err, errlen, "%g: a sigma must be above 0", *v[k]);
+        if ((n == NULL) != (rl_yaml_get(y, item, names[1 - k]) == NULL)) {
+            snprintf(label, sizeof label, "landmarks[%d]", i);
+            int has = n != NULL ? k : 1 - k;
+            return rl_yaml_fail(y, item, label, RL_EFORMAT, err, errlen, "%s without %s (give both or neither)",
+                                names[has], names[1 - has]);
+        }
+    }
+    return RL_OK;
+}
 
 rl_err rl_mapfile_load(const char *path, rl_map *map, char *err, size_t errlen)
 {
@@ -84,11 +114,7 @@ rl_err rl_mapfile_load(const char *path, rl_map *map, char *err, size_t errlen)
         if ((e = rl_yaml_double_in(&y, item, "y", label, 1, -RL_MAP_MAX_COORD, RL_MAP_MAX_COORD, &lm->y,
                                    err, errlen)) != RL_OK)
             goto out;
-        snprintf(label, sizeof label, "landmarks[%d].sigma_x", i);
-        if ((e = rl_yaml_double_in(&y, item, "sigma_x", label, 0, 0.0, 10.0, &lm->sigma_x, err, errlen)) != RL_OK)
-            goto out;
-        snprintf(label, sizeof label, "landmarks[%d].sigma_y", i);
-        if ((e = rl_yaml_double_in(&y, item, "sigma_y", label, 0, 0.0, 10.0, &lm->sigma_y, err, errlen)) != RL_OK)
+        if ((e = read_sigmas(&y, item, i, lm, err, errlen)) != RL_OK)
             goto out;
         map->count = i + 1;
     }
@@ -126,27 +152,27 @@ void rl_mapfile_put_header(FILE *f, const rl_family *fam, double diameter, doubl
 
 void rl_mapfile_put_landmark(FILE *f, const rl_map_landmark *lm)
 {
+    /* a sigma is written at least at the file's resolution (0.01 mm): 0
+     * (the survey's axis landmark across its axis) would claim a landmark
+     * known exactly, which the loader refuses */
     if (lm->sigma_x > 0 || lm->sigma_y > 0)
         fprintf(f, "  - {id: %d, x: %.5f, y: %.5f, sigma_x: %.5f, sigma_y: %.5f}\n", lm->id, lm->x, lm->y,
-                lm->sigma_x, lm->sigma_y);
+                fmax(lm->sigma_x, 1e-5), fmax(lm->sigma_y, 1e-5));
     else
         fprintf(f, "  - {id: %d, x: %.4f, y: %.4f}\n", lm->id, lm->x, lm->y);
 }
 
 rl_err rl_mapfile_save(const char *path, const rl_map *map, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "w");
+    rl_outfile o;
+    FILE *f;
+    rl_err e;
     int i;
-    if (f == NULL) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        return RL_EIO;
-    }
+    if ((e = rl_outfile_open(&o, path, err, errlen)) != RL_OK)
+        return e;
+    f = o.f;
     rl_mapfile_put_header(f, &map->family, map->diameter, map->ceiling_height);
     for (i = 0; i < map->count; i++)
         rl_mapfile_put_landmark(f, &map->lm[i]);
-    if (ferror(f) | (fclose(f) != 0)) {
-        snprintf(err, errlen, "%s: write failed", path);
-        return RL_EIO;
-    }
-    return RL_OK;
+    return rl_outfile_commit(&o, err, errlen);
 }

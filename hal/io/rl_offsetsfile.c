@@ -1,9 +1,9 @@
 #include "rl_offsetsfile.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "rl_outfile.h"
 #include "rl_yaml.h"
 
 static rl_err read_list(rl_yaml *y, yaml_node_t *root, const char *key, double *c, int n,
@@ -15,7 +15,7 @@ static rl_err read_list(rl_yaml *y, yaml_node_t *root, const char *key, double *
         return rl_yaml_fail(y, seq ? seq : root, key, RL_EFORMAT, err, errlen,
                             "expected a list of %d coefficients", n);
     for (i = 0; i < n; i++)
-        if (!rl_yaml_parse_double(rl_yaml_text(rl_yaml_item(y, seq, i)), &c[i]))
+        if (!rl_yaml_parse_double(rl_yaml_number_text(rl_yaml_item(y, seq, i)), &c[i]))
             return rl_yaml_fail(y, rl_yaml_item(y, seq, i), key, RL_EFORMAT, err, errlen,
                                 "item %d is not a number", i);
     return RL_OK;
@@ -62,12 +62,13 @@ out:
 
 rl_err rl_offsetsfile_save(const char *path, const rl_offsets *o, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "w");
+    rl_outfile out;
+    FILE *f;
+    rl_err e;
     int i, n = rl_offsets_terms(o->degree);
-    if (f == NULL) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        return RL_EIO;
-    }
+    if ((e = rl_outfile_open(&out, path, err, errlen)) != RL_OK)
+        return e;
+    f = out.f;
     fprintf(f, "type: ringloc_offsets\ndegree: %d\nu0: %.6f\nv0: %.6f\nscale: %.6f\ndistance: %.6f\n",
             o->degree, o->u0, o->v0, o->scale, o->distance);
     fprintf(f, "forward: [");
@@ -77,11 +78,7 @@ rl_err rl_offsetsfile_save(const char *path, const rl_offsets *o, char *err, siz
     for (i = 0; i < n; i++)
         fprintf(f, "%s%.12g", i ? ", " : "", o->cy[i]);
     fprintf(f, "]\n");
-    if (ferror(f) | (fclose(f) != 0)) {
-        snprintf(err, errlen, "%s: write failed", path);
-        return RL_EIO;
-    }
-    return RL_OK;
+    return rl_outfile_commit(&out, err, errlen);
 }
 
 /* Solve the normal equations A c = b (n x n) by Gaussian elimination. */

@@ -11,6 +11,8 @@
 #include <sys/stat.h>
 #include <strings.h>
 #include <unistd.h>
+#include "rl_infile.h"
+#include "rl_outfile.h"
 
 /* libpng reports through callbacks and longjmp; this carries the message
  * back to the caller so that the file name and libpng's reason reach the
@@ -142,15 +144,10 @@ static void to_grey(const uint8_t *s, int channels, png_uint_32 w, uint8_t *d)
 static rl_err open_png(png_reader *r, const char *path, png_uint_32 *w, png_uint_32 *h, char *err,
                        size_t errlen)
 {
-    struct stat st;
     char what[220];
-    do
-        r->fd = open(path, O_RDONLY | O_CLOEXEC);
-    while (r->fd < 0 && errno == EINTR);
-    if (r->fd < 0)
-        return fail(err, errlen, errno == ENOENT ? RL_ENOTFOUND : RL_EIO, path, strerror(errno));
-    if (fstat(r->fd, &st) == 0 && S_ISDIR(st.st_mode))
-        return fail(err, errlen, RL_EFORMAT, path, "a folder, not a PNG image");
+    rl_err e;
+    if ((r->fd = rl_infile_open(path, "a PNG image", &e, err, errlen)) < 0)
+        return e;
     r->pos = r->len = 0;
     while (r->len < 24) {
         ssize_t got = read(r->fd, r->buf + r->len, 24 - r->len);
@@ -355,47 +352,71 @@ rl_err rl_png_size(const char *path, int *w, int *h, char *err, size_t errlen)
     return e;
 }
 
-static rl_err write_png(const char *path, int w, int h, int color_type, const uint8_t *data,
-                        size_t stride, char *err, size_t errlen)
-{
-    FILE *f;
-    png_structp png;
-    png_infop info = NULL;
-    png_ctx ctx;
-    int y;
-    char what[220];
+/* libpng's write callbacks: into the outfile, whose first failure (with
+ * its errno) ends the write through libpng's error path. */
+typedef struct {
+    png_ctx ctx; /* first: libpng's error pointer */
+    rl_outfile out;
+} png_writer;
 
-    if (path == NULL || data == NULL || w <= 0 || h <= 0)
-        return fail(err, errlen, RL_EINVAL, path ? path : "(null)", "nothing to write");
-    f = fopen(path, "wb");
-    if (f == NULL)
-        return fail(err, errlen, RL_EIO, path, strerror(errno));
-    png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &ctx, on_error, on_warning);
-    if (png != NULL)
-        info = png_create_info_struct(png);
-    if (png == NULL || info == NULL) {
-        png_destroy_write_struct(&png, NULL);
-        fclose(f);
-        return fail(err, errlen, RL_ENOMEM, path, "out of memory");
-    }
-    ctx.msg[0] = '\0';
-    if (setjmp(ctx.jmp)) {
-        png_destroy_write_struct(&png, &info);
-        fclose(f);
-        snprintf(what, sizeof what, "cannot write PNG (%s)", ctx.msg);
-        return fail(err, errlen, RL_EIO, path, what);
-    }
-    png_init_io(png, f);
+static void on_write(png_structp png, png_bytep data, png_size_t n)
+{
+    png_writer *pw = (png_writer *)png_get_io_ptr(png);
+    if (rl_outfile_write(&pw->out, data, n) != 0)
+        png_error(png, strerror(pw->out.errnum));
+}
+
+static void on_flush(png_structp png)
+{
+    (void)png; /* the commit flushes */
+}
+
+static void write_rows(png_structp png, png_infop info, int w, int h, int color_type,
+                       const uint8_t *data, size_t stride)
+{
+    int y;
     png_set_IHDR(png, info, (png_uint_32)w, (png_uint_32)h, 8, color_type, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
     for (y = 0; y < h; y++)
         png_write_row(png, (png_const_bytep)(data + (size_t)y * stride));
     png_write_end(png, info);
+}
+
+static rl_err write_png(const char *path, int w, int h, int color_type, const uint8_t *data,
+                        size_t stride, char *err, size_t errlen)
+{
+    png_structp png;
+    png_infop info = NULL;
+    png_writer pw;
+    rl_err e;
+
+    if (path == NULL || data == NULL || w <= 0 || h <= 0)
+        return fail(err, errlen, RL_EINVAL, path ? path : "(null)", "nothing to write");
+    if ((e = rl_outfile_open(&pw.out, path, err, errlen)) != RL_OK)
+        return e;
+    png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &pw.ctx, on_error, on_warning);
+    if (png != NULL)
+        info = png_create_info_struct(png);
+    if (png == NULL || info == NULL) {
+        png_destroy_write_struct(&png, NULL);
+        rl_outfile_abort(&pw.out);
+        return fail(err, errlen, RL_ENOMEM, path, "out of memory");
+    }
+    pw.ctx.msg[0] = '\0';
+    if (setjmp(pw.ctx.jmp)) {
+        char what[220];
+        png_destroy_write_struct(&png, &info);
+        if (pw.out.errnum != 0) /* the system's reason, from the commit */
+            return rl_outfile_commit(&pw.out, err, errlen);
+        rl_outfile_abort(&pw.out);
+        snprintf(what, sizeof what, "cannot write PNG (%s)", pw.ctx.msg);
+        return fail(err, errlen, RL_EIO, path, what);
+    }
+    png_set_write_fn(png, &pw, on_write, on_flush);
+    write_rows(png, info, w, h, color_type, data, stride);
     png_destroy_write_struct(&png, &info);
-    if (fclose(f) != 0)
-        return fail(err, errlen, RL_EIO, path, strerror(errno));
-    return RL_OK;
+    return rl_outfile_commit(&pw.out, err, errlen);
 }
 
 rl_err rl_png_write_gray(const char *path, const rl_image *img, char *err, size_t errlen)

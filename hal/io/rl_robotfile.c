@@ -1,8 +1,8 @@
 #include "rl_robotfile.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include "rl_outfile.h"
 #include "rl_yaml.h"
 
 static const char *const top_keys[] = {"camera_mount", NULL};
@@ -39,20 +39,17 @@ out:
 
 rl_err rl_robotfile_save(const char *path, const rl_mount *m, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "w");
-    if (f == NULL) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        return RL_EIO;
-    }
+    rl_outfile o;
+    FILE *f;
+    rl_err e;
+    if ((e = rl_outfile_open(&o, path, err, errlen)) != RL_OK)
+        return e;
+    f = o.f;
     fprintf(f, "# camera optical centre in the robot frame (REP-103), z above the floor\n");
     if (m->roll != 0 || m->pitch != 0)
         fprintf(f, "camera_mount: {x: %.4f, y: %.4f, z: %.4f, yaw: %.6f, roll: %.6f, pitch: %.6f}\n", m->x, m->y,
                 m->z, m->yaw, m->roll, m->pitch);
     else
         fprintf(f, "camera_mount: {x: %.4f, y: %.4f, z: %.4f, yaw: %.6f}\n", m->x, m->y, m->z, m->yaw);
-    if (ferror(f) | (fclose(f) != 0)) {
-        snprintf(err, errlen, "%s: write failed", path);
-        return RL_EIO;
-    }
-    return RL_OK;
+    return rl_outfile_commit(&o, err, errlen);
 }

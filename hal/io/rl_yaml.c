@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "rl_infile.h"
 
 /* Largest configuration file read; ringloc's files are a few kB. */
 #define RL_YAML_MAX_BYTES (4L << 20)
@@ -69,6 +70,37 @@ static int duplicate_key(yaml_document_t *doc, yaml_node_t **first, yaml_node_t 
     return 0;
 }
 
+/* A file is one document: a second one (after "---" or text after
+ * "..."), even a malformed one, is an error, never silently ignored. */
+static int one_document(yaml_parser_t *parser, const char *path, char *err, size_t errlen)
+{
+    yaml_document_t next;
+    int more;
+    if (!yaml_parser_load(parser, &next)) {
+        snprintf(err, errlen, "%s:%lu: a second YAML document, and malformed (ringloc files hold one)", path,
+                 (unsigned long)parser->problem_mark.line + 1);
+        return 0;
+    }
+    more = yaml_document_get_root_node(&next) != NULL;
+    if (more)
+        snprintf(err, errlen, "%s:%lu: a second YAML document (ringloc files hold one)", path,
+                 (unsigned long)next.start_mark.line + 1);
+    yaml_document_delete(&next);
+    return !more;
+}
+
+/* A scalar with an explicit tag ("!!str 5", "!!float 1") is not a plain
+ * number: it is marked as a quoted scalar, which no number reader takes.
+ * libyaml gives untagged and !!str scalars the same tag, so the source
+ * text (where the node starts with its properties) tells them apart. */
+static void mark_tagged(yaml_document_t *doc, const char *text)
+{
+    yaml_node_t *n;
+    for (n = doc->nodes.start; n < doc->nodes.top; n++)
+        if (n->type == YAML_SCALAR_NODE && text[n->start_mark.index] == '!')
+            n->data.scalar.style = YAML_SINGLE_QUOTED_SCALAR_STYLE;
+}
+
 rl_err rl_yaml_load(rl_yaml *y, const char *path, char *err, size_t errlen)
 {
     FILE *f;
@@ -78,10 +110,10 @@ rl_err rl_yaml_load(rl_yaml *y, const char *path, char *err, size_t errlen)
     int ok;
     memset(y, 0, sizeof *y);
     y->path = path;
-    f = fopen(path, "rb");
-    if (f == NULL) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        return errno == ENOENT ? RL_ENOTFOUND : RL_EIO;
+    {
+        rl_err e;
+        if ((f = rl_infile_fopen(path, "a YAML file", &e, err, errlen)) == NULL)
+            return e;
     }
     text = (char *)malloc(RL_YAML_MAX_BYTES + 1);
     if (text == NULL) {
@@ -134,9 +166,16 @@ rl_err rl_yaml_load(rl_yaml *y, const char *path, char *err, size_t errlen)
         free(text);
         return RL_EFORMAT;
     }
+    y->loaded = 1;
+    if (!one_document(&parser, path, err, errlen)) {
+        yaml_parser_delete(&parser);
+        free(text);
+        rl_yaml_free(y);
+        return RL_EFORMAT;
+    }
+    mark_tagged(&y->doc, text);
     yaml_parser_delete(&parser);
     free(text);
-    y->loaded = 1;
     if (yaml_document_get_root_node(&y->doc) == NULL) {
         snprintf(err, errlen, "%s: empty file, expected a YAML mapping", path);
         rl_yaml_free(y);
@@ -201,6 +240,13 @@ const char *rl_yaml_text(yaml_node_t *node)
     return (const char *)node->data.scalar.value;
 }
 
+const char *rl_yaml_number_text(yaml_node_t *node)
+{
+    if (node == NULL || node->type != YAML_SCALAR_NODE || node->data.scalar.style != YAML_PLAIN_SCALAR_STYLE)
+        return NULL; /* "5" and '5' are strings, as a YAML reader takes them */
+    return (const char *)node->data.scalar.value;
+}
+
 rl_err rl_yaml_fail(rl_yaml *y, yaml_node_t *node, const char *key, rl_err code, char *err,
                     size_t errlen, const char *fmt, ...)
 {
@@ -250,6 +296,8 @@ int rl_yaml_parse_double(const char *s, double *out)
     double v;
     if (s == NULL || *s == '\0')
         return 0;
+    if (strpbrk(s, "xX") != NULL) /* strtod's hex floats are no YAML number */
+        return 0;
     errno = 0;
     v = strtod(s, &end);
     if (end == s || *end != '\0' || errno == ERANGE || !isfinite(v))
@@ -277,7 +325,7 @@ rl_err rl_yaml_double(rl_yaml *y, yaml_node_t *map, const char *key, const char 
     n = lookup(y, map, key, label, required, &e, err, errlen);
     if (n == NULL)
         return e;
-    if (!rl_yaml_parse_double(rl_yaml_text(n), out))
+    if (!rl_yaml_parse_double(rl_yaml_number_text(n), out))
         return rl_yaml_fail(y, n, label, RL_EFORMAT, err, errlen, "expected a number, got %s%s%s",
                             rl_yaml_text(n) ? "'" : "", rl_yaml_text(n) ? rl_yaml_text(n) : "a list or mapping",
                             rl_yaml_text(n) ? "'" : "");
@@ -310,14 +358,15 @@ rl_err rl_yaml_int(rl_yaml *y, yaml_node_t *map, const char *key, const char *la
     n = lookup(y, map, key, label, required, &e, err, errlen);
     if (n == NULL)
         return e;
-    s = rl_yaml_text(n);
+    s = rl_yaml_number_text(n);
     errno = 0;
     v = s ? strtol(s, &end, 10) : 0;
-    if (s == NULL || *s == '\0' || *end != '\0' || errno == ERANGE || v < -2147483647L ||
-        v > 2147483647L)
+    if (s == NULL || *s == '\0' || *end != '\0')
         return rl_yaml_fail(y, n, label, RL_EFORMAT, err, errlen,
-                            "expected an integer, got %s%s%s", s ? "'" : "",
-                            s ? s : "a list or mapping", s ? "'" : "");
+                            "expected an integer, got %s%s%s", rl_yaml_text(n) ? "'" : "",
+                            rl_yaml_text(n) ? rl_yaml_text(n) : "a list or mapping", rl_yaml_text(n) ? "'" : "");
+    if (errno == ERANGE || v < -2147483647L || v > 2147483647L)
+        return rl_yaml_fail(y, n, label, RL_ERANGE, err, errlen, "%s is out of range (-2147483647 .. 2147483647)", s);
     *out = (int)v;
     return RL_OK;
 }

@@ -43,6 +43,9 @@ yaml_node_t *rl_yaml_item(rl_yaml *y, yaml_node_t *seq, int i);
 int rl_yaml_len(yaml_node_t *seq); /* items of a sequence, -1 if not one */
 
 /* Scalar text of a node, or NULL if it is not a scalar. */
+/* The text of a plain scalar (unquoted, untagged), the only kind read as
+ * a number; NULL for any other node. */
+const char *rl_yaml_number_text(yaml_node_t *node);
 const char *rl_yaml_text(yaml_node_t *node);
 
 /* Format an error about `node` (may be NULL) and key name into err;

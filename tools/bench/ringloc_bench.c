@@ -18,6 +18,7 @@
 #include <string.h>
 #include <apriltag/apriltag.h>
 #include <apriltag/tag36h11.h>
+#include "rl_cli.h"
 #include "rl_camfile.h"
 #include "rl_mapfile.h"
 #include "rl_png.h"
@@ -254,6 +255,7 @@ int main(int argc, char **argv)
     apriltag_detector_t *td;
     cpu_set_t one;
     int i, rc = 0, header = 0;
+    rl_cli_start("ringloc-bench");
     if (argc < 2 || strcmp(argv[1], "--help") == 0) {
         fprintf(argc < 2 ? stderr : stdout,
                 "usage: ringloc-bench DIR... [--local GLARE_DIR] [--pose DRIVE_DIR] [--site SITE_DIR]\n"

@@ -18,8 +18,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "rl_cli.h"
 #include "rl_camfile.h"
 #include "rl_mapfile.h"
+#include "rl_outfile.h"
 #include "rl_pose_fit.h"
 #include "rl_robotfile.h"
 
@@ -108,12 +110,14 @@ int main(int argc, char **argv)
     int n = 0;
     rl_camera cam;
     rl_mount mount;
+    rl_outfile o;
     rl_family fam = {6};
     rl_pose_model md;
     char path[1024], err[512];
     FILE *f;
     double row_len, L;
 
+    rl_cli_start("ringloc-survey-synth");
     while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
         switch (c) {
         case 'o': out = optarg; break;
@@ -162,17 +166,20 @@ int main(int argc, char **argv)
     if (rl_robotfile_save(path, &mount, err, sizeof err) != RL_OK)
         return fprintf(stderr, "ringloc-survey-synth: %s\n", err), 1;
     snprintf(path, sizeof path, "%s/map_true.yaml", out);
-    if ((f = fopen(path, "w")) == NULL)
-        return perror(path), 1;
+    if (rl_outfile_open(&o, path, err, sizeof err) != RL_OK)
+        return fprintf(stderr, "ringloc-survey-synth: %s\n", err), 1;
+    f = o.f;
     rl_mapfile_put_header(f, &fam, 0.21, HEIGHT);
     for (i = 0; i < n; i++) {
         rl_map_landmark lm = {site[i].id, site[i].x, site[i].y, 0, 0};
         rl_mapfile_put_landmark(f, &lm);
     }
-    fclose(f);
+    if (rl_outfile_commit(&o, err, sizeof err) != RL_OK)
+        return fprintf(stderr, "ringloc-survey-synth: %s\n", err), 1;
     snprintf(path, sizeof path, "%s/detect.jsonl", out);
-    if ((f = fopen(path, "w")) == NULL)
-        return perror(path), 1;
+    if (rl_outfile_open(&o, path, err, sizeof err) != RL_OK)
+        return fprintf(stderr, "ringloc-survey-synth: %s\n", err), 1;
+    f = o.f;
     rl_pose_fit_model(&md, &mount, HEIGHT, 0.105);
     row_len = (cols - 1) * PITCH;
     L = rows * row_len + (rows - 1) * PITCH;
@@ -230,6 +237,7 @@ int main(int argc, char **argv)
         }
         fprintf(f, "]}\n");
     }
-    fclose(f);
+    if (rl_outfile_commit(&o, err, sizeof err) != RL_OK)
+        return fprintf(stderr, "ringloc-survey-synth: %s\n", err), 1;
     return 0;
 }

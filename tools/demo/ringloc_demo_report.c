@@ -12,7 +12,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "rl_cli.h"
 #include "rl_mapfile.h"
+#include "rl_print.h"
 #include "rl_yaml.h"
 
 #define MAX_FRAMES 4096
@@ -57,6 +59,7 @@ static int load_truth(const char *dir, row *r)
 static void plot(const char *path, const rl_map *map, int n)
 {
     int W = 900, H = 760, i;
+    char err[1200];
     double minx = 0, maxx = 0, miny = 0, maxy = 0, s, ox, oy;
     cairo_surface_t *surf = cairo_image_surface_create(CAIRO_FORMAT_RGB24, W, H);
     cairo_t *cr = cairo_create(surf);
@@ -113,9 +116,8 @@ static void plot(const char *path, const rl_map *map, int n)
     cairo_move_to(cr, 40, H - 30);
     cairo_show_text(cr, "grey: ceiling landmarks of the map with their ids; x right, y up, metres");
     cairo_destroy(cr);
-    if (cairo_surface_write_to_png(surf, path) != CAIRO_STATUS_SUCCESS)
-        fprintf(stderr, "ringloc-demo-report: %s: cannot write\n", path);
-    cairo_surface_destroy(surf);
+    if (rl_print_surface_png(surf, path, err, sizeof err) != RL_OK)
+        fprintf(stderr, "ringloc-demo-report: %s\n", err);
 }
 
 int main(int argc, char **argv)
@@ -126,6 +128,7 @@ int main(int argc, char **argv)
     int n = 0, i, poses = 0, statuses = 0, used = 0;
     double pos = 0, yaw = 0, worst = 0, lat = 0;
     const char *slash;
+    rl_cli_start("ringloc-demo-report");
     if (argc != 5) {
         fprintf(stderr, "usage: ringloc-demo-report FRAMES.txt POSES.jsonl MAP.yaml PLOT.png\n");
         return 2;

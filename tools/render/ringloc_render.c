@@ -23,10 +23,12 @@
 #include <sys/stat.h>
 #include <apriltag/apriltag.h>
 #include <apriltag/tag36h11.h>
+#include "rl_cli.h"
 #include "rl_camera.h"
 #include "rl_camfile.h"
 #include "rl_family.h"
 #include "rl_mapfile.h"
+#include "rl_outfile.h"
 #include "rl_png.h"
 #include "rl_robotfile.h"
 #include "render_sensor.h"
@@ -830,10 +832,13 @@ static double light_gap(const scene *s, const object *o)
 static int write_truth(const char *path, const char *image, const scene *s, double rx, double ry,
                        double ryaw)
 {
-    FILE *f = fopen(path, "w");
+    rl_outfile out;
+    FILE *f;
+    char err[1200];
     int i, n = 0;
-    if (!f)
-        return -1;
+    if (rl_outfile_open(&out, path, err, sizeof err) != RL_OK)
+        return fprintf(stderr, "ringloc-render: %s\n", err), -1;
+    f = out.f;
     fprintf(f, "image: %s\nwidth: %d\nheight: %d\nfamily: ring%d\ndiameter: %.4f\n", image,
             s->cam.width, s->cam.height, s->fam.bits, s->diameter);
     fprintf(f, "distance: %.4f\ncamera: {x: %.6f, y: %.6f, yaw: %.6f}\n", s->distance, s->cx, s->cy, s->yaw);
@@ -866,7 +871,9 @@ static int write_truth(const char *path, const char *image, const scene *s, doub
             s->se.full_well, s->se.defocus, s->se.tone == RENDER_TONE_SRGB ? "srgb" : "gamma2.2",
             s->se.adc_bits, s->motion / s->distance * s->cam.fx, s->motion_turn);
     fprintf(f, "sheet: {width: %.4f, height: %.4f, ceiling: %.3f}\n", s->sheet_w, s->sheet_h, s->ceiling);
-    return fclose(f);
+    if (rl_outfile_commit(&out, err, sizeof err) != RL_OK)
+        return fprintf(stderr, "ringloc-render: %s\n", err), -1;
+    return 0;
 }
 
 /* ---- command line ---- */
@@ -1020,6 +1027,7 @@ int main(int argc, char **argv)
     char err[512], name[1024], file[1200];
     uint8_t *px;
 
+    rl_cli_start("ringloc-render");
     while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
         switch (c) {
         case 'o': out = optarg; break;
@@ -1306,13 +1314,8 @@ int main(int argc, char **argv)
         {
             char truth[1200];
             snprintf(truth, sizeof truth, "%s/%s.yaml", out, name);
-            if (write_truth(truth, file, &s, rx, ry, ryaw) == 0)
-                continue;
-            snprintf(file, sizeof file, "%s", truth);
-        }
-        {
-            fprintf(stderr, "ringloc-render: %s: %s\n", file, strerror(errno));
-            return 1;
+            if (write_truth(truth, file, &s, rx, ry, ryaw) != 0)
+                return 1; /* the line is printed */
         }
     }
     free(px);

@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "rl_cli.h"
 #include "rl_camfile.h"
 #include "rl_clock.h"
 #include "rl_heap_recog.h"
@@ -147,6 +148,7 @@ int main(int argc, char **argv)
     double every = 3.0, t0, t1;
     int c, bad = 0;
     const char *dir;
+    rl_cli_start("ringloc-soak");
     while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
         switch (c) {
         case 'n': frames = atol(optarg); break;
