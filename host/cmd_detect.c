@@ -51,7 +51,7 @@ int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config
         else if (strcmp(arg, "never") == 0) cfg->local = RL_LOCAL_NEVER;
         else return rl_cli_fail(cmd, RL_EXIT_USAGE, "--local: '%s' is not auto, always or never", arg), -1;
         return 1;
-    case 'g':
+    case 'Y': /* --gamma */
         if (strcmp(arg, "auto") == 0) {
             cfg->gamma = 0;
             return 1;
@@ -90,7 +90,7 @@ int rl_cmd_detect(int argc, char **argv)
     static const struct option opts[] = {
         {"family", required_argument, 0, 'f'}, {"map", required_argument, 0, 'm'},
         {"annotate", required_argument, 0, 'a'}, {"local", required_argument, 0, 'L'},
-        {"min-score", required_argument, 0, 's'}, {"gamma", required_argument, 0, 'g'},
+        {"min-score", required_argument, 0, 's'}, {"gamma", required_argument, 0, 'Y'},
         {"help", no_argument, 0, 'h'},
         {0, 0, 0, 0}};
     const char *C = "detect", *family = NULL, *map_path = NULL, *annotate = NULL;

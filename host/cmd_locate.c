@@ -56,7 +56,7 @@ int rl_cmd_locate(int argc, char **argv)
         {"camera", required_argument, 0, 'c'}, {"map", required_argument, 0, 'm'},
         {"robot", required_argument, 0, 'r'}, {"offsets", required_argument, 0, 'o'},
         {"annotate", required_argument, 0, 'a'}, {"local", required_argument, 0, 'L'},
-        {"min-score", required_argument, 0, 's'}, {"gamma", required_argument, 0, 'g'},
+        {"min-score", required_argument, 0, 's'}, {"gamma", required_argument, 0, 'Y'},
         {"size", required_argument, 0, 'z'},
         {"interval", required_argument, 0, 'i'}, {"alone", no_argument, 0, 'A'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};

@@ -366,7 +366,7 @@ int rl_cmd_sitecheck(int argc, char **argv)
         {"rounds", required_argument, 0, 'n'}, {"seed", required_argument, 0, 'S'},
         {"local", required_argument, 0, 'L'}, {"out", required_argument, 0, 'o'},
         {"json", no_argument, 0, 'j'}, {"sheet", required_argument, 0, 'P'},
-        {"gamma", required_argument, 0, 'g'},
+        {"gamma", required_argument, 0, 'Y'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     const char *C = "site-check", *family = "ring5", *mapfile = NULL, *camera = NULL;
     static rl_map map;
@@ -397,7 +397,7 @@ int rl_cmd_sitecheck(int argc, char **argv)
         case 'Z': if (!rl_cli_double(C, "--distance", optarg, 0.05, 100, &distance)) return RL_EXIT_USAGE; break;
         case 'n': if (!rl_cli_int(C, "--rounds", optarg, 1, 100, &k.rounds)) return RL_EXIT_USAGE; break;
         case 'S': if (!rl_cli_int(C, "--seed", optarg, 0, 2147483647L, &seed)) return RL_EXIT_USAGE; break;
-        case 'g':
+        case 'Y':
         case 'L':
             if (rl_cli_recog_option(C, c, optarg, &cfg, &family) < 0)
                 return RL_EXIT_USAGE;

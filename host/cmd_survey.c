@@ -74,7 +74,7 @@ static int parse(int argc, char **argv, survey_args *a, rl_survey_config *cfg, r
         {"ceiling-height", required_argument, 0, 'H'}, {"axis-distance", required_argument, 0, 'D'},
         {"map", required_argument, 0, 'm'}, {"plot", required_argument, 0, 'p'},
         {"gate", required_argument, 0, 'g'}, {"local", required_argument, 0, 'L'},
-        {"min-score", required_argument, 0, 's'}, {"gamma", required_argument, 0, 'g'},
+        {"min-score", required_argument, 0, 's'}, {"gamma", required_argument, 0, 'Y'},
         {"out", required_argument, 0, 'o'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     const char *C = "survey";

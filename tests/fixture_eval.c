@@ -128,6 +128,12 @@ void eval_frame(const truth *t, const rl_result *res, eval_counts *c, int verbos
             found = hypot(d->u - l->u, d->v - l->v) < 0.5 * l->radius;
         }
         if (l->visible >= 1.0) {
+            for (j = 0; j < t->n; j++)
+                if (j != i && t->lm[j].id == l->id && t->lm[j].visible > 0) {
+                    c->twin++;
+                    c->twin_ident += ident;
+                    break;
+                }
             if (l->id > 0 && l->id < RL_MAX_IDS) {
                 c->id_complete[l->id]++;
                 c->id_ident[l->id] += ident;

@@ -31,6 +31,7 @@ typedef struct {
     int centre_n;
     int local_found;
     int id_complete[RL_MAX_IDS], id_ident[RL_MAX_IDS]; /* complete landmarks per id */
+    int twin, twin_ident; /* complete landmarks whose id another one in the frame holds too */
 } eval_counts;
 
 /* Load NAME.yaml next to NAME.png; 0 on success, else prints why. */

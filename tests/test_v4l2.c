@@ -401,6 +401,7 @@ static void test_mjpeg_gives_the_same_landmarks(void **state)
     assert_non_null(strstr(c.info, "MJPG"));
     assert_int_equal(rl_cam_grab(&c, 100, &f), RL_OK);
     rl_recog_defaults(&rc);
+    rc.gamma = 2.2; /* one tone curve for both frames: a learned one may move between them */
     rl_heap_recog_init(&hr, &rc);
     assert_int_equal(rl_heap_recog_run(&hr, &src, &a), RL_OK);
     assert_int_equal(rl_heap_recog_run(&hr, &f.img, &b), RL_OK);

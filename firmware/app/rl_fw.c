@@ -342,7 +342,11 @@ int rl_fw_main(const char *C, int argc, char **argv)
             runner.bad_frames, runner.camera_timeouts, runner.serial_errors, runner.dropped,
             stop_flag ? (octx.s.broken ? " (standard output closed)" : " (stopped by signal)") : "");
     if (recording) {
+        const char *news;
         rl_record_stop(&rec.rec);
+        /* a stop the writer met after the last frame is logged now */
+        if ((news = rl_record_news(&rec.rec)) != NULL)
+            log_line((void *)prefix, news);
         fprintf(stderr, "%s: recorded %ld frames (%.1f MB) to %s, %ld skipped while the disk was behind%s%s\n",
                 prefix, rec.rec.saved, rec.rec.bytes / 1e6, rec.rec.dir, rec.rec.skipped,
                 rec.rec.error[0] ? "; " : "", rec.rec.error);

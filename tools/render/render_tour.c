@@ -32,6 +32,27 @@ void render_random_poses(const render_area *a, unsigned long seed, int n, render
     }
 }
 
+void render_edge(const render_area *a, unsigned long seed, int n, double step, render_pose *out)
+{
+    uint64_t s = start(seed, 0x65646765ull);
+    double x = a->x0 + 1.5, y = a->y0 + 1.0, yaw = -M_PI / 2, phase = uniform(&s, 0, 2 * M_PI);
+    int k;
+    for (k = 0; k < n; k++) {
+        if (k > 0) {
+            /* head out of the site, then turn along its edge, weaving */
+            double want = y > a->y0 - 0.75 ? -M_PI / 2 : 0.25 * sin(phase + 0.2 * k) + 0.6 * (a->y0 - 0.75 - y);
+            double d = atan2(sin(want - yaw), cos(want - yaw));
+            yaw += fmax(-0.25, fmin(0.25, d));
+            x += step * cos(yaw);
+            y += step * sin(yaw);
+        }
+        out[k].x = x;
+        out[k].y = y;
+        out[k].yaw = atan2(sin(yaw), cos(yaw));
+        out[k].jumped = 0;
+    }
+}
+
 void render_tour(const render_area *a, unsigned long seed, int n, double step, render_pose *out)
 {
     uint64_t s = start(seed, 0x746F7572ull);

@@ -27,4 +27,9 @@ void render_random_poses(const render_area *a, unsigned long seed, int n, render
 /* n poses of a drive, step metres apart, carried to a random place at n / 2. */
 void render_tour(const render_area *a, unsigned long seed, int n, double step, render_pose *out);
 
+/* n poses of a drive past the site's edge, step metres apart: from 1 m
+ * inside its lower edge (y0) out to 0.75 m beyond it, then along it
+ * weaving, so that frames show one row of two to four landmarks. */
+void render_edge(const render_area *a, unsigned long seed, int n, double step, render_pose *out);
+
 #endif

@@ -919,7 +919,8 @@ static const char *help =
     "  --site-map FILE a large site's map (ringloc plan --area; any size, ids repeated):\n"
     "                  frames under it with --path random (poses uniform over the\n"
     "                  landmarks' extent, any heading) or --path tour (a drive over the\n"
-    "                  site, 0.1 m a frame, carried elsewhere halfway); its family,\n"
+    "                  site, 0.1 m a frame, carried elsewhere halfway) or --path edge (a\n"
+    "                  drive out past the lower edge and along it: one row in view); its family,\n"
     "                  diameter and ceiling height\n";
 
 /* mkdir -p */
@@ -1201,8 +1202,8 @@ int main(int argc, char **argv)
         }
         if (site_path) {
             render_area area = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-            if (strcmp(path, "random") != 0 && strcmp(path, "tour") != 0) {
-                fprintf(stderr, "ringloc-render: --path: with --site-map, random or tour ('%s')\n", path);
+            if (strcmp(path, "random") != 0 && strcmp(path, "tour") != 0 && strcmp(path, "edge") != 0) {
+                fprintf(stderr, "ringloc-render: --path: with --site-map, random, tour or edge ('%s')\n", path);
                 return 2;
             }
             for (i = 0; i < site_map.count; i++) {
@@ -1218,6 +1219,8 @@ int main(int argc, char **argv)
             }
             if (strcmp(path, "random") == 0)
                 render_random_poses(&area, seed, count, poses);
+            else if (strcmp(path, "edge") == 0)
+                render_edge(&area, seed, count, 0.1, poses);
             else
                 render_tour(&area, seed, count, 0.1, poses);
         } else if (path_pose(path, 0, 2, &x, &y, &yaw) != 0) {
