@@ -13,6 +13,7 @@
 #include "rl_local.h"
 #include "rl_recog_state.h"
 #include "rl_result.h"
+#include "rl_twins.h"
 
 void rl_recog_defaults(rl_recog_config *cfg)
 {
@@ -280,6 +281,10 @@ rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
         rl_local_pass(rec, img, res);
         rl_filter_duplicates(res);
     }
+    /* while the camera's tone curve is being learned, no landmark whose
+     * zone twin reads better through the other curve */
+    if (rl_tones_doubt(&rec->tones, rec->tone) != NULL)
+        rl_twins_check(rec, img, rl_tones_doubt(&rec->tones, rec->tone), res);
     /* 6. the frame's landmarks: consistent sizes, in order */
     rl_filter_size(res, rec->cfg.size_tolerance);
     rl_filter_sort(res);

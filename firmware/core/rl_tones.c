@@ -1,10 +1,15 @@
 #include "rl_tones.h"
 
 #include <math.h>
+#include <stddef.h>
 
 /* Votes of past frames fade by this much a frame: a change of camera
  * settings is followed within some twenty frames. */
 #define VOTE_FADE 0.9
+/* Votes the other curve must lead by to become the current one. */
+#define SWITCH_LEAD 1.0
+/* Landmarks more that make a frame's own choice clear. */
+#define CLEAR_LEAD 2
 
 void rl_tones_init(rl_tones *ts, double gamma)
 {
@@ -36,20 +41,37 @@ int rl_tones_to_try(const rl_tones *ts, int *which)
 
 int rl_tones_vote(rl_tones *ts, const int *which, int n, const int *identified, const double *score)
 {
-    int k, best = 0;
+    int k, best = 0, other, cur = 0;
+    (void)score;
     ts->frames++;
     if (n < 2)
         return 0;
+    /* which[0] is the current curve: another is better only with more */
     for (k = 1; k < n; k++)
-        if (identified[k] > identified[best] || (identified[k] == identified[best] && score[k] > score[best]))
+        if (identified[k] > identified[best])
             best = k;
-    if (identified[best] == 0)
-        return 0; /* nothing to learn from: the current curve stays */
+    other = best == 0 ? 1 : 0;
     for (k = 0; k < ts->n; k++)
         ts->votes[k] *= VOTE_FADE;
-    ts->votes[which[best]] += 1.0;
-    ts->current = ts->votes[0] >= ts->votes[1] ? 0 : 1;
-    return best;
+    if (identified[best] > identified[other])
+        ts->votes[which[best]] += 1.0;
+    /* the current curve changes when the other leads it clearly */
+    if (ts->votes[1 - ts->current] > ts->votes[ts->current] + SWITCH_LEAD)
+        ts->current = 1 - ts->current;
+    /* the frame: read through what it says clearly, else the current curve */
+    if (identified[best] >= identified[other] + CLEAR_LEAD)
+        return best;
+    for (k = 0; k < n; k++)
+        if (which[k] == ts->current)
+            cur = k;
+    return cur;
+}
+
+const rl_tone *rl_tones_doubt(const rl_tones *ts, const rl_tone *used)
+{
+    if (settled(ts))
+        return NULL;
+    return used == &ts->tone[0] ? &ts->tone[1] : &ts->tone[0];
 }
 
 const rl_tone *rl_tones_current(const rl_tones *ts)

@@ -7,10 +7,12 @@
  * gamma off (1). Read through the wrong curve, blurred zones swell or
  * shrink and a few landmarks pass for their zone twins, so the curve is
  * not guessed: while unsettled, each frame's candidates are read through
- * both and the curve that identifies more of them (then with the higher
- * scores) is the frame's, and earns a vote. Once one curve leads by
- * RL_TONES_SETTLE votes only it is read, and both again every
- * RL_TONES_RECHECK frames (a camera's settings can change).
+ * both, and the curve that identifies more of them earns a vote (the
+ * votes of past frames fade). The current curve (2.2 at first) gives way
+ * when the other leads it by a vote; a frame is read through the current
+ * curve unless the other identifies two landmarks more there. Once one
+ * curve leads by RL_TONES_SETTLE votes only it is read, and both again
+ * every RL_TONES_RECHECK frames (a camera's settings can change).
  *
  *   rl_tones ts;
  *   int which[RL_TONES_MAX], n = 0, k;
@@ -46,13 +48,17 @@ void rl_tones_init(rl_tones *ts, double gamma);
  * current one first), their count. */
 int rl_tones_to_try(const rl_tones *ts, int *which);
 
-/* After a frame read through the n curves of which[]: identified[k]
- * landmarks with scores summing to score[k] through which[k]. The better
- * becomes current, with a vote (and the votes of past frames fade); its
- * index into which[] is returned. */
+/* After a frame read through the n curves of which[] (the current one
+ * first): identified[k] landmarks with scores summing to score[k] through
+ * which[k]. The votes and the current curve as above; the index into
+ * which[] of the curve the frame is to be read through is returned. */
 int rl_tones_vote(rl_tones *ts, const int *which, int n, const int *identified, const double *score);
 
 const rl_tone *rl_tones_current(const rl_tones *ts);
+
+/* The other curve while the choice is open (auto, not settled), else NULL:
+ * what a frame read through `used` is to be doubted against. */
+const rl_tone *rl_tones_doubt(const rl_tones *ts, const rl_tone *used);
 double rl_tones_gamma(const rl_tones *ts);
 
 #endif
