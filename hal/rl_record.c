@@ -198,8 +198,12 @@ rl_err rl_record_start(rl_record *r, const rl_record_config *c, int w, int h, ch
 const char *rl_record_news(rl_record *r)
 {
     const char *news = NULL;
-    if (!r->running)
-        return NULL;
+    if (!r->running) { /* stopped (the writer joined) or never started: no lock */
+        if (!r->stopped || r->told)
+            return NULL;
+        r->told = 1;
+        return r->error;
+    }
     pthread_mutex_lock(&r->lock);
     if (r->stopped && !r->told) {
         r->told = 1;

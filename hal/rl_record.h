@@ -78,7 +78,8 @@ RL_CHECK rl_err rl_record_start(rl_record *r, const rl_record_config *c, int w, 
 void rl_record_offer(rl_record *r, const rl_image *img, long index, uint64_t t_us);
 
 /* From the loop: the reason recording stopped (a full disk, the folder
- * gone, max_mb), once, the first time it is asked after the stop; NULL
+ * gone, max_mb), once, the first time it is asked after the stop (after
+ * rl_record_stop too: a stop the writer met after the last frame); NULL
  * otherwise. */
 const char *rl_record_news(rl_record *r);
 

@@ -317,19 +317,45 @@ static int radius_px(const char *C, const char *camera, double diameter, double 
     return 1;
 }
 
+/* The progress line (on a terminal's one line) ended before anything
+ * else is written to stderr. */
+static void end_progress(int *open)
+{
+    if (*open)
+        fputc('\n', stderr);
+    *open = 0;
+}
+
+/* Photo p readable and large enough to hold a landmark (two diameters
+ * each way) into *img; else one line naming it, and 0. */
+static int read_photo(const check *k, const char *path, rl_image *img)
+{
+    char err[512];
+    int side = (int)ceil(4 * k->cc.radius_px);
+    if (rl_png_read_gray(path, img, err, sizeof err) != RL_OK)
+        return !rl_cli_fail(k->C, RL_EXIT_FAIL, "%s (skipped)", err);
+    if (img->width < side || img->height < side) {
+        rl_cli_fail(k->C, RL_EXIT_FAIL, "%s: %dx%d is too small for landmarks of radius %.1f px (at least %dx%d; skipped)",
+                    path, img->width, img->height, k->cc.radius_px, side, side);
+        rl_png_free(img);
+        return 0;
+    }
+    return 1;
+}
+
 static int run_check(check *k, char **photos, int n, int json)
 {
     static rl_result as_is, res;
     tally *t = calloc(1, sizeof *t);
     uint8_t *buf = NULL;
-    int p, round;
+    int p, round, skipped = 0, progress = 0;
     if (t == NULL)
         return rl_cli_fail(k->C, RL_EXIT_FAIL, "out of memory");
     for (p = 0; p < n; p++) {
         rl_image img;
-        char err[512];
-        if (rl_png_read_gray(photos[p], &img, err, sizeof err) != RL_OK) {
-            rl_cli_fail(k->C, RL_EXIT_FAIL, "%s (skipped)", err);
+        end_progress(&progress);
+        if (!read_photo(k, photos[p], &img)) {
+            skipped++;
             continue;
         }
         free(buf);
@@ -342,11 +368,12 @@ static int run_check(check *k, char **photos, int n, int json)
         for (round = 0; round < k->rounds; round++)
             photo_composited(k, photos[p], &img, round, &as_is, buf, &res, t);
         rl_png_free(&img);
-        if ((p + 1) % 20 == 0 && !json)
-            fprintf(stderr, "site-check: %d of %d photos\r", p + 1, n);
+        if ((p + 1) % 20 == 0 && !json) {
+            fprintf(stderr, "site-check: %d of %d photos", p + 1, n);
+            progress = 1;
+        }
     }
-    if (!json && n >= 20)
-        fputc('\n', stderr);
+    end_progress(&progress);
     free(buf);
     if (t->photos == 0) {
         free(t);
@@ -354,6 +381,8 @@ static int run_check(check *k, char **photos, int n, int json)
     }
     (json ? print_json : print_table)(t, k, stdout);
     free(t);
+    if (skipped > 0) /* the figures hold for the photos read; the run did not read them all */
+        return rl_cli_fail(k->C, RL_EXIT_FAIL, "%d of %d files skipped (named above)", skipped, n);
     return 0;
 }
 

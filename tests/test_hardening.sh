@@ -300,5 +300,30 @@ timeout 5 "$R" monitor "$T/odd.bin" >"$T/odd.jsonl" 2>/dev/null
     [ "$(sed -n 2p "$T/odd.jsonl" | grep -c '"yaw": 3.2767.*"out_of_range": \["yaw"\]')" = 1 ] &&
     [ "$(sed -n 3p "$T/odd.jsonl" | grep -c 'out_of_range')" = 0 ] && ok || bad "monitor's out-of-range fields: $(cat "$T/odd.jsonl")"
 
+# 15. every bad PNG of a camera's frames is named in the log (issue 28:
+#     only the first was, the rest rate-limited away), each once
+{ sed -n 1,3p "$T/frames.txt"; for k in 1 2 3 4 5; do echo "$T/bad$k.png"; done; sed -n 4,6p "$T/frames.txt"; } >"$T/badlist.txt"
+for k in 1 2 3 4 5; do printf 'not a png %s\n' "$k" >"$T/bad$k.png"; done
+cfg - 0 | sed "s|device: $T/frames.txt|device: $T/badlist.txt|" >"$T/badlist.yaml"
+"$R" run --config "$T/badlist.yaml" 2>"$T/badlist.err" >/dev/null
+named=0
+for k in 1 2 3 4 5; do [ "$(grep -c "bad$k.png" "$T/badlist.err")" = 1 ] && named=$((named + 1)); done
+[ $named = 5 ] && grep -q ": 6 frames, 6 poses, 5 status frames" "$T/badlist.err" && ok ||
+    bad "bad PNGs in the camera's frames: $named of 5 named once: $(cat "$T/badlist.err")"
+
+# 16. site-check (issue 28): skipped files make the exit code 1 (the table
+#     is still printed), an image too small to hold a landmark is no photo,
+#     and the progress line ends before the next error line
+mkdir -p "$T/photos"
+for k in 01 02 03 04 05 06 07 08 09 10 11 12 13 14 15 16 17 18 19 20; do
+    cp "$D/straight_000.png" "$T/photos/p$k.png"
+done
+printf 'not a png\n' >"$T/photos/p21.png"
+"$R" gen --family ring5 --id 3 --png "$T/photos/p22.png" --px 16 # a landmark's own picture: 16 px
+"$R" site-check --rounds 1 "$T/photos" >"$T/sc.out" 2>"$T/sc.err"; rc=$?
+[ $rc = 1 ] && grep -q "wholly inside" "$T/sc.out" && grep -q "p21.png" "$T/sc.err" &&
+    grep -q "p22.png" "$T/sc.err" && grep -q "2 of 22 files skipped" "$T/sc.err" &&
+    ! grep -q "of 22 photos.*png" "$T/sc.err" && ok || bad "site-check with bad files: rc $rc: $(cat "$T/sc.err")"
+
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

@@ -34,6 +34,23 @@ static void logf_(rl_runner *r, int kind, const char *fmt, ...)
 #endif
     ;
 
+/* 1 the first time a bad-frame line is seen (its hash kept while there
+ * is room): it is logged then, whatever the interval. */
+static int new_frame_line(rl_runner *r, const char *line)
+{
+    uint32_t h = 2166136261u; /* FNV-1a */
+    int i;
+    for (; *line; line++)
+        h = (h ^ (uint8_t)*line) * 16777619u;
+    for (i = 0; i < r->n_frame_lines; i++)
+        if (r->frame_lines[i] == h)
+            return 0;
+    if (r->n_frame_lines == RL_RUN_FRAME_LINES)
+        return 0;
+    r->frame_lines[r->n_frame_lines++] = h;
+    return 1;
+}
+
 static void logf_(rl_runner *r, int kind, const char *fmt, ...)
 {
     char line[512], full[600];
@@ -41,13 +58,16 @@ static void logf_(rl_runner *r, int kind, const char *fmt, ...)
     va_list ap;
     if (r->io.log == NULL)
         return;
-    if (r->last_log[kind] != 0 && now - r->last_log[kind] < r->log_interval_us) {
-        r->suppressed[kind]++;
-        return;
-    }
     va_start(ap, fmt);
     vsnprintf(line, sizeof line, fmt, ap);
     va_end(ap);
+    if (r->last_log[kind] != 0 && now - r->last_log[kind] < r->log_interval_us &&
+        !(kind == RL_LOG_FRAME && new_frame_line(r, line))) {
+        r->suppressed[kind]++;
+        return;
+    }
+    if (kind == RL_LOG_FRAME)
+        (void)new_frame_line(r, line); /* the first such line is kept too */
     if (r->suppressed[kind] > 0)
         snprintf(full, sizeof full, "%s (%ld more like it)", line, r->suppressed[kind]);
     else

@@ -67,6 +67,9 @@ typedef struct {
 
 /* Kinds of log line; each kind is printed at most once per log interval. */
 enum { RL_LOG_CAMERA, RL_LOG_TIMEOUT, RL_LOG_SERIAL, RL_LOG_FRAME, RL_LOG_INFO, RL_LOG_KINDS };
+/* Bad-frame lines that are logged the first time whatever the interval
+ * (each bad file of a PNG camera named once); past these, the interval. */
+#define RL_RUN_FRAME_LINES 64
 
 typedef struct {
     rl_run_io io;
@@ -91,6 +94,8 @@ typedef struct {
     uint16_t seq;
     uint64_t last_log[RL_LOG_KINDS];
     long suppressed[RL_LOG_KINDS];
+    uint32_t frame_lines[RL_RUN_FRAME_LINES]; /* hashes of the bad-frame lines logged so far */
+    int n_frame_lines;
     /* counters */
     long frames, poses, statuses, camera_errors, camera_timeouts, serial_errors, dropped;
     long bad_frames;            /* frames the camera could not read, skipped */
