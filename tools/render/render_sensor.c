@@ -31,19 +31,27 @@ static void convolve_1d(const double *src, double *dst, int W, int H, const doub
         }
 }
 
+/* A kernel of nk taps and a frame-sized scratch image; 0, or -1 (both
+ * freed) out of memory. */
+static int scratch(size_t nk, double **k, size_t npx, double **tmp)
+{
+    *k = malloc(sizeof(double) * nk);
+    *tmp = malloc(sizeof(double) * npx);
+    if (*k != NULL && *tmp != NULL)
+        return 0;
+    free(*k);
+    free(*tmp);
+    return -1;
+}
+
 int render_blur_gauss(double *img, int W, int H, double sigma)
 {
     int rad = (int)ceil(3 * sigma), j;
     double *k, *tmp, sum = 0;
     if (sigma <= 0.05)
         return 0;
-    k = malloc(sizeof(double) * (size_t)(2 * rad + 1));
-    tmp = malloc(sizeof(double) * (size_t)W * H);
-    if (k == NULL || tmp == NULL) {
-        free(k);
-        free(tmp);
+    if (scratch((size_t)(2 * rad + 1), &k, (size_t)W * H, &tmp) != 0)
         return -1;
-    }
     for (j = -rad; j <= rad; j++)
         sum += k[j + rad] = exp(-0.5 * j * j / (sigma * sigma));
     for (j = 0; j <= 2 * rad; j++)
@@ -63,13 +71,8 @@ static int blur_disk(double *img, int W, int H, double r)
     double *k, *tmp, sum = 0;
     if (r <= 0.3)
         return 0;
-    k = malloc(sizeof(double) * (size_t)n * n);
-    tmp = malloc(sizeof(double) * (size_t)W * H);
-    if (k == NULL || tmp == NULL) {
-        free(k);
-        free(tmp);
+    if (scratch((size_t)n * n, &k, (size_t)W * H, &tmp) != 0)
         return -1;
-    }
     for (j = -rad; j <= rad; j++)
         for (i = -rad; i <= rad; i++) {
             double w = 0;

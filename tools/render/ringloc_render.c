@@ -663,45 +663,42 @@ static void use_sheet(scene *s, const char *name)
     s->sheet_h = p->h_mm / 1000.0;
 }
 
-/* A robot moving in dim light, the development set: blur on the light,
- * motion of any direction and a turn, short exposures on sensors of
- * several sizes, sheets of every paper on ceilings darker and lighter
- * than the paper. */
-static void moving_effects(scene *s)
-{
-    static const char *papers[] = {"letter", "a4", "a3"};
-    int k = (int)(rng_next() % 4);
-    s->se.blur = urand(0.6, 1.4);
-    s->motion = urand(1.0, 6.0) / s->cam.fx * s->distance;
-    s->motion_dir = urand(0, 2 * M_PI);
-    s->motion_turn = urand(-0.015, 0.015);
-    s->gain = urand(0.25, 0.7);
-    s->se.full_well = urand(2500, 9000);
-    s->se.read_noise = urand(1.5, 4.0);
-    s->vignette = urand(0.1, 0.4);
-    s->ceiling = urand(0.55, 1.3);
-    if (k < 3)
-        use_sheet(s, papers[k]);
-}
+/* A camera moving in dim light: ranges its frames are drawn from. */
+typedef struct {
+    double blur[2], defocus[2]; /* optics, px */
+    double motion_px[2], turn;  /* travel during the exposure, px; turn, rad either way */
+    double gain[2];             /* exposure */
+    double full_well[2], read_noise[2], vignette[2];
+    double ceiling[2];          /* the ceiling's brightness, times the default tile's */
+    render_tone tone;
+    int adc_bits;
+} moving_look;
 
+/* The development set: blur on the light, motion of any direction and a
+ * turn, short exposures on sensors of several sizes, on ceilings darker
+ * and lighter than paper (the sheets: every paper, drawn per frame). */
+static const moving_look moving = {{0.6, 1.4}, {0, 0}, {1.0, 6.0}, 0.015, {0.25, 0.7},
+                                   {2500, 9000}, {1.5, 4.0}, {0.1, 0.4}, {0.55, 1.3}, RENDER_TONE_GAMMA22, 10};
 /* The set nothing is tuned on: another optics (a defocus disk), another
  * tone curve (sRGB), 12-bit raw values, the paper's letter sheets (3 mm
  * beside a 0.21 m landmark). Its figures are read, never worked towards. */
-static void heldout_effects(scene *s)
+static const moving_look heldout = {{0.3, 0.8}, {0.5, 1.3}, {2.0, 6.0}, 0.015, {0.3, 0.5},
+                                    {3000, 6000}, {2.0, 4.0}, {0.2, 0.45}, {0.6, 1.25}, RENDER_TONE_SRGB, 12};
+
+static void moving_effects(scene *s, const moving_look *m)
 {
-    s->se.tone = RENDER_TONE_SRGB;
-    s->se.adc_bits = 12;
-    s->se.blur = urand(0.3, 0.8);
-    s->se.defocus = urand(0.5, 1.3);
-    s->motion = urand(2.0, 6.0) / s->cam.fx * s->distance;
+    s->se.tone = m->tone;
+    s->se.adc_bits = m->adc_bits;
+    s->se.blur = urand(m->blur[0], m->blur[1]);
+    s->se.defocus = m->defocus[1] > 0 ? urand(m->defocus[0], m->defocus[1]) : 0;
+    s->motion = urand(m->motion_px[0], m->motion_px[1]) / s->cam.fx * s->distance;
     s->motion_dir = urand(0, 2 * M_PI);
-    s->motion_turn = urand(-0.015, 0.015);
-    s->gain = urand(0.3, 0.5);
-    s->se.full_well = urand(3000, 6000);
-    s->se.read_noise = urand(2.0, 4.0);
-    s->vignette = urand(0.2, 0.45);
-    s->ceiling = urand(0.6, 1.25);
-    use_sheet(s, "letter");
+    s->motion_turn = urand(-m->turn, m->turn);
+    s->gain = urand(m->gain[0], m->gain[1]);
+    s->se.full_well = urand(m->full_well[0], m->full_well[1]);
+    s->se.read_noise = urand(m->read_noise[0], m->read_noise[1]);
+    s->vignette = urand(m->vignette[0], m->vignette[1]);
+    s->ceiling = urand(m->ceiling[0], m->ceiling[1]);
 }
 
 static void effects(scene *s, set_kind kind)
@@ -753,11 +750,17 @@ static void effects(scene *s, set_kind kind)
         s->se.full_well = 4500;
         s->se.read_noise = 3.0;
         break;
-    case SET_MOVING:
-        moving_effects(s);
+    case SET_MOVING: {
+        static const char *papers[] = {"letter", "a4", "a3"};
+        int k = (int)(rng_next() % 4);
+        moving_effects(s, &moving);
+        if (k < 3)
+            use_sheet(s, papers[k]);
         break;
+    }
     case SET_HELDOUT:
-        heldout_effects(s);
+        moving_effects(s, &heldout);
+        use_sheet(s, "letter");
         break;
     case SET_LENS:
         /* a wide-angle M12 lens (3.6 mm class) as on the real photos:
