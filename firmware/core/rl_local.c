@@ -175,11 +175,24 @@ static int local_ellipse(const rl_recog *rec, const rl_image *img, const rl_resu
     return 1;
 }
 
+/* The rule for a match at a moving template on a landmark the border
+ * cuts: the moving templates average every direction of the motion, and a
+ * cut landmark shows only some of them, so its lead over the runner-up
+ * must be larger (a zone twin can fit the directions that are left). */
+#define MOVING_CUT_LEAD 1.6
+static rl_accept_rule moving_cut_rule(const rl_accept_rule *rule, const rl_match *m, double visible)
+{
+    rl_accept_rule r = *rule;
+    if (visible < 1.0 && m->blur >= 3 && m->blur <= 5 && r.min_lead < MOVING_CUT_LEAD)
+        r.min_lead = MOVING_CUT_LEAD;
+    return r;
+}
+
 /* Retry one DUCLR u of expected radius R; 1 if identified (into *out). */
 static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *res,
                            const rl_detection *u, double R, rl_detection *out)
 {
-    rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL);
+    rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL), mrule;
     int W = rec->width, H = rec->height, light = res->levels.light;
     double cx, cy, r;
     rl_match m;
@@ -193,7 +206,8 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     if (rl_geom_visible_in(W, H, cx, cy, r) < 0.5) /* more than half missing: not tried */
         return 0;
     rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &cx, &cy, &r, &m);
-    taken = rl_accept(&rule, &m, 255.0);
+    mrule = moving_cut_rule(&rule, &m, rl_geom_visible_in(W, H, cx, cy, r));
+    taken = rl_accept(&mrule, &m, 255.0);
     if (!taken) {
         /* not as a circle: as the ellipse its edge may be */
         rl_ellipse e;
