@@ -194,19 +194,16 @@ static int analyse_histogram(const rl_image *img, const rl_tone *tone, rl_result
 
 /* Read the outer CLRs (a CLR inside another's box is an inner ring)
  * through tone t: into res when `into` (landmarks and unidentified),
- * else only how many are identified and their scores summed. */
-static void read_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n, int t, int into,
-                      rl_result *res, int *found, double *score)
+ * else only counted. Returns how many are identified. */
+static int read_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n, int t, int into,
+                     rl_result *res)
 {
-    int i;
-    *found = 0;
-    *score = 0;
+    int i, found = 0;
     for (i = 0; i < n; i++) {
         rl_detection d;
         if (rl_clr_is_inner(cand, n, i) || !rl_global_read(rec, img, &cand[i], &rec->tones.tone[t], res, &d))
             continue;
-        *found += d.id >= 0;
-        *score += d.id >= 0 ? d.score : 0;
+        found += d.id >= 0;
         if (!into)
             continue;
         res->n_candidates++;
@@ -215,25 +212,24 @@ static void read_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, in
         else
             rl_result_add_unidentified(res, &d);
     }
+    return found;
 }
 
 /* 4. identification of the outer CLRs through the camera's tone curve:
  * the configured one, or, while it is being learned, the one the frame's
- * landmarks read best through (rl_tones.h): the others are read first,
- * counting only, then the one taken into res. */
+ * landmarks read best through (rl_tones.h): each curve is read first,
+ * counting only, then the one taken into res (three reads of a frame's
+ * candidates while the curve is open, one after). */
 static void identify_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n,
                           rl_result *res)
 {
     int which[RL_TONES_MAX], found[RL_TONES_MAX], nt = rl_tones_to_try(&rec->tones, which), t;
-    double score[RL_TONES_MAX];
     for (t = 0; t < nt && nt > 1; t++)
-        read_clrs(rec, img, cand, n, which[t], 0, res, &found[t], &score[t]);
-    t = nt > 1 ? which[rl_tones_vote(&rec->tones, which, nt, found, score)] : which[0];
-    if (nt == 1)
-        rl_tones_vote(&rec->tones, which, 1, NULL, NULL);
+        found[t] = read_clrs(rec, img, cand, n, which[t], 0, res);
+    t = which[rl_tones_vote(&rec->tones, which, nt, found)];
     rec->tone = &rec->tones.tone[t];
     res->gamma = rec->tones.gamma[t];
-    read_clrs(rec, img, cand, n, t, 1, res, &found[0], &score[0]);
+    read_clrs(rec, img, cand, n, t, 1, res);
 }
 
 static int local_wanted(const rl_recog_config *cfg, const rl_result *res)

@@ -39,10 +39,9 @@ int rl_tones_to_try(const rl_tones *ts, int *which)
     return 2;
 }
 
-int rl_tones_vote(rl_tones *ts, const int *which, int n, const int *identified, const double *score)
+int rl_tones_vote(rl_tones *ts, const int *which, int n, const int *identified)
 {
     int k, best = 0, other, cur = 0;
-    (void)score;
     ts->frames++;
     if (n < 2)
         return 0;

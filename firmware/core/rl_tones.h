@@ -20,7 +20,7 @@
  *   n = rl_tones_to_try(&ts, which);           // 2 at first
  *   for (k = 0; k < n; k++)
  *       use(&ts.tone[which[k]]);               // read the frame's candidates
- *   rl_tones_vote(&ts, which, n, (int[]){5, 3}, (double[]){4.6, 2.7});
+ *   rl_tones_vote(&ts, which, n, (int[]){5, 3});
  *   use(rl_tones_current(&ts), rl_tones_gamma(&ts));
  */
 #ifndef RL_TONES_H
@@ -49,10 +49,9 @@ void rl_tones_init(rl_tones *ts, double gamma);
 int rl_tones_to_try(const rl_tones *ts, int *which);
 
 /* After a frame read through the n curves of which[] (the current one
- * first): identified[k] landmarks with scores summing to score[k] through
- * which[k]. The votes and the current curve as above; the index into
+ * first): identified[k] landmarks through which[k]. The votes and the current curve as above; the index into
  * which[] of the curve the frame is to be read through is returned. */
-int rl_tones_vote(rl_tones *ts, const int *which, int n, const int *identified, const double *score);
+int rl_tones_vote(rl_tones *ts, const int *which, int n, const int *identified);
 
 const rl_tone *rl_tones_current(const rl_tones *ts);
 
