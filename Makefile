@@ -42,8 +42,8 @@ soak: host
 BUILD_FUZZ        ?= build-fuzz
 BUILD_FUZZ_MSAN   ?= build-fuzz-msan
 FUZZ_SECONDS      ?= 60
-FUZZ_TARGETS      ?= recog png yaml pose frame survey place
-FUZZ_MSAN_TARGETS ?= recog pose frame place
+FUZZ_TARGETS      ?= recog png yaml pose packet survey place
+FUZZ_MSAN_TARGETS ?= recog pose packet place
 
 fuzz:
 	@sh tools/deps.sh fuzz

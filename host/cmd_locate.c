@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "rl_annotate.h"
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 #include "rl_cli.h"
 #include "rl_cmd.h"
 #include "rl_heap_place.h"
@@ -67,7 +67,7 @@ int rl_cmd_locate(int argc, char **argv)
     rl_heap_recog hr;
     static rl_result res;
     static rl_map map;
-    rl_camera cam;
+    rl_calib cam;
     rl_mount mount;
     rl_offsets offsets;
     int c, i, failures = 0, ids[RL_MAX_IDS], alone = 0;
@@ -109,7 +109,7 @@ int rl_cmd_locate(int argc, char **argv)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--camera, --map and --robot are required (see --help)");
     if (optind >= argc)
         return rl_cli_fail(C, RL_EXIT_USAGE, "no images given (see --help)");
-    if (rl_camfile_load_sized(cam_path, size_w, size_h, &cam, err, sizeof err) != RL_OK ||
+    if (rl_calibfile_load_sized(cam_path, size_w, size_h, &cam, err, sizeof err) != RL_OK ||
         rl_mapfile_load(map_path, &map, err, sizeof err) != RL_OK ||
         rl_robotfile_load(robot_path, &mount, err, sizeof err) != RL_OK ||
         (off_path && rl_offsetsfile_load(off_path, &offsets, err, sizeof err) != RL_OK))

@@ -13,7 +13,7 @@
 #include <unistd.h>
 #include "rl_cli.h"
 #include "rl_cmd.h"
-#include "rl_frame.h"
+#include "rl_packet.h"
 #include "rl_serial.h"
 
 static const char *monitor_help =
@@ -53,7 +53,7 @@ static void out_of_range(const rl_msg *m, char *out, size_t len)
     const char *bad[6];
     int n = 0, i;
     size_t used;
-    if (m->type == RL_FRAME_POSE) {
+    if (m->type == RL_PACKET_POSE) {
         if (m->yaw_e4 > 31416 || m->yaw_e4 < -31416)
             bad[n++] = "yaw";
         if (m->flags & ~3u)
@@ -78,7 +78,7 @@ static void print_msg(const rl_msg *m)
 {
     char flagged[128];
     out_of_range(m, flagged, sizeof flagged);
-    if (m->type == RL_FRAME_POSE) {
+    if (m->type == RL_PACKET_POSE) {
         printf("{\"type\": \"pose\", \"version\": %u, \"seq\": %u, \"time_ms\": %lu, \"x\": %.3f, "
                "\"y\": %.3f, \"yaw\": %.4f, \"landmarks_used\": %u, \"flags\": %u, \"residual\": %.4f, "
                "\"latency_ms\": %.1f",

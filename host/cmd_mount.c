@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 #include "rl_cli.h"
 #include "rl_cmd.h"
 #include "rl_heap_place.h"
@@ -37,7 +37,7 @@ int rl_cmd_mount(int argc, char **argv)
     const char *C = "calibrate-mount", *cam_path = NULL, *map_path = NULL, *robot_path = NULL, *out = NULL;
     static rl_map map;
     static rl_result res;
-    rl_camera cam;
+    rl_calib cam;
     rl_mount mount, level;
     rl_recog_config cfg;
     rl_heap_recog hr;
@@ -62,7 +62,7 @@ int rl_cmd_mount(int argc, char **argv)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--camera, --map, --robot and --out are required (see --help)");
     if (optind >= argc)
         return rl_cli_fail(C, RL_EXIT_USAGE, "no frames given (see --help)");
-    if (rl_camfile_load(cam_path, &cam, err, sizeof err) != RL_OK ||
+    if (rl_calibfile_load(cam_path, &cam, err, sizeof err) != RL_OK ||
         rl_mapfile_load(map_path, &map, err, sizeof err) != RL_OK ||
         rl_robotfile_load(robot_path, &mount, err, sizeof err) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);

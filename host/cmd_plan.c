@@ -3,7 +3,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 #include "rl_cli.h"
 #include "rl_cmd.h"
 #include "rl_mapfile.h"
@@ -152,8 +152,8 @@ int rl_cmd_plan(int argc, char **argv)
                            rl_paper_names());
     in.max_diameter = rl_print_max_diameter(paper, RL_PRINT_MARGIN_MM);
     if (cam_path != NULL) {
-        rl_camera cam;
-        if (rl_camfile_load(cam_path, &cam, err, sizeof err) != RL_OK)
+        rl_calib cam;
+        if (rl_calibfile_load(cam_path, &cam, err, sizeof err) != RL_OK)
             return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
         in.width = cam.width;
         in.height = cam.height;

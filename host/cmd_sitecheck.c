@@ -9,7 +9,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "rl_annotate.h"
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 #include "rl_cli.h"
 #include "rl_cmd.h"
 #include "rl_composite.h"
@@ -304,13 +304,13 @@ static void print_json(const tally *t, const check *k, FILE *f)
  * length, the printed diameter and the distance to the ceiling. */
 static int radius_px(const char *C, const char *camera, double diameter, double distance, double *r)
 {
-    rl_camera cam;
+    rl_calib cam;
     char err[512];
     if (*r > 0)
         return 1;
     if (camera == NULL) {
-        rl_camera_defaults(&cam, 640, 480, 70.0 * M_PI / 180.0);
-    } else if (rl_camfile_load(camera, &cam, err, sizeof err) != RL_OK) {
+        rl_calib_defaults(&cam, 640, 480, 70.0 * M_PI / 180.0);
+    } else if (rl_calibfile_load(camera, &cam, err, sizeof err) != RL_OK) {
         return !rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
     }
     *r = 0.5 * (cam.fx + cam.fy) * 0.5 * diameter / distance;

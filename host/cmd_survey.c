@@ -5,7 +5,7 @@
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 #include "rl_cli.h"
 #include "rl_cmd.h"
 #include "rl_mapfile.h"
@@ -234,7 +234,7 @@ int rl_cmd_survey(int argc, char **argv)
     rl_heap_recog hr;
     rl_survey sv;
     rl_survey_input in;
-    rl_camera cam;
+    rl_calib cam;
     static rl_map old;
     static rl_survey_move mv[RL_MAX_MAP_LANDMARKS];
     struct timespec t0, t1;
@@ -248,7 +248,7 @@ int rl_cmd_survey(int argc, char **argv)
     rc.band_radius = 1; /* the scale from the radii */
     if ((r = parse(argc, argv, &a, &cfg, &rc)) != 0)
         return r < 0 ? 0 : r;
-    if (rl_camfile_load(a.cam, &cam, err, sizeof err) != RL_OK ||
+    if (rl_calibfile_load(a.cam, &cam, err, sizeof err) != RL_OK ||
         rl_robotfile_load(a.robot, &cfg.mount, err, sizeof err) != RL_OK ||
         (a.old && rl_mapfile_load(a.old, &old, err, sizeof err) != RL_OK))
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);

@@ -1,7 +1,7 @@
 #include "rl_plan.h"
 
 #include <math.h>
-#include "rl_camera.h"
+#include "rl_calib.h"
 #include "rl_config.h"
 #include "rl_family.h"
 
@@ -60,7 +60,7 @@ rl_err rl_plan_compute(const rl_plan_input *in, rl_plan_result *out)
     rl_family fam;
     out->bits = 0;
     if (in->landmarks <= 0 || in->width <= 0 || in->height <= 0 || in->width > RL_MAX_IMAGE_DIM ||
-        in->height > RL_MAX_IMAGE_DIM || !(in->fx >= RL_CAMERA_MIN_F && in->fx <= RL_CAMERA_MAX_F) ||
+        in->height > RL_MAX_IMAGE_DIM || !(in->fx >= RL_CALIB_MIN_F && in->fx <= RL_CALIB_MAX_F) ||
         !(in->distance > 0 && in->distance <= 1000) || !(in->min_ring_px > 0 && in->min_ring_px <= 1000) ||
         !(in->step > 0 && in->step <= 1))
         return RL_EINVAL;

@@ -1,8 +1,8 @@
 /* rl_survey: the map from recorded frames (`ringloc survey`).
  *
  * Each frame goes in as its identified landmarks: the ideal normalized
- * image of each centre (rl_camera_centre) and of its radius
- * (rl_camera_radius). rl_survey_build tells which observations are the
+ * image of each centre (rl_calib_centre) and of its radius
+ * (rl_calib_radius). rl_survey_build tells which observations are the
  * same landmark (its id and, where a site repeats ids, its place), and
  * makes first poses and positions from the level model, frame by frame;
  * rl_survey_adjust (Ceres, rl_survey_adjust.cpp) then estimates every

@@ -11,7 +11,7 @@
 #include "rl_infile.h"
 #include "rl_png.h"
 
-void rl_survey_input_init(rl_survey_input *in, const rl_camera *cam, const rl_family *fam, rl_survey *sv,
+void rl_survey_input_init(rl_survey_input *in, const rl_calib *cam, const rl_family *fam, rl_survey *sv,
                           rl_heap_recog *hr)
 {
     memset(in, 0, sizeof *in);
@@ -32,8 +32,8 @@ static rl_err add_frame(rl_survey_input *in, const char *name, const rl_detectio
         o->rn = 0;
         o->noise = d[i].complete ? 1.0 : 4.0;
         if (d[i].complete)
-            r = rl_camera_radius(in->cam, d[i].u, d[i].v, d[i].radius);
-        rl_camera_centre(in->cam, d[i].u, d[i].v, r, &o->xn, &o->yn);
+            r = rl_calib_radius(in->cam, d[i].u, d[i].v, d[i].radius);
+        rl_calib_centre(in->cam, d[i].u, d[i].v, r, &o->xn, &o->yn);
         /* the scale from radii measured both ways across the outer black
          * band (unbiased), near the optical axis (where the lens
          * distorts the landmark least) */

@@ -2,7 +2,7 @@
  * here), folders of them (in name order), or JSON-lines files of
  * `ringloc detect` output (a survey redone without recognizing again).
  * Each frame's identified landmarks become survey observations through
- * the camera's calibration (rl_camera_centre, rl_camera_radius); a
+ * the camera's calibration (rl_calib_centre, rl_calib_radius); a
  * landmark the border cuts keeps its centre, with 4 times the noise. The
  * scale comes only from radii the recognizer measured across both edges
  * of the outer black band (rl_family_band_inner) within
@@ -19,7 +19,7 @@
 #ifndef RL_SURVEY_INPUT_H
 #define RL_SURVEY_INPUT_H
 
-#include "rl_camera.h"
+#include "rl_calib.h"
 #include "rl_family.h"
 #include "rl_heap_recog.h"
 #include "rl_survey.h"
@@ -27,7 +27,7 @@
 #define RL_SURVEY_RADIUS_FIELD 0.25
 
 typedef struct {
-    const rl_camera *cam;
+    const rl_calib *cam;
     const rl_family *fam;
     rl_survey *sv;
     rl_heap_recog *hr; /* recognizes PNG frames; NULL: JSON lines only */
@@ -37,7 +37,7 @@ typedef struct {
     char err[600];
 } rl_survey_input;
 
-void rl_survey_input_init(rl_survey_input *in, const rl_camera *cam, const rl_family *fam, rl_survey *sv,
+void rl_survey_input_init(rl_survey_input *in, const rl_calib *cam, const rl_family *fam, rl_survey *sv,
                           rl_heap_recog *hr);
 
 /* One FRAME argument: a folder, a .json/.jsonl/.ndjson file, or a PNG.

@@ -3,11 +3,11 @@
 # A board whose camera is libcamera gets V4L2 in a build without the
 # libcamera backend (a cross build: Raspberry Pi OS's libcamera is not
 # Debian's, so build on the board for the Pi camera), and says so.
-set(RL_CAMERA_NOTE "")
+set(RL_CALIB_NOTE "")
 if(RL_BOARD_CAMERA STREQUAL "libcamera" AND NOT LIBCAMERA_FOUND)
   set(RL_BOARD_CAMERA v4l2)
   set(RL_BOARD_CAMERA_DEVICE /dev/video0)
-  set(RL_CAMERA_NOTE "# This build has no libcamera backend (built without libcamera-dev, e.g.\n# cross-built): a USB camera over V4L2. For the Raspberry Pi camera, build\n# on the Pi: make package BOARD=${RL_BOARD}\n")
+  set(RL_CALIB_NOTE "# This build has no libcamera backend (built without libcamera-dev, e.g.\n# cross-built): a USB camera over V4L2. For the Raspberry Pi camera, build\n# on the Pi: make package BOARD=${RL_BOARD}\n")
 endif()
 configure_file(${CMAKE_CURRENT_LIST_DIR}/ringloc.yaml.in ${CMAKE_BINARY_DIR}/package/ringloc.yaml @ONLY)
 # the unit waits for the serial device: /dev/serial0 -> dev-serial0.device

@@ -12,7 +12,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
-#include "rl_camera.h"
+#include "rl_calib.h"
 #include "rl_image.h"
 #include "rl_label.h"
 #include "rl_map.h"
@@ -27,7 +27,7 @@ void example_use(int unused, ...);
 
 extern rl_image frame, img;          /* a camera frame */
 extern rl_map map;
-extern rl_camera cam;
+extern rl_calib cam;
 extern rl_family fam;
 extern rl_ws ws;
 extern rl_recog_config cfg;

@@ -15,7 +15,7 @@
 #include "fixture_eval.h"
 #include "rl_png.h"
 #include "rl_report.h"
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 #include "rl_mapfile.h"
 #include "rl_robotfile.h"
 
@@ -333,13 +333,13 @@ static double wrap(double a)
 }
 
 /* The folder's map, calibration and robot. */
-static void load_site(rl_map *map, rl_camera *cam, rl_mount *mount)
+static void load_site(rl_map *map, rl_calib *cam, rl_mount *mount)
 {
     char path[1024], err[512];
     snprintf(path, sizeof path, "%s/map.yaml", paths_dir);
     if (rl_mapfile_load(path, map, err, sizeof err) != RL_OK) fail_msg("%s", err);
     snprintf(path, sizeof path, "%s/camera.yaml", paths_dir);
-    if (rl_camfile_load(path, cam, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    if (rl_calibfile_load(path, cam, err, sizeof err) != RL_OK) fail_msg("%s", err);
     snprintf(path, sizeof path, "%s/robot.yaml", paths_dir);
     if (rl_robotfile_load(path, mount, err, sizeof err) != RL_OK) fail_msg("%s", err);
 }
@@ -368,7 +368,7 @@ static void path_accuracy(void **state)
 {
     const char *kind = (const char *)*state;
     static rl_map map;
-    rl_camera cam;
+    rl_calib cam;
     rl_mount mount;
     double pos = 0, yaw = 0, zx = 0, zy = 0, zyaw = 0;
     int k, frames = 0;
@@ -423,7 +423,7 @@ static void mount_accuracy(void **state)
 {
     static const char *kinds[] = {"straight", "rect", "circle"};
     static rl_map map;
-    rl_camera cam;
+    rl_calib cam;
     rl_mount mount;
     double all = 0, two = 0;
     int k, q, frames = 0;
@@ -517,7 +517,7 @@ static void similarity(const rl_map *a, const rl_map *b, double *T)
 static void survey_map(void **state)
 {
     static rl_map real, sv;
-    rl_camera cam;
+    rl_calib cam;
     rl_mount mount;
     char path[1024], err[512];
     double ss = 0, worst = 0;
@@ -556,7 +556,7 @@ static void survey_map(void **state)
 static void survey_poses(void **state)
 {
     static rl_map real, sv;
-    rl_camera cam;
+    rl_calib cam;
     rl_mount mount;
     char path[1024], err[512];
     double T[4], worst = 0, sum = 0, yaw_worst = 0;

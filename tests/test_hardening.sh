@@ -285,7 +285,7 @@ n=$(ls -A "$T/rec4/drive_001" | grep -vc '^frames.txt$')
     bad "recording under a file-size limit: $n frames: $(cat "$T/rec4.err")"
 
 # 14. monitor marks fields out of their range (issue 28): frames made by
-#     hand from the frame format (rl_frame.h), ARCOS checksum summed by hand
+#     hand from the frame format (rl_packet.h), ARCOS checksum summed by hand
 bytes() { for b; do printf "\\$(printf %03o "0x$b")"; done; }
 {   # a status frame with reason 200; sum 0x5301 + 0xC800 = 0x1B01
     bytes FA FB 0E 53 01 00 00 00 00 00 00 C8 00 00 00 1B 01

@@ -13,14 +13,14 @@ extern "C" {
 #include <stdarg.h>
 #include <stddef.h>
 #include <cmocka.h>
-#include "rl_camera.h"
+#include "rl_calib.h"
 #include "rl_pose.h"
 }
 
-static rl_camera make_cam(int model)
+static rl_calib make_cam(int model)
 {
-    rl_camera c;
-    rl_camera_defaults(&c, 640, 480, 70 * M_PI / 180);
+    rl_calib c;
+    rl_calib_defaults(&c, 640, 480, 70 * M_PI / 180);
     c.fx = 457.3;
     c.fy = 458.1;
     c.cx = 322.4;
@@ -30,7 +30,7 @@ static rl_camera make_cam(int model)
     double k8[8] = {0.35, -0.2, 0.0006, -0.0004, 0.05, 0.47, -0.15, 0.04};
     double k12[12] = {-0.1, 0.05, 0.0005, -0.0002, -0.01, 0.02, 0.01, 0.001, 0.002, -0.001, -0.0015, 0.0008};
     double kf[4] = {0.08, -0.03, 0.01, -0.002};
-    for (int i = 0; i < RL_CAMERA_MAX_COEFFS; i++)
+    for (int i = 0; i < RL_CALIB_MAX_COEFFS; i++)
         c.k[i] = model == RL_DIST_RATIONAL ? (i < 8 ? k8[i] : 0)
                  : model == RL_DIST_RATIONAL + 4 ? k12[i]
                  : model == RL_DIST_PLUMB_BOB && i < 5 ? k5[i]
@@ -40,12 +40,12 @@ static rl_camera make_cam(int model)
     return c;
 }
 
-static int n_coeffs(const rl_camera &c)
+static int n_coeffs(const rl_calib &c)
 {
     return c.model == RL_DIST_FISHEYE ? 4 : c.model == RL_DIST_PLUMB_BOB ? 5 : c.k[8] != 0 ? 12 : 8;
 }
 
-static void cv_mats(const rl_camera &c, cv::Mat &K, cv::Mat &D)
+static void cv_mats(const rl_calib &c, cv::Mat &K, cv::Mat &D)
 {
     K = (cv::Mat_<double>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
     int n = n_coeffs(c);
@@ -57,7 +57,7 @@ static void cv_mats(const rl_camera &c, cv::Mat &K, cv::Mat &D)
 static void test_project_and_undistort_match_opencv(void **)
 {
     for (int model : {(int)RL_DIST_PLUMB_BOB, (int)RL_DIST_RATIONAL, (int)RL_DIST_RATIONAL + 4, (int)RL_DIST_FISHEYE}) {
-        rl_camera c = make_cam(model);
+        rl_calib c = make_cam(model);
         cv::Mat K, D;
         cv_mats(c, K, D);
         std::vector<cv::Point3d> obj;
@@ -78,9 +78,9 @@ static void test_project_and_undistort_match_opencv(void **)
         double worst_p = 0, worst_u = 0;
         for (size_t i = 0; i < obj.size(); i++) {
             double u, v, xn, yn;
-            rl_camera_project(&c, obj[i].x, obj[i].y, &u, &v);
+            rl_calib_project(&c, obj[i].x, obj[i].y, &u, &v);
             worst_p = std::max(worst_p, std::hypot(u - img[i].x, v - img[i].y));
-            rl_camera_unproject(&c, img[i].x, img[i].y, &xn, &yn);
+            rl_calib_unproject(&c, img[i].x, img[i].y, &xn, &yn);
             // compare in pixels: re-scale the normalized difference by fx
             worst_u = std::max(worst_u, c.fx * std::hypot(xn - und[i].x, yn - und[i].y));
             worst_u = std::max(worst_u, c.fx * std::hypot(xn - obj[i].x, yn - obj[i].y));
@@ -122,7 +122,7 @@ static void rot(double yaw, double pitch, double roll, double *R)
 // The image of the map's landmarks from a robot at (x, y, yaw) tilted by
 // (roll, pitch) about its footprint: what an edge fit sees (the mean of the
 // outer edge's image through the lens), or the centres' images.
-static std::vector<rl_detection> observe_tilted(const rl_camera &c, const rl_map &m, const rl_mount &mt, double x,
+static std::vector<rl_detection> observe_tilted(const rl_calib &c, const rl_map &m, const rl_mount &mt, double x,
                                                 double y, double yaw, double roll, double pitch, bool edge,
                                                 cv::Matx33d *Rcam = nullptr, cv::Vec3d *Ccam = nullptr)
 {
@@ -141,7 +141,7 @@ static std::vector<rl_detection> observe_tilted(const rl_camera &c, const rl_map
             double r = edge ? m.diameter / 2 : 0, t = a * M_PI / 180, ue, ve;
             cv::Vec3d d = R_cam.t() * (cv::Vec3d(m.lm[i].x + r * std::cos(t), m.lm[i].y + r * std::sin(t),
                                                   m.ceiling_height) - C);
-            rl_camera_project(&c, d[1] / d[2], -d[0] / d[2], &ue, &ve);
+            rl_calib_project(&c, d[1] / d[2], -d[0] / d[2], &ue, &ve);
             u += ue / 360;
             v += ve / 360;
         }
@@ -161,7 +161,7 @@ static std::vector<rl_detection> observe_tilted(const rl_camera &c, const rl_map
 
 // Image positions of the map's landmarks seen from a level robot, with
 // pixel noise.
-static std::vector<rl_detection> observe(const rl_camera &c, const rl_map &m, const rl_mount &mt,
+static std::vector<rl_detection> observe(const rl_calib &c, const rl_map &m, const rl_mount &mt,
                                          double x, double y, double yaw, double noise = 0, bool edge = true)
 {
     std::mt19937 rng(5);
@@ -179,7 +179,7 @@ static std::vector<rl_detection> observe(const rl_camera &c, const rl_map &m, co
 // camera where ringloc does.
 static void test_tilted_pose_against_truth_and_solvepnp(void **)
 {
-    rl_camera c = make_cam(RL_DIST_PLUMB_BOB);
+    rl_calib c = make_cam(RL_DIST_PLUMB_BOB);
     cv::Mat K, D;
     cv_mats(c, K, D);
     rl_map m = site_map();
@@ -219,7 +219,7 @@ static void test_tilted_pose_against_truth_and_solvepnp(void **)
 
 static void test_pose_exact_and_mount(void **)
 {
-    rl_camera c = make_cam(RL_DIST_PLUMB_BOB);
+    rl_calib c = make_cam(RL_DIST_PLUMB_BOB);
     rl_map m = site_map();
     rl_mount mt = {0.12, -0.04, 0.88, 0.3, 0, 0};
     for (double yaw : {0.0, 1.0, -2.5, 3.1}) {
@@ -237,7 +237,7 @@ static void test_pose_exact_and_mount(void **)
 
 static void test_pose_drops_a_misplaced_landmark(void **)
 {
-    rl_camera c = make_cam(RL_DIST_PLUMB_BOB);
+    rl_calib c = make_cam(RL_DIST_PLUMB_BOB);
     rl_map m = site_map(), wrong = m;
     rl_mount mt = {0, 0, 0.88, 0, 0, 0};
     std::vector<rl_detection> d = observe(c, m, mt, 1.8, 1.5, 0.4, 0.1);
@@ -256,7 +256,7 @@ static void test_pose_drops_a_misplaced_landmark(void **)
 
 static void test_pose_too_few(void **)
 {
-    rl_camera c = make_cam(RL_DIST_NONE);
+    rl_calib c = make_cam(RL_DIST_NONE);
     rl_map m = site_map();
     rl_mount mt = {0, 0, 0.88, 0, 0, 0};
     std::vector<rl_detection> d = observe(c, m, mt, 1.8, 1.5, 0.0);
@@ -275,7 +275,7 @@ static void test_pose_too_few(void **)
 // The same points through cv::solvePnP: the camera pose must agree.
 static void test_pose_agrees_with_solvepnp(void **)
 {
-    rl_camera c = make_cam(RL_DIST_PLUMB_BOB);
+    rl_calib c = make_cam(RL_DIST_PLUMB_BOB);
     cv::Mat K, D;
     cv_mats(c, K, D);
     rl_map m = site_map();

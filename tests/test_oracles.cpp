@@ -18,7 +18,7 @@ extern "C" {
 #include "rl_match.h"
 #include "rl_polar.h"
 #include "rl_label.h"
-#include "rl_template.h"
+#include "rl_raster.h"
 }
 
 // Total within-cluster squared error of a 1-D partition by nearest centre.
@@ -231,7 +231,7 @@ static void test_ident_matches_direct_pearson(void **)
         double R = 20 + trial, cx = 50.3 + trial * 0.37, cy = 47.8 - trial * 0.21;
         cv::Mat t(100, 100, CV_8U);
         rl_image tv = rl_image_view(100, 100, (int)t.step, t.data);
-        assert_int_equal(rl_tmpl_draw(&fam, true_id, cx, cy, R, NULL, &tv, NULL), RL_OK);
+        assert_int_equal(rl_raster_draw(&fam, true_id, cx, cy, R, NULL, &tv, NULL), RL_OK);
         cv::Mat img(100, 100, CV_8U);
         std::normal_distribution<double> noise(0, 4);
         for (int y = 0; y < 100; y++)

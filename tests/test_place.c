@@ -134,7 +134,7 @@ static void map_repeats_but_never_overlaps(void **state)
 
 /* Detections a level camera (straight up, at the robot's centre) sees of
  * the map's landmarks at i: projected through a pinhole by hand. */
-static int view(const rl_camera *cam, const rl_mount *mount, double x, double y, double yaw, const int *which,
+static int view(const rl_calib *cam, const rl_mount *mount, double x, double y, double yaw, const int *which,
                 int n, rl_detection *d)
 {
     double Z = map.ceiling_height - mount->z;
@@ -160,7 +160,7 @@ static void copies_are_ambiguous(void **state)
 {
     rl_place_config cfg;
     rl_place *pl;
-    rl_camera cam;
+    rl_calib cam;
     rl_mount mount;
     rl_detection d[4];
     rl_place_found f;
@@ -184,7 +184,7 @@ static void copies_are_ambiguous(void **state)
     map.count = 7;
     rl_place_defaults(&cfg);
     pl = build(&cfg);
-    rl_camera_defaults(&cam, 640, 480, 70 * M_PI / 180);
+    rl_calib_defaults(&cam, 640, 480, 70 * M_PI / 180);
     rl_mount_defaults(&mount, 0.88);
     view(&cam, &mount, 0.3, 0.3, 0.4, both, 3, d);
     assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 3, NULL, NULL, &pose, &f), RL_EAMBIGUOUS);
@@ -228,7 +228,7 @@ static void ids_in_falling_order(void **state)
 {
     rl_place_config cfg;
     rl_place *pl;
-    rl_camera cam;
+    rl_calib cam;
     rl_mount mount;
     rl_detection d[3];
     rl_place_found f;
@@ -241,7 +241,7 @@ static void ids_in_falling_order(void **state)
     map.lm[2].id = 5;
     rl_place_defaults(&cfg);
     pl = build(&cfg);
-    rl_camera_defaults(&cam, 640, 480, 70 * M_PI / 180);
+    rl_calib_defaults(&cam, 640, 480, 70 * M_PI / 180);
     rl_mount_defaults(&mount, 0.88);
     /* the camera over landmark 0, facing +x: 0 at the centre, 1 and 2 further up */
     view(&cam, &mount, 0.0, 0.05, 0.0, three, 3, d);

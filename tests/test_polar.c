@@ -7,7 +7,7 @@
 #include <math.h>
 #include "rl_match.h"
 #include "rl_polar.h"
-#include "rl_template.h"
+#include "rl_raster.h"
 
 #define S 1000
 #define PAPER 215
@@ -25,7 +25,7 @@ static rl_image draw(int id, double cx, double cy, double r)
     rl_family f = {5};
     rl_image img = rl_image_view(S, S, S, px), d = rl_image_view(S, S, S, dk);
     int x, y;
-    assert_int_equal(rl_tmpl_draw(&f, id, cx, cy, r, NULL, &d, NULL), RL_OK);
+    assert_int_equal(rl_raster_draw(&f, id, cx, cy, r, NULL, &d, NULL), RL_OK);
     for (y = 0; y < S; y++)
         for (x = 0; x < S; x++) {
             double ux = x - cx, uy = y - cy;

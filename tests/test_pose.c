@@ -4,39 +4,39 @@
  * The geometry itself is checked against OpenCV in test_locate. */
 #include "rl_test.h"
 #include <math.h>
-#include "rl_camera.h"
+#include "rl_calib.h"
 #include "rl_map.h"
 #include "rl_pose.h"
 
-static rl_camera camera(void)
+static rl_calib camera(void)
 {
-    rl_camera c;
-    rl_camera_defaults(&c, 640, 480, 70.0 * 3.14159265358979 / 180.0);
+    rl_calib c;
+    rl_calib_defaults(&c, 640, 480, 70.0 * 3.14159265358979 / 180.0);
     return c;
 }
 
 static void test_camera_limits(void **state)
 {
-    rl_camera c = camera();
+    rl_calib c = camera();
     (void)state;
-    assert_int_equal(rl_camera_check(&c), RL_OK);
+    assert_int_equal(rl_calib_check(&c), RL_OK);
     c.fx = c.fy = 1e-300; /* accepted once: a NaN pose followed */
-    assert_int_equal(rl_camera_check(&c), RL_ERANGE);
+    assert_int_equal(rl_calib_check(&c), RL_ERANGE);
     c = camera();
     c.fy = 2e6;
-    assert_int_equal(rl_camera_check(&c), RL_ERANGE);
+    assert_int_equal(rl_calib_check(&c), RL_ERANGE);
     c = camera();
     c.cx = 1e9;
-    assert_int_equal(rl_camera_check(&c), RL_ERANGE);
+    assert_int_equal(rl_calib_check(&c), RL_ERANGE);
     c = camera();
     c.k[0] = 1e300;
-    assert_int_equal(rl_camera_check(&c), RL_ERANGE);
+    assert_int_equal(rl_calib_check(&c), RL_ERANGE);
     c = camera();
     c.width = 100000;
-    assert_int_equal(rl_camera_check(&c), RL_ERANGE);
+    assert_int_equal(rl_calib_check(&c), RL_ERANGE);
     c = camera();
     c.k[1] = NAN;
-    assert_int_equal(rl_camera_check(&c), RL_ERANGE);
+    assert_int_equal(rl_calib_check(&c), RL_ERANGE);
 }
 
 static rl_map map2(double x1)
@@ -69,7 +69,7 @@ static void test_map_limits(void **state)
 
 static void test_no_pose_from_impossible_detections(void **state)
 {
-    rl_camera c = camera();
+    rl_calib c = camera();
     rl_map m = map2(0.61);
     rl_mount mount = {0, 0, 0.88, 0, 0, 0};
     rl_detection d[2];

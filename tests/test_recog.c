@@ -3,7 +3,7 @@
 #include "rl_test.h"
 #include <math.h>
 #include "rl_recog.h"
-#include "rl_template.h"
+#include "rl_raster.h"
 
 #define W 320
 #define H 240
@@ -25,7 +25,7 @@ static rl_image draw(int stride)
     int x, y;
     memset(frame, 215, sizeof frame);
     for (i = 0; i < sizeof scene / sizeof scene[0]; i++) {
-        assert_int_equal(rl_tmpl_draw(&f, scene[i].id, scene[i].u, scene[i].v, scene[i].r, NULL, &tv, NULL), RL_OK);
+        assert_int_equal(rl_raster_draw(&f, scene[i].id, scene[i].u, scene[i].v, scene[i].r, NULL, &tv, NULL), RL_OK);
         for (y = 0; y < H; y++)
             for (x = 0; x < W; x++)
                 if (t[y * W + x])
@@ -92,7 +92,7 @@ static void test_inner_ring_is_not_a_landmark(void **state)
     const double cx = 160.4, cy = H - 18, r = 30.0;
     int x, y, pol, j, scene_no;
     (void)state;
-    assert_int_equal(rl_tmpl_draw(&f, 2, cx, cy, r, NULL, &tv, NULL), RL_OK);
+    assert_int_equal(rl_raster_draw(&f, 2, cx, cy, r, NULL, &tv, NULL), RL_OK);
     for (scene_no = 0; scene_no < 2; scene_no++) {
         int a = glow[scene_no][0], b = glow[scene_no][1];
         for (y = 0; y < H; y++)
@@ -172,12 +172,12 @@ static void test_soft_blob_next_to_light_is_not_a_landmark(void **state)
     const double bx = 90.0, by = 150.0, br = 20.0, lx = 230.0, ly = 150.0, lr = 24.0;
     int x, y, j, found = 0;
     (void)state;
-    assert_int_equal(rl_tmpl_draw(&f, 15, bx, by, br, NULL, &tv, NULL), RL_OK);
+    assert_int_equal(rl_raster_draw(&f, 15, bx, by, br, NULL, &tv, NULL), RL_OK);
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++)
             im[y * W + x] = (float)(215 - (215 - 60) * t[y * W + x] / 255.0);
     blur_float(im, 0.2 * br);
-    assert_int_equal(rl_tmpl_draw(&f, 9, lx, ly, lr, NULL, &tv, NULL), RL_OK);
+    assert_int_equal(rl_raster_draw(&f, 9, lx, ly, lr, NULL, &tv, NULL), RL_OK);
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
             double v = im[y * W + x];
@@ -220,7 +220,7 @@ static void test_code_ring_of_merged_landmark_is_not_a_landmark(void **state)
     int x, y, j, found_dark = 0;
     (void)state;
     memset(frame, 215, sizeof frame);
-    assert_int_equal(rl_tmpl_draw(&f, 6, cx, cy, r, NULL, &tv, NULL), RL_OK);
+    assert_int_equal(rl_raster_draw(&f, 6, cx, cy, r, NULL, &tv, NULL), RL_OK);
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
             int v = 215 - (215 - 30) * t[y * W + x] / 255;
@@ -229,7 +229,7 @@ static void test_code_ring_of_merged_landmark_is_not_a_landmark(void **state)
             frame[y * W + x] = (uint8_t)v;
         }
     /* id 9 on a patch of dark ceiling: its sheet (1.4 R) brighter */
-    assert_int_equal(rl_tmpl_draw(&f, 9, dx, dy, dr, NULL, &tv, NULL), RL_OK);
+    assert_int_equal(rl_raster_draw(&f, 9, dx, dy, dr, NULL, &tv, NULL), RL_OK);
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
             double d = hypot(x - dx, y - dy);

@@ -7,7 +7,7 @@
 #include "rl_test.h"
 #include <math.h>
 #include "fixture_eval.h"
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 #include "rl_png.h"
 #include "rl_run.h"
 
@@ -104,7 +104,7 @@ static void log_line(void *ctx, const char *l) { (void)ctx; (void)l; log_lines++
 
 /* ---- the scene: a golden fixture and a map made from its truth ---- */
 static truth tr;
-static rl_camera calib;
+static rl_calib calib;
 static rl_map map;
 static rl_mount mount;
 static rl_recog *rec;
@@ -126,7 +126,7 @@ static int setup(void **state)
     snprintf(path, sizeof path, "%s/tests/fixtures/clean_000.yaml", src);
     assert_int_equal(truth_load(path, &tr), 0);
     snprintf(path, sizeof path, "%s/tests/fixtures/camera.yaml", src);
-    if (rl_camfile_load(path, &calib, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    if (rl_calibfile_load(path, &calib, err, sizeof err) != RL_OK) fail_msg("%s", err);
     snprintf(path, sizeof path, "%s/tests/fixtures/clean_000.png", src);
     if (rl_png_read_gray(path, &cam.img, err, sizeof err) != RL_OK) fail_msg("%s", err);
     cam.small = rl_image_view(64, 48, 64, small_px);
@@ -183,7 +183,7 @@ static void run_to_end(void)
 
 static void assert_pose_right(const rl_msg *m)
 {
-    assert_int_equal(m->type, RL_FRAME_POSE);
+    assert_int_equal(m->type, RL_PACKET_POSE);
     if (hypot(m->x_mm / 1000.0 - tr.robot_x, m->y_mm / 1000.0 - tr.robot_y) > 0.005)
         fail_msg("pose (%d, %d) mm, truth (%.0f, %.0f) mm", m->x_mm, m->y_mm, tr.robot_x * 1000, tr.robot_y * 1000);
     assert_true(fabs(remainder(m->yaw_e4 / 1e4 - tr.robot_yaw, 2 * M_PI)) < 0.005);
@@ -218,7 +218,7 @@ static void test_camera_fails_then_comes_back(void **state)
     start(script);
     run_to_end();
     for (i = 0; i < out.n; i++) {
-        if (out.msgs[i].type == RL_FRAME_STATUS) {
+        if (out.msgs[i].type == RL_PACKET_STATUS) {
             assert_int_equal(out.msgs[i].reason, RL_STATUS_CAMERA_ERROR);
             camera_errors++;
         } else {
@@ -242,7 +242,7 @@ static void test_timeouts_reopen_the_camera(void **state)
     start(script);
     run_to_end();
     for (i = 0; i < out.n; i++) {
-        if (out.msgs[i].type == RL_FRAME_STATUS) {
+        if (out.msgs[i].type == RL_PACKET_STATUS) {
             assert_int_equal(out.msgs[i].reason, RL_STATUS_CAMERA_TIMEOUT);
             timeouts++;
         } else {
@@ -284,7 +284,7 @@ static void test_bad_frame_does_not_stop_the_loop(void **state)
     run_to_end();
     assert_int_equal(out.n, 3);
     assert_pose_right(&out.msgs[0]);
-    assert_int_equal(out.msgs[1].type, RL_FRAME_STATUS);
+    assert_int_equal(out.msgs[1].type, RL_PACKET_STATUS);
     assert_int_equal(out.msgs[1].reason, RL_STATUS_CONFIG_ERROR);
     assert_pose_right(&out.msgs[2]);
 }
@@ -299,7 +299,7 @@ static void test_damaged_frame_is_skipped(void **state)
     run_to_end();
     assert_int_equal(out.n, 4);
     assert_pose_right(&out.msgs[0]);
-    assert_int_equal(out.msgs[1].type, RL_FRAME_STATUS);
+    assert_int_equal(out.msgs[1].type, RL_PACKET_STATUS);
     assert_int_equal(out.msgs[1].reason, RL_STATUS_CAMERA_ERROR);
     assert_int_equal(out.msgs[2].reason, RL_STATUS_CAMERA_ERROR);
     assert_pose_right(&out.msgs[3]);
@@ -358,7 +358,7 @@ static void test_repeated_ids_ambiguous_then_tracked(void **state)
     assert_int_equal(allocations - before, 0);
     assert_int_equal(out.n, 3);
     for (i = 0; i < 3; i++) {
-        assert_int_equal(out.msgs[i].type, RL_FRAME_STATUS);
+        assert_int_equal(out.msgs[i].type, RL_PACKET_STATUS);
         assert_int_equal(out.msgs[i].reason, RL_STATUS_AMBIGUOUS);
     }
     assert_int_equal(runner.ambiguous, 3);

@@ -18,7 +18,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include "fixture_eval.h"
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 #include "rl_heap_place.h"
 #include "rl_heap_recog.h"
 #include "rl_mapfile.h"
@@ -31,7 +31,7 @@
 static const char *dir;
 static long synth_n;
 static rl_map map;
-static rl_camera cam;
+static rl_calib cam;
 static rl_mount mount;
 static rl_heap_place hp;
 
@@ -46,7 +46,7 @@ static void load_site(void)
     if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK)
         fail_msg("%s", err);
     snprintf(path, sizeof path, "%s/camera.yaml", dir);
-    if (rl_camfile_load(path, &cam, err, sizeof err) != RL_OK)
+    if (rl_calibfile_load(path, &cam, err, sizeof err) != RL_OK)
         fail_msg("%s", err);
     snprintf(path, sizeof path, "%s/robot.yaml", dir);
     if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK)
@@ -115,7 +115,7 @@ static int project_view(double x, double y, double yaw, rl_detection *d)
         double fwd = cos(cy) * dx + sin(cy) * dy, left = -sin(cy) * dx + cos(cy) * dy;
         if (fabs(fwd) > 3 * Z || fabs(left) > 3 * Z)
             continue;
-        rl_camera_project(&cam, left / Z, -fwd / Z, &u, &v);
+        rl_calib_project(&cam, left / Z, -fwd / Z, &u, &v);
         if (u < r || v < r || u > cam.width - r || v > cam.height - r)
             continue;
         memset(&d[n], 0, sizeof d[n]);

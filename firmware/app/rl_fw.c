@@ -6,7 +6,7 @@
 #include <string.h>
 #include "rl_fw.h"
 
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 #include "rl_cli.h"
 #include "rl_heap_recog.h"
 #include "rl_heap_place.h"
@@ -88,7 +88,7 @@ static void log_line(void *ctx, const char *line)
 /* Everything the firmware reads at start-up. */
 typedef struct {
     rl_runcfg cfg;
-    rl_camera calib;
+    rl_calib calib;
     rl_map map;
     rl_mount mount;
     rl_offsets offsets;
@@ -101,7 +101,7 @@ static int load_setup(const char *C, const char *config, fw_setup *s)
     char err[768];
     rl_runcfg *cfg = &s->cfg;
     if (rl_runcfg_load(config, cfg, err, sizeof err) != RL_OK ||
-        rl_camfile_load_sized(cfg->calibration, cfg->cam_width, cfg->cam_height, &s->calib, err, sizeof err) != RL_OK ||
+        rl_calibfile_load_sized(cfg->calibration, cfg->cam_width, cfg->cam_height, &s->calib, err, sizeof err) != RL_OK ||
         rl_mapfile_load(cfg->map, &s->map, err, sizeof err) != RL_OK ||
         rl_robotfile_load(cfg->robot, &s->mount, err, sizeof err) != RL_OK ||
         (cfg->offsets[0] && rl_offsetsfile_load(cfg->offsets, &s->offsets, err, sizeof err) != RL_OK))

@@ -7,7 +7,7 @@
 
 static rl_err solve(rl_runner *r, uint64_t t_us, rl_pose *pose);
 
-void rl_run_init(rl_runner *r, const rl_run_io *io, rl_recog *rec, const rl_camera *calib,
+void rl_run_init(rl_runner *r, const rl_run_io *io, rl_recog *rec, const rl_calib *calib,
                  const rl_map *map, const rl_mount *mount, rl_result *res)
 {
     memset(r, 0, sizeof *r);
@@ -86,7 +86,7 @@ static uint64_t next_backoff(const rl_runner *r, uint64_t b)
  * message is counted as dropped (the controller sees a gap in seq). */
 static void send_msg(rl_runner *r, rl_msg *m)
 {
-    uint8_t buf[RL_FRAME_MAX];
+    uint8_t buf[RL_PACKET_MAX];
     size_t n;
     char err[256];
     uint64_t now = r->io.clock.now_us(r->io.clock.ctx);
@@ -108,7 +108,7 @@ static void send_msg(rl_runner *r, rl_msg *m)
         r->out_up = 1;
         r->out_backoff = r->backoff_min_us;
     }
-    n = rl_frame_encode(m, buf);
+    n = rl_packet_encode(m, buf);
     if ((e = r->io.out.write(r->io.out.ctx, buf, n)) != RL_OK) {
         const char *why = r->io.out.why ? r->io.out.why(r->io.out.ctx) : NULL;
         logf_(r, RL_LOG_SERIAL, "serial: write failed (%s); reopening", why ? why : rl_strerror(e));
@@ -121,7 +121,7 @@ static void send_msg(rl_runner *r, rl_msg *m)
         return;
     }
     /* sent: the summary counts what reached the line */
-    if (m->type == RL_FRAME_POSE)
+    if (m->type == RL_PACKET_POSE)
         r->poses++;
     else
         r->statuses++;
@@ -131,7 +131,7 @@ static void send_status(rl_runner *r, int reason, int identified, int candidates
 {
     rl_msg m;
     memset(&m, 0, sizeof m);
-    m.type = RL_FRAME_STATUS;
+    m.type = RL_PACKET_STATUS;
     m.time_ms = (uint32_t)(t_us / 1000u);
     m.reason = (uint8_t)reason;
     m.identified = (uint8_t)(identified > 255 ? 255 : identified);
@@ -250,7 +250,7 @@ rl_err rl_run_step(rl_runner *r)
         rl_msg m;
         uint64_t sent = r->io.clock.now_us(r->io.clock.ctx);
         memset(&m, 0, sizeof m);
-        m.type = RL_FRAME_POSE;
+        m.type = RL_PACKET_POSE;
         m.time_ms = (uint32_t)(f.t_us / 1000u);
         m.x_mm = clamp32(pose.x * 1000.0);
         m.y_mm = clamp32(pose.y * 1000.0);
@@ -259,7 +259,7 @@ rl_err rl_run_step(rl_runner *r)
         m.flags = (uint8_t)(local | (pose.tilt_solved ? 2 : 0));
         m.residual_e4 = clampu16(pose.residual * 1e4);
         m.latency_e4 = clampu16((double)(sent > f.t_us ? sent - f.t_us : 0) / 100.0);
-        m.version = RL_FRAME_VERSION;
+        m.version = RL_PACKET_VERSION;
         m.sigma_x_e4 = clampu16(pose.sigma_x * 1e4);
         m.sigma_y_e4 = clampu16(pose.sigma_y * 1e4);
         m.sigma_yaw_e4 = clampu16(pose.sigma_yaw * 1e4);

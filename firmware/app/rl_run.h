@@ -36,7 +36,7 @@
 #include <stdint.h>
 #include "rl_cam.h"
 #include "rl_clock.h"
-#include "rl_frame.h"
+#include "rl_packet.h"
 #include "rl_place.h"
 #include "rl_pose.h"
 #include "rl_recog.h"
@@ -75,7 +75,7 @@ typedef struct {
     rl_run_io io;
     rl_cam cam;
     rl_recog *rec;
-    const rl_camera *calib;
+    const rl_calib *calib;
     const rl_map *map;
     const rl_mount *mount;
     const rl_offsets *offsets;  /* NULL: pinhole model */
@@ -108,7 +108,7 @@ typedef struct {
     uint64_t last_pose_us;
 } rl_runner;
 
-void rl_run_init(rl_runner *r, const rl_run_io *io, rl_recog *rec, const rl_camera *calib,
+void rl_run_init(rl_runner *r, const rl_run_io *io, rl_recog *rec, const rl_calib *calib,
                  const rl_map *map, const rl_mount *mount, rl_result *res);
 
 /* One step. RL_OK to go on; RL_ENOTFOUND when the camera has no more

@@ -32,7 +32,7 @@ typedef struct {
 
 /* Detections on the ceiling, complete ones first, then nearest the image
  * centre (the best measured propose first). */
-static void observe_all(const rl_place *pl, const rl_camera *cam, const rl_mount *mount, const rl_detection *lm,
+static void observe_all(const rl_place *pl, const rl_calib *cam, const rl_mount *mount, const rl_detection *lm,
                         int n, const rl_offsets *offsets, obs_set *o)
 {
     double key[RL_MAX_LANDMARKS];
@@ -292,14 +292,14 @@ static void report(const search *s, const obs_set *o, int status, rl_place_found
             f->match[o->det[k]] = s->best.match[k];
 }
 
-rl_err rl_place_find(const rl_place *pl, const rl_camera *cam, const rl_mount *mount, const rl_detection *lm, int n,
+rl_err rl_place_find(const rl_place *pl, const rl_calib *cam, const rl_mount *mount, const rl_detection *lm, int n,
                      const rl_offsets *offsets, const rl_place_prior *prior, rl_place_found *found)
 {
     obs_set o;
     search s;
     int i;
     if (pl == NULL || cam == NULL || mount == NULL || found == NULL || n < 0 || (n > 0 && lm == NULL) ||
-        rl_camera_check(cam) != RL_OK)
+        rl_calib_check(cam) != RL_OK)
         return RL_EINVAL;
     memset(found, 0, sizeof *found);
     for (i = 0; i < RL_MAX_LANDMARKS; i++)
@@ -328,7 +328,7 @@ rl_err rl_place_find(const rl_place *pl, const rl_camera *cam, const rl_mount *m
     return RL_EAMBIGUOUS;
 }
 
-rl_err rl_place_solve(const rl_place *pl, const rl_camera *cam, const rl_mount *mount, const rl_detection *lm,
+rl_err rl_place_solve(const rl_place *pl, const rl_calib *cam, const rl_mount *mount, const rl_detection *lm,
                       int n, const rl_offsets *offsets, const rl_place_prior *prior, rl_pose *pose,
                       rl_place_found *found)
 {

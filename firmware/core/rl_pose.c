@@ -42,7 +42,7 @@ void rl_offsets_eval(const rl_offsets *o, double u, double v, double *fwd, doubl
     }
 }
 
-void rl_pose_ceiling_point(const rl_camera *cam, const rl_offsets *offsets, double distance,
+void rl_pose_ceiling_point(const rl_calib *cam, const rl_offsets *offsets, double distance,
                            double u, double v, double *fwd, double *left)
 {
     if (offsets != NULL) {
@@ -53,7 +53,7 @@ void rl_pose_ceiling_point(const rl_camera *cam, const rl_offsets *offsets, doub
         *left *= k;
     } else {
         double xn, yn;
-        rl_camera_unproject(cam, u, v, &xn, &yn);
+        rl_calib_unproject(cam, u, v, &xn, &yn);
         /* image top (-v) is forward, +u is left */
         *fwd = -yn * distance;
         *left = xn * distance;
@@ -61,7 +61,7 @@ void rl_pose_ceiling_point(const rl_camera *cam, const rl_offsets *offsets, doub
 }
 
 /* The mount's rotation, the ceiling and the centre noise. */
-static void make_model(const rl_camera *cam, const rl_map *map, const rl_mount *mount, rl_pose_model *md)
+static void make_model(const rl_calib *cam, const rl_map *map, const rl_mount *mount, rl_pose_model *md)
 {
     rl_pose_fit_model(md, mount, map->ceiling_height, 0.5 * map->diameter);
     md->sn = RL_POSE_PIXEL_SIGMA / sqrt(cam->fx * cam->fy);
@@ -71,7 +71,7 @@ static void make_model(const rl_camera *cam, const rl_map *map, const rl_mount *
 /* One detection as a point: its ray and, for a level robot, where that
  * meets the ceiling in the robot frame (the offset map's point with
  * offsets). 0 if the ray misses the ceiling. */
-static int observe(const rl_camera *cam, const rl_map *map, const rl_pose_model *md, const rl_offsets *offsets,
+static int observe(const rl_calib *cam, const rl_map *map, const rl_pose_model *md, const rl_offsets *offsets,
                    const rl_detection *d, double Z, rl_pose_pt *p)
 {
     const rl_mount *mount = md->mount;
@@ -84,7 +84,7 @@ static int observe(const rl_camera *cam, const rl_map *map, const rl_pose_model 
         p->xn = p->yn = 0;
     } else {
         /* the ray, tilted by the mount, meets the ceiling of a level robot */
-        rl_camera_centre(cam, d->u, d->v, 0.5 * map->diameter / Z, &p->xn, &p->yn);
+        rl_calib_centre(cam, d->u, d->v, 0.5 * map->diameter / Z, &p->xn, &p->yn);
         if (!rl_pose_fit_level_point(md, Z, p->xn, p->yn, &p->px, &p->py))
             return 0;
     }
@@ -205,7 +205,7 @@ static rl_err finish(const rl_pose_model *md, const double *q, int offsets, rl_p
     return RL_OK;
 }
 
-int rl_pose_level_point(const rl_camera *cam, const rl_map *map, const rl_mount *mount, const rl_offsets *offsets,
+int rl_pose_level_point(const rl_calib *cam, const rl_map *map, const rl_mount *mount, const rl_offsets *offsets,
                         const rl_detection *d, double *x, double *y)
 {
     rl_pose_model md;
@@ -221,7 +221,7 @@ int rl_pose_level_point(const rl_camera *cam, const rl_map *map, const rl_mount 
     return 1;
 }
 
-rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mount,
+rl_err rl_pose_solve(const rl_calib *cam, const rl_map *map, const rl_mount *mount,
                      const rl_detection *lm, int n, const rl_offsets *offsets, rl_pose *out)
 {
     int match[RL_MAX_LANDMARKS], i;
@@ -234,7 +234,7 @@ rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mo
     return rl_pose_solve_matched(cam, map, mount, lm, n, match, offsets, out);
 }
 
-rl_err rl_pose_solve_matched(const rl_camera *cam, const rl_map *map, const rl_mount *mount,
+rl_err rl_pose_solve_matched(const rl_calib *cam, const rl_map *map, const rl_mount *mount,
                              const rl_detection *lm, int n, const int *match, const rl_offsets *offsets,
                              rl_pose *out)
 {
@@ -243,7 +243,7 @@ rl_err rl_pose_solve_matched(const rl_camera *cam, const rl_map *map, const rl_m
     double Z, c, s, sum2 = 0, q[RL_POSE_NQ], cov[RL_POSE_NQ * RL_POSE_NQ], chi2 = 0;
     rl_pose_model md;
     if (cam == NULL || map == NULL || mount == NULL || out == NULL || (n > 0 && (lm == NULL || match == NULL)) ||
-        n < 0 || rl_camera_check(cam) != RL_OK)
+        n < 0 || rl_calib_check(cam) != RL_OK)
         return RL_EINVAL;
     memset(out, 0, sizeof *out);
     if (n > RL_MAX_LANDMARKS)

@@ -16,6 +16,7 @@
 #define RL_PROFILE_H
 
 #include "rl_image.h"
+#include "rl_shape.h"
 #include "rl_tone.h"
 
 /* Radial bins of a profile: at R = 24 px a bin is 0.45 px wide, so bin
@@ -23,29 +24,6 @@
 #define RL_PROFILE_BINS 64
 /* A profile covers radii 0 .. RL_PROFILE_EXTENT * R (the quiet zone's start). */
 #define RL_PROFILE_EXTENT 1.2
-
-/* A landmark seen as an ellipse (perspective, lens distortion): the
- * normalized radius of an offset (dx, dy) from the centre is
- * sqrt(a dx^2 + 2 b dx dy + c dy^2), with a c - b^2 = 1 (areas kept): the
- * ellipse of normalized radius r has the area of a circle of radius r.
- * A circle is (1, 0, 1). */
-typedef struct {
-    double a, b, c;
-} rl_shape;
-
-/* The circle. */
-rl_shape rl_shape_circle(void);
-
-/* The shape of a region from its central second moments (covariance);
- * a circle when its axes differ by less than 3% or the moments are
- * degenerate. */
-rl_shape rl_shape_from_moments(double cxx, double cxy, double cyy);
-
-/* 1 for the circle. */
-int rl_shape_is_circle(const rl_shape *s);
-
-/* Image offset per unit of normalized radius in direction (c, s). */
-double rl_shape_step(const rl_shape *sh, double c, double s);
 
 typedef struct {
     double n[RL_PROFILE_BINS];  /* pixels per bin */

@@ -44,7 +44,7 @@
 #define RL_PLACE_H
 
 #include <stddef.h>
-#include "rl_camera.h"
+#include "rl_calib.h"
 #include "rl_config.h"
 #include "rl_error.h"
 #include "rl_map.h"
@@ -109,12 +109,12 @@ long rl_place_pairs(const rl_place *pl);
  * with a place, RL_EAMBIGUOUS when none is clear, RL_ETOOFEW with fewer
  * than two detections on the ceiling, RL_EINVAL for bad arguments.
  * prior may be NULL. */
-RL_CHECK rl_err rl_place_find(const rl_place *pl, const rl_camera *cam, const rl_mount *mount,
+RL_CHECK rl_err rl_place_find(const rl_place *pl, const rl_calib *cam, const rl_mount *mount,
                               const rl_detection *lm, int n, const rl_offsets *offsets,
                               const rl_place_prior *prior, rl_place_found *found);
 
 /* rl_place_find, then rl_pose_solve_matched with what it found. */
-RL_CHECK rl_err rl_place_solve(const rl_place *pl, const rl_camera *cam, const rl_mount *mount,
+RL_CHECK rl_err rl_place_solve(const rl_place *pl, const rl_calib *cam, const rl_mount *mount,
                                const rl_detection *lm, int n, const rl_offsets *offsets,
                                const rl_place_prior *prior, rl_pose *pose, rl_place_found *found);
 

@@ -1,6 +1,6 @@
 /* rl_pose: the robot's pose from identified landmarks.
  *
- * Each identified centre is undistorted (rl_camera_unproject) and
+ * Each identified centre is undistorted (rl_calib_unproject) and
  * projected onto the ceiling plane, distance Z = ceiling_height - camera
  * height above the camera: with the spec's mounting (image top = robot
  * forward, +u = robot left) a centre at normalized (xn, yn) lies at
@@ -32,7 +32,7 @@
 #ifndef RL_POSE_H
 #define RL_POSE_H
 
-#include "rl_camera.h"
+#include "rl_calib.h"
 #include "rl_config.h"
 #include "rl_error.h"
 #include "rl_map.h"
@@ -105,18 +105,18 @@ void rl_offsets_eval(const rl_offsets *o, double u, double v, double *fwd, doubl
 /* Ceiling point of image point (u, v) in the camera's horizontal frame:
  * (forward, left) in metres, with the pinhole model, or with the offset
  * map when `offsets` is not NULL (scaled to the map's distance). */
-void rl_pose_ceiling_point(const rl_camera *cam, const rl_offsets *offsets, double distance,
+void rl_pose_ceiling_point(const rl_calib *cam, const rl_offsets *offsets, double distance,
                            double u, double v, double *fwd, double *left);
 
 /* Solve the pose from n identified landmarks. RL_ETOOFEW when fewer than
  * two usable (in the map, consistent) remain; RL_ERANGE when the camera is
  * not below the ceiling or the result is not finite (a calibration or map
  * out of its limits); RL_EINVAL for bad arguments (a camera
- * rl_camera_check refuses among them). Detections no camera of this size
+ * rl_calib_check refuses among them). Detections no camera of this size
  * can see (more than a frame outside the image) are dropped. On RL_OK
  * every number in `out` is finite and the pose within twice
  * RL_MAP_MAX_COORD; `out` always says what was used and dropped. */
-RL_CHECK rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_mount *mount,
+RL_CHECK rl_err rl_pose_solve(const rl_calib *cam, const rl_map *map, const rl_mount *mount,
                               const rl_detection *lm, int n, const rl_offsets *offsets,
                               rl_pose *out);
 
@@ -124,13 +124,13 @@ RL_CHECK rl_err rl_pose_solve(const rl_camera *cam, const rl_map *map, const rl_
  * is lm[i]'s index in the map, or -1 when it is not in the map (counted
  * in n_unknown). rl_pose_solve matches each id to its first entry; on a
  * map that repeats ids rl_place_solve finds the match. */
-RL_CHECK rl_err rl_pose_solve_matched(const rl_camera *cam, const rl_map *map, const rl_mount *mount,
+RL_CHECK rl_err rl_pose_solve_matched(const rl_calib *cam, const rl_map *map, const rl_mount *mount,
                                       const rl_detection *lm, int n, const int *match,
                                       const rl_offsets *offsets, rl_pose *out);
 
 /* Where detection d's centre meets the ceiling of a level robot, in the
  * robot frame (forward, left), m; 0 if its ray misses the ceiling. */
-int rl_pose_level_point(const rl_camera *cam, const rl_map *map, const rl_mount *mount, const rl_offsets *offsets,
+int rl_pose_level_point(const rl_calib *cam, const rl_map *map, const rl_mount *mount, const rl_offsets *offsets,
                         const rl_detection *d, double *x, double *y);
 
 #endif

@@ -27,7 +27,7 @@ rl_err rl_heap_place_init(rl_heap_place *hp, const rl_map *map, const rl_place_c
     return RL_OK;
 }
 
-rl_err rl_heap_place_solve(const rl_heap_place *hp, const rl_camera *cam, const rl_map *map, const rl_mount *mount,
+rl_err rl_heap_place_solve(const rl_heap_place *hp, const rl_calib *cam, const rl_map *map, const rl_mount *mount,
                            const rl_detection *lm, int n, const rl_offsets *offsets, const rl_place_prior *prior,
                            rl_pose *pose, rl_place_found *found)
 {

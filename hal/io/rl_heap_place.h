@@ -30,7 +30,7 @@ RL_CHECK rl_err rl_heap_place_init(rl_heap_place *hp, const rl_map *map, const r
 
 /* The pose: rl_place_solve with the index, rl_pose_solve without (found
  * then says RL_PLACE_FOUND with each id's landmark, or RL_PLACE_NONE). */
-RL_CHECK rl_err rl_heap_place_solve(const rl_heap_place *hp, const rl_camera *cam, const rl_map *map,
+RL_CHECK rl_err rl_heap_place_solve(const rl_heap_place *hp, const rl_calib *cam, const rl_map *map,
                                     const rl_mount *mount, const rl_detection *lm, int n,
                                     const rl_offsets *offsets, const rl_place_prior *prior, rl_pose *pose,
                                     rl_place_found *found);

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "fuzz_take.h"
-#include "rl_camera.h"
+#include "rl_calib.h"
 #include "rl_map.h"
 #include "rl_place.h"
 
@@ -16,7 +16,7 @@ static unsigned char mem[1 << 18];
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    rl_camera cam;
+    rl_calib cam;
     rl_mount mount;
     rl_detection det[12];
     rl_place_config cfg;
@@ -33,7 +33,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     ids = 1 + data[2] % 6; /* few ids: they repeat */
     data += 3;
     size -= 3;
-    rl_camera_defaults(&cam, 640, 480, 1.2);
+    rl_calib_defaults(&cam, 640, 480, 1.2);
     rl_mount_defaults(&mount, 0.88);
     memset(&map, 0, sizeof map);
     map.family.bits = 5;

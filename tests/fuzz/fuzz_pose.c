@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "fuzz_take.h"
-#include "rl_camera.h"
+#include "rl_calib.h"
 #include "rl_map.h"
 #include "rl_pose.h"
 
@@ -13,7 +13,7 @@ static rl_map map;
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    rl_camera cam;
+    rl_calib cam;
     rl_mount mount;
     rl_detection det[8];
     rl_pose pose;
@@ -24,7 +24,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     nm = 1 + data[1] % 8;
     data += 2;
     size -= 2;
-    rl_camera_defaults(&cam, 640, 480, 1.2);
+    rl_calib_defaults(&cam, 640, 480, 1.2);
     cam.model = (rl_dist_model)(size > 0 ? data[0] % 3 : 0);
     cam.fx = fuzz_take(&data, &size);
     cam.fy = fuzz_take(&data, &size);

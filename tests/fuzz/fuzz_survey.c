@@ -11,7 +11,7 @@
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    rl_camera cam;
+    rl_calib cam;
     rl_family fam = {5};
     rl_survey_config cfg;
     rl_survey sv;
@@ -19,7 +19,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const char *path = fuzz_file(data, size, ".jsonl");
     rl_err e;
     int i;
-    rl_camera_defaults(&cam, 640, 480, 70.0 * M_PI / 180.0);
+    rl_calib_defaults(&cam, 640, 480, 70.0 * M_PI / 180.0);
     rl_survey_defaults(&cfg);
     cfg.origin_id = 1;
     cfg.axis_id = 6;

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "fuzz_file.h"
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 #include "rl_mapfile.h"
 #include "rl_offsetsfile.h"
 #include "rl_robotfile.h"
@@ -34,8 +34,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         break;
     case 1: {
-        rl_camera cam;
-        if ((e = rl_camfile_load(path, &cam, err, sizeof err)) == RL_OK && rl_camera_check(&cam) != RL_OK)
+        rl_calib cam;
+        if ((e = rl_calibfile_load(path, &cam, err, sizeof err)) == RL_OK && rl_calib_check(&cam) != RL_OK)
             abort();
         break;
     }

@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 #include "rl_clock.h"
 #include "rl_heap_place.h"
 #include "rl_heap_recog.h"
@@ -22,7 +22,7 @@
 typedef struct {
     const rl_map *map;
     const rl_heap_place *hp;
-    const rl_camera *cam;
+    const rl_calib *cam;
     const rl_mount *mount;
     const rl_result *res;
     const rl_place_prior *prior; /* find: NULL for none */
@@ -63,7 +63,7 @@ int rl_bench_site(const char *dir)
     static rl_map map;
     static rl_result res;
     static double find_us[FRAMES], track_us[FRAMES], recog_us[FRAMES], solve_us[FRAMES];
-    rl_camera cam;
+    rl_calib cam;
     rl_mount mount;
     rl_recog_config cfg;
     rl_heap_recog hr;
@@ -76,7 +76,7 @@ int rl_bench_site(const char *dir)
     if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK)
         goto fail;
     snprintf(path, sizeof path, "%s/camera.yaml", dir);
-    if (rl_camfile_load(path, &cam, err, sizeof err) != RL_OK)
+    if (rl_calibfile_load(path, &cam, err, sizeof err) != RL_OK)
         goto fail;
     snprintf(path, sizeof path, "%s/robot.yaml", dir);
     if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK)

@@ -19,7 +19,7 @@
 #include <apriltag/apriltag.h>
 #include <apriltag/tag36h11.h>
 #include "rl_cli.h"
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 #include "rl_mapfile.h"
 #include "rl_png.h"
 #include "rl_clock.h"
@@ -195,7 +195,7 @@ static int bench_pose(const char *dir)
     static rl_result res;
     static rl_map map;
     static double pose_us[MAX_FRAMES], recog_us[MAX_FRAMES];
-    rl_camera cam;
+    rl_calib cam;
     rl_mount mount;
     rl_recog_config cfg;
     rl_heap_recog hr;
@@ -204,7 +204,7 @@ static int bench_pose(const char *dir)
     snprintf(path, sizeof path, "%s/map.yaml", dir);
     if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK) goto fail;
     snprintf(path, sizeof path, "%s/camera.yaml", dir);
-    if (rl_camfile_load(path, &cam, err, sizeof err) != RL_OK) goto fail;
+    if (rl_calibfile_load(path, &cam, err, sizeof err) != RL_OK) goto fail;
     snprintf(path, sizeof path, "%s/robot.yaml", dir);
     if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK) goto fail;
     rl_recog_defaults(&cfg);

@@ -19,7 +19,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "rl_cli.h"
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 #include "rl_mapfile.h"
 #include "rl_outfile.h"
 #include "rl_pose_fit.h"
@@ -108,7 +108,7 @@ int main(int argc, char **argv)
     double noise = 0.1, rock = 0.01;
     static mark site[20000];
     int n = 0;
-    rl_camera cam;
+    rl_calib cam;
     rl_mount mount;
     rl_outfile o;
     rl_family fam = {6};
@@ -143,7 +143,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "ringloc-survey-synth: --camera FILE, --out DIR, and at most 20000 landmarks (see --help)\n");
         return 2;
     }
-    if (rl_camfile_load(cam_path, &cam, err, sizeof err) != RL_OK)
+    if (rl_calibfile_load(cam_path, &cam, err, sizeof err) != RL_OK)
         return fprintf(stderr, "ringloc-survey-synth: %s\n", err), 1;
     mkdir(out, 0777);
     rng ^= seed * 0x2545F4914F6CDD1Dull;
@@ -160,7 +160,7 @@ int main(int argc, char **argv)
     rl_mount_defaults(&mount, 0.88);
     mount.x = 0.1;
     snprintf(path, sizeof path, "%s/camera.yaml", out);
-    if (rl_camfile_save(path, &cam, err, sizeof err) != RL_OK)
+    if (rl_calibfile_save(path, &cam, err, sizeof err) != RL_OK)
         return fprintf(stderr, "ringloc-survey-synth: %s\n", err), 1;
     snprintf(path, sizeof path, "%s/robot.yaml", out);
     if (rl_robotfile_save(path, &mount, err, sizeof err) != RL_OK)
@@ -218,7 +218,7 @@ int main(int argc, char **argv)
                     double dx = X - C[0], dy = Y - C[1], dz = HEIGHT - C[2];
                     double fw = Rc[0] * dx + Rc[3] * dy + Rc[6] * dz, lf = Rc[1] * dx + Rc[4] * dy + Rc[7] * dz,
                            up = Rc[2] * dx + Rc[5] * dy + Rc[8] * dz;
-                    rl_camera_project(&cam, lf / up, -fw / up, &pu[a], &pv[a]);
+                    rl_calib_project(&cam, lf / up, -fw / up, &pu[a], &pv[a]);
                     su += pu[a];
                     sv += pv[a];
                 }

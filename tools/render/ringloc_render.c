@@ -1,7 +1,7 @@
 /* ringloc-render: fixtures that know the truth.
  *
  * Ray-casts an upward-looking camera (pinhole + plumb_bob, the core's own
- * rl_camera model) onto a ceiling plane: tiles and T-bars, light fixtures
+ * rl_calib model) onto a ceiling plane: tiles and T-bars, light fixtures
  * that saturate and wash out their surroundings, clutter (smoke detectors,
  * downlights, sprinklers, vents, round speaker grilles, boxes, exit signs),
  * landmarks printed per shared/landmark-spec.md on paper, and camera
@@ -24,8 +24,8 @@
 #include <apriltag/apriltag.h>
 #include <apriltag/tag36h11.h>
 #include "rl_cli.h"
-#include "rl_camera.h"
-#include "rl_camfile.h"
+#include "rl_calib.h"
+#include "rl_calibfile.h"
 #include "rl_family.h"
 #include "rl_mapfile.h"
 #include "rl_outfile.h"
@@ -51,7 +51,7 @@ typedef struct {
 } object;
 
 typedef struct {
-    rl_camera cam;
+    rl_calib cam;
     rl_family fam;
     double diameter;       /* landmark D, m */
     double distance;       /* camera to ceiling, m */
@@ -261,7 +261,7 @@ static void map_to_pixel(const scene *s, double X, double Y, double *u, double *
     double dx = X - s->cx, dy = Y - s->cy, dz = s->ceiling_height - s->cz;
     double f = R[0] * dx + R[3] * dy + R[6] * dz, l = R[1] * dx + R[4] * dy + R[7] * dz,
            up = R[2] * dx + R[5] * dy + R[8] * dz;
-    rl_camera_project(&s->cam, l / up, -f / up, u, v);
+    rl_calib_project(&s->cam, l / up, -f / up, u, v);
 }
 
 static void ray_to_map(const scene *s, double xn, double yn, double ox, double oy, double *X,
@@ -296,9 +296,9 @@ static void rotation(double yaw, double pitch, double roll, double *R)
 
 /* Undistorted rays of every subsample, cached per camera. */
 static double *ray_table;
-static rl_camera ray_cam;
+static rl_calib ray_cam;
 
-static int build_rays(const rl_camera *cam)
+static int build_rays(const rl_calib *cam)
 {
     int W = cam->width, H = cam->height, x, y, a, b;
     if (ray_table && memcmp(&ray_cam, cam, sizeof *cam) == 0)
@@ -313,7 +313,7 @@ static int build_rays(const rl_camera *cam)
             for (b = 0; b < SUB; b++)
                 for (a = 0; a < SUB; a++) {
                     double *r = ray_table + 2 * ((((size_t)y * W + x) * SUB + b) * SUB + a);
-                    rl_camera_unproject(cam, x + (a + 0.5) / SUB - 0.5, y + (b + 0.5) / SUB - 0.5, &r[0], &r[1]);
+                    rl_calib_unproject(cam, x + (a + 0.5) / SUB - 0.5, y + (b + 0.5) / SUB - 0.5, &r[0], &r[1]);
                 }
     return 0;
 }
@@ -598,7 +598,7 @@ static void random_scene(scene *s, set_kind kind)
     if (kind == SET_LENS) {
         /* a wide-angle lens sees further than its focal length says */
         double xn, yn;
-        rl_camera_unproject(&s->cam, 0, 0, &xn, &yn);
+        rl_calib_unproject(&s->cam, 0, 0, &xn, &yn);
         view = hypot(xn, yn) * s->distance * 1.05;
     }
     reach = view + s->tile;
@@ -987,9 +987,9 @@ static int path_pose(const char *kind, int k, int n, double *x, double *y, doubl
     return 0;
 }
 
-static void default_camera(rl_camera *cam, int w, int h)
+static void default_camera(rl_calib *cam, int w, int h)
 {
-    rl_camera_defaults(cam, w, h, 70.0 * M_PI / 180.0);
+    rl_calib_defaults(cam, w, h, 70.0 * M_PI / 180.0);
     cam->model = RL_DIST_PLUMB_BOB;
     cam->k[0] = -0.12;
     cam->k[1] = 0.08;
@@ -1026,7 +1026,7 @@ int main(int argc, char **argv)
     const char *site_path = NULL;
     render_pose *poses = NULL;
     static scene s;
-    rl_camera cam;
+    rl_calib cam;
     set_kind kind = SET_CLEAN;
     char err[512], name[1024], file[1200];
     uint8_t *px;
@@ -1090,7 +1090,7 @@ int main(int argc, char **argv)
         }
     }
     if (cam_path) {
-        if (rl_camfile_load(cam_path, &cam, err, sizeof err) != RL_OK) {
+        if (rl_calibfile_load(cam_path, &cam, err, sizeof err) != RL_OK) {
             fprintf(stderr, "ringloc-render: %s\n", err);
             return 1;
         }
@@ -1135,7 +1135,7 @@ int main(int argc, char **argv)
             site_spacing = fmin(site_spacing, hypot(site_map.lm[i2].x - site_map.lm[0].x,
                                                     site_map.lm[i2].y - site_map.lm[0].y));
     }
-    if (cam_out && rl_camfile_save(cam_out, &cam, err, sizeof err) != RL_OK) {
+    if (cam_out && rl_calibfile_save(cam_out, &cam, err, sizeof err) != RL_OK) {
         fprintf(stderr, "ringloc-render: %s\n", err);
         return 1;
     }

@@ -21,7 +21,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "rl_cli.h"
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 #include "rl_clock.h"
 #include "rl_heap_recog.h"
 #include "rl_mapfile.h"
@@ -138,7 +138,7 @@ int main(int argc, char **argv)
     static rl_runner runner;
     static line_double line;
     static char path[4096], err[512], list[4096];
-    rl_camera calib;
+    rl_calib calib;
     rl_mount mount;
     rl_recog_config cfg;
     rl_heap_recog hr;
@@ -165,7 +165,7 @@ int main(int argc, char **argv)
     snprintf(path, sizeof path, "%s/map.yaml", dir);
     if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK) goto fail;
     snprintf(path, sizeof path, "%s/camera.yaml", dir);
-    if (rl_camfile_load(path, &calib, err, sizeof err) != RL_OK) goto fail;
+    if (rl_calibfile_load(path, &calib, err, sizeof err) != RL_OK) goto fail;
     snprintf(path, sizeof path, "%s/robot.yaml", dir);
     if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK) goto fail;
     rl_recog_defaults(&cfg);

@@ -1,10 +1,10 @@
-#include "rl_camera.h"
+#include "rl_calib.h"
 
 #include <math.h>
 #include <string.h>
 #include "rl_config.h"
 
-void rl_camera_defaults(rl_camera *cam, int width, int height, double hfov)
+void rl_calib_defaults(rl_calib *cam, int width, int height, double hfov)
 {
     memset(cam, 0, sizeof *cam);
     cam->width = width;
@@ -15,17 +15,17 @@ void rl_camera_defaults(rl_camera *cam, int width, int height, double hfov)
     cam->model = RL_DIST_NONE;
 }
 
-rl_err rl_camera_check(const rl_camera *cam)
+rl_err rl_calib_check(const rl_calib *cam)
 {
     int i;
     if (cam->width <= 0 || cam->height <= 0 || cam->width > RL_MAX_IMAGE_DIM ||
-        cam->height > RL_MAX_IMAGE_DIM || !(cam->fx >= RL_CAMERA_MIN_F) ||
-        !(cam->fx <= RL_CAMERA_MAX_F) || !(cam->fy >= RL_CAMERA_MIN_F) || !(cam->fy <= RL_CAMERA_MAX_F) ||
+        cam->height > RL_MAX_IMAGE_DIM || !(cam->fx >= RL_CALIB_MIN_F) ||
+        !(cam->fx <= RL_CALIB_MAX_F) || !(cam->fy >= RL_CALIB_MIN_F) || !(cam->fy <= RL_CALIB_MAX_F) ||
         !(fabs(cam->cx - 0.5 * cam->width) <= 1.5 * cam->width) ||
         !(fabs(cam->cy - 0.5 * cam->height) <= 1.5 * cam->height))
         return RL_ERANGE;
-    for (i = 0; i < RL_CAMERA_MAX_COEFFS; i++)
-        if (!(fabs(cam->k[i]) <= RL_CAMERA_MAX_K))
+    for (i = 0; i < RL_CALIB_MAX_COEFFS; i++)
+        if (!(fabs(cam->k[i]) <= RL_CALIB_MAX_K))
             return RL_ERANGE;
     return RL_OK;
 }
@@ -37,7 +37,7 @@ static double fisheye_theta_d(const double *k, double t)
     return t * (1.0 + t2 * (k[0] + t2 * (k[1] + t2 * (k[2] + t2 * k[3]))));
 }
 
-void rl_camera_distort(const rl_camera *cam, double x, double y, double *xd, double *yd)
+void rl_calib_distort(const rl_calib *cam, double x, double y, double *xd, double *yd)
 {
     const double *k = cam->k;
     double r2, r4, r6, radial, xy;
@@ -91,7 +91,7 @@ static void fisheye_undistort(const double *k, double xd, double yd, double *x, 
  * in use and stops early once the step is below 1e-12. */
 #define UNDISTORT_ITERATIONS 40
 
-void rl_camera_undistort(const rl_camera *cam, double xd, double yd, double *x, double *y)
+void rl_calib_undistort(const rl_calib *cam, double xd, double yd, double *x, double *y)
 {
     const double *k = cam->k;
     double ux = xd, uy = yd;
@@ -122,50 +122,50 @@ void rl_camera_undistort(const rl_camera *cam, double xd, double yd, double *x, 
     *y = uy;
 }
 
-void rl_camera_project(const rl_camera *cam, double x, double y, double *u, double *v)
+void rl_calib_project(const rl_calib *cam, double x, double y, double *u, double *v)
 {
     double xd, yd;
-    rl_camera_distort(cam, x, y, &xd, &yd);
+    rl_calib_distort(cam, x, y, &xd, &yd);
     *u = cam->fx * xd + cam->cx;
     *v = cam->fy * yd + cam->cy;
 }
 
-void rl_camera_unproject(const rl_camera *cam, double u, double v, double *x, double *y)
+void rl_calib_unproject(const rl_calib *cam, double u, double v, double *x, double *y)
 {
-    rl_camera_undistort(cam, (u - cam->cx) / cam->fx, (v - cam->cy) / cam->fy, x, y);
+    rl_calib_undistort(cam, (u - cam->cx) / cam->fx, (v - cam->cy) / cam->fy, x, y);
 }
 
 /* The edge's centre is the mean of D(c + R u) over the circle: D(c) plus
  * R^2 / 4 times D's Laplacian (a five-point stencil here). */
-void rl_camera_centre(const rl_camera *cam, double u, double v, double radius, double *x, double *y)
+void rl_calib_centre(const rl_calib *cam, double u, double v, double radius, double *x, double *y)
 {
     double xd = (u - cam->cx) / cam->fx, yd = (v - cam->cy) / cam->fy, x0, y0, h = 0.01, k;
     double d[5][2];
     static const double at[5][2] = {{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}};
     int i;
-    rl_camera_undistort(cam, xd, yd, &x0, &y0);
+    rl_calib_undistort(cam, xd, yd, &x0, &y0);
     if (cam->model == RL_DIST_NONE) {
         *x = x0;
         *y = y0;
         return;
     }
     for (i = 0; i < 5; i++)
-        rl_camera_distort(cam, x0 + h * at[i][0], y0 + h * at[i][1], &d[i][0], &d[i][1]);
+        rl_calib_distort(cam, x0 + h * at[i][0], y0 + h * at[i][1], &d[i][0], &d[i][1]);
     k = radius * radius / 4.0 / (h * h);
     xd -= k * (d[1][0] + d[2][0] + d[3][0] + d[4][0] - 4 * d[0][0]);
     yd -= k * (d[1][1] + d[2][1] + d[3][1] + d[4][1] - 4 * d[0][1]);
-    rl_camera_undistort(cam, xd, yd, x, y);
+    rl_calib_undistort(cam, xd, yd, x, y);
 }
 
-double rl_camera_radius(const rl_camera *cam, double u, double v, double r)
+double rl_calib_radius(const rl_calib *cam, double u, double v, double r)
 {
     static const double at[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
     double x0, y0, sum = 0;
     int i;
-    rl_camera_unproject(cam, u, v, &x0, &y0);
+    rl_calib_unproject(cam, u, v, &x0, &y0);
     for (i = 0; i < 4; i++) {
         double x, y;
-        rl_camera_unproject(cam, u + r * at[i][0], v + r * at[i][1], &x, &y);
+        rl_calib_unproject(cam, u + r * at[i][0], v + r * at[i][1], &x, &y);
         sum += hypot(x - x0, y - y0);
     }
     return sum / 4;

@@ -1,4 +1,4 @@
-#include "rl_template.h"
+#include "rl_raster.h"
 
 #include <math.h>
 
@@ -6,9 +6,9 @@
  * the coverage error under 1/64 of a pixel per boundary crossing. */
 #define SUB 8
 
-rl_cut rl_cut_side(int side, double at)
+rl_raster_cut rl_raster_cut_side(int side, double at)
 {
-    rl_cut c;
+    rl_raster_cut c;
     c.nx = side == 0 ? 1.0 : side == 1 ? -1.0 : 0.0;
     c.ny = side == 2 ? 1.0 : side == 3 ? -1.0 : 0.0;
     c.d = side == 0 || side == 2 ? at : -at;
@@ -24,8 +24,8 @@ static int near_boundary(const double *radii, int nb, double dist, double r)
     return 0;
 }
 
-rl_err rl_tmpl_draw(const rl_family *fam, int id, double cx, double cy, double r,
-                    const rl_cut *cut, rl_image *dark, rl_image *mask)
+rl_err rl_raster_draw(const rl_family *fam, int id, double cx, double cy, double r,
+                    const rl_raster_cut *cut, rl_image *dark, rl_image *mask)
 {
     double radii[RL_MAX_BITS + 2];
     int x, y, nb;
@@ -74,12 +74,12 @@ rl_err rl_tmpl_draw(const rl_family *fam, int id, double cx, double cy, double r
     return RL_OK;
 }
 
-rl_err rl_tmpl_square(const rl_family *fam, int id, const rl_cut *cut, rl_image *dark,
+rl_err rl_raster_square(const rl_family *fam, int id, const rl_raster_cut *cut, rl_image *dark,
                       rl_image *mask)
 {
     double c;
     if (!rl_image_valid(dark) || dark->width != dark->height)
         return RL_EINVAL;
     c = (dark->width - 1) / 2.0;
-    return rl_tmpl_draw(fam, id, c, c, dark->width / 2.0, cut, dark, mask);
+    return rl_raster_draw(fam, id, c, c, dark->width / 2.0, cut, dark, mask);
 }

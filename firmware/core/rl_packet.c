@@ -1,8 +1,8 @@
-#include "rl_frame.h"
+#include "rl_packet.h"
 
 #include <string.h>
 
-uint16_t rl_frame_checksum(const uint8_t *p, size_t n)
+uint16_t rl_packet_checksum(const uint8_t *p, size_t n)
 {
     uint32_t sum = 0;
     size_t i;
@@ -35,21 +35,21 @@ static uint32_t get32(const uint8_t *p)
     return get16(p) | (uint32_t)get16(p + 2) << 16;
 }
 
-size_t rl_frame_encode(const rl_msg *m, uint8_t *buf)
+size_t rl_packet_encode(const rl_msg *m, uint8_t *buf)
 {
     uint8_t *pl = buf + 3;
-    int v1 = m->type == RL_FRAME_POSE && m->version == 1;
-    size_t n = m->type == RL_FRAME_POSE ? (v1 ? RL_POSE_V1_PAYLOAD : RL_POSE_PAYLOAD) : RL_STATUS_PAYLOAD;
+    int v1 = m->type == RL_PACKET_POSE && m->version == 1;
+    size_t n = m->type == RL_PACKET_POSE ? (v1 ? RL_POSE_V1_PAYLOAD : RL_POSE_PAYLOAD) : RL_STATUS_PAYLOAD;
     uint16_t sum;
     buf[0] = 0xFA;
     buf[1] = 0xFB;
     buf[2] = (uint8_t)(n + 2);
     memset(pl, 0, n);
-    pl[0] = m->type == RL_FRAME_POSE ? RL_FRAME_POSE : RL_FRAME_STATUS;
-    pl[1] = m->type == RL_FRAME_POSE && !v1 ? RL_FRAME_VERSION : 1;
+    pl[0] = m->type == RL_PACKET_POSE ? RL_PACKET_POSE : RL_PACKET_STATUS;
+    pl[1] = m->type == RL_PACKET_POSE && !v1 ? RL_PACKET_VERSION : 1;
     put16(pl + 2, m->seq);
     put32(pl + 4, m->time_ms);
-    if (m->type == RL_FRAME_POSE) {
+    if (m->type == RL_PACKET_POSE) {
         put32(pl + 8, (uint32_t)m->x_mm);
         put32(pl + 12, (uint32_t)m->y_mm);
         put16(pl + 16, (uint16_t)m->yaw_e4);
@@ -69,7 +69,7 @@ size_t rl_frame_encode(const rl_msg *m, uint8_t *buf)
         pl[9] = m->identified;
         pl[10] = m->candidates;
     }
-    sum = rl_frame_checksum(pl, n);
+    sum = rl_packet_checksum(pl, n);
     pl[n] = (uint8_t)(sum >> 8);
     pl[n + 1] = (uint8_t)sum;
     return n + 5;
@@ -105,12 +105,12 @@ static int plausible(const rl_decoder *d)
         d->buf[2] != RL_STATUS_PAYLOAD + 2)
         return -1;
     if (d->len >= 4) {
-        uint8_t want = d->buf[2] == RL_STATUS_PAYLOAD + 2 ? RL_FRAME_STATUS : RL_FRAME_POSE;
+        uint8_t want = d->buf[2] == RL_STATUS_PAYLOAD + 2 ? RL_PACKET_STATUS : RL_PACKET_POSE;
         if (d->buf[3] != want)
             return -1;
     }
     /* the count says the version: 36 a version 2 pose, 26 version 1 */
-    if (d->len >= 5 && d->buf[4] != (d->buf[2] == RL_POSE_PAYLOAD + 2 ? RL_FRAME_VERSION : 1))
+    if (d->len >= 5 && d->buf[4] != (d->buf[2] == RL_POSE_PAYLOAD + 2 ? RL_PACKET_VERSION : 1))
         return -1;
     return 0;
 }
@@ -134,7 +134,7 @@ int rl_decoder_push(rl_decoder *d, uint8_t byte, rl_msg *m)
             return 0;
         pl = d->buf + 3;
         n = total - 5;
-        sum = rl_frame_checksum(pl, n);
+        sum = rl_packet_checksum(pl, n);
         if (pl[n] != (uint8_t)(sum >> 8) || pl[n + 1] != (uint8_t)sum) {
             /* not a frame: the next one may start inside what is held */
             d->bad++;
@@ -145,7 +145,7 @@ int rl_decoder_push(rl_decoder *d, uint8_t byte, rl_msg *m)
         m->type = pl[0];
         m->seq = get16(pl + 2);
         m->time_ms = get32(pl + 4);
-        if (m->type == RL_FRAME_POSE) {
+        if (m->type == RL_PACKET_POSE) {
             m->x_mm = (int32_t)get32(pl + 8);
             m->y_mm = (int32_t)get32(pl + 12);
             m->yaw_e4 = (int16_t)get16(pl + 16);
@@ -154,7 +154,7 @@ int rl_decoder_push(rl_decoder *d, uint8_t byte, rl_msg *m)
             m->residual_e4 = get16(pl + 20);
             m->latency_e4 = get16(pl + 22);
             m->version = pl[1];
-            if (m->version == RL_FRAME_VERSION) {
+            if (m->version == RL_PACKET_VERSION) {
                 m->sigma_x_e4 = get16(pl + 24);
                 m->sigma_y_e4 = get16(pl + 26);
                 m->sigma_yaw_e4 = get16(pl + 28);

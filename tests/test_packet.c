@@ -2,7 +2,7 @@
  * vectors, and a decoder that survives garbage, truncation and flipped
  * bits without ever producing a frame that was not sent. */
 #include "rl_test.h"
-#include "rl_frame.h"
+#include "rl_packet.h"
 
 static void test_checksum_vectors(void **state)
 {
@@ -12,14 +12,14 @@ static void test_checksum_vectors(void **state)
      * ENABLE 1 (command 4, integer argument 0x3B, value 1): FA FB 06 04 3B 01 00 05 3B */
     const uint8_t seto[] = {0x07}, sync1[] = {0x01}, enable[] = {0x04, 0x3B, 0x01, 0x00};
     (void)state;
-    assert_int_equal(rl_frame_checksum(seto, 1), 0x0007);
-    assert_int_equal(rl_frame_checksum(sync1, 1), 0x0001);
-    assert_int_equal(rl_frame_checksum(enable, 4), 0x053B);
+    assert_int_equal(rl_packet_checksum(seto, 1), 0x0007);
+    assert_int_equal(rl_packet_checksum(sync1, 1), 0x0001);
+    assert_int_equal(rl_packet_checksum(enable, 4), 0x053B);
     {
         const uint8_t odd[] = {0x12, 0x34, 0xAB};
-        assert_int_equal(rl_frame_checksum(odd, 3), 0x1234 ^ 0xAB);
+        assert_int_equal(rl_packet_checksum(odd, 3), 0x1234 ^ 0xAB);
         const uint8_t wrap[] = {0xFF, 0xFF, 0x00, 0x02};
-        assert_int_equal(rl_frame_checksum(wrap, 4), 0x0001); /* modulo 2^16 */
+        assert_int_equal(rl_packet_checksum(wrap, 4), 0x0001); /* modulo 2^16 */
     }
 }
 
@@ -27,7 +27,7 @@ static void test_checksum_vectors(void **state)
 static void golden_pose(rl_msg *m)
 {
     memset(m, 0, sizeof *m);
-    m->type = RL_FRAME_POSE;
+    m->type = RL_PACKET_POSE;
     m->seq = 7;
     m->time_ms = 123456;
     m->x_mm = 1203;
@@ -42,7 +42,7 @@ static void golden_pose(rl_msg *m)
 static void test_pose_golden_bytes(void **state)
 {
     rl_msg m;
-    uint8_t buf[RL_FRAME_MAX];
+    uint8_t buf[RL_PACKET_MAX];
     /* written out by hand from the wire format */
     const uint8_t want[] = {0xFA, 0xFB, 26,
                             0x50, 0x01, 0x07, 0x00,             /* type, version, seq 7 */
@@ -58,7 +58,7 @@ static void test_pose_golden_bytes(void **state)
     uint16_t sum;
     (void)state;
     memcpy(expect, want, sizeof want);
-    sum = rl_frame_checksum(expect + 3, 24);
+    sum = rl_packet_checksum(expect + 3, 24);
     expect[27] = (uint8_t)(sum >> 8);
     expect[28] = (uint8_t)sum;
     /* and the checksum itself, summed here as big-endian pairs by hand */
@@ -71,7 +71,7 @@ static void test_pose_golden_bytes(void **state)
     }
     golden_pose(&m);
     m.version = 1; /* the older frame, as firmware before issue 15 sent it */
-    assert_int_equal(rl_frame_encode(&m, buf), 29);
+    assert_int_equal(rl_packet_encode(&m, buf), 29);
     assert_memory_equal(buf, expect, 29);
 }
 
@@ -91,7 +91,7 @@ static void test_pose_v2_golden_bytes_and_both_versions_decode(void **state)
 {
     rl_msg m, got;
     rl_decoder d;
-    uint8_t buf[RL_FRAME_MAX], v1[RL_FRAME_MAX];
+    uint8_t buf[RL_PACKET_MAX], v1[RL_PACKET_MAX];
     const uint8_t want[] = {0xFA, 0xFB, 36,
                             0x50, 0x02, 0x07, 0x00,             /* type, version 2, seq 7 */
                             0x40, 0xE2, 0x01, 0x00,             /* time 123456 ms */
@@ -124,11 +124,11 @@ static void test_pose_v2_golden_bytes_and_both_versions_decode(void **state)
     m.sigma_yaw_e4 = 4;
     m.roll_e4 = 12;
     m.pitch_e4 = -51;
-    n2 = rl_frame_encode(&m, buf);
+    n2 = rl_packet_encode(&m, buf);
     assert_int_equal(n2, 39);
     assert_memory_equal(buf, expect, 39);
     m.version = 1;
-    n1 = rl_frame_encode(&m, v1);
+    n1 = rl_packet_encode(&m, v1);
     assert_int_equal(n1, 29);
     rl_decoder_init(&d);
     k = push_all(&d, v1, n1, &got);
@@ -150,20 +150,20 @@ static void test_pose_v2_golden_bytes_and_both_versions_decode(void **state)
 static void test_status_golden_bytes(void **state)
 {
     rl_msg m;
-    uint8_t buf[RL_FRAME_MAX];
+    uint8_t buf[RL_PACKET_MAX];
     const uint8_t want[] = {0xFA, 0xFB, 14, 0x53, 0x01, 0x09, 0x00, 0x80, 0xE2, 0x01, 0x00,
                             0x01, 0x01, 0x03, 0x00,
                             /* checksum: 5301 + 0900 + 80E2 + 0100 + 0101 + 0300 = E1E4 */
                             0xE1, 0xE4};
     (void)state;
     memset(&m, 0, sizeof m);
-    m.type = RL_FRAME_STATUS;
+    m.type = RL_PACKET_STATUS;
     m.seq = 9;
     m.time_ms = 123520;
     m.reason = RL_STATUS_TOO_FEW;
     m.identified = 1;
     m.candidates = 3;
-    assert_int_equal(rl_frame_encode(&m, buf), 17);
+    assert_int_equal(rl_packet_encode(&m, buf), 17);
     assert_memory_equal(buf, want, 17);
 }
 
@@ -176,10 +176,10 @@ static unsigned rnd(unsigned *s)
 static void make_msg(rl_msg *m, unsigned i)
 {
     memset(m, 0, sizeof *m);
-    m->type = i % 3 ? RL_FRAME_POSE : RL_FRAME_STATUS;
+    m->type = i % 3 ? RL_PACKET_POSE : RL_PACKET_STATUS;
     m->seq = (uint16_t)i;
     m->time_ms = 1000u * i + 17;
-    if (m->type == RL_FRAME_POSE) {
+    if (m->type == RL_PACKET_POSE) {
         m->x_mm = (int32_t)(i * 37) - 5000;
         m->y_mm = (int32_t)(i * 91) % 7000;
         m->yaw_e4 = (int16_t)(i * 13 % 31416);
@@ -188,8 +188,8 @@ static void make_msg(rl_msg *m, unsigned i)
         m->residual_e4 = (uint16_t)(i * 3);
         m->latency_e4 = (uint16_t)(i * 5);
         /* both versions in one stream */
-        m->version = (uint8_t)(i % 5 == 1 ? 1 : RL_FRAME_VERSION);
-        if (m->version == RL_FRAME_VERSION) {
+        m->version = (uint8_t)(i % 5 == 1 ? 1 : RL_PACKET_VERSION);
+        if (m->version == RL_PACKET_VERSION) {
             m->sigma_x_e4 = (uint16_t)(i * 7);
             m->sigma_y_e4 = (uint16_t)(i * 11);
             m->sigma_yaw_e4 = (uint16_t)(i % 100);
@@ -216,13 +216,13 @@ static void test_decoder_survives_damage(void **state)
     rl_msg m, ref;
     (void)state;
     for (k = 0; k < sent; k++) {
-        uint8_t buf[RL_FRAME_MAX];
+        uint8_t buf[RL_PACKET_MAX];
         size_t len, g, garbage = rnd(&seed) % 12;
         unsigned what = rnd(&seed) % 10;
         for (g = 0; g < garbage; g++) /* garbage, with header bytes on purpose */
             stream[n++] = (uint8_t)(g % 3 == 0 ? 0xFA : g % 3 == 1 ? 0xFB : rnd(&seed));
         make_msg(&m, k);
-        len = rl_frame_encode(&m, buf);
+        len = rl_packet_encode(&m, buf);
         intact[k] = 0;
         if (what == 0) {
             buf[3 + rnd(&seed) % (len - 3)] ^= (uint8_t)(1u << (rnd(&seed) % 8)); /* a flipped bit */

@@ -10,11 +10,11 @@
  *
  *   uint8_t px[48 * 48];
  *   rl_image t = rl_image_view(48, 48, 48, px);
- *   if (rl_tmpl_square(&fam, 25, NULL, &t, NULL) == RL_OK)   // the landmark fills t
+ *   if (rl_raster_square(&fam, 25, NULL, &t, NULL) == RL_OK)   // the landmark fills t
  *       use(px[24 * 48 + 24]);
  */
-#ifndef RL_TEMPLATE_H
-#define RL_TEMPLATE_H
+#ifndef RL_RASTER_H
+#define RL_RASTER_H
 
 #include "rl_error.h"
 #include "rl_family.h"
@@ -23,24 +23,24 @@
 /* Half-plane cut: a point (x, y) is visible when nx*x + ny*y <= d. */
 typedef struct {
     double nx, ny, d;
-} rl_cut;
+} rl_raster_cut;
 
 /* A cut that keeps the part of a template on one side of a vertical or
  * horizontal line: side 0 keeps x <= at, 1 keeps x >= at, 2 keeps
  * y <= at, 3 keeps y >= at. */
-rl_cut rl_cut_side(int side, double at);
+rl_raster_cut rl_raster_cut_side(int side, double at);
 
 /* Draw landmark `id` centred at (cx, cy) with radius r px into `dark`
  * (every pixel written; outside the disk is 0). With `cut`, pixels whose
  * centre is beyond the cut are written 0 and marked 0 in `mask` (255 =
  * visible; mask may be NULL, same size as dark). RL_ERANGE for an invalid
  * id, RL_EINVAL for r <= 0 or bad views. */
-RL_CHECK rl_err rl_tmpl_draw(const rl_family *fam, int id, double cx, double cy, double r,
-                             const rl_cut *cut, rl_image *dark, rl_image *mask);
+RL_CHECK rl_err rl_raster_draw(const rl_family *fam, int id, double cx, double cy, double r,
+                             const rl_raster_cut *cut, rl_image *dark, rl_image *mask);
 
 /* The landmark filling a square view (diameter = side, as a CLR cut out by
  * its outer ring's bounding box and scaled). */
-RL_CHECK rl_err rl_tmpl_square(const rl_family *fam, int id, const rl_cut *cut,
+RL_CHECK rl_err rl_raster_square(const rl_family *fam, int id, const rl_raster_cut *cut,
                                rl_image *dark, rl_image *mask);
 
 #endif

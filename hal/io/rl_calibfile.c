@@ -1,4 +1,4 @@
-#include "rl_camfile.h"
+#include "rl_calibfile.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -57,7 +57,7 @@ static rl_err read_matrix(rl_yaml *y, yaml_node_t *root, const char *key, double
  * fisheye_model flag) and the number of coefficients; a combination that
  * could mean two models is an error, never a guess. */
 static rl_err distortion(rl_yaml *y, yaml_node_t *root, const char *model, const double *D, int nd,
-                         rl_camera *cam, char *err, size_t errlen)
+                         rl_calib *cam, char *err, size_t errlen)
 {
     yaml_node_t *dn = rl_yaml_get(y, root, "distortion_coefficients");
     int fisheye_flag = -1, i;
@@ -110,17 +110,17 @@ static rl_err distortion(rl_yaml *y, yaml_node_t *root, const char *model, const
                             "%d coefficients fit no model (plumb_bob 5, rational_polynomial 5, 8, 12 or 14, "
                             "fisheye 4)", nd);
     }
-    for (i = 0; i < nd && i < RL_CAMERA_MAX_COEFFS; i++)
+    for (i = 0; i < nd && i < RL_CALIB_MAX_COEFFS; i++)
         cam->k[i] = D[i];
     return RL_OK;
 }
 
-rl_err rl_camfile_load(const char *path, rl_camera *cam, char *err, size_t errlen)
+rl_err rl_calibfile_load(const char *path, rl_calib *cam, char *err, size_t errlen)
 {
-    return rl_camfile_load_sized(path, 0, 0, cam, err, errlen);
+    return rl_calibfile_load_sized(path, 0, 0, cam, err, errlen);
 }
 
-rl_err rl_camfile_load_sized(const char *path, int width, int height, rl_camera *cam, char *err, size_t errlen)
+rl_err rl_calibfile_load_sized(const char *path, int width, int height, rl_calib *cam, char *err, size_t errlen)
 {
     rl_yaml y;
     yaml_node_t *root;
@@ -179,13 +179,13 @@ rl_err rl_camfile_load_sized(const char *path, int width, int height, rl_camera 
     }
     if ((e = distortion(&y, root, model, D, nd, cam, err, errlen)) != RL_OK)
         goto out;
-    if (rl_camera_check(cam) != RL_OK) {
+    if (rl_calib_check(cam) != RL_OK) {
         e = rl_yaml_fail(&y, rl_yaml_get(&y, root, "camera_matrix"), "camera_matrix", RL_ERANGE,
                          err, errlen, "%dx%d, fx %g, fy %g, cx %g, cy %g or a distortion "
                          "coefficient out of range (sizes 1 .. %d, focal lengths %g .. %g px, the "
                          "principal point within a frame of the image, coefficients within +-%g)",
                          cam->width, cam->height, cam->fx, cam->fy, cam->cx, cam->cy,
-                         RL_MAX_IMAGE_DIM, RL_CAMERA_MIN_F, RL_CAMERA_MAX_F, RL_CAMERA_MAX_K);
+                         RL_MAX_IMAGE_DIM, RL_CALIB_MIN_F, RL_CALIB_MAX_F, RL_CALIB_MAX_K);
         goto out;
     }
 out:
@@ -193,7 +193,7 @@ out:
     return e;
 }
 
-rl_err rl_camfile_save(const char *path, const rl_camera *cam, char *err, size_t errlen)
+rl_err rl_calibfile_save(const char *path, const rl_calib *cam, char *err, size_t errlen)
 {
     rl_outfile o;
     FILE *f;

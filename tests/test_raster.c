@@ -1,5 +1,5 @@
 #include "rl_test.h"
-#include "rl_template.h"
+#include "rl_raster.h"
 #include <math.h>
 
 #define S 200
@@ -35,7 +35,7 @@ static void test_coverage_matches_area(void **state)
         assert_int_equal(rl_family_init(&f, n), RL_OK);
         for (id = 1; id <= rl_family_count(&f); id += (n > 5 ? 7 : 1)) {
             double R = S / 2.0, want;
-            assert_int_equal(rl_tmpl_square(&f, id, NULL, &t, NULL), RL_OK);
+            assert_int_equal(rl_raster_square(&f, id, NULL, &t, NULL), RL_OK);
             want = M_PI * R * R * (0.36 + 0.64 * popcount(id) / n);
             if (fabs(dark_area(&t) - want) > 0.002 * want)
                 fail_msg("ring%d id %d: dark area %.1f, want %.1f", n, id, dark_area(&t), want);
@@ -51,7 +51,7 @@ static void test_off_centre_and_stride(void **state)
     (void)state;
     memset(big, 0x77, sizeof big);
     assert_int_equal(rl_family_init(&f, 3), RL_OK);
-    assert_int_equal(rl_tmpl_draw(&f, 5, 10.0, 30.0, 8.0, NULL, &t, NULL), RL_OK);
+    assert_int_equal(rl_raster_draw(&f, 5, 10.0, 30.0, 8.0, NULL, &t, NULL), RL_OK);
     assert_int_equal(big[30 * 60 + 10], 255);         /* centre: 101 -> c3 = 1 */
     assert_int_equal(big[30 * 60 + 10 + 7], 255);     /* outer ring at 7 px */
     assert_int_equal(big[30 * 60 + 10 + 12], 0);      /* outside */
@@ -62,14 +62,14 @@ static void test_cut_template(void **state)
 {
     rl_family f;
     rl_image t = rl_image_view(S, S, S, px), m = rl_image_view(S, S, S, mk);
-    rl_cut cut = rl_cut_side(0, (S - 1) / 2.0 + 0.25); /* keep x <= centre */
+    rl_raster_cut cut = rl_raster_cut_side(0, (S - 1) / 2.0 + 0.25); /* keep x <= centre */
     double whole, half;
     int x, y, vis = 0;
     (void)state;
     assert_int_equal(rl_family_init(&f, 5), RL_OK);
-    assert_int_equal(rl_tmpl_square(&f, 25, NULL, &t, NULL), RL_OK);
+    assert_int_equal(rl_raster_square(&f, 25, NULL, &t, NULL), RL_OK);
     whole = dark_area(&t);
-    assert_int_equal(rl_tmpl_square(&f, 25, &cut, &t, &m), RL_OK);
+    assert_int_equal(rl_raster_square(&f, 25, &cut, &t, &m), RL_OK);
     half = dark_area(&t);
     assert_true(fabs(half - whole / 2) < 0.01 * whole);
     for (y = 0; y < S; y++)
@@ -81,8 +81,8 @@ static void test_cut_template(void **state)
                 assert_int_equal(px[y * S + x], 0);
         }
     assert_int_equal(vis, S * S / 2);
-    cut = rl_cut_side(3, 150.0); /* keep y >= 150 */
-    assert_int_equal(rl_tmpl_square(&f, 25, &cut, &t, &m), RL_OK);
+    cut = rl_raster_cut_side(3, 150.0); /* keep y >= 150 */
+    assert_int_equal(rl_raster_square(&f, 25, &cut, &t, &m), RL_OK);
     assert_int_equal(mk[149 * S + 100], 0);
     assert_int_equal(mk[150 * S + 100], 255);
 }
@@ -94,11 +94,11 @@ static void test_errors(void **state)
     rl_image rect = rl_image_view(S, S / 2, S, px);
     (void)state;
     assert_int_equal(rl_family_init(&f, 5), RL_OK);
-    assert_int_equal(rl_tmpl_square(&f, 31, NULL, &t, NULL), RL_ERANGE);
-    assert_int_equal(rl_tmpl_square(&f, 0, NULL, &t, NULL), RL_ERANGE);
-    assert_int_equal(rl_tmpl_square(&f, 25, NULL, &t, &m), RL_EINVAL);
-    assert_int_equal(rl_tmpl_square(&f, 25, NULL, &rect, NULL), RL_EINVAL);
-    assert_int_equal(rl_tmpl_draw(&f, 25, 5, 5, 0.0, NULL, &t, NULL), RL_EINVAL);
+    assert_int_equal(rl_raster_square(&f, 31, NULL, &t, NULL), RL_ERANGE);
+    assert_int_equal(rl_raster_square(&f, 0, NULL, &t, NULL), RL_ERANGE);
+    assert_int_equal(rl_raster_square(&f, 25, NULL, &t, &m), RL_EINVAL);
+    assert_int_equal(rl_raster_square(&f, 25, NULL, &rect, NULL), RL_EINVAL);
+    assert_int_equal(rl_raster_draw(&f, 25, 5, 5, 0.0, NULL, &t, NULL), RL_EINVAL);
 }
 
 int main(void)

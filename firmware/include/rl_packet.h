@@ -1,4 +1,4 @@
-/* rl_frame: pose and status frames on the wire, in ARCOS framing.
+/* rl_packet: pose and status frames on the wire, in ARCOS framing.
  *
  * The framing of the Pioneer's own packets, so an ARIA-based controller
  * can parse them with its packet receiver:
@@ -19,33 +19,33 @@
  *   u8 reason (rl_status_reason), u8 landmarks identified, u8 candidates,
  *   u8 0.
  *
- *   uint8_t buf[RL_FRAME_MAX];
+ *   uint8_t buf[RL_PACKET_MAX];
  *   rl_msg pose, got;
  *   rl_decoder dec;
  *   size_t k, len;
  *   memset(&pose, 0, sizeof pose);
- *   pose.type = RL_FRAME_POSE;
+ *   pose.type = RL_PACKET_POSE;
  *   pose.x_mm = 1500;
- *   len = rl_frame_encode(&pose, buf);             // bytes to send
+ *   len = rl_packet_encode(&pose, buf);             // bytes to send
  *   rl_decoder_init(&dec);
  *   for (k = 0; k < len; k++)                      // bytes as they arrive
  *       if (rl_decoder_push(&dec, buf[k], &got))
  *           use(got.type, got.x_mm);
  */
-#ifndef RL_FRAME_H
-#define RL_FRAME_H
+#ifndef RL_PACKET_H
+#define RL_PACKET_H
 
 #include <stddef.h>
 #include <stdint.h>
 
-#define RL_FRAME_POSE 0x50
-#define RL_FRAME_STATUS 0x53
-#define RL_FRAME_VERSION 2      /* of pose frames; status frames are version 1 */
+#define RL_PACKET_POSE 0x50
+#define RL_PACKET_STATUS 0x53
+#define RL_PACKET_VERSION 2      /* of pose frames; status frames are version 1 */
 #define RL_POSE_PAYLOAD 34
 #define RL_POSE_V1_PAYLOAD 24
 #define RL_STATUS_PAYLOAD 12
 /* Largest frame: header 2 + count 1 + payload 34 + checksum 2. */
-#define RL_FRAME_MAX 39
+#define RL_PACKET_MAX 39
 
 typedef enum {
     RL_STATUS_TOO_FEW = 1,       /* fewer landmarks than a pose needs */
@@ -56,7 +56,7 @@ typedef enum {
 } rl_status_reason;
 
 typedef struct {
-    int type;           /* RL_FRAME_POSE or RL_FRAME_STATUS */
+    int type;           /* RL_PACKET_POSE or RL_PACKET_STATUS */
     uint16_t seq;
     uint32_t time_ms;
     /* pose */
@@ -77,18 +77,18 @@ typedef struct {
 } rl_msg;
 
 /* ARCOS checksum of n bytes. */
-uint16_t rl_frame_checksum(const uint8_t *p, size_t n);
+uint16_t rl_packet_checksum(const uint8_t *p, size_t n);
 
-/* Encode a message into buf (RL_FRAME_MAX bytes); returns the frame's
+/* Encode a message into buf (RL_PACKET_MAX bytes); returns the frame's
  * length. The fields already have the wire's integer types, so they are
  * written as they are: whoever fills them from real values clamps into
  * range (rl_run.c does for poses). */
-size_t rl_frame_encode(const rl_msg *m, uint8_t *buf);
+size_t rl_packet_encode(const rl_msg *m, uint8_t *buf);
 
 /* A byte-at-a-time decoder that never allocates and resynchronises after
  * garbage, a wrong count, an unknown type or a bad checksum. */
 typedef struct {
-    uint8_t buf[RL_FRAME_MAX];
+    uint8_t buf[RL_PACKET_MAX];
     size_t len;       /* bytes held */
     unsigned long bad;/* frames rejected (checksum, count, type) */
 } rl_decoder;
