@@ -21,12 +21,10 @@
 #include <string.h>
 #include <unistd.h>
 #include "rl_cli.h"
-#include "rl_calibfile.h"
 #include "rl_clock.h"
-#include "rl_heap_recog.h"
-#include "rl_mapfile.h"
-#include "rl_robotfile.h"
+#include "rl_packet_sink.h"
 #include "rl_run.h"
+#include "rl_site.h"
 
 /* ---- heap calls, counted once the loop has started ---- */
 static volatile int counting;
@@ -133,16 +131,19 @@ int main(int argc, char **argv)
                                          {"reopen-every", required_argument, 0, 'r'},
                                          {"help", no_argument, 0, 'h'},
                                          {0, 0, 0, 0}};
-    static rl_map map;
+    static rl_site site;
     static rl_result res;
+    static rl_run_camera cam;
+    static rl_packet_sink packets;
+    static char paths[3][4096];
     static rl_runner runner;
     static line_double line;
-    static char path[4096], err[512], list[4096];
-    rl_calib calib;
-    rl_mount mount;
+    static char err[512], list[4096];
     rl_recog_config cfg;
-    rl_heap_recog hr;
+    rl_site_files files;
     rl_cam_config cc;
+    rl_run_config rc;
+    rl_packet_line pl;
     rl_run_io io;
     long frames = 200000, rss_start = 0, rss_end, i, empty = 0;
     double every = 3.0, t0, t1;
@@ -162,18 +163,16 @@ int main(int argc, char **argv)
         return 2;
     }
     dir = argv[optind];
-    snprintf(path, sizeof path, "%s/map.yaml", dir);
-    if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK) goto fail;
-    snprintf(path, sizeof path, "%s/camera.yaml", dir);
-    if (rl_calibfile_load(path, &calib, err, sizeof err) != RL_OK) goto fail;
-    snprintf(path, sizeof path, "%s/robot.yaml", dir);
-    if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK) goto fail;
+    snprintf(paths[0], sizeof paths[0], "%s/map.yaml", dir);
+    snprintf(paths[1], sizeof paths[1], "%s/camera.yaml", dir);
+    snprintf(paths[2], sizeof paths[2], "%s/robot.yaml", dir);
+    rl_site_files_init(&files);
+    files.map = paths[0];
+    files.calibration = paths[1];
+    files.robot = paths[2];
     rl_recog_defaults(&cfg);
-    rl_heap_recog_init_map(&hr, &cfg, &map);
-    if (rl_heap_recog_prepare(&hr, calib.width, calib.height) != RL_OK) {
-        snprintf(err, sizeof err, "cannot make the recognizer for %dx%d", calib.width, calib.height);
+    if (rl_site_load(&site, &files, err, sizeof err) != RL_OK || rl_site_prepare(&site, &cfg, err, sizeof err) != RL_OK)
         goto fail;
-    }
     snprintf(list, sizeof list, "%s", dir);
     rl_cam_defaults(&cc);
     cc.backend = "png";
@@ -181,38 +180,41 @@ int main(int argc, char **argv)
     cc.loop = 1;
     cc.rate = 0;
     memset(&io, 0, sizeof io);
-    io.cam = &cc;
+    io.source = rl_run_camera_source(&cam, &cc);
     io.clock = rl_clock_system();
     io.log = log_kind;
     line.period_us = (uint64_t)(every * 1e6);
-    io.out.open = line_open;
-    io.out.write = line_write;
-    io.out.close = line_close;
-    io.out.ctx = &line;
-    rl_run_init(&runner, &io, hr.rec, &calib, &map, &mount, &res);
-    runner.log_interval_us = 0; /* every line, for its kind */
+    memset(&pl, 0, sizeof pl);
+    pl.open = line_open;
+    pl.write = line_write;
+    pl.close = line_close;
+    pl.ctx = &line;
+    io.sink = rl_packet_sink_make(&packets, &pl);
+    rl_run_defaults(&rc);
+    rc.log_interval_us = 0; /* every line, for its kind */
+    rl_run_init(&runner, &rc, &io, &site, &res);
     t0 = (double)rl_clock_now_us();
-    for (i = 0; runner.frames < frames; i++) {
+    for (i = 0; rl_run_counts_of(&runner)->frames < frames; i++) {
         if (rl_run_step(&runner) == RL_ENOTFOUND) {
             snprintf(err, sizeof err, "%s: the camera ended", dir);
             goto fail;
         }
-        if (runner.frames == 100)
+        if (rl_run_counts_of(&runner)->frames == 100)
             counting = 1; /* start-up is over: the camera is open, the line up */
-        if (runner.frames == 10000 && rss_start == 0)
+        if (rl_run_counts_of(&runner)->frames == 10000 && rss_start == 0)
             rss_start = rss_kb();
-        if (runner.frames % 20000 == 0 && runner.frames > 0 && i > 0)
-            fprintf(stderr, "ringloc-soak: %ld of %ld frames\r", runner.frames, frames);
+        if (rl_run_counts_of(&runner)->frames % 20000 == 0 && rl_run_counts_of(&runner)->frames > 0 && i > 0)
+            fprintf(stderr, "ringloc-soak: %ld of %ld frames\r", rl_run_counts_of(&runner)->frames, frames);
     }
     counting = 0;
     t1 = (double)rl_clock_now_us();
     rss_end = rss_kb();
     rl_run_close(&runner);
     fprintf(stderr, "\n");
-    printf("frames               %ld in %.1f s, %.0f per second (poses %ld, status %ld)\n", runner.frames,
-           (t1 - t0) / 1e6, runner.frames / ((t1 - t0) / 1e6), runner.poses, runner.statuses);
+    printf("frames               %ld in %.1f s, %.0f per second (poses %ld, status %ld)\n", rl_run_counts_of(&runner)->frames,
+           (t1 - t0) / 1e6, rl_run_counts_of(&runner)->frames / ((t1 - t0) / 1e6), rl_run_counts_of(&runner)->poses, rl_run_counts_of(&runner)->statuses);
     printf("heap calls           %ld after start-up (%.4f per frame)\n", heap_calls,
-           (double)heap_calls / (double)runner.frames);
+           (double)heap_calls / (double)rl_run_counts_of(&runner)->frames);
     printf("RSS                  %ld kB at frame 10,000, %ld kB at the last (%+.2f%%)\n", rss_start,
            rss_end, 100.0 * (double)(rss_end - rss_start) / (double)rss_start);
     printf("serial reopenings    %ld; frames delivered after each:", line.reopens);
@@ -231,7 +233,7 @@ int main(int argc, char **argv)
     if (heap_calls > 0) { printf("FAIL: heap calls after start-up\n"); bad = 1; }
     if (rss_start <= 0 || rss_end > rss_start * 1.01) { printf("FAIL: RSS grew by 1%% or more\n"); bad = 1; }
     if (line.reopens < 2 || empty > 0) { printf("FAIL: %ld reopenings delivered no frame\n", empty); bad = 1; }
-    rl_heap_recog_free(&hr);
+    rl_site_free(&site);
     return bad;
 fail:
     fprintf(stderr, "ringloc-soak: %s\n", err);
