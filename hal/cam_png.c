@@ -76,15 +76,16 @@ static void rewind_names(png_state *s)
 }
 
 /* Files of any size: the block made large enough for the next one (its
- * header read first; a file that does not read is left to the decoder
- * to name). */
+ * header read first: a file that does not read says why here). */
 static rl_err grow_for(png_state *s, char *err, size_t errlen)
 {
     int w, h;
     size_t need;
     void *block;
-    char why[320];
-    if (rl_png_size(s->path, &w, &h, why, sizeof why) != RL_OK || (need = rl_png_block_size(w, h)) <= s->cap)
+    rl_err e;
+    if ((e = rl_png_size(s->path, &w, &h, err, errlen)) != RL_OK)
+        return e;
+    if ((need = rl_png_block_size(w, h)) <= s->cap)
         return RL_OK;
     if ((block = realloc(s->block, need)) == NULL) {
         snprintf(err, errlen, "%.160s: out of memory for %dx%d", s->path, w, h);
