@@ -6,9 +6,10 @@
 # desktop commands (host/) and the tools (tools/*/).
 # Usage: check_edge_size.sh SOURCE_DIR
 src=${1:?usage: check_edge_size.sh SOURCE_DIR}
+cd "$src" || exit 1
 status=0
-for dir in hal hal/io firmware/app host "$src"/tools/*/; do
-  case $dir in /*) ;; *) dir=$src/$dir ;; esac
+for dir in hal hal/io firmware/app host tools/*; do
+  [ -d "$dir" ] || continue
   for f in "$dir"/*.c "$dir"/*.cpp; do
     [ -f "$f" ] || continue
     awk -v file="$f" '
