@@ -23,6 +23,7 @@
 #include "rl_cli.h"
 #include "rl_cli_num.h"
 #include "rl_clock.h"
+#include "rl_packet_sink.h"
 #include "rl_run.h"
 #include "rl_site.h"
 
@@ -176,25 +177,32 @@ static int soak_site(const char *dir, rl_site *site)
 }
 
 /* The loop's seams: the PNG camera on dir's frames, looping, as fast as
- * it can; the serial line that goes away; log lines counted by kind. */
-static void soak_io(const char *dir, double every, line_double *line, rl_cam_config *cc, rl_run_io *io)
+ * it can; the serial line that goes away (its packets through
+ * rl_packet_sink); log lines counted by kind. */
+static void soak_io(const char *dir, double every, line_double *line, rl_run_io *io)
 {
     static char list[4096];
+    static rl_cam_config cc;
+    static rl_run_camera cam;
+    static rl_packet_sink packets;
+    static rl_packet_line pl;
     snprintf(list, sizeof list, "%s", dir);
-    rl_cam_defaults(cc);
-    cc->backend = "png";
-    cc->device = list;
-    cc->loop = 1;
-    cc->rate = 0;
+    rl_cam_defaults(&cc);
+    cc.backend = "png";
+    cc.device = list;
+    cc.loop = 1;
+    cc.rate = 0;
     memset(io, 0, sizeof *io);
-    io->cam = cc;
+    io->source = rl_run_camera_source(&cam, &cc);
     io->clock = rl_clock_system();
     io->log = log_kind;
     line->period_us = (uint64_t)(every * 1e6);
-    io->out.open = line_open;
-    io->out.write = line_write;
-    io->out.close = line_close;
-    io->out.ctx = line;
+    memset(&pl, 0, sizeof pl);
+    pl.open = line_open;
+    pl.write = line_write;
+    pl.close = line_close;
+    pl.ctx = line;
+    io->sink = rl_packet_sink_make(&packets, &pl);
 }
 
 /* What the run measured. */
@@ -207,18 +215,19 @@ typedef struct {
  * 0, or 1 when the camera ended. */
 static int soak_run(rl_runner *runner, long frames, const char *dir, soak_figures *f)
 {
+    const rl_run_counts *n = rl_run_counts_of(runner);
     long i;
     f->rss_start = 0;
     f->t0 = (double)rl_clock_now_us();
-    for (i = 0; runner->frames < frames; i++) {
+    for (i = 0; n->frames < frames; i++) {
         if (rl_run_step(runner) == RL_ENOTFOUND)
             return rl_cli_fail(NULL, 1, "%s: the camera ended", dir);
-        if (runner->frames == 100)
+        if (n->frames == 100)
             counting = 1; /* start-up is over: the camera is open, the line up */
-        if (runner->frames == 10000 && f->rss_start == 0)
+        if (n->frames == 10000 && f->rss_start == 0)
             f->rss_start = rss_kb();
-        if (runner->frames % 20000 == 0 && runner->frames > 0 && i > 0)
-            fprintf(stderr, "ringloc-soak: %ld of %ld frames\r", runner->frames, frames);
+        if (n->frames % 20000 == 0 && n->frames > 0 && i > 0)
+            fprintf(stderr, "ringloc-soak: %ld of %ld frames\r", n->frames, frames);
     }
     counting = 0;
     f->t1 = (double)rl_clock_now_us();
@@ -230,13 +239,14 @@ static int soak_run(rl_runner *runner, long frames, const char *dir, soak_figure
  * start-up, RSS grew by 1% or more, or a reopening delivered no frame. */
 static int soak_report(const rl_runner *runner, const line_double *line, const soak_figures *f)
 {
+    const rl_run_counts *n = rl_run_counts_of(runner);
     long i, empty = 0;
     int bad = 0;
     double secs = (f->t1 - f->t0) / 1e6;
-    printf("frames               %ld in %.1f s, %.0f per second (poses %ld, status %ld)\n", runner->frames,
-           secs, runner->frames / secs, runner->poses, runner->statuses);
+    printf("frames               %ld in %.1f s, %.0f per second (poses %ld, status %ld)\n", n->frames, secs,
+           n->frames / secs, n->poses, n->statuses);
     printf("heap calls           %ld after start-up (%.4f per frame)\n", heap_calls,
-           (double)heap_calls / (double)runner->frames);
+           (double)heap_calls / (double)n->frames);
     printf("RSS                  %ld kB at frame 10,000, %ld kB at the last (%+.2f%%)\n", f->rss_start,
            f->rss_end, 100.0 * (double)(f->rss_end - f->rss_start) / (double)f->rss_start);
     printf("serial reopenings    %ld; frames delivered after each:", line->reopens);
@@ -264,7 +274,7 @@ int main(int argc, char **argv)
     static rl_result res;
     static rl_runner runner;
     static line_double line;
-    rl_cam_config cc;
+    rl_run_config rc;
     rl_run_io io;
     soak_figures fig = {0, 0, 0, 0};
     long frames = 200000;
@@ -274,9 +284,10 @@ int main(int argc, char **argv)
     rl_cli_start("ringloc-soak");
     if ((r = soak_args(argc, argv, &frames, &every, &dir)) >= 0 || (r = soak_site(dir, &site)) != 0)
         return r;
-    soak_io(dir, every, &line, &cc, &io);
-    rl_run_init(&runner, &io, site.recog.rec, &site.calib, &site.map, &site.mount, &res);
-    runner.log_interval_us = 0; /* every line, for its kind */
+    soak_io(dir, every, &line, &io);
+    rl_run_defaults(&rc);
+    rc.log_interval_us = 0; /* every line, for its kind */
+    rl_run_init(&runner, &rc, &io, &site, &res);
     if ((r = soak_run(&runner, frames, dir, &fig)) != 0)
         return r;
     rl_run_close(&runner);
