@@ -21,7 +21,6 @@
 #include <string.h>
 #include <unistd.h>
 #include "rl_cli.h"
-#include "rl_cli_num.h"
 #include "rl_clock.h"
 #include "rl_packet_sink.h"
 #include "rl_run.h"
