@@ -28,6 +28,7 @@ void fs_scenario_defaults(fs_scenario *sc)
     sc->warmup = 1.0;
     sc->track = 0.33;
     sc->seed = 1;
+    sc->export_dir = NULL;
 }
 
 static double wrap(double a)

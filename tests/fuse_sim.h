@@ -56,6 +56,7 @@ typedef struct {
     double warmup;       /* s from the start the filter learns the scales, left out of the figures (1) */
     double track;        /* nominal track, m */
     unsigned seed;
+    const char *export_dir; /* when set: odometry.txt, frames.bin and truth.txt written there */
 } fs_scenario;
 
 typedef struct {

@@ -266,6 +266,40 @@ static int ticks(const fs_drive *d, const fs_scenario *sc, double T, const odo_s
     return 0;
 }
 
+/* The drive as `ringloc fuse` takes it: the odometry log, the frames
+ * recorded as sent (time_ms: the capture on the controller's clock), and
+ * the truth at every 10 ms. */
+static int export_drive(const fs_drive *d, const fs_scenario *sc, double T, const odo_sample *odo, int no,
+                        const sim_frame *fr, int nf)
+{
+    char path[1024];
+    FILE *fo, *ff, *ft;
+    int i;
+    long k;
+    snprintf(path, sizeof path, "%s/odometry.txt", sc->export_dir);
+    fo = fopen(path, "w");
+    snprintf(path, sizeof path, "%s/frames.bin", sc->export_dir);
+    ff = fopen(path, "wb");
+    snprintf(path, sizeof path, "%s/truth.txt", sc->export_dir);
+    ft = fopen(path, "w");
+    if (!fo || !ff || !ft)
+        return -1;
+    for (i = 0; i < no; i++)
+        fprintf(fo, "%.4f %.6f %.6f %.6f\n", odo[i].t, odo[i].o[0], odo[i].o[1], odo[i].o[2]);
+    for (i = 0; i < nf; i++) {
+        uint8_t buf[RL_PACKET_MAX];
+        rl_msg m = fr[i].msg;
+        m.time_ms = (uint32_t)lround(fr[i].capture * 1e3);
+        fwrite(buf, 1, rl_packet_encode(&m, buf), ff);
+    }
+    for (k = 0; k * TICK <= T + 1e-9; k++) {
+        fs_pose p;
+        truth(d, sc, k * TICK, &p);
+        fprintf(ft, "%.3f %.6f %.6f %.6f\n", k * TICK, p.x, p.y, p.yaw);
+    }
+    return (fclose(fo) | fclose(ff) | fclose(ft)) == 0 ? 0 : -1;
+}
+
 int fs_run(const fs_drive *d, const fs_scenario *sc, fs_result *r)
 {
     static odo_sample odo[MAX_ODO];
@@ -277,6 +311,8 @@ int fs_run(const fs_drive *d, const fs_scenario *sc, fs_result *r)
     rng = 0x9E3779B97F4A7C15ULL ^ (sc->seed * 0x2545F4914F6CDD1DULL);
     no = odometry(d, sc, T, odo);
     nf = frames(d, sc, T, fr);
+    if (sc->export_dir && export_drive(d, sc, T, odo, no, fr, nf) != 0)
+        return -1;
     rl_fuse_defaults(&cfg);
     cfg.track = sc->track;
     cfg.wheel_noise = sc->wheel_noise;

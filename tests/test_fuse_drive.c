@@ -4,7 +4,8 @@
  * frames a lap), odometry simulated at 10 and 50 Hz with a 1% wheel scale
  * error, a 2% track width error and wheel noise; beside today's
  * reset-on-arrival. Prints every figure, fails on a target missed.
- * usage: test_fuse_drive FUSE_DIR FUSE_JSONL PATHS_DIR PATHS_JSONL PICTURE.png */
+ * Writes the circle at 1 m/s as `ringloc fuse` takes it into EXPORT_DIR.
+ * usage: test_fuse_drive FUSE_DIR FUSE_JSONL PATHS_DIR PATHS_JSONL PICTURE.png EXPORT_DIR */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -166,8 +167,8 @@ static void outlier_and_kidnap(const fs_drive *st, const fs_drive *ci)
 int main(int argc, char **argv)
 {
     static fs_drive st, ci, rect;
-    if (argc != 6) {
-        fprintf(stderr, "usage: test_fuse_drive FUSE_DIR FUSE_JSONL PATHS_DIR PATHS_JSONL PICTURE.png\n");
+    if (argc != 7) {
+        fprintf(stderr, "usage: test_fuse_drive FUSE_DIR FUSE_JSONL PATHS_DIR PATHS_JSONL PICTURE.png EXPORT_DIR\n");
         return 2;
     }
     if (fs_drive_load(&st, argv[1], "straight", 25, argv[2], 0) != 0 ||
@@ -179,6 +180,13 @@ int main(int argc, char **argv)
     stretch(&ci, 3, 2 * ci.length + 0.5, argv[5]);
     stretch(&rect, 2.6, 7.0, NULL);
     outlier_and_kidnap(&st, &ci);
+    {
+        fs_scenario sc;
+        fs_scenario_defaults(&sc);
+        sc.laps = 2;
+        sc.export_dir = argv[6];
+        check(fs_run(&ci, &sc, &res) == 0, "export for ringloc fuse");
+    }
     printf("%s\n", fails ? "FAILED" : "all targets met");
     return fails ? 1 : 0;
 }
