@@ -54,6 +54,11 @@
 #include "rl_error.h"
 #include "rl_packet.h"
 
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Odometry samples kept (with the state after each): the oldest capture
  * time a frame can have is this many samples back (2.5 s at 50 Hz);
  * older frames are counted in rl_fuse_stats.too_old. */
@@ -163,5 +168,9 @@ RL_CHECK rl_err rl_fuse_pose_at(const rl_fuse *f, double t, rl_fuse_pose *p);
  * capture = arrival - latency - the frame's bytes at baud (10 bits a byte).
  * Version 1 frames have no sigmas (0: the config's stand in). */
 void rl_fuse_frame_from_msg(const rl_msg *m, double arrival, int baud, rl_fuse_frame *fr);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
