@@ -18,8 +18,7 @@
  * Clocks. Every time is in seconds on ONE monotonic clock, the
  * controller's: odometry samples carry the time the wheels were read, and
  * a frame carries its capture time on that clock, which the controller
- * reconstructs as
- *     capture = arrival - latency - line time
+ * reconstructs as capture = arrival - latency - line time
  * (rl_fuse_frame_from_msg): arrival is when the frame's last byte was read
  * (stamp it in the thread that reads the port, not in a later control
  * cycle), latency the firmware's capture-to-send delay carried in the
@@ -46,7 +45,7 @@
  *   memset(&m, 0, sizeof m);
  *   rl_fuse_frame_from_msg(&m, 12.31, 115200, &fr); // arrival time, baud
  *   if (rl_fuse_frame_add(&f, &fr) == RL_OK && rl_fuse_pose_at(&f, 12.32, &p) == RL_OK)
- *       use(p.x, p.y, p.yaw, p.cov[0]);
+ *       use(p.x, p.y, p.yaw, p.cov[0][0]);
  */
 #ifndef RL_FUSE_H
 #define RL_FUSE_H
