@@ -26,11 +26,12 @@ static void check(int ok, const char *what)
     }
 }
 
-static void row(const char *drive, const fs_scenario *sc, const fs_result *r)
+static void row(const fs_drive *d, const fs_scenario *sc, const fs_result *r)
 {
+    double spacing = d->closed ? d->length / d->n : d->length / (d->n - 1);
     printf("%-8s %4.1f m/s %4.1f fps %2.0f Hz odo | fused %5.2f mm RMS (max %5.2f) step max %4.2f mm "
            "(%.2f s) yaw max %5.3f deg (%.2f s) | reset-on-arrival %6.2f mm RMS | scale %.4f turn %.4f | applied %lu rejected %lu\n",
-           drive, sc->v, sc->v / 0.1, sc->odo_hz, r->rms_fused * 1e3, r->max_err_fused * 1e3,
+           d->kind, sc->v, sc->v / spacing, sc->odo_hz, r->rms_fused * 1e3, r->max_err_fused * 1e3,
            r->max_step * 1e3, r->t_max_step, r->max_yaw * 180 / M_PI, r->t_max_yaw, r->rms_reset * 1e3, r->scale, r->turn,
            r->stats.applied, r->stats.rejected);
     printf("         warm-up (first %.1f s, the scales being learned): error max %.2f mm, step max %.2f mm, "
@@ -56,7 +57,7 @@ static void done_when_1(const fs_drive *st, const fs_drive *ci)
                 check(0, "run");
                 continue;
             }
-            row(d[i]->kind, &sc, &res);
+            row(d[i], &sc, &res);
             check(res.rms_fused <= 0.003, "fused RMS above 3 mm");
             check(res.max_step <= 0.001, "a step above 1 mm between ticks");
             check(res.max_yaw <= 0.1 * M_PI / 180, "yaw error above 0.1 degree");
@@ -85,9 +86,7 @@ static void speeds(const fs_drive *st, const fs_drive *ci, const fs_drive *rect)
                 check(0, "run");
                 continue;
             }
-            row(d[i]->kind, &sc, &res);
-            if (d[i] == rect)
-                printf("   (rect: %.1f frames/s)\n", v[j] / (rect->length / rect->n));
+            row(d[i], &sc, &res);
             check(res.rms_fused < res.rms_reset, "fused no better than reset-on-arrival");
             check(res.rms_fused <= 0.005, "fused RMS above 5 mm");
         }
