@@ -274,6 +274,12 @@ int rl_cmd_fuse(int argc, char **argv)
         free(l.f);
         return rc;
     }
+    if (l.n == 0) {
+        rl_odolog_free(&log);
+        free(l.f);
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: no pose frames (%lu status frames, %lu damaged)",
+                           argv[optind], l.status, l.damaged);
+    }
     qsort(l.f, l.n, sizeof *l.f, by_arrival);
     if (out_path && rl_outfile_open(&o, out_path, err, sizeof err) != RL_OK) {
         rl_odolog_free(&log);
@@ -293,7 +299,5 @@ int rl_cmd_fuse(int argc, char **argv)
             ticks, (unsigned long)l.n, f.stats.applied, f.stats.rejected, f.stats.recoveries,
             f.stats.too_old, f.stats.out_of_order, f.stats.waiting_lost + (unsigned long)f.has_waiting,
             l.status, l.damaged);
-    if (l.n == 0)
-        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: no pose frames", argv[optind]);
     return 0;
 }
