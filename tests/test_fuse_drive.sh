@@ -1,7 +1,7 @@
 #!/bin/sh
 # rl_fuse from the truth (issue 27): `ringloc run` with the PNG-sequence
-# camera over the drives rendered for it (straight and circle, 0.1 m a
-# frame) and over the path drives' rect, pose frames into a file, decoded
+# camera over the circle rendered for it (0.1 m a frame) and over the path
+# drives' straight and rect, pose frames into a file, decoded
 # by `ringloc monitor`; then test_fuse_drive times them along the drives
 # beside simulated odometry and judges the fused pose at every tick.
 # usage: test_fuse_drive.sh RINGLOC TEST_FUSE_DRIVE FUSE_DIR PATHS_DIR TMPDIR
@@ -27,7 +27,7 @@ CFG
     (cd "$T" && "$R" run --config "$3.yaml" 2>"$3.err") || { echo "FAIL: run on $1: $(cat "$T/$3.err")"; exit 1; }
     "$R" monitor "$T/$3.bin" >"$T/$3.jsonl" 2>/dev/null || { echo "FAIL: monitor $3.bin"; exit 1; }
 }
-frames "$F" "straight_*.png circle_*.png" fuse
+frames "$F" "circle_*.png" fuse
 frames "$P" "straight_*.png rect_*.png" paths
 "$X" "$F" "$T/fuse.jsonl" "$P" "$T/paths.jsonl" "$T/fuse.png" "$T"
 rc=$?
