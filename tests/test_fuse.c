@@ -142,6 +142,9 @@ static void test_late_frame_replayed(void **state)
     assert_true(fabs(p.scale - 1.0144) < 5e-4);
     assert_int_equal(rl_fuse_pose_at(&f, 0.5, &p), RL_OK);
     assert_true(fabs(p.x - (0.26 + 0.25 * 1.0144)) < 2e-4);
+    /* before the frame: the frame's state moved back, 0.1 m at the new scale */
+    assert_int_equal(rl_fuse_pose_at(&f, 0.15, &p), RL_OK);
+    assert_true(fabs(p.x - (0.26 - 0.1 * 1.0144)) < 2e-4);
     assert_int_equal((int)f.stats.applied, 2);
 }
 

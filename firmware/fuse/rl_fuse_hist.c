@@ -10,7 +10,8 @@
  *   (the replay). Entries before the anchor keep what they had.
  * - A state at any time is its base (the anchor, or the newest valid entry
  *   after it, at or before that time) moved by the odometry from the
- *   base's time to that time: interpolation and prediction are one path. */
+ *   base's time to that time: interpolation and prediction are one path
+ *   (and a time before the anchor is the anchor moved back). */
 #include <math.h>
 #include <string.h>
 #include "rl_fuse_hist.h"
@@ -93,7 +94,10 @@ int rl_fuse_hist_state_at(const rl_fuse *f, double t, rl_fuse_kf_state *s)
     int k = rl_fuse_hist_find(f, t), r;
     if (k >= 0 && at_age(f, k)->valid && at_age(f, k)->t >= f->anchor.t)
         base = at_age(f, k);
-    if (!base->valid || base->t > t || (r = rl_fuse_hist_odo_at(f, t, o)) < 0)
+    /* before the anchor (a time earlier than the last fused frame) the
+     * anchor is still the best base: moved back through the odometry, its
+     * covariance grows as forward (conservative), its mean keeps the frame */
+    if (!base->valid || (r = rl_fuse_hist_odo_at(f, t, o)) < 0)
         return -1;
     memcpy(s->m, base->m, sizeof s->m);
     memcpy(s->P, base->P, sizeof s->P);

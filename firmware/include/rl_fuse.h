@@ -156,11 +156,12 @@ RL_CHECK rl_err rl_fuse_odometry(rl_fuse *f, double t, double x, double y, doubl
  * finite. The first frame sets the pose. */
 RL_CHECK rl_err rl_fuse_frame_add(rl_fuse *f, const rl_fuse_frame *fr);
 
-/* The pose at time t: interpolated inside the history, predicted past its
- * newest sample (at the last sample's speed and turn rate, at most
- * max_extrapolate). RL_ENOTFOUND before the first frame, RL_ERANGE for a
- * time before the history (or past the extrapolation limit: *p then holds
- * the pose at the limit). */
+/* The pose at time t: interpolated inside the history (before the last
+ * fused frame's capture: that frame's state moved back through the
+ * odometry), predicted past its newest sample (at the speed and turn rate
+ * of the last 0.15 s of odometry, at most max_extrapolate). RL_ENOTFOUND
+ * before the first frame, RL_ERANGE for a time before the history (or
+ * past the extrapolation limit: *p then holds the pose at the limit). */
 RL_CHECK rl_err rl_fuse_pose_at(const rl_fuse *f, double t, rl_fuse_pose *p);
 
 /* A decoded pose frame (rl_packet.h) as a frame on the controller's clock:
