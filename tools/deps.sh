@@ -12,6 +12,10 @@
 # asan: the host's packages and clang (the sanitizer test build).
 # --check only reports. Called first by `make host`, `make host-test`,
 # `make demo` and `make bench`.
+# Not here: AriaCoda, for the ARIA example (tools/aria), is not in Debian;
+# build it from github.com/reedhedges/AriaCoda (`make lib/libAria.so`, g++
+# and make only) and configure with -DARIA_DIR=its tree. The stand-in robot
+# and the rest of the controller's side need nothing more.
 set -eu
 
 check_only=0
