@@ -79,12 +79,7 @@ static int parse(int argc, char **argv, survey_args *a, rl_survey_config *cfg, r
     const char *C = "survey";
     int c;
     optind = 1;
-    while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
-        int r = rl_cli_recog_option(C, c, optarg, rc, &a->family);
-        if (r < 0)
-            return RL_EXIT_USAGE;
-        if (r > 0)
-            continue;
+    while ((c = rl_cli_getopt_recog(C, argc, argv, opts, rc, &a->family)) != -1) {
         switch (c) {
         case 'c': a->cam = optarg; break;
         case 'r': a->robot = optarg; break;

@@ -346,16 +346,10 @@ static void load_map(const char *path, rl_map *map)
 static void load_site(rl_map *map, rl_calib *cam, rl_mount *mount)
 {
     static rl_site site;
-    static char paths[3][1024];
+    static rl_site_folder held;
     rl_site_files files;
     char err[768];
-    snprintf(paths[0], sizeof paths[0], "%s/map.yaml", paths_dir);
-    snprintf(paths[1], sizeof paths[1], "%s/camera.yaml", paths_dir);
-    snprintf(paths[2], sizeof paths[2], "%s/robot.yaml", paths_dir);
-    rl_site_files_init(&files);
-    files.map = paths[0];
-    files.calibration = paths[1];
-    files.robot = paths[2];
+    rl_site_files_folder(&files, &held, paths_dir);
     if (rl_site_load(&site, &files, err, sizeof err) != RL_OK) fail_msg("%s", err);
     *map = site.map;
     *cam = site.calib;

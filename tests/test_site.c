@@ -39,16 +39,10 @@ typedef struct {
 static void load_site(void)
 {
     static rl_site site;
-    static char paths[3][1024];
+    static rl_site_folder held;
     rl_site_files files;
     char err[768];
-    snprintf(paths[0], sizeof paths[0], "%s/map.yaml", dir);
-    snprintf(paths[1], sizeof paths[1], "%s/camera.yaml", dir);
-    snprintf(paths[2], sizeof paths[2], "%s/robot.yaml", dir);
-    rl_site_files_init(&files);
-    files.map = paths[0];
-    files.calibration = paths[1];
-    files.robot = paths[2];
+    rl_site_files_folder(&files, &held, dir);
     if (rl_site_load(&site, &files, err, sizeof err) != RL_OK)
         fail_msg("%s", err);
     map = site.map;

@@ -155,6 +155,19 @@ int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config
 }
 
 
+int rl_cli_getopt_recog(const char *cmd, int argc, char **argv, const struct option *opts, rl_recog_config *cfg,
+                        const char **family)
+{
+    int c, r;
+    while ((c = rl_cli_getopt(cmd, argc, argv, opts)) != -1) {
+        if ((r = rl_cli_recog_option(cmd, c, optarg, cfg, family)) < 0)
+            return '?';
+        if (r == 0)
+            return c;
+    }
+    return -1;
+}
+
 void rl_cli_annotate_name(char *buf, size_t len, const char *out, const char *image, int several)
 {
     const char *base = strrchr(image, '/'), *dot, *odot = strrchr(out, '.');
@@ -218,67 +231,68 @@ int rl_cli_ulong(const char *cmd, const char *opt, const char *s, unsigned long 
 
 /* The next comma-separated number of *s into v, *s moved past it and its
  * comma; 0 when it is not one (an empty item, a trailing comma). */
-static int next_double(const char **s, double *v)
+/* One number of a comma-separated list at *s into out[i], *s past it and
+ * its comma; 0 when there is none (or a trailing comma). */
+typedef int (*list_item_fn)(const char **s, void *out, int i);
+
+static int item_end(const char **s, char *end)
 {
-    char *end;
-    errno = 0;
-    *v = strtod(*s, &end);
-    if (end == *s || (*end != ',' && *end != '\0') || (*end == ',' && end[1] == '\0') || errno == ERANGE ||
-        !isfinite(*v))
+    if (end == *s || (*end != ',' && *end != '\0') || (*end == ',' && end[1] == '\0') || errno == ERANGE)
         return 0;
     *s = *end ? end + 1 : end;
     return 1;
 }
 
-static int next_int(const char **s, int *v)
+static int next_double(const char **s, void *out, int i)
+{
+    char *end;
+    double v;
+    errno = 0;
+    v = strtod(*s, &end);
+    if (!isfinite(v) || !item_end(s, end))
+        return 0;
+    ((double *)out)[i] = v;
+    return 1;
+}
+
+static int next_int(const char **s, void *out, int i)
 {
     char *end;
     long l;
     errno = 0;
     l = strtol(*s, &end, 10);
-    if (end == *s || (*end != ',' && *end != '\0') || (*end == ',' && end[1] == '\0') || errno == ERANGE ||
-        l < INT_MIN || l > INT_MAX)
+    if (l < INT_MIN || l > INT_MAX || !item_end(s, end))
         return 0;
-    *v = (int)l;
-    *s = *end ? end + 1 : end;
+    ((int *)out)[i] = (int)l;
+    return 1;
+}
+
+static int parse_list(const char *cmd, const char *opt, const char *s, const char *form, list_item_fn next,
+                      void *out, int max, int *n)
+{
+    const char *p = s;
+    *n = 0;
+    do {
+        if (*n == max) {
+            rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: more than %d values", opt, max);
+            return 0;
+        }
+        if (!next(&p, out, *n)) {
+            rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: '%s' is not %s", opt, s, form);
+            return 0;
+        }
+        (*n)++;
+    } while (*p != '\0');
     return 1;
 }
 
 int rl_cli_doubles(const char *cmd, const char *opt, const char *s, const char *form, double *out, int max,
                    int *n)
 {
-    const char *p = s;
-    double v;
-    *n = 0;
-    do {
-        if (!next_double(&p, &v)) {
-            rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: '%s' is not %s", opt, s, form);
-            return 0;
-        }
-        if (*n == max) {
-            rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: more than %d values", opt, max);
-            return 0;
-        }
-        out[(*n)++] = v;
-    } while (*p != '\0');
-    return 1;
+    return parse_list(cmd, opt, s, form, next_double, out, max, n);
 }
 
 int rl_cli_ints(const char *cmd, const char *opt, const char *s, const char *form, int *out, int max, int *n)
 {
-    const char *p = s;
-    int v;
-    *n = 0;
-    do {
-        if (!next_int(&p, &v)) {
-            rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: '%s' is not %s", opt, s, form);
-            return 0;
-        }
-        if (*n == max) {
-            rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: more than %d values", opt, max);
-            return 0;
-        }
-        out[(*n)++] = v;
-    } while (*p != '\0');
-    return 1;
+    return parse_list(cmd, opt, s, form, next_int, out, max, n);
 }

@@ -75,6 +75,12 @@ int rl_cli_ints(const char *cmd, const char *opt, const char *s, const char *for
 int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config *cfg,
                         const char **family);
 
+/* rl_cli_getopt that applies the recognition options itself
+ * (rl_cli_recog_option): the next other option, -1 at the end, '?' after
+ * a usage error line. */
+int rl_cli_getopt_recog(const char *cmd, int argc, char **argv, const struct option *opts, rl_recog_config *cfg,
+                        const char **family);
+
 /* "out.png" for one image; "out-<stem of image>.png" for several. */
 void rl_cli_annotate_name(char *buf, size_t len, const char *out, const char *image, int several);
 
