@@ -175,13 +175,17 @@ static void print_pose(FILE *out, const rl_fuse_pose *p)
             p->scale, p->turn);
 }
 
+/* The longest odometry log replayed (a day): longer, its times jump. */
+#define FUSE_MAX_SPAN 86400.0
+
 /* The controller's loop: odometry and frames in the order they become
- * known, the pose at every tick; returns the ticks written. */
-static long replay(rl_fuse *f, const rl_odolog *log, const frame_list *l, double rate, FILE *out)
+ * known, the pose at every tick, until SIGINT or SIGTERM; returns the
+ * ticks written, *unfed the frames that arrived after the log's end. */
+static long replay(rl_fuse *f, const rl_odolog *log, const frame_list *l, double rate, FILE *out, size_t *unfed)
 {
     size_t io = 0, jf = 0;
     long k, ticks = 0, nt = (long)floor((log->s[log->n - 1].t - log->s[0].t) * rate + 1e-9);
-    for (k = 0; k <= nt; k++) {
+    for (k = 0; k <= nt && !stop_flag; k++) {
         double t = log->s[0].t + k / rate;
         rl_fuse_pose p;
         while ((io < log->n && log->s[io].t <= t) || (jf < l->n && l->f[jf].arrival <= t)) {
@@ -196,6 +200,7 @@ static long replay(rl_fuse *f, const rl_odolog *log, const frame_list *l, double
             ticks++;
         }
     }
+    *unfed = l->n - jf;
     return ticks;
 }
 
@@ -251,6 +256,7 @@ int rl_cmd_fuse(int argc, char **argv)
     double rate = 100, offset = 0;
     int baud = 115200, rc;
     long ticks;
+    size_t unfed = 0;
     rl_odolog log;
     frame_list l;
     rl_outfile o;
@@ -264,6 +270,11 @@ int rl_cmd_fuse(int argc, char **argv)
         return rl_cli_fail(C, RL_EXIT_USAGE, "the filter's settings are out of range");
     if (rl_odolog_load(odo, &log, err, sizeof err) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    if (!(log.s[log.n - 1].t - log.s[0].t <= FUSE_MAX_SPAN)) {
+        double span = log.s[log.n - 1].t - log.s[0].t;
+        rl_odolog_free(&log);
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: its times span %.3g s, more than a day: do they jump?", odo, span);
+    }
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_signal;
     sigaction(SIGINT, &sa, NULL);
@@ -288,16 +299,21 @@ int rl_cmd_fuse(int argc, char **argv)
     }
     if (out_path)
         out = o.f;
-    ticks = replay(&f, &log, &l, rate, out);
+    ticks = replay(&f, &log, &l, rate, out, &unfed);
     rl_odolog_free(&log);
     free(l.f);
+    if (ticks == 0) { /* the user's old file stays as it was */
+        if (out_path)
+            rl_outfile_abort(&o);
+        return rl_cli_fail(C, RL_EXIT_FAIL, "no pose: %s covers no time the frames could be fused in", odo);
+    }
     if (out_path && rl_outfile_commit(&o, err, sizeof err) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
     fprintf(stderr, "ringloc fuse: %ld poses; %lu pose frames: %lu applied, %lu rejected, %lu restarts "
                     "(carried), %lu older than the odometry kept, %lu out of order, %lu past the odometry's "
                     "end; %lu status frames, %lu damaged\n",
             ticks, (unsigned long)l.n, f.stats.applied, f.stats.rejected, f.stats.recoveries,
-            f.stats.too_old, f.stats.out_of_order, f.stats.waiting_lost + (unsigned long)f.has_waiting,
-            l.status, l.damaged);
+            f.stats.too_old, f.stats.out_of_order,
+            f.stats.waiting_lost + (unsigned long)f.has_waiting + (unsigned long)unfed, l.status, l.damaged);
     return 0;
 }

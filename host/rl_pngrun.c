@@ -41,6 +41,7 @@ long rl_pngrun_files(const rl_pngrun *pr, rl_site *site, char *const *files, int
     char err[512];
     rl_cam_defaults(&cc);
     cc.backend = "png";
+    cc.rate = 0; /* as fast as they decode */
     cc.files = (const char *const *)files;
     cc.n_files = n;
     memset(&io, 0, sizeof io);

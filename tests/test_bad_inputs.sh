@@ -154,6 +154,11 @@ for bad in '0 0 0' '0 0 0 0 0' '0 a 0 0' '0 nan 0 0' '0 1e309 0 0'; do
     printf '0.5 0 0 0\n%s\n' "$bad" >"$T/bad_odo.txt"
     desc="$bad" expect 1 "bad_odo.txt:2" "$R" fuse --odometry "$T/bad_odo.txt" "$T/odo.txt"
 done
+# odometry whose times jump (epoch seconds after relative ones): refused, never replayed for hours
+for last in 1700000000 1e300; do
+    printf '0 0 0 0\n0.1 0.1 0 0\n%s 0.2 0 0\n' "$last" >"$T/jump_odo.txt"
+    desc="$last" expect 1 "more than a day: do they jump" "$R" fuse --odometry "$T/jump_odo.txt" "$T/odo.txt"
+done
 desc=
 expect 2 "origin" "$R" survey $sv --origin 40 "$frame"
 expect 2 "same landmark" "$R" survey --camera "$cam" --robot "$robot" --origin 8 --axis 8 --out "$T/s.yaml" "$frame"
