@@ -71,11 +71,30 @@ static rl_err check_site(const rl_site *s, char *err, size_t errlen)
     return RL_OK;
 }
 
+/* A path of f kept in the site: *path points at the copy. 0 when it is
+ * too long. */
+static int hold(rl_site *s, int i, const char **path)
+{
+    if (*path == NULL)
+        return 1;
+    if (strlen(*path) >= sizeof s->held[i])
+        return 0;
+    memcpy(s->held[i], *path, strlen(*path) + 1);
+    *path = s->held[i];
+    return 1;
+}
+
 rl_err rl_site_load(rl_site *s, const rl_site_files *f, char *err, size_t errlen)
 {
     rl_err e;
     memset(s, 0, sizeof *s);
     s->files = *f;
+    if (!hold(s, 0, &s->files.calibration) || !hold(s, 1, &s->files.map) || !hold(s, 2, &s->files.robot) ||
+        !hold(s, 3, &s->files.offsets) || !hold(s, 4, &s->files.size_from)) {
+        snprintf(err, errlen, "a site file's path is longer than %d characters", (int)sizeof s->held[0] - 1);
+        return RL_ELIMIT;
+    }
+    f = &s->files;
     if ((e = load_files(s, f, err, errlen)) != RL_OK)
         return e;
     return check_site(s, err, errlen);

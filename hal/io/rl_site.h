@@ -47,7 +47,8 @@ typedef struct {
 } rl_site_files;
 
 typedef struct {
-    rl_site_files files;
+    rl_site_files files;     /* as given, its paths pointing into held */
+    char held[5][4096];      /* copies of the paths and size_from */
     int has_calib, has_map, has_mount, has_offsets;
     rl_calib calib;
     rl_map map;
@@ -68,9 +69,9 @@ typedef struct {
 } rl_site_folder;
 void rl_site_files_folder(rl_site_files *f, rl_site_folder *held, const char *dir);
 
-/* Read and check the files named in f (pointers kept: they must outlive
- * the site). RL_ENOTFOUND, RL_EFORMAT, RL_ERANGE or RL_EINVAL with one
- * line in err naming the file. */
+/* Read and check the files named in f (their paths copied into the
+ * site). RL_ENOTFOUND, RL_EFORMAT, RL_ERANGE or RL_EINVAL with one line
+ * in err naming the file; RL_ELIMIT for a path too long to keep. */
 RL_CHECK rl_err rl_site_load(rl_site *s, const rl_site_files *f, char *err, size_t errlen);
 
 /* The recognizer for rc, restricted to the map's ids (when there is a
