@@ -13,18 +13,16 @@
  *
  *   static rl_view view;
  *   static rl_view_snap snap;
+ *   static union { rl_result align; uint8_t b[sizeof(rl_result) + 640 * 480]; } mem, smem;
  *   rl_view_config vc;
  *   rl_view_obs obs;
- *   void *mem, *smem;
  *   rl_view_defaults(&vc);
  *   vc.width = 640;
- *   vc.height = 480;
- *   mem = malloc(rl_view_size(&vc));       // at start: the loop never allocates
- *   smem = malloc(rl_view_size(&vc));      // the reader's copy
- *   if (rl_view_init(&view, &vc, mem, rl_view_size(&vc)) == RL_OK &&
- *       rl_view_snap_init(&snap, &vc, smem, rl_view_size(&vc)) == RL_OK) {
+ *   vc.height = 480;                       // rl_view_size(&vc) == sizeof mem
+ *   if (rl_view_init(&view, &vc, &mem, sizeof mem) == RL_OK &&
+ *       rl_view_snap_init(&snap, &vc, &smem, sizeof smem) == RL_OK) {
  *       memset(&obs, 0, sizeof obs);       // the loop fills it for each frame
- *       rl_view_offer(&view, &obs);        // loop thread
+ *       rl_view_offer(&view, &obs);        // loop thread: never allocates
  *       if (rl_view_take(&view, &snap))    // server thread: a newer snapshot
  *           use(snap.seq, snap.image, snap.res->n_landmarks);
  *       rl_view_destroy(&view);
