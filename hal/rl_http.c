@@ -6,6 +6,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 #include "rl_http_req.h"
 #include "rl_listen.h"
 #include "rl_view_jpeg.h"
@@ -31,6 +34,10 @@ struct rl_http {
     size_t map_len;
     char token[RL_HTTP_MAX_TOKEN + 1];
     rl_http_counts counts;    /* the server thread's */
+    int niced;                /* the server thread's priority lowered */
+    long jpeg_seq;            /* the JPEG last encoded: of this snapshot ... */
+    int jpeg_width;           /* ... at this width (two pages ask for the same) */
+    size_t jpeg_len;
 };
 
 void rl_http_defaults(rl_http_config *c)
@@ -97,15 +104,22 @@ static enum MHD_Result refuse(rl_http *h, struct MHD_Connection *c, unsigned sta
 static enum MHD_Result frame(rl_http *h, struct MHD_Connection *c, const rl_http_req *q)
 {
     const rl_view_snap *s = q->seq > 0 ? by_seq(h, q->seq) : latest(h);
+    int w = q->width ? q->width : s->width;
     const uint8_t *jpeg;
     size_t n;
     if (!s->have_image)
         return refuse(h, c, MHD_HTTP_SERVICE_UNAVAILABLE, "no frame yet");
-    if (rl_view_jpeg_encode(h->jpeg, s->image, s->width, s->height, q->width ? q->width : s->width, &jpeg,
-                            &n) != RL_OK)
-        return refuse(h, c, MHD_HTTP_INTERNAL_SERVER_ERROR, "JPEG encoding failed");
+    if (s->seq != h->jpeg_seq || w != h->jpeg_width) {
+        h->jpeg_seq = 0;
+        if (rl_view_jpeg_encode(h->jpeg, s->image, s->width, s->height, w, &jpeg, &n) != RL_OK)
+            return refuse(h, c, MHD_HTTP_INTERNAL_SERVER_ERROR, "JPEG encoding failed");
+        h->jpeg_seq = s->seq;
+        h->jpeg_width = w;
+        h->jpeg_len = n;
+    }
     h->counts.served++;
-    return reply(c, MHD_HTTP_OK, "image/jpeg", jpeg, n, MHD_RESPMEM_MUST_COPY, s->seq);
+    return reply(c, MHD_HTTP_OK, "image/jpeg", rl_view_jpeg_data(h->jpeg), h->jpeg_len, MHD_RESPMEM_MUST_COPY,
+                 s->seq);
 }
 
 static enum MHD_Result respond(rl_http *h, struct MHD_Connection *c, const rl_http_req *q)
@@ -147,6 +161,12 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const cha
     (void)version;
     (void)upload;
     (void)state;
+    if (!h->niced) {
+        /* the loop first: where cores are short, the server waits (Linux
+         * sets a nice value per thread) */
+        (void)setpriority(PRIO_PROCESS, (id_t)syscall(SYS_gettid), 10);
+        h->niced = 1;
+    }
     in.method = method;
     in.url = url;
     in.w = arg(c, "w");
@@ -210,7 +230,10 @@ static struct MHD_Daemon *listen_on(rl_http *h, const rl_http_config *c, const r
         (void)inet_pton(AF_INET, l->host, &a4.sin_addr);
         a = (const struct sockaddr *)&a4;
     }
-    return MHD_start_daemon(MHD_USE_AUTO_INTERNAL_THREAD | (l->ipv6 ? MHD_USE_IPv6 : 0), (uint16_t)l->port,
+    /* poll, not epoll: with epoll (libmicrohttpd 0.9.75) a server that
+     * reached its connection limit stopped accepting for good once those
+     * clients left (test_view_hostile's slowloris clients showed it) */
+    return MHD_start_daemon(MHD_USE_POLL_INTERNAL_THREAD | (l->ipv6 ? MHD_USE_IPv6 : 0), (uint16_t)l->port,
                             NULL, NULL, on_request, h, MHD_OPTION_SOCK_ADDR, a,
                             MHD_OPTION_CONNECTION_LIMIT, (unsigned)c->max_clients,
                             MHD_OPTION_CONNECTION_TIMEOUT, (unsigned)c->timeout_s,

@@ -58,7 +58,7 @@ typedef struct {
     long serial_errors, dropped, ambiguous, tracked, local_used;
     int serial_up;          /* 1 while the serial line is open */
     int recording;          /* 1 while frames are recorded */
-    long rec_saved, rec_skipped;
+    long rec_kept, rec_skipped; /* frames handed to the writer, and skipped */
 } rl_view_counts;
 
 /* One observation, from the loop thread; everything is read during the

@@ -96,3 +96,8 @@ rl_err rl_view_jpeg_encode(rl_view_jpeg *j, const uint8_t *grey, int w, int h, i
     *n = (size_t)j->out_size;
     return RL_OK;
 }
+
+const uint8_t *rl_view_jpeg_data(const rl_view_jpeg *j)
+{
+    return j->out;
+}

@@ -34,4 +34,7 @@ void rl_view_jpeg_free(rl_view_jpeg *j);
 RL_CHECK rl_err rl_view_jpeg_encode(rl_view_jpeg *j, const uint8_t *grey, int w, int h, int out_w,
                                     const uint8_t **jpeg, size_t *n);
 
+/* The JPEG the last successful encode gave (NULL before one). */
+const uint8_t *rl_view_jpeg_data(const rl_view_jpeg *j);
+
 #endif

@@ -169,8 +169,8 @@ static void counters(jbuf *b, const rl_view_snap *s)
     put(b, "}}, ");
     put(b, "\"serial\": {\"up\": %s, ", c->serial_up ? "true" : "false");
     str(b, "device", s->serial);
-    put(b, "}, \"recording\": {\"on\": %s, \"saved\": %ld, \"skipped\": %ld}, ", c->recording ? "true" : "false",
-        c->rec_saved, c->rec_skipped);
+    put(b, "}, \"recording\": {\"on\": %s, \"kept\": %ld, \"skipped\": %ld}, ", c->recording ? "true" : "false",
+        c->rec_kept, c->rec_skipped);
 }
 
 size_t rl_view_json_status(const rl_view_snap *s, char *buf, size_t cap)
