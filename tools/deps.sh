@@ -58,6 +58,7 @@ if [ "$profile" != fuzz ]; then
     need_pkg libpng-dev pc libpng
     need_pkg libyaml-dev pc yaml-0.1
     need_pkg libturbojpeg0-dev pc libturbojpeg
+    need_pkg libmicrohttpd-dev pc libmicrohttpd # the web view (--http)
     need_pkg libcairo2-dev pc cairo
     need_pkg libopencv-dev pc opencv4
     need_pkg libapriltag-dev pc apriltag
@@ -70,6 +71,12 @@ if [ "$profile" != fuzz ]; then
     need_pkg passwd have useradd          # the package's postinst, run by test_package
 fi
 [ "$profile" = host ] || [ "$profile" = asan ] && need_pkg libcamera-dev pc libcamera
+if [ "$profile" = host ] || [ "$profile" = asan ]; then
+    # the web view's browser tests (test_view_page, test_view_hostile)
+    need_pkg chromium have chromium
+    need_pkg chromium-driver have chromedriver
+    need_pkg python3-selenium /usr/bin/python3 -c "import selenium"
+fi
 foreign=""
 if [ "$profile" = cross ]; then
     arm() { [ -f "/usr/lib/aarch64-linux-gnu/pkgconfig/$1.pc" ]; }
@@ -79,6 +86,7 @@ if [ "$profile" = cross ]; then
     need_pkg libpng-dev:arm64 arm libpng
     need_pkg libyaml-dev:arm64 arm yaml-0.1
     need_pkg libturbojpeg0-dev:arm64 arm libturbojpeg
+    need_pkg libmicrohttpd-dev:arm64 arm libmicrohttpd
     need_pkg libcairo2-dev:arm64 arm cairo
     need_pkg libcmocka-dev:arm64 arm cmocka
     if ! dpkg --print-foreign-architectures 2>/dev/null | grep -qx arm64; then
