@@ -37,6 +37,7 @@ check "binary is for $ARCH" sh -c "file '$T/root/usr/bin/ringloc-fw' | grep -q '
 # what the firmware binary links: no cairo, no OpenCV (readelf reads any arch)
 readelf -d "$T/root/usr/bin/ringloc-fw" >"$T/needed" 2>&1
 check "ringloc-fw links libpng, libyaml and libturbojpeg" sh -c "grep -q 'libpng' '$T/needed' && grep -q 'libyaml' '$T/needed' && grep -q 'libturbojpeg' '$T/needed'"
+check "the web view's library, when linked, is declared" sh -c "! grep -q libmicrohttpd '$T/needed' || grep -qE '^Depends: .*libmicrohttpd12' '$T/control'"
 check "ringloc-fw links neither cairo nor OpenCV" sh -c "! grep -qiE 'cairo|opencv' '$T/needed'"
 tools=$(ls "$T"/out/ringloc-tools_*_"$ARCH".deb 2>/dev/null | head -1)
 check "a ringloc-tools_*_$ARCH.deb is built" test -f "$tools"
