@@ -260,31 +260,30 @@ rl_err rl_http_start(rl_http **hp, const rl_http_config *c, rl_view *view, const
     snprintf(h->token, sizeof h->token, "%s", c->token ? c->token : "");
     if ((e = make_buffers(h, map)) != RL_OK) {
         snprintf(err, errlen, "out of memory for the web view");
-        rl_http_stop(h);
+        rl_http_stop(h, NULL);
         return e;
     }
     if ((h->d = listen_on(h, c, &l)) == NULL) {
         snprintf(err, errlen, "cannot listen on %s (the port in use, or not this computer's address)",
                  c->listen);
-        rl_http_stop(h);
+        rl_http_stop(h, NULL);
         return RL_EIO;
     }
     *hp = h;
     return RL_OK;
 }
 
-rl_http_counts rl_http_counts_get(rl_http *h)
-{
-    return h->counts; /* a long read while the server writes it: a count, not a lock's worth */
-}
-
-void rl_http_stop(rl_http *h)
+void rl_http_stop(rl_http *h, rl_http_counts *counts)
 {
     int i;
+    if (counts != NULL)
+        memset(counts, 0, sizeof *counts);
     if (h == NULL)
         return;
     if (h->d)
-        MHD_stop_daemon(h->d);
+        MHD_stop_daemon(h->d); /* joins the server's thread: its counts are final */
+    if (counts != NULL)
+        *counts = h->counts;
     for (i = 0; i < RING; i++)
         free(h->ring_mem[i]);
     rl_view_jpeg_free(h->jpeg);

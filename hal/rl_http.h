@@ -19,7 +19,7 @@
  *   hc.listen = "127.0.0.1:8080";
  *   if (rl_http_start(&h, &hc, &view, &map, err, sizeof err) == RL_OK) {
  *       // ... the loop runs ...
- *       rl_http_stop(h);
+ *       rl_http_stop(h, NULL);
  *   }
  */
 #ifndef RL_HTTP_H
@@ -54,10 +54,8 @@ void rl_http_defaults(rl_http_config *c);
 RL_CHECK rl_err rl_http_start(rl_http **h, const rl_http_config *c, rl_view *view, const rl_map *map,
                               char *err, size_t errlen);
 
-/* Requests served and refused so far. */
-rl_http_counts rl_http_counts_get(rl_http *h);
-
-/* Stop (closing every connection) and free. NULL is fine. */
-void rl_http_stop(rl_http *h);
+/* Stop (closing every connection) and free; then, when counts is not
+ * NULL, what the server did. NULL h is fine (counts all 0). */
+void rl_http_stop(rl_http *h, rl_http_counts *counts);
 
 #endif

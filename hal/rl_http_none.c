@@ -25,14 +25,9 @@ rl_err rl_http_start(rl_http **h, const rl_http_config *c, rl_view *view, const 
     return RL_EUNSUPPORTED;
 }
 
-rl_http_counts rl_http_counts_get(rl_http *h)
-{
-    rl_http_counts c = {0, 0};
-    (void)h;
-    return c;
-}
-
-void rl_http_stop(rl_http *h)
+void rl_http_stop(rl_http *h, rl_http_counts *counts)
 {
     (void)h;
+    if (counts != NULL)
+        memset(counts, 0, sizeof *counts);
 }

@@ -180,7 +180,10 @@ size_t rl_view_json_status(const rl_view_snap *s, char *buf, size_t cap)
     int i;
     put(&b, "{\"seq\": %ld, \"width\": %d, \"height\": %d, \"image\": %s, \"frame\": %ld, \"t_ms\": %.1f, ",
         s->seq, s->width, s->height, s->have_image ? "true" : "false", s->frame_index, (double)s->t_us / 1e3);
-    put(&b, "\"reason\": %d, ", s->reason);
+    /* how old the frame shown is when the snapshot was taken (the camera
+     * down: status frames go on, the image stays the last one) */
+    put(&b, "\"frame_age_ms\": %.1f, \"reason\": %d, ",
+        s->have_image && s->now_us > s->t_us ? (double)(s->now_us - s->t_us) / 1e3 : 0.0, s->reason);
     str(&b, "camera", s->cam_info);
     put(&b, ", ");
     if (s->have_result)
