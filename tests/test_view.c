@@ -10,6 +10,7 @@
 #include <turbojpeg.h>
 #include "rl_http_req.h"
 #include "rl_listen.h"
+#include "rl_runcfg.h"
 #include "rl_view.h"
 #include "rl_view_jpeg.h"
 #include "rl_view_json.h"
@@ -303,13 +304,45 @@ static void test_listen(void **st)
     assert_int_equal(rl_listen_parse(":8080", &l, err, sizeof err), RL_EFORMAT);
 }
 
+/* ringloc.yaml's http section: off when absent, listen and token read,
+ * a bad address or key one line naming the file, line and key. */
+static rl_err load_cfg(const char *http, rl_runcfg *c, char *err, size_t errlen)
+{
+    char path[512];
+    FILE *f = fopen(rl_test_path(path, sizeof path, "view_run.yaml"), "w");
+    assert_non_null(f);
+    fprintf(f, "camera: {backend: png, device: frames}\ncalibration: c.yaml\nmap: m.yaml\nrobot: r.yaml\n"
+               "serial: {device: tty}\n%s", http);
+    fclose(f);
+    return rl_runcfg_load(path, c, err, errlen);
+}
+
+static void test_runcfg_http(void **st)
+{
+    static rl_runcfg c;
+    char err[768];
+    (void)st;
+    assert_int_equal(load_cfg("", &c, err, sizeof err), RL_OK);
+    assert_string_equal(c.http_listen, "");
+    assert_int_equal(load_cfg("http: {listen: 0.0.0.0:8080, token: abc}\n", &c, err, sizeof err), RL_OK);
+    assert_string_equal(c.http_listen, "0.0.0.0:8080");
+    assert_string_equal(c.http_token, "abc");
+    assert_int_equal(load_cfg("http: {listen: 0.0.0.0:80800}\n", &c, err, sizeof err), RL_EFORMAT);
+    assert_non_null(strstr(err, "view_run.yaml:6: http.listen:"));
+    assert_int_equal(load_cfg("http: {listen: 0.0.0.0:8080, port: 1}\n", &c, err, sizeof err), RL_EFORMAT);
+    assert_non_null(strstr(err, "port"));
+    assert_int_equal(load_cfg("http: {token: abc}\n", &c, err, sizeof err), RL_EFORMAT);
+    assert_non_null(strstr(err, "http.listen"));
+    assert_int_equal(load_cfg("http: 8080\n", &c, err, sizeof err), RL_EFORMAT);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_offer_rate_and_copy), cmocka_unit_test(test_offer_skips_when_held),
         cmocka_unit_test(test_request_judge),       cmocka_unit_test(test_status_json),
         cmocka_unit_test(test_map_json),            cmocka_unit_test(test_jpeg),
-        cmocka_unit_test(test_listen),
+        cmocka_unit_test(test_listen),              cmocka_unit_test(test_runcfg_http),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
