@@ -46,8 +46,7 @@ void rl_fw_http_stop(rl_fw_http *web, const char *prefix)
     rl_http_counts n;
     if (!web->on)
         return;
-    n = rl_http_counts_get(web->http);
-    rl_http_stop(web->http);
+    rl_http_stop(web->http, &n);
     if (prefix != NULL)
         fprintf(stderr, "%s: web view: %ld requests served, %ld refused, %ld snapshots skipped while read\n",
                 prefix, n.served, n.refused, web->view.loop.skipped);
