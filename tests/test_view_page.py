@@ -100,7 +100,7 @@ def main():
         if os.path.islink(tty):
             break
         time.sleep(0.1)
-    fw = vl.start_firmware(ringloc, cfg, tmp, 15 * vl.RATE, "127.0.0.1:%d" % port)
+    fw = vl.start_firmware(ringloc, cfg, tmp, 30 * vl.RATE, "127.0.0.1:%d" % port)  # ended once sampled
     drv = None
     ck = vl.Checks()
     try:
