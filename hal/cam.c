@@ -49,6 +49,7 @@ rl_err rl_cam_open(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen)
 rl_err rl_cam_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
 {
     c->error[0] = '\0';
+    f->name = NULL;
     if (c->ops == NULL)
         return RL_ENODEV;
     return c->ops->grab(c, timeout_ms, f);

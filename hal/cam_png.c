@@ -1,11 +1,12 @@
-/* PNG-sequence camera: a directory of PNGs (sorted by name) or a text file
- * listing one PNG per line (relative to the list's folder), played at a
- * rate. A frame is decoded when it is grabbed, into one block sized at
+/* PNG-sequence camera: a directory of PNGs (sorted by name), a text file
+ * listing one PNG per line (relative to the list's folder), or the files
+ * a command line names, played at a rate. A frame is decoded when it is grabbed, into one block sized at
  * open, so memory does not grow with the list and grabbing never
  * allocates; a list file is read a line at a time. A frame that cannot be
  * read, or is not the camera's size, is reported (RL_EFORMAT, the reason
  * in c->error) and skipped; with loop set the sequence starts again at its
- * end. */
+ * end. Files named on a command line without a size may each have their
+ * own: the block then grows to the largest (the desktop's case). */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,6 +18,8 @@
 
 typedef struct {
     char **names;          /* a directory's PNGs, or NULL for a list file */
+    const char *const *files; /* or the files given (not owned) */
+    int any_size;          /* files without a configured size: each frame its own */
     int n, at;             /* names, and the next one */
     FILE *list;            /* a list file, read as frames are grabbed */
     int dirlen;            /* the list's folder: its first dirlen characters */
@@ -34,7 +37,8 @@ static void png_close(rl_cam *c)
     png_state *s = (png_state *)c->state;
     if (s == NULL)
         return;
-    rl_png_list_free(s->names, s->n);
+    if (s->files == NULL)
+        rl_png_list_free(s->names, s->n);
     if (s->list != NULL)
         fclose(s->list);
     free(s->block);
@@ -48,7 +52,7 @@ static int next_name(png_state *s)
     if (s->list == NULL) {
         if (s->at == s->n)
             return 0;
-        snprintf(s->path, sizeof s->path, "%s", s->names[s->at++]);
+        snprintf(s->path, sizeof s->path, "%s", s->files ? s->files[s->at++] : s->names[s->at++]);
         return 1;
     }
     while (fgets(line, sizeof line, s->list) != NULL) {
@@ -69,6 +73,27 @@ static void rewind_names(png_state *s)
     s->at = 0;
     if (s->list != NULL)
         rewind(s->list);
+}
+
+/* Files of any size: the block made large enough for the next one (its
+ * header read first: a file that does not read says why here). */
+static rl_err grow_for(png_state *s, char *err, size_t errlen)
+{
+    int w, h;
+    size_t need;
+    void *block;
+    rl_err e;
+    if ((e = rl_png_size(s->path, &w, &h, err, errlen)) != RL_OK)
+        return e;
+    if ((need = rl_png_block_size(w, h)) <= s->cap)
+        return RL_OK;
+    if ((block = realloc(s->block, need)) == NULL) {
+        snprintf(err, errlen, "%.160s: out of memory for %dx%d", s->path, w, h);
+        return RL_ENOMEM;
+    }
+    s->block = block;
+    s->cap = need;
+    return RL_OK;
 }
 
 static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
@@ -97,9 +122,12 @@ static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
     }
     f->index = s->next++;
     f->slot = 0;
+    f->name = s->path;
     f->t_us = rl_clock_now_us();
-    e = rl_png_read_gray_into(s->path, s->block, s->cap, &f->img, err, sizeof err);
-    if (e == RL_OK && (f->img.width != s->width || f->img.height != s->height)) {
+    e = s->any_size ? grow_for(s, err, sizeof err) : RL_OK;
+    if (e == RL_OK)
+        e = rl_png_read_gray_into(s->path, s->block, s->cap, &f->img, err, sizeof err);
+    if (e == RL_OK && !s->any_size && (f->img.width != s->width || f->img.height != s->height)) {
         snprintf(err, sizeof err, "%.160s: frame is %dx%d, the camera's are %dx%d", s->path,
                  f->img.width, f->img.height, s->width, s->height);
         e = RL_EFORMAT;
@@ -152,12 +180,45 @@ static rl_err frame_size(png_state *s, const rl_cam_config *cc, char *err, size_
     return RL_ENOTFOUND;
 }
 
+/* The files a command line named, in its order. */
+static rl_err open_files(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen)
+{
+    png_state *s;
+    if (cc->n_files <= 0) {
+        snprintf(err, errlen, "no PNG files given");
+        return RL_ENOTFOUND;
+    }
+    if ((s = calloc(1, sizeof *s)) == NULL) {
+        snprintf(err, errlen, "out of memory");
+        return RL_ENOMEM;
+    }
+    c->state = s;
+    c->ops = &png_ops;
+    s->files = cc->files;
+    s->n = cc->n_files;
+    s->any_size = !(cc->width > 0 && cc->height > 0);
+    snprintf(s->dev, sizeof s->dev, "%d files", cc->n_files);
+    s->width = cc->width;
+    s->height = cc->height;
+    if (!s->any_size && (s->block = malloc(s->cap = rl_png_block_size(s->width, s->height))) == NULL) {
+        rl_cam_close(c);
+        snprintf(err, errlen, "out of memory for %dx%d frames", cc->width, cc->height);
+        return RL_ENOMEM;
+    }
+    s->loop = cc->loop;
+    s->period_us = cc->rate > 0 ? (uint64_t)(1e6 / cc->rate) : 0;
+    s->t0 = rl_clock_now_us();
+    return RL_OK;
+}
+
 rl_err rl_cam_open_png(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen)
 {
     struct stat st;
     png_state *s;
     rl_err e;
     const char *dev = cc->device, *slash;
+    if (cc->files != NULL)
+        return open_files(c, cc, err, errlen);
     if (dev == NULL || dev[0] == '\0' || stat(dev, &st) != 0) {
         snprintf(err, errlen, "%s: %s", dev && dev[0] ? dev : "(none)",
                  dev && dev[0] ? strerror(errno) : "no PNG directory or list given");

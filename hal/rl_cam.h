@@ -46,6 +46,9 @@ typedef rl_err (*rl_cam_open_fn)(struct rl_cam *c, const struct rl_cam_config *c
 typedef struct rl_cam_config {
     const char *backend; /* "png", "v4l2", "libcamera" */
     const char *device;  /* png: directory or list file; v4l2: /dev/videoN; libcamera: index */
+    const char *const *files; /* png: these files in this order instead of device (n_files of them;
+                                 kept, not copied); with width 0 each frame has its own size */
+    int n_files;
     int width, height;   /* wanted size (0: the device's) */
     double rate;         /* frames per second (png: playback rate; 0 = as fast as possible) */
     int loop;            /* png: start again at the end instead of RL_ENOTFOUND */
@@ -60,6 +63,7 @@ typedef struct {
     rl_image img;        /* grey view, valid until released */
     uint64_t t_us;       /* capture time, monotonic clock, microseconds */
     long index;          /* frame number since open */
+    const char *name;    /* the frame's file (png), or NULL */
     int slot;            /* backend's buffer, for release */
 } rl_cam_frame;
 

@@ -6,9 +6,9 @@
 #include "rl_annotate.h"
 #include "rl_cli.h"
 #include "rl_cmd.h"
-#include "rl_mapfile.h"
-#include "rl_png.h"
+#include "rl_pngrun.h"
 #include "rl_report.h"
+#include "rl_site.h"
 
 static const char *detect_help =
     "usage: ringloc detect [--family ring5] [--map MAP.yaml] [--annotate OUT.png]\n"
@@ -40,49 +40,39 @@ static const char *detect_help =
     "                    curve: blur and motion mix light, not grey levels\n";
 
 
-int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config *cfg,
-                        const char **family)
+typedef struct {
+    const char *annotate;     /* --annotate, or NULL */
+    int several;              /* more than one image: annotations named after each */
+    const rl_family *family;
+    long failures;
+} detect_sink;
+
+/* A frame's JSON line, and its annotated image when asked for. */
+static rl_err detect_put(void *ctx, const rl_run_report *rep)
 {
-    switch (c) {
-    case 'f': *family = arg; return 1;
-    case 'L':
-        if (strcmp(arg, "auto") == 0) cfg->local = RL_LOCAL_AUTO;
-        else if (strcmp(arg, "always") == 0) cfg->local = RL_LOCAL_ALWAYS;
-        else if (strcmp(arg, "never") == 0) cfg->local = RL_LOCAL_NEVER;
-        else return rl_cli_fail(cmd, RL_EXIT_USAGE, "--local: '%s' is not auto, always or never", arg), -1;
-        return 1;
-    case 'Y': /* --gamma */
-        if (strcmp(arg, "auto") == 0) {
-            cfg->gamma = 0;
-            return 1;
-        }
-        return rl_cli_double(cmd, "--gamma", arg, 1.0, 3.0, &cfg->gamma) ? 1 : -1;
-    case 's':
-        if (!rl_cli_double(cmd, "--min-score", arg, 0.01, 1.0, &cfg->min_score))
-            return -1;
-        if (!(cfg->min_score > 0 && cfg->min_score <= 1))
-            return rl_cli_fail(cmd, RL_EXIT_USAGE, "--min-score: %s is outside (0, 1]", arg), -1;
-        return 1;
+    detect_sink *d = (detect_sink *)ctx;
+    const char *image = rep->frame->name;
+    char name[1024], err[512];
+    rl_report_json_open(stdout, image, rep->res, d->family, rep->recog_us);
+    fputs("}\n", stdout);
+    fflush(stdout);
+    if (d->annotate == NULL)
+        return RL_OK;
+    rl_cli_annotate_name(name, sizeof name, d->annotate, image, d->several);
+    if (rl_annotate_png(name, &rep->frame->img, rep->res, d->family, image, err, sizeof err) != RL_OK) {
+        rl_cli_fail("detect", RL_EXIT_FAIL, "%s", err);
+        d->failures++;
     }
-    return 0;
+    return RL_OK;
 }
 
-
-void rl_cli_annotate_name(char *buf, size_t len, const char *out, const char *image, int several)
+/* --family against the map's. 0 after an error line. */
+static int family_agrees(const char *C, const char *family, const rl_recog_config *cfg, const rl_site *site)
 {
-    const char *base = strrchr(image, '/'), *dot, *odot = strrchr(out, '.');
-    int stem;
-    if (!several) {
-        snprintf(buf, len, "%s", out);
-        return;
-    }
-    base = base ? base + 1 : image;
-    dot = strrchr(base, '.');
-    stem = dot ? (int)(dot - base) : (int)strlen(base);
-    if (odot && !strchr(odot, '/'))
-        snprintf(buf, len, "%.*s-%.*s%s", (int)(odot - out), out, stem, base, odot);
-    else
-        snprintf(buf, len, "%s-%.*s.png", out, stem, base);
+    if (family && site->has_map && cfg->family.bits != site->map.family.bits)
+        return !rl_cli_fail(C, RL_EXIT_USAGE, "--family %s disagrees with %s (ring%d)", family, site->files.map,
+                            site->map.family.bits);
+    return 1;
 }
 
 int rl_cmd_detect(int argc, char **argv)
@@ -93,14 +83,18 @@ int rl_cmd_detect(int argc, char **argv)
         {"min-score", required_argument, 0, 's'}, {"gamma", required_argument, 0, 'Y'},
         {"help", no_argument, 0, 'h'},
         {0, 0, 0, 0}};
-    const char *C = "detect", *family = NULL, *map_path = NULL, *annotate = NULL;
+    const char *C = "detect", *family = NULL;
+    static rl_site site;
+    rl_site_files files;
     rl_recog_config cfg;
-    rl_heap_recog hr;
-    static rl_result res;
-    static rl_map map;
-    int c, i, failures = 0, ids[RL_MAX_IDS];
-    char err[512], name[1024];
+    rl_pngrun pr;
+    detect_sink d;
+    long failed;
+    int c;
+    char err[768];
 
+    memset(&d, 0, sizeof d);
+    rl_site_files_init(&files);
     rl_recog_defaults(&cfg);
     cfg.band_radius = 1; /* radii a survey can take its scale from */
     optind = 1;
@@ -111,8 +105,8 @@ int rl_cmd_detect(int argc, char **argv)
         if (r > 0)
             continue;
         switch (c) {
-        case 'm': map_path = optarg; break;
-        case 'a': annotate = optarg; break;
+        case 'm': files.map = optarg; break;
+        case 'a': d.annotate = optarg; break;
         case 'h': fputs(detect_help, stdout); return 0;
         default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
@@ -122,45 +116,18 @@ int rl_cmd_detect(int argc, char **argv)
     if (family && rl_family_parse(family, &cfg.family) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--family: '%s' is not a family (ring2 .. ring%d)",
                            family, RL_MAX_BITS);
-    if (map_path) {
-        if (rl_mapfile_load(map_path, &map, err, sizeof err) != RL_OK)
-            return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-        if (family && cfg.family.bits != map.family.bits)
-            return rl_cli_fail(C, RL_EXIT_USAGE, "--family %s disagrees with %s (ring%d)", family,
-                               map_path, map.family.bits);
-        if (map.count == 0)
-            return rl_cli_fail(C, RL_EXIT_FAIL, "%s: the map has no landmarks", map_path);
-        rl_recog_use_map(&cfg, &map, ids);
-    }
-    rl_heap_recog_init(&hr, &cfg);
-    for (i = optind; i < argc; i++) {
-        rl_image img;
-        double us = 0;
-        rl_err e;
-        if (rl_png_read_gray(argv[i], &img, err, sizeof err) != RL_OK) {
-            rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-            failures++;
-            continue;
-        }
-        e = rl_report_run(&hr, &img, &res, &us);
-        if (e != RL_OK) {
-            rl_cli_fail(C, RL_EXIT_FAIL, "%s: recognition failed: %s", argv[i], rl_strerror(e));
-            failures++;
-            rl_png_free(&img);
-            continue;
-        }
-        rl_report_json_open(stdout, argv[i], &res, &cfg.family, us);
-        fputs("}\n", stdout);
-        fflush(stdout);
-        if (annotate) {
-            rl_cli_annotate_name(name, sizeof name, annotate, argv[i], argc - optind > 1);
-            if (rl_annotate_png(name, &img, &res, &cfg.family, argv[i], err, sizeof err) != RL_OK) {
-                rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-                failures++;
-            }
-        }
-        rl_png_free(&img);
-    }
-    rl_heap_recog_free(&hr);
-    return failures ? RL_EXIT_FAIL : 0;
+    if (rl_site_load(&site, &files, err, sizeof err) != RL_OK)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    if (!family_agrees(C, family, &cfg, &site))
+        return RL_EXIT_USAGE;
+    if (rl_site_prepare(&site, &cfg, err, sizeof err) != RL_OK)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    d.several = argc - optind > 1;
+    d.family = &site.recog.cfg.family;
+    rl_pngrun_defaults(&pr, C);
+    pr.put = detect_put;
+    pr.ctx = &d;
+    failed = rl_pngrun_files(&pr, &site, argv + optind, argc - optind);
+    rl_site_free(&site);
+    return failed + d.failures ? RL_EXIT_FAIL : 0;
 }

@@ -1,12 +1,12 @@
 /* ringloc gen: print-ready landmarks. */
 #include <getopt.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 #include "rl_cli.h"
+#include "rl_cli_num.h"
 #include "rl_cmd.h"
-#include "rl_mapfile.h"
 #include "rl_print.h"
+#include "rl_site.h"
 
 static const char *gen_help =
     "usage: ringloc gen [--family ring5] (--id ID[,ID...] | --map MAP.yaml)\n"
@@ -40,7 +40,35 @@ static void per_id_name(char *buf, size_t len, const char *path, int id, int sev
         snprintf(buf, len, "%.*s-%d%s", (int)(dot - path), path, id, dot);
 }
 
-int rl_cmd_gen(int argc, char **argv)
+/* What the command line asks for. */
+typedef struct {
+    const char *family, *ids_arg, *map_path; /* --family, --id, --map */
+    const char *paper_name;                  /* NULL: the first the landmark fits */
+    const char *pdf, *svg, *png;             /* what to write (NULL: not that) */
+    double diameter;                         /* --diameter (default 0.21; a map's) */
+    int have_diameter;                       /* --diameter given */
+    double margin;                           /* --margin, mm */
+    int px;                                  /* --px (default 400) */
+} gen_opts;
+
+static void gen_opts_defaults(gen_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->diameter = 0.21;
+    o->margin = RL_PRINT_MARGIN_MM;
+    o->px = 400;
+}
+
+/* The landmarks to draw: their family, ids and (from a map) places. */
+typedef struct {
+    rl_family fam;
+    int ids[RL_MAX_MAP_LANDMARKS];
+    int n;
+    const rl_map_landmark *lm; /* NULL: no map */
+} gen_set;
+
+/* The command line into o: -1 to go on, or the exit code (0 after --help). */
+static int gen_args(const char *C, int argc, char **argv, gen_opts *o)
 {
     static const struct option opts[] = {
         {"family", required_argument, 0, 'f'}, {"id", required_argument, 0, 'i'},
@@ -50,130 +78,153 @@ int rl_cmd_gen(int argc, char **argv)
         {"px", required_argument, 0, 'x'},     {"margin", required_argument, 0, 'M'},
         {"help", no_argument, 0, 'h'},
         {0, 0, 0, 0}};
-    const char *C = "gen", *family = NULL, *ids_arg = NULL, *map_path = NULL;
-    const char *paper_name = NULL, *pdf = NULL, *svg = NULL, *png = NULL;
-    double diameter = 0.21, margin = RL_PRINT_MARGIN_MM;
-    int have_diameter = 0, px = 400, c, i, n = 0;
-    static int ids[RL_MAX_MAP_LANDMARKS];
-    static rl_map map;
-    rl_family fam;
-    const rl_paper *paper;
-    char err[512], name[1024];
-
+    int c, ok;
+    gen_opts_defaults(o);
     optind = 1;
     while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
+        ok = 1;
         switch (c) {
-        case 'f': family = optarg; break;
-        case 'i': ids_arg = optarg; break;
-        case 'm': map_path = optarg; break;
-        case 'd':
-            if (!rl_cli_double(C, "--diameter", optarg, 0.001, 5.0, &diameter))
-                return RL_EXIT_USAGE;
-            have_diameter = 1;
-            break;
-        case 'p': paper_name = optarg; break;
-        case 'M':
-            if (!rl_cli_double(C, "--margin", optarg, 0, 50, &margin))
-                return RL_EXIT_USAGE;
-            break;
-        case 'P': pdf = optarg; break;
-        case 'S': svg = optarg; break;
-        case 'N': png = optarg; break;
-        case 'x':
-            if (!rl_cli_int(C, "--px", optarg, 16, 8000, &px))
-                return RL_EXIT_USAGE;
-            break;
+        case 'f': o->family = optarg; break;
+        case 'i': o->ids_arg = optarg; break;
+        case 'm': o->map_path = optarg; break;
+        case 'd': ok = o->have_diameter = rl_cli_double(C, "--diameter", optarg, 0.001, 5.0, &o->diameter); break;
+        case 'p': o->paper_name = optarg; break;
+        case 'M': ok = rl_cli_double(C, "--margin", optarg, 0, 50, &o->margin); break;
+        case 'P': o->pdf = optarg; break;
+        case 'S': o->svg = optarg; break;
+        case 'N': o->png = optarg; break;
+        case 'x': ok = rl_cli_int(C, "--px", optarg, 16, 8000, &o->px); break;
         case 'h': fputs(gen_help, stdout); return 0;
         default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
+        if (!ok)
+            return RL_EXIT_USAGE;
     }
     if (optind < argc)
         return rl_cli_fail(C, RL_EXIT_USAGE, "unexpected argument '%s'", argv[optind]);
-    if ((ids_arg == NULL) == (map_path == NULL))
+    if ((o->ids_arg == NULL) == (o->map_path == NULL))
         return rl_cli_fail(C, RL_EXIT_USAGE, "give either --id or --map (see --help)");
-    if (!pdf && !svg && !png)
+    if (!o->pdf && !o->svg && !o->png)
         return rl_cli_fail(C, RL_EXIT_USAGE, "nothing to write: give --pdf, --svg or --png");
-    paper = paper_name ? rl_paper_find(paper_name) : NULL;
-    if (paper_name && paper == NULL)
-        return rl_cli_fail(C, RL_EXIT_USAGE, "--paper: unknown paper '%s' (%s)", paper_name,
-                           rl_paper_names());
+    return -1;
+}
 
-    if (map_path != NULL) {
-        if (rl_mapfile_load(map_path, &map, err, sizeof err) != RL_OK)
-            return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-        fam = map.family;
-        if (family != NULL && strcmp(family, "") != 0) {
-            rl_family f2;
-            if (rl_family_parse(family, &f2) != RL_OK || f2.bits != fam.bits)
-                return rl_cli_fail(C, RL_EXIT_USAGE, "--family %s disagrees with %s (ring%d)",
-                                   family, map_path, fam.bits);
-        }
-        if (!have_diameter)
-            diameter = map.diameter;
-        n = map.count;
-        for (i = 0; i < n; i++)
-            ids[i] = map.lm[i].id;
-        if (n == 0)
-            return rl_cli_fail(C, RL_EXIT_FAIL, "%s: the map has no landmarks", map_path);
-    } else {
-        const char *s = ids_arg;
-        rl_err e = rl_family_parse(family ? family : "ring5", &fam);
-        if (e != RL_OK)
-            return rl_cli_fail(C, RL_EXIT_USAGE, "--family: '%s' is not a family (ring2 .. ring%d)",
-                               family, RL_MAX_BITS);
-        while (*s) {
-            char *end;
-            long v = strtol(s, &end, 10);
-            if (end == s || (*end != ',' && *end != '\0') || (*end == ',' && end[1] == '\0'))
-                return rl_cli_fail(C, RL_EXIT_USAGE, "--id: '%s' is not a list of ids", ids_arg);
-            if (!rl_family_valid(&fam, (int)v) || v != (int)v)
-                return rl_cli_fail(C, RL_EXIT_USAGE, "--id: %ld is not in ring%d (valid ids 1 .. %d)",
-                                   v, fam.bits, rl_family_count(&fam));
-            if (n == RL_MAX_MAP_LANDMARKS)
-                return rl_cli_fail(C, RL_EXIT_USAGE, "--id: more than %d ids", RL_MAX_MAP_LANDMARKS);
-            ids[n++] = (int)v;
-            s = *end ? end + 1 : end;
-        }
-        if (n == 0)
-            return rl_cli_fail(C, RL_EXIT_USAGE, "--id: no ids given");
+/* --map: every landmark of the map, its family and (unless --diameter)
+ * its diameter. */
+static int set_from_map(const char *C, gen_opts *o, gen_set *g)
+{
+    static rl_site site;
+    rl_site_files files;
+    char err[768];
+    int i;
+    rl_site_files_init(&files);
+    files.map = o->map_path;
+    if (rl_site_load(&site, &files, err, sizeof err) != RL_OK)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    g->fam = site.map.family;
+    if (o->family != NULL && strcmp(o->family, "") != 0) {
+        rl_family f2;
+        if (rl_family_parse(o->family, &f2) != RL_OK || f2.bits != g->fam.bits)
+            return rl_cli_fail(C, RL_EXIT_USAGE, "--family %s disagrees with %s (ring%d)", o->family,
+                               o->map_path, g->fam.bits);
     }
-    if ((pdf || svg) && paper == NULL && (paper = rl_paper_fitting(diameter, margin)) == NULL)
+    if (!o->have_diameter)
+        o->diameter = site.map.diameter;
+    g->n = site.map.count;
+    for (i = 0; i < g->n; i++)
+        g->ids[i] = site.map.lm[i].id;
+    g->lm = site.map.lm;
+    return 0;
+}
+
+/* --id LIST: ids of --family (default ring5). */
+static int set_from_ids(const char *C, const gen_opts *o, gen_set *g)
+{
+    int i;
+    if (rl_family_parse(o->family ? o->family : "ring5", &g->fam) != RL_OK)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--family: '%s' is not a family (ring2 .. ring%d)", o->family,
+                           RL_MAX_BITS);
+    if (o->ids_arg[0] == '\0')
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--id: no ids given");
+    if (!rl_cli_ints(C, "--id", o->ids_arg, "a list of ids", g->ids, RL_MAX_MAP_LANDMARKS, &g->n))
+        return RL_EXIT_USAGE;
+    for (i = 0; i < g->n; i++)
+        if (!rl_family_valid(&g->fam, g->ids[i]))
+            return rl_cli_fail(C, RL_EXIT_USAGE, "--id: %d is not in ring%d (valid ids 1 .. %d)", g->ids[i],
+                               g->fam.bits, rl_family_count(&g->fam));
+    g->lm = NULL;
+    return 0;
+}
+
+/* The paper for --pdf and --svg: --paper, or the first the landmark fits
+ * within the margins; 0, or the exit code when it does not fit. */
+static int gen_paper(const char *C, const gen_opts *o, const rl_paper **paper)
+{
+    double d = o->diameter, m = o->margin;
+    const rl_paper *p = o->paper_name ? rl_paper_find(o->paper_name) : NULL, *fits = rl_paper_fitting(d, m);
+    *paper = p;
+    if (!o->pdf && !o->svg)
+        return 0;
+    if (p == NULL && fits == NULL)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--diameter: %.3f m fits no paper (%s) within %g mm "
-                           "margins", diameter, rl_paper_names(), margin);
-    if ((pdf || svg) && paper == NULL)
-        paper = rl_paper_find("a4");
-    if ((pdf || svg) && diameter < RL_PRINT_MIN_DIAMETER)
+                           "margins", d, rl_paper_names(), m);
+    if (p == NULL)
+        *paper = p = fits;
+    if (d < RL_PRINT_MIN_DIAMETER)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--diameter: %.3f m is below the smallest printable, "
-                           "%.3f m", diameter, RL_PRINT_MIN_DIAMETER);
-    if ((pdf || svg) && diameter > rl_print_max_diameter(paper, margin) + 1e-9)
+                           "%.3f m", d, RL_PRINT_MIN_DIAMETER);
+    if (d > rl_print_max_diameter(p, m) + 1e-9)
         return rl_cli_fail(C, RL_EXIT_USAGE,
                            "--diameter: %.3f m does not fit %s paper within %g mm margins: the "
-                           "largest that does is %.3f m%s%s", diameter, paper->name, margin,
-                           rl_print_max_diameter(paper, margin),
-                           rl_paper_fitting(diameter, margin) ? "; or --paper " : "",
-                           rl_paper_fitting(diameter, margin) ? rl_paper_fitting(diameter, margin)->name : "");
-    if ((pdf || svg) && 1.25 * diameter > paper->w_mm / 1000.0)
+                           "largest that does is %.3f m%s%s", d, p->name, m, rl_print_max_diameter(p, m),
+                           fits ? "; or --paper " : "", fits ? fits->name : "");
+    if (1.25 * d > p->w_mm / 1000.0)
         fprintf(stderr, "ringloc gen: note: the white quiet zone (1.25 x diameter = %.0f mm) is wider "
                         "than %s paper; hang it on a light ceiling or leave white around it\n",
-                1250.0 * diameter, paper->name);
+                1250.0 * d, p->name);
+    return 0;
+}
 
-    if (pdf && rl_print_pdf(pdf, paper, &fam, ids, map_path ? map.lm : NULL, n, diameter, err,
-                            sizeof err) != RL_OK)
+/* The PDF, the SVGs and the PNGs asked for. */
+static int gen_write(const char *C, const gen_opts *o, const gen_set *g, const rl_paper *paper)
+{
+    char err[512], name[1024];
+    int i;
+    if (o->pdf && rl_print_pdf(o->pdf, paper, &g->fam, g->ids, g->lm, g->n, o->diameter, err, sizeof err) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-    for (i = 0; svg && i < n; i++) {
-        per_id_name(name, sizeof name, svg, ids[i], n > 1);
-        if (rl_print_svg(name, paper, &fam, ids[i], map_path ? &map.lm[i] : NULL, diameter, err,
+    for (i = 0; o->svg && i < g->n; i++) {
+        per_id_name(name, sizeof name, o->svg, g->ids[i], g->n > 1);
+        if (rl_print_svg(name, paper, &g->fam, g->ids[i], g->lm ? &g->lm[i] : NULL, o->diameter, err,
                          sizeof err) != RL_OK)
             return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
     }
-    for (i = 0; png && i < n; i++) {
-        per_id_name(name, sizeof name, png, ids[i], n > 1);
-        if (rl_print_png(name, &fam, ids[i], px, err, sizeof err) != RL_OK)
+    for (i = 0; o->png && i < g->n; i++) {
+        per_id_name(name, sizeof name, o->png, g->ids[i], g->n > 1);
+        if (rl_print_png(name, &g->fam, g->ids[i], o->px, err, sizeof err) != RL_OK)
             return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
     }
-    fprintf(stderr, "ringloc gen: %d landmark%s of ring%d, %.0f mm%s%s%s%s%s%s%s%s\n", n,
-            n == 1 ? "" : "s", fam.bits, diameter * 1000, pdf || svg ? " on " : "",
-            pdf || svg ? paper->name : "", pdf ? " -> " : "", pdf ? pdf : "",
-            svg ? " -> " : "", svg ? svg : "", png ? " -> " : "", png ? png : "");
+    return 0;
+}
+
+int rl_cmd_gen(int argc, char **argv)
+{
+    const char *C = "gen";
+    static gen_opts o;
+    static gen_set g;
+    const rl_paper *paper;
+    int r;
+
+    if ((r = gen_args(C, argc, argv, &o)) >= 0)
+        return r;
+    if (o.paper_name && rl_paper_find(o.paper_name) == NULL)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--paper: unknown paper '%s' (%s)", o.paper_name,
+                           rl_paper_names());
+    if ((r = o.map_path ? set_from_map(C, &o, &g) : set_from_ids(C, &o, &g)) != 0 ||
+        (r = gen_paper(C, &o, &paper)) != 0 || (r = gen_write(C, &o, &g, paper)) != 0)
+        return r;
+    fprintf(stderr, "ringloc gen: %d landmark%s of ring%d, %.0f mm%s%s%s%s%s%s%s%s\n", g.n,
+            g.n == 1 ? "" : "s", g.fam.bits, o.diameter * 1000, o.pdf || o.svg ? " on " : "",
+            o.pdf || o.svg ? paper->name : "", o.pdf ? " -> " : "", o.pdf ? o.pdf : "",
+            o.svg ? " -> " : "", o.svg ? o.svg : "", o.png ? " -> " : "", o.png ? o.png : "");
     return 0;
 }

@@ -4,15 +4,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include "rl_annotate.h"
-#include "rl_calibfile.h"
 #include "rl_cli.h"
 #include "rl_cmd.h"
-#include "rl_heap_place.h"
-#include "rl_mapfile.h"
-#include "rl_offsetsfile.h"
-#include "rl_png.h"
+#include "rl_pngrun.h"
 #include "rl_report.h"
-#include "rl_robotfile.h"
+#include "rl_site.h"
 
 static const char *locate_help =
     "usage: ringloc locate --camera CAM.yaml --map MAP.yaml --robot ROBOT.yaml\n"
@@ -50,6 +46,74 @@ static const char *locate_help =
     "                   places or drives)\n";
 
 
+typedef struct {
+    const char *annotate;     /* --annotate, or NULL */
+    int several;              /* more than one image */
+    const rl_site *site;
+    long failures;
+} locate_sink;
+
+static const char *pose_error(const rl_run_report *rep)
+{
+    if (rep->pose_err == RL_ETOOFEW)
+        return rep->pose->n_dropped ? "too few consistent landmarks (some disagree with the map)"
+                                    : "fewer than 2 landmarks identified";
+    if (rep->pose_err == RL_EAMBIGUOUS)
+        return "ambiguous: the landmarks fit more than one place of the map";
+    return rl_strerror(rep->pose_err);
+}
+
+/* The detect line's fields, then place and pose. */
+static void print_pose(const rl_run_report *rep, const rl_site *site)
+{
+    const rl_pose *pose = rep->pose;
+    const rl_place_found *found = rep->place;
+    int k;
+    rl_report_json_open(stdout, rep->frame->name, rep->res, &site->recog.cfg.family, rep->recog_us);
+    if (site->place.pl != NULL)
+        printf(", \"place\": {\"status\": \"%s\", \"verified\": %d, \"runner_up\": %d, \"candidates\": %d}",
+               rl_place_status_name(found->status), found->verified, found->runner_up, found->candidates);
+    if (rep->pose_err != RL_OK) {
+        printf(", \"pose\": null, \"pose_error\": \"%s\"}\n", pose_error(rep));
+        return;
+    }
+    printf(", \"pose\": {\"x\": %.4f, \"y\": %.4f, \"yaw\": %.4f, \"landmarks_used\": %d, "
+           "\"residual\": %.4f, \"sigma\": {\"x\": %.4f, \"y\": %.4f, \"yaw\": %.5f}, "
+           "\"tilt\": {\"roll\": %.5f, \"pitch\": %.5f, \"solved\": %s}, \"dropped\": [",
+           pose->x, pose->y, pose->yaw, pose->used, pose->residual, pose->sigma_x, pose->sigma_y,
+           pose->sigma_yaw, pose->roll, pose->pitch, pose->tilt_solved ? "true" : "false");
+    for (k = 0; k < pose->n_dropped; k++)
+        printf("%s%d", k ? ", " : "", pose->dropped[k]);
+    printf("]}}\n");
+}
+
+static void annotate_pose(locate_sink *l, const rl_run_report *rep)
+{
+    const char *image = rep->frame->name;
+    char caption[256], name[1024], err[512];
+    if (rep->pose_err == RL_OK)
+        snprintf(caption, sizeof caption, "%s  x %.3f  y %.3f  yaw %.1f deg  (%d landmarks)", image,
+                 rep->pose->x, rep->pose->y, rep->pose->yaw * 180.0 / 3.14159265358979, rep->pose->used);
+    else
+        snprintf(caption, sizeof caption, "%s  no pose", image);
+    rl_cli_annotate_name(name, sizeof name, l->annotate, image, l->several);
+    if (rl_annotate_png(name, &rep->frame->img, rep->res, &l->site->recog.cfg.family, caption, err,
+                        sizeof err) != RL_OK) {
+        rl_cli_fail("locate", RL_EXIT_FAIL, "%s", err);
+        l->failures++;
+    }
+}
+
+static rl_err locate_put(void *ctx, const rl_run_report *rep)
+{
+    locate_sink *l = (locate_sink *)ctx;
+    print_pose(rep, l->site);
+    fflush(stdout);
+    if (l->annotate)
+        annotate_pose(l, rep);
+    return RL_OK;
+}
+
 int rl_cmd_locate(int argc, char **argv)
 {
     static const struct option opts[] = {
@@ -60,25 +124,22 @@ int rl_cmd_locate(int argc, char **argv)
         {"size", required_argument, 0, 'z'},
         {"interval", required_argument, 0, 'i'}, {"alone", no_argument, 0, 'A'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
-    int size_w = 0, size_h = 0;
-    const char *C = "locate", *cam_path = NULL, *map_path = NULL, *robot_path = NULL,
-               *off_path = NULL, *annotate = NULL, *family = NULL;
+    const char *C = "locate", *family = NULL;
+    static rl_site site;
+    rl_site_files files;
     rl_recog_config cfg;
-    rl_heap_recog hr;
-    static rl_result res;
-    static rl_map map;
-    rl_calib cam;
-    rl_mount mount;
-    rl_offsets offsets;
-    int c, i, failures = 0, ids[RL_MAX_IDS], alone = 0;
-    double interval = 0.1;
-    rl_place_prior prior;
-    rl_heap_place hp;
-    rl_place_found found;
-    rl_err e0;
-    char err[512], name[1024];
+    rl_pngrun pr;
+    locate_sink l;
+    long failed;
+    int c;
+    char err[768];
 
+    memset(&l, 0, sizeof l);
+    rl_site_files_init(&files);
+    files.size_from = "--size";
     rl_recog_defaults(&cfg);
+    rl_pngrun_defaults(&pr, C);
+    pr.run.frame_interval = 0.1;
     optind = 1;
     while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
         int r = rl_cli_recog_option(C, c, optarg, &cfg, &family);
@@ -87,114 +148,35 @@ int rl_cmd_locate(int argc, char **argv)
         if (r > 0)
             continue;
         switch (c) {
-        case 'c': cam_path = optarg; break;
-        case 'm': map_path = optarg; break;
-        case 'r': robot_path = optarg; break;
-        case 'o': off_path = optarg; break;
-        case 'a': annotate = optarg; break;
+        case 'c': files.calibration = optarg; break;
+        case 'm': files.map = optarg; break;
+        case 'r': files.robot = optarg; break;
+        case 'o': files.offsets = optarg; break;
+        case 'a': l.annotate = optarg; break;
         case 'z':
-            if (!rl_cli_size(C, "--size", optarg, RL_MAX_IMAGE_DIM, &size_w, &size_h))
+            if (!rl_cli_size(C, "--size", optarg, RL_MAX_IMAGE_DIM, &files.width, &files.height))
                 return RL_EXIT_USAGE;
             break;
         case 'i':
-            if (!rl_cli_double(C, "--interval", optarg, 0.001, 3600, &interval))
+            if (!rl_cli_double(C, "--interval", optarg, 0.001, 3600, &pr.run.frame_interval))
                 return RL_EXIT_USAGE;
             break;
-        case 'A': alone = 1; break;
+        case 'A': pr.run.alone = 1; break;
         case 'h': fputs(locate_help, stdout); return 0;
         default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
     }
-    if (!cam_path || !map_path || !robot_path)
+    if (!files.calibration || !files.map || !files.robot)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--camera, --map and --robot are required (see --help)");
     if (optind >= argc)
         return rl_cli_fail(C, RL_EXIT_USAGE, "no images given (see --help)");
-    if (rl_calibfile_load_sized(cam_path, size_w, size_h, &cam, err, sizeof err) != RL_OK ||
-        rl_mapfile_load(map_path, &map, err, sizeof err) != RL_OK ||
-        rl_robotfile_load(robot_path, &mount, err, sizeof err) != RL_OK ||
-        (off_path && rl_offsetsfile_load(off_path, &offsets, err, sizeof err) != RL_OK))
+    if (rl_site_load(&site, &files, err, sizeof err) != RL_OK || rl_site_prepare(&site, &cfg, err, sizeof err) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-    if (map.count == 0)
-        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: the map has no landmarks", map_path);
-    if (!(map.ceiling_height > mount.z))
-        return rl_cli_fail(C, RL_EXIT_FAIL,
-                           "%s: camera_mount.z %.3f m is not below the ceiling (%s: ceiling_height %.3f m)",
-                           robot_path, mount.z, map_path, map.ceiling_height);
-    if ((e0 = rl_heap_place_init(&hp, &map, NULL)) != RL_OK)
-        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: the place index: %s", map_path, rl_strerror(e0));
-    rl_recog_use_map(&cfg, &map, ids);
-    rl_heap_recog_init(&hr, &cfg);
-    memset(&prior, 0, sizeof prior);
-    for (i = optind; i < argc; i++, prior.age += interval) {
-        rl_image img;
-        double us = 0;
-        rl_pose pose;
-        rl_err e;
-        int k;
-        if (rl_png_read_gray(argv[i], &img, err, sizeof err) != RL_OK) {
-            rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-            failures++;
-            continue;
-        }
-        if (img.width != cam.width || img.height != cam.height) {
-            rl_cli_fail(C, RL_EXIT_FAIL, "%s: image is %dx%d but %s (image_width, image_height) is for %dx%d",
-                        argv[i], img.width, img.height, cam_path, cam.width, cam.height);
-            failures++;
-            rl_png_free(&img);
-            continue;
-        }
-        if ((e = rl_report_run(&hr, &img, &res, &us)) != RL_OK) {
-            rl_cli_fail(C, RL_EXIT_FAIL, "%s: recognition failed: %s", argv[i], rl_strerror(e));
-            failures++;
-            rl_png_free(&img);
-            continue;
-        }
-        e = rl_heap_place_solve(&hp, &cam, &map, &mount, res.landmarks, res.n_landmarks, off_path ? &offsets : NULL,
-                                alone ? NULL : &prior, &pose, &found);
-        if (e == RL_OK) { /* the next frame's prior */
-            prior.valid = 1;
-            prior.x = pose.x;
-            prior.y = pose.y;
-            prior.yaw = pose.yaw;
-            prior.age = 0;
-        }
-        rl_report_json_open(stdout, argv[i], &res, &cfg.family, us);
-        if (hp.pl != NULL)
-            printf(", \"place\": {\"status\": \"%s\", \"verified\": %d, \"runner_up\": %d, \"candidates\": %d}",
-                   rl_place_status_name(found.status), found.verified, found.runner_up, found.candidates);
-        if (e == RL_OK) {
-            printf(", \"pose\": {\"x\": %.4f, \"y\": %.4f, \"yaw\": %.4f, \"landmarks_used\": %d, "
-                   "\"residual\": %.4f, \"sigma\": {\"x\": %.4f, \"y\": %.4f, \"yaw\": %.5f}, "
-                   "\"tilt\": {\"roll\": %.5f, \"pitch\": %.5f, \"solved\": %s}, \"dropped\": [",
-                   pose.x, pose.y, pose.yaw, pose.used, pose.residual, pose.sigma_x, pose.sigma_y,
-                   pose.sigma_yaw, pose.roll, pose.pitch, pose.tilt_solved ? "true" : "false");
-            for (k = 0; k < pose.n_dropped; k++)
-                printf("%s%d", k ? ", " : "", pose.dropped[k]);
-            printf("]}}\n");
-        } else {
-            printf(", \"pose\": null, \"pose_error\": \"%s\"}\n",
-                   e == RL_ETOOFEW ? (pose.n_dropped ? "too few consistent landmarks (some disagree with the map)"
-                                                     : "fewer than 2 landmarks identified")
-                   : e == RL_EAMBIGUOUS ? "ambiguous: the landmarks fit more than one place of the map"
-                                        : rl_strerror(e));
-        }
-        fflush(stdout);
-        if (annotate) {
-            char caption[256];
-            if (e == RL_OK)
-                snprintf(caption, sizeof caption, "%s  x %.3f  y %.3f  yaw %.1f deg  (%d landmarks)",
-                         argv[i], pose.x, pose.y, pose.yaw * 180.0 / 3.14159265358979, pose.used);
-            else
-                snprintf(caption, sizeof caption, "%s  no pose", argv[i]);
-            rl_cli_annotate_name(name, sizeof name, annotate, argv[i], argc - optind > 1);
-            if (rl_annotate_png(name, &img, &res, &cfg.family, caption, err, sizeof err) != RL_OK) {
-                rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-                failures++;
-            }
-        }
-        rl_png_free(&img);
-    }
-    rl_heap_recog_free(&hr);
-    rl_heap_place_free(&hp);
-    return failures ? RL_EXIT_FAIL : 0;
+    l.site = &site;
+    l.several = argc - optind > 1;
+    pr.put = locate_put;
+    pr.ctx = &l;
+    failed = rl_pngrun_files(&pr, &site, argv + optind, argc - optind);
+    rl_site_free(&site);
+    return failed + l.failures ? RL_EXIT_FAIL : 0;
 }

@@ -96,6 +96,101 @@ static void print_msg(const rl_msg *m)
     fflush(stdout);
 }
 
+/* Where the frames come from. */
+typedef struct {
+    int fd;
+    const char *name;  /* the file, device or --pty link */
+    int is_pty;        /* our own pseudo-terminal: poll, and end when its writer leaves */
+    int follow;        /* at the end, wait for more (a serial line, --follow) */
+} monitor_src;
+
+/* --pty LINK: a pseudo-terminal, LINK pointing at it. */
+static int open_pty(const char *C, const char *link_path, monitor_src *in)
+{
+    const char *name;
+    int fd = posix_openpt(O_RDWR | O_NOCTTY);
+    if (fd < 0 || grantpt(fd) != 0 || unlockpt(fd) != 0 || (name = ptsname(fd)) == NULL)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "cannot create a pseudo-terminal: %s", strerror(errno));
+    unlink(link_path);
+    if (symlink(name, link_path) != 0)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: %s", link_path, strerror(errno));
+    fprintf(stderr, "ringloc monitor: listening on %s (-> %s)\n", link_path, name);
+    in->fd = fd;
+    in->name = link_path;
+    in->is_pty = 1;
+    return 0;
+}
+
+/* A file, or a serial line (raw, read until stopped). */
+static int open_file(const char *C, const char *path, monitor_src *in)
+{
+    struct stat st;
+    in->name = path;
+    in->fd = open(path, O_RDONLY | O_NOCTTY);
+    if (in->fd < 0)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: %s", path, strerror(errno));
+    if (fstat(in->fd, &st) == 0 && S_ISCHR(st.st_mode)) {
+        struct termios t;
+        /* a serial line or a pty: read until stopped; another character
+         * device (/dev/null) ends like a file */
+        if (tcgetattr(in->fd, &t) == 0) {
+            cfmakeraw(&t);
+            t.c_cc[VMIN] = 1;
+            t.c_cc[VTIME] = 0;
+            tcsetattr(in->fd, TCSANOW, &t);
+            in->follow = 1;
+        }
+    }
+    return 0;
+}
+
+/* Read and decode until the end, a signal or an error; each frame
+ * printed as a JSON line and counted in *frames. 0, or the exit code. */
+static int monitor_loop(const char *C, const monitor_src *in, rl_decoder *d, unsigned long *frames)
+{
+    uint8_t buf[4096];
+    rl_msg m;
+    int seen = 0;
+    while (!stop_flag) {
+        ssize_t n, i;
+        if (in->is_pty) {
+            struct pollfd p;
+            p.fd = in->fd;
+            p.events = POLLIN;
+            /* nothing yet, or a signal (the loop's test sees it): no blocking read */
+            if (poll(&p, 1, 200) <= 0)
+                continue;
+        }
+        n = read(in->fd, buf, sizeof buf);
+        if (n > 0) {
+            seen = 1;
+            for (i = 0; i < n; i++)
+                if (rl_decoder_push(d, buf[i], &m)) {
+                    print_msg(&m);
+                    (*frames)++;
+                }
+            continue;
+        }
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (in->is_pty && n < 0 && errno == EIO) {
+            /* no writer on the other side: before it came, wait; after, done */
+            if (seen)
+                break;
+            usleep(50000);
+            continue;
+        }
+        if (n == 0 && in->follow) {
+            usleep(100000);
+            continue;
+        }
+        if (n < 0)
+            return rl_cli_fail(C, RL_EXIT_FAIL, "%s: %s", in->name, strerror(errno));
+        break; /* end of file */
+    }
+    return 0;
+}
+
 int rl_cmd_monitor(int argc, char **argv)
 {
     static const struct option opts[] = {{"pty", required_argument, 0, 'p'},
@@ -103,14 +198,12 @@ int rl_cmd_monitor(int argc, char **argv)
                                          {"follow", no_argument, 0, 'f'},
                                          {"help", no_argument, 0, 'h'},
                                          {0, 0, 0, 0}};
-    const char *C = "monitor", *link_path = NULL, *src;
-    int c, fd, follow = 0, baud = 115200, is_pty = 0, seen = 0;
+    const char *C = "monitor", *link_path = NULL;
+    int c, r, follow = 0, baud = 115200;
     unsigned long frames = 0;
+    monitor_src in;
     rl_decoder d;
-    rl_msg m;
     struct sigaction sa;
-    struct stat st;
-    uint8_t buf[4096];
 
     optind = 1;
     while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
@@ -134,77 +227,15 @@ int rl_cmd_monitor(int argc, char **argv)
     sa.sa_handler = on_signal;
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
-    if (link_path != NULL) {
-        const char *name;
-        fd = posix_openpt(O_RDWR | O_NOCTTY);
-        if (fd < 0 || grantpt(fd) != 0 || unlockpt(fd) != 0 || (name = ptsname(fd)) == NULL)
-            return rl_cli_fail(C, RL_EXIT_FAIL, "cannot create a pseudo-terminal: %s", strerror(errno));
-        unlink(link_path);
-        if (symlink(name, link_path) != 0)
-            return rl_cli_fail(C, RL_EXIT_FAIL, "%s: %s", link_path, strerror(errno));
-        fprintf(stderr, "ringloc monitor: listening on %s (-> %s)\n", link_path, name);
-        src = link_path;
-        is_pty = 1;
-    } else {
-        src = argv[optind];
-        fd = open(src, O_RDONLY | O_NOCTTY);
-        if (fd < 0)
-            return rl_cli_fail(C, RL_EXIT_FAIL, "%s: %s", src, strerror(errno));
-        if (fstat(fd, &st) == 0 && S_ISCHR(st.st_mode)) {
-            struct termios t;
-            /* a serial line or a pty: read until stopped; another character
-             * device (/dev/null) ends like a file */
-            if (tcgetattr(fd, &t) == 0) {
-                cfmakeraw(&t);
-                t.c_cc[VMIN] = 1;
-                t.c_cc[VTIME] = 0;
-                tcsetattr(fd, TCSANOW, &t);
-                follow = 1;
-            }
-        }
-    }
+    memset(&in, 0, sizeof in);
+    in.follow = follow;
+    if ((r = link_path ? open_pty(C, link_path, &in) : open_file(C, argv[optind], &in)) != 0)
+        return r;
     rl_decoder_init(&d);
-    while (!stop_flag) {
-        ssize_t n, i;
-        if (is_pty) {
-            struct pollfd p;
-            p.fd = fd;
-            p.events = POLLIN;
-            /* nothing yet, or a signal (the loop's test sees it): no blocking read */
-            if (poll(&p, 1, 200) <= 0)
-                continue;
-        }
-        n = read(fd, buf, sizeof buf);
-        if (n > 0) {
-            seen = 1;
-            for (i = 0; i < n; i++)
-                if (rl_decoder_push(&d, buf[i], &m)) {
-                    print_msg(&m);
-                    frames++;
-                }
-            continue;
-        }
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (is_pty && n < 0 && errno == EIO) {
-            /* no writer on the other side: before it came, wait; after, done */
-            if (seen)
-                break;
-            usleep(50000);
-            continue;
-        }
-        if (n == 0 && follow) {
-            usleep(100000);
-            continue;
-        }
-        if (n < 0) {
-            rl_cli_fail(C, RL_EXIT_FAIL, "%s: %s", src, strerror(errno));
-            close(fd);
-            return RL_EXIT_FAIL;
-        }
-        break; /* end of file */
-    }
-    close(fd);
+    r = monitor_loop(C, &in, &d, &frames);
+    close(in.fd);
+    if (r != 0)
+        return r;
     if (link_path)
         unlink(link_path);
     fprintf(stderr, "ringloc monitor: %lu frames decoded, %lu rejected\n", frames, d.bad);

@@ -9,15 +9,14 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "rl_annotate.h"
-#include "rl_calibfile.h"
 #include "rl_cli.h"
 #include "rl_cmd.h"
 #include "rl_composite.h"
-#include "rl_mapfile.h"
 #include "rl_outfile.h"
 #include "rl_png.h"
 #include "rl_print.h"
 #include "rl_report.h"
+#include "rl_site.h"
 
 
 static const char *help =
@@ -300,23 +299,6 @@ static void print_json(const tally *t, const check *k, FILE *f)
     fprintf(f, "]}\n");
 }
 
-/* The landmark radius in the image: given, or from the camera's focal
- * length, the printed diameter and the distance to the ceiling. */
-static int radius_px(const char *C, const char *camera, double diameter, double distance, double *r)
-{
-    rl_calib cam;
-    char err[512];
-    if (*r > 0)
-        return 1;
-    if (camera == NULL) {
-        rl_calib_defaults(&cam, 640, 480, 70.0 * M_PI / 180.0);
-    } else if (rl_calibfile_load(camera, &cam, err, sizeof err) != RL_OK) {
-        return !rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-    }
-    *r = 0.5 * (cam.fx + cam.fy) * 0.5 * diameter / distance;
-    return 1;
-}
-
 /* The progress line (on a terminal's one line) ended before anything
  * else is written to stderr. */
 static void end_progress(int *open)
@@ -386,7 +368,30 @@ static int run_check(check *k, char **photos, int n, int json)
     return 0;
 }
 
-int rl_cmd_sitecheck(int argc, char **argv)
+/* What the command line asks for. */
+typedef struct {
+    const char *family, *map, *camera; /* --family (default ring5), --map, --camera */
+    double diameter, distance;         /* printed diameter, camera to ceiling (0.21, 1.87 m) */
+    double radius_px;                  /* --radius-px (0: from the camera) */
+    const char *sheet_name;            /* --sheet (NULL: the paper gen prints on) */
+    const char *out;                   /* --out DIR */
+    int rounds, seed, json;
+    rl_recog_config rc;                /* --local, --gamma (rl_recog_defaults) */
+} sitecheck_opts;
+
+static void sitecheck_opts_defaults(sitecheck_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->family = "ring5";
+    o->diameter = 0.21;
+    o->distance = 1.87;
+    o->rounds = 3;
+    o->seed = 1;
+    rl_recog_defaults(&o->rc);
+}
+
+/* The command line into o: -1 to go on, or the exit code (0 after --help). */
+static int sitecheck_args(const char *C, int argc, char **argv, sitecheck_opts *o)
 {
     static const struct option opts[] = {
         {"family", required_argument, 0, 'f'}, {"map", required_argument, 0, 'm'},
@@ -397,92 +402,136 @@ int rl_cmd_sitecheck(int argc, char **argv)
         {"json", no_argument, 0, 'j'}, {"sheet", required_argument, 0, 'P'},
         {"gamma", required_argument, 0, 'Y'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
-    const char *C = "site-check", *family = "ring5", *mapfile = NULL, *camera = NULL;
-    static rl_map map;
-    static int ids[RL_MAX_IDS];
-    double diameter = 0.21, distance = 1.87, r = 0;
-    int c, json = 0, n, i, seed = 1, rc;
-    char **photos, err[512];
-    const char *sheet_name = NULL;
+    int c, ok;
+    sitecheck_opts_defaults(o);
+    optind = 1;
+    while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
+        ok = 1;
+        switch (c) {
+        case 'f': o->family = optarg; break;
+        case 'm': o->map = optarg; break;
+        case 'c': o->camera = optarg; break;
+        case 'o': o->out = optarg; break;
+        case 'j': o->json = 1; break;
+        case 'P': o->sheet_name = optarg; break;
+        case 'r': ok = rl_cli_double(C, "--radius-px", optarg, 4, 1000, &o->radius_px); break;
+        case 'D': ok = rl_cli_double(C, "--diameter", optarg, 0.001, 5, &o->diameter); break;
+        case 'Z': ok = rl_cli_double(C, "--distance", optarg, 0.05, 100, &o->distance); break;
+        case 'n': ok = rl_cli_int(C, "--rounds", optarg, 1, 100, &o->rounds); break;
+        case 'S': ok = rl_cli_int(C, "--seed", optarg, 0, 2147483647L, &o->seed); break;
+        case 'Y':
+        case 'L': ok = rl_cli_recog_option(C, c, optarg, &o->rc, &o->family) >= 0; break;
+        case 'h': fputs(help, stdout); return 0;
+        default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
+        }
+        if (!ok)
+            return RL_EXIT_USAGE;
+    }
+    if (optind >= argc)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "give a folder of photos or PNG files (see --help)");
+    return -1;
+}
+
+/* The ids to place and recognize: the map's, or every id of the family;
+ * the camera's focal length when the radius is not given. 0, or the exit
+ * code. */
+static int sitecheck_site(const char *C, sitecheck_opts *o, check *k, int *ids)
+{
+    static rl_site site;
+    rl_site_files files;
+    rl_calib cam;
+    char err[768];
+    int i;
+    rl_site_files_init(&files);
+    files.map = o->map;
+    files.calibration = o->radius_px > 0 ? NULL : o->camera;
+    if (rl_site_load(&site, &files, err, sizeof err) != RL_OK)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    if (site.has_map) {
+        k->fam = site.map.family;
+        for (i = 0; i < site.map.count; i++)
+            ids[i] = site.map.lm[i].id;
+        k->n_ids = site.map.count;
+        rl_recog_use_map(&o->rc, &site.map, ids);
+    } else {
+        if (rl_family_parse(o->family, &k->fam) != RL_OK)
+            return rl_cli_fail(C, RL_EXIT_USAGE, "--family: '%s' is not ring2 .. ring8", o->family);
+        o->rc.family = k->fam;
+        k->n_ids = rl_family_count(&k->fam);
+        for (i = 0; i < k->n_ids; i++)
+            ids[i] = i + 1;
+    }
+    k->ids = ids;
+    /* the landmark radius in the image: given, or from the camera's focal
+     * length, the printed diameter and the distance to the ceiling */
+    if (o->radius_px > 0)
+        return 0;
+    if (site.has_calib)
+        cam = site.calib;
+    else
+        rl_calib_defaults(&cam, 640, 480, 70.0 * M_PI / 180.0);
+    o->radius_px = 0.5 * (cam.fx + cam.fy) * 0.5 * o->diameter / o->distance;
+    return 0;
+}
+
+/* The sheets the landmarks are placed on: --sheet, or the paper gen
+ * prints the diameter on. 0, or the exit code. */
+static int sitecheck_sheet(const char *C, const sitecheck_opts *o, rl_paper *sheet)
+{
+    if (o->sheet_name && !rl_paper_parse(o->sheet_name, sheet))
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--sheet: '%s' is not %s or WxH in mm", o->sheet_name,
+                           rl_paper_names());
+    if (!o->sheet_name && rl_paper_fitting(o->diameter, RL_PRINT_MARGIN_MM) == NULL)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--diameter %.3f m fits no paper: give --sheet", o->diameter);
+    if (!o->sheet_name)
+        *sheet = *rl_paper_fitting(o->diameter, RL_PRINT_MARGIN_MM);
+    if (fmin(sheet->w_mm, sheet->h_mm) < 1000 * o->diameter)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--sheet: %.0fx%.0f mm is narrower than the landmark (%.0f mm)",
+                           sheet->w_mm, sheet->h_mm, 1000 * o->diameter);
+    return 0;
+}
+
+/* How landmarks are laid into the photos. */
+static void sitecheck_composite(const sitecheck_opts *o, const rl_paper *sheet, rl_composite_config *cc)
+{
+    rl_composite_defaults(cc);
+    cc->radius_px = o->radius_px;
+    cc->gamma = o->rc.gamma > 0 ? o->rc.gamma : 2.2; /* the photos' camera: sRGB unless told */
+    cc->sheet_w = sheet->w_mm / 500.0 / o->diameter; /* in radii */
+    cc->sheet_h = sheet->h_mm / 500.0 / o->diameter;
+    cc->seed = (uint64_t)o->seed;
+}
+
+int rl_cmd_sitecheck(int argc, char **argv)
+{
+    const char *C = "site-check";
+    static sitecheck_opts o;
+    static int ids[RL_MAX_MAP_LANDMARKS]; /* a map's, repeats and all */
+    int n, i, rc;
+    char **photos;
     rl_paper sheet;
-    rl_recog_config cfg;
     rl_heap_recog hr;
     check k;
     memset(&k, 0, sizeof k);
     k.C = C;
-    k.rounds = 3;
-    rl_recog_defaults(&cfg);
-    optind = 1;
-    while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
-        switch (c) {
-        case 'f': family = optarg; break;
-        case 'm': mapfile = optarg; break;
-        case 'c': camera = optarg; break;
-        case 'o': k.out = optarg; break;
-        case 'j': json = 1; break;
-        case 'P': sheet_name = optarg; break;
-        case 'r': if (!rl_cli_double(C, "--radius-px", optarg, 4, 1000, &r)) return RL_EXIT_USAGE; break;
-        case 'D': if (!rl_cli_double(C, "--diameter", optarg, 0.001, 5, &diameter)) return RL_EXIT_USAGE; break;
-        case 'Z': if (!rl_cli_double(C, "--distance", optarg, 0.05, 100, &distance)) return RL_EXIT_USAGE; break;
-        case 'n': if (!rl_cli_int(C, "--rounds", optarg, 1, 100, &k.rounds)) return RL_EXIT_USAGE; break;
-        case 'S': if (!rl_cli_int(C, "--seed", optarg, 0, 2147483647L, &seed)) return RL_EXIT_USAGE; break;
-        case 'Y':
-        case 'L':
-            if (rl_cli_recog_option(C, c, optarg, &cfg, &family) < 0)
-                return RL_EXIT_USAGE;
-            break;
-        case 'h': fputs(help, stdout); return 0;
-        default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
-        }
-    }
-    if (optind >= argc)
-        return rl_cli_fail(C, RL_EXIT_USAGE, "give a folder of photos or PNG files (see --help)");
-    if (mapfile) {
-        if (rl_mapfile_load(mapfile, &map, err, sizeof err) != RL_OK)
-            return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-        k.fam = map.family;
-        for (i = 0; i < map.count; i++)
-            ids[i] = map.lm[i].id;
-        k.n_ids = map.count;
-        rl_recog_use_map(&cfg, &map, ids);
-    } else {
-        if (rl_family_parse(family, &k.fam) != RL_OK)
-            return rl_cli_fail(C, RL_EXIT_USAGE, "--family: '%s' is not ring2 .. ring8", family);
-        cfg.family = k.fam;
-        k.n_ids = rl_family_count(&k.fam);
-        for (i = 0; i < k.n_ids; i++)
-            ids[i] = i + 1;
-    }
-    k.ids = ids;
-    if (!radius_px(C, camera, diameter, distance, &r))
-        return RL_EXIT_FAIL;
+    if ((rc = sitecheck_args(C, argc, argv, &o)) >= 0 || (rc = sitecheck_site(C, &o, &k, ids)) != 0)
+        return rc;
+    k.out = o.out;
+    k.rounds = o.rounds;
     if (k.out && mkdir(k.out, 0777) != 0 && access_dir(k.out) != 0)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s: cannot create the folder", k.out);
-    if (sheet_name && !rl_paper_parse(sheet_name, &sheet))
-        return rl_cli_fail(C, RL_EXIT_USAGE, "--sheet: '%s' is not %s or WxH in mm", sheet_name,
-                           rl_paper_names());
-    if (!sheet_name && rl_paper_fitting(diameter, RL_PRINT_MARGIN_MM) == NULL)
-        return rl_cli_fail(C, RL_EXIT_USAGE, "--diameter %.3f m fits no paper: give --sheet", diameter);
-    if (!sheet_name)
-        sheet = *rl_paper_fitting(diameter, RL_PRINT_MARGIN_MM);
-    if (fmin(sheet.w_mm, sheet.h_mm) < 1000 * diameter)
-        return rl_cli_fail(C, RL_EXIT_USAGE, "--sheet: %.0fx%.0f mm is narrower than the landmark (%.0f mm)",
-                           sheet.w_mm, sheet.h_mm, 1000 * diameter);
-    rl_composite_defaults(&k.cc);
-    k.cc.radius_px = r;
-    k.cc.gamma = cfg.gamma > 0 ? cfg.gamma : 2.2; /* the photos' camera: sRGB unless told */
-    k.cc.sheet_w = sheet.w_mm / 500.0 / diameter; /* in radii */
-    k.cc.sheet_h = sheet.h_mm / 500.0 / diameter;
-    k.cc.seed = (uint64_t)seed;
+    if ((rc = sitecheck_sheet(C, &o, &sheet)) != 0)
+        return rc;
+    sitecheck_composite(&o, &sheet, &k.cc);
     if ((n = list_photos(C, argc - optind, argv + optind, &photos)) < 0)
         return RL_EXIT_FAIL;
     if (n == 0) {
         free(photos);
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s: no PNG photos", argv[optind]);
     }
-    rl_heap_recog_init(&hr, &cfg);
+    rl_heap_recog_init(&hr, &o.rc);
     k.hr = &hr;
-    rc = run_check(&k, photos, n, json);
+    rc = run_check(&k, photos, n, o.json);
     rl_heap_recog_free(&hr);
     for (i = 0; i < n; i++)
         free(photos[i]);

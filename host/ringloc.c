@@ -30,8 +30,8 @@ static const command commands[] = {
     {"site-check", rl_cmd_sitecheck, "false landmarks and recognition rates on photos of your ceiling"},
     {"detect", rl_cmd_detect, "recognize landmarks in PNG images (JSON lines)"},
     {"locate", rl_cmd_locate, "the robot's pose from PNG images (JSON lines)"},
-    {"calibrate-offsets", rl_cmd_calibrate, "fit the paper's pixel-to-offset maps from a known pose"},
-    {"calibrate-mount", rl_cmd_mount, "the camera's fixed tilt on the robot, from recorded frames"},
+    {"calibrate-offsets", rl_cmd_calibrate_offsets, "fit the paper's pixel-to-offset maps from a known pose"},
+    {"calibrate-mount", rl_cmd_calibrate_mount, "the camera's fixed tilt on the robot, from recorded frames"},
     {"survey", rl_cmd_survey, "build the map from recorded frames (no tape measure)"},
 };
 

@@ -13,20 +13,13 @@ int rl_cmd_gen(int argc, char **argv);
 int rl_cmd_plan(int argc, char **argv);
 int rl_cmd_detect(int argc, char **argv);
 int rl_cmd_locate(int argc, char **argv);
-int rl_cmd_calibrate(int argc, char **argv);
-int rl_cmd_mount(int argc, char **argv);
+int rl_cmd_calibrate_offsets(int argc, char **argv);
+int rl_cmd_calibrate_mount(int argc, char **argv);
 int rl_cmd_run(int argc, char **argv);
 int rl_cmd_monitor(int argc, char **argv);
 int rl_cmd_sitecheck(int argc, char **argv);
 int rl_cmd_survey(int argc, char **argv);
 
-/* The recognition options detect, locate and site-check share (--family
- * 'f', --local 'L', --min-score 's'): 1 if c was one of them (applied),
- * -1 after a usage error line, 0 if c is another option. */
-int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config *cfg,
-                        const char **family);
 
-/* "out.png" for one image; "out-<stem of image>.png" for several. */
-void rl_cli_annotate_name(char *buf, size_t len, const char *out, const char *image, int several);
 
 #endif

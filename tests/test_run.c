@@ -7,9 +7,10 @@
 #include "rl_test.h"
 #include <math.h>
 #include "fixture_eval.h"
-#include "rl_calibfile.h"
+#include "rl_packet_sink.h"
 #include "rl_png.h"
 #include "rl_run.h"
+#include "rl_site.h"
 
 /* ---- counting allocations ---- */
 void *__real_malloc(size_t n);
@@ -31,14 +32,16 @@ typedef struct {
     rl_image img, small;
 } mock_cam;
 
-/* The double is a camera backend (rl_cam_config.open): the loop opens,
- * grabs, releases and closes it through rl_cam like any other. */
-static rl_err cam_grab(rl_cam *cm, int timeout_ms, rl_cam_frame *f)
+/* The double is a frame source: the loop opens, grabs, releases and
+ * closes it through rl_run_io like the camera. */
+static char cam_error_text[256];
+static rl_err cam_grab(void *ctx, int timeout_ms, rl_cam_frame *f)
 {
-    mock_cam *c = cm->state;
+    mock_cam *c = ctx;
     int what = c->script[c->pos];
     (void)timeout_ms;
     assert_true(c->is_open);
+    cam_error_text[0] = '\0';
     if (what == END)
         return RL_ENOTFOUND;
     c->pos++;
@@ -47,21 +50,22 @@ static rl_err cam_grab(rl_cam *cm, int timeout_ms, rl_cam_frame *f)
     if (what == GRAB_TIMEOUT)
         return RL_ETIMEOUT;
     if (what == DAMAGED) {
-        snprintf(cm->error, sizeof cm->error, "/dev/video9: frame %d is flagged damaged by the driver; dropped", c->pos);
+        snprintf(cam_error_text, sizeof cam_error_text, "/dev/video9: frame %d is flagged damaged by the driver; dropped", c->pos);
         return RL_EFORMAT;
     }
     f->img = what == WRONG_SIZE ? c->small : c->img;
     f->t_us = 1000000u + (uint64_t)c->pos * 100000u;
     f->index = c->pos;
     f->slot = 0;
+    f->name = NULL;
     return RL_OK;
 }
-static void cam_release(rl_cam *cm, rl_cam_frame *f) { (void)cm; (void)f; }
-static void cam_close(rl_cam *cm) { mock_cam *c = cm->state; c->closes++; c->is_open = 0; }
-static const rl_cam_ops mock_ops = {cam_grab, cam_release, cam_close};
-static rl_err cam_open(rl_cam *cm, const rl_cam_config *cc, char *err, size_t errlen)
+static void cam_release(void *ctx, rl_cam_frame *f) { (void)ctx; (void)f; }
+static void cam_close(void *ctx) { mock_cam *c = ctx; c->closes++; c->is_open = 0; }
+static const char *cam_error(void *ctx) { (void)ctx; return cam_error_text; }
+static rl_err cam_open(void *ctx, char *err, size_t errlen)
 {
-    mock_cam *c = cc->open_arg;
+    mock_cam *c = ctx;
     if (c->script[c->pos] == FAIL_OPEN) {
         c->pos++;
         snprintf(err, errlen, "/dev/video9: no such device");
@@ -69,8 +73,6 @@ static rl_err cam_open(rl_cam *cm, const rl_cam_config *cc, char *err, size_t er
     }
     c->opens++;
     c->is_open = 1;
-    cm->ops = &mock_ops;
-    cm->state = c;
     return RL_OK;
 }
 
@@ -104,12 +106,8 @@ static void log_line(void *ctx, const char *l) { (void)ctx; (void)l; log_lines++
 
 /* ---- the scene: a golden fixture and a map made from its truth ---- */
 static truth tr;
-static rl_calib calib;
-static rl_map map;
-static rl_mount mount;
-static rl_recog *rec;
+static rl_site site;
 static rl_result res;
-static void *mem;
 static mock_cam cam;
 static mock_out out;
 static rl_runner runner;
@@ -120,31 +118,33 @@ static int setup(void **state)
     char path[1024], err[512];
     const char *src = getenv("RL_SOURCE_DIR");
     rl_recog_config cfg;
-    size_t need;
+    rl_site_files files;
     int i;
     (void)state;
     snprintf(path, sizeof path, "%s/tests/fixtures/clean_000.yaml", src);
     assert_int_equal(truth_load(path, &tr), 0);
     snprintf(path, sizeof path, "%s/tests/fixtures/camera.yaml", src);
-    if (rl_calibfile_load(path, &calib, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    rl_site_files_init(&files);
+    files.calibration = path;
+    if (rl_site_load(&site, &files, err, sizeof err) != RL_OK) fail_msg("%s", err);
     snprintf(path, sizeof path, "%s/tests/fixtures/clean_000.png", src);
     if (rl_png_read_gray(path, &cam.img, err, sizeof err) != RL_OK) fail_msg("%s", err);
     cam.small = rl_image_view(64, 48, 64, small_px);
-    memset(&map, 0, sizeof map);
-    map.family.bits = 5;
-    map.diameter = 0.21;
-    map.ceiling_height = 2.75;
+    /* the map from the fixture's truth, the camera 1.87 m below the ceiling */
+    site.map.family.bits = 5;
+    site.map.diameter = 0.21;
+    site.map.ceiling_height = 2.75;
     for (i = 0; i < tr.n; i++) {
-        map.lm[i].id = tr.lm[i].id;
-        map.lm[i].x = tr.lm[i].x;
-        map.lm[i].y = tr.lm[i].y;
+        site.map.lm[i].id = tr.lm[i].id;
+        site.map.lm[i].x = tr.lm[i].x;
+        site.map.lm[i].y = tr.lm[i].y;
     }
-    map.count = tr.n;
-    rl_mount_defaults(&mount, 2.75 - 1.87);
+    site.map.count = tr.n;
+    site.has_map = 1;
+    rl_mount_defaults(&site.mount, 2.75 - 1.87);
+    site.has_mount = 1;
     rl_recog_defaults(&cfg);
-    need = rl_recog_workspace_size(calib.width, calib.height, &cfg);
-    mem = malloc(need);
-    assert_int_equal(rl_recog_init(&rec, &cfg, calib.width, calib.height, mem, need), RL_OK);
+    assert_int_equal(rl_site_prepare(&site, &cfg, err, sizeof err), RL_OK);
     return 0;
 }
 
@@ -152,26 +152,35 @@ static int teardown(void **state)
 {
     (void)state;
     rl_png_free(&cam.img);
-    free(mem);
+    rl_site_free(&site);
     return 0;
 }
 
-static void start(const int *script)
+static rl_packet_sink packets;
+
+static void start_on(const int *script, rl_site *on)
 {
-    static rl_cam_config cc;
     rl_run_io io;
+    rl_run_config cfg;
+    rl_packet_line line;
     memset(&io, 0, sizeof io);
-    rl_cam_defaults(&cc);
-    cc.open = cam_open;
-    cc.open_arg = &cam;
-    io.cam = &cc;
-    io.out.open = out_open; io.out.write = out_write; io.out.close = out_close; io.out.ctx = &out;
+    io.source.open = cam_open; io.source.grab = cam_grab; io.source.release = cam_release;
+    io.source.close = cam_close; io.source.error = cam_error; io.source.ctx = &cam;
+    memset(&line, 0, sizeof line);
+    line.open = out_open; line.write = out_write; line.close = out_close; line.ctx = &out;
+    io.sink = rl_packet_sink_make(&packets, &line);
     io.clock.now_us = now_us; io.clock.sleep_us = sleep_us; io.log = log_line;
     cam.script = script;
     cam.pos = cam.opens = cam.closes = cam.is_open = 0;
     memset(&out, 0, sizeof out);
     rl_decoder_init(&out.d);
-    rl_run_init(&runner, &io, rec, &calib, &map, &mount, &res);
+    rl_run_defaults(&cfg);
+    rl_run_init(&runner, &cfg, &io, on, &res);
+}
+
+static void start(const int *script)
+{
+    start_on(script, &site);
 }
 
 static void run_to_end(void)
@@ -231,7 +240,7 @@ static void test_camera_fails_then_comes_back(void **state)
     assert_true(camera_errors >= 3);   /* two failed opens and a failed grab */
     assert_int_equal(cam.opens, 2);    /* opened, failed, reopened */
     /* the backoff grew while opening failed, and a good open reset it */
-    assert_int_equal(runner.cam_backoff, runner.backoff_min_us);
+    assert_int_equal(runner.src_backoff, runner.cfg.backoff_min_us);
 }
 
 static void test_timeouts_reopen_the_camera(void **state)
@@ -252,7 +261,7 @@ static void test_timeouts_reopen_the_camera(void **state)
     assert_int_equal(timeouts, 4);
     assert_int_equal(poses, 3);
     assert_int_equal(cam.opens, 2); /* three timeouts in a row: reopened once */
-    assert_int_equal(runner.camera_timeouts, 4);
+    assert_int_equal(rl_run_counts_of(&runner)->camera_timeouts, 4);
 }
 
 static void test_serial_write_fails_and_recovers(void **state)
@@ -265,9 +274,9 @@ static void test_serial_write_fails_and_recovers(void **state)
     assert_int_equal(rl_run_step(&runner), RL_OK); /* frame 0 sent */
     out.fail_writes = 1;
     assert_int_equal(rl_run_step(&runner), RL_OK); /* frame 1 lost: line reopened later */
-    fake_now += 10 * runner.backoff_max_us;
+    fake_now += 10 * runner.cfg.backoff_max_us;
     run_to_end();
-    assert_int_equal(runner.serial_errors, 1);
+    assert_int_equal(rl_run_counts_of(&runner)->sink_errors, 1);
     assert_int_equal(out.opens, 2);
     assert_int_equal(out.n, 4);
     assert_int_equal(out.msgs[0].seq, 0);
@@ -303,8 +312,8 @@ static void test_damaged_frame_is_skipped(void **state)
     assert_int_equal(out.msgs[1].reason, RL_STATUS_CAMERA_ERROR);
     assert_int_equal(out.msgs[2].reason, RL_STATUS_CAMERA_ERROR);
     assert_pose_right(&out.msgs[3]);
-    assert_int_equal(runner.bad_frames, 2);
-    assert_int_equal(runner.camera_errors, 0);
+    assert_int_equal(rl_run_counts_of(&runner)->bad_frames, 2);
+    assert_int_equal(rl_run_counts_of(&runner)->camera_errors, 0);
     assert_int_equal(cam.opens, 1);
 }
 
@@ -321,7 +330,7 @@ static void test_logs_are_rate_limited(void **state)
     start(script);
     run_to_end();
     /* 40 failed opens within a few simulated seconds: a handful of lines */
-    assert_true(runner.camera_errors == 40);
+    assert_true(rl_run_counts_of(&runner)->camera_errors == 40);
     assert_true(log_lines < 40 / 2);
 }
 
@@ -333,25 +342,25 @@ static void test_logs_are_rate_limited(void **state)
 static void test_repeated_ids_ambiguous_then_tracked(void **state)
 {
     static const int script[] = {OK, OK, OK, END};
-    static rl_map twice;
-    static unsigned char place_mem[1 << 16];
-    rl_place_config pc;
-    rl_place *pl;
+    static rl_site twice;
+    rl_recog_config cfg;
+    rl_pose last;
+    char err[256];
     long before;
     int i;
     (void)state;
-    twice = map;
-    for (i = 0; i < map.count; i++) {
-        twice.lm[map.count + i] = map.lm[i];
-        twice.lm[map.count + i].x += 10.0;
+    twice = site;
+    memset(&twice.recog, 0, sizeof twice.recog);
+    memset(&twice.place, 0, sizeof twice.place);
+    for (i = 0; i < site.map.count; i++) {
+        twice.map.lm[site.map.count + i] = site.map.lm[i];
+        twice.map.lm[site.map.count + i].x += 10.0;
     }
-    twice.count = 2 * map.count;
-    rl_place_defaults(&pc);
-    assert_true(rl_place_size(&twice, &pc) <= sizeof place_mem);
-    assert_int_equal(rl_place_init(&pl, &twice, &pc, place_mem, sizeof place_mem), RL_OK);
-    start(script);
-    runner.map = &twice;
-    runner.place = pl;
+    twice.map.count = 2 * site.map.count;
+    rl_recog_defaults(&cfg);
+    assert_int_equal(rl_site_prepare(&twice, &cfg, err, sizeof err), RL_OK);
+    assert_non_null(twice.place.pl); /* ids repeat: places */
+    start_on(script, &twice);
     assert_int_equal(rl_run_step(&runner), RL_OK);
     before = allocations;
     run_to_end();
@@ -361,20 +370,19 @@ static void test_repeated_ids_ambiguous_then_tracked(void **state)
         assert_int_equal(out.msgs[i].type, RL_PACKET_STATUS);
         assert_int_equal(out.msgs[i].reason, RL_STATUS_AMBIGUOUS);
     }
-    assert_int_equal(runner.ambiguous, 3);
-    start(script);
-    runner.map = &twice;
-    runner.place = pl;
-    runner.have_pose = 1;
-    runner.last_pose.x = tr.robot_x + 0.05;
-    runner.last_pose.y = tr.robot_y - 0.05;
-    runner.last_pose.yaw = tr.robot_yaw + 0.05;
-    runner.last_pose_us = 1000000u; /* the first frame is at 1.1 s */
+    assert_int_equal(rl_run_counts_of(&runner)->ambiguous, 3);
+    start_on(script, &twice);
+    memset(&last, 0, sizeof last);
+    last.x = tr.robot_x + 0.05;
+    last.y = tr.robot_y - 0.05;
+    last.yaw = tr.robot_yaw + 0.05;
+    rl_run_start_at(&runner, &last, 1000000u); /* the first frame is at 1.1 s */
     run_to_end();
     assert_int_equal(out.n, 3);
     for (i = 0; i < 3; i++)
         assert_pose_right(&out.msgs[i]);
-    assert_int_equal(runner.tracked, 3);
+    assert_int_equal(rl_run_counts_of(&runner)->tracked, 3);
+    rl_site_free(&twice);
 }
 
 int main(void)

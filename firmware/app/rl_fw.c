@@ -6,13 +6,8 @@
 #include <string.h>
 #include "rl_fw.h"
 
-#include "rl_calibfile.h"
 #include "rl_cli.h"
-#include "rl_heap_recog.h"
-#include "rl_heap_place.h"
-#include "rl_mapfile.h"
-#include "rl_offsetsfile.h"
-#include "rl_robotfile.h"
+#include "rl_packet_sink.h"
 #include "rl_record.h"
 #include "rl_run.h"
 #include "rl_runcfg.h"
@@ -88,47 +83,49 @@ static void log_line(void *ctx, const char *line)
 /* Everything the firmware reads at start-up. */
 typedef struct {
     rl_runcfg cfg;
-    rl_calib calib;
-    rl_map map;
-    rl_mount mount;
-    rl_offsets offsets;
+    rl_site site;
     rl_cam_config cam;
 } fw_setup;
+
+/* The camera the configuration names, at the calibration's size (a
+ * configured one was checked to be it): a device streams it, a PNG frame
+ * of another size is skipped. */
+static void camera_config(const rl_runcfg *cfg, const rl_calib *calib, rl_cam_config *cc)
+{
+    rl_cam_defaults(cc);
+    cc->backend = cfg->cam_backend;
+    cc->device = cfg->cam_device;
+    cc->width = calib ? calib->width : cfg->cam_width;
+    cc->height = calib ? calib->height : cfg->cam_height;
+    cc->rate = cfg->cam_rate;
+    cc->loop = cfg->cam_loop;
+    cc->exposure_us = (int)(cfg->cam_exposure_us + 0.5);
+    cc->gain = cfg->cam_gain;
+}
 
 /* Load and check every file; one error line and 0 on failure. */
 static int load_setup(const char *C, const char *config, fw_setup *s)
 {
-    char err[768];
+    char err[768], size_from[600];
     rl_runcfg *cfg = &s->cfg;
-    if (rl_runcfg_load(config, cfg, err, sizeof err) != RL_OK ||
-        rl_calibfile_load_sized(cfg->calibration, cfg->cam_width, cfg->cam_height, &s->calib, err, sizeof err) != RL_OK ||
-        rl_mapfile_load(cfg->map, &s->map, err, sizeof err) != RL_OK ||
-        rl_robotfile_load(cfg->robot, &s->mount, err, sizeof err) != RL_OK ||
-        (cfg->offsets[0] && rl_offsetsfile_load(cfg->offsets, &s->offsets, err, sizeof err) != RL_OK))
+    rl_site_files files;
+    if (rl_runcfg_load(config, cfg, err, sizeof err) != RL_OK)
         return !rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
     if (!rl_serial_baud_ok(cfg->baud))
         return !rl_cli_fail(C, RL_EXIT_FAIL, "%s:%d: serial.baud: %d is not a supported baud rate "
                             "(9600 .. 921600)", config, cfg->baud_line, cfg->baud);
-    if ((cfg->cam_width && cfg->cam_width != s->calib.width) ||
-        (cfg->cam_height && cfg->cam_height != s->calib.height))
-        return !rl_cli_fail(C, RL_EXIT_FAIL, "%s: camera is %dx%d but %s is for %dx%d", config,
-                            cfg->cam_width, cfg->cam_height, cfg->calibration, s->calib.width,
-                            s->calib.height);
-    if (s->map.count == 0 || !(s->map.ceiling_height > s->mount.z))
-        return !rl_cli_fail(C, RL_EXIT_FAIL, "%s: %s", cfg->map,
-                            s->map.count == 0 ? "the map has no landmarks"
-                                              : "the camera is not below the ceiling");
-    rl_cam_defaults(&s->cam);
-    s->cam.backend = cfg->cam_backend;
-    s->cam.device = cfg->cam_device;
-    /* the calibration's size (a configured one was checked to be it above):
-     * a device streams it, a PNG frame of another size is skipped */
-    s->cam.width = s->calib.width;
-    s->cam.height = s->calib.height;
-    s->cam.rate = cfg->cam_rate;
-    s->cam.loop = cfg->cam_loop;
-    s->cam.exposure_us = (int)(cfg->cam_exposure_us + 0.5);
-    s->cam.gain = cfg->cam_gain;
+    snprintf(size_from, sizeof size_from, "%s: camera.width, camera.height", config);
+    rl_site_files_init(&files);
+    files.calibration = cfg->calibration;
+    files.map = cfg->map;
+    files.robot = cfg->robot;
+    files.offsets = cfg->offsets;
+    files.width = cfg->cam_width;
+    files.height = cfg->cam_height;
+    files.size_from = size_from;
+    if (rl_site_load(&s->site, &files, err, sizeof err) != RL_OK)
+        return !rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    camera_config(cfg, &s->site.calib, &s->cam);
     if (strcmp(cfg->cam_backend, "png") == 0) {
         /* files do not appear later, as a device may: a missing or empty
          * sequence is a configuration error */
@@ -140,35 +137,81 @@ static int load_setup(const char *C, const char *config, fw_setup *s)
     return 1;
 }
 
-/* The recognizer for the map's landmarks at the calibration's size. */
-static int make_recognizer(const char *C, const fw_setup *s, rl_heap_recog *hr)
+/* The recognizer for the map's landmarks at the calibration's size, and
+ * the place index of a map that repeats ids. */
+static int prepare_site(const char *C, fw_setup *s)
 {
     rl_recog_config rc;
-    rl_err e;
+    char err[768];
     rl_recog_defaults(&rc);
     rc.local = s->cfg.local;
     rc.min_score = s->cfg.min_score;
     rc.local_min_score = s->cfg.local_min_score;
     rc.gamma = s->cfg.gamma;
-    rl_heap_recog_init_map(hr, &rc, &s->map);
-    if ((e = rl_heap_recog_prepare(hr, s->calib.width, s->calib.height)) != RL_OK)
-        return !rl_cli_fail(C, RL_EXIT_FAIL, "cannot prepare recognition for %dx%d: %s",
-                            s->calib.width, s->calib.height, rl_strerror(e));
+    if (rl_site_prepare(&s->site, &rc, err, sizeof err) != RL_OK)
+        return !rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
     return 1;
 }
 
-static void wire_io(const fw_setup *s, out_ctx *octx, const char *prefix, rl_run_io *io)
+typedef struct {
+    rl_record rec;
+    const char *prefix;
+    int on;
+    rl_run_sink line; /* the serial line's packets */
+} fw_sink;
+
+/* Each recognized frame offered to the recorder, then the report sent as
+ * a packet; when recording stopped (a full disk, the folder gone,
+ * max_mb) the log says so then, once. */
+static rl_err fw_put(void *ctx, const rl_run_report *rep)
 {
+    fw_sink *fs = (fw_sink *)ctx;
+    const char *news;
+    if (fs->on && rep->frame != NULL) {
+        rl_record_offer(&fs->rec, &rep->frame->img, rep->frame->index, rep->frame->t_us);
+        if ((news = rl_record_news(&fs->rec)) != NULL)
+            log_line((void *)fs->prefix, news);
+    }
+    return fs->line.put(fs->line.ctx, rep);
+}
+static rl_err fw_open(void *ctx, char *err, size_t errlen)
+{
+    fw_sink *fs = (fw_sink *)ctx;
+    return fs->line.open(fs->line.ctx, err, errlen);
+}
+static void fw_close(void *ctx)
+{
+    fw_sink *fs = (fw_sink *)ctx;
+    fs->line.close(fs->line.ctx);
+}
+static const char *fw_why(void *ctx)
+{
+    fw_sink *fs = (fw_sink *)ctx;
+    return fs->line.why(fs->line.ctx);
+}
+
+static void wire_io(const fw_setup *s, out_ctx *octx, rl_packet_sink *ps, fw_sink *fs, rl_run_camera *cam,
+                    const char *prefix, rl_run_io *io)
+{
+    rl_packet_line line;
     octx->path = s->cfg.serial;
     octx->prefix = prefix;
     octx->baud = s->cfg.baud;
+    line.open = out_open;
+    line.write = out_write;
+    line.close = out_close;
+    line.why = out_why;
+    line.ctx = octx;
+    fs->line = rl_packet_sink_make(ps, &line);
+    fs->prefix = prefix;
     memset(io, 0, sizeof *io);
-    io->cam = &s->cam;
-    io->out.open = out_open;
-    io->out.write = out_write;
-    io->out.close = out_close;
-    io->out.why = out_why;
-    io->out.ctx = octx;
+    io->source = rl_run_camera_source(cam, &s->cam);
+    io->sink = fs->line;
+    io->sink.open = fw_open;
+    io->sink.put = fw_put;
+    io->sink.close = fw_close;
+    io->sink.why = fw_why;
+    io->sink.ctx = fs;
     io->clock = rl_clock_system();
     io->log = log_line;
     io->log_ctx = (void *)prefix;
@@ -190,7 +233,7 @@ static void run_loop(rl_runner *runner, long max_frames)
     while (!stop_flag) {
         if (rl_run_step(runner) == RL_ENOTFOUND)
             break;
-        if (max_frames > 0 && runner->frames >= max_frames)
+        if (max_frames > 0 && rl_run_counts_of(runner)->frames >= max_frames)
             break;
     }
     rl_run_close(runner);
@@ -248,32 +291,63 @@ static int probe_camera(const char *C, const char *config)
     char err[768];
     if (rl_runcfg_load(config, &cfg, err, sizeof err) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-    rl_cam_defaults(&cc);
-    cc.backend = cfg.cam_backend;
-    cc.device = cfg.cam_device;
-    cc.width = cfg.cam_width;
-    cc.height = cfg.cam_height;
-    cc.rate = cfg.cam_rate;
-    cc.loop = cfg.cam_loop;
+    camera_config(&cfg, NULL, &cc);
     if (rl_cam_probe(&cc, print_line, NULL, err, sizeof err) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "camera: %s", err);
     return 0;
 }
 
-typedef struct {
-    rl_record rec;
-    const char *prefix;
-} record_ctx;
-
-/* Each frame offered to the recorder; when recording stopped (a full
- * disk, the folder gone, max_mb) the log says so then, once. */
-static void record_frame(void *ctx, const rl_cam_frame *f)
+/* --record DIR, or record.dir: recording starts; 0 and one error line
+ * when it cannot. */
+static int start_recording(const char *C, fw_setup *s, const char *record, fw_sink *fs)
 {
-    record_ctx *rc = (record_ctx *)ctx;
+    rl_record_config rcc;
+    char err[512];
+    if (record != NULL)
+        snprintf(s->cfg.record_dir, sizeof s->cfg.record_dir, "%s", record);
+    if (!s->cfg.record_dir[0])
+        return 1;
+    rl_record_defaults(&rcc);
+    rcc.dir = s->cfg.record_dir;
+    rcc.every = s->cfg.record_every;
+    rcc.max_mb = s->cfg.record_max_mb;
+    if (rl_record_start(&fs->rec, &rcc, s->site.calib.width, s->site.calib.height, err, sizeof err) != RL_OK)
+        return !rl_cli_fail(C, RL_EXIT_FAIL, "record: %s", err);
+    fprintf(stderr, "%s: recording one frame in %d to %s\n", fs->prefix, fs->rec.every, fs->rec.dir);
+    fs->on = 1;
+    return 1;
+}
+
+static void stop_recording(fw_sink *fs)
+{
     const char *news;
-    rl_record_offer(&rc->rec, &f->img, f->index, f->t_us);
-    if ((news = rl_record_news(&rc->rec)) != NULL)
-        log_line((void *)rc->prefix, news);
+    if (!fs->on)
+        return;
+    rl_record_stop(&fs->rec);
+    /* a stop the writer met after the last frame is logged now */
+    if ((news = rl_record_news(&fs->rec)) != NULL)
+        log_line((void *)fs->prefix, news);
+    fprintf(stderr, "%s: recorded %ld frames (%.1f MB) to %s, %ld skipped while the disk was behind%s%s\n",
+            fs->prefix, fs->rec.saved, fs->rec.bytes / 1e6, fs->rec.dir, fs->rec.skipped,
+            fs->rec.error[0] ? "; " : "", fs->rec.error);
+}
+
+/* The loop's settings from the configuration. */
+static void run_config(const rl_runcfg *cfg, rl_run_config *rc)
+{
+    rl_run_defaults(rc);
+    rc->log_interval_us = (uint64_t)(cfg->log_interval * 1e6);
+    if (cfg->cam_rate > 0)
+        rc->timeout_ms = (int)(3000.0 / cfg->cam_rate) > 200 ? (int)(3000.0 / cfg->cam_rate) : 200;
+}
+
+static void print_summary(const char *prefix, const rl_run_counts *n, const out_ctx *octx)
+{
+    fprintf(stderr, "%s: %ld frames, %ld poses, %ld status frames, %ld camera errors, "
+                    "%ld bad frames, %ld timeouts, %ld serial errors, %ld frames dropped%s\n",
+            prefix, n->frames, n->poses, n->statuses, n->camera_errors, n->bad_frames, n->camera_timeouts,
+            n->sink_errors, n->dropped,
+            stop_flag ? (octx->s.broken ? " (standard output closed)" : " (stopped by signal)") : "");
 }
 
 int rl_fw_main(const char *C, int argc, char **argv)
@@ -282,81 +356,43 @@ int rl_fw_main(const char *C, int argc, char **argv)
     static rl_result res;
     static rl_runner runner;
     static out_ctx octx;
+    static rl_packet_sink ps;
+    static fw_sink fs;
+    static rl_run_camera cam;
     static char prefix[128];
-    rl_heap_recog hr;
-    rl_heap_place hp;
     rl_run_io io;
-    const char *config = NULL;
+    rl_run_config rc;
+    const char *config = NULL, *record = NULL;
     long max_frames = 0;
-    static record_ctx rec;
-    const char *record = NULL;
-    int rc, done, probe = 0, recording = 0;
+    int code, done, probe = 0;
 
     rl_cli_prefix(C, prefix, sizeof prefix);
-    if ((rc = parse_args(C, prefix, argc, argv, &config, &max_frames, &probe, &record, &done)) != 0 || done)
-        return rc;
+    if ((code = parse_args(C, prefix, argc, argv, &config, &max_frames, &probe, &record, &done)) != 0 || done)
+        return code;
     if (probe)
         return probe_camera(C, config);
     /* start-up: everything that can fail in configuration fails here, once */
-    if (!load_setup(C, config, &s) || !make_recognizer(C, &s, &hr))
+    if (!load_setup(C, config, &s) || !prepare_site(C, &s))
         return RL_EXIT_FAIL;
-    if ((rc = rl_heap_place_init(&hp, &s.map, NULL)) != RL_OK) {
-        rl_heap_recog_free(&hr);
-        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: the place index: %s", s.cfg.map, rl_strerror((rl_err)rc));
+    wire_io(&s, &octx, &ps, &fs, &cam, prefix, &io);
+    if (!start_recording(C, &s, record, &fs)) {
+        rl_site_free(&s.site);
+        return RL_EXIT_FAIL;
     }
-    wire_io(&s, &octx, prefix, &io);
-    if (record != NULL)
-        snprintf(s.cfg.record_dir, sizeof s.cfg.record_dir, "%s", record);
-    if (s.cfg.record_dir[0]) {
-        rl_record_config rcc;
-        char err[512];
-        rl_record_defaults(&rcc);
-        rcc.dir = s.cfg.record_dir;
-        rcc.every = s.cfg.record_every;
-        rcc.max_mb = s.cfg.record_max_mb;
-        if (rl_record_start(&rec.rec, &rcc, s.calib.width, s.calib.height, err, sizeof err) != RL_OK) {
-            rl_heap_recog_free(&hr);
-            rl_heap_place_free(&hp);
-            return rl_cli_fail(C, RL_EXIT_FAIL, "record: %s", err);
-        }
-        rec.prefix = prefix;
-        fprintf(stderr, "%s: recording one frame in %d to %s\n", prefix, rec.rec.every, rec.rec.dir);
-        io.frame = record_frame;
-        io.frame_ctx = &rec;
-        recording = 1;
-    }
-    rl_run_init(&runner, &io, hr.rec, &s.calib, &s.map, &s.mount, &res);
-    runner.offsets = s.cfg.offsets[0] ? &s.offsets : NULL;
-    runner.place = hp.pl;
-    runner.log_interval_us = (uint64_t)(s.cfg.log_interval * 1e6);
-    if (s.cfg.cam_rate > 0)
-        runner.timeout_ms = (int)(3000.0 / s.cfg.cam_rate) > 200 ? (int)(3000.0 / s.cfg.cam_rate) : 200;
+    run_config(&s.cfg, &rc);
+    rl_run_init(&runner, &rc, &io, &s.site, &res);
     on_signals();
     fprintf(stderr, "%s: %s camera %s, %d landmarks in %s%s, poses to %s at %d baud\n", prefix,
-            s.cfg.cam_backend, s.cfg.cam_device, s.map.count, s.cfg.map,
-            hp.pl ? " (ids repeat: places found from constellations)" : "", s.cfg.serial, s.cfg.baud);
+            s.cfg.cam_backend, s.cfg.cam_device, s.site.map.count, s.cfg.map,
+            s.site.place.pl ? " (ids repeat: places found from constellations)" : "", s.cfg.serial, s.cfg.baud);
     run_loop(&runner, max_frames);
-    fprintf(stderr, "%s: %ld frames, %ld poses, %ld status frames, %ld camera errors, "
-                    "%ld bad frames, %ld timeouts, %ld serial errors, %ld frames dropped%s\n",
-            prefix, runner.frames, runner.poses, runner.statuses, runner.camera_errors,
-            runner.bad_frames, runner.camera_timeouts, runner.serial_errors, runner.dropped,
-            stop_flag ? (octx.s.broken ? " (standard output closed)" : " (stopped by signal)") : "");
-    if (recording) {
-        const char *news;
-        rl_record_stop(&rec.rec);
-        /* a stop the writer met after the last frame is logged now */
-        if ((news = rl_record_news(&rec.rec)) != NULL)
-            log_line((void *)prefix, news);
-        fprintf(stderr, "%s: recorded %ld frames (%.1f MB) to %s, %ld skipped while the disk was behind%s%s\n",
-                prefix, rec.rec.saved, rec.rec.bytes / 1e6, rec.rec.dir, rec.rec.skipped,
-                rec.rec.error[0] ? "; " : "", rec.rec.error);
-    }
-    if (hp.pl)
-        fprintf(stderr, "%s: %ld poses tracked from the last one, %ld frames ambiguous\n", prefix, runner.tracked,
-                runner.ambiguous);
-    rl_heap_recog_free(&hr);
-    rl_heap_place_free(&hp);
-    if (runner.poses + runner.statuses == 0) /* nothing ever reached the line: a failed run */
-        return rl_cli_fail(C, RL_EXIT_FAIL, "no frame reached %s", s.cfg.serial);
+    print_summary(prefix, rl_run_counts_of(&runner), &octx);
+    stop_recording(&fs);
+    if (s.site.place.pl)
+        fprintf(stderr, "%s: %ld poses tracked from the last one, %ld frames ambiguous\n", prefix,
+                rl_run_counts_of(&runner)->tracked, rl_run_counts_of(&runner)->ambiguous);
+    rl_site_free(&s.site);
+    if (rl_run_counts_of(&runner)->poses + rl_run_counts_of(&runner)->statuses == 0)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "no frame reached %s", s.cfg.serial); /* a failed run */
     return 0;
 }

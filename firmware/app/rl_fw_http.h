@@ -10,7 +10,7 @@
  *   char err[256];
  *   if (rl_fw_http_start(&web, "127.0.0.1:8080", "", 640, 480, &map, &runner, "/dev/serial0",
  *                        NULL, err, sizeof err) == RL_OK) {
- *       // the loop's observer: rl_run_view_frame with &web.rv
+ *       // the loop's observer: rl_run_view_report with &web.rv
  *       rl_fw_http_stop(&web, NULL);
  *   }
  */

@@ -1,38 +1,48 @@
+/* rl_run: the one loop from frames to poses (rl_run.h). */
 #include "rl_run.h"
 
-#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+#include "rl_packet.h"
 
-static rl_err solve(rl_runner *r, uint64_t t_us, rl_pose *pose);
-
-void rl_run_init(rl_runner *r, const rl_run_io *io, rl_recog *rec, const rl_calib *calib,
-                 const rl_map *map, const rl_mount *mount, rl_result *res)
+void rl_run_defaults(rl_run_config *c)
 {
-    memset(r, 0, sizeof *r);
-    r->io = *io;
-    r->rec = rec;
-    r->calib = calib;
-    r->map = map;
-    r->mount = mount;
-    r->res = res;
-    r->timeout_ms = 500;
-    r->reopen_after_timeouts = 3;
-    r->backoff_min_us = 100000;
-    r->backoff_max_us = 2000000;
-    r->status_period_us = 200000;
-    r->log_interval_us = 5000000;
-    r->cam_backoff = r->out_backoff = r->backoff_min_us;
+    memset(c, 0, sizeof *c);
+    c->timeout_ms = 500;
+    c->reopen_after_timeouts = 3;
+    c->backoff_min_us = 100000;
+    c->backoff_max_us = 2000000;
+    c->status_period_us = 200000;
+    c->log_interval_us = 5000000;
 }
 
-/* Logs are rate-limited per kind: the first line of a kind goes out, then
- * at most one per interval with a count of the ones held back. */
-static void logf_(rl_runner *r, int kind, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
-    ;
+void rl_run_init(rl_runner *r, const rl_run_config *cfg, const rl_run_io *io, rl_site *site, rl_result *res)
+{
+    memset(r, 0, sizeof *r);
+    r->cfg = *cfg;
+    r->io = *io;
+    r->site = site;
+    r->res = res;
+    r->src_backoff = r->sink_backoff = cfg->backoff_min_us;
+}
+
+const rl_run_counts *rl_run_counts_of(const rl_runner *r)
+{
+    return &r->counts;
+}
+
+void rl_run_start_at(rl_runner *r, const rl_pose *pose, uint64_t t_us)
+{
+    r->have_pose = 1;
+    r->last_pose = *pose;
+    r->last_pose_us = t_us;
+}
+
+static uint64_t now_us(const rl_runner *r)
+{
+    return r->io.clock.now_us(r->io.clock.ctx);
+}
 
 /* 1 the first time a bad-frame line is seen (its hash kept while there
  * is room): it is logged then, whatever the interval. */
@@ -51,17 +61,25 @@ static int new_frame_line(rl_runner *r, const char *line)
     return 1;
 }
 
+/* Logs are rate-limited per kind: the first line of a kind goes out, then
+ * at most one per interval with a count of the ones held back. */
+static void logf_(rl_runner *r, int kind, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
 static void logf_(rl_runner *r, int kind, const char *fmt, ...)
 {
     char line[512], full[600];
-    uint64_t now = r->io.clock.now_us(r->io.clock.ctx);
+    uint64_t now = now_us(r);
     va_list ap;
     if (r->io.log == NULL)
         return;
     va_start(ap, fmt);
     vsnprintf(line, sizeof line, fmt, ap);
     va_end(ap);
-    if (r->last_log[kind] != 0 && now - r->last_log[kind] < r->log_interval_us &&
+    if (r->last_log[kind] != 0 && now - r->last_log[kind] < r->cfg.log_interval_us &&
         !(kind == RL_LOG_FRAME && new_frame_line(r, line))) {
         r->suppressed[kind]++;
         return;
@@ -79,235 +97,333 @@ static void logf_(rl_runner *r, int kind, const char *fmt, ...)
 
 static uint64_t next_backoff(const rl_runner *r, uint64_t b)
 {
-    return 2 * b > r->backoff_max_us ? r->backoff_max_us : 2 * b;
+    return 2 * b > r->cfg.backoff_max_us ? r->cfg.backoff_max_us : 2 * b;
 }
 
-/* Send one message; a failed line is closed and reopened later, and the
- * message is counted as dropped (the controller sees a gap in seq). */
-static void send_msg(rl_runner *r, rl_msg *m)
+static const char *sink_name(const rl_runner *r)
 {
-    uint8_t buf[RL_PACKET_MAX];
-    size_t n;
+    return r->io.sink.name ? r->io.sink.name : "output";
+}
+
+/* Open the sink unless it is up or still backing off; 1 when it is up. */
+static int sink_ready(rl_runner *r, uint64_t now)
+{
     char err[256];
-    uint64_t now = r->io.clock.now_us(r->io.clock.ctx);
     rl_err e;
-    m->seq = r->seq++;
-    if (!r->out_up) {
-        if (now < r->out_retry_at) {
-            r->dropped++;
-            return;
-        }
-        if ((e = r->io.out.open(r->io.out.ctx, err, sizeof err)) != RL_OK) {
-            logf_(r, RL_LOG_SERIAL, "serial: %s; retrying", err);
-            r->out_retry_at = now + r->out_backoff;
-            r->out_backoff = next_backoff(r, r->out_backoff);
-            r->serial_errors++;
-            r->dropped++;
-            return;
-        }
-        r->out_up = 1;
-        r->out_backoff = r->backoff_min_us;
+    if (r->sink_up)
+        return 1;
+    if (now < r->sink_retry_at)
+        return 0;
+    if (r->io.sink.open != NULL && (e = r->io.sink.open(r->io.sink.ctx, err, sizeof err)) != RL_OK) {
+        logf_(r, RL_LOG_SERIAL, "%s: %s; retrying", sink_name(r), err);
+        r->sink_retry_at = now + r->sink_backoff;
+        r->sink_backoff = next_backoff(r, r->sink_backoff);
+        r->counts.sink_errors++;
+        return 0;
     }
-    n = rl_packet_encode(m, buf);
-    if ((e = r->io.out.write(r->io.out.ctx, buf, n)) != RL_OK) {
-        const char *why = r->io.out.why ? r->io.out.why(r->io.out.ctx) : NULL;
-        logf_(r, RL_LOG_SERIAL, "serial: write failed (%s); reopening", why ? why : rl_strerror(e));
-        r->io.out.close(r->io.out.ctx);
-        r->out_up = 0;
-        r->out_retry_at = now + r->out_backoff;
-        r->out_backoff = next_backoff(r, r->out_backoff);
-        r->serial_errors++;
-        r->dropped++;
+    r->sink_up = 1;
+    r->sink_backoff = r->cfg.backoff_min_us;
+    return 1;
+}
+
+/* Hand a report to the sink; a failed sink is closed and reopened later,
+ * and the report counted as dropped (a serial line's controller sees a
+ * gap in seq). */
+static void report(rl_runner *r, rl_run_report *rep)
+{
+    uint64_t now = now_us(r);
+    rl_err e;
+    rep->seq = r->seq++;
+    rep->sent_us = now;
+    if (!sink_ready(r, now)) {
+        r->counts.dropped++;
         return;
     }
-    /* sent: the summary counts what reached the line */
-    if (m->type == RL_PACKET_POSE)
-        r->poses++;
-    else
-        r->statuses++;
-}
-
-static void send_status(rl_runner *r, int reason, int identified, int candidates, uint64_t t_us)
-{
-    rl_msg m;
-    memset(&m, 0, sizeof m);
-    m.type = RL_PACKET_STATUS;
-    m.time_ms = (uint32_t)(t_us / 1000u);
-    m.reason = (uint8_t)reason;
-    m.identified = (uint8_t)(identified > 255 ? 255 : identified);
-    m.candidates = (uint8_t)(candidates > 255 ? 255 : candidates);
-    send_msg(r, &m);
-}
-
-static int32_t clamp32(double v)
-{
-    return v > 2147483647.0 ? 2147483647 : v < -2147483647.0 ? -2147483647 : (int32_t)lround(v);
-}
-
-static uint16_t clampu16(double v)
-{
-    return v > 65535.0 ? 65535 : v < 0 ? 0 : (uint16_t)lround(v);
-}
-
-static int16_t clamp16(double v)
-{
-    return v > 32767.0 ? 32767 : v < -32767.0 ? -32767 : (int16_t)lround(v);
-}
-
-static void camera_down(rl_runner *r, uint64_t now)
-{
-    rl_cam_close(&r->cam);
-    r->cam_up = 0;
-    r->cam_retry_at = now + r->cam_backoff;
-    r->cam_backoff = next_backoff(r, r->cam_backoff);
-}
-
-rl_err rl_run_step(rl_runner *r)
-{
-    uint64_t now = r->io.clock.now_us(r->io.clock.ctx);
-    rl_cam_frame f;
-    rl_pose pose;
-    rl_err e;
-    char err[256];
-    int i, w, h, local = 0;
-
-    if (!r->cam_up) {
-        if (now >= r->cam_retry_at) {
-            if ((e = rl_cam_open(&r->cam, r->io.cam, err, sizeof err)) == RL_OK) {
-                r->cam_up = 1;
-                r->timeouts = 0;
-                r->cam_backoff = r->backoff_min_us;
-                logf_(r, RL_LOG_INFO, "camera: open%s%s", r->cam.info[0] ? ": " : "", r->cam.info);
-                return RL_OK;
-            }
-            r->camera_errors++;
-            logf_(r, RL_LOG_CAMERA, "camera: %s; retrying", err);
-            r->cam_retry_at = now + r->cam_backoff;
-            r->cam_backoff = next_backoff(r, r->cam_backoff);
-        }
-        /* while the camera is down, the controller still hears from us */
-        send_status(r, RL_STATUS_CAMERA_ERROR, 0, 0, now);
-        {
-            uint64_t wait = r->cam_retry_at > now ? r->cam_retry_at - now : 0;
-            r->io.clock.sleep_us(r->io.clock.ctx, wait < r->status_period_us ? wait : r->status_period_us);
-        }
-        return RL_OK;
+    if ((e = r->io.sink.put(r->io.sink.ctx, rep)) != RL_OK) {
+        const char *why = r->io.sink.why ? r->io.sink.why(r->io.sink.ctx) : NULL;
+        logf_(r, RL_LOG_SERIAL, "%s: write failed (%s); reopening", sink_name(r), why ? why : rl_strerror(e));
+        if (r->io.sink.close != NULL)
+            r->io.sink.close(r->io.sink.ctx);
+        r->sink_up = 0;
+        r->sink_retry_at = now + r->sink_backoff;
+        r->sink_backoff = next_backoff(r, r->sink_backoff);
+        r->counts.sink_errors++;
+        r->counts.dropped++;
+        return;
     }
+    /* taken: the summary counts what reached the sink */
+    if (rep->event == RL_RUN_FRAME && rep->pose_err == RL_OK)
+        r->counts.poses++;
+    else
+        r->counts.statuses++;
+}
 
-    e = rl_cam_grab(&r->cam, r->timeout_ms, &f);
+/* A report without a frame: the source down, timed out, or a bad frame. */
+static void report_no_frame(rl_runner *r, rl_run_event event, int status, uint64_t t_us, const char *why)
+{
+    rl_run_report rep;
+    memset(&rep, 0, sizeof rep);
+    rep.event = event;
+    rep.status = status;
+    rep.t_us = t_us;
+    rep.error = why;
+    report(r, &rep);
+}
+
+static const char *source_error(const rl_runner *r, rl_err e)
+{
+    const char *why = r->io.source.error ? r->io.source.error(r->io.source.ctx) : "";
+    return why && why[0] ? why : rl_strerror(e);
+}
+
+static void source_down(rl_runner *r, uint64_t now)
+{
+    r->io.source.close(r->io.source.ctx);
+    r->src_up = 0;
+    r->src_retry_at = now + r->src_backoff;
+    r->src_backoff = next_backoff(r, r->src_backoff);
+}
+
+/* The source opened when it is due, status reports while it is down. */
+static void source_open(rl_runner *r, uint64_t now)
+{
+    char err[512];
+    rl_err e;
+    uint64_t wait;
+    if (now >= r->src_retry_at) {
+        if ((e = r->io.source.open(r->io.source.ctx, err, sizeof err)) == RL_OK) {
+            const char *info = r->io.source.info ? r->io.source.info(r->io.source.ctx) : "";
+            r->src_up = 1;
+            r->timeouts = 0;
+            r->src_backoff = r->cfg.backoff_min_us;
+            logf_(r, RL_LOG_INFO, "camera: open%s%s", info[0] ? ": " : "", info);
+            return;
+        }
+        r->counts.camera_errors++;
+        logf_(r, RL_LOG_CAMERA, "camera: %s; retrying", err);
+        r->src_retry_at = now + r->src_backoff;
+        r->src_backoff = next_backoff(r, r->src_backoff);
+        report_no_frame(r, RL_RUN_NO_FRAME, RL_STATUS_CAMERA_ERROR, now, err);
+    } else {
+        report_no_frame(r, RL_RUN_NO_FRAME, RL_STATUS_CAMERA_ERROR, now, "camera down");
+    }
+    /* while the source is down, the sink still hears from us */
+    wait = r->src_retry_at > now ? r->src_retry_at - now : 0;
+    r->io.clock.sleep_us(r->io.clock.ctx, wait < r->cfg.status_period_us ? wait : r->cfg.status_period_us);
+}
+
+/* A grab that gave no frame: RL_OK to go on, RL_ENOTFOUND at the end. */
+static rl_err grab_failed(rl_runner *r, rl_err e, uint64_t now)
+{
+    const char *why = source_error(r, e);
     if (e == RL_ENOTFOUND)
         return RL_ENOTFOUND;
     if (e == RL_ETIMEOUT) {
-        r->camera_timeouts++;
-        logf_(r, RL_LOG_TIMEOUT, "camera: no frame in %d ms", r->timeout_ms);
-        send_status(r, RL_STATUS_CAMERA_TIMEOUT, 0, 0, r->io.clock.now_us(r->io.clock.ctx));
-        if (++r->timeouts >= r->reopen_after_timeouts) {
+        r->counts.camera_timeouts++;
+        logf_(r, RL_LOG_TIMEOUT, "camera: no frame in %d ms", r->cfg.timeout_ms);
+        report_no_frame(r, RL_RUN_NO_FRAME, RL_STATUS_CAMERA_TIMEOUT, now_us(r), "no frame");
+        if (++r->timeouts >= r->cfg.reopen_after_timeouts) {
             logf_(r, RL_LOG_CAMERA, "camera: %d timeouts in a row; reopening", r->timeouts);
-            camera_down(r, r->io.clock.now_us(r->io.clock.ctx));
-            r->cam_retry_at = 0; /* reopen at once */
+            source_down(r, now_us(r));
+            r->src_retry_at = 0; /* reopen at once */
         }
-        return RL_OK;
-    }
-    if (e == RL_EFORMAT) {
+    } else if (e == RL_EFORMAT) {
         /* a frame that could not be read: reported and skipped */
-        r->bad_frames++;
-        logf_(r, RL_LOG_FRAME, "camera: %s; frame skipped", r->cam.error[0] ? r->cam.error : "bad frame");
-        send_status(r, RL_STATUS_CAMERA_ERROR, 0, 0, now);
-        return RL_OK;
-    }
-    if (e != RL_OK) {
-        r->camera_errors++;
-        logf_(r, RL_LOG_CAMERA, "camera: %s; reopening", r->cam.error[0] ? r->cam.error : rl_strerror(e));
-        camera_down(r, now);
-        send_status(r, RL_STATUS_CAMERA_ERROR, 0, 0, now);
-        return RL_OK;
-    }
-    r->timeouts = 0;
-    r->frames++;
-    rl_recog_frame_size(r->rec, &w, &h);
-    if (f.img.width != w || f.img.height != h) {
-        logf_(r, RL_LOG_FRAME, "frame %ld is %dx%d, the calibration is for %dx%d; skipped", f.index,
-              f.img.width, f.img.height, w, h);
-        rl_cam_release(&r->cam, &f);
-        send_status(r, RL_STATUS_CONFIG_ERROR, 0, 0, f.t_us);
-        return RL_OK;
-    }
-    if (r->io.frame != NULL)
-        r->io.frame(r->io.frame_ctx, &f);
-    e = rl_recog_run(r->rec, &f.img, r->res);
-    rl_cam_release(&r->cam, &f);
-    if (e != RL_OK) {
-        /* a bad frame (noise beyond the workspace) never stops the loop */
-        logf_(r, RL_LOG_FRAME, "frame %ld: recognition failed: %s", f.index, rl_strerror(e));
-        send_status(r, RL_STATUS_TOO_FEW, 0, 0, f.t_us);
-        return RL_OK;
-    }
-    e = solve(r, f.t_us, &pose);
-    for (i = 0; i < r->res->n_landmarks; i++)
-        local |= r->res->landmarks[i].pass == RL_PASS_LOCAL;
-    r->local_used += local;
-    if (e == RL_OK) {
-        rl_msg m;
-        uint64_t sent = r->io.clock.now_us(r->io.clock.ctx);
-        memset(&m, 0, sizeof m);
-        m.type = RL_PACKET_POSE;
-        m.time_ms = (uint32_t)(f.t_us / 1000u);
-        m.x_mm = clamp32(pose.x * 1000.0);
-        m.y_mm = clamp32(pose.y * 1000.0);
-        m.yaw_e4 = (int16_t)lround(pose.yaw * 1e4); /* |yaw| <= pi fits */
-        m.used = (uint8_t)(pose.used > 255 ? 255 : pose.used);
-        m.flags = (uint8_t)(local | (pose.tilt_solved ? 2 : 0));
-        m.residual_e4 = clampu16(pose.residual * 1e4);
-        m.latency_e4 = clampu16((double)(sent > f.t_us ? sent - f.t_us : 0) / 100.0);
-        m.version = RL_PACKET_VERSION;
-        m.sigma_x_e4 = clampu16(pose.sigma_x * 1e4);
-        m.sigma_y_e4 = clampu16(pose.sigma_y * 1e4);
-        m.sigma_yaw_e4 = clampu16(pose.sigma_yaw * 1e4);
-        m.roll_e4 = clamp16(pose.roll * 1e4);
-        m.pitch_e4 = clamp16(pose.pitch * 1e4);
-        send_msg(r, &m);
-    } else if (e == RL_ETOOFEW) {
-        send_status(r, RL_STATUS_TOO_FEW, r->res->n_landmarks, r->res->n_candidates, f.t_us);
-    } else if (e == RL_EAMBIGUOUS) {
-        r->ambiguous++;
-        send_status(r, RL_STATUS_AMBIGUOUS, r->res->n_landmarks, r->res->n_candidates, f.t_us);
+        r->counts.bad_frames++;
+        logf_(r, RL_LOG_FRAME, "camera: %s; frame skipped", why);
+        report_no_frame(r, RL_RUN_BAD_FRAME, RL_STATUS_CAMERA_ERROR, now, why);
     } else {
-        logf_(r, RL_LOG_FRAME, "pose: %s (check the map and robot heights)", rl_strerror(e));
-        send_status(r, RL_STATUS_CONFIG_ERROR, r->res->n_landmarks, r->res->n_candidates, f.t_us);
+        r->counts.camera_errors++;
+        logf_(r, RL_LOG_CAMERA, "camera: %s; reopening", why);
+        source_down(r, now);
+        report_no_frame(r, RL_RUN_NO_FRAME, RL_STATUS_CAMERA_ERROR, now, why);
     }
     return RL_OK;
 }
 
-/* The pose of the frame taken at t_us: by id, or on a map that repeats
- * ids by place, with the last pose as the prior. */
-static rl_err solve(rl_runner *r, uint64_t t_us, rl_pose *pose)
+/* The prior of a frame: the last pose, its age from capture times or
+ * from the configured interval between frames. */
+static const rl_place_prior *make_prior(const rl_runner *r, uint64_t t_us, rl_place_prior *prior)
+{
+    memset(prior, 0, sizeof *prior);
+    if (r->cfg.alone)
+        return NULL;
+    prior->valid = r->have_pose && t_us >= r->last_pose_us;
+    prior->x = r->last_pose.x;
+    prior->y = r->last_pose.y;
+    prior->yaw = r->last_pose.yaw;
+    prior->age = prior->valid ? (double)(t_us - r->last_pose_us) / 1e6 : 0;
+    return prior;
+}
+
+static int can_localize(const rl_site *s)
+{
+    return s->has_calib && s->has_map && s->has_mount;
+}
+
+/* The frame's pose into rep (rep->pose_err says whether there is one). */
+static void localize(rl_runner *r, uint64_t t_us, rl_run_report *rep, rl_pose *pose, rl_place_found *found)
 {
     rl_place_prior prior;
-    rl_place_found found;
-    rl_err e;
-    if (r->place == NULL)
-        return rl_pose_solve(r->calib, r->map, r->mount, r->res->landmarks, r->res->n_landmarks, r->offsets, pose);
-    prior.valid = r->have_pose && t_us >= r->last_pose_us;
-    prior.x = r->last_pose.x;
-    prior.y = r->last_pose.y;
-    prior.yaw = r->last_pose.yaw;
-    prior.age = prior.valid ? (double)(t_us - r->last_pose_us) / 1e6 : 0;
-    e = rl_place_solve(r->place, r->calib, r->mount, r->res->landmarks, r->res->n_landmarks, r->offsets, &prior,
-                       pose, &found);
-    if (e == RL_OK) {
+    const rl_result *res = r->res;
+    memset(pose, 0, sizeof *pose);
+    memset(found, 0, sizeof *found);
+    if (!can_localize(r->site)) {
+        rep->pose_err = RL_EUNSUPPORTED;
+        return;
+    }
+    rep->pose = pose;
+    rep->place = found;
+    rep->pose_err = rl_site_solve(r->site, res->landmarks, res->n_landmarks, make_prior(r, t_us, &prior), pose,
+                                  found);
+    if (rep->pose_err == RL_OK) {
         r->have_pose = 1;
         r->last_pose = *pose;
         r->last_pose_us = t_us;
-        r->tracked += found.status == RL_PLACE_TRACKED;
+        r->counts.tracked += found->status == RL_PLACE_TRACKED;
+    } else if (rep->pose_err == RL_ETOOFEW) {
+        rep->status = RL_STATUS_TOO_FEW;
+    } else if (rep->pose_err == RL_EAMBIGUOUS) {
+        r->counts.ambiguous++;
+        rep->status = RL_STATUS_AMBIGUOUS;
+    } else {
+        logf_(r, RL_LOG_FRAME, "pose: %s (check the map and robot heights)", rl_strerror(rep->pose_err));
+        rep->status = RL_STATUS_CONFIG_ERROR;
     }
+}
+
+/* The recognizer ready for the frame's size: the calibration's, or any
+ * size when the site has none (made anew, outside the timed part). */
+static rl_err ready_for(rl_runner *r, const rl_cam_frame *f, char *why, size_t whylen)
+{
+    rl_site *s = r->site;
+    rl_err e;
+    char frame[40];
+    const char *name = f->name;
+    if (name == NULL) {
+        snprintf(frame, sizeof frame, "frame %ld", f->index);
+        name = frame;
+    }
+    if (s->has_calib && (f->img.width != s->calib.width || f->img.height != s->calib.height)) {
+        snprintf(why, whylen, "%.200s: image is %dx%d but %.200s (image_width, image_height) is for %dx%d", name,
+                 f->img.width, f->img.height, s->files.calibration, s->calib.width, s->calib.height);
+        return RL_EINVAL;
+    }
+    if ((e = rl_heap_recog_prepare(&s->recog, f->img.width, f->img.height)) != RL_OK)
+        snprintf(why, whylen, "%.200s: cannot prepare recognition for %dx%d: %s", name, f->img.width,
+                 f->img.height, rl_strerror(e));
     return e;
+}
+
+/* Recognize and localize a frame, report it. */
+static void use_frame(rl_runner *r, const rl_cam_frame *f)
+{
+    rl_run_report rep;
+    rl_pose pose;
+    rl_place_found found;
+    char why[512];
+    uint64_t t0;
+    rl_err e;
+    int i, local = 0;
+    r->counts.frames++;
+    if ((e = ready_for(r, f, why, sizeof why)) != RL_OK) {
+        logf_(r, RL_LOG_FRAME, "%s; skipped", why);
+        report_no_frame(r, RL_RUN_BAD_FRAME, RL_STATUS_CONFIG_ERROR, f->t_us, why);
+        return;
+    }
+    memset(&rep, 0, sizeof rep);
+    rep.event = RL_RUN_FRAME;
+    rep.t_us = f->t_us;
+    rep.frame = f;
+    t0 = rl_clock_now_us();
+    e = rl_recog_run(r->site->recog.rec, &f->img, r->res);
+    rep.recog_us = (double)(rl_clock_now_us() - t0);
+    if (e != RL_OK) {
+        /* a bad frame (noise beyond the workspace) never stops the loop */
+        if (f->name)
+            snprintf(why, sizeof why, "%.300s: recognition failed: %s", f->name, rl_strerror(e));
+        else
+            snprintf(why, sizeof why, "frame %ld: recognition failed: %s", f->index, rl_strerror(e));
+        logf_(r, RL_LOG_FRAME, "%s", why);
+        report_no_frame(r, RL_RUN_BAD_FRAME, RL_STATUS_TOO_FEW, f->t_us, why);
+        return;
+    }
+    rep.res = r->res;
+    for (i = 0; i < r->res->n_landmarks; i++)
+        local |= r->res->landmarks[i].pass == RL_PASS_LOCAL;
+    r->counts.local_used += local;
+    localize(r, r->cfg.frame_interval > 0 ? (uint64_t)(r->reads * r->cfg.frame_interval * 1e6) : f->t_us, &rep,
+             &pose, &found);
+    report(r, &rep);
+}
+
+rl_err rl_run_step(rl_runner *r)
+{
+    uint64_t now = now_us(r);
+    rl_cam_frame f;
+    rl_err e;
+    if (!r->src_up) {
+        source_open(r, now);
+        return RL_OK;
+    }
+    e = r->io.source.grab(r->io.source.ctx, r->cfg.timeout_ms, &f);
+    if (e != RL_ETIMEOUT && e != RL_ENOTFOUND)
+        r->reads++;
+    if (e != RL_OK)
+        return grab_failed(r, e, now);
+    r->timeouts = 0;
+    use_frame(r, &f);
+    r->io.source.release(r->io.source.ctx, &f);
+    return RL_OK;
 }
 
 void rl_run_close(rl_runner *r)
 {
-    if (r->cam_up)
-        rl_cam_close(&r->cam);
-    if (r->out_up)
-        r->io.out.close(r->io.out.ctx);
-    r->cam_up = r->out_up = 0;
+    if (r->src_up)
+        r->io.source.close(r->io.source.ctx);
+    if (r->sink_up && r->io.sink.close != NULL)
+        r->io.sink.close(r->io.sink.ctx);
+    r->src_up = r->sink_up = 0;
+}
+
+/* The camera as a source. */
+static rl_err cam_open(void *ctx, char *err, size_t errlen)
+{
+    rl_run_camera *rc = (rl_run_camera *)ctx;
+    return rl_cam_open(&rc->cam, &rc->cc, err, errlen);
+}
+static rl_err cam_grab(void *ctx, int timeout_ms, rl_cam_frame *f)
+{
+    return rl_cam_grab(&((rl_run_camera *)ctx)->cam, timeout_ms, f);
+}
+static void cam_release(void *ctx, rl_cam_frame *f)
+{
+    rl_cam_release(&((rl_run_camera *)ctx)->cam, f);
+}
+static void cam_close(void *ctx)
+{
+    rl_cam_close(&((rl_run_camera *)ctx)->cam);
+}
+static const char *cam_error(void *ctx)
+{
+    return ((rl_run_camera *)ctx)->cam.error;
+}
+static const char *cam_info(void *ctx)
+{
+    return ((rl_run_camera *)ctx)->cam.info;
+}
+
+rl_run_source rl_run_camera_source(rl_run_camera *rc, const rl_cam_config *cc)
+{
+    rl_run_source s;
+    memset(rc, 0, sizeof *rc);
+    rc->cc = *cc;
+    s.open = cam_open;
+    s.grab = cam_grab;
+    s.release = cam_release;
+    s.close = cam_close;
+    s.error = cam_error;
+    s.info = cam_info;
+    s.ctx = rc;
+    return s;
 }

@@ -1,30 +1,36 @@
-/* rl_run: the firmware's main loop, one step at a time.
+/* rl_run: the one loop from frames to poses, for devices and files alike.
  *
- * Each step grabs a frame from the camera, recognizes, localizes and sends
- * a pose frame, or a status frame saying why there is no pose (on a map
- * that repeats ids, `place` finds which landmarks the frame shows, near
- * the last pose first: a status "ambiguous" when no place is clear). Faults are
- * part of the loop, not exits: a camera that fails is closed and reopened
- * with backoff while status frames keep going out; a camera that times out
- * repeatedly is reopened; a serial line that disappears is reopened; a bad
- * frame is reported and skipped. The camera is an rl_cam opened from
- * the configuration in rl_run_io (a test's double is one more camera
- * backend); the output, the clock and the log are reached through
- * rl_run_io too, so tests can inject every fault. Nothing is allocated
- * after rl_run_init.
+ * Each step takes a frame from the source, recognizes its landmarks with
+ * the site's recognizer and, when the site has a calibration, map and
+ * robot, localizes (on a map that repeats ids, `place` finds which
+ * landmarks the frame shows, near the last pose first); then it hands a
+ * report to the sink. The firmware's sink sends a pose or status packet on
+ * the serial line (rl_packet_sink.h); `detect`, `locate`, the calibrations
+ * and the survey's frame reading are sinks of their own over a source of
+ * PNG files (the PNG camera). Faults are states, not exits: a source that
+ * fails is closed and reopened with backoff while reports saying so keep
+ * going out; a source that times out repeatedly is reopened; a sink that
+ * fails is reopened later and what it missed is counted; a bad frame is
+ * reported and skipped. Source, sink, clock and log come in through one
+ * seam (rl_run_io), so tests inject every fault; settings through
+ * rl_run_config with defaults; the state is the loop's own, read through
+ * rl_run_counts. Nothing is allocated after rl_run_init for frames of the
+ * calibration's size; only recognition is timed (recog_us).
  *
  *   static rl_runner runner;
  *   static rl_result result;
+ *   static rl_site site;            // loaded and prepared (rl_site.h)
+ *   rl_run_camera camera;
  *   rl_cam_config cc;
+ *   rl_run_config cfg;
  *   rl_run_io io;
- *   rl_mount mount;
  *   rl_cam_defaults(&cc);
+ *   rl_run_defaults(&cfg);
  *   memset(&io, 0, sizeof io);
- *   io.cam = &cc;
+ *   io.source = rl_run_camera_source(&camera, &cc);
  *   io.clock = rl_clock_system();
- *   // io.out: the serial line's open, write, close
- *   rl_mount_defaults(&mount, 0.88);
- *   rl_run_init(&runner, &io, rec, &cam, &map, &mount, &result);
+ *   // io.sink: where reports go (rl_packet_sink_make for the serial line)
+ *   rl_run_init(&runner, &cfg, &io, &site, &result);
  *   while (rl_run_step(&runner) != RL_ENOTFOUND)
  *       continue;
  *   rl_run_close(&runner);
@@ -36,34 +42,96 @@
 #include <stdint.h>
 #include "rl_cam.h"
 #include "rl_clock.h"
-#include "rl_packet.h"
 #include "rl_place.h"
 #include "rl_pose.h"
 #include "rl_recog.h"
+#include "rl_site.h"
 
-/* Where frames go: the serial line (rl_fw.c wires rl_serial to it), or a
- * test's decoder. */
+/* Where frames come from. grab: RL_OK, RL_ETIMEOUT, RL_ENOTFOUND at the
+ * end, RL_EFORMAT for a bad frame that was skipped, another error when
+ * the source failed (closed and opened again). */
 typedef struct {
     rl_err (*open)(void *ctx, char *err, size_t errlen);
-    rl_err (*write)(void *ctx, const uint8_t *p, size_t n);
+    rl_err (*grab)(void *ctx, int timeout_ms, rl_cam_frame *f);
+    void (*release)(void *ctx, rl_cam_frame *f);
     void (*close)(void *ctx);
-    /* the system's reason for the last failed write ("No space left on
-     * device"), or NULL (then the error code's message); may be NULL */
-    const char *(*why)(void *ctx);
+    const char *(*error)(void *ctx); /* why the last grab failed, naming the file or device, or "" */
+    const char *(*info)(void *ctx);  /* what was opened (format, size), or "" */
     void *ctx;
-} rl_run_out;
+} rl_run_source;
+
+/* The camera (rl_cam: PNG files, V4L2, libcamera) as a source. */
+typedef struct {
+    rl_cam cam;
+    rl_cam_config cc;
+} rl_run_camera;
+rl_run_source rl_run_camera_source(rl_run_camera *rc, const rl_cam_config *cc);
+
+typedef enum {
+    RL_RUN_FRAME,     /* a frame recognized (and localized when the site can) */
+    RL_RUN_BAD_FRAME, /* a frame that could not be read or used; error says why */
+    RL_RUN_NO_FRAME   /* the source is down or timed out; error says why */
+} rl_run_event;
+
+/* What one step gave, lent to the sink for the call. */
+typedef struct {
+    rl_run_event event;
+    long seq;                   /* reports made so far, this one excluded (dropped ones too) */
+    uint64_t t_us;              /* the frame's capture time, or now */
+    uint64_t sent_us;           /* now */
+    const rl_cam_frame *frame;  /* FRAME: the frame; else NULL */
+    const rl_result *res;       /* FRAME: its landmarks; else NULL */
+    double recog_us;            /* FRAME: recognition's time alone */
+    rl_err pose_err;            /* FRAME: RL_OK with a pose; RL_ETOOFEW, RL_EAMBIGUOUS, ...;
+                                   RL_EUNSUPPORTED when the site cannot localize */
+    const rl_pose *pose;        /* FRAME after a solve (the failed one too: n_dropped) */
+    const rl_place_found *place;/* FRAME after a solve */
+    int status;                 /* no pose: the status packet's reason (RL_STATUS_*) */
+    const char *error;          /* BAD_FRAME, NO_FRAME: why, naming the file or device */
+} rl_run_report;
+
+/* Where reports go. put failing: the sink is closed and opened again
+ * after a backoff, the reports between are counted as dropped. */
+typedef struct {
+    const char *name;           /* for log lines ("serial") */
+    rl_err (*open)(void *ctx, char *err, size_t errlen); /* NULL: always open */
+    rl_err (*put)(void *ctx, const rl_run_report *rep);
+    void (*close)(void *ctx);   /* may be NULL */
+    const char *(*why)(void *ctx); /* the system's reason for the last failure, or NULL; may be NULL */
+    void *ctx;
+} rl_run_sink;
 
 typedef struct {
-    const rl_cam_config *cam; /* the camera the loop opens (and reopens) */
-    rl_run_out out;
-    rl_clock clock;           /* rl_clock_system(), or a test's */
-    void (*log)(void *ctx, const char *line); /* one line, no newline */
+    rl_run_source source;
+    rl_run_sink sink;
+    rl_clock clock;             /* rl_clock_system(), or a test's */
+    void (*log)(void *ctx, const char *line); /* one line, no newline; NULL: none */
     void *log_ctx;
-    /* each frame the loop will recognize, while it is lent (a recorder
-     * copies some; NULL: none) */
-    void (*frame)(void *ctx, const rl_cam_frame *f);
-    void *frame_ctx;
 } rl_run_io;
+
+typedef struct {
+    int timeout_ms;             /* a grab waits at most this long (500) */
+    int reopen_after_timeouts;  /* consecutive timeouts before reopening (3) */
+    uint64_t backoff_min_us;    /* first retry delay (100 ms), doubling ... */
+    uint64_t backoff_max_us;    /* ... up to this (2 s) */
+    uint64_t status_period_us;  /* reports while the source is down (200 ms) */
+    uint64_t log_interval_us;   /* rate limit of repeated log lines (5 s) */
+    double frame_interval;      /* > 0: frames this many seconds apart for the prior (files
+                                   without capture times); 0: capture times (default) */
+    int alone;                  /* 1: each frame without the last pose as prior */
+} rl_run_config;
+
+void rl_run_defaults(rl_run_config *c);
+
+typedef struct {
+    long frames;                /* frames recognized */
+    long poses, statuses;       /* reports the sink took with and without a pose */
+    long camera_errors, camera_timeouts, bad_frames;
+    long sink_errors, dropped;  /* failed puts and opens; reports the sink never took */
+    long local_used;            /* frames where the local pass identified a landmark */
+    long ambiguous;             /* frames whose landmarks fit several places */
+    long tracked;               /* poses found near the previous one */
+} rl_run_counts;
 
 /* Kinds of log line; each kind is printed at most once per log interval. */
 enum { RL_LOG_CAMERA, RL_LOG_TIMEOUT, RL_LOG_SERIAL, RL_LOG_FRAME, RL_LOG_INFO, RL_LOG_KINDS };
@@ -71,49 +139,38 @@ enum { RL_LOG_CAMERA, RL_LOG_TIMEOUT, RL_LOG_SERIAL, RL_LOG_FRAME, RL_LOG_INFO, 
  * (each bad file of a PNG camera named once); past these, the interval. */
 #define RL_RUN_FRAME_LINES 64
 
+/* The loop's state: read it through rl_run_counts. */
 typedef struct {
+    rl_run_config cfg;
     rl_run_io io;
-    rl_cam cam;
-    rl_recog *rec;
-    const rl_calib *calib;
-    const rl_map *map;
-    const rl_mount *mount;
-    const rl_offsets *offsets;  /* NULL: pinhole model */
-    const rl_place *place;      /* the index of a map that repeats ids (NULL: ids unique) */
-    rl_result *res;             /* caller's (large) */
-    /* settings, defaults from rl_run_init */
-    int timeout_ms;             /* a grab waits at most this long (500) */
-    int reopen_after_timeouts;  /* consecutive timeouts before reopening (3) */
-    uint64_t backoff_min_us;    /* first retry delay (100 ms), doubling ... */
-    uint64_t backoff_max_us;    /* ... up to this (2 s) */
-    uint64_t status_period_us;  /* status frames while the camera is down (200 ms) */
-    uint64_t log_interval_us;   /* rate limit of repeated log lines (5 s) */
-    /* state */
-    int cam_up, out_up, timeouts;
-    uint64_t cam_retry_at, cam_backoff, out_retry_at, out_backoff;
-    uint16_t seq;
+    rl_site *site;
+    rl_result *res;
+    int src_up, sink_up, timeouts;
+    uint64_t src_retry_at, src_backoff, sink_retry_at, sink_backoff;
+    long seq, reads;
     uint64_t last_log[RL_LOG_KINDS];
     long suppressed[RL_LOG_KINDS];
-    uint32_t frame_lines[RL_RUN_FRAME_LINES]; /* hashes of the bad-frame lines logged so far */
+    uint32_t frame_lines[RL_RUN_FRAME_LINES];
     int n_frame_lines;
-    /* counters */
-    long frames, poses, statuses, camera_errors, camera_timeouts, serial_errors, dropped;
-    long bad_frames;            /* frames the camera could not read, skipped */
-    long local_used;
-    long ambiguous;             /* frames whose landmarks fit several places */
-    long tracked;               /* poses found near the previous one */
-    /* the last pose, the prior of the next frame's place */
     int have_pose;
     rl_pose last_pose;
     uint64_t last_pose_us;
+    rl_run_counts counts;
 } rl_runner;
 
-void rl_run_init(rl_runner *r, const rl_run_io *io, rl_recog *rec, const rl_calib *calib,
-                 const rl_map *map, const rl_mount *mount, rl_result *res);
+/* The loop over io for a loaded, prepared site (rl_site_prepare); res is
+ * the caller's (large). */
+void rl_run_init(rl_runner *r, const rl_run_config *cfg, const rl_run_io *io, rl_site *site, rl_result *res);
 
-/* One step. RL_OK to go on; RL_ENOTFOUND when the camera has no more
+/* One step. RL_OK to go on; RL_ENOTFOUND when the source has no more
  * frames (a PNG sequence at its end). */
 RL_CHECK rl_err rl_run_step(rl_runner *r);
+
+const rl_run_counts *rl_run_counts_of(const rl_runner *r);
+
+/* A pose known at t_us (where the robot starts): the prior of the next
+ * frame's place. */
+void rl_run_start_at(rl_runner *r, const rl_pose *pose, uint64_t t_us);
 
 /* Close what is open. */
 void rl_run_close(rl_runner *r);

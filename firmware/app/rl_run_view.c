@@ -1,7 +1,6 @@
 #include "rl_run_view.h"
 
 #include <string.h>
-#include "rl_place.h"
 
 void rl_run_view_init(rl_run_view *rv, rl_view *view, const rl_runner *runner, const char *serial,
                       const rl_record *rec)
@@ -15,18 +14,19 @@ void rl_run_view_init(rl_run_view *rv, rl_view *view, const rl_runner *runner, c
 
 static void counts(const rl_runner *r, const rl_record *rec, rl_view_counts *c)
 {
-    c->frames = r->frames;
-    c->poses = r->poses;
-    c->statuses = r->statuses;
-    c->camera_errors = r->camera_errors;
-    c->camera_timeouts = r->camera_timeouts;
-    c->bad_frames = r->bad_frames;
-    c->serial_errors = r->serial_errors;
-    c->dropped = r->dropped;
-    c->ambiguous = r->ambiguous;
-    c->tracked = r->tracked;
-    c->local_used = r->local_used;
-    c->serial_up = r->out_up;
+    const rl_run_counts *n = rl_run_counts_of(r);
+    c->frames = n->frames;
+    c->poses = n->poses;
+    c->statuses = n->statuses;
+    c->camera_errors = n->camera_errors;
+    c->camera_timeouts = n->camera_timeouts;
+    c->bad_frames = n->bad_frames;
+    c->serial_errors = n->sink_errors;
+    c->dropped = n->dropped;
+    c->ambiguous = n->ambiguous;
+    c->tracked = n->tracked;
+    c->local_used = n->local_used;
+    c->serial_up = r->sink_up;
     /* the recorder's loop-side counts only (its writer's are its own) */
     c->recording = rec != NULL;
     if (rec != NULL) {
@@ -35,25 +35,21 @@ static void counts(const rl_runner *r, const rl_record *rec, rl_view_counts *c)
     }
 }
 
-void rl_run_view_frame(void *ctx, const rl_cam_frame *f, const rl_result *res, const rl_pose *pose, int reason)
+void rl_run_view_report(void *ctx, const rl_run_report *rep)
 {
     rl_run_view *rv = (rl_run_view *)ctx;
     const rl_runner *r = rv->runner;
+    int frame = rep->event == RL_RUN_FRAME && rep->frame != NULL;
     rl_view_obs o;
     memset(&o, 0, sizeof o);
-    o.frame = f;
-    o.res = f != NULL ? res : NULL;
-    o.pose = pose;
-    o.reason = pose != NULL ? 0 : reason;
-    /* on a map that repeats ids, the place: tracked when the runner's count
-     * of tracked poses just grew, else found from the frame alone */
-    o.place = -1;
-    if (r->place != NULL)
-        o.place = pose == NULL ? (reason == RL_STATUS_AMBIGUOUS ? RL_PLACE_AMBIGUOUS : RL_PLACE_NONE)
-                  : r->tracked > rv->tracked ? RL_PLACE_TRACKED : RL_PLACE_FOUND;
-    rv->tracked = r->tracked;
-    o.now_us = r->io.clock.now_us(r->io.clock.ctx);
-    o.cam_info = r->cam.info;
+    o.frame = frame ? rep->frame : NULL;
+    o.res = frame ? rep->res : NULL;
+    o.pose = frame && rep->pose_err == RL_OK ? rep->pose : NULL;
+    o.reason = o.pose != NULL ? 0 : rep->status;
+    /* on a map that repeats ids, how the place was found */
+    o.place = r->site->place.pl != NULL && rep->place != NULL ? rep->place->status : -1;
+    o.now_us = rep->sent_us;
+    o.cam_info = r->io.source.info != NULL ? r->io.source.info(r->io.source.ctx) : NULL;
     o.serial = rv->serial;
     counts(r, rv->rec, &o.counts);
     (void)rl_view_offer(rv->view, &o);

@@ -7,6 +7,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <unistd.h>
 
 static const char *program = "ringloc";
@@ -123,4 +124,49 @@ int rl_cli_size(const char *cmd, const char *opt, const char *s, int max, int *w
     *w = (int)a;
     *h = (int)b;
     return 1;
+}
+
+int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config *cfg,
+                        const char **family)
+{
+    switch (c) {
+    case 'f': *family = arg; return 1;
+    case 'L':
+        if (strcmp(arg, "auto") == 0) cfg->local = RL_LOCAL_AUTO;
+        else if (strcmp(arg, "always") == 0) cfg->local = RL_LOCAL_ALWAYS;
+        else if (strcmp(arg, "never") == 0) cfg->local = RL_LOCAL_NEVER;
+        else return rl_cli_fail(cmd, RL_EXIT_USAGE, "--local: '%s' is not auto, always or never", arg), -1;
+        return 1;
+    case 'Y': /* --gamma */
+        if (strcmp(arg, "auto") == 0) {
+            cfg->gamma = 0;
+            return 1;
+        }
+        return rl_cli_double(cmd, "--gamma", arg, 1.0, 3.0, &cfg->gamma) ? 1 : -1;
+    case 's':
+        if (!rl_cli_double(cmd, "--min-score", arg, 0.01, 1.0, &cfg->min_score))
+            return -1;
+        if (!(cfg->min_score > 0 && cfg->min_score <= 1))
+            return rl_cli_fail(cmd, RL_EXIT_USAGE, "--min-score: %s is outside (0, 1]", arg), -1;
+        return 1;
+    }
+    return 0;
+}
+
+
+void rl_cli_annotate_name(char *buf, size_t len, const char *out, const char *image, int several)
+{
+    const char *base = strrchr(image, '/'), *dot, *odot = strrchr(out, '.');
+    int stem;
+    if (!several) {
+        snprintf(buf, len, "%s", out);
+        return;
+    }
+    base = base ? base + 1 : image;
+    dot = strrchr(base, '.');
+    stem = dot ? (int)(dot - base) : (int)strlen(base);
+    if (odot && !strchr(odot, '/'))
+        snprintf(buf, len, "%.*s-%.*s%s", (int)(odot - out), out, stem, base, odot);
+    else
+        snprintf(buf, len, "%s-%.*s.png", out, stem, base);
 }

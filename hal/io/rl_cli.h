@@ -15,6 +15,7 @@
 
 #include <getopt.h>
 #include <stddef.h>
+#include "rl_recog.h"
 
 #define RL_EXIT_FAIL 1
 #define RL_EXIT_USAGE 2
@@ -50,5 +51,16 @@ int rl_cli_double(const char *cmd, const char *opt, const char *s, double lo, do
 int rl_cli_int(const char *cmd, const char *opt, const char *s, long lo, long hi, int *out);
 /* "640x480" -> 640, 480, each 1 .. max */
 int rl_cli_size(const char *cmd, const char *opt, const char *s, int max, int *w, int *h);
+
+/* The recognition options detect, locate and site-check share (--family
+ * 'f', --local 'L', --min-score 's'): 1 if c was one of them (applied),
+ * -1 after a usage error line, 0 if c is another option. */
+int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config *cfg,
+                        const char **family);
+
+/* "out.png" for one image; "out-<stem of image>.png" for several. */
+void rl_cli_annotate_name(char *buf, size_t len, const char *out, const char *image, int several);
+
+
 
 #endif

@@ -2,6 +2,7 @@
 
 #include <stdio.h>
 #include <string.h>
+#include "rl_cam_backends.h"
 #include "rl_listen.h"
 #include "rl_yaml.h"
 
@@ -99,127 +100,163 @@ static rl_err http_section(rl_yaml *y, yaml_node_t *root, rl_runcfg *c, char *er
 static const char *const serial_keys[] = {"device", "baud", NULL};
 static const char *const recognition_keys[] = {"local", "min_score", "local_min_score", "gamma", NULL};
 
+/* What a file that leaves everything out says: the recognition's
+ * settings from rl_recog_defaults, the PNG camera at 10 frames a second. */
+static void runcfg_defaults(rl_runcfg *c)
+{
+    rl_recog_config rd;
+    rl_recog_defaults(&rd);
+    memset(c, 0, sizeof *c);
+    c->cam_rate = 10.0;
+    c->baud = 115200;
+    c->local = rd.local;
+    c->min_score = rd.min_score;
+    c->local_min_score = rd.local_min_score;
+    c->gamma = rd.gamma; /* auto */
+    c->log_interval = 5.0;
+    c->record_every = 10;
+    c->record_max_mb = 1000;
+    snprintf(c->cam_backend, sizeof c->cam_backend, "%s", rl_cam_backend_names[0]);
+}
+
+/* The sections' shapes and that no key is unknown. */
+static rl_err check_sections(rl_yaml *y, yaml_node_t *root, yaml_node_t *cam, yaml_node_t *ser, yaml_node_t *rec,
+                             char *err, size_t errlen)
+{
+    rl_err e;
+    if (cam == NULL || cam->type != YAML_MAPPING_NODE)
+        return rl_yaml_fail(y, cam ? cam : root, "camera", RL_EFORMAT, err, errlen,
+                            cam ? "expected {backend, device, width, height, rate}" : "missing key");
+    if (ser == NULL || ser->type != YAML_MAPPING_NODE)
+        return rl_yaml_fail(y, ser ? ser : root, "serial", RL_EFORMAT, err, errlen,
+                            ser ? "expected {device, baud}" : "missing key");
+    if (rec != NULL && rec->type != YAML_MAPPING_NODE)
+        return rl_yaml_fail(y, rec, "recognition", RL_EFORMAT, err, errlen,
+                            "expected {local, min_score, local_min_score, gamma}");
+    if ((e = rl_yaml_only(y, root, NULL, top_keys, err, errlen)) != RL_OK ||
+        (e = rl_yaml_only(y, cam, "camera", camera_keys, err, errlen)) != RL_OK ||
+        (e = rl_yaml_only(y, ser, "serial", serial_keys, err, errlen)) != RL_OK ||
+        (e = rl_yaml_only(y, rec, "recognition", recognition_keys, err, errlen)) != RL_OK)
+        return e;
+    return RL_OK;
+}
+
+/* camera: {backend, device, width, height, rate, loop, exposure, gain} */
+static rl_err camera_section(rl_yaml *y, yaml_node_t *cam, const char *path, rl_runcfg *c, char *err,
+                             size_t errlen)
+{
+    const char *s = NULL;
+    char names[64];
+    rl_err e;
+    if ((e = rl_yaml_string(y, cam, "backend", "camera.backend", 1, &s, err, errlen)) != RL_OK)
+        return e;
+    if (rl_cam_backend_find(s) < 0)
+        return rl_yaml_fail(y, rl_yaml_get(y, cam, "backend"), "camera.backend", RL_EFORMAT, err, errlen,
+                            "'%s' is not %s", s, rl_cam_backend_list(names, sizeof names));
+    snprintf(c->cam_backend, sizeof c->cam_backend, "%s", s);
+    s = NULL;
+    if ((e = rl_yaml_string(y, cam, "device", "camera.device", 1, &s, err, errlen)) != RL_OK)
+        return e;
+    if (strcmp(c->cam_backend, "png") == 0)
+        relative(c->cam_device, sizeof c->cam_device, path, s);
+    else
+        snprintf(c->cam_device, sizeof c->cam_device, "%s", s);
+    if ((e = rl_yaml_int(y, cam, "width", "camera.width", 0, &c->cam_width, err, errlen)) != RL_OK ||
+        (e = rl_yaml_int(y, cam, "height", "camera.height", 0, &c->cam_height, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double(y, cam, "rate", "camera.rate", 0, &c->cam_rate, err, errlen)) != RL_OK ||
+        (e = rl_yaml_bool(y, cam, "loop", "camera.loop", 0, &c->cam_loop, err, errlen)) != RL_OK ||
+        (e = auto_or(y, cam, "exposure", "camera.exposure", 1, 10e6, &c->cam_exposure_us, err, errlen)) != RL_OK ||
+        (e = auto_or(y, cam, "gain", "camera.gain", 1e-3, 1e4, &c->cam_gain, err, errlen)) != RL_OK)
+        return e;
+    if (c->cam_width < 0 || c->cam_height < 0 || c->cam_rate < 0 || c->cam_rate > 1000)
+        return rl_yaml_fail(y, cam, "camera", RL_ERANGE, err, errlen,
+                            "width, height must be >= 0 and rate 0 .. 1000");
+    return RL_OK;
+}
+
+/* The site's files, the serial line and the log's interval. */
+static rl_err files_and_serial(rl_yaml *y, yaml_node_t *root, yaml_node_t *ser, const char *path, rl_runcfg *c,
+                               char *err, size_t errlen)
+{
+    rl_err e;
+    if ((e = path_key(y, root, "calibration", NULL, 1, path, c->calibration, sizeof c->calibration, err, errlen)) != RL_OK ||
+        (e = path_key(y, root, "map", NULL, 1, path, c->map, sizeof c->map, err, errlen)) != RL_OK ||
+        (e = path_key(y, root, "robot", NULL, 1, path, c->robot, sizeof c->robot, err, errlen)) != RL_OK ||
+        (e = path_key(y, root, "offsets", NULL, 0, path, c->offsets, sizeof c->offsets, err, errlen)) != RL_OK ||
+        (e = path_key(y, ser, "device", "serial.device", 1, path, c->serial, sizeof c->serial, err, errlen)) != RL_OK ||
+        (e = rl_yaml_int(y, ser, "baud", "serial.baud", 0, &c->baud, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double_in(y, root, "log_interval", NULL, 0, 0, 86400, &c->log_interval, err, errlen)) != RL_OK)
+        return e;
+    /* device paths like /dev/serial0 are absolute; relative ones are files */
+    if (rl_yaml_get(y, ser, "baud") != NULL)
+        c->baud_line = (int)rl_yaml_get(y, ser, "baud")->start_mark.line + 1;
+    return RL_OK;
+}
+
+/* record: {dir, every, max_mb}, optional */
+static rl_err record_section(rl_yaml *y, yaml_node_t *root, const char *path, rl_runcfg *c, char *err,
+                             size_t errlen)
+{
+    yaml_node_t *recd = rl_yaml_get(y, root, "record");
+    rl_err e;
+    if (recd != NULL && recd->type != YAML_MAPPING_NODE)
+        return rl_yaml_fail(y, recd, "record", RL_EFORMAT, err, errlen, "expected {dir, every, max_mb}");
+    if (recd != NULL &&
+        ((e = rl_yaml_only(y, recd, "record", record_keys, err, errlen)) != RL_OK ||
+         (e = path_key(y, recd, "dir", "record.dir", 1, path, c->record_dir, sizeof c->record_dir, err,
+                       errlen)) != RL_OK ||
+         (e = rl_yaml_int(y, recd, "every", "record.every", 0, &c->record_every, err, errlen)) != RL_OK ||
+         (e = rl_yaml_double_in(y, recd, "max_mb", "record.max_mb", 0, 0.1, 1e7, &c->record_max_mb, err,
+                                errlen)) != RL_OK))
+        return e;
+    if (c->record_every < 1 || c->record_every > 100000)
+        return rl_yaml_fail(y, rl_yaml_get(y, recd, "every"), "record.every", RL_ERANGE, err, errlen,
+                            "%d is out of range (1 .. 100000)", c->record_every);
+    return RL_OK;
+}
+
+/* recognition: {local, min_score, local_min_score, gamma}, optional */
+static rl_err recognition_section(rl_yaml *y, yaml_node_t *rec, rl_runcfg *c, char *err, size_t errlen)
+{
+    const char *s = NULL;
+    rl_err e;
+    if (rec == NULL)
+        return RL_OK;
+    if ((e = rl_yaml_string(y, rec, "local", "recognition.local", 0, &s, err, errlen)) != RL_OK)
+        return e;
+    if (s != NULL) {
+        if (strcmp(s, "auto") == 0) c->local = RL_LOCAL_AUTO;
+        else if (strcmp(s, "always") == 0) c->local = RL_LOCAL_ALWAYS;
+        else if (strcmp(s, "never") == 0) c->local = RL_LOCAL_NEVER;
+        else
+            return rl_yaml_fail(y, rl_yaml_get(y, rec, "local"), "recognition.local", RL_EFORMAT, err, errlen,
+                                "'%s' is not auto, always or never", s);
+    }
+    if ((e = score_key(y, rec, "min_score", "recognition.min_score", &c->min_score, err, errlen)) != RL_OK ||
+        (e = score_key(y, rec, "local_min_score", "recognition.local_min_score", &c->local_min_score, err,
+                       errlen)) != RL_OK)
+        return e;
+    return gamma_key(y, rec, &c->gamma, err, errlen);
+}
+
 rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
 {
     rl_yaml y;
     yaml_node_t *root, *cam, *ser, *rec;
-    const char *s = NULL;
     rl_err e;
-    memset(c, 0, sizeof *c);
-    c->cam_rate = 10.0;
-    c->baud = 115200;
-    c->local = RL_LOCAL_ALWAYS;
-    c->min_score = 0.80;
-    c->local_min_score = 0.75;
-    c->gamma = 0; /* auto */
-    c->log_interval = 5.0;
-    c->record_every = 10;
-    c->record_max_mb = 1000;
-    snprintf(c->cam_backend, sizeof c->cam_backend, "png");
+    runcfg_defaults(c);
     if ((e = rl_yaml_load(&y, path, err, errlen)) != RL_OK)
         return e;
     root = rl_yaml_root(&y);
     cam = rl_yaml_get(&y, root, "camera");
     ser = rl_yaml_get(&y, root, "serial");
     rec = rl_yaml_get(&y, root, "recognition");
-    if (cam == NULL || cam->type != YAML_MAPPING_NODE) {
-        e = rl_yaml_fail(&y, cam ? cam : root, "camera", RL_EFORMAT, err, errlen,
-                         cam ? "expected {backend, device, width, height, rate}" : "missing key");
-        goto out;
-    }
-    if (ser == NULL || ser->type != YAML_MAPPING_NODE) {
-        e = rl_yaml_fail(&y, ser ? ser : root, "serial", RL_EFORMAT, err, errlen,
-                         ser ? "expected {device, baud}" : "missing key");
-        goto out;
-    }
-    if (rec != NULL && rec->type != YAML_MAPPING_NODE) {
-        e = rl_yaml_fail(&y, rec, "recognition", RL_EFORMAT, err, errlen,
-                         "expected {local, min_score, local_min_score, gamma}");
-        goto out;
-    }
-    if ((e = rl_yaml_only(&y, root, NULL, top_keys, err, errlen)) != RL_OK ||
-        (e = rl_yaml_only(&y, cam, "camera", camera_keys, err, errlen)) != RL_OK ||
-        (e = rl_yaml_only(&y, ser, "serial", serial_keys, err, errlen)) != RL_OK ||
-        (e = rl_yaml_only(&y, rec, "recognition", recognition_keys, err, errlen)) != RL_OK ||
-        (e = rl_yaml_string(&y, cam, "backend", "camera.backend", 1, &s, err, errlen)) != RL_OK)
-        goto out;
-    if (strcmp(s, "png") != 0 && strcmp(s, "v4l2") != 0 && strcmp(s, "libcamera") != 0) {
-        e = rl_yaml_fail(&y, rl_yaml_get(&y, cam, "backend"), "camera.backend", RL_EFORMAT, err,
-                         errlen, "'%s' is not png, v4l2 or libcamera", s);
-        goto out;
-    }
-    snprintf(c->cam_backend, sizeof c->cam_backend, "%s", s);
-    s = NULL;
-    if ((e = rl_yaml_string(&y, cam, "device", "camera.device", 1, &s, err, errlen)) != RL_OK)
-        goto out;
-    if (strcmp(c->cam_backend, "png") == 0)
-        relative(c->cam_device, sizeof c->cam_device, path, s);
-    else
-        snprintf(c->cam_device, sizeof c->cam_device, "%s", s);
-    if ((e = rl_yaml_int(&y, cam, "width", "camera.width", 0, &c->cam_width, err, errlen)) != RL_OK ||
-        (e = rl_yaml_int(&y, cam, "height", "camera.height", 0, &c->cam_height, err, errlen)) != RL_OK ||
-        (e = rl_yaml_double(&y, cam, "rate", "camera.rate", 0, &c->cam_rate, err, errlen)) != RL_OK ||
-        (e = rl_yaml_bool(&y, cam, "loop", "camera.loop", 0, &c->cam_loop, err, errlen)) != RL_OK ||
-        (e = auto_or(&y, cam, "exposure", "camera.exposure", 1, 10e6, &c->cam_exposure_us, err, errlen)) != RL_OK ||
-        (e = auto_or(&y, cam, "gain", "camera.gain", 1e-3, 1e4, &c->cam_gain, err, errlen)) != RL_OK)
-        goto out;
-    if (c->cam_width < 0 || c->cam_height < 0 || c->cam_rate < 0 || c->cam_rate > 1000) {
-        e = rl_yaml_fail(&y, cam, "camera", RL_ERANGE, err, errlen,
-                         "width, height must be >= 0 and rate 0 .. 1000");
-        goto out;
-    }
-    if ((e = path_key(&y, root, "calibration", NULL, 1, path, c->calibration, sizeof c->calibration, err, errlen)) != RL_OK ||
-        (e = path_key(&y, root, "map", NULL, 1, path, c->map, sizeof c->map, err, errlen)) != RL_OK ||
-        (e = path_key(&y, root, "robot", NULL, 1, path, c->robot, sizeof c->robot, err, errlen)) != RL_OK ||
-        (e = path_key(&y, root, "offsets", NULL, 0, path, c->offsets, sizeof c->offsets, err, errlen)) != RL_OK ||
-        (e = path_key(&y, ser, "device", "serial.device", 1, path, c->serial, sizeof c->serial, err, errlen)) != RL_OK ||
-        (e = rl_yaml_int(&y, ser, "baud", "serial.baud", 0, &c->baud, err, errlen)) != RL_OK ||
-        (e = rl_yaml_double_in(&y, root, "log_interval", NULL, 0, 0, 86400, &c->log_interval, err, errlen)) != RL_OK ||
-        (e = http_section(&y, root, c, err, errlen)) != RL_OK)
-        goto out;
-    /* device paths like /dev/serial0 are absolute; relative ones are files */
-    if (rl_yaml_get(&y, ser, "baud") != NULL)
-        c->baud_line = (int)rl_yaml_get(&y, ser, "baud")->start_mark.line + 1;
-    {
-        yaml_node_t *recd = rl_yaml_get(&y, root, "record");
-        if (recd != NULL && recd->type != YAML_MAPPING_NODE) {
-            e = rl_yaml_fail(&y, recd, "record", RL_EFORMAT, err, errlen, "expected {dir, every, max_mb}");
-            goto out;
-        }
-        if (recd != NULL &&
-            ((e = rl_yaml_only(&y, recd, "record", record_keys, err, errlen)) != RL_OK ||
-             (e = path_key(&y, recd, "dir", "record.dir", 1, path, c->record_dir, sizeof c->record_dir, err,
-                           errlen)) != RL_OK ||
-             (e = rl_yaml_int(&y, recd, "every", "record.every", 0, &c->record_every, err, errlen)) != RL_OK ||
-             (e = rl_yaml_double_in(&y, recd, "max_mb", "record.max_mb", 0, 0.1, 1e7, &c->record_max_mb, err,
-                                    errlen)) != RL_OK))
-            goto out;
-        if (c->record_every < 1 || c->record_every > 100000) {
-            e = rl_yaml_fail(&y, rl_yaml_get(&y, recd, "every"), "record.every", RL_ERANGE, err, errlen,
-                             "%d is out of range (1 .. 100000)", c->record_every);
-            goto out;
-        }
-    }
-    if (rec != NULL) {
-        s = NULL;
-        if ((e = rl_yaml_string(&y, rec, "local", "recognition.local", 0, &s, err, errlen)) != RL_OK)
-            goto out;
-        if (s != NULL) {
-            if (strcmp(s, "auto") == 0) c->local = RL_LOCAL_AUTO;
-            else if (strcmp(s, "always") == 0) c->local = RL_LOCAL_ALWAYS;
-            else if (strcmp(s, "never") == 0) c->local = RL_LOCAL_NEVER;
-            else {
-                e = rl_yaml_fail(&y, rl_yaml_get(&y, rec, "local"), "recognition.local", RL_EFORMAT,
-                                 err, errlen, "'%s' is not auto, always or never", s);
-                goto out;
-            }
-        }
-        if ((e = score_key(&y, rec, "min_score", "recognition.min_score", &c->min_score, err, errlen)) != RL_OK ||
-            (e = score_key(&y, rec, "local_min_score", "recognition.local_min_score", &c->local_min_score, err, errlen)) != RL_OK ||
-            (e = gamma_key(&y, rec, &c->gamma, err, errlen)) != RL_OK)
-            goto out;
-    }
-out:
+    if ((e = check_sections(&y, root, cam, ser, rec, err, errlen)) == RL_OK &&
+        (e = camera_section(&y, cam, path, c, err, errlen)) == RL_OK &&
+        (e = files_and_serial(&y, root, ser, path, c, err, errlen)) == RL_OK &&
+        (e = record_section(&y, root, path, c, err, errlen)) == RL_OK &&
+        (e = http_section(&y, root, c, err, errlen)) == RL_OK)
+        e = recognition_section(&y, rec, c, err, errlen);
     rl_yaml_free(&y);
     return e;
 }

@@ -5,14 +5,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "rl_calibfile.h"
 #include "rl_clock.h"
-#include "rl_heap_place.h"
-#include "rl_heap_recog.h"
-#include "rl_mapfile.h"
 #include "rl_png.h"
 #include "rl_report.h"
-#include "rl_robotfile.h"
+#include "rl_site.h"
 
 #define FRAMES 512
 #define REPEAT 5
@@ -58,90 +54,108 @@ static double least_us(void (*fn)(job *), job *j)
     return best;
 }
 
-int rl_bench_site(const char *dir)
+/* dir's site: map, camera and robot, the recognizer for the map's ids and
+ * the place index (its build time into *build_ms). 0, or 1 with the line
+ * printed. */
+static int load_site(const char *dir, rl_site *site, double *build_ms)
 {
-    static rl_map map;
-    static rl_result res;
-    static double find_us[FRAMES], track_us[FRAMES], recog_us[FRAMES], solve_us[FRAMES];
-    rl_calib cam;
-    rl_mount mount;
+    static char map[2048], camera[2048], robot[2048];
+    rl_site_files files;
     rl_recog_config cfg;
-    rl_heap_recog hr;
-    rl_heap_place hp;
-    char path[2048], err[512];
-    int ids[RL_MAX_IDS], k, n = 0, failed = 0;
+    char err[768];
     uint64_t t0;
-    double build_ms;
-    snprintf(path, sizeof path, "%s/map.yaml", dir);
-    if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK)
-        goto fail;
-    snprintf(path, sizeof path, "%s/camera.yaml", dir);
-    if (rl_calibfile_load(path, &cam, err, sizeof err) != RL_OK)
-        goto fail;
-    snprintf(path, sizeof path, "%s/robot.yaml", dir);
-    if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK)
-        goto fail;
+    snprintf(map, sizeof map, "%s/map.yaml", dir);
+    snprintf(camera, sizeof camera, "%s/camera.yaml", dir);
+    snprintf(robot, sizeof robot, "%s/robot.yaml", dir);
+    rl_site_files_init(&files);
+    files.map = map;
+    files.calibration = camera;
+    files.robot = robot;
+    rl_recog_defaults(&cfg);
+    if (rl_site_load(site, &files, err, sizeof err) != RL_OK) {
+        fprintf(stderr, "ringloc-bench: %s\n", err);
+        return 1;
+    }
     t0 = rl_clock_now_us();
-    if (rl_heap_place_init(&hp, &map, NULL) != RL_OK || hp.pl == NULL) {
+    if (rl_site_prepare(site, &cfg, err, sizeof err) != RL_OK || site->place.pl == NULL) {
         fprintf(stderr, "ringloc-bench: %s/map.yaml: no place index (are ids repeated?)\n", dir);
         return 1;
     }
-    build_ms = (double)(rl_clock_now_us() - t0) / 1000.0;
-    rl_recog_defaults(&cfg);
-    rl_recog_use_map(&cfg, &map, ids);
-    rl_heap_recog_init(&hr, &cfg);
+    *build_ms = (double)(rl_clock_now_us() - t0) / 1000.0;
+    return 0;
+}
+
+/* The times of one frame: recognition, the place found with no prior and
+ * tracked, the pose solved after it. 0, or -1 when the frame has no place. */
+static int time_frame(rl_site *site, const rl_image *img, rl_result *res, double *recog, double *find_t,
+                      double *track_t, double *solve_t)
+{
+    rl_place_found f;
+    rl_place_prior prior;
+    double r;
+    int i;
+    *recog = HUGE_VAL;
+    for (i = 0; i < REPEAT; i++) {
+        if (rl_report_run(&site->recog, img, res, &r) != RL_OK)
+            return -1;
+        *recog = fmin(*recog, r);
+    }
+    if (rl_place_find(site->place.pl, &site->calib, &site->mount, res->landmarks, res->n_landmarks, NULL, NULL,
+                      &f) != RL_OK)
+        return -1;
+    {
+        job j = {&site->map, &site->place, &site->calib, &site->mount, res, NULL, &f, 1};
+        *find_t = least_us(find, &j);
+        /* tracking: the frame's own place as the last pose, a tenth of a second ago */
+        prior.valid = 1;
+        prior.x = f.x;
+        prior.y = f.y;
+        prior.yaw = f.yaw;
+        prior.age = 0.1;
+        j.prior = &prior;
+        *track_t = least_us(find, &j);
+        *solve_t = least_us(solve, &j);
+        return j.ok ? 0 : 1;
+    }
+}
+
+int rl_bench_site(const char *dir)
+{
+    static rl_site site;
+    static rl_result res;
+    static double find_us[FRAMES], track_us[FRAMES], recog_us[FRAMES], solve_us[FRAMES];
+    char path[2048], err[512];
+    int k, n = 0, failed = 0, r;
+    double build_ms;
+    if (load_site(dir, &site, &build_ms) != 0)
+        return 1;
     for (k = 0; k < FRAMES; k++) {
         rl_image img;
-        rl_place_found f;
-        rl_place_prior prior;
-        double r, best_r = HUGE_VAL;
-        int i;
         snprintf(path, sizeof path, "%s/random_%03d.png", dir, k);
         if (rl_png_read_gray(path, &img, err, sizeof err) != RL_OK)
             break;
-        for (i = 0; i < REPEAT; i++) {
-            if (rl_report_run(&hr, &img, &res, &r) != RL_OK)
-                break;
-            best_r = fmin(best_r, r);
-        }
+        r = time_frame(&site, &img, &res, &recog_us[n], &find_us[n], &track_us[n], &solve_us[n]);
         rl_png_free(&img);
-        if (i < REPEAT || rl_place_find(hp.pl, &cam, &mount, res.landmarks, res.n_landmarks, NULL, NULL, &f) != RL_OK) {
+        if (r < 0) {
             failed++;
             continue;
         }
-        {
-            job j = {&map, &hp, &cam, &mount, &res, NULL, &f, 1};
-            find_us[n] = least_us(find, &j);
-            /* tracking: the frame's own place as the last pose, a tenth of a second ago */
-            prior.valid = 1;
-            prior.x = f.x;
-            prior.y = f.y;
-            prior.yaw = f.yaw;
-            prior.age = 0.1;
-            j.prior = &prior;
-            track_us[n] = least_us(find, &j);
-            solve_us[n] = least_us(solve, &j);
-            failed += !j.ok;
-        }
-        recog_us[n] = best_r;
+        failed += r;
         n++;
     }
-    rl_heap_recog_free(&hr);
     if (n == 0) {
         fprintf(stderr, "ringloc-bench: %s: no random_NNN.png frames with a place\n", dir);
-        rl_heap_place_free(&hp);
+        rl_site_free(&site);
         return 1;
     }
     printf("place: a site of %d landmarks (%d ids): index %.1f bytes per landmark (%zu bytes, %ld pairs), built in "
-           "%.0f ms\n", map.count, rl_family_count(&map.family), (double)rl_place_bytes(hp.pl) / map.count,
-           rl_place_bytes(hp.pl), rl_place_pairs(hp.pl), build_ms);
+           "%.0f ms\n", site.map.count, rl_family_count(&site.map.family),
+           (double)rl_place_bytes(site.place.pl) / site.map.count, rl_place_bytes(site.place.pl),
+           rl_place_pairs(site.place.pl), build_ms);
     printf("place: %d frames (%d without a place), median of the least of %d runs: %.1f us per frame with no prior, "
            "%.1f us tracked; the pose solve after it %.1f us; recognition %.0f us (finding the place is %.1f%% of "
            "it)\n", n, failed, REPEAT, rl_bench_median(find_us, n), rl_bench_median(track_us, n), rl_bench_median(solve_us, n),
            rl_bench_median(recog_us, n), 100.0 * rl_bench_median(find_us, n) / rl_bench_median(recog_us, n));
-    rl_heap_place_free(&hp);
+    rl_site_free(&site);
     return 0;
-fail:
-    fprintf(stderr, "ringloc-bench: %s\n", err);
-    return 1;
 }

@@ -11,7 +11,6 @@
  * same core, one after the other, so the ratio holds on any machine.
  */
 #define _GNU_SOURCE
-#include <dirent.h>
 #include <sched.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,12 +18,10 @@
 #include <apriltag/apriltag.h>
 #include <apriltag/tag36h11.h>
 #include "rl_cli.h"
-#include "rl_calibfile.h"
-#include "rl_mapfile.h"
-#include "rl_png.h"
 #include "rl_clock.h"
-#include "rl_robotfile.h"
+#include "rl_png.h"
 #include "rl_report.h"
+#include "rl_site.h"
 #include "bench_real.h"
 #include "bench_site.h"
 #include "bench_stats.h"
@@ -42,78 +39,85 @@ static double least(const double *v, int n)
     return m;
 }
 
-static int cmp_str(const void *a, const void *b)
+/* The twin frames of dir: for every NAME_tag.png, "dir/NAME" (sorted,
+ * at most MAX_FRAMES, malloc'ed) into names; their count, or -1 with the
+ * line printed. */
+static int twin_names(const char *dir, char **names)
 {
-    return strcmp(*(char *const *)a, *(char *const *)b);
+    char **paths, err[512];
+    int n = 0, k, i;
+    if (rl_png_list(dir, &paths, &k, err, sizeof err) != RL_OK) {
+        fprintf(stderr, "ringloc-bench: %s\n", err);
+        return -1;
+    }
+    for (i = 0; i < k; i++) {
+        size_t len = strlen(paths[i]);
+        if (n < MAX_FRAMES && len > 8 && strcmp(paths[i] + len - 8, "_tag.png") == 0)
+            names[n++] = strndup(paths[i], len - 8);
+    }
+    rl_png_list_free(paths, k);
+    return n;
+}
+
+/* One twin frame, each image REPEAT times in a row (warm, as a detector
+ * running frame after frame is), the least run of each: interference from
+ * the rest of the machine only ever adds time, to either. What each found
+ * is added to *found_rl and *found_at, the ring frame's size put in *W, *H.
+ * 0, or 1 with the line printed. */
+static int time_twin(const char *name, rl_heap_recog *hr, apriltag_detector_t *td, double *t_rl, double *t_at,
+                     int *found_rl, int *found_at, int *W, int *H)
+{
+    static rl_result res;
+    rl_image ring, tag;
+    double t[REPEAT], ta[REPEAT];
+    char path[2048], err[512];
+    int k;
+    snprintf(path, sizeof path, "%s.png", name);
+    if (rl_png_read_gray(path, &ring, err, sizeof err) != RL_OK)
+        return fprintf(stderr, "ringloc-bench: %s\n", err), 1;
+    snprintf(path, sizeof path, "%s_tag.png", name);
+    if (rl_png_read_gray(path, &tag, err, sizeof err) != RL_OK)
+        return fprintf(stderr, "ringloc-bench: %s\n", err), 1;
+    *W = ring.width;
+    *H = ring.height;
+    for (k = 0; k < REPEAT; k++)
+        if (rl_report_run(hr, &ring, &res, &t[k]) != RL_OK)
+            return fprintf(stderr, "ringloc-bench: %s: recognition failed\n", strrchr(name, '/') + 1), 1;
+    for (k = 0; k < REPEAT; k++) {
+        image_u8_t im = {tag.width, tag.height, tag.stride, tag.data};
+        double t0 = (double)rl_clock_now_us();
+        zarray_t *dets = apriltag_detector_detect(td, &im);
+        ta[k] = (double)rl_clock_now_us() - t0;
+        if (k == 0)
+            *found_at += zarray_size(dets);
+        apriltag_detections_destroy(dets);
+    }
+    *t_rl = least(t, REPEAT);
+    *t_at = least(ta, REPEAT);
+    *found_rl += res.n_landmarks;
+    rl_png_free(&ring);
+    rl_png_free(&tag);
+    return 0;
 }
 
 static int bench_dir(const char *dir, apriltag_detector_t *td)
 {
     static char *names[MAX_FRAMES];
     static double t_rl[MAX_FRAMES], t_at[MAX_FRAMES];
-    static rl_result res;
-    int n = 0, i, k, found_rl = 0, found_at = 0, W = 0, H = 0;
-    DIR *d = opendir(dir);
-    struct dirent *e;
+    int n, i, found_rl = 0, found_at = 0, W = 0, H = 0;
     rl_recog_config cfg;
     rl_heap_recog hr;
-    char path[2048], err[512];
-    if (!d) {
-        fprintf(stderr, "ringloc-bench: %s: cannot open\n", dir);
+    if ((n = twin_names(dir, names)) < 0)
         return 1;
-    }
-    while ((e = readdir(d)) != NULL && n < MAX_FRAMES) {
-        size_t len = strlen(e->d_name);
-        if (len > 8 && strcmp(e->d_name + len - 8, "_tag.png") == 0) {
-            names[n] = strndup(e->d_name, len - 8);
-            n++;
-        }
-    }
-    closedir(d);
     if (n == 0) {
         fprintf(stderr, "ringloc-bench: %s: no twin frames (NAME.png + NAME_tag.png)\n", dir);
         return 1;
     }
-    qsort(names, (size_t)n, sizeof names[0], cmp_str);
     rl_recog_defaults(&cfg);
     rl_heap_recog_init(&hr, &cfg);
     for (i = 0; i < n; i++) {
-        rl_image ring, tag;
-        double t[REPEAT], ta[REPEAT];
-        snprintf(path, sizeof path, "%s/%s.png", dir, names[i]);
-        if (rl_png_read_gray(path, &ring, err, sizeof err) != RL_OK) {
-            fprintf(stderr, "ringloc-bench: %s\n", err);
+        if (time_twin(names[i], &hr, td, &t_rl[i], &t_at[i], &found_rl, &found_at, &W, &H) != 0)
             return 1;
-        }
-        snprintf(path, sizeof path, "%s/%s_tag.png", dir, names[i]);
-        if (rl_png_read_gray(path, &tag, err, sizeof err) != RL_OK) {
-            fprintf(stderr, "ringloc-bench: %s\n", err);
-            return 1;
-        }
-        W = ring.width;
-        H = ring.height;
-        /* each REPEAT times in a row (warm, as a detector running frame
-         * after frame is), the least run of each: interference from the
-         * rest of the machine only ever adds time, to either */
-        for (k = 0; k < REPEAT; k++)
-            if (rl_report_run(&hr, &ring, &res, &t[k]) != RL_OK) {
-                fprintf(stderr, "ringloc-bench: %s: recognition failed\n", names[i]);
-                return 1;
-            }
-        for (k = 0; k < REPEAT; k++) {
-            image_u8_t im = {tag.width, tag.height, tag.stride, tag.data};
-            double t0 = (double)rl_clock_now_us();
-            zarray_t *dets = apriltag_detector_detect(td, &im);
-            ta[k] = (double)rl_clock_now_us() - t0;
-            if (k == 0)
-                found_at += zarray_size(dets);
-            apriltag_detections_destroy(dets);
-        }
-        t_rl[i] = least(t, REPEAT);
-        t_at[i] = least(ta, REPEAT);
-        found_rl += res.n_landmarks;
-        rl_png_free(&ring);
-        rl_png_free(&tag);
         free(names[i]);
     }
     {
@@ -193,22 +197,25 @@ static int bench_pose(const char *dir)
 {
     static const char *kinds[] = {"straight", "rect", "circle"};
     static rl_result res;
-    static rl_map map;
+    static rl_site site;
+    static char map[2048], camera[2048], robot[2048];
     static double pose_us[MAX_FRAMES], recog_us[MAX_FRAMES];
-    rl_calib cam;
-    rl_mount mount;
+    rl_site_files files;
     rl_recog_config cfg;
-    rl_heap_recog hr;
-    char path[2048], err[512];
+    char path[2048], err[768];
     int q, k, n = 0, solved = 0;
-    snprintf(path, sizeof path, "%s/map.yaml", dir);
-    if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK) goto fail;
-    snprintf(path, sizeof path, "%s/camera.yaml", dir);
-    if (rl_calibfile_load(path, &cam, err, sizeof err) != RL_OK) goto fail;
-    snprintf(path, sizeof path, "%s/robot.yaml", dir);
-    if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK) goto fail;
+    snprintf(map, sizeof map, "%s/map.yaml", dir);
+    snprintf(camera, sizeof camera, "%s/camera.yaml", dir);
+    snprintf(robot, sizeof robot, "%s/robot.yaml", dir);
+    rl_site_files_init(&files);
+    files.map = map;
+    files.calibration = camera;
+    files.robot = robot;
     rl_recog_defaults(&cfg);
-    rl_heap_recog_init(&hr, &cfg);
+    if (rl_site_load(&site, &files, err, sizeof err) != RL_OK || rl_site_prepare(&site, &cfg, err, sizeof err) != RL_OK) {
+        fprintf(stderr, "ringloc-bench: %s\n", err);
+        return 1;
+    }
     for (q = 0; q < 3; q++)
         for (k = 0; k < MAX_FRAMES && n < MAX_FRAMES; k++) {
             rl_image img;
@@ -220,11 +227,12 @@ static int bench_pose(const char *dir)
                 break;
             for (i = 0; i < REPEAT; i++) {
                 uint64_t a;
-                if (rl_report_run(&hr, &img, &res, &r[i]) != RL_OK)
+                if (rl_report_run(&site.recog, &img, &res, &r[i]) != RL_OK)
                     break;
                 a = rl_clock_now_us();
                 for (j = 0; j < 20; j++)
-                    bad |= rl_pose_solve(&cam, &map, &mount, res.landmarks, res.n_landmarks, NULL, &pose) != RL_OK;
+                    bad |= rl_pose_solve(&site.calib, &site.map, &site.mount, res.landmarks, res.n_landmarks, NULL,
+                                         &pose) != RL_OK;
                 t[i] = (double)(rl_clock_now_us() - a) / 20.0;
             }
             rl_png_free(&img);
@@ -235,7 +243,7 @@ static int bench_pose(const char *dir)
             recog_us[n] = least(r, REPEAT);
             n++;
         }
-    rl_heap_recog_free(&hr);
+    rl_site_free(&site);
     if (n == 0) {
         fprintf(stderr, "ringloc-bench: %s: no drive frames (straight/rect/circle_NNN.png)\n", dir);
         return 1;
@@ -244,9 +252,6 @@ static int bench_pose(const char *dir)
            "%.0f%% of the same frames' recognition (%.1f us)\n", n, solved, rl_bench_median(pose_us, n), REPEAT,
            100.0 * rl_bench_median(pose_us, n) / rl_bench_median(recog_us, n), rl_bench_median(recog_us, n));
     return 0;
-fail:
-    fprintf(stderr, "ringloc-bench: %s\n", err);
-    return 1;
 }
 
 int main(int argc, char **argv)

@@ -13,8 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "rl_cli.h"
-#include "rl_mapfile.h"
 #include "rl_print.h"
+#include "rl_site.h"
 #include "rl_yaml.h"
 
 #define MAX_FRAMES 4096
@@ -28,10 +28,16 @@ typedef struct {
 
 static row rows[MAX_FRAMES];
 
+/* The number after key in a JSON line, or NaN when there is none. */
 static double field(const char *line, const char *key)
 {
     const char *p = strstr(line, key);
-    return p ? atof(p + strlen(key)) : NAN;
+    char *end;
+    double v;
+    if (p == NULL)
+        return NAN;
+    v = strtod(p + strlen(key), &end);
+    return end == p + strlen(key) ? NAN : v;
 }
 
 static int load_truth(const char *dir, row *r)
@@ -120,24 +126,18 @@ static void plot(const char *path, const rl_map *map, int n)
         fprintf(stderr, "ringloc-demo-report: %s\n", err);
 }
 
-int main(int argc, char **argv)
+/* The frames FRAMES.txt lists, each with its truth; their count, or -1
+ * (the line printed). */
+static int read_frames(const char *path)
 {
     FILE *f;
-    char line[1024], dir[1024], err[512];
-    static rl_map map;
-    int n = 0, i, poses = 0, statuses = 0, used = 0;
-    double pos = 0, yaw = 0, worst = 0, lat = 0;
-    const char *slash;
-    rl_cli_start("ringloc-demo-report");
-    if (argc != 5) {
-        fprintf(stderr, "usage: ringloc-demo-report FRAMES.txt POSES.jsonl MAP.yaml PLOT.png\n");
-        return 2;
-    }
-    slash = strrchr(argv[1], '/');
-    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - argv[1]) : 1, slash ? argv[1] : ".");
-    if ((f = fopen(argv[1], "r")) == NULL) {
-        fprintf(stderr, "ringloc-demo-report: %s: cannot open\n", argv[1]);
-        return 1;
+    char line[1024], dir[1024];
+    const char *slash = strrchr(path, '/');
+    int n = 0;
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path) : 1, slash ? path : ".");
+    if ((f = fopen(path, "r")) == NULL) {
+        fprintf(stderr, "ringloc-demo-report: %s: cannot open\n", path);
+        return -1;
     }
     while (n < MAX_FRAMES && fgets(line, sizeof line, f)) {
         char *b = strrchr(line, '/');
@@ -147,22 +147,29 @@ int main(int argc, char **argv)
         snprintf(rows[n].name, sizeof rows[n].name, "%.200s", b ? b + 1 : line);
         rows[n].name[strcspn(rows[n].name, ".")] = '\0';
         if (b) { *b = '\0'; snprintf(dir, sizeof dir, "%s", line); }
-        if (load_truth(dir, &rows[n]) != 0)
-            return 1;
+        if (load_truth(dir, &rows[n]) != 0) {
+            fclose(f);
+            return -1;
+        }
         n++;
     }
     fclose(f);
-    if (rl_mapfile_load(argv[3], &map, err, sizeof err) != RL_OK) {
-        fprintf(stderr, "ringloc-demo-report: %s\n", err);
-        return 1;
-    }
-    if ((f = fopen(argv[2], "r")) == NULL) {
-        fprintf(stderr, "ringloc-demo-report: %s: cannot open\n", argv[2]);
-        return 1;
+    return n;
+}
+
+/* What monitor decoded: seq n's pose or status into frame n. 0, or -1. */
+static int read_poses(const char *path, int n)
+{
+    FILE *f;
+    char line[1024];
+    if ((f = fopen(path, "r")) == NULL) {
+        fprintf(stderr, "ringloc-demo-report: %s: cannot open\n", path);
+        return -1;
     }
     while (fgets(line, sizeof line, f)) {
-        int seq = (int)field(line, "\"seq\": ");
-        if (seq < 0 || seq >= n)
+        double s = field(line, "\"seq\": ");
+        int seq = s >= 0 && s < n ? (int)s : -1;
+        if (seq < 0)
             continue;
         if (strstr(line, "\"type\": \"pose\"")) {
             rows[seq].have_pose = 1;
@@ -176,6 +183,14 @@ int main(int argc, char **argv)
         }
     }
     fclose(f);
+    return 0;
+}
+
+/* A line per frame and the summary; the number of poses. */
+static int print_report(int n)
+{
+    int i, poses = 0, statuses = 0, used = 0;
+    double pos = 0, yaw = 0, worst = 0, lat = 0;
     printf("%-16s %4s %9s %9s %8s   %9s %9s %8s   %7s %7s\n", "frame", "lms", "x", "y", "yaw_deg",
            "true_x", "true_y", "true_deg", "err_mm", "err_deg");
     for (i = 0; i < n; i++) {
@@ -203,6 +218,31 @@ int main(int argc, char **argv)
         printf("mean position error %.1f mm (worst %.1f mm), mean yaw error %.3f deg, mean latency %.1f ms\n",
                1000 * pos / poses, 1000 * worst, yaw / poses * 180 / M_PI, lat / poses);
     printf("(the paper's system: 20.2 mm and 0.5 deg)\n");
-    plot(argv[4], &map, n);
+    return poses;
+}
+
+int main(int argc, char **argv)
+{
+    static rl_site site;
+    rl_site_files files;
+    char err[768];
+    int n, poses;
+    rl_cli_start("ringloc-demo-report");
+    if (argc != 5) {
+        fprintf(stderr, "usage: ringloc-demo-report FRAMES.txt POSES.jsonl MAP.yaml PLOT.png\n");
+        return 2;
+    }
+    if ((n = read_frames(argv[1])) < 0)
+        return 1;
+    rl_site_files_init(&files);
+    files.map = argv[3];
+    if (rl_site_load(&site, &files, err, sizeof err) != RL_OK) {
+        fprintf(stderr, "ringloc-demo-report: %s\n", err);
+        return 1;
+    }
+    if (read_poses(argv[2], n) != 0)
+        return 1;
+    poses = print_report(n);
+    plot(argv[4], &site.map, n);
     return poses == n ? 0 : 1;
 }

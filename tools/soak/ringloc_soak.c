@@ -21,12 +21,11 @@
 #include <string.h>
 #include <unistd.h>
 #include "rl_cli.h"
-#include "rl_calibfile.h"
+#include "rl_cli_num.h"
 #include "rl_clock.h"
-#include "rl_heap_recog.h"
-#include "rl_mapfile.h"
-#include "rl_robotfile.h"
+#include "rl_packet_sink.h"
 #include "rl_run.h"
+#include "rl_site.h"
 
 /* ---- heap calls, counted once the loop has started ---- */
 static volatile int counting;
@@ -127,113 +126,173 @@ static long rss_kb(void)
     return rss * (sysconf(_SC_PAGESIZE) / 1024);
 }
 
-int main(int argc, char **argv)
+/* The command line: 0 to go on, or the exit code (its line printed). */
+static int soak_args(int argc, char **argv, long *frames, double *every, const char **dir)
 {
     static const struct option opts[] = {{"frames", required_argument, 0, 'n'},
                                          {"reopen-every", required_argument, 0, 'r'},
                                          {"help", no_argument, 0, 'h'},
                                          {0, 0, 0, 0}};
-    static rl_map map;
-    static rl_result res;
-    static rl_runner runner;
-    static line_double line;
-    static char path[4096], err[512], list[4096];
-    rl_calib calib;
-    rl_mount mount;
-    rl_recog_config cfg;
-    rl_heap_recog hr;
-    rl_cam_config cc;
-    rl_run_io io;
-    long frames = 200000, rss_start = 0, rss_end, i, empty = 0;
-    double every = 3.0, t0, t1;
-    int c, bad = 0;
-    const char *dir;
-    rl_cli_start("ringloc-soak");
+    int c;
     while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
         switch (c) {
-        case 'n': frames = atol(optarg); break;
-        case 'r': every = atof(optarg); break;
+        case 'n':
+            if (!rl_cli_long(NULL, "--frames", optarg, 20000, 2000000000L, frames))
+                return 2;
+            break;
+        case 'r':
+            if (!rl_cli_double(NULL, "--reopen-every", optarg, 0.5, 3600, every))
+                return 2;
+            break;
         case 'h': fputs("usage: ringloc-soak [--frames 200000] [--reopen-every 3] SITE_DIR\n", stdout); return 0;
         default: return 2;
         }
     }
-    if (optind != argc - 1 || frames < 20000 || !(every > 0.5 && every < 3600)) {
+    if (optind != argc - 1) {
         fprintf(stderr, "ringloc-soak: give SITE_DIR (--frames >= 20000, --reopen-every 0.5 .. 3600 s)\n");
         return 2;
     }
-    dir = argv[optind];
-    snprintf(path, sizeof path, "%s/map.yaml", dir);
-    if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK) goto fail;
-    snprintf(path, sizeof path, "%s/camera.yaml", dir);
-    if (rl_calibfile_load(path, &calib, err, sizeof err) != RL_OK) goto fail;
-    snprintf(path, sizeof path, "%s/robot.yaml", dir);
-    if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK) goto fail;
+    *dir = argv[optind];
+    return -1;
+}
+
+/* SITE_DIR's map, camera and robot, and the recognizer for them. */
+static int soak_site(const char *dir, rl_site *site)
+{
+    static char map[4096], camera[4096], robot[4096];
+    char err[768];
+    rl_site_files files;
+    rl_recog_config cfg;
+    snprintf(map, sizeof map, "%s/map.yaml", dir);
+    snprintf(camera, sizeof camera, "%s/camera.yaml", dir);
+    snprintf(robot, sizeof robot, "%s/robot.yaml", dir);
+    rl_site_files_init(&files);
+    files.map = map;
+    files.calibration = camera;
+    files.robot = robot;
     rl_recog_defaults(&cfg);
-    rl_heap_recog_init_map(&hr, &cfg, &map);
-    if (rl_heap_recog_prepare(&hr, calib.width, calib.height) != RL_OK) {
-        snprintf(err, sizeof err, "cannot make the recognizer for %dx%d", calib.width, calib.height);
-        goto fail;
-    }
+    if (rl_site_load(site, &files, err, sizeof err) != RL_OK || rl_site_prepare(site, &cfg, err, sizeof err) != RL_OK)
+        return rl_cli_fail(NULL, 1, "%s", err);
+    return 0;
+}
+
+/* The loop's seams: the PNG camera on dir's frames, looping, as fast as
+ * it can; the serial line that goes away (its packets through
+ * rl_packet_sink); log lines counted by kind. */
+static void soak_io(const char *dir, double every, line_double *line, rl_run_io *io)
+{
+    static char list[4096];
+    static rl_cam_config cc;
+    static rl_run_camera cam;
+    static rl_packet_sink packets;
+    static rl_packet_line pl;
     snprintf(list, sizeof list, "%s", dir);
     rl_cam_defaults(&cc);
     cc.backend = "png";
     cc.device = list;
     cc.loop = 1;
     cc.rate = 0;
-    memset(&io, 0, sizeof io);
-    io.cam = &cc;
-    io.clock = rl_clock_system();
-    io.log = log_kind;
-    line.period_us = (uint64_t)(every * 1e6);
-    io.out.open = line_open;
-    io.out.write = line_write;
-    io.out.close = line_close;
-    io.out.ctx = &line;
-    rl_run_init(&runner, &io, hr.rec, &calib, &map, &mount, &res);
-    runner.log_interval_us = 0; /* every line, for its kind */
-    t0 = (double)rl_clock_now_us();
-    for (i = 0; runner.frames < frames; i++) {
-        if (rl_run_step(&runner) == RL_ENOTFOUND) {
-            snprintf(err, sizeof err, "%s: the camera ended", dir);
-            goto fail;
-        }
-        if (runner.frames == 100)
+    memset(io, 0, sizeof *io);
+    io->source = rl_run_camera_source(&cam, &cc);
+    io->clock = rl_clock_system();
+    io->log = log_kind;
+    line->period_us = (uint64_t)(every * 1e6);
+    memset(&pl, 0, sizeof pl);
+    pl.open = line_open;
+    pl.write = line_write;
+    pl.close = line_close;
+    pl.ctx = line;
+    io->sink = rl_packet_sink_make(&packets, &pl);
+}
+
+/* What the run measured. */
+typedef struct {
+    double t0, t1;            /* clock at the start and end, us */
+    long rss_start, rss_end;  /* kB at frame 10,000 and at the last */
+} soak_figures;
+
+/* Run the loop for `frames` frames, counting heap calls after start-up.
+ * 0, or 1 when the camera ended. */
+static int soak_run(rl_runner *runner, long frames, const char *dir, soak_figures *f)
+{
+    const rl_run_counts *n = rl_run_counts_of(runner);
+    long i;
+    f->rss_start = 0;
+    f->t0 = (double)rl_clock_now_us();
+    for (i = 0; n->frames < frames; i++) {
+        if (rl_run_step(runner) == RL_ENOTFOUND)
+            return rl_cli_fail(NULL, 1, "%s: the camera ended", dir);
+        if (n->frames == 100)
             counting = 1; /* start-up is over: the camera is open, the line up */
-        if (runner.frames == 10000 && rss_start == 0)
-            rss_start = rss_kb();
-        if (runner.frames % 20000 == 0 && runner.frames > 0 && i > 0)
-            fprintf(stderr, "ringloc-soak: %ld of %ld frames\r", runner.frames, frames);
+        if (n->frames == 10000 && f->rss_start == 0)
+            f->rss_start = rss_kb();
+        if (n->frames % 20000 == 0 && n->frames > 0 && i > 0)
+            fprintf(stderr, "ringloc-soak: %ld of %ld frames\r", n->frames, frames);
     }
     counting = 0;
-    t1 = (double)rl_clock_now_us();
-    rss_end = rss_kb();
-    rl_run_close(&runner);
-    fprintf(stderr, "\n");
-    printf("frames               %ld in %.1f s, %.0f per second (poses %ld, status %ld)\n", runner.frames,
-           (t1 - t0) / 1e6, runner.frames / ((t1 - t0) / 1e6), runner.poses, runner.statuses);
+    f->t1 = (double)rl_clock_now_us();
+    f->rss_end = rss_kb();
+    return 0;
+}
+
+/* The figures, and the verdict: 1 when a heap call happened after
+ * start-up, RSS grew by 1% or more, or a reopening delivered no frame. */
+static int soak_report(const rl_runner *runner, const line_double *line, const soak_figures *f)
+{
+    const rl_run_counts *n = rl_run_counts_of(runner);
+    long i, empty = 0;
+    int bad = 0;
+    double secs = (f->t1 - f->t0) / 1e6;
+    printf("frames               %ld in %.1f s, %.0f per second (poses %ld, status %ld)\n", n->frames, secs,
+           n->frames / secs, n->poses, n->statuses);
     printf("heap calls           %ld after start-up (%.4f per frame)\n", heap_calls,
-           (double)heap_calls / (double)runner.frames);
-    printf("RSS                  %ld kB at frame 10,000, %ld kB at the last (%+.2f%%)\n", rss_start,
-           rss_end, 100.0 * (double)(rss_end - rss_start) / (double)rss_start);
-    printf("serial reopenings    %ld; frames delivered after each:", line.reopens);
-    for (i = 0; i < line.reopens && i < MAX_REOPENS; i++) {
-        if (i < 12 || i == line.reopens - 1)
-            printf(" %ld", line.delivered[i]);
+           (double)heap_calls / (double)n->frames);
+    printf("RSS                  %ld kB at frame 10,000, %ld kB at the last (%+.2f%%)\n", f->rss_start,
+           f->rss_end, 100.0 * (double)(f->rss_end - f->rss_start) / (double)f->rss_start);
+    printf("serial reopenings    %ld; frames delivered after each:", line->reopens);
+    for (i = 0; i < line->reopens && i < MAX_REOPENS; i++) {
+        if (i < 12 || i == line->reopens - 1)
+            printf(" %ld", line->delivered[i]);
         else if (i == 12)
             printf(" ...");
         /* the last one may be cut short by the end of the run */
-        empty += line.delivered[i] == 0 && i < line.reopens - 1;
+        empty += line->delivered[i] == 0 && i < line->reopens - 1;
     }
     printf("\nlog line kinds      ");
     for (i = 0; i < n_kinds; i++)
         printf(" \"%s\" x%ld%s", kinds[i], kind_count[i], i + 1 < n_kinds ? "," : "");
     printf("\n");
     if (heap_calls > 0) { printf("FAIL: heap calls after start-up\n"); bad = 1; }
-    if (rss_start <= 0 || rss_end > rss_start * 1.01) { printf("FAIL: RSS grew by 1%% or more\n"); bad = 1; }
-    if (line.reopens < 2 || empty > 0) { printf("FAIL: %ld reopenings delivered no frame\n", empty); bad = 1; }
-    rl_heap_recog_free(&hr);
+    if (f->rss_start <= 0 || f->rss_end > f->rss_start * 1.01) { printf("FAIL: RSS grew by 1%% or more\n"); bad = 1; }
+    if (line->reopens < 2 || empty > 0) { printf("FAIL: %ld reopenings delivered no frame\n", empty); bad = 1; }
     return bad;
-fail:
-    fprintf(stderr, "ringloc-soak: %s\n", err);
-    return 1;
+}
+
+int main(int argc, char **argv)
+{
+    static rl_site site;
+    static rl_result res;
+    static rl_runner runner;
+    static line_double line;
+    rl_run_config rc;
+    rl_run_io io;
+    soak_figures fig = {0, 0, 0, 0};
+    long frames = 200000;
+    double every = 3.0;
+    const char *dir = NULL;
+    int r;
+    rl_cli_start("ringloc-soak");
+    if ((r = soak_args(argc, argv, &frames, &every, &dir)) >= 0 || (r = soak_site(dir, &site)) != 0)
+        return r;
+    soak_io(dir, every, &line, &io);
+    rl_run_defaults(&rc);
+    rc.log_interval_us = 0; /* every line, for its kind */
+    rl_run_init(&runner, &rc, &io, &site, &res);
+    if ((r = soak_run(&runner, frames, dir, &fig)) != 0)
+        return r;
+    rl_run_close(&runner);
+    fprintf(stderr, "\n");
+    r = soak_report(&runner, &line, &fig);
+    rl_site_free(&site);
+    return r;
 }
