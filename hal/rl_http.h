@@ -33,7 +33,7 @@
 typedef struct {
     const char *listen;      /* "ADDR:PORT" (rl_listen.h) */
     const char *token;       /* access token; "" or NULL: none */
-    int max_clients;         /* connections at once (default 8) */
+    int max_clients;         /* connections at once (default 16: a browser keeps a few open) */
     int timeout_s;           /* an idle connection is closed after this (default 10) */
     size_t max_request;      /* bytes of one request's line and headers (default 8192) */
 } rl_http_config;

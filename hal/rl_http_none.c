@@ -9,7 +9,7 @@ void rl_http_defaults(rl_http_config *c)
 {
     memset(c, 0, sizeof *c);
     c->token = "";
-    c->max_clients = 8;
+    c->max_clients = 16;
     c->timeout_s = 10;
     c->max_request = 8192;
 }

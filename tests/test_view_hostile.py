@@ -1,18 +1,20 @@
 #!/usr/bin/env python3
 """Nothing on the robot gets worse with the web view (issue 29). The same
-120 frames (the rendered rect drive at 15 frames a second) three times:
-  A  without the web view;
+120 frames (the rendered rect drive at 15 frames a second), four times:
+  A  without the web view (and A2, again after B);
   B  with it (--http), the page open in two headless Chromiums throughout;
   C  with it (ringloc.yaml's http: {listen, token}) under hostile clients:
      an oversized header, slowloris clients, 100 connections at once, bad
      paths, methods, numbers and tokens, and garbage bytes.
 Every run must send every pose frame, B's and C's equal to A's (all but
 their times), the bad requests must get their 4xx (or be closed), never a
-crash, and the server must answer again once the attack is over; with
+crash, the server must hold no more than its bound of connections and
+answer again once the attack is over; with
 the pages open, the median latency is within 10% of A's (A run before and
 after B, the slower of the two: CI's cores are shared; from frame 45 on,
 when the browsers, on the same cores in CI but not on a robot, have
-started). Prints the runs' latencies.
+started; measured once more before failing, a neighbour's burst on CI's
+shared cores not being ours). Prints the runs' latencies.
 
 usage: test_view_hostile.py RINGLOC PATHS_DIR TMPDIR"""
 import os
@@ -126,8 +128,11 @@ def attack(port, fw, ck):
         ck.check(got in ok, "%s: answered %d, expected one of %s" % (what, got, sorted(ok)))
     threads = [threading.Thread(target=slowloris, args=(port, 20, stop)),
                threading.Thread(target=flood, args=(port, 100, flooded))]
-    for t in threads:
-        t.start()
+    threads[0].start()
+    time.sleep(0.5)  # 20 slowloris clients: more than the server's 16 at once
+    got = status_of(GOOD[0][1], port, 1.0)
+    ck.check(got == 0, "with every connection taken, one more was answered %d: no bound on clients" % got)
+    threads[1].start()
     threads[1].join()
     stop.set()
     threads[0].join()
@@ -161,50 +166,73 @@ def with_browsers(port, drivers):
     return during
 
 
+def measure(ringloc, tmp, paths_dir, names):
+    """A, then B with two pages open, then A again: the pose frames and the
+    pages' frame counts."""
+    runs = {}
+    cfg = vl.write_config(tmp, paths_dir, names, "A.bin")
+    runs["A"], _ = run(ringloc, tmp, cfg, "A")
+    drivers = [vl.chromium(1024, 768, tmp), vl.chromium(1024, 768, tmp)]
+    try:
+        port = vl.free_port()
+        cfg = vl.write_config(tmp, paths_dir, names, "B.bin")
+        runs["B"], updates = run(ringloc, tmp, cfg, "B", "127.0.0.1:%d" % port, with_browsers(port, drivers))
+    finally:
+        for d in drivers:
+            d.quit()
+    cfg = vl.write_config(tmp, paths_dir, names, "A2.bin")
+    runs["A2"], _ = run(ringloc, tmp, cfg, "A2")
+    return runs, updates
+
+
+def latencies(got):
+    late = [p["latency_ms"] for p in got if p["type"] == "pose"][SETTLED:FRAMES]
+    return (statistics.mean(late), statistics.median(late)) if late else (0.0, 0.0)
+
+
+def latency_ok(runs):
+    """The median, 10% and the latency field's resolution, against the
+    slower of the runs without: CI's cores are shared."""
+    lat = {tag: latencies(got) for tag, got in runs.items()}
+    return lat["B"][1] <= 1.10 * max(lat["A"][1], lat["A2"][1]) + 0.2, lat
+
+
 def main():
     ringloc, paths_dir, tmp = sys.argv[1:4]
     vl.browser_or_skip()
     os.makedirs(tmp, exist_ok=True)
     names = vl.frames_of(paths_dir)
     ck = vl.Checks()
-    cfg_a = vl.write_config(tmp, paths_dir, names, "A.bin")
-    base, _ = run(ringloc, tmp, cfg_a, "A")
-    drivers = [vl.chromium(1024, 768, tmp), vl.chromium(1024, 768, tmp)]
-    try:
-        port = vl.free_port()
-        cfg_b = vl.write_config(tmp, paths_dir, names, "B.bin")
-        seen, updates = run(ringloc, tmp, cfg_b, "B", "127.0.0.1:%d" % port, with_browsers(port, drivers))
-    finally:
-        for d in drivers:
-            d.quit()
-    cfg_a = vl.write_config(tmp, paths_dir, names, "A2.bin")
-    base2, _ = run(ringloc, tmp, cfg_a, "A2")
+    runs, updates = measure(ringloc, tmp, paths_dir, names)
+    ok, lat = latency_ok(runs)
+    if not ok:  # once more: a neighbour's burst on CI's shared cores is not ours
+        print("latency with two pages open %.2f ms, without %.2f/%.2f ms (median): measuring again"
+              % (lat["B"][1], lat["A"][1], lat["A2"][1]))
+        runs, updates = measure(ringloc, tmp, paths_dir, names)
+        ok, lat = latency_ok(runs)
+    ck.check(ok, "latency with two pages open %.2f ms, without %.2f/%.2f ms (median)"
+             % (lat["B"][1], lat["A"][1], lat["A2"][1]))
     port = vl.free_port()
     cfg_c = vl.write_config(tmp, paths_dir, names, "C.bin")
     with open(cfg_c, "a") as f:
         f.write("http: {listen: 127.0.0.1:%d, token: %s}\n" % (port, TOKEN))
-    hostile, flooded = run(ringloc, tmp, cfg_c, "C", None, lambda fw: (vl.wait_http(port, fw), attack(port, fw, ck))[1],
-                          ATTACKED)
+    runs["C"], flooded = run(ringloc, tmp, cfg_c, "C", None,
+                             lambda fw: (vl.wait_http(port, fw), attack(port, fw, ck))[1], ATTACKED)
+    lat["C"] = latencies(runs["C"])
     ck.check(all(u >= 6 for u in updates), "the two pages drew %s frames (they were not live)" % updates)
-    lat = {}
-    for tag, got, n in (("A", base, FRAMES), ("A2", base2, FRAMES), ("B", seen, FRAMES), ("C", hostile, ATTACKED)):
+    for tag, n in (("A", FRAMES), ("A2", FRAMES), ("B", FRAMES), ("C", ATTACKED)):
+        got = runs[tag]
         poses = [p for p in got if p["type"] == "pose"]
         ck.check(len(poses) == n and len(got) == n, "run %s: %d pose frames (%d frames in all) for %d frames"
                  % (tag, len(poses), len(got), n))
-        late = [p["latency_ms"] for p in poses[SETTLED:FRAMES]]
-        lat[tag] = (statistics.mean(late), statistics.median(late)) if late else (0, 0)
         if tag != "A":
-            same = sum(vl.same_pose(a, b) for a, b in zip(base, got[:FRAMES]))
+            same = sum(vl.same_pose(a, b) for a, b in zip(runs["A"], got[:FRAMES]))
             ck.check(same == FRAMES, "run %s: %d of %d pose frames equal to those without the view" % (tag, same, FRAMES))
-    # the median, 10% and the latency field's resolution: CI's cores are shared
-    without = max(lat["A"][1], lat["A2"][1])
-    ck.check(lat["B"][1] <= 1.10 * without + 0.2, "latency with two pages open %.2f ms, without %.2f ms (median)"
-             % (lat["B"][1], without))
     print("pose frames: A %d, A2 %d, B %d, C %d; latency mean/median A %.2f/%.2f ms, A2 %.2f/%.2f ms, "
           "B (two pages open) %.2f/%.2f ms, C (attacked) %.2f/%.2f ms; pages drew %s frames; "
           "flood: %d connections, %d answered 200"
-          % (len(base), len(base2), len(seen), len(hostile), lat["A"][0], lat["A"][1], lat["A2"][0], lat["A2"][1],
-             lat["B"][0], lat["B"][1], lat["C"][0], lat["C"][1], updates, flooded[0], flooded[1]))
+          % (len(runs["A"]), len(runs["A2"]), len(runs["B"]), len(runs["C"]), lat["A"][0], lat["A"][1], lat["A2"][0],
+             lat["A2"][1], lat["B"][0], lat["B"][1], lat["C"][0], lat["C"][1], updates, flooded[0], flooded[1]))
     return ck.done()
 
 
