@@ -25,6 +25,8 @@ install(FILES ${CMAKE_BINARY_DIR}/package/ringloc.service DESTINATION /lib/syste
         COMPONENT firmware)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/../shared/landmark-spec.md
         DESTINATION share/doc/ringloc OPTIONAL COMPONENT firmware)
+# the web view's drop-in for the unit (network for http:), copied by hand
+install(FILES ${PROJECT_SOURCE_DIR}/package/ringloc-web.conf DESTINATION share/doc/ringloc COMPONENT firmware)
 install(TARGETS ringloc RUNTIME DESTINATION bin COMPONENT tools)
 
 set(CPACK_GENERATOR DEB)
