@@ -42,12 +42,16 @@ def sample_page(drv, seconds):
     return samples
 
 
+WORST = {"label_px": 0.0, "serial_m": 0.0}
+
+
 def check_labels(ck, s, paths_dir, names):
     t = vl.truth(paths_dir, names[s["frame"] % len(names)])
     where = {lm["id"]: lm for lm in t["landmarks"]}
     for lab, mark in zip(s["labels"], s["marks"]):
         lm = where.get(lab["id"])
         d = math.hypot(lab["x"] - lm["u"], lab["y"] - lm["v"]) if lm else 1e9
+        WORST["label_px"] = max(WORST["label_px"], d)
         ck.check(d <= 2.0, "frame %d: id %d drawn at (%.2f, %.2f), %.2f px from the renderer's"
                  % (s["frame"], lab["id"], lab["x"], lab["y"], d))
         ck.check(mark, "frame %d: no centre marker on the canvas at id %d" % (s["frame"], lab["id"]))
@@ -65,6 +69,7 @@ def check_pose(ck, s, poses, paths_dir, names):
              % (s["frame"], s["t_ms"], len(sent)))
     if sent:
         d = math.hypot(p["x"] - sent[0]["x"], p["y"] - sent[0]["y"])
+        WORST["serial_m"] = max(WORST["serial_m"], d)
         ck.check(d <= 0.01 and abs(p["yaw"] - sent[0]["yaw"]) <= 0.001,
                  "frame %d: page pose %s vs serial %s" % (s["frame"], p, sent[0]))
     t = vl.truth(paths_dir, names[s["frame"] % len(names)])
@@ -136,8 +141,10 @@ def main():
         labels += check_labels(ck, s, paths_dir, names)
         worst = max(worst, check_pose(ck, s, poses, paths_dir, names))
     check_counters(ck, last)
-    print("view: %d samples, %d ids checked, %.2f updates/s, pose within %.4f m of the truth, %d pose frames; "
-          "screenshot %s" % (len(samples), labels, rate, worst, len(poses), os.path.join(tmp, "view.png")))
+    print("view: %d samples, %d ids checked (at most %.2f px from the renderer's), %.2f updates/s, pose within "
+          "%.4f m of the serial line's and %.4f m of the truth, %d pose frames; screenshot %s"
+          % (len(samples), labels, WORST["label_px"], rate, WORST["serial_m"], worst, len(poses),
+             os.path.join(tmp, "view.png")))
     return ck.done()
 
 
