@@ -10,6 +10,8 @@
 # Raspberry Pi OS); otherwise it prints the exact apt-get line and fails.
 # fuzz: clang and its libFuzzer runtime, libpng and libyaml only.
 # asan: the host's packages and clang (the sanitizer test build).
+# host and asan include Chromium, its driver and python3-selenium: the web
+# view's tests drive a real browser (test_view_page, test_view_hostile).
 # --check only reports. Called first by `make host`, `make host-test`,
 # `make demo` and `make bench`.
 set -eu
