@@ -2,6 +2,7 @@
 
 #include <stdio.h>
 #include <string.h>
+#include "rl_cam_backends.h"
 
 void rl_cam_defaults(rl_cam_config *cc)
 {
@@ -11,27 +12,27 @@ void rl_cam_defaults(rl_cam_config *cc)
     cc->rate = 10.0;
 }
 
-/* The backends by name: how each opens and describes its device. */
+/* How each backend opens and describes its device, in the order of
+ * rl_cam_backend_names. */
 typedef rl_err (*probe_fn)(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx, char *err, size_t errlen);
 static const struct {
-    const char *name;
     rl_cam_open_fn open;
     probe_fn probe;
-} backends[] = {
-    {"png", rl_cam_open_png, rl_cam_probe_png},
-    {"v4l2", rl_cam_open_v4l2, rl_cam_probe_v4l2},
-    {"libcamera", rl_cam_open_libcamera, rl_cam_probe_libcamera},
+} backends[RL_CAM_BACKEND_COUNT] = {
+    {rl_cam_open_png, rl_cam_probe_png},
+    {rl_cam_open_v4l2, rl_cam_probe_v4l2},
+    {rl_cam_open_libcamera, rl_cam_probe_libcamera},
 };
 
 /* The backend cc names (none: png), or -1 with err saying so. */
 static int backend(const rl_cam_config *cc, char *err, size_t errlen)
 {
-    int i;
-    for (i = 0; i < (int)(sizeof backends / sizeof backends[0]); i++)
-        if (cc->backend == NULL ? i == 0 : strcmp(cc->backend, backends[i].name) == 0)
-            return i;
-    snprintf(err, errlen, "camera backend '%s' is not png, v4l2 or libcamera", cc->backend);
-    return -1;
+    char names[64];
+    int i = cc->backend == NULL ? 0 : rl_cam_backend_find(cc->backend);
+    if (i < 0)
+        snprintf(err, errlen, "camera backend '%s' is not %s", cc->backend,
+                 rl_cam_backend_list(names, sizeof names));
+    return i;
 }
 
 rl_err rl_cam_open(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen)
@@ -39,8 +40,6 @@ rl_err rl_cam_open(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen)
     int b;
     memset(c, 0, sizeof *c);
     snprintf(c->name, sizeof c->name, "%s", cc->device ? cc->device : "");
-    if (cc->open != NULL)
-        return cc->open(c, cc, err, errlen);
     if ((b = backend(cc, err, errlen)) < 0)
         return RL_EUNSUPPORTED;
     return backends[b].open(c, cc, err, errlen);

@@ -174,40 +174,6 @@ static rl_err fail(rl_cam *c, char *err, size_t errlen, rl_err e, const char *wh
     return e;
 }
 
-/* The best format offered at width x height, or NULL with the device's
- * own formats listed in what. */
-static const v4l2f *choose_format(const v4l2_dev *d, int width, int height, char *what, size_t len)
-{
-    const v4l2f *best = NULL;
-    char offered[160] = "";
-    size_t used = 0;
-    unsigned i;
-    for (i = 0; i < 64; i++) {
-        struct v4l2_fmtdesc fd;
-        const v4l2f *f;
-        char name[8];
-        memset(&fd, 0, sizeof fd);
-        fd.index = i;
-        fd.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-        if (v4l2_ioctl(d, VIDIOC_ENUM_FMT, &fd) < 0)
-            break;
-        v4l2f_name(fd.pixelformat, name);
-        if (used < sizeof offered) {
-            int w = snprintf(offered + used, sizeof offered - used, "%s%s", used ? " " : "", name);
-            used += w > 0 ? (size_t)w : 0;
-        }
-        f = v4l2f_find(fd.pixelformat);
-        if (f == NULL || v4l2_dev_offers(d, f->fourcc, width, height) == 0)
-            continue;
-        if (best == NULL || v4l2f_rank(f->fourcc) < v4l2f_rank(best->fourcc))
-            best = f;
-    }
-    if (best == NULL)
-        snprintf(what, len, "offers none of GREY, NV12, YU12, YUYV, UYVY, MJPG at %dx%d (it has: %s)", width,
-                 height, used ? offered : "no formats");
-    return best;
-}
-
 /* Set the format and check what the driver made of it: the size asked
  * for, a stride that holds a row, an image size that holds a frame. */
 static rl_err set_format(v4l2_state *s, int width, int height, char *what, size_t len)
@@ -312,7 +278,7 @@ rl_err rl_cam_open_v4l2(rl_cam *c, const rl_cam_config *cc, char *err, size_t er
     c->ops = &v4l2_ops;
     if ((e = v4l2_dev_open(&s->d, cc->v4l2_sys, cc->device, what, sizeof what)) != RL_OK)
         return fail(c, err, errlen, e, what);
-    if ((s->fmt = choose_format(&s->d, width, height, what, sizeof what)) == NULL)
+    if ((s->fmt = v4l2_dev_choose(&s->d, width, height, what, sizeof what)) == NULL)
         return fail(c, err, errlen, RL_EUNSUPPORTED, what);
     if ((e = set_format(s, width, height, what, sizeof what)) != RL_OK)
         return fail(c, err, errlen, e, what);

@@ -8,9 +8,10 @@
  * libcamera is found). A frame is lent, not copied where its format
  * allows: grab gives a view into the backend's buffer with its capture
  * time from the driver (rl_clock.h's monotonic clock), release gives it
- * back. Exposure and gain are automatic unless set. A test double is one
- * more backend (rl_cam_config.open), or a fake device under the V4L2
- * backend (rl_cam_config.v4l2_sys, rl_v4l2_sys.h).
+ * back. Exposure and gain are automatic unless set. The loop takes a
+ * camera as its frame source (rl_run.h), where a test puts its double; the
+ * V4L2 backend is tested under a fake device (rl_cam_config.v4l2_sys,
+ * rl_v4l2_sys.h).
  *
  *   rl_cam cam;
  *   rl_cam_config cc;
@@ -55,8 +56,6 @@ typedef struct rl_cam_config {
     int exposure_us;     /* 0: automatic exposure; else the exposure time, microseconds */
     double gain;         /* 0: automatic gain; else the (analogue) gain */
     const struct rl_v4l2_sys *v4l2_sys; /* v4l2: its system calls (NULL: the real ones) */
-    rl_cam_open_fn open; /* a backend not named above (a test double); NULL: by name */
-    void *open_arg;      /* for that backend */
 } rl_cam_config;
 
 typedef struct {

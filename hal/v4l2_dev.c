@@ -1,4 +1,5 @@
 #include "v4l2_dev.h"
+#include "v4l2_format.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -86,4 +87,38 @@ int v4l2_dev_offers(const v4l2_dev *d, uint32_t fourcc, int width, int height)
         }
     }
     return 0;
+}
+
+/* The best format offered at width x height, or NULL with the device's
+ * own formats listed in what. */
+const v4l2f *v4l2_dev_choose(const v4l2_dev *d, int width, int height, char *what, size_t len)
+{
+    const v4l2f *best = NULL;
+    char offered[160] = "";
+    size_t used = 0;
+    unsigned i;
+    for (i = 0; i < 64; i++) {
+        struct v4l2_fmtdesc fd;
+        const v4l2f *f;
+        char name[8];
+        memset(&fd, 0, sizeof fd);
+        fd.index = i;
+        fd.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+        if (v4l2_ioctl(d, VIDIOC_ENUM_FMT, &fd) < 0)
+            break;
+        v4l2f_name(fd.pixelformat, name);
+        if (used < sizeof offered) {
+            int w = snprintf(offered + used, sizeof offered - used, "%s%s", used ? " " : "", name);
+            used += w > 0 ? (size_t)w : 0;
+        }
+        f = v4l2f_find(fd.pixelformat);
+        if (f == NULL || v4l2_dev_offers(d, f->fourcc, width, height) == 0)
+            continue;
+        if (best == NULL || v4l2f_rank(f->fourcc) < v4l2f_rank(best->fourcc))
+            best = f;
+    }
+    if (best == NULL)
+        snprintf(what, len, "offers none of GREY, NV12, YU12, YUYV, UYVY, MJPG at %dx%d (it has: %s)", width,
+                 height, used ? offered : "no formats");
+    return best;
 }

@@ -17,6 +17,7 @@
 #include <stdint.h>
 #include "rl_error.h"
 #include "rl_v4l2_sys.h"
+#include "v4l2_format.h"
 
 typedef struct {
     const rl_v4l2_sys *sys;
@@ -38,6 +39,11 @@ void v4l2_dev_close(v4l2_dev *d);
 /* Whether the device offers fourcc at width x height: 1 yes, 0 no, -1
  * it does not enumerate its sizes (then setting the format tells). */
 int v4l2_dev_offers(const v4l2_dev *d, uint32_t fourcc, int width, int height);
+
+/* The format ringloc streams at width x height: the best (v4l2f_rank) of
+ * those it takes that the device offers there; NULL with the device's own
+ * formats listed in what. Streaming and --probe both ask this. */
+const v4l2f *v4l2_dev_choose(const v4l2_dev *d, int width, int height, char *what, size_t len);
 
 /* The reason of a failed ioctl in words, EBUSY as a busy device. */
 const char *v4l2_dev_why(int err);

@@ -43,8 +43,7 @@ rl_err rl_cam_probe_v4l2(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx
     v4l2_dev d;
     char what[256], text[512], list[384], name[8];
     int width = cc->width > 0 ? cc->width : 640, height = cc->height > 0 ? cc->height : 480;
-    int best_rank = 1000;
-    uint32_t best = 0;
+    const v4l2f *best;
     unsigned i;
     rl_err e = v4l2_dev_open(&d, cc->v4l2_sys, cc->device, what, sizeof what);
     if (e != RL_OK) {
@@ -67,13 +66,9 @@ rl_err rl_cam_probe_v4l2(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx
         sizes(&d, fd.pixelformat, list, sizeof list);
         snprintf(text, sizeof text, "  %c %s %-24.24s %s", f ? '*' : ' ', name, (const char *)fd.description, list);
         line(ctx, text);
-        if (f && v4l2_dev_offers(&d, f->fourcc, width, height) != 0 && v4l2f_rank(f->fourcc) < best_rank) {
-            best_rank = v4l2f_rank(f->fourcc);
-            best = f->fourcc;
-        }
     }
-    if (best != 0) {
-        v4l2f_name(best, name);
+    if ((best = v4l2_dev_choose(&d, width, height, what, sizeof what)) != NULL) {
+        v4l2f_name(best->fourcc, name);
         snprintf(text, sizeof text, "at %dx%d ringloc would stream %s", width, height, name);
     } else {
         snprintf(text, sizeof text, "at %dx%d ringloc takes none of these formats", width, height);

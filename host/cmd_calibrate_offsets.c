@@ -98,9 +98,16 @@ static double fit_rms(const offsets_fit *f)
 /* --pose X,Y,YAW; 0 after a usage error line. */
 static int parse_pose(const char *C, const char *arg, offsets_fit *f)
 {
-    char tail;
-    if (sscanf(arg, "%lf,%lf,%lf%c", &f->px, &f->py, &f->pyaw, &tail) != 3)
-        return !rl_cli_fail(C, RL_EXIT_USAGE, "--pose: '%s' is not X,Y,YAW (metres, radians)", arg);
+    static const char *form = "X,Y,YAW (metres, radians)";
+    double v[3];
+    int n;
+    if (!rl_cli_doubles(C, "--pose", arg, form, v, 3, &n))
+        return 0;
+    if (n != 3)
+        return !rl_cli_fail(C, RL_EXIT_USAGE, "--pose: '%s' is not %s", arg, form);
+    f->px = v[0];
+    f->py = v[1];
+    f->pyaw = v[2];
     if (!(fabs(f->px) <= RL_MAP_MAX_COORD && fabs(f->py) <= RL_MAP_MAX_COORD && fabs(f->pyaw) <= 7))
         return !rl_cli_fail(C, RL_EXIT_USAGE, "--pose: %s is out of range (|x|, |y| <= %g m, |yaw| <= 7 rad)", arg,
                             RL_MAP_MAX_COORD);

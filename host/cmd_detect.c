@@ -98,12 +98,7 @@ int rl_cmd_detect(int argc, char **argv)
     rl_recog_defaults(&cfg);
     cfg.band_radius = 1; /* radii a survey can take its scale from */
     optind = 1;
-    while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
-        int r = rl_cli_recog_option(C, c, optarg, &cfg, &family);
-        if (r < 0)
-            return RL_EXIT_USAGE;
-        if (r > 0)
-            continue;
+    while ((c = rl_cli_getopt_recog(C, argc, argv, opts, &cfg, &family)) != -1) {
         switch (c) {
         case 'm': files.map = optarg; break;
         case 'a': d.annotate = optarg; break;

@@ -3,7 +3,6 @@
 #include <stdio.h>
 #include <string.h>
 #include "rl_cli.h"
-#include "rl_cli_num.h"
 #include "rl_cmd.h"
 #include "rl_print.h"
 #include "rl_site.h"

@@ -141,12 +141,7 @@ int rl_cmd_locate(int argc, char **argv)
     rl_pngrun_defaults(&pr, C);
     pr.run.frame_interval = 0.1;
     optind = 1;
-    while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
-        int r = rl_cli_recog_option(C, c, optarg, &cfg, &family);
-        if (r < 0)
-            return RL_EXIT_USAGE;
-        if (r > 0)
-            continue;
+    while ((c = rl_cli_getopt_recog(C, argc, argv, opts, &cfg, &family)) != -1) {
         switch (c) {
         case 'c': files.calibration = optarg; break;
         case 'm': files.map = optarg; break;

@@ -5,12 +5,11 @@
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
-#include "rl_calibfile.h"
 #include "rl_cli.h"
 #include "rl_cmd.h"
 #include "rl_mapfile.h"
 #include "rl_outfile.h"
-#include "rl_robotfile.h"
+#include "rl_site.h"
 #include "rl_survey.h"
 #include "rl_survey_input.h"
 #include "rl_survey_moved.h"
@@ -80,12 +79,7 @@ static int parse(int argc, char **argv, survey_args *a, rl_survey_config *cfg, r
     const char *C = "survey";
     int c;
     optind = 1;
-    while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
-        int r = rl_cli_recog_option(C, c, optarg, rc, &a->family);
-        if (r < 0)
-            return RL_EXIT_USAGE;
-        if (r > 0)
-            continue;
+    while ((c = rl_cli_getopt_recog(C, argc, argv, opts, rc, &a->family)) != -1) {
         switch (c) {
         case 'c': a->cam = optarg; break;
         case 'r': a->robot = optarg; break;
@@ -231,11 +225,11 @@ int rl_cmd_survey(int argc, char **argv)
     survey_args a;
     rl_survey_config cfg;
     rl_recog_config rc;
-    rl_heap_recog hr;
     rl_survey sv;
     rl_survey_input in;
-    rl_calib cam;
-    static rl_map old;
+    static rl_site site, old_site;
+    const rl_map *old = &old_site.map;
+    rl_site_files files;
     static rl_survey_move mv[RL_MAX_MAP_LANDMARKS];
     struct timespec t0, t1;
     char err[600];
@@ -248,20 +242,27 @@ int rl_cmd_survey(int argc, char **argv)
     rc.band_radius = 1; /* the scale from the radii */
     if ((r = parse(argc, argv, &a, &cfg, &rc)) != 0)
         return r < 0 ? 0 : r;
-    if (rl_calibfile_load(a.cam, &cam, err, sizeof err) != RL_OK ||
-        rl_robotfile_load(a.robot, &cfg.mount, err, sizeof err) != RL_OK ||
-        (a.old && rl_mapfile_load(a.old, &old, err, sizeof err) != RL_OK))
+    rl_site_files_init(&files);
+    files.calibration = a.cam;
+    files.robot = a.robot;
+    if (rl_site_load(&site, &files, err, sizeof err) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-    if (a.old && old.family.bits != rc.family.bits)
-        return rl_cli_fail(C, RL_EXIT_USAGE, "%s is a ring%d map, the survey is of ring%d", a.old, old.family.bits,
+    rl_site_files_init(&files);
+    files.map = a.old;
+    if (a.old && rl_site_load(&old_site, &files, err, sizeof err) != RL_OK)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    if (a.old && old->family.bits != rc.family.bits)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "%s is a ring%d map, the survey is of ring%d", a.old, old->family.bits,
                            rc.family.bits);
+    if (rl_site_prepare(&site, &rc, err, sizeof err) != RL_OK)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    cfg.mount = site.mount;
     cfg.origin_id = a.origin;
     cfg.axis_id = a.axis;
-    cfg.pixel_scale = sqrt(cam.fx * cam.fy);
+    cfg.pixel_scale = sqrt(site.calib.fx * site.calib.fy);
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    rl_heap_recog_init(&hr, &rc);
     rl_survey_init(&sv, &cfg);
-    rl_survey_input_init(&in, &cam, &rc.family, &sv, &hr);
+    rl_survey_input_init(&in, &site.calib, &rc.family, &sv, &site);
     in.progress = isatty(2);
     for (i = optind; i < argc; i++)
         if ((e = rl_survey_input_path(&in, argv[i])) != RL_OK) {
@@ -274,7 +275,7 @@ int rl_cmd_survey(int argc, char **argv)
         code = rl_cli_fail(C, RL_EXIT_FAIL, "%s", sv.err);
         goto out;
     }
-    if (a.old && (n_mv = rl_survey_moved(&sv, &old, 3.0, mv, RL_MAX_MAP_LANDMARKS)) < 0) {
+    if (a.old && (n_mv = rl_survey_moved(&sv, old, 3.0, mv, RL_MAX_MAP_LANDMARKS)) < 0) {
         code = rl_cli_fail(C, RL_EXIT_FAIL, "out of memory comparing with %s", a.old);
         goto out;
     }
@@ -289,6 +290,6 @@ int rl_cmd_survey(int argc, char **argv)
            (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
 out:
     rl_survey_free(&sv);
-    rl_heap_recog_free(&hr);
+    rl_site_free(&site);
     return code;
 }

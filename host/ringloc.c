@@ -25,6 +25,7 @@ typedef struct {
 static const command commands[] = {
     {"run", rl_cmd_run, "the firmware: camera -> pose frames on the serial line"},
     {"monitor", rl_cmd_monitor, "decode pose and status frames (controller side)"},
+    {"fuse", rl_cmd_fuse, "odometry and pose frames fused (rl_fuse), the pose at a rate as JSON lines"},
     {"gen", rl_cmd_gen, "print-ready landmarks (PDF, SVG, PNG) for ids or a whole map"},
     {"plan", rl_cmd_plan, "choose family, diameter and grid pitch for a site; write a map"},
     {"site-check", rl_cmd_sitecheck, "false landmarks and recognition rates on photos of your ceiling"},

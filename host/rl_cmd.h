@@ -17,6 +17,7 @@ int rl_cmd_calibrate_offsets(int argc, char **argv);
 int rl_cmd_calibrate_mount(int argc, char **argv);
 int rl_cmd_run(int argc, char **argv);
 int rl_cmd_monitor(int argc, char **argv);
+int rl_cmd_fuse(int argc, char **argv);
 int rl_cmd_sitecheck(int argc, char **argv);
 int rl_cmd_survey(int argc, char **argv);
 

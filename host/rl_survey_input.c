@@ -1,6 +1,5 @@
 #include "rl_survey_input.h"
 
-#include <dirent.h>
 #include <errno.h>
 #include <json-c/json.h>
 #include <math.h>
@@ -10,15 +9,16 @@
 #include <sys/stat.h>
 #include "rl_infile.h"
 #include "rl_png.h"
+#include "rl_pngrun.h"
 
 void rl_survey_input_init(rl_survey_input *in, const rl_calib *cam, const rl_family *fam, rl_survey *sv,
-                          rl_heap_recog *hr)
+                          rl_site *site)
 {
     memset(in, 0, sizeof *in);
     in->cam = cam;
     in->fam = fam;
     in->sv = sv;
-    in->hr = hr;
+    in->site = site;
 }
 
 /* One frame's detections (the identified ones) into the survey. */
@@ -50,39 +50,33 @@ static rl_err add_frame(rl_survey_input *in, const char *name, const rl_detectio
     return rl_survey_add_frame(in->sv, name, obs, m) == RL_OK ? RL_OK : RL_ENOMEM;
 }
 
-static rl_err png_frame(rl_survey_input *in, const char *path)
+/* Each recognized frame into the survey. */
+static rl_err png_put(void *ctx, const rl_run_report *rep)
 {
-    static rl_result res;
-    rl_image img;
-    rl_err e;
-    char err[512];
-    if (in->hr == NULL) {
-        snprintf(in->err, sizeof in->err, "%s: PNG frames need the recognizer", path);
+    rl_survey_input *in = (rl_survey_input *)ctx;
+    if (add_frame(in, rep->frame->name, rep->res->landmarks, rep->res->n_landmarks) != RL_OK) {
+        snprintf(in->err, sizeof in->err, "out of memory after %d frames", in->frames);
+        in->failed = 1;
+    }
+    return RL_OK;
+}
+
+/* PNG frames through the loop: a file that cannot be read or used is
+ * left out with one line saying why. */
+static rl_err png_frames(rl_survey_input *in, char *const *paths, int n)
+{
+    rl_pngrun pr;
+    if (in->site == NULL) {
+        snprintf(in->err, sizeof in->err, "%s: PNG frames need the recognizer", paths[0]);
         return RL_EINVAL;
     }
-    if (rl_png_read_gray(path, &img, err, sizeof err) != RL_OK) {
-        fprintf(stderr, "ringloc survey: %s; left out\n", err);
-        in->unreadable++;
-        return RL_OK;
-    }
-    if (img.width != in->cam->width || img.height != in->cam->height) {
-        fprintf(stderr, "ringloc survey: %s: %dx%d, the calibration is for %dx%d; left out\n", path, img.width,
-                img.height, in->cam->width, in->cam->height);
-        in->unreadable++;
-        rl_png_free(&img);
-        return RL_OK;
-    }
-    e = rl_heap_recog_run(in->hr, &img, &res);
-    rl_png_free(&img);
-    if (e != RL_OK) {
-        fprintf(stderr, "ringloc survey: %s: recognition failed: %s; left out\n", path, rl_strerror(e));
-        in->unreadable++;
-        return RL_OK;
-    }
-    e = add_frame(in, path, res.landmarks, res.n_landmarks);
-    if (e != RL_OK)
-        snprintf(in->err, sizeof in->err, "out of memory after %d frames", in->frames);
-    return e;
+    rl_pngrun_defaults(&pr, "survey");
+    pr.run.alone = 1;
+    pr.put = png_put;
+    pr.ctx = in;
+    pr.bad_suffix = "; left out";
+    in->unreadable += (int)rl_pngrun_files(&pr, in->site, paths, n);
+    return in->failed ? RL_ENOMEM : RL_OK;
 }
 
 /* A number field of a JSON object; 0 if missing or not a number. */
@@ -205,57 +199,20 @@ static int has_suffix(const char *s, const char *suf)
     return n >= m && strcmp(s + n - m, suf) == 0;
 }
 
-static int cmp_str(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
-
 static rl_err folder(rl_survey_input *in, const char *path)
 {
-    DIR *dir = opendir(path);
-    struct dirent *ent;
-    char **names = NULL, full[4096];
-    int n = 0, cap = 0, i;
-    rl_err e = RL_OK;
-    if (dir == NULL) {
-        snprintf(in->err, sizeof in->err, "%s: %s", path, strerror(errno));
-        return RL_ENOTFOUND;
-    }
-    while ((ent = readdir(dir)) != NULL) {
-        if (!has_suffix(ent->d_name, ".png") || ent->d_name[0] == '.')
-            continue;
-        if (n == cap) {
-            char **p = realloc(names, (size_t)(cap ? 2 * cap : 256) * sizeof *names);
-            if (p == NULL) {
-                e = RL_ENOMEM;
-                break;
-            }
-            names = p;
-            cap = cap ? 2 * cap : 256;
-        }
-        if ((names[n] = strdup(ent->d_name)) == NULL) {
-            e = RL_ENOMEM;
-            break;
-        }
-        n++;
-    }
-    closedir(dir);
-    if (e == RL_OK && n == 0) {
+    char **names = NULL;
+    int n = 0;
+    rl_err e;
+    if ((e = rl_png_list(path, &names, &n, in->err, sizeof in->err)) != RL_OK)
+        return e;
+    if (n == 0) {
         snprintf(in->err, sizeof in->err, "%s: no PNG frames in the folder", path);
         e = RL_ENOTFOUND;
-    } else if (e != RL_OK) {
-        snprintf(in->err, sizeof in->err, "%s: out of memory listing the folder", path);
+    } else {
+        e = png_frames(in, names, n);
     }
-    if (e == RL_OK)
-        qsort(names, (size_t)n, sizeof *names, cmp_str);
-    for (i = 0; i < n; i++) {
-        if (e == RL_OK) {
-            snprintf(full, sizeof full, "%s/%s", path, names[i]);
-            e = png_frame(in, full);
-        }
-        free(names[i]);
-    }
-    free(names);
+    rl_png_list_free(names, n);
     return e;
 }
 
@@ -270,5 +227,5 @@ rl_err rl_survey_input_path(rl_survey_input *in, const char *path)
         return folder(in, path);
     if (has_suffix(path, ".json") || has_suffix(path, ".jsonl") || has_suffix(path, ".ndjson"))
         return json_file(in, path);
-    return png_frame(in, path);
+    return png_frames(in, (char *const *)&path, 1);
 }

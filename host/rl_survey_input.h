@@ -21,7 +21,7 @@
 
 #include "rl_calib.h"
 #include "rl_family.h"
-#include "rl_heap_recog.h"
+#include "rl_site.h"
 #include "rl_survey.h"
 
 #define RL_SURVEY_RADIUS_FIELD 0.25
@@ -30,15 +30,16 @@ typedef struct {
     const rl_calib *cam;
     const rl_family *fam;
     rl_survey *sv;
-    rl_heap_recog *hr; /* recognizes PNG frames; NULL: JSON lines only */
+    rl_site *site;     /* its recognizer reads PNG frames; NULL: JSON lines only */
     int frames;        /* frames read */
     int unreadable;    /* PNG frames that could not be read or were the wrong size (said on stderr) */
     int progress;      /* 1: a progress line on stderr (a terminal) */
+    int failed;        /* a frame could not be kept (err says why) */
     char err[600];
 } rl_survey_input;
 
 void rl_survey_input_init(rl_survey_input *in, const rl_calib *cam, const rl_family *fam, rl_survey *sv,
-                          rl_heap_recog *hr);
+                          rl_site *site);
 
 /* One FRAME argument: a folder, a .json/.jsonl/.ndjson file, or a PNG.
  * RL_EFORMAT for a malformed JSON line, an id outside the family or a

@@ -29,12 +29,29 @@ install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/../shared/la
 install(FILES ${PROJECT_SOURCE_DIR}/package/ringloc-web.conf DESTINATION share/doc/ringloc COMPONENT firmware)
 install(TARGETS ringloc RUNTIME DESTINATION bin COMPONENT tools)
 
+# `ringloc-fuse`, what a controller computer installs to build against
+# rl_fuse (issue 27): the library, static and shared, its three headers
+# under include/ringloc, ringloc-fuse.pc, and the ARIA example's source.
+configure_file(${CMAKE_CURRENT_LIST_DIR}/ringloc-fuse.pc.in ${CMAKE_BINARY_DIR}/package/ringloc-fuse.pc @ONLY)
+install(TARGETS ringloc_fuse ringloc_fuse_shared
+        ARCHIVE DESTINATION lib COMPONENT fuse
+        LIBRARY DESTINATION lib COMPONENT fuse NAMELINK_COMPONENT fuse)
+install(FILES ${PROJECT_SOURCE_DIR}/firmware/include/rl_fuse.h ${PROJECT_SOURCE_DIR}/firmware/include/rl_packet.h
+        ${PROJECT_SOURCE_DIR}/firmware/include/rl_error.h DESTINATION include/ringloc COMPONENT fuse)
+install(FILES ${CMAKE_BINARY_DIR}/package/ringloc-fuse.pc DESTINATION lib/pkgconfig COMPONENT fuse)
+install(FILES ${PROJECT_SOURCE_DIR}/tools/aria/ringloc_aria_fuse.cpp DESTINATION share/doc/ringloc-fuse/examples
+        COMPONENT fuse)
+
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME ringloc)
 set(CPACK_DEB_COMPONENT_INSTALL ON)
-set(CPACK_COMPONENTS_ALL firmware tools)
+set(CPACK_COMPONENTS_ALL firmware tools fuse)
 set(CPACK_DEBIAN_FIRMWARE_PACKAGE_NAME ringloc)
 set(CPACK_DEBIAN_TOOLS_PACKAGE_NAME ringloc-tools)
+set(CPACK_DEBIAN_FUSE_PACKAGE_NAME ringloc-fuse)
+set(CPACK_DEBIAN_FUSE_PACKAGE_DEPENDS "libc6 (>= 2.34)")
+set(CPACK_DEBIAN_FUSE_PACKAGE_SECTION libdevel)
+set(CPACK_DEBIAN_FUSE_DESCRIPTION "ringloc on the robot's controller: rl_fuse, odometry fused with ringloc's pose frames (library, headers, pkg-config, ARIA example)")
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_PACKAGE_CONTACT "ringloc developers <ringloc@localhost>")

@@ -18,6 +18,9 @@ forbid "the core includes hal/ or firmware/app" "$src/firmware/core $src/firmwar
     "$(names "$src"/hal/*.h "$src"/hal/io/*.h "$src"/firmware/app/*.h)"
 forbid "the I/O library includes a device of hal/ or firmware/app" "$src/hal/io" \
     "$(names "$src"/hal/*.h "$src"/firmware/app/*.h)"
-forbid "the public API includes an internal header" "$src/firmware/include" "$(names "$src"/firmware/core/*.h)"
+forbid "the public API includes an internal header" "$src/firmware/include" \
+    "$(names "$src"/firmware/core/*.h "$src"/firmware/fuse/*.h)"
+forbid "the controller's filter (firmware/fuse) includes more than the public API" "$src/firmware/fuse" \
+    "$(names "$src"/firmware/core/*.h "$src"/hal/*.h "$src"/hal/io/*.h "$src"/firmware/app/*.h)"
 [ $status -eq 0 ] && echo "layers: dependencies run one way"
 exit $status

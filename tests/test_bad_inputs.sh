@@ -84,6 +84,11 @@ opt survey gate "0 -0.3" $sv "$frame"
 opt survey origin "0 -1 2.5" --camera "$cam" --robot "$robot" --axis 8 --out "$T/s.yaml" "$frame"
 opt survey axis "0 -1 2.5" --camera "$cam" --robot "$robot" --origin 1 --out "$T/s.yaml" "$frame"
 opt monitor baud "0 -9600 12345 2.5" "$T/none.bin"
+opt fuse rate "0 -1 1001 0.5" --odometry "$T/none.txt" "$T/none.bin"
+opt fuse track "0 -0.33 11" --odometry "$T/none.txt" "$T/none.bin"
+opt fuse wheel-noise "-0.001 2" --odometry "$T/none.txt" "$T/none.bin"
+opt fuse time-offset "" --odometry "$T/none.txt" "$T/none.bin"
+opt fuse baud "0 -9600 12345 2.5" --odometry "$T/none.txt" "$T/none.bin"
 
 # option values that are not numbers but are still wrong
 for v in 0x0 640x 640 x480 -640x480 640x-480 99999x480 640x480x3 abc 1e309x480; do
@@ -140,6 +145,16 @@ file plan camera --landmarks 30 --distance 1.87
 file survey camera --robot "$robot" --origin 1 --axis 8 --out "$T/s.yaml" "$frame"
 file survey robot --camera "$cam" --origin 1 --axis 8 --out "$T/s.yaml" "$frame"
 file survey map $sv "$frame"
+printf '0 0 0 0\n0.1 0.1 0 0\n' >"$T/odo.txt"
+file fuse odometry "$T/odo.txt"
+for f in "$T/absent.bin" "$T/folder" "$T/empty.yaml" "$T/garbage.yaml" "$frame" "$T/fifo"; do
+    expect 1 "$(basename "$f")" "$R" fuse --odometry "$T/odo.txt" "$f"
+done
+for bad in '0 0 0' '0 0 0 0 0' '0 a 0 0' '0 nan 0 0' '0 1e309 0 0'; do
+    printf '0.5 0 0 0\n%s\n' "$bad" >"$T/bad_odo.txt"
+    desc="$bad" expect 1 "bad_odo.txt:2" "$R" fuse --odometry "$T/bad_odo.txt" "$T/odo.txt"
+done
+desc=
 expect 2 "origin" "$R" survey $sv --origin 40 "$frame"
 expect 2 "same landmark" "$R" survey --camera "$cam" --robot "$robot" --origin 8 --axis 8 --out "$T/s.yaml" "$frame"
 expect 2 "not both" "$R" survey $sv --ceiling-height 2.75 --axis-distance 3 "$frame"

@@ -15,9 +15,7 @@
 #include "fixture_eval.h"
 #include "rl_png.h"
 #include "rl_report.h"
-#include "rl_calibfile.h"
-#include "rl_mapfile.h"
-#include "rl_robotfile.h"
+#include "rl_site.h"
 
 static rl_heap_recog hr, hr_always;
 
@@ -332,16 +330,30 @@ static double wrap(double a)
     return atan2(sin(a), cos(a));
 }
 
+/* A map file through rl_site. */
+static void load_map(const char *path, rl_map *map)
+{
+    static rl_site site;
+    rl_site_files files;
+    char err[768];
+    rl_site_files_init(&files);
+    files.map = path;
+    if (rl_site_load(&site, &files, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    *map = site.map;
+}
+
 /* The folder's map, calibration and robot. */
 static void load_site(rl_map *map, rl_calib *cam, rl_mount *mount)
 {
-    char path[1024], err[512];
-    snprintf(path, sizeof path, "%s/map.yaml", paths_dir);
-    if (rl_mapfile_load(path, map, err, sizeof err) != RL_OK) fail_msg("%s", err);
-    snprintf(path, sizeof path, "%s/camera.yaml", paths_dir);
-    if (rl_calibfile_load(path, cam, err, sizeof err) != RL_OK) fail_msg("%s", err);
-    snprintf(path, sizeof path, "%s/robot.yaml", paths_dir);
-    if (rl_robotfile_load(path, mount, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    static rl_site site;
+    static rl_site_folder held;
+    rl_site_files files;
+    char err[768];
+    rl_site_files_folder(&files, &held, paths_dir);
+    if (rl_site_load(&site, &files, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    *map = site.map;
+    *cam = site.calib;
+    *mount = site.mount;
 }
 
 /* Frame k of a drive recognized into res, its truth into t; 0 past the
@@ -519,13 +531,13 @@ static void survey_map(void **state)
     static rl_map real, sv;
     rl_calib cam;
     rl_mount mount;
-    char path[1024], err[512];
+    char path[1024];
     double ss = 0, worst = 0;
     int i, origin = 0, axis = 0;
     (void)state;
     load_site(&real, &cam, &mount);
     snprintf(path, sizeof path, "%s/survey.yaml", paths_dir);
-    if (rl_mapfile_load(path, &sv, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    load_map(path, &sv);
     assert_int_equal(sv.count, real.count);
     /* the survey's frame: its origin at (0, 0), its axis landmark on y = 0 */
     for (i = 0; i < sv.count; i++)
@@ -558,14 +570,14 @@ static void survey_poses(void **state)
     static rl_map real, sv;
     rl_calib cam;
     rl_mount mount;
-    char path[1024], err[512];
+    char path[1024];
     double T[4], worst = 0, sum = 0, yaw_worst = 0;
     int k, frames = 0;
     truth t;
     (void)state;
     load_site(&real, &cam, &mount);
     snprintf(path, sizeof path, "%s/survey.yaml", paths_dir);
-    if (rl_mapfile_load(path, &sv, err, sizeof err) != RL_OK) fail_msg("%s", err);
+    load_map(path, &sv);
     similarity(&sv, &real, T);
     for (k = 0; recognize_frame("rect", k, &t); k++) {
         rl_pose a, b;

@@ -131,7 +131,7 @@ one_error "plan --distance 1e300" 2 "distance: 1e300 is out of range" \
     "$R" plan --landmarks 30 --resolution 640x480 --hfov 70 --distance 1e300
 one_error "plan --grid 65536x65536" 2 "grid: 65536x65536: each side at most" \
     "$R" plan --resolution 640x480 --hfov 70 --distance 1.87 --grid 65536x65536 --pitch 0.61 --ceiling-height 2.75
-one_error "calibrate-offsets --pose nan" 2 "pose: nan,nan,nan is out of range" \
+one_error "calibrate-offsets --pose nan" 2 "--pose: 'nan,nan,nan' is not X,Y,YAW" \
     "$R" calibrate-offsets --map "$D/map.yaml" --robot "$D/robot.yaml" --pose nan,nan,nan --out "$T/o.yaml" "$frame"
 
 sed '0,/rows: 3/s//rows: 65536/; 0,/cols: 3/s//cols: 65536/' "$D/camera.yaml" >"$T/cam_huge.yaml"

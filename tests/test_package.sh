@@ -43,6 +43,28 @@ tools=$(ls "$T"/out/ringloc-tools_*_"$ARCH".deb 2>/dev/null | head -1)
 check "a ringloc-tools_*_$ARCH.deb is built" test -f "$tools"
 check "the tools package has the ringloc command" sh -c "dpkg-deb -c '$tools' | grep -q '\./usr/bin/ringloc$'"
 check "the tools package declares cairo" sh -c "dpkg-deb -f '$tools' Depends | grep -q libcairo2"
+# the controller's package (issue 27): rl_fuse to build against, checked by
+# building its header's usage example through its pkg-config file
+fuse=$(ls "$T"/out/ringloc-fuse_*_"$ARCH".deb 2>/dev/null | head -1)
+check "a ringloc-fuse_*_$ARCH.deb is built" test -f "$fuse"
+mkdir -p "$T/fuse"
+dpkg-deb -x "$fuse" "$T/fuse" 2>/dev/null
+for f in usr/lib/libringloc_fuse.a usr/lib/libringloc_fuse.so usr/lib/pkgconfig/ringloc-fuse.pc \
+    usr/include/ringloc/rl_fuse.h usr/include/ringloc/rl_packet.h usr/include/ringloc/rl_error.h \
+    usr/share/doc/ringloc-fuse/examples/ringloc_aria_fuse.cpp; do
+    check "ringloc-fuse has /$f" test -e "$T/fuse/$f"
+done
+check "the fuse package needs only libc" sh -c "dpkg-deb -f '$fuse' Depends | grep -qx 'libc6 (>= 2.34)'"
+if [ "$ARCH" = "$(dpkg --print-architecture)" ] && command -v pkg-config >/dev/null 2>&1; then
+    # the header's usage example (its first comment's last block of ' *   ' lines)
+    awk '/\*\// { exit } /^ \*   / { if (!inb) { body = ""; inb = 1 } sub(/^ \*   /, "    "); body = body $0 "\n"; next }
+         { inb = 0 } END { printf "%s", body }' "$T/fuse/usr/include/ringloc/rl_fuse.h" >"$T/body.c"
+    { printf '#include <string.h>\n#include "rl_fuse.h"\nstatic void use(double a, double b, double c, double d) { (void)a; (void)b; (void)c; (void)d; }\n'
+      printf 'int main(void)\n{\n'; sed 's/return;/return 1;/' "$T/body.c"; printf '    return 0;\n}\n'; } >"$T/use_fuse.c"
+    flags=$(PKG_CONFIG_PATH="$T/fuse/usr/lib/pkgconfig" pkg-config --cflags --libs ringloc-fuse)
+    # shellcheck disable=SC2086 # the flags' words
+    check "a program builds against ringloc-fuse.pc and runs on its shared library" sh -c "cc -std=c99 -Wall -Werror -o '$T/use_fuse' '$T/use_fuse.c' $flags && LD_LIBRARY_PATH='$T/fuse/usr/lib' '$T/use_fuse'"
+fi
 check "configuration names the board's serial device" grep -q "device: $SERIAL" "$T/root/etc/ringloc/ringloc.yaml"
 unit="$T/root/lib/systemd/system/ringloc.service"
 check "unit restarts on failure" grep -qx 'Restart=on-failure' "$unit"

@@ -14,17 +14,14 @@
  * frames never give a wrong place.
  */
 #include "rl_test.h"
-#include <dirent.h>
 #include <math.h>
 #include <stdlib.h>
 #include "fixture_eval.h"
-#include "rl_calibfile.h"
 #include "rl_heap_place.h"
 #include "rl_heap_recog.h"
-#include "rl_mapfile.h"
 #include "rl_png.h"
 #include "rl_report.h"
-#include "rl_robotfile.h"
+#include "rl_site.h"
 
 #define RIGHT 0.05
 
@@ -41,16 +38,16 @@ typedef struct {
 
 static void load_site(void)
 {
-    char path[1024], err[512];
-    snprintf(path, sizeof path, "%s/map.yaml", dir);
-    if (rl_mapfile_load(path, &map, err, sizeof err) != RL_OK)
+    static rl_site site;
+    static rl_site_folder held;
+    rl_site_files files;
+    char err[768];
+    rl_site_files_folder(&files, &held, dir);
+    if (rl_site_load(&site, &files, err, sizeof err) != RL_OK)
         fail_msg("%s", err);
-    snprintf(path, sizeof path, "%s/camera.yaml", dir);
-    if (rl_calibfile_load(path, &cam, err, sizeof err) != RL_OK)
-        fail_msg("%s", err);
-    snprintf(path, sizeof path, "%s/robot.yaml", dir);
-    if (rl_robotfile_load(path, &mount, err, sizeof err) != RL_OK)
-        fail_msg("%s", err);
+    map = site.map;
+    cam = site.calib;
+    mount = site.mount;
     assert_true(rl_map_repeats_ids(&map));
     assert_int_equal(rl_heap_place_init(&hp, &map, NULL), RL_OK);
     assert_non_null(hp.pl);
@@ -248,37 +245,33 @@ static void synth(void **state)
 
 /* ---- rendered frames ---- */
 
-static int by_name(const void *a, const void *b)
-{
-    return strcmp(*(const char *const *)a, *(const char *const *)b);
-}
 
-/* The truth files of DIR/PREFIX_NNN.yaml, in name order. */
+/* The truth files of DIR/PREFIX_NNN.yaml, in name order: beside the
+ * folder's frames PREFIX_NNN.png. */
 static int list(const char *prefix, char ***out)
 {
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    char **names = NULL;
-    int n = 0;
+    char **names = NULL, err[512];
+    int n = 0, i, k = 0;
     size_t len = strlen(prefix);
-    assert_non_null(d);
-    while ((e = readdir(d)) != NULL) {
-        size_t l = strlen(e->d_name);
-        if (strncmp(e->d_name, prefix, len) == 0 && e->d_name[len] == '_' && l > 5 &&
-            strcmp(e->d_name + l - 5, ".yaml") == 0) {
-            char **m = realloc(names, sizeof *names * (size_t)(n + 1));
-            assert_non_null(m);
-            names = m;
-            names[n] = malloc(strlen(dir) + l + 2);
-            assert_non_null(names[n]);
-            sprintf(names[n], "%s/%s", dir, e->d_name);
-            n++;
+    if (rl_png_list(dir, &names, &n, err, sizeof err) != RL_OK)
+        fail_msg("%s", err);
+    for (i = 0; i < n; i++) {
+        const char *base = strrchr(names[i], '/') + 1;
+        size_t l = strlen(names[i]);
+        if (strncmp(base, prefix, len) != 0 || base[len] != '_') {
+            free(names[i]);
+            continue;
+        }
+        {
+            char *yaml = malloc(l + 2);
+            assert_non_null(yaml);
+            sprintf(yaml, "%.*s.yaml", (int)(l - 4), names[i]);
+            free(names[i]);
+            names[k++] = yaml;
         }
     }
-    closedir(d);
-    qsort(names, (size_t)n, sizeof *names, by_name);
     *out = names;
-    return n;
+    return k;
 }
 
 static int whole(const truth *t)

@@ -584,6 +584,40 @@ static void test_probe_lists_formats_and_controls(void **state)
     assert_non_null(strstr(probe_text, "control Exposure Time, Absolute"));
 }
 
+/* --probe names the format streaming takes, for devices offering any mix
+ * (the choice is made in one place, v4l2_dev_choose) */
+static void test_probe_and_streaming_agree(void **state)
+{
+    static const uint32_t offered[] = {V4L2_PIX_FMT_GREY, V4L2_PIX_FMT_NV12, V4L2_PIX_FMT_UYVY,
+                                       V4L2_PIX_FMT_YUYV, V4L2_PIX_FMT_MJPEG};
+    char chosen[64] = "";
+    char err[256], want[64];
+    int first;
+    (void)state;
+    for (first = 0; first < 5; first++) {
+        rl_cam_config cc = config();
+        rl_cam c;
+        const char *fmt;
+        device(&offered[first], 5 - first);
+        open_ok(&c, &cc);
+        /* the info line starts with the format's name */
+        fmt = strstr(c.info, "GREY") ? "GREY" : strstr(c.info, "NV12") ? "NV12" : strstr(c.info, "UYVY") ? "UYVY"
+            : strstr(c.info, "YUYV") ? "YUYV" : "MJPG";
+        rl_cam_close(&c);
+        device(&offered[first], 5 - first);
+        probe_text[0] = '\0';
+        assert_int_equal(rl_cam_probe(&cc, probe_line, NULL, err, sizeof err), RL_OK);
+        snprintf(want, sizeof want, "ringloc would stream %s", fmt);
+        if (strstr(probe_text, want) == NULL)
+            fail_msg("streaming took %s (%s), --probe said: %s", fmt, c.info, probe_text);
+        strcat(chosen, fmt);
+        strcat(chosen, " ");
+    }
+    /* each device's best in the table's order (GREY, NV12, YU12, YUYV,
+     * UYVY, MJPG): a plane, then packed, then JPEG */
+    assert_string_equal(chosen, "GREY NV12 YUYV YUYV MJPG ");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -594,6 +628,7 @@ int main(void)
         cmocka_unit_test(test_bad_buffers_are_dropped),
         cmocka_unit_test(test_exposure_and_gain),
         cmocka_unit_test(test_probe_lists_formats_and_controls),
+        cmocka_unit_test(test_probe_and_streaming_agree),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -14,6 +14,10 @@
 # view's tests drive a real browser (test_view_page, test_view_hostile).
 # --check only reports. Called first by `make host`, `make host-test`,
 # `make demo` and `make bench`.
+# Not here: AriaCoda, for the ARIA example (tools/aria), is not in Debian;
+# build it from github.com/reedhedges/AriaCoda (`make lib/libAria.so`, g++
+# and make only) and configure with -DARIA_DIR=its tree. The stand-in robot
+# and the rest of the controller's side need nothing more.
 set -eu
 
 check_only=0

@@ -11,6 +11,10 @@
 #ifndef RL_ERROR_H
 #define RL_ERROR_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #if defined(__GNUC__) || defined(__clang__)
 #define RL_CHECK __attribute__((warn_unused_result))
 #else
@@ -35,5 +39,9 @@ typedef enum {
 
 /* Short static message for an error code; never NULL, never allocates. */
 const char *rl_strerror(rl_err e);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -38,6 +38,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define RL_PACKET_POSE 0x50
 #define RL_PACKET_STATUS 0x53
 #define RL_PACKET_VERSION 2      /* of pose frames; status frames are version 1 */
@@ -97,5 +102,9 @@ void rl_decoder_init(rl_decoder *d);
 
 /* Feed one byte; 1 when it completes a valid frame (decoded into *m). */
 int rl_decoder_push(rl_decoder *d, uint8_t byte, rl_msg *m);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

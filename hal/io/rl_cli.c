@@ -2,6 +2,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <math.h>
 #include <signal.h>
 #include <stdarg.h>
@@ -154,6 +155,19 @@ int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config
 }
 
 
+int rl_cli_getopt_recog(const char *cmd, int argc, char **argv, const struct option *opts, rl_recog_config *cfg,
+                        const char **family)
+{
+    int c, r;
+    while ((c = rl_cli_getopt(cmd, argc, argv, opts)) != -1) {
+        if ((r = rl_cli_recog_option(cmd, c, optarg, cfg, family)) < 0)
+            return '?';
+        if (r == 0)
+            return c;
+    }
+    return -1;
+}
+
 void rl_cli_annotate_name(char *buf, size_t len, const char *out, const char *image, int several)
 {
     const char *base = strrchr(image, '/'), *dot, *odot = strrchr(out, '.');
@@ -169,4 +183,116 @@ void rl_cli_annotate_name(char *buf, size_t len, const char *out, const char *im
         snprintf(buf, len, "%.*s-%.*s%s", (int)(odot - out), out, stem, base, odot);
     else
         snprintf(buf, len, "%s-%.*s.png", out, stem, base);
+}
+
+/* strtol without its leniencies: the whole string, no overflow. */
+static int whole_long(const char *s, long *v)
+{
+    char *end;
+    errno = 0;
+    *v = strtol(s, &end, 10);
+    return end != s && *end == '\0' && errno != ERANGE;
+}
+
+int rl_cli_long(const char *cmd, const char *opt, const char *s, long lo, long hi, long *out)
+{
+    long v;
+    if (!whole_long(s, &v)) {
+        rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: '%s' is not an integer", opt, s);
+        return 0;
+    }
+    if (v < lo || v > hi) {
+        rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: %s is out of range (%ld .. %ld)", opt, s, lo, hi);
+        return 0;
+    }
+    *out = v;
+    return 1;
+}
+
+int rl_cli_ulong(const char *cmd, const char *opt, const char *s, unsigned long lo, unsigned long hi,
+                 unsigned long *out)
+{
+    char *end;
+    unsigned long v;
+    errno = 0;
+    /* strtoul takes "-1" as ULONG_MAX: a sign is refused first */
+    v = s[0] >= '0' && s[0] <= '9' ? strtoul(s, &end, 10) : 0;
+    if (!(s[0] >= '0' && s[0] <= '9') || *end != '\0' || errno == ERANGE) {
+        rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: '%s' is not a non-negative integer", opt, s);
+        return 0;
+    }
+    if (v < lo || v > hi) {
+        rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: %s is out of range (%lu .. %lu)", opt, s, lo, hi);
+        return 0;
+    }
+    *out = v;
+    return 1;
+}
+
+/* The next comma-separated number of *s into v, *s moved past it and its
+ * comma; 0 when it is not one (an empty item, a trailing comma). */
+/* One number of a comma-separated list at *s into out[i], *s past it and
+ * its comma; 0 when there is none (or a trailing comma). */
+typedef int (*list_item_fn)(const char **s, void *out, int i);
+
+static int item_end(const char **s, char *end)
+{
+    if (end == *s || (*end != ',' && *end != '\0') || (*end == ',' && end[1] == '\0') || errno == ERANGE)
+        return 0;
+    *s = *end ? end + 1 : end;
+    return 1;
+}
+
+static int next_double(const char **s, void *out, int i)
+{
+    char *end;
+    double v;
+    errno = 0;
+    v = strtod(*s, &end);
+    if (!isfinite(v) || !item_end(s, end))
+        return 0;
+    ((double *)out)[i] = v;
+    return 1;
+}
+
+static int next_int(const char **s, void *out, int i)
+{
+    char *end;
+    long l;
+    errno = 0;
+    l = strtol(*s, &end, 10);
+    if (l < INT_MIN || l > INT_MAX || !item_end(s, end))
+        return 0;
+    ((int *)out)[i] = (int)l;
+    return 1;
+}
+
+static int parse_list(const char *cmd, const char *opt, const char *s, const char *form, list_item_fn next,
+                      void *out, int max, int *n)
+{
+    const char *p = s;
+    *n = 0;
+    do {
+        if (*n == max) {
+            rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: more than %d values", opt, max);
+            return 0;
+        }
+        if (!next(&p, out, *n)) {
+            rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: '%s' is not %s", opt, s, form);
+            return 0;
+        }
+        (*n)++;
+    } while (*p != '\0');
+    return 1;
+}
+
+int rl_cli_doubles(const char *cmd, const char *opt, const char *s, const char *form, double *out, int max,
+                   int *n)
+{
+    return parse_list(cmd, opt, s, form, next_double, out, max, n);
+}
+
+int rl_cli_ints(const char *cmd, const char *opt, const char *s, const char *form, int *out, int max, int *n)
+{
+    return parse_list(cmd, opt, s, form, next_int, out, max, n);
 }

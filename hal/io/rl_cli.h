@@ -1,5 +1,7 @@
 /* rl_cli: what every command line shares (`ringloc` and its subcommands,
- * `ringloc-fw`): error lines and option values.
+ * `ringloc-fw`, the tools): error lines, option values (numbers, sizes,
+ * lists of numbers), the recognition options several commands share and
+ * the names of annotated images.
  *
  * Exit codes: 0 success, 1 a run-time failure (file, device, data),
  * 2 a usage error. Every failure is one line on stderr that starts with
@@ -51,11 +53,32 @@ int rl_cli_double(const char *cmd, const char *opt, const char *s, double lo, do
 int rl_cli_int(const char *cmd, const char *opt, const char *s, long lo, long hi, int *out);
 /* "640x480" -> 640, 480, each 1 .. max */
 int rl_cli_size(const char *cmd, const char *opt, const char *s, int max, int *w, int *h);
+/* A decimal integer within [lo, hi]. */
+int rl_cli_long(const char *cmd, const char *opt, const char *s, long lo, long hi, long *out);
+
+/* A non-negative decimal integer within [lo, hi]. */
+int rl_cli_ulong(const char *cmd, const char *opt, const char *s, unsigned long lo, unsigned long hi,
+                 unsigned long *out);
+
+/* One to max finite numbers separated by commas into out[0 .. *n-1]; a
+ * value that is not prints "OPT: 'S' is not FORM" (form: what the option
+ * takes, "X,Y,YAW"); more than max prints "OPT: more than MAX values". */
+int rl_cli_doubles(const char *cmd, const char *opt, const char *s, const char *form, double *out, int max,
+                   int *n);
+
+/* The same for integers (each within int's range). */
+int rl_cli_ints(const char *cmd, const char *opt, const char *s, const char *form, int *out, int max, int *n);
 
 /* The recognition options detect, locate and site-check share (--family
  * 'f', --local 'L', --min-score 's'): 1 if c was one of them (applied),
  * -1 after a usage error line, 0 if c is another option. */
 int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config *cfg,
+                        const char **family);
+
+/* rl_cli_getopt that applies the recognition options itself
+ * (rl_cli_recog_option): the next other option, -1 at the end, '?' after
+ * a usage error line. */
+int rl_cli_getopt_recog(const char *cmd, int argc, char **argv, const struct option *opts, rl_recog_config *cfg,
                         const char **family);
 
 /* "out.png" for one image; "out-<stem of image>.png" for several. */

@@ -47,6 +47,7 @@ rl_err rl_heap_recog_prepare(rl_heap_recog *hr, int w, int h)
     }
     if ((hr->mem = malloc(need)) == NULL)
         return RL_ENOMEM;
+    memset(hr->mem, 0, need); /* its pages faulted in now, not in the first frame's time */
     hr->size = need;
     if ((e = rl_recog_init(&hr->rec, &hr->cfg, w, h, hr->mem, need)) != RL_OK) {
         rl_heap_recog_free(hr);

@@ -13,6 +13,17 @@ void rl_site_files_init(rl_site_files *f)
     memset(f, 0, sizeof *f);
 }
 
+void rl_site_files_folder(rl_site_files *f, rl_site_folder *held, const char *dir)
+{
+    snprintf(held->calibration, sizeof held->calibration, "%.1024s/camera.yaml", dir);
+    snprintf(held->map, sizeof held->map, "%.1024s/map.yaml", dir);
+    snprintf(held->robot, sizeof held->robot, "%.1024s/robot.yaml", dir);
+    rl_site_files_init(f);
+    f->calibration = held->calibration;
+    f->map = held->map;
+    f->robot = held->robot;
+}
+
 static int given(const char *path)
 {
     return path != NULL && path[0] != '\0';

@@ -60,6 +60,14 @@ typedef struct {
 /* No files, no size. */
 void rl_site_files_init(rl_site_files *f);
 
+/* The files of a site's folder, as the renderer and a recording write
+ * them: DIR/camera.yaml, DIR/map.yaml, DIR/robot.yaml (paths kept in
+ * held, which must outlive f). */
+typedef struct {
+    char calibration[1100], map[1100], robot[1100];
+} rl_site_folder;
+void rl_site_files_folder(rl_site_files *f, rl_site_folder *held, const char *dir);
+
 /* Read and check the files named in f (pointers kept: they must outlive
  * the site). RL_ENOTFOUND, RL_EFORMAT, RL_ERANGE or RL_EINVAL with one
  * line in err naming the file. */

@@ -59,18 +59,12 @@ static double least_us(void (*fn)(job *), job *j)
  * printed. */
 static int load_site(const char *dir, rl_site *site, double *build_ms)
 {
-    static char map[2048], camera[2048], robot[2048];
+    static rl_site_folder held;
     rl_site_files files;
     rl_recog_config cfg;
     char err[768];
     uint64_t t0;
-    snprintf(map, sizeof map, "%s/map.yaml", dir);
-    snprintf(camera, sizeof camera, "%s/camera.yaml", dir);
-    snprintf(robot, sizeof robot, "%s/robot.yaml", dir);
-    rl_site_files_init(&files);
-    files.map = map;
-    files.calibration = camera;
-    files.robot = robot;
+    rl_site_files_folder(&files, &held, dir);
     rl_recog_defaults(&cfg);
     if (rl_site_load(site, &files, err, sizeof err) != RL_OK) {
         fprintf(stderr, "ringloc-bench: %s\n", err);

@@ -198,19 +198,13 @@ static int bench_pose(const char *dir)
     static const char *kinds[] = {"straight", "rect", "circle"};
     static rl_result res;
     static rl_site site;
-    static char map[2048], camera[2048], robot[2048];
+    static rl_site_folder held;
     static double pose_us[MAX_FRAMES], recog_us[MAX_FRAMES];
     rl_site_files files;
     rl_recog_config cfg;
     char path[2048], err[768];
     int q, k, n = 0, solved = 0;
-    snprintf(map, sizeof map, "%s/map.yaml", dir);
-    snprintf(camera, sizeof camera, "%s/camera.yaml", dir);
-    snprintf(robot, sizeof robot, "%s/robot.yaml", dir);
-    rl_site_files_init(&files);
-    files.map = map;
-    files.calibration = camera;
-    files.robot = robot;
+    rl_site_files_folder(&files, &held, dir);
     rl_recog_defaults(&cfg);
     if (rl_site_load(&site, &files, err, sizeof err) != RL_OK || rl_site_prepare(&site, &cfg, err, sizeof err) != RL_OK) {
         fprintf(stderr, "ringloc-bench: %s\n", err);

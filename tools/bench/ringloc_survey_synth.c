@@ -20,7 +20,6 @@
 #include <sys/stat.h>
 #include "rl_calibfile.h"
 #include "rl_cli.h"
-#include "rl_cli_num.h"
 #include "rl_mapfile.h"
 #include "rl_outfile.h"
 #include "rl_pose_fit.h"

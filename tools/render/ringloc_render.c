@@ -38,7 +38,6 @@
 #include "render_truth.h"
 #include "rl_calibfile.h"
 #include "rl_cli.h"
-#include "rl_cli_num.h"
 #include "rl_mapfile.h"
 #include "rl_png.h"
 #include "rl_print.h"

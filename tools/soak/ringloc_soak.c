@@ -21,7 +21,6 @@
 #include <string.h>
 #include <unistd.h>
 #include "rl_cli.h"
-#include "rl_cli_num.h"
 #include "rl_clock.h"
 #include "rl_packet_sink.h"
 #include "rl_run.h"
@@ -159,17 +158,11 @@ static int soak_args(int argc, char **argv, long *frames, double *every, const c
 /* SITE_DIR's map, camera and robot, and the recognizer for them. */
 static int soak_site(const char *dir, rl_site *site)
 {
-    static char map[4096], camera[4096], robot[4096];
+    static rl_site_folder held;
     char err[768];
     rl_site_files files;
     rl_recog_config cfg;
-    snprintf(map, sizeof map, "%s/map.yaml", dir);
-    snprintf(camera, sizeof camera, "%s/camera.yaml", dir);
-    snprintf(robot, sizeof robot, "%s/robot.yaml", dir);
-    rl_site_files_init(&files);
-    files.map = map;
-    files.calibration = camera;
-    files.robot = robot;
+    rl_site_files_folder(&files, &held, dir);
     rl_recog_defaults(&cfg);
     if (rl_site_load(site, &files, err, sizeof err) != RL_OK || rl_site_prepare(site, &cfg, err, sizeof err) != RL_OK)
         return rl_cli_fail(NULL, 1, "%s", err);

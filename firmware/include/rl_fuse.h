@@ -1,0 +1,176 @@
+/* rl_fuse: the controller's filter, wheel odometry fused with ringloc's
+ * pose frames, late frames applied at their capture time.
+ *
+ * For the robot's controller (ARIA, ROS, a bare loop), not the camera
+ * board: C99, no allocation, no stdio, libm only. The state is the pose
+ * (x, y, yaw) and the odometry's two systematic errors, a distance scale
+ * (the wheels' diameter) and a turn scale (the track width): an extended
+ * Kalman filter whose past (RL_FUSE_HISTORY odometry samples, each with
+ * the state after it) lets a frame that arrives late be applied at the
+ * instant its image was taken, the odometry since then replayed on top.
+ * A frame the odometry and both covariances make implausible (Mahalanobis
+ * gate) is rejected and counted; when `recover_frames` rejected frames in
+ * a row agree with each other through the odometry between them, the robot
+ * was carried: the filter restarts from them (counted too). With no frames
+ * the pose goes on from the odometry, its covariance growing by the wheel
+ * noise and the scales' uncertainty.
+ *
+ * Clocks. Every time is in seconds on ONE monotonic clock, the
+ * controller's: odometry samples carry the time the wheels were read, and
+ * a frame carries its capture time on that clock, which the controller
+ * reconstructs as capture = arrival - latency - line time
+ * (rl_fuse_frame_from_msg): arrival is when the frame's last byte was read
+ * (stamp it in the thread that reads the port, not in a later control
+ * cycle), latency the firmware's capture-to-send delay carried in the
+ * frame, line time the frame's bytes at the baud rate (39 bytes: 3.4 ms at
+ * 115200). The firmware's own time_ms is another clock and is not used.
+ * What breaks this: a USB serial adapter that holds bytes (FTDI's latency
+ * timer, 16 ms by default: set it to 1 ms), odometry stamped when a
+ * packet was processed rather than when the wheels were read (ARIA: use
+ * the packet's receive time), a clock that steps (wall time, NTP). A
+ * timing error dt moves the frame v*dt along the track (1 mm per ms at
+ * 1 m/s); `time_sigma` is how much of that the filter expects.
+ *
+ *   rl_fuse_config cfg;
+ *   static rl_fuse f;                     // about 40 kB: static or caller's block
+ *   rl_fuse_frame fr;
+ *   rl_fuse_pose p;
+ *   rl_msg m;                             // a decoded pose frame (rl_packet.h)
+ *   rl_fuse_defaults(&cfg);
+ *   cfg.track = 0.33;                     // the odometry's nominal track width, m
+ *   if (rl_fuse_init(&f, &cfg) != RL_OK)
+ *       return;
+ *   if (rl_fuse_odometry(&f, 12.30, 1.02, 0.51, 0.12) != RL_OK)  // t, x, y, yaw
+ *       return;
+ *   memset(&m, 0, sizeof m);
+ *   rl_fuse_frame_from_msg(&m, 12.31, 115200, &fr); // arrival time, baud
+ *   if (rl_fuse_frame_add(&f, &fr) == RL_OK && rl_fuse_pose_at(&f, 12.32, &p) == RL_OK)
+ *       use(p.x, p.y, p.yaw, p.cov[0][0]);
+ */
+#ifndef RL_FUSE_H
+#define RL_FUSE_H
+
+#include "rl_error.h"
+#include "rl_packet.h"
+
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Odometry samples kept (with the state after each): the oldest capture
+ * time a frame can have is this many samples back (2.5 s at 50 Hz);
+ * older frames are counted in rl_fuse_stats.too_old. */
+#ifndef RL_FUSE_HISTORY
+#define RL_FUSE_HISTORY 128
+#endif
+
+#define RL_FUSE_N 5 /* state: x, y, yaw, distance scale, turn scale */
+
+typedef struct {
+    double track;        /* the odometry's nominal track width, m (0.33) */
+    double wheel_noise;  /* each wheel's travel error after 1 m, m (sd grows as sqrt(distance); 0.001) */
+    double scale_sigma;  /* the distance scale's uncertainty before any frame (0.03) */
+    double turn_sigma;   /* the turn scale's (0.05) */
+    double scale_drift;  /* the two scales' random walk, sd per sqrt(m) driven (1e-4) */
+    double time_sigma;   /* error of a frame's capture time, s (0.002): v*dt added to its sigma */
+    double sigma_xy;     /* frame sigma (m) when the frame has none (version 1; 0.005) */
+    double sigma_yaw;    /* frame sigma (rad) when the frame has none (0.005) */
+    double floor_xy;     /* added in quadrature to every frame's sigmas: the map's error (0.0005 m) */
+    double floor_yaw;    /* (0.0005 rad) */
+    double gate;         /* Mahalanobis distance squared beyond which a frame is rejected
+                            (16.27: 3 degrees of freedom, 1 in 1000 good frames lost) */
+    int recover_frames;  /* rejected frames in a row that agree among themselves:
+                            the robot was carried, restart from them (2; 0: never) */
+    double max_extrapolate; /* s a pose is predicted past the last odometry (0.5) */
+} rl_fuse_config;
+
+/* A pose frame on the controller's clock. Sigmas 0: unknown (the
+ * config's sigma_xy / sigma_yaw stand in). */
+typedef struct {
+    double t;            /* capture time, s */
+    double x, y, yaw;    /* m, m, rad */
+    double sx, sy, syaw; /* standard deviations */
+} rl_fuse_frame;
+
+/* What happened to the frames (nothing is dropped without a count). */
+typedef struct {
+    unsigned long applied;      /* frames fused */
+    unsigned long rejected;     /* beyond the gate */
+    unsigned long recoveries;   /* restarts after the robot was carried */
+    unsigned long too_old;      /* older than the history */
+    unsigned long out_of_order; /* older than a frame already fused */
+    unsigned long waiting_lost; /* newer than the odometry, replaced by a newer one before it came */
+} rl_fuse_stats;
+
+typedef struct {
+    double t;
+    double o[3];               /* the odometry's pose: x, y, yaw */
+    double m[RL_FUSE_N];       /* the state after this sample */
+    double P[RL_FUSE_N][RL_FUSE_N];
+    int valid;                 /* 0 before the first frame */
+} rl_fuse_entry;
+
+/* The filter; fields are internal (read stats, or use the functions). */
+typedef struct {
+    rl_fuse_config cfg;
+    rl_fuse_entry h[RL_FUSE_HISTORY]; /* ring of odometry samples */
+    int head, count;                  /* newest at head */
+    rl_fuse_entry anchor;             /* the state just after the last fused frame */
+    int has_pose;                     /* a frame has given the pose */
+    double last_frame_t;              /* capture time of the last fused frame */
+    rl_fuse_frame cand;               /* the last rejected frame: carried? */
+    int n_cand;                       /* rejected frames in a row that agree, up to cand */
+    rl_fuse_frame waiting;            /* a frame newer than the odometry */
+    int has_waiting;
+    rl_fuse_stats stats;
+} rl_fuse;
+
+/* The fused pose at a time. */
+typedef struct {
+    double t;
+    double x, y, yaw;
+    double cov[3][3];     /* of x, y, yaw */
+    double scale, turn;   /* the odometry's learned distance and turn scales */
+    double scale_sd, turn_sd;
+} rl_fuse_pose;
+
+/* Every field of cfg at its default (in parentheses above). */
+void rl_fuse_defaults(rl_fuse_config *cfg);
+
+/* Empty filter; RL_EINVAL for a config out of its domain (track, noises,
+ * gate not positive). */
+RL_CHECK rl_err rl_fuse_init(rl_fuse *f, const rl_fuse_config *cfg);
+
+/* One odometry sample: the robot's own dead-reckoned pose (m, rad) at time
+ * t, at any rate. RL_EINVAL when t does not increase or a value is not
+ * finite (the sample is ignored). The oldest sample falls out of the
+ * history. A waiting frame whose time the odometry has now passed is fused. */
+RL_CHECK rl_err rl_fuse_odometry(rl_fuse *f, double t, double x, double y, double yaw);
+
+/* A frame: fused at its capture time and the odometry since replayed
+ * (RL_OK); or kept until the odometry reaches its time (RL_OK); or
+ * rejected by the gate (RL_ERANGE, counted; a restart when it agrees with
+ * the rejected frames before it, then RL_OK); or older than the history
+ * or than the last fused frame (RL_ERANGE, counted); RL_EINVAL when not
+ * finite. The first frame sets the pose. */
+RL_CHECK rl_err rl_fuse_frame_add(rl_fuse *f, const rl_fuse_frame *fr);
+
+/* The pose at time t: interpolated inside the history (before the last
+ * fused frame's capture: that frame's state moved back through the
+ * odometry), predicted past its newest sample (at the speed and turn rate
+ * of the last 0.15 s of odometry, at most max_extrapolate). RL_ENOTFOUND
+ * before the first frame, RL_ERANGE for a time before the history (or
+ * past the extrapolation limit: *p then holds the pose at the limit). */
+RL_CHECK rl_err rl_fuse_pose_at(const rl_fuse *f, double t, rl_fuse_pose *p);
+
+/* A decoded pose frame (rl_packet.h) as a frame on the controller's clock:
+ * capture = arrival - latency - the frame's bytes at baud (10 bits a byte).
+ * Version 1 frames have no sigmas (0: the config's stand in). */
+void rl_fuse_frame_from_msg(const rl_msg *m, double arrival, int baud, rl_fuse_frame *fr);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

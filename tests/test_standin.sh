@@ -1,0 +1,64 @@
+#!/bin/sh
+# The stand-in Pioneer (ringloc-standin) against the project's own ARCOS
+# code (standin_client: rl_arcos, rl_packet's decoder, rl_fuse), and, where
+# AriaCoda was found, against the ARIA example: a 6 s drive at 1 m/s
+# turning 30 degrees a second, pose frames 10 a second arriving 100 ms
+# after capture; the fused pose at every server information packet
+# against the stand-in's truth (within 5 mm RMS: the frames are stamped on
+# arrival by processes that share the machine with the build, so a loaded
+# CI host's scheduling shows here, not in test_fuse_drive).
+# usage: test_standin.sh STANDIN CLIENT TMPDIR [ARIA_EXAMPLE]
+S=$1
+C=$2
+T=$3
+A=${4:-}
+rm -rf "$T"
+mkdir -p "$T"
+fail=0
+# a port of our own: the process id spreads parallel runs
+port=$((20000 + $$ % 20000))
+# RMS and largest error of columns 2-3 (fused) and 5-6 (ARIA's pose, if
+# any) against the truth, interpolated in time; from the 3rd second
+judge() { # LOG NAME LIMIT_MM
+    awk -v name="$2" -v lim="$3" -v aria="$4" 'NR == FNR { t[n] = $1; x[n] = $2; y[n] = $3; n++; next }
+        { while (i < n - 2 && t[i + 1] < $1) i++
+          if (n < 2 || $1 < t[0] + 3 || $1 > t[n - 1]) next
+          f = ($1 - t[i]) / (t[i + 1] - t[i]); tx = x[i] + f * (x[i + 1] - x[i]); ty = y[i] + f * (y[i + 1] - y[i])
+          e = ($2 - tx)^2 + ($3 - ty)^2; s += e; if (e > mx) mx = e; m++
+          if (aria) sa += ($5 - tx)^2 + ($6 - ty)^2 }
+        END { if (m < 25) { print "FAIL: " name ": " m " packets judged"; exit 1 }
+              printf "%s: %d packets, fused pose %.2f mm RMS from the truth (largest %.2f)", name, m, 1000 * sqrt(s / m), 1000 * sqrt(mx)
+              if (aria) printf ", ArRobot::getPose() %.2f mm RMS", 1000 * sqrt(sa / m)
+              printf "\n"
+              exit !(1000 * sqrt(s / m) <= lim && (!aria || 1000 * sqrt(sa / m) <= lim)) }' "$T/$1.truth" "$T/$1.log"
+}
+run() { # NAME, then the controller's command line with @PORT@ @PTY@ @LOG@
+    name=$1
+    shift
+    "$S" --port $port --frames-pty "$T/tty" --truth "$T/$name.truth" --start 1.5,2.0,0.3 \
+        >"$T/$name.standin" 2>&1 &
+    sp=$!
+    i=0
+    while [ ! -L "$T/tty" ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
+    cmd=$(echo "$*" | sed "s|@PORT@|$port|g; s|@PTY@|$T/tty|g; s|@LOG@|$T/$name.log|g")
+    # shellcheck disable=SC2086 # the command's words
+    timeout 60 $cmd >"$T/$name.out" 2>&1 || { echo "FAIL: $name exited $?: $(tail -5 "$T/$name.out")"; fail=1; }
+    i=0
+    while kill -0 $sp 2>/dev/null && [ $i -lt 30 ]; do sleep 0.1; i=$((i + 1)); done
+    kill $sp 2>/dev/null
+    wait $sp 2>/dev/null
+    port=$((port + 1))
+}
+run client "$C" @PORT@ @PTY@ 6 1000 30 @LOG@
+cat "$T/client.out"
+grep -q "handshake: SYNC0 SYNC1 SYNC2 answered; name ringloc-standin" "$T/client.out" || { echo "FAIL: handshake"; fail=1; }
+judge client "standin_client (the project's ARCOS code)" 5 || fail=1
+if [ -n "$A" ]; then
+    run aria "$A" -remoteHost localhost -remoteRobotTcpPort @PORT@ -ringlocPort @PTY@ -drive 6 -vel 1000 \
+        -rotVel 30 -poseLog @LOG@
+    grep -E "Connected to robot|Subtype|ringloc-aria-fuse" "$T/aria.out"
+    judge aria "ringloc-aria-fuse (ARIA)" 5 1 || fail=1
+else
+    echo "AriaCoda not found: the ARIA example was not built (ARIA_DIR)"
+fi
+[ $fail = 0 ]

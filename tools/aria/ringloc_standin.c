@@ -1,0 +1,319 @@
+/* ringloc-standin: a Pioneer stand-in that speaks ARCOS on a TCP port (as
+ * MobileSim does), for the controller-side tests without a robot: the
+ * connection handshake (SYNC0, SYNC1, SYNC2 with its name, type and
+ * subtype, OPEN, CLOSE), a server information packet every 100 ms with the
+ * odometry of a simulated drive (standin_sim.c), and the motion commands
+ * (ENABLE, VEL, RVEL, ROTATE, STOP, ESTOP, SETO). It also plays ringloc's
+ * camera: pose frames about the true pose on a pseudo-terminal, 10 a
+ * second, each arriving 100 ms after its capture; and it logs the truth. */
+#define _XOPEN_SOURCE 600
+#include <arpa/inet.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <getopt.h>
+#include <math.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/socket.h>
+#include <time.h>
+#include <unistd.h>
+#include "rl_cli.h"
+#include "rl_outfile.h"
+#include "standin_sim.h"
+
+#define SIP_PERIOD 0.1
+#define FRAME_PERIOD 0.1
+#define FRAME_DELAY 0.1      /* capture -> the frame's last byte read */
+#define LINE_TIME (39 * 10.0 / 115200)
+#define QUEUE 8
+#define P "ringloc-standin"
+
+static const char *help =
+    "usage: ringloc-standin [--port 8101] [--frames-pty LINK] [--truth FILE] [--seconds S]\n"
+    "                       [--start X,Y,YAW] [--seed N]\n\n"
+    "A Pioneer stand-in speaking ARCOS on TCP port PORT of 127.0.0.1 (ARIA: -remoteHost\n"
+    "localhost -remoteRobotTcpPort PORT): the handshake, a server information packet every\n"
+    "100 ms with the odometry of a simulated drive (1%% wheel scale and 2%% track width off,\n"
+    "wheel noise), the motion commands VEL, RVEL, ROTATE, ENABLE, STOP, ESTOP, SETO.\n"
+    "  --frames-pty LINK  also ringloc's camera: a pseudo-terminal (LINK points to it)\n"
+    "                     carrying pose frames about the true pose, 10 a second, each\n"
+    "                     read 100 ms after its capture (its latency field says so)\n"
+    "  --truth FILE       the true pose every 10 ms, 't x y yaw' (t: CLOCK_MONOTONIC s)\n"
+    "  --seconds S        stop after S seconds (default: when the client closes)\n"
+    "  --start X,Y,YAW    the true start in the map (default 1,1,0)\n";
+
+static volatile sig_atomic_t stop_flag;
+
+static void on_signal(int sig)
+{
+    (void)sig;
+    stop_flag = 1;
+}
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+typedef struct {
+    standin_robot robot;
+    int lfd, cfd;          /* listening socket, client (-1: none) */
+    int pty;               /* master of the frames' pty (-1: none) */
+    int synced;            /* 0..3: SYNC steps done */
+    int open;              /* OPEN received: SIPs flow */
+    int served;            /* a client has come and opened */
+    rl_arcos_reader rd;
+    uint8_t q[QUEUE][RL_PACKET_MAX];
+    size_t qlen[QUEUE];
+    double qsend[QUEUE];
+    int qn;
+    unsigned long frames_sent, frames_dropped, sips;
+} standin;
+
+static void send_all(standin *s, const uint8_t *b, size_t n)
+{
+    if (s->cfd >= 0 && write(s->cfd, b, n) != (ssize_t)n) {
+        close(s->cfd);
+        s->cfd = -1;
+    }
+}
+
+static void sync_reply(standin *s, int id)
+{
+    uint8_t p[64], buf[RL_ARCOS_MAX];
+    size_t n = 1;
+    p[0] = (uint8_t)id;
+    if (id == 2) { /* name, type, subtype: ARIA picks its parameters by the subtype */
+        static const char names[] = "ringloc-standin\0Pioneer\0p3dx-sh";
+        memcpy(p + 1, names, sizeof names);
+        n += sizeof names;
+    }
+    send_all(s, buf, rl_arcos_packet(buf, p, n));
+}
+
+static void command(standin *s, const uint8_t *p, size_t n)
+{
+    int arg = rl_arcos_int_arg(p, n);
+    if (s->synced < 3) { /* the handshake: each SYNC echoed in turn */
+        if (p[0] == s->synced) {
+            sync_reply(s, p[0]);
+            s->synced++;
+        } else if (p[0] == 0) {
+            s->synced = 0;
+            sync_reply(s, 0);
+            s->synced = 1;
+        }
+        return;
+    }
+    switch (p[0]) {
+    case RL_ARCOS_OPEN: s->open = s->served = 1; break;
+    case RL_ARCOS_CLOSE: s->open = 0; s->synced = 0; s->robot.v_cmd = s->robot.w_cmd = 0; break;
+    case RL_ARCOS_ENABLE: s->robot.enabled = arg != 0; break;
+    case RL_ARCOS_VEL: s->robot.v_cmd = arg / 1000.0; break;
+    case RL_ARCOS_RVEL: case RL_ARCOS_ROTATE: s->robot.w_cmd = arg * M_PI / 180; break;
+    case RL_ARCOS_STOP: case RL_ARCOS_ESTOP: s->robot.v_cmd = s->robot.w_cmd = 0; break;
+    case RL_ARCOS_SETO: s->robot.ox = s->robot.oy = s->robot.oyaw = 0; break;
+    default: break; /* PULSE, CONFIG (ARIA goes on without it), sonar, ...: nothing to do */
+    }
+}
+
+static int listen_on(int port)
+{
+    struct sockaddr_in a;
+    int one = 1, fd = socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (fd < 0)
+        return -1;
+    setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+    memset(&a, 0, sizeof a);
+    a.sin_family = AF_INET;
+    a.sin_port = htons((uint16_t)port);
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (bind(fd, (struct sockaddr *)&a, sizeof a) != 0 || listen(fd, 1) != 0) {
+        close(fd);
+        return -1;
+    }
+    return fd;
+}
+
+static int open_pty(const char *link)
+{
+    const char *name;
+    int fd = posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK);
+    if (fd < 0 || grantpt(fd) != 0 || unlockpt(fd) != 0 || (name = ptsname(fd)) == NULL)
+        return -1;
+    unlink(link);
+    if (symlink(name, link) != 0) {
+        close(fd);
+        return -1;
+    }
+    return fd;
+}
+
+/* a frame captured now, queued to be written when it would have arrived */
+static void capture(standin *s, double t)
+{
+    int k;
+    if (s->qn >= QUEUE) {
+        s->frames_dropped++;
+        return;
+    }
+    k = s->qn++;
+    s->qlen[k] = standin_frame(&s->robot, (uint32_t)(t * 1000), FRAME_DELAY - LINE_TIME, s->q[k]);
+    s->qsend[k] = t + FRAME_DELAY;
+}
+
+static void send_due(standin *s, double t)
+{
+    while (s->qn > 0 && s->qsend[0] <= t) {
+        if (write(s->pty, s->q[0], s->qlen[0]) == (ssize_t)s->qlen[0])
+            s->frames_sent++;
+        else
+            s->frames_dropped++; /* no reader yet: the pty's buffer is full */
+        memmove(s->q[0], s->q[1], (QUEUE - 1) * sizeof s->q[0]);
+        memmove(s->qlen, s->qlen + 1, (QUEUE - 1) * sizeof s->qlen[0]);
+        memmove(s->qsend, s->qsend + 1, (QUEUE - 1) * sizeof s->qsend[0]);
+        s->qn--;
+    }
+}
+
+/* the client's bytes, or a new client */
+static void network(standin *s)
+{
+    struct pollfd p[2];
+    int n = 0;
+    p[n].fd = s->lfd;
+    p[n++].events = POLLIN;
+    if (s->cfd >= 0) {
+        p[n].fd = s->cfd;
+        p[n++].events = POLLIN;
+    }
+    if (poll(p, (nfds_t)n, 1) <= 0)
+        return;
+    if ((p[0].revents & POLLIN) && s->cfd < 0) {
+        s->cfd = accept(s->lfd, NULL, NULL);
+        s->synced = s->open = 0;
+        rl_arcos_reader_init(&s->rd);
+    }
+    if (n > 1 && (p[1].revents & (POLLIN | POLLHUP))) {
+        uint8_t buf[512], pl[RL_ARCOS_MAX];
+        size_t len;
+        ssize_t got = read(s->cfd, buf, sizeof buf), i;
+        if (got <= 0) {
+            close(s->cfd);
+            s->cfd = -1;
+            s->open = 0;
+            return;
+        }
+        for (i = 0; i < got; i++)
+            if (rl_arcos_reader_push(&s->rd, buf[i], pl, &len) && len > 0)
+                command(s, pl, len);
+    }
+}
+
+static int parse_start(const char *arg, double *x, double *y, double *yaw)
+{
+    char rest;
+    return sscanf(arg, "%lf,%lf,%lf%c", x, y, yaw, &rest) == 3 && isfinite(*x) && isfinite(*y) &&
+           isfinite(*yaw);
+}
+
+/* the drive until stopped: 1 ms steps, SIPs, frames, the truth */
+static void run(standin *s, double seconds, FILE *truth)
+{
+    double t0 = now_s(), last = t0, next_sip = t0, next_frame = t0, next_truth = t0;
+    while (!stop_flag) {
+        double t;
+        network(s);
+        t = now_s();
+        standin_step(&s->robot, t - last);
+        last = t;
+        if (s->open && s->cfd >= 0 && t >= next_sip) {
+            uint8_t buf[RL_ARCOS_MAX];
+            send_all(s, buf, standin_sip(&s->robot, buf));
+            s->sips++;
+            next_sip += SIP_PERIOD;
+        }
+        if (s->pty >= 0 && t >= next_frame) {
+            capture(s, t);
+            next_frame += FRAME_PERIOD;
+        }
+        if (s->pty >= 0)
+            send_due(s, t);
+        if (truth && t >= next_truth) {
+            fprintf(truth, "%.4f %.5f %.5f %.5f\n", t, s->robot.tx, s->robot.ty, s->robot.tyaw);
+            next_truth += 0.01;
+        }
+        if ((seconds > 0 && t - t0 >= seconds) || (seconds <= 0 && s->served && s->cfd < 0))
+            break;
+        if (next_sip < t - 1) /* no client for a while: no burst of SIPs when one comes */
+            next_sip = t;
+    }
+}
+
+int main(int argc, char **argv)
+{
+    static const struct option opts[] = {
+        {"port", required_argument, 0, 'p'},  {"frames-pty", required_argument, 0, 'f'},
+        {"truth", required_argument, 0, 't'}, {"seconds", required_argument, 0, 's'},
+        {"start", required_argument, 0, 'x'}, {"seed", required_argument, 0, 'S'},
+        {"help", no_argument, 0, 'h'},        {0, 0, 0, 0}};
+    static standin s;
+    const char *pty_link = NULL, *truth_path = NULL;
+    double seconds = 0, x = 1, y = 1, yaw = 0;
+    int c, port = 8101, seed = 1;
+    rl_outfile o;
+    char err[1200];
+    struct sigaction sa;
+    rl_cli_start(P);
+    while ((c = rl_cli_getopt(NULL, argc, argv, opts)) != -1) {
+        int ok = 1;
+        switch (c) {
+        case 'p': ok = rl_cli_int(NULL, "--port", optarg, 1, 65535, &port); break;
+        case 'f': pty_link = optarg; break;
+        case 't': truth_path = optarg; break;
+        case 's': ok = rl_cli_double(NULL, "--seconds", optarg, 0, 1e6, &seconds); break;
+        case 'S': ok = rl_cli_int(NULL, "--seed", optarg, 0, 1000000000, &seed); break;
+        case 'x':
+            if (!parse_start(optarg, &x, &y, &yaw))
+                return rl_cli_fail(NULL, RL_EXIT_USAGE, "--start: '%s' is not X,Y,YAW", optarg);
+            break;
+        case 'h': fputs(help, stdout); return 0;
+        default: return RL_EXIT_USAGE;
+        }
+        if (!ok)
+            return RL_EXIT_USAGE;
+    }
+    if (optind != argc)
+        return rl_cli_fail(NULL, RL_EXIT_USAGE, "unexpected argument '%s' (see --help)", argv[optind]);
+    standin_init(&s.robot, x, y, yaw, (unsigned)seed);
+    s.cfd = s.pty = -1;
+    if ((s.lfd = listen_on(port)) < 0)
+        return rl_cli_fail(NULL, RL_EXIT_FAIL, "127.0.0.1:%d: %s", port, strerror(errno));
+    if (pty_link && (s.pty = open_pty(pty_link)) < 0)
+        return rl_cli_fail(NULL, RL_EXIT_FAIL, "%s: cannot make a pseudo-terminal there: %s", pty_link,
+                           strerror(errno));
+    if (truth_path && rl_outfile_open(&o, truth_path, err, sizeof err) != RL_OK)
+        return rl_cli_fail(NULL, RL_EXIT_FAIL, "%s", err);
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    signal(SIGPIPE, SIG_IGN);
+    fprintf(stderr, P ": listening on 127.0.0.1:%d%s%s\n", port, pty_link ? ", pose frames on " : "",
+            pty_link ? pty_link : "");
+    run(&s, seconds, truth_path ? o.f : NULL);
+    if (pty_link)
+        unlink(pty_link);
+    fprintf(stderr, P ": %lu server information packets, %lu pose frames sent, %lu dropped; odometry "
+            "(%.3f, %.3f, %.4f), truth (%.4f, %.4f, %.4f)\n", s.sips, s.frames_sent, s.frames_dropped,
+            s.robot.ox, s.robot.oy, s.robot.oyaw, s.robot.tx, s.robot.ty, s.robot.tyaw);
+    if (truth_path && rl_outfile_commit(&o, err, sizeof err) != RL_OK)
+        return rl_cli_fail(NULL, RL_EXIT_FAIL, "%s", err);
+    return 0;
+}
