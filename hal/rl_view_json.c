@@ -178,8 +178,11 @@ size_t rl_view_json_status(const rl_view_snap *s, char *buf, size_t cap)
     jbuf b = {buf, cap, 0, cap == 0};
     unsigned long hist[256];
     int i;
-    put(&b, "{\"seq\": %ld, \"width\": %d, \"height\": %d, \"image\": %s, \"frame\": %ld, \"t_ms\": %.1f, ",
-        s->seq, s->width, s->height, s->have_image ? "true" : "false", s->frame_index, (double)s->t_us / 1e3);
+    /* the capture time in whole ms, as the pose packet carries it (cut, not
+     * rounded: a script matches the two) */
+    put(&b, "{\"seq\": %ld, \"width\": %d, \"height\": %d, \"image\": %s, \"frame\": %ld, \"t_ms\": %llu, ",
+        s->seq, s->width, s->height, s->have_image ? "true" : "false", s->frame_index,
+        (unsigned long long)(s->t_us / 1000u));
     /* how old the frame shown is when the snapshot was taken (the camera
      * down: status frames go on, the image stays the last one) */
     put(&b, "\"frame_age_ms\": %.1f, \"reason\": %d, ",

@@ -64,8 +64,8 @@ def check_labels(ck, s, paths_dir, names):
 
 def check_pose(ck, s, poses, paths_dir, names):
     p = s["pose"]
-    sent = [q for q in poses if q["type"] == "pose" and q["time_ms"] == int(s["t_ms"]) % 2 ** 32]
-    ck.check(len(sent) == 1, "frame %d (t %.1f ms): %d pose frames of that time on the line"
+    sent = [q for q in poses if q["type"] == "pose" and q["time_ms"] == s["t_ms"] % 2 ** 32]
+    ck.check(len(sent) == 1, "frame %d (t %d ms): %d pose frames of that time on the line"
              % (s["frame"], s["t_ms"], len(sent)))
     if sent:
         d = math.hypot(p["x"] - sent[0]["x"], p["y"] - sent[0]["y"])
