@@ -10,7 +10,8 @@
 #   make bench-real REAL=DIR  ringloc and AprilTag 3 on real photos with landmarks placed in them
 #   make fuzz [FUZZ_SECONDS=60]  libFuzzer (clang, ASan + UBSan) on the recognizer, the PNG
 #                        reader, the YAML loaders, the pose solver, the frame decoder,
-#                        the survey's JSON-lines input and first map;
+#                        the survey's JSON-lines input and first map, the web view's
+#                        request handling and status JSON;
 #                        MSan on those without libpng and libyaml
 #   make soak [SOAK_FRAMES=200000]  the firmware's loop for a long run, its serial line
 #                        vanishing every few seconds: heap calls, RSS, frames after reopening
@@ -42,8 +43,8 @@ soak: host
 BUILD_FUZZ        ?= build-fuzz
 BUILD_FUZZ_MSAN   ?= build-fuzz-msan
 FUZZ_SECONDS      ?= 60
-FUZZ_TARGETS      ?= recog png yaml pose packet survey place
-FUZZ_MSAN_TARGETS ?= recog pose packet place
+FUZZ_TARGETS      ?= recog png yaml pose packet survey place http
+FUZZ_MSAN_TARGETS ?= recog pose packet place http
 
 fuzz:
 	@sh tools/deps.sh fuzz

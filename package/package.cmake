@@ -25,6 +25,8 @@ install(FILES ${CMAKE_BINARY_DIR}/package/ringloc.service DESTINATION /lib/syste
         COMPONENT firmware)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/../shared/landmark-spec.md
         DESTINATION share/doc/ringloc OPTIONAL COMPONENT firmware)
+# the web view's drop-in for the unit (network for http:), copied by hand
+install(FILES ${PROJECT_SOURCE_DIR}/package/ringloc-web.conf DESTINATION share/doc/ringloc COMPONENT firmware)
 install(TARGETS ringloc RUNTIME DESTINATION bin COMPONENT tools)
 
 # `ringloc-fuse`, what a controller computer installs to build against
@@ -61,8 +63,14 @@ set(RL_FW_DEPENDS "libc6 (>= 2.34), libpng16-16, libyaml-0-2, libturbojpeg0, pas
 if(LIBCAMERA_FOUND)
   string(APPEND RL_FW_DEPENDS ", libstdc++6, libcamera0.0.3 | libcamera0.2 | libcamera0.3")
 endif()
+if(MHD_FOUND) # the web view (--http)
+  string(APPEND RL_FW_DEPENDS ", libmicrohttpd12")
+endif()
 set(CPACK_DEBIAN_FIRMWARE_PACKAGE_DEPENDS "${RL_FW_DEPENDS}")
 set(RL_TOOLS_DEPENDS "libc6 (>= 2.34), libpng16-16, libyaml-0-2, libcairo2")
+if(MHD_FOUND) # `ringloc run --http`
+  string(APPEND RL_TOOLS_DEPENDS ", libmicrohttpd12")
+endif()
 if(TARGET ringloc_survey) # a desktop build: `ringloc survey` links Ceres Solver and json-c
   string(APPEND RL_TOOLS_DEPENDS ", libstdc++6, libceres3, libjson-c5")
 endif()

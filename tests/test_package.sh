@@ -38,6 +38,7 @@ check "binary is for $ARCH" sh -c "file '$T/root/usr/bin/ringloc-fw' | grep -q '
 # what the firmware binary links: no cairo, no OpenCV (readelf reads any arch)
 readelf -d "$T/root/usr/bin/ringloc-fw" >"$T/needed" 2>&1
 check "ringloc-fw links libpng, libyaml and libturbojpeg" sh -c "grep -q 'libpng' '$T/needed' && grep -q 'libyaml' '$T/needed' && grep -q 'libturbojpeg' '$T/needed'"
+check "the web view's library, when linked, is declared" sh -c "! grep -q libmicrohttpd '$T/needed' || grep -qE '^Depends: .*libmicrohttpd12' '$T/control'"
 check "ringloc-fw links neither cairo nor OpenCV" sh -c "! grep -qiE 'cairo|opencv' '$T/needed'"
 tools=$(ls "$T"/out/ringloc-tools_*_"$ARCH".deb 2>/dev/null | head -1)
 check "a ringloc-tools_*_$ARCH.deb is built" test -f "$tools"
@@ -124,6 +125,17 @@ if command -v systemd-analyze >/dev/null 2>&1; then
         pass=$((pass + 1))
     else
         echo "FAIL: systemd-analyze verify:"; cat "$T/verify.log"; fail=$((fail + 1))
+    fi
+    # with the web view's drop-in (network for http:) the unit still verifies
+    mkdir -p "$T/verify/ringloc.service.d"
+    cp "$T/root/usr/share/doc/ringloc/ringloc-web.conf" "$T/verify/ringloc.service.d/web.conf" 2>/dev/null
+    if [ -f "$T/verify/ringloc.service.d/web.conf" ] &&
+       systemd-analyze verify "$T/verify/ringloc.service" >"$T/verify_web.log" 2>&1 &&
+       ! grep -qiE 'error|invalid|unknown' "$T/verify_web.log"; then
+        pass=$((pass + 1))
+    else
+        echo "FAIL: the web view's drop-in (usr/share/doc/ringloc/ringloc-web.conf):"; cat "$T/verify_web.log"
+        fail=$((fail + 1))
     fi
 fi
 echo "$pass passed, $fail failed"

@@ -10,6 +10,7 @@
 #include "rl_packet_sink.h"
 #include "rl_png.h"
 #include "rl_run.h"
+#include "rl_run_view.h"
 #include "rl_site.h"
 
 /* ---- counting allocations ---- */
@@ -219,6 +220,51 @@ static void test_frames_become_poses_without_allocating(void **state)
     }
 }
 
+/* With the web view's observer on (issue 29), the loop still makes no heap
+ * call and sends the same pose frames, and the view's snapshot is the last
+ * frame's: its image, and its pose as sent. */
+static void test_view_observer_without_allocating(void **state)
+{
+    static const int script[] = {OK, OK, OK, OK, OK, END};
+    static rl_view view;
+    static rl_view_snap snap;
+    static rl_run_view rv;
+    rl_view_config vc;
+    void *vmem, *smem;
+    long before;
+    int i;
+    (void)state;
+    rl_view_defaults(&vc);
+    vc.width = site.calib.width;
+    vc.height = site.calib.height;
+    vc.max_rate = 1000; /* every frame of the fake clock's 10 a second */
+    vmem = malloc(rl_view_size(&vc));
+    smem = malloc(rl_view_size(&vc));
+    assert_int_equal(rl_view_init(&view, &vc, vmem, rl_view_size(&vc)), RL_OK);
+    assert_int_equal(rl_view_snap_init(&snap, &vc, smem, rl_view_size(&vc)), RL_OK);
+    start(script);
+    rl_run_view_init(&rv, &view, &runner, "tty", NULL);
+    runner.io.observe = rl_run_view_report;
+    runner.io.observe_ctx = &rv;
+    assert_int_equal(rl_run_step(&runner), RL_OK); /* opens the camera */
+    before = allocations;
+    run_to_end();
+    assert_int_equal(allocations - before, 0);
+    assert_int_equal(out.n, 5);
+    for (i = 0; i < 5; i++)
+        assert_pose_right(&out.msgs[i]);
+    assert_int_equal(rl_view_take(&view, &snap), 1);
+    assert_int_equal(snap.counts.frames, 5);
+    assert_true(snap.have_pose && snap.have_image && snap.have_result);
+    assert_int_equal((int)lround(snap.pose.x * 1000.0), out.msgs[4].x_mm);
+    assert_int_equal((int)lround(snap.pose.y * 1000.0), out.msgs[4].y_mm);
+    assert_int_equal(snap.image[1234], cam.img.data[(1234 / cam.img.width) * cam.img.stride + 1234 % cam.img.width]);
+    assert_true(snap.res->n_landmarks >= 2);
+    rl_view_destroy(&view);
+    free(vmem);
+    free(smem);
+}
+
 static void test_camera_fails_then_comes_back(void **state)
 {
     static const int script[] = {FAIL_OPEN, FAIL_OPEN, OK, GRAB_EIO, OK, OK, END};
@@ -389,6 +435,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_frames_become_poses_without_allocating),
+        cmocka_unit_test(test_view_observer_without_allocating),
         cmocka_unit_test(test_camera_fails_then_comes_back),
         cmocka_unit_test(test_timeouts_reopen_the_camera),
         cmocka_unit_test(test_serial_write_fails_and_recovers),

@@ -10,6 +10,8 @@
 # Raspberry Pi OS); otherwise it prints the exact apt-get line and fails.
 # fuzz: clang and its libFuzzer runtime, libpng and libyaml only.
 # asan: the host's packages and clang (the sanitizer test build).
+# host and asan include Chromium, its driver and python3-selenium: the web
+# view's tests drive a real browser (test_view_page, test_view_hostile).
 # --check only reports. Called first by `make host`, `make host-test`,
 # `make demo` and `make bench`.
 # Not here: AriaCoda, for the ARIA example (tools/aria), is not in Debian;
@@ -62,6 +64,7 @@ if [ "$profile" != fuzz ]; then
     need_pkg libpng-dev pc libpng
     need_pkg libyaml-dev pc yaml-0.1
     need_pkg libturbojpeg0-dev pc libturbojpeg
+    need_pkg libmicrohttpd-dev pc libmicrohttpd # the web view (--http)
     need_pkg libcairo2-dev pc cairo
     need_pkg libopencv-dev pc opencv4
     need_pkg libapriltag-dev pc apriltag
@@ -74,6 +77,12 @@ if [ "$profile" != fuzz ]; then
     need_pkg passwd have useradd          # the package's postinst, run by test_package
 fi
 [ "$profile" = host ] || [ "$profile" = asan ] && need_pkg libcamera-dev pc libcamera
+if [ "$profile" = host ] || [ "$profile" = asan ]; then
+    # the web view's browser tests (test_view_page, test_view_hostile)
+    need_pkg chromium have chromium
+    need_pkg chromium-driver have chromedriver
+    need_pkg python3-selenium /usr/bin/python3 -c "import selenium"
+fi
 foreign=""
 if [ "$profile" = cross ]; then
     arm() { [ -f "/usr/lib/aarch64-linux-gnu/pkgconfig/$1.pc" ]; }
@@ -83,6 +92,7 @@ if [ "$profile" = cross ]; then
     need_pkg libpng-dev:arm64 arm libpng
     need_pkg libyaml-dev:arm64 arm yaml-0.1
     need_pkg libturbojpeg0-dev:arm64 arm libturbojpeg
+    need_pkg libmicrohttpd-dev:arm64 arm libmicrohttpd
     need_pkg libcairo2-dev:arm64 arm cairo
     need_pkg libcmocka-dev:arm64 arm cmocka
     if ! dpkg --print-foreign-architectures 2>/dev/null | grep -qx arm64; then

@@ -7,6 +7,8 @@
 #include "rl_fw.h"
 
 #include "rl_cli.h"
+#include "rl_fw_http.h"
+#include "rl_listen.h"
 #include "rl_packet_sink.h"
 #include "rl_record.h"
 #include "rl_run.h"
@@ -15,7 +17,7 @@
 #include "rl_clock.h"
 
 static const char *run_help =
-    "usage: %s --config ringloc.yaml [--frames N] [--record DIR] [--probe]\n\n"
+    "usage: %s --config ringloc.yaml [--frames N] [--record DIR] [--http ADDR:PORT] [--probe]\n\n"
     "The firmware: grab frames from the camera, recognize landmarks, compute the\n"
     "robot's pose and send it as ARCOS-framed pose frames on the serial line (a\n"
     "status frame when there is no pose). Camera and serial faults are survived:\n"
@@ -27,6 +29,9 @@ static const char *run_help =
     "  --record DIR save one frame in record.every (default 10) as PNG into DIR,\n"
     "               with DIR/frames.txt (name, capture time ms) for 'ringloc survey'\n"
     "               or playing back; at most record.max_mb (1000) on disk\n"
+    "  --http ADDR:PORT  a live web view: the camera image with the landmarks found,\n"
+    "               the map, the pose and the counters (read-only; http.token in\n"
+    "               the file asks for a token)\n"
     "  --probe      list what the configured camera offers (formats, sizes,\n"
     "               controls) and exit\n";
 
@@ -242,16 +247,19 @@ static void run_loop(rl_runner *runner, long max_frames)
 /* --config and --frames; 0 to go on, else the exit code (--help: 0 with
  * *done set). */
 static int parse_args(const char *C, const char *prefix, int argc, char **argv,
-                      const char **config, long *max_frames, int *probe, const char **record, int *done)
+                      const char **config, long *max_frames, int *probe, const char **record,
+                      const char **http, int *done)
 {
     static const struct option opts[] = {{"config", required_argument, 0, 'c'},
                                          {"frames", required_argument, 0, 'n'},
                                          {"probe", no_argument, 0, 'p'},
                                          {"record", required_argument, 0, 'R'},
+                                         {"http", required_argument, 0, 'H'},
                                          {"help", no_argument, 0, 'h'},
                                          {0, 0, 0, 0}};
-    char hint[160];
+    char hint[160], why[160];
     int c, v;
+    rl_listen l;
     *done = 0;
     optind = 1;
     snprintf(hint, sizeof hint, "see '%s --help'", prefix);
@@ -265,6 +273,11 @@ static int parse_args(const char *C, const char *prefix, int argc, char **argv,
             break;
         case 'p': *probe = 1; break;
         case 'R': *record = optarg; break;
+        case 'H':
+            if (rl_listen_parse(optarg, &l, why, sizeof why) != RL_OK)
+                return rl_cli_fail(C, RL_EXIT_USAGE, "--http: %s", why);
+            *http = optarg;
+            break;
         case 'h': printf(run_help, prefix); *done = 1; return 0;
         default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
@@ -332,6 +345,26 @@ static void stop_recording(fw_sink *fs)
             fs->rec.error[0] ? "; " : "", fs->rec.error);
 }
 
+/* --http ADDR:PORT, or http.listen: the web view started, observing the
+ * loop; 0 and one error line when it cannot. */
+static int start_web(const char *C, fw_setup *s, const char *http, const rl_runner *runner, fw_sink *fs,
+                     rl_fw_http *web, rl_run_io *io)
+{
+    char err[512];
+    if (http != NULL)
+        snprintf(s->cfg.http_listen, sizeof s->cfg.http_listen, "%s", http);
+    if (!s->cfg.http_listen[0])
+        return 1;
+    if (rl_fw_http_start(web, s->cfg.http_listen, s->cfg.http_token, s->site.calib.width, s->site.calib.height,
+                         &s->site.map, runner, s->cfg.serial, fs->on ? &fs->rec : NULL, err, sizeof err) != RL_OK)
+        return !rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    fprintf(stderr, "%s: web view on http://%s/%s\n", fs->prefix, s->cfg.http_listen,
+            s->cfg.http_token[0] ? " (token required)" : "");
+    io->observe = rl_run_view_report;
+    io->observe_ctx = &web->rv;
+    return 1;
+}
+
 /* The loop's settings from the configuration. */
 static void run_config(const rl_runcfg *cfg, rl_run_config *rc)
 {
@@ -362,12 +395,13 @@ int rl_fw_main(const char *C, int argc, char **argv)
     static char prefix[128];
     rl_run_io io;
     rl_run_config rc;
-    const char *config = NULL, *record = NULL;
+    static rl_fw_http web;
+    const char *config = NULL, *record = NULL, *http = NULL;
     long max_frames = 0;
     int code, done, probe = 0;
 
     rl_cli_prefix(C, prefix, sizeof prefix);
-    if ((code = parse_args(C, prefix, argc, argv, &config, &max_frames, &probe, &record, &done)) != 0 || done)
+    if ((code = parse_args(C, prefix, argc, argv, &config, &max_frames, &probe, &record, &http, &done)) != 0 || done)
         return code;
     if (probe)
         return probe_camera(C, config);
@@ -375,7 +409,8 @@ int rl_fw_main(const char *C, int argc, char **argv)
     if (!load_setup(C, config, &s) || !prepare_site(C, &s))
         return RL_EXIT_FAIL;
     wire_io(&s, &octx, &ps, &fs, &cam, prefix, &io);
-    if (!start_recording(C, &s, record, &fs)) {
+    if (!start_recording(C, &s, record, &fs) || !start_web(C, &s, http, &runner, &fs, &web, &io)) {
+        stop_recording(&fs);
         rl_site_free(&s.site);
         return RL_EXIT_FAIL;
     }
@@ -387,6 +422,7 @@ int rl_fw_main(const char *C, int argc, char **argv)
             s.site.place.pl ? " (ids repeat: places found from constellations)" : "", s.cfg.serial, s.cfg.baud);
     run_loop(&runner, max_frames);
     print_summary(prefix, rl_run_counts_of(&runner), &octx);
+    rl_fw_http_stop(&web, prefix);
     stop_recording(&fs);
     if (s.site.place.pl)
         fprintf(stderr, "%s: %ld poses tracked from the last one, %ld frames ambiguous\n", prefix,

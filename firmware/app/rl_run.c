@@ -129,12 +129,9 @@ static int sink_ready(rl_runner *r, uint64_t now)
 /* Hand a report to the sink; a failed sink is closed and reopened later,
  * and the report counted as dropped (a serial line's controller sees a
  * gap in seq). */
-static void report(rl_runner *r, rl_run_report *rep)
+static void to_sink(rl_runner *r, rl_run_report *rep, uint64_t now)
 {
-    uint64_t now = now_us(r);
     rl_err e;
-    rep->seq = r->seq++;
-    rep->sent_us = now;
     if (!sink_ready(r, now)) {
         r->counts.dropped++;
         return;
@@ -156,6 +153,18 @@ static void report(rl_runner *r, rl_run_report *rep)
         r->counts.poses++;
     else
         r->counts.statuses++;
+}
+
+/* A report to the sink, then to the observer (which sees it whatever the
+ * sink did). */
+static void report(rl_runner *r, rl_run_report *rep)
+{
+    uint64_t now = now_us(r);
+    rep->seq = r->seq++;
+    rep->sent_us = now;
+    to_sink(r, rep, now);
+    if (r->io.observe != NULL)
+        r->io.observe(r->io.observe_ctx, rep);
 }
 
 /* A report without a frame: the source down, timed out, or a bad frame. */

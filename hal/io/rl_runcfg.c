@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "rl_cam_backends.h"
+#include "rl_listen.h"
 #include "rl_yaml.h"
 
 /* `value` relative to the folder of `base` unless absolute (or "-"). */
@@ -38,7 +39,7 @@ static rl_err score_key(rl_yaml *y, yaml_node_t *map, const char *key, const cha
 }
 
 static const char *const top_keys[] = {"camera", "calibration", "map", "robot", "offsets",
-                                       "serial", "recognition", "log_interval", "record", NULL};
+                                       "serial", "recognition", "log_interval", "record", "http", NULL};
 static const char *const record_keys[] = {"dir", "every", "max_mb", NULL};
 static const char *const camera_keys[] = {"backend", "device", "width", "height", "rate", "loop",
                                           "exposure", "gain", NULL};
@@ -64,6 +65,36 @@ static rl_err gamma_key(rl_yaml *y, yaml_node_t *rec, double *out, char *err, si
         return RL_OK;
     }
     return rl_yaml_double_in(y, rec, "gamma", "recognition.gamma", 0, 1.0, 3.0, out, err, errlen);
+}
+
+static const char *const http_keys[] = {"listen", "token", NULL};
+
+/* http: {listen: ADDR:PORT, token: ...}: the web view, off when absent. */
+static rl_err http_section(rl_yaml *y, yaml_node_t *root, rl_runcfg *c, char *err, size_t errlen)
+{
+    yaml_node_t *h = rl_yaml_get(y, root, "http");
+    const char *s = NULL;
+    rl_listen l;
+    char why[160];
+    rl_err e;
+    if (h == NULL)
+        return RL_OK;
+    if (h->type != YAML_MAPPING_NODE)
+        return rl_yaml_fail(y, h, "http", RL_EFORMAT, err, errlen, "expected {listen, token}");
+    if ((e = rl_yaml_only(y, h, "http", http_keys, err, errlen)) != RL_OK ||
+        (e = rl_yaml_string(y, h, "listen", "http.listen", 1, &s, err, errlen)) != RL_OK)
+        return e;
+    if (rl_listen_parse(s, &l, why, sizeof why) != RL_OK)
+        return rl_yaml_fail(y, rl_yaml_get(y, h, "listen"), "http.listen", RL_EFORMAT, err, errlen, "%s", why);
+    snprintf(c->http_listen, sizeof c->http_listen, "%s", s);
+    s = NULL;
+    if ((e = rl_yaml_string(y, h, "token", "http.token", 0, &s, err, errlen)) != RL_OK)
+        return e;
+    if (s != NULL && strlen(s) >= sizeof c->http_token)
+        return rl_yaml_fail(y, rl_yaml_get(y, h, "token"), "http.token", RL_ERANGE, err, errlen,
+                            "longer than %d characters", (int)sizeof c->http_token - 1);
+    snprintf(c->http_token, sizeof c->http_token, "%s", s ? s : "");
+    return RL_OK;
 }
 
 static const char *const serial_keys[] = {"device", "baud", NULL};
@@ -223,7 +254,8 @@ rl_err rl_runcfg_load(const char *path, rl_runcfg *c, char *err, size_t errlen)
     if ((e = check_sections(&y, root, cam, ser, rec, err, errlen)) == RL_OK &&
         (e = camera_section(&y, cam, path, c, err, errlen)) == RL_OK &&
         (e = files_and_serial(&y, root, ser, path, c, err, errlen)) == RL_OK &&
-        (e = record_section(&y, root, path, c, err, errlen)) == RL_OK)
+        (e = record_section(&y, root, path, c, err, errlen)) == RL_OK &&
+        (e = http_section(&y, root, c, err, errlen)) == RL_OK)
         e = recognition_section(&y, rec, c, err, errlen);
     rl_yaml_free(&y);
     return e;

@@ -27,6 +27,9 @@
  *     dir: /var/lib/ringloc/drive
  *     every: 10              # one frame in this many
  *     max_mb: 1000           # stop recording at this much on disk
+ *   http:                    # optional: the live web view (off when absent)
+ *     listen: 0.0.0.0:8080   # ADDR:PORT (rl_listen.h)
+ *     token: s3cret          # optional: asked of every request (?token= or a header)
  *
  * Relative paths are relative to the configuration file's folder.
  *
@@ -59,6 +62,8 @@ typedef struct {
     char record_dir[512];       /* "" : no recording */
     int record_every;           /* default 10 */
     double record_max_mb;       /* default 1000 */
+    char http_listen[64];       /* "" : no web view */
+    char http_token[129];       /* "" : none asked */
 } rl_runcfg;
 
 /* Read path into c (defaults for what it leaves out). RL_ENOTFOUND,

@@ -1,0 +1,293 @@
+#include "rl_http.h"
+
+#include <arpa/inet.h>
+#include <microhttpd.h>
+#include <netinet/in.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#include "rl_http_req.h"
+#include "rl_listen.h"
+#include "rl_view_jpeg.h"
+#include "rl_view_json.h"
+
+/* The page, built in from rl_view_page.html (rl_view_page.c, generated). */
+extern const unsigned char rl_view_page[];
+extern const size_t rl_view_page_len;
+
+/* Snapshots kept: the page asks for the frame of the status it drew, by
+ * seq, after other clients may have moved the newest on. */
+#define RING 3
+
+struct rl_http {
+    struct MHD_Daemon *d;
+    rl_view *view;
+    rl_view_snap ring[RING];
+    void *ring_mem[RING];
+    int newest;
+    rl_view_jpeg *jpeg;
+    char *status;             /* RL_VIEW_JSON_STATUS_MAX */
+    char *map;                /* the map's JSON, made at start */
+    size_t map_len;
+    char token[RL_HTTP_MAX_TOKEN + 1];
+    rl_http_counts counts;    /* the server thread's */
+    int niced;                /* the server thread's priority lowered */
+    long jpeg_seq;            /* the JPEG last encoded: of this snapshot ... */
+    int jpeg_width;           /* ... at this width (two pages ask for the same) */
+    size_t jpeg_len;
+};
+
+void rl_http_defaults(rl_http_config *c)
+{
+    memset(c, 0, sizeof *c);
+    c->token = "";
+    c->max_clients = 16;
+    c->timeout_s = 10;
+    c->max_request = 8192;
+}
+
+/* The newest snapshot, taken from the view when it has a newer one. */
+static const rl_view_snap *latest(rl_http *h)
+{
+    int next = (h->newest + 1) % RING;
+    if (rl_view_seq(h->view) != h->ring[h->newest].seq) {
+        h->ring[next].seq = h->ring[h->newest].seq; /* makes take copy the fields */
+        if (rl_view_take(h->view, &h->ring[next]))
+            h->newest = next;
+    }
+    return &h->ring[h->newest];
+}
+
+static const rl_view_snap *by_seq(rl_http *h, long seq)
+{
+    int i;
+    for (i = 0; seq > 0 && i < RING; i++)
+        if (h->ring[i].seq == seq)
+            return &h->ring[i];
+    return latest(h);
+}
+
+static enum MHD_Result reply(struct MHD_Connection *c, unsigned status, const char *type, const void *p,
+                            size_t n, enum MHD_ResponseMemoryMode mode, long seq)
+{
+    struct MHD_Response *r = MHD_create_response_from_buffer(n, (void *)p, mode);
+    enum MHD_Result ok;
+    char s[32];
+    if (r == NULL)
+        return MHD_NO;
+    MHD_add_response_header(r, "Content-Type", type);
+    MHD_add_response_header(r, "Cache-Control", "no-store");
+    MHD_add_response_header(r, "X-Content-Type-Options", "nosniff");
+    MHD_add_response_header(r, "Content-Security-Policy",
+                            "default-src 'self'; img-src 'self' blob:; style-src 'unsafe-inline'; "
+                            "script-src 'unsafe-inline'; connect-src 'self'; frame-ancestors 'none'");
+    if (seq > 0) {
+        snprintf(s, sizeof s, "%ld", seq);
+        MHD_add_response_header(r, "X-Ringloc-Seq", s);
+    }
+    ok = MHD_queue_response(c, status, r);
+    MHD_destroy_response(r);
+    return ok;
+}
+
+static enum MHD_Result refuse(rl_http *h, struct MHD_Connection *c, unsigned status, const char *why)
+{
+    char line[128];
+    int n = snprintf(line, sizeof line, "%u %s\n", status, why);
+    h->counts.refused++;
+    return reply(c, status, "text/plain; charset=utf-8", line, (size_t)n, MHD_RESPMEM_MUST_COPY, 0);
+}
+
+static enum MHD_Result frame(rl_http *h, struct MHD_Connection *c, const rl_http_req *q)
+{
+    const rl_view_snap *s = q->seq > 0 ? by_seq(h, q->seq) : latest(h);
+    int w = q->width ? q->width : s->width;
+    const uint8_t *jpeg;
+    size_t n;
+    if (!s->have_image)
+        return refuse(h, c, MHD_HTTP_SERVICE_UNAVAILABLE, "no frame yet");
+    if (s->seq != h->jpeg_seq || w != h->jpeg_width) {
+        h->jpeg_seq = 0;
+        if (rl_view_jpeg_encode(h->jpeg, s->image, s->width, s->height, w, &jpeg, &n) != RL_OK)
+            return refuse(h, c, MHD_HTTP_INTERNAL_SERVER_ERROR, "JPEG encoding failed");
+        h->jpeg_seq = s->seq;
+        h->jpeg_width = w;
+        h->jpeg_len = n;
+    }
+    h->counts.served++;
+    return reply(c, MHD_HTTP_OK, "image/jpeg", rl_view_jpeg_data(h->jpeg), h->jpeg_len, MHD_RESPMEM_MUST_COPY,
+                 s->seq);
+}
+
+static enum MHD_Result respond(rl_http *h, struct MHD_Connection *c, const rl_http_req *q)
+{
+    size_t n;
+    const rl_view_snap *s;
+    switch (q->route) {
+    case RL_ROUTE_PAGE:
+        h->counts.served++;
+        return reply(c, MHD_HTTP_OK, "text/html; charset=utf-8", rl_view_page, rl_view_page_len,
+                    MHD_RESPMEM_PERSISTENT, 0);
+    case RL_ROUTE_MAP:
+        h->counts.served++;
+        return reply(c, MHD_HTTP_OK, "application/json", h->map, h->map_len, MHD_RESPMEM_PERSISTENT, 0);
+    case RL_ROUTE_STATUS:
+        s = latest(h);
+        if ((n = rl_view_json_status(s, h->status, RL_VIEW_JSON_STATUS_MAX)) == 0)
+            return refuse(h, c, MHD_HTTP_INTERNAL_SERVER_ERROR, "status too large");
+        h->counts.served++;
+        return reply(c, MHD_HTTP_OK, "application/json", h->status, n, MHD_RESPMEM_MUST_COPY, s->seq);
+    case RL_ROUTE_FRAME:
+        return frame(h, c, q);
+    default:
+        return refuse(h, c, MHD_HTTP_NOT_FOUND, "no such page");
+    }
+}
+
+static const char *arg(struct MHD_Connection *c, const char *key)
+{
+    return MHD_lookup_connection_value(c, MHD_GET_ARGUMENT_KIND, key);
+}
+
+static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const char *url, const char *method,
+                                  const char *version, const char *upload, size_t *upload_size, void **state)
+{
+    rl_http *h = (rl_http *)cls;
+    rl_http_req_in in;
+    rl_http_req q;
+    (void)version;
+    (void)upload;
+    (void)state;
+    if (!h->niced) {
+        /* the loop first: where cores are short, the server waits (Linux
+         * sets a nice value per thread) */
+        (void)setpriority(PRIO_PROCESS, (id_t)syscall(SYS_gettid), 10);
+        h->niced = 1;
+    }
+    in.method = method;
+    in.url = url;
+    in.w = arg(c, "w");
+    in.seq = arg(c, "seq");
+    in.token = arg(c, "token");
+    in.auth = MHD_lookup_connection_value(c, MHD_HEADER_KIND, "X-Ringloc-Token");
+    if (in.auth == NULL)
+        in.auth = MHD_lookup_connection_value(c, MHD_HEADER_KIND, "Authorization");
+    (void)upload_size;
+    if (rl_http_req_judge(&in, h->token, &q) != 200)
+        return refuse(h, c, (unsigned)q.status, q.why);
+    return respond(h, c, &q);
+}
+
+/* libmicrohttpd's own messages (a client that sent garbage) are not the
+ * robot's business: the client got its 4xx. */
+static void quiet(void *cls, const char *fmt, va_list ap)
+{
+    (void)cls;
+    (void)fmt;
+    (void)ap;
+}
+
+static rl_err make_buffers(rl_http *h, const rl_map *map)
+{
+    rl_view_config vc;
+    int i;
+    rl_view_defaults(&vc);
+    vc.width = h->view->cfg.width;
+    vc.height = h->view->cfg.height;
+    for (i = 0; i < RING; i++) {
+        if ((h->ring_mem[i] = malloc(rl_view_size(&vc))) == NULL)
+            return RL_ENOMEM;
+        if (rl_view_snap_init(&h->ring[i], &vc, h->ring_mem[i], rl_view_size(&vc)) != RL_OK)
+            return RL_ENOMEM;
+    }
+    h->status = (char *)malloc(RL_VIEW_JSON_STATUS_MAX);
+    h->map = (char *)malloc(rl_view_json_map_size(map));
+    h->jpeg = rl_view_jpeg_new(vc.width, vc.height);
+    if (h->status == NULL || h->map == NULL || h->jpeg == NULL)
+        return RL_ENOMEM;
+    h->map_len = rl_view_json_map(map, h->map, rl_view_json_map_size(map));
+    return h->map_len ? RL_OK : RL_ENOMEM;
+}
+
+static struct MHD_Daemon *listen_on(rl_http *h, const rl_http_config *c, const rl_listen *l)
+{
+    struct sockaddr_in a4;
+    struct sockaddr_in6 a6;
+    const struct sockaddr *a;
+    memset(&a4, 0, sizeof a4);
+    memset(&a6, 0, sizeof a6);
+    if (l->ipv6) {
+        a6.sin6_family = AF_INET6;
+        a6.sin6_port = htons((uint16_t)l->port);
+        (void)inet_pton(AF_INET6, l->host, &a6.sin6_addr);
+        a = (const struct sockaddr *)&a6;
+    } else {
+        a4.sin_family = AF_INET;
+        a4.sin_port = htons((uint16_t)l->port);
+        (void)inet_pton(AF_INET, l->host, &a4.sin_addr);
+        a = (const struct sockaddr *)&a4;
+    }
+    /* poll, not epoll: with epoll (libmicrohttpd 0.9.75) a server that
+     * reached its connection limit stopped accepting for good once those
+     * clients left (test_view_hostile's slowloris clients showed it) */
+    return MHD_start_daemon(MHD_USE_POLL_INTERNAL_THREAD | (l->ipv6 ? MHD_USE_IPv6 : 0), (uint16_t)l->port,
+                            NULL, NULL, on_request, h, MHD_OPTION_SOCK_ADDR, a,
+                            MHD_OPTION_CONNECTION_LIMIT, (unsigned)c->max_clients,
+                            MHD_OPTION_CONNECTION_TIMEOUT, (unsigned)c->timeout_s,
+                            MHD_OPTION_CONNECTION_MEMORY_LIMIT, c->max_request,
+                            MHD_OPTION_EXTERNAL_LOGGER, quiet, NULL, MHD_OPTION_END);
+}
+
+rl_err rl_http_start(rl_http **hp, const rl_http_config *c, rl_view *view, const rl_map *map, char *err,
+                     size_t errlen)
+{
+    rl_listen l;
+    rl_http *h;
+    rl_err e;
+    *hp = NULL;
+    if (rl_listen_parse(c->listen ? c->listen : "", &l, err, errlen) != RL_OK)
+        return RL_EFORMAT;
+    if (c->token != NULL && strlen(c->token) > RL_HTTP_MAX_TOKEN) {
+        snprintf(err, errlen, "the access token is longer than %d characters", RL_HTTP_MAX_TOKEN);
+        return RL_EFORMAT;
+    }
+    if ((h = (rl_http *)calloc(1, sizeof *h)) == NULL)
+        return RL_ENOMEM;
+    h->view = view;
+    snprintf(h->token, sizeof h->token, "%s", c->token ? c->token : "");
+    if ((e = make_buffers(h, map)) != RL_OK) {
+        snprintf(err, errlen, "out of memory for the web view");
+        rl_http_stop(h, NULL);
+        return e;
+    }
+    if ((h->d = listen_on(h, c, &l)) == NULL) {
+        snprintf(err, errlen, "cannot listen on %s (the port in use, or not this computer's address)",
+                 c->listen);
+        rl_http_stop(h, NULL);
+        return RL_EIO;
+    }
+    *hp = h;
+    return RL_OK;
+}
+
+void rl_http_stop(rl_http *h, rl_http_counts *counts)
+{
+    int i;
+    if (counts != NULL)
+        memset(counts, 0, sizeof *counts);
+    if (h == NULL)
+        return;
+    if (h->d)
+        MHD_stop_daemon(h->d); /* joins the server's thread: its counts are final */
+    if (counts != NULL)
+        *counts = h->counts;
+    for (i = 0; i < RING; i++)
+        free(h->ring_mem[i]);
+    rl_view_jpeg_free(h->jpeg);
+    free(h->status);
+    free(h->map);
+    free(h);
+}

@@ -1,0 +1,61 @@
+/* rl_http: the live web view's server (GNU libmicrohttpd): one page
+ * (rl_view_page.html, built into the program), /frame.jpg (the latest
+ * frame, ?w= to scale it down), /status.json (rl_view_json.h) and
+ * /map.json, read-only, from snapshots of the loop (rl_view.h). The server
+ * runs in one thread of its own that polls every client without blocking
+ * (a slow or vanished browser holds nothing; at most max_clients at once,
+ * more are refused); a client idle for timeout_s is dropped, a
+ * request larger than max_request bytes gets 431 or is closed. Every
+ * request is judged by rl_http_req before anything is served: bad ones
+ * get a 4xx and a one-line reason. Nothing is read from disk, nothing is
+ * changed: the loop never waits for the server.
+ *
+ *   static rl_view view;               // rl_view_init'ed, offered by the loop
+ *   static rl_map map;
+ *   rl_http *h;
+ *   rl_http_config hc;
+ *   char err[256];
+ *   rl_http_defaults(&hc);
+ *   hc.listen = "127.0.0.1:8080";
+ *   if (rl_http_start(&h, &hc, &view, &map, err, sizeof err) == RL_OK) {
+ *       // ... the loop runs ...
+ *       rl_http_stop(h, NULL);
+ *   }
+ */
+#ifndef RL_HTTP_H
+#define RL_HTTP_H
+
+#include <stddef.h>
+#include "rl_error.h"
+#include "rl_map.h"
+#include "rl_view.h"
+
+typedef struct {
+    const char *listen;      /* "ADDR:PORT" (rl_listen.h) */
+    const char *token;       /* access token; "" or NULL: none */
+    int max_clients;         /* connections at once (default 16: a browser keeps a few open) */
+    int timeout_s;           /* an idle connection is closed after this (default 10) */
+    size_t max_request;      /* bytes of one request's line and headers (default 8192) */
+} rl_http_config;
+
+typedef struct rl_http rl_http;
+
+/* What the server did, for the firmware's summary line. */
+typedef struct {
+    long served, refused;
+} rl_http_counts;
+
+void rl_http_defaults(rl_http_config *c);
+
+/* Start serving view (and map: kept while the server runs). RL_EFORMAT
+ * for a bad listen address, RL_EIO when the socket cannot be bound (err
+ * names the address and why), RL_ENOMEM, RL_EUNSUPPORTED when the
+ * program was built without libmicrohttpd. */
+RL_CHECK rl_err rl_http_start(rl_http **h, const rl_http_config *c, rl_view *view, const rl_map *map,
+                              char *err, size_t errlen);
+
+/* Stop (closing every connection) and free; then, when counts is not
+ * NULL, what the server did. NULL h is fine (counts all 0). */
+void rl_http_stop(rl_http *h, rl_http_counts *counts);
+
+#endif

@@ -1,0 +1,105 @@
+#include "rl_http_req.h"
+
+#include <string.h>
+
+static int fail(rl_http_req *r, int status, const char *why)
+{
+    r->status = status;
+    r->why = why;
+    r->route = RL_ROUTE_NONE;
+    return status;
+}
+
+/* Length of s, or max + 1 when it is longer than max (never reads past). */
+static size_t bounded_len(const char *s, size_t max)
+{
+    size_t n = 0;
+    while (n <= max && s[n])
+        n++;
+    return n;
+}
+
+/* Equal, in time that depends on the length of the configured token only. */
+static int same_token(const char *given, const char *want)
+{
+    size_t n = strlen(want), g = bounded_len(given, RL_HTTP_MAX_TOKEN), i;
+    unsigned diff = (unsigned)(g != n);
+    for (i = 0; i < n; i++)
+        diff |= (unsigned)(unsigned char)want[i] ^ (unsigned)(unsigned char)(i < g ? given[i] : 0);
+    return diff == 0;
+}
+
+static int token_ok(const rl_http_req_in *in, const char *token)
+{
+    const char *a = in->auth;
+    if (token == NULL || token[0] == 0)
+        return 1;
+    if (in->token != NULL && same_token(in->token, token))
+        return 1;
+    if (a == NULL)
+        return 0;
+    if (strncmp(a, "Bearer ", 7) == 0)
+        a += 7;
+    return same_token(a, token);
+}
+
+/* A decimal number of at most `digits` digits within lo .. hi. */
+static int number(const char *s, int digits, long lo, long hi, long *out)
+{
+    long v = 0;
+    int n = 0;
+    for (; *s; s++, n++) {
+        if (*s < '0' || *s > '9' || n == digits)
+            return 0;
+        v = v * 10 + (*s - '0');
+    }
+    if (n == 0 || v < lo || v > hi)
+        return 0;
+    *out = v;
+    return 1;
+}
+
+static rl_http_route route_of(const char *url)
+{
+    if (strcmp(url, "/") == 0 || strcmp(url, "/index.html") == 0)
+        return RL_ROUTE_PAGE;
+    if (strcmp(url, "/frame.jpg") == 0)
+        return RL_ROUTE_FRAME;
+    if (strcmp(url, "/status.json") == 0)
+        return RL_ROUTE_STATUS;
+    if (strcmp(url, "/map.json") == 0)
+        return RL_ROUTE_MAP;
+    return RL_ROUTE_NONE;
+}
+
+int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *r)
+{
+    rl_http_route route;
+    long v;
+    r->width = 0;
+    r->seq = -1;
+    if (in->method == NULL || (strcmp(in->method, "GET") != 0 && strcmp(in->method, "HEAD") != 0))
+        return fail(r, 405, "only GET and HEAD: the view is read-only");
+    if (in->url == NULL || in->url[0] != '/')
+        return fail(r, 404, "no such page");
+    if (bounded_len(in->url, RL_HTTP_MAX_URL) > RL_HTTP_MAX_URL)
+        return fail(r, 414, "path too long");
+    if ((route = route_of(in->url)) == RL_ROUTE_NONE)
+        return fail(r, 404, "no such page");
+    if (!token_ok(in, token))
+        return fail(r, 401, "access token missing or wrong");
+    if (in->w != NULL) {
+        if (!number(in->w, 5, 16, 8192, &v))
+            return fail(r, 400, "w is not a width (16 .. 8192)");
+        r->width = (int)v;
+    }
+    if (in->seq != NULL) {
+        if (!number(in->seq, 9, 0, 999999999L, &v))
+            return fail(r, 400, "seq is not a snapshot number");
+        r->seq = v;
+    }
+    r->route = route;
+    r->status = 200;
+    r->why = "";
+    return 200;
+}

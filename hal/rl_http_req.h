@@ -1,0 +1,53 @@
+/* rl_http_req: one request to the live web view judged, before anything
+ * is served: the method (GET or HEAD), the path (one of the five routes;
+ * nothing is ever served from disk), the access token when one is
+ * configured (the query's ?token= or an "Authorization: Bearer" or
+ * "X-Ringloc-Token" header, compared in constant time), and the query's
+ * numbers (w, the JPEG's width; seq, the snapshot an overlay was drawn
+ * for). Pure: no I/O, no allocation, any bytes in (the fuzz target's
+ * contract).
+ *
+ *   rl_http_req_in in = {"GET", "/frame.jpg", "320", NULL, NULL, NULL};
+ *   rl_http_req r;
+ *   if (rl_http_req_judge(&in, "", &r) == 200)
+ *       use(r.route, r.width);          // RL_ROUTE_FRAME, 320
+ *   else
+ *       use(r.why);                     // "w is not a width (16 .. 8192)"
+ */
+#ifndef RL_HTTP_REQ_H
+#define RL_HTTP_REQ_H
+
+#define RL_HTTP_MAX_URL 64     /* longer paths are refused (414) */
+#define RL_HTTP_MAX_TOKEN 128  /* longest access token */
+
+typedef enum {
+    RL_ROUTE_NONE = 0,
+    RL_ROUTE_PAGE,    /* / and /index.html: the page */
+    RL_ROUTE_FRAME,   /* /frame.jpg */
+    RL_ROUTE_STATUS,  /* /status.json */
+    RL_ROUTE_MAP      /* /map.json */
+} rl_http_route;
+
+/* What the server read of a request; any field may be NULL. */
+typedef struct {
+    const char *method, *url;     /* the path, without the query */
+    const char *w, *seq;          /* query arguments */
+    const char *token;            /* ?token= */
+    const char *auth;             /* the Authorization or X-Ringloc-Token header */
+} rl_http_req_in;
+
+typedef struct {
+    rl_http_route route;
+    int width;        /* w (0: not asked: full size) */
+    long seq;         /* seq (-1: not asked) */
+    int status;       /* 200, or the 4xx returned */
+    const char *why;  /* a short static reason for a 4xx */
+} rl_http_req;
+
+/* Judge in against the configured token ("" or NULL: none needed).
+ * Returns r->status: 200, 400 (a bad number), 401 (token missing or
+ * wrong), 404 (no such path), 405 (not GET or HEAD), 414 (path too
+ * long). */
+int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *r);
+
+#endif

@@ -1,0 +1,232 @@
+#include "rl_view_json.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+/* A buffer written front to back; once something did not fit, `over`
+ * stays set and the caller gets 0. */
+typedef struct {
+    char *p;
+    size_t cap, n;
+    int over;
+} jbuf;
+
+static void put(jbuf *b, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+static void put(jbuf *b, const char *fmt, ...)
+{
+    va_list ap;
+    int k;
+    if (b->over)
+        return;
+    va_start(ap, fmt);
+    k = vsnprintf(b->p + b->n, b->cap - b->n, fmt, ap);
+    va_end(ap);
+    if (k < 0 || (size_t)k >= b->cap - b->n) {
+        b->over = 1;
+        return;
+    }
+    b->n += (size_t)k;
+}
+
+/* A number, or null when it is not finite (JSON has no NaN). */
+static void num(jbuf *b, const char *key, double v, int decimals)
+{
+    if (isfinite(v))
+        put(b, "\"%s\": %.*f", key, decimals, v);
+    else
+        put(b, "\"%s\": null", key);
+}
+
+static void str(jbuf *b, const char *key, const char *s)
+{
+    put(b, "\"%s\": \"", key);
+    for (; *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\')
+            put(b, "\\%c", c);
+        else if (c < 0x20 || c >= 0x7f)
+            put(b, "\\u%04x", c); /* bytes past ASCII as themselves: no UTF-8 assumed */
+        else
+            put(b, "%c", c);
+    }
+    put(b, "\"");
+}
+
+static size_t done(jbuf *b)
+{
+    return b->over ? 0 : b->n;
+}
+
+void rl_view_json_hist(const rl_view_snap *s, unsigned long hist[256])
+{
+    size_t i, n = (size_t)s->width * (size_t)s->height;
+    memset(hist, 0, 256 * sizeof hist[0]);
+    if (!s->have_image)
+        return;
+    for (i = 0; i < n; i++)
+        hist[s->image[i]]++;
+}
+
+static void detection(jbuf *b, const rl_detection *d)
+{
+    put(b, "{\"id\": %d, ", d->id);
+    num(b, "u", d->u, 2);
+    put(b, ", ");
+    num(b, "v", d->v, 2);
+    put(b, ", ");
+    num(b, "radius", d->radius, 2);
+    put(b, ", ");
+    num(b, "score", d->score, 3);
+    put(b, ", \"pass\": \"%s\", \"complete\": %s, ", d->pass == RL_PASS_LOCAL ? "local" : "global",
+        d->complete ? "true" : "false");
+    num(b, "visible", d->visible, 3);
+    put(b, "}");
+}
+
+static void result(jbuf *b, const rl_result *r)
+{
+    const rl_levels *l = &r->levels;
+    int i;
+    put(b, "\"levels\": {\"light\": %d, \"threshold\": %d, ", l->light, l->threshold);
+    num(b, "fg", l->fg, 1);
+    put(b, ", ");
+    num(b, "bg", l->bg, 1);
+    put(b, ", \"k\": %d}, ", l->k);
+    num(b, "gamma", r->gamma, 3);
+    put(b, ", \"landmarks\": [");
+    for (i = 0; i < r->n_landmarks && i < RL_MAX_LANDMARKS; i++) {
+        put(b, i ? ", " : "");
+        detection(b, &r->landmarks[i]);
+    }
+    put(b, "], \"unidentified\": [");
+    for (i = 0; i < r->n_unidentified && i < RL_MAX_CANDIDATES; i++) {
+        put(b, i ? ", " : "");
+        detection(b, &r->unidentified[i]);
+    }
+    put(b, "], \"lights\": [");
+    for (i = 0; i < r->n_lights && i < RL_MAX_LIGHTS; i++)
+        put(b, "%s[%d, %d, %d, %d]", i ? ", " : "", r->lights[i].x0, r->lights[i].y0, r->lights[i].x1,
+            r->lights[i].y1);
+    put(b, "], \"candidates\": %d, \"regions\": %d, \"local_tried\": %d, \"local_found\": %d, ",
+        r->n_candidates, r->n_regions, r->local_tried, r->local_found);
+    put(b, "\"dropped\": {\"regions\": %d, \"lights\": %d, \"candidates\": %d, \"landmarks\": %d}, ",
+        r->dropped.regions, r->dropped.lights, r->dropped.candidates, r->dropped.landmarks);
+}
+
+static void pose(jbuf *b, const rl_view_snap *s)
+{
+    const rl_pose *p = &s->pose;
+    static const char *places[] = {"none", "found", "tracked", "ambiguous"};
+    put(b, "\"pose\": {\"current\": %s, ", s->have_pose ? "true" : "false");
+    num(b, "x", p->x, 4);
+    put(b, ", ");
+    num(b, "y", p->y, 4);
+    put(b, ", ");
+    num(b, "yaw", p->yaw, 5);
+    put(b, ", ");
+    num(b, "sigma_x", p->sigma_x, 5);
+    put(b, ", ");
+    num(b, "sigma_y", p->sigma_y, 5);
+    put(b, ", ");
+    num(b, "sigma_yaw", p->sigma_yaw, 5);
+    put(b, ", ");
+    num(b, "roll", p->roll, 5);
+    put(b, ", ");
+    num(b, "pitch", p->pitch, 5);
+    put(b, ", ");
+    num(b, "residual", p->residual, 4);
+    put(b, ", \"used\": %d, \"place\": \"%s\"}, ", p->used,
+        s->place >= 0 && s->place < 4 ? places[s->place] : "unique ids");
+}
+
+static void counters(jbuf *b, const rl_view_snap *s)
+{
+    static const char *names[RL_VIEW_REASONS] = {"pose", "too_few", "camera_error", "camera_timeout",
+                                                 "config_error", "ambiguous", "reason6", "reason7"};
+    const rl_view_counts *c = &s->counts;
+    int i;
+    put(b, "\"counters\": {");
+    num(b, "fps", s->fps, 2);
+    put(b, ", ");
+    num(b, "latency_ms", s->latency_ms, 2);
+    put(b, ", ");
+    num(b, "landmarks_per_frame", s->landmarks, 2);
+    put(b, ", \"uptime_s\": %.1f, ", s->now_us > s->start_us ? (double)(s->now_us - s->start_us) / 1e6 : 0.0);
+    put(b, "\"frames\": %ld, \"poses\": %ld, \"statuses\": %ld, \"camera_errors\": %ld, "
+           "\"camera_timeouts\": %ld, \"bad_frames\": %ld, \"serial_errors\": %ld, \"dropped\": %ld, "
+           "\"ambiguous\": %ld, \"tracked\": %ld, \"local_used\": %ld, \"view_skipped\": %ld, \"reasons\": {",
+        c->frames, c->poses, c->statuses, c->camera_errors, c->camera_timeouts, c->bad_frames,
+        c->serial_errors, c->dropped, c->ambiguous, c->tracked, c->local_used, s->skipped);
+    for (i = 0; i < RL_VIEW_REASONS; i++)
+        put(b, "%s\"%s\": %ld", i ? ", " : "", names[i], s->reasons[i]);
+    put(b, "}}, ");
+    put(b, "\"serial\": {\"up\": %s, ", c->serial_up ? "true" : "false");
+    str(b, "device", s->serial);
+    put(b, "}, \"recording\": {\"on\": %s, \"kept\": %ld, \"skipped\": %ld}, ", c->recording ? "true" : "false",
+        c->rec_kept, c->rec_skipped);
+}
+
+size_t rl_view_json_status(const rl_view_snap *s, char *buf, size_t cap)
+{
+    jbuf b = {buf, cap, 0, cap == 0};
+    unsigned long hist[256];
+    int i;
+    /* the capture time in whole ms, as the pose packet carries it (cut, not
+     * rounded: a script matches the two) */
+    put(&b, "{\"seq\": %ld, \"width\": %d, \"height\": %d, \"image\": %s, \"frame\": %ld, \"t_ms\": %llu, ",
+        s->seq, s->width, s->height, s->have_image ? "true" : "false", s->frame_index,
+        (unsigned long long)(s->t_us / 1000u));
+    /* how old the frame shown is when the snapshot was taken (the camera
+     * down: status frames go on, the image stays the last one) */
+    put(&b, "\"frame_age_ms\": %.1f, \"reason\": %d, ",
+        s->have_image && s->now_us > s->t_us ? (double)(s->now_us - s->t_us) / 1e3 : 0.0, s->reason);
+    str(&b, "camera", s->cam_info);
+    put(&b, ", ");
+    if (s->have_result)
+        result(&b, s->res);
+    pose(&b, s);
+    counters(&b, s);
+    rl_view_json_hist(s, hist);
+    put(&b, "\"hist\": [");
+    for (i = 0; i < 256; i++)
+        put(&b, "%s%lu", i ? "," : "", hist[i]);
+    put(&b, "], \"track\": [");
+    for (i = 0; i < s->n_track && i < RL_VIEW_TRACK; i++)
+        put(&b, "%s[%.3f, %.3f]", i ? ", " : "", isfinite(s->track[i].x) ? s->track[i].x : 0.0,
+            isfinite(s->track[i].y) ? s->track[i].y : 0.0);
+    put(&b, "]}\n");
+    return done(&b);
+}
+
+size_t rl_view_json_map_size(const rl_map *m)
+{
+    /* a landmark: {"id": 255, "x": -100000.000, "y": ...}, well under 80 bytes */
+    return 256 + (size_t)(m->count > 0 ? m->count : 0) * 80;
+}
+
+size_t rl_view_json_map(const rl_map *m, char *buf, size_t cap)
+{
+    jbuf b = {buf, cap, 0, cap == 0};
+    int i;
+    put(&b, "{\"family\": \"ring%d\", ", m->family.bits);
+    num(&b, "diameter", m->diameter, 4);
+    put(&b, ", ");
+    num(&b, "ceiling", m->ceiling_height, 3);
+    put(&b, ", \"landmarks\": [");
+    for (i = 0; i < m->count && i < RL_MAX_MAP_LANDMARKS; i++) {
+        put(&b, "%s{\"id\": %d, ", i ? ", " : "", m->lm[i].id);
+        num(&b, "x", m->lm[i].x, 3);
+        put(&b, ", ");
+        num(&b, "y", m->lm[i].y, 3);
+        put(&b, "}");
+    }
+    put(&b, "]}\n");
+    return done(&b);
+}

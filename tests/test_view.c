@@ -1,0 +1,348 @@
+/* The live web view's parts without a browser: the hand-off (rl_view:
+ * rate, try-lock, counts kept across skipped copies, no heap call on the
+ * loop's side: the test is linked with --wrap=malloc), the request judge,
+ * the status and map JSON (parsed back by json-c), the JPEG (decoded back
+ * by libturbojpeg), and the listen address. */
+#include "rl_test.h"
+#include <json-c/json.h>
+#include <math.h>
+#include <pthread.h>
+#include <turbojpeg.h>
+#include "rl_http_req.h"
+#include "rl_listen.h"
+#include "rl_runcfg.h"
+#include "rl_view.h"
+#include "rl_view_jpeg.h"
+#include "rl_view_json.h"
+
+void *__real_malloc(size_t n);
+void *__wrap_malloc(size_t n);
+void *__real_calloc(size_t a, size_t b);
+void *__wrap_calloc(size_t a, size_t b);
+void *__real_realloc(void *p, size_t n);
+void *__wrap_realloc(void *p, size_t n);
+static long allocations;
+void *__wrap_malloc(size_t n) { allocations++; return __real_malloc(n); }
+void *__wrap_calloc(size_t a, size_t b) { allocations++; return __real_calloc(a, b); }
+void *__wrap_realloc(void *p, size_t n) { allocations++; return __real_realloc(p, n); }
+
+#define W 64
+#define H 48
+
+static uint8_t pixels[H][W + 16]; /* a stride wider than the frame */
+static rl_result res;
+static rl_view view;
+static rl_view_snap snap;
+
+static void frame_at(rl_cam_frame *f, long index, uint64_t t_us)
+{
+    int x, y;
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W + 16; x++)
+            pixels[y][x] = (uint8_t)(x < W ? (x * 4 + y + index) & 0xff : 0xee);
+    f->img.width = W;
+    f->img.height = H;
+    f->img.stride = W + 16;
+    f->img.data = &pixels[0][0];
+    f->index = index;
+    f->t_us = t_us;
+    f->slot = 0;
+}
+
+static void *mem_view, *mem_snap;
+
+static void setup_view(void)
+{
+    rl_view_config vc;
+    rl_view_defaults(&vc);
+    vc.width = W;
+    vc.height = H;
+    mem_view = malloc(rl_view_size(&vc));
+    mem_snap = malloc(rl_view_size(&vc));
+    assert_int_equal(rl_view_init(&view, &vc, mem_view, rl_view_size(&vc)), RL_OK);
+    assert_int_equal(rl_view_snap_init(&snap, &vc, mem_snap, rl_view_size(&vc)), RL_OK);
+    memset(&res, 0, sizeof res);
+    res.n_landmarks = 2;
+    res.landmarks[0].id = 7, res.landmarks[0].u = 10.25, res.landmarks[0].v = 20.5, res.landmarks[0].score = 0.93;
+    res.landmarks[1].id = 9, res.landmarks[1].u = 40, res.landmarks[1].v = 30, res.landmarks[1].pass = RL_PASS_LOCAL;
+    res.levels.threshold = 90;
+    res.levels.light = 256;
+}
+
+static void teardown_view(void)
+{
+    rl_view_destroy(&view);
+    free(mem_view);
+    free(mem_snap);
+}
+
+static rl_view_obs obs_of(const rl_cam_frame *f, const rl_pose *p, uint64_t now)
+{
+    rl_view_obs o;
+    memset(&o, 0, sizeof o);
+    o.frame = f;
+    o.res = &res;
+    o.pose = p;
+    o.reason = p ? 0 : 1;
+    o.place = -1;
+    o.now_us = now;
+    o.cam_info = "png 64x48";
+    o.serial = "/dev/ttyS0";
+    o.counts.frames = f ? f->index + 1 : 0;
+    return o;
+}
+
+/* At most max_rate copies a second; every frame counted; the copy is the
+ * frame's (packed from its stride), the result's and the pose's; the
+ * loop's side makes no heap call. */
+static void test_offer_rate_and_copy(void **st)
+{
+    rl_cam_frame f;
+    rl_pose pose;
+    rl_view_obs o;
+    int i, copies = 0;
+    long before;
+    (void)st;
+    setup_view();
+    memset(&pose, 0, sizeof pose);
+    pose.x = 1.5, pose.y = -2.25, pose.sigma_x = 0.004;
+    before = allocations;
+    for (i = 0; i < 30; i++) { /* 15 frames a second for 2 s */
+        uint64_t t = 1000000u + (uint64_t)i * 66667u;
+        frame_at(&f, i, t);
+        o = obs_of(&f, i % 3 ? &pose : NULL, t + 20000u);
+        copies += rl_view_offer(&view, &o);
+    }
+    assert_int_equal(allocations, before);
+    assert_in_range(copies, 9, 11); /* 5 a second */
+    assert_int_equal(rl_view_take(&view, &snap), 1);
+    assert_int_equal(rl_view_take(&view, &snap), 0); /* nothing newer */
+    assert_int_equal(snap.seq, copies);
+    assert_true(snap.have_image && snap.have_result);
+    assert_int_equal(snap.image[5 * W + 3], (uint8_t)((3 * 4 + 5 + snap.frame_index) & 0xff));
+    assert_int_equal(snap.res->n_landmarks, 2);
+    assert_int_equal(snap.res->landmarks[1].id, 9);
+    assert_true(fabs(snap.pose.x - 1.5) < 1e-12);
+    assert_string_equal(snap.cam_info, "png 64x48");
+    /* every frame up to the copied one counted, copied or not */
+    assert_int_equal(snap.reasons[0] + snap.reasons[1], snap.counts.frames);
+    assert_true(snap.counts.frames >= 28);
+    assert_true(fabs(snap.fps - 15.0) < 0.1);
+    assert_true(fabs(snap.latency_ms - 20.0) < 0.01);
+    assert_in_range(snap.n_track, 3, 5); /* one point each 0.5 s */
+    teardown_view();
+}
+
+/* A reader holding the snapshot: the loop skips the copy (counted) and
+ * never waits; the next copy carries every count. */
+static void test_offer_skips_when_held(void **st)
+{
+    rl_cam_frame f;
+    rl_view_obs o;
+    (void)st;
+    setup_view();
+    pthread_mutex_lock(&view.lock); /* as a reader would (a try-lock fails the same) */
+    frame_at(&f, 0, 1000000u);
+    o = obs_of(&f, NULL, 1000000u);
+    assert_int_equal(rl_view_offer(&view, &o), 0);
+    assert_int_equal(view.loop.skipped, 1);
+    pthread_mutex_unlock(&view.lock);
+    frame_at(&f, 1, 1100000u);
+    o = obs_of(&f, NULL, 1100000u);
+    assert_int_equal(rl_view_offer(&view, &o), 1);
+    assert_int_equal(rl_view_take(&view, &snap), 1);
+    assert_int_equal(snap.skipped, 1);
+    assert_int_equal(snap.reasons[1], 2);
+    teardown_view();
+}
+
+static int judge(const char *method, const char *url, const char *w, const char *token, const char *auth,
+                 rl_http_req *r)
+{
+    rl_http_req_in in = {method, url, w, NULL, token, auth};
+    return rl_http_req_judge(&in, "s3cret", r);
+}
+
+static void test_request_judge(void **st)
+{
+    rl_http_req r;
+    char longurl[200];
+    (void)st;
+    assert_int_equal(judge("GET", "/frame.jpg", "320", "s3cret", NULL, &r), 200);
+    assert_int_equal(r.route, RL_ROUTE_FRAME);
+    assert_int_equal(r.width, 320);
+    assert_int_equal(judge("HEAD", "/", NULL, NULL, "Bearer s3cret", &r), 200);
+    assert_int_equal(r.route, RL_ROUTE_PAGE);
+    assert_int_equal(judge("GET", "/map.json", NULL, NULL, "s3cret", &r), 200);
+    assert_int_equal(judge("POST", "/status.json", NULL, "s3cret", NULL, &r), 405);
+    assert_int_equal(judge("GET", "/status.json", NULL, NULL, NULL, &r), 401);
+    assert_int_equal(judge("GET", "/status.json", NULL, "s3cre", NULL, &r), 401);
+    assert_int_equal(judge("GET", "/status.json", NULL, "s3cret!", NULL, &r), 401);
+    assert_int_equal(judge("GET", "/../etc/passwd", NULL, "s3cret", NULL, &r), 404);
+    assert_int_equal(judge("GET", "/frame.jpg", "15", "s3cret", NULL, &r), 400);
+    assert_int_equal(judge("GET", "/frame.jpg", "8193", "s3cret", NULL, &r), 400);
+    assert_int_equal(judge("GET", "/frame.jpg", "3e2", "s3cret", NULL, &r), 400);
+    assert_int_equal(judge("GET", "/frame.jpg", "", "s3cret", NULL, &r), 400);
+    assert_int_equal(judge(NULL, NULL, NULL, NULL, NULL, &r), 405);
+    memset(longurl, 'a', sizeof longurl - 1);
+    longurl[0] = '/';
+    longurl[sizeof longurl - 1] = 0;
+    assert_int_equal(judge("GET", longurl, NULL, "s3cret", NULL, &r), 414);
+    {
+        rl_http_req_in in = {"GET", "/", NULL, NULL, NULL, NULL};
+        assert_int_equal(rl_http_req_judge(&in, "", &r), 200); /* no token configured */
+    }
+}
+
+/* The status document parses, and carries what the page draws. */
+static void test_status_json(void **st)
+{
+    static char buf[RL_VIEW_JSON_STATUS_MAX];
+    rl_cam_frame f;
+    rl_pose pose;
+    rl_view_obs o;
+    json_object *j, *v, *lm;
+    size_t n;
+    (void)st;
+    setup_view();
+    memset(&pose, 0, sizeof pose);
+    pose.x = 1.5, pose.y = NAN;
+    frame_at(&f, 4, 1000000u);
+    o = obs_of(&f, &pose, 1010000u);
+    o.cam_info = "YUYV \"quoted\"\n";
+    assert_int_equal(rl_view_offer(&view, &o), 1);
+    assert_int_equal(rl_view_take(&view, &snap), 1);
+    n = rl_view_json_status(&snap, buf, sizeof buf);
+    assert_true(n > 0 && n < sizeof buf);
+    assert_int_equal(rl_view_json_status(&snap, buf, 100), 0); /* too small: nothing half-made */
+    n = rl_view_json_status(&snap, buf, sizeof buf);
+    j = json_tokener_parse(buf);
+    assert_non_null(j);
+    assert_true(json_object_object_get_ex(j, "landmarks", &v));
+    assert_int_equal(json_object_array_length(v), 2);
+    lm = json_object_array_get_idx(v, 0);
+    assert_true(json_object_object_get_ex(lm, "u", &v));
+    assert_true(fabs(json_object_get_double(v) - 10.25) < 1e-9);
+    assert_true(json_object_object_get_ex(j, "pose", &v));
+    assert_true(json_object_object_get_ex(v, "y", &lm));
+    assert_true(json_object_is_type(lm, json_type_null)); /* NaN as null */
+    assert_true(json_object_object_get_ex(j, "hist", &v));
+    assert_int_equal(json_object_array_length(v), 256);
+    assert_true(json_object_object_get_ex(j, "camera", &v));
+    assert_string_equal(json_object_get_string(v), "YUYV \"quoted\"\n");
+    assert_true(json_object_object_get_ex(j, "counters", &v));
+    assert_true(json_object_object_get_ex(v, "fps", &lm));
+    json_object_put(j);
+    teardown_view();
+}
+
+static void test_map_json(void **st)
+{
+    static rl_map map;
+    char *buf;
+    json_object *j, *v;
+    int i;
+    (void)st;
+    memset(&map, 0, sizeof map);
+    map.family.bits = 5;
+    map.diameter = 0.21;
+    map.ceiling_height = 2.75;
+    map.count = RL_MAX_MAP_LANDMARKS;
+    for (i = 0; i < map.count; i++)
+        map.lm[i].id = i % 31, map.lm[i].x = -99999.123, map.lm[i].y = i * 0.61;
+    buf = malloc(rl_view_json_map_size(&map));
+    assert_true(rl_view_json_map(&map, buf, rl_view_json_map_size(&map)) > 0);
+    j = json_tokener_parse(buf);
+    assert_non_null(j);
+    assert_true(json_object_object_get_ex(j, "landmarks", &v));
+    assert_int_equal(json_object_array_length(v), RL_MAX_MAP_LANDMARKS);
+    json_object_put(j);
+    free(buf);
+}
+
+static void test_jpeg(void **st)
+{
+    static uint8_t grey[H][W], back[H][W];
+    rl_view_jpeg *j = rl_view_jpeg_new(W, H);
+    tjhandle d = tjInitDecompress();
+    const uint8_t *jpeg;
+    size_t n;
+    int w, h, sub, cs, x, y;
+    (void)st;
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++)
+            grey[y][x] = (uint8_t)(x < W / 2 ? 40 : 210);
+    assert_int_equal(rl_view_jpeg_encode(j, &grey[0][0], W, H, 32, &jpeg, &n), RL_OK);
+    assert_int_equal(tjDecompressHeader3(d, jpeg, (unsigned long)n, &w, &h, &sub, &cs), 0);
+    assert_int_equal(w, 32);
+    assert_int_equal(h, 24);
+    assert_int_equal(rl_view_jpeg_encode(j, &grey[0][0], W, H, 5000, &jpeg, &n), RL_OK); /* at most full size */
+    assert_int_equal(tjDecompress2(d, jpeg, (unsigned long)n, &back[0][0], W, W, H, TJPF_GRAY, 0), 0);
+    assert_in_range(back[10][5], 35, 45);
+    assert_in_range(back[10][60], 205, 215);
+    assert_int_equal(rl_view_jpeg_encode(j, &grey[0][0], W + 1, H, 32, &jpeg, &n), RL_EINVAL);
+    tjDestroy(d);
+    rl_view_jpeg_free(j);
+}
+
+static void test_listen(void **st)
+{
+    rl_listen l;
+    char err[160];
+    (void)st;
+    assert_int_equal(rl_listen_parse("127.0.0.1:8080", &l, err, sizeof err), RL_OK);
+    assert_string_equal(l.host, "127.0.0.1");
+    assert_int_equal(l.port, 8080);
+    assert_int_equal(rl_listen_parse("[::1]:80", &l, err, sizeof err), RL_OK);
+    assert_true(l.ipv6);
+    assert_int_equal(rl_listen_parse("localhost:1", &l, err, sizeof err), RL_OK);
+    assert_int_equal(rl_listen_parse("0.0.0.0:65536", &l, err, sizeof err), RL_EFORMAT);
+    assert_non_null(strstr(err, "0.0.0.0:65536"));
+    assert_int_equal(rl_listen_parse("8080", &l, err, sizeof err), RL_EFORMAT);
+    assert_int_equal(rl_listen_parse("robot.local:8080", &l, err, sizeof err), RL_EFORMAT);
+    assert_int_equal(rl_listen_parse("1.2.3.4:80x", &l, err, sizeof err), RL_EFORMAT);
+    assert_int_equal(rl_listen_parse(":8080", &l, err, sizeof err), RL_EFORMAT);
+}
+
+/* ringloc.yaml's http section: off when absent, listen and token read,
+ * a bad address or key one line naming the file, line and key. */
+static rl_err load_cfg(const char *http, rl_runcfg *c, char *err, size_t errlen)
+{
+    char path[512];
+    FILE *f = fopen(rl_test_path(path, sizeof path, "view_run.yaml"), "w");
+    assert_non_null(f);
+    fprintf(f, "camera: {backend: png, device: frames}\ncalibration: c.yaml\nmap: m.yaml\nrobot: r.yaml\n"
+               "serial: {device: tty}\n%s", http);
+    fclose(f);
+    return rl_runcfg_load(path, c, err, errlen);
+}
+
+static void test_runcfg_http(void **st)
+{
+    static rl_runcfg c;
+    char err[768];
+    (void)st;
+    assert_int_equal(load_cfg("", &c, err, sizeof err), RL_OK);
+    assert_string_equal(c.http_listen, "");
+    assert_int_equal(load_cfg("http: {listen: 0.0.0.0:8080, token: abc}\n", &c, err, sizeof err), RL_OK);
+    assert_string_equal(c.http_listen, "0.0.0.0:8080");
+    assert_string_equal(c.http_token, "abc");
+    assert_int_equal(load_cfg("http: {listen: 0.0.0.0:80800}\n", &c, err, sizeof err), RL_EFORMAT);
+    assert_non_null(strstr(err, "view_run.yaml:6: http.listen:"));
+    assert_int_equal(load_cfg("http: {listen: 0.0.0.0:8080, port: 1}\n", &c, err, sizeof err), RL_EFORMAT);
+    assert_non_null(strstr(err, "port"));
+    assert_int_equal(load_cfg("http: {token: abc}\n", &c, err, sizeof err), RL_EFORMAT);
+    assert_non_null(strstr(err, "http.listen"));
+    assert_int_equal(load_cfg("http: 8080\n", &c, err, sizeof err), RL_EFORMAT);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_offer_rate_and_copy), cmocka_unit_test(test_offer_skips_when_held),
+        cmocka_unit_test(test_request_judge),       cmocka_unit_test(test_status_json),
+        cmocka_unit_test(test_map_json),            cmocka_unit_test(test_jpeg),
+        cmocka_unit_test(test_listen),              cmocka_unit_test(test_runcfg_http),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,244 @@
+#!/usr/bin/env python3
+"""Nothing on the robot gets worse with the web view (issue 29). The same
+120 frames (the rendered rect drive at 15 frames a second), four times:
+  A  without the web view (and A2, again after B);
+  B  with it (--http), the page open in two headless Chromiums throughout;
+  C  with it (ringloc.yaml's http: {listen, token}) under hostile clients:
+     an oversized header, slowloris clients, 100 connections at once, bad
+     paths, methods, numbers and tokens, and garbage bytes.
+Every run must send every pose frame, B's and C's equal to A's (all but
+their times), the bad requests must get their 4xx (or be closed), never a
+crash, the server must hold no more than its bound of connections and
+answer again once the attack is over; with
+the pages open, the median latency is within 10% of A's (A run before and
+after B, the slower of the two: CI's cores are shared; from frame 45 on,
+when the browsers, on the same cores in CI but not on a robot, have
+started; measured once more before failing, a neighbour's burst on CI's
+shared cores not being ours). Prints the runs' latencies.
+
+usage: test_view_hostile.py RINGLOC PATHS_DIR TMPDIR"""
+import os
+import socket
+import statistics
+import sys
+import threading
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import view_lib as vl  # noqa: E402
+
+FRAMES = 120       # 8 s at 15 frames a second
+SETTLED = 45       # latency is compared from here on: the browsers started (on CI's cores) by then
+ATTACKED = 180     # the attacked run is longer: the attack must end before it does
+TOKEN = "s3cret"
+
+
+def status_of(raw, port, timeout=3.0):
+    """Send raw bytes, return the HTTP status (0: closed without one)."""
+    try:
+        s = socket.create_connection(("127.0.0.1", port), timeout=timeout)
+        s.sendall(raw)
+        data = s.recv(256)
+        s.close()
+    except OSError:
+        return 0
+    parts = data.split(b" ", 2)
+    return int(parts[1]) if len(parts) > 1 and data.startswith(b"HTTP/") and parts[1].isdigit() else 0
+
+
+def get(path, extra=b""):
+    return b"GET " + path + b" HTTP/1.1\r\nHost: robot\r\n" + extra + b"Connection: close\r\n\r\n"
+
+
+BAD = [  # (what, request, statuses accepted; 0: closed)
+    ("no token", get(b"/status.json"), {401}),
+    ("wrong token", get(b"/status.json?token=s3cre"), {401}),
+    ("wrong bearer", get(b"/frame.jpg", b"Authorization: Bearer nope\r\n"), {401}),
+    ("path escape", get(b"/../../etc/passwd?token=" + TOKEN.encode()), {400, 404}),
+    ("file path", get(b"/etc/ringloc/ringloc.yaml?token=" + TOKEN.encode()), {404}),
+    ("long path", get(b"/" + b"a" * 300 + b"?token=" + TOKEN.encode()), {414}),
+    ("bad width", get(b"/frame.jpg?w=abc&token=" + TOKEN.encode()), {400}),
+    ("huge width", get(b"/frame.jpg?w=99999999999&token=" + TOKEN.encode()), {400}),
+    ("tiny width", get(b"/frame.jpg?w=3&token=" + TOKEN.encode()), {400}),
+    ("bad seq", get(b"/frame.jpg?seq=-1&token=" + TOKEN.encode()), {400}),
+    ("POST", b"POST /status.json?token=s3cret HTTP/1.1\r\nHost: r\r\nContent-Length: 5\r\n\r\nhello", {405}),
+    ("DELETE", b"DELETE /?token=s3cret HTTP/1.1\r\nHost: r\r\n\r\n", {405}),
+    ("garbage", b"\x00\xff\xfe garbage \r\n\r\n", {0, 400}),
+    ("HTTP/9", b"GET / HTTP/9.9\r\nHost: r\r\n\r\n", {0, 400, 505}),
+    ("oversized header", get(b"/?token=s3cret", b"X-Big: " + b"a" * 200000 + b"\r\n"), {0, 413, 431}),
+]
+GOOD = [
+    ("token in query", get(b"/status.json?token=" + TOKEN.encode()), {200}),
+    ("bearer token", get(b"/map.json", b"Authorization: Bearer " + TOKEN.encode() + b"\r\n"), {200}),
+    ("token header", get(b"/frame.jpg?w=100", b"X-Ringloc-Token: " + TOKEN.encode() + b"\r\n"), {200}),
+]
+
+
+def slowloris(port, n, stop):
+    socks = []
+    for _ in range(n):
+        try:
+            s = socket.create_connection(("127.0.0.1", port), timeout=2)
+            s.sendall(b"GET /status.json HTTP/1.1\r\nHost: r\r\n")
+            socks.append(s)
+        except OSError:
+            pass
+    while not stop.is_set():
+        for s in socks:
+            try:
+                s.sendall(b"X-a: b\r\n")
+            except OSError:
+                pass
+        stop.wait(0.5)
+    for s in socks:
+        s.close()
+
+
+def flood(port, n, result, seconds=2.0):
+    """n connections at once, each asking for a frame; answers read for
+    `seconds` in all (the slowloris clients hold the server's slots)."""
+    socks, answered = [], 0
+    for _ in range(n):
+        try:
+            socks.append(socket.create_connection(("127.0.0.1", port), timeout=1))
+        except OSError:
+            pass
+    for s in socks:
+        try:
+            s.sendall(get(b"/frame.jpg?token=" + TOKEN.encode()))
+        except OSError:
+            pass
+    end = time.time() + seconds
+    for s in socks:
+        try:
+            s.settimeout(max(0.01, end - time.time()))
+            answered += s.recv(16).startswith(b"HTTP/1.1 200")
+        except OSError:
+            pass
+        s.close()
+    result.append((len(socks), answered))
+
+
+def attack(port, fw, ck):
+    """Bad requests one by one, then slowloris clients and a flood of 100
+    connections at once; then good requests, while the firmware still runs."""
+    stop, flooded = threading.Event(), []
+    for what, raw, ok in BAD:
+        got = status_of(raw, port)
+        ck.check(got in ok, "%s: answered %d, expected one of %s" % (what, got, sorted(ok)))
+    threads = [threading.Thread(target=slowloris, args=(port, 20, stop)),
+               threading.Thread(target=flood, args=(port, 100, flooded))]
+    threads[0].start()
+    time.sleep(0.5)  # 20 slowloris clients: more than the server's 16 at once
+    got = status_of(GOOD[0][1], port, 1.0)
+    ck.check(got == 0, "with every connection taken, one more was answered %d: no bound on clients" % got)
+    threads[1].start()
+    threads[1].join()
+    stop.set()
+    threads[0].join()
+    time.sleep(0.2)
+    ck.check(fw.poll() is None, "the firmware ended before the attack did (the run is too short to judge)")
+    for what, raw, ok in GOOD:  # after the attack, the server answers again
+        got = status_of(raw, port)
+        ck.check(got in ok, "after the attack, %s: answered %d" % (what, got))
+    return flooded[0] if flooded else (0, 0)
+
+
+def run(ringloc, tmp, cfg, tag, http=None, during=None, frames=FRAMES):
+    serial = os.path.join(tmp, tag + ".bin")
+    if os.path.exists(serial):
+        os.remove(serial)
+    fw = vl.start_firmware(ringloc, cfg, tmp, frames, http, tag)
+    out = during(fw) if during else None
+    if fw.wait(60) != 0:
+        raise vl.Fail("run %s exited %d: %s" % (tag, fw.returncode, open(os.path.join(tmp, tag + ".err")).read()))
+    return vl.decode(ringloc, serial), out
+
+
+def with_browsers(port, drivers):
+    def during(fw):
+        vl.wait_http(port, fw)
+        for d in drivers:
+            d.get("http://127.0.0.1:%d/" % port)
+        while fw.poll() is None:
+            time.sleep(0.1)
+        return [d.execute_script("return window.rlView.updates") for d in drivers]
+    return during
+
+
+def measure(ringloc, tmp, paths_dir, names):
+    """A, then B with two pages open, then A again: the pose frames and the
+    pages' frame counts."""
+    runs = {}
+    cfg = vl.write_config(tmp, paths_dir, names, "A.bin")
+    runs["A"], _ = run(ringloc, tmp, cfg, "A")
+    drivers = [vl.chromium(1024, 768, tmp), vl.chromium(1024, 768, tmp)]
+    try:
+        port = vl.free_port()
+        cfg = vl.write_config(tmp, paths_dir, names, "B.bin")
+        runs["B"], updates = run(ringloc, tmp, cfg, "B", "127.0.0.1:%d" % port, with_browsers(port, drivers))
+    finally:
+        for d in drivers:
+            d.quit()
+    cfg = vl.write_config(tmp, paths_dir, names, "A2.bin")
+    runs["A2"], _ = run(ringloc, tmp, cfg, "A2")
+    return runs, updates
+
+
+def latencies(got):
+    late = [p["latency_ms"] for p in got if p["type"] == "pose"][SETTLED:FRAMES]
+    return (statistics.mean(late), statistics.median(late)) if late else (0.0, 0.0)
+
+
+def latency_ok(runs):
+    """The median, 10% and the latency field's resolution, against the
+    slower of the runs without: CI's cores are shared."""
+    lat = {tag: latencies(got) for tag, got in runs.items()}
+    return lat["B"][1] <= 1.10 * max(lat["A"][1], lat["A2"][1]) + 0.2, lat
+
+
+def main():
+    ringloc, paths_dir, tmp = sys.argv[1:4]
+    vl.browser_or_skip()
+    os.makedirs(tmp, exist_ok=True)
+    names = vl.frames_of(paths_dir)
+    ck = vl.Checks()
+    runs, updates = measure(ringloc, tmp, paths_dir, names)
+    ok, lat = latency_ok(runs)
+    if not ok:  # once more: a neighbour's burst on CI's shared cores is not ours
+        print("latency with two pages open %.2f ms, without %.2f/%.2f ms (median): measuring again"
+              % (lat["B"][1], lat["A"][1], lat["A2"][1]))
+        runs, updates = measure(ringloc, tmp, paths_dir, names)
+        ok, lat = latency_ok(runs)
+    ck.check(ok, "latency with two pages open %.2f ms, without %.2f/%.2f ms (median)"
+             % (lat["B"][1], lat["A"][1], lat["A2"][1]))
+    port = vl.free_port()
+    cfg_c = vl.write_config(tmp, paths_dir, names, "C.bin")
+    with open(cfg_c, "a") as f:
+        f.write("http: {listen: 127.0.0.1:%d, token: %s}\n" % (port, TOKEN))
+    runs["C"], flooded = run(ringloc, tmp, cfg_c, "C", None,
+                             lambda fw: (vl.wait_http(port, fw), attack(port, fw, ck))[1], ATTACKED)
+    lat["C"] = latencies(runs["C"])
+    ck.check(all(u >= 6 for u in updates), "the two pages drew %s frames (they were not live)" % updates)
+    for tag, n in (("A", FRAMES), ("A2", FRAMES), ("B", FRAMES), ("C", ATTACKED)):
+        got = runs[tag]
+        poses = [p for p in got if p["type"] == "pose"]
+        ck.check(len(poses) == n and len(got) == n, "run %s: %d pose frames (%d frames in all) for %d frames"
+                 % (tag, len(poses), len(got), n))
+        if tag != "A":
+            same = sum(vl.same_pose(a, b) for a, b in zip(runs["A"], got[:FRAMES]))
+            ck.check(same == FRAMES, "run %s: %d of %d pose frames equal to those without the view" % (tag, same, FRAMES))
+    print("pose frames: A %d, A2 %d, B %d, C %d; latency mean/median A %.2f/%.2f ms, A2 %.2f/%.2f ms, "
+          "B (two pages open) %.2f/%.2f ms, C (attacked) %.2f/%.2f ms; pages drew %s frames; "
+          "flood: %d connections, %d answered 200"
+          % (len(runs["A"]), len(runs["A2"]), len(runs["B"]), len(runs["C"]), lat["A"][0], lat["A"][1], lat["A2"][0],
+             lat["A2"][1], lat["B"][0], lat["B"][1], lat["C"][0], lat["C"][1], updates, flooded[0], flooded[1]))
+    return ck.done()
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main())
+    except vl.Fail as e:
+        print("FAIL: %s" % e)
+        sys.exit(1)
