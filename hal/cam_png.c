@@ -128,7 +128,7 @@ static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
     if (e == RL_OK)
         e = rl_png_read_gray_into(s->path, s->block, s->cap, &f->img, err, sizeof err);
     if (e == RL_OK && !s->any_size && (f->img.width != s->width || f->img.height != s->height)) {
-        snprintf(err, sizeof err, "%.160s: frame is %dx%d, the camera's are %dx%d", s->path,
+        snprintf(err, sizeof err, "%.160s: image is %dx%d but the camera is set to %dx%d", s->path,
                  f->img.width, f->img.height, s->width, s->height);
         e = RL_EFORMAT;
     }

@@ -17,7 +17,13 @@ static const char *calib_help =
     "offset of a ceiling point from the optical axis as a polynomial in its pixel\n"
     "coordinates (one per axis). 'ringloc locate --offsets FILE' then uses it.\n"
     "Degree 1, 2 or 3 needs at least 5, 8 or 12 identified landmarks over all\n"
-    "images (shift the robot between shots for more).\n";
+    "images (shift the robot between shots for more); every image of one size.\n\n"
+    "  --map FILE       landmark map YAML\n"
+    "  --robot FILE     robot YAML: camera_mount {x, y, z, yaw}\n"
+    "  --pose X,Y,YAW   the robot's pose in the map while the images were taken\n"
+    "                   (metres, radians)\n"
+    "  --degree N       the polynomials' degree: 1, 2 (default) or 3\n"
+    "  --out FILE       the offset maps to write (written whole or not at all)\n";
 
 #define MAX_SAMPLES 2048
 
@@ -44,6 +50,8 @@ typedef struct {
     double cx, cy, cyaw;      /* the camera's pose, from the robot's */
     rl_offsets o;
     int n;
+    int width, height;        /* the images' size (one calibration is for one size) */
+    char other[600];          /* an image of another size, or "" */
     double U[MAX_SAMPLES], V[MAX_SAMPLES], F[MAX_SAMPLES], L[MAX_SAMPLES];
 } offsets_fit;
 
@@ -63,6 +71,16 @@ static rl_err offsets_put(void *ctx, const rl_run_report *rep)
     offsets_fit *f = (offsets_fit *)ctx;
     const rl_map *map = &f->site->map;
     int j;
+    if (f->width == 0) {
+        f->width = rep->frame->img.width;
+        f->height = rep->frame->img.height;
+    } else if (rep->frame->img.width != f->width || rep->frame->img.height != f->height) {
+        if (!f->other[0])
+            snprintf(f->other, sizeof f->other, "%.400s: image is %dx%d but the first image is %dx%d (the maps "
+                     "are for one size)", rep->frame->name, rep->frame->img.width, rep->frame->img.height, f->width,
+                     f->height);
+        return RL_OK;
+    }
     f->o.u0 = (rep->frame->img.width - 1) / 2.0;
     f->o.v0 = (rep->frame->img.height - 1) / 2.0;
     f->o.scale = rep->frame->img.width / 2.0;
@@ -187,6 +205,8 @@ int rl_cmd_calibrate_offsets(int argc, char **argv)
     rl_site_free(&site);
     if (failed > 0)
         return RL_EXIT_FAIL; /* each file said why */
+    if (f.other[0])
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", f.other);
     if (rl_offsets_fit(&f.o, f.U, f.V, f.F, f.L, f.n) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%d landmarks identified in the images; degree %d needs at least %d "
                                             "spread over the view", f.n, f.o.degree, rl_offsets_terms(f.o.degree) + 2);

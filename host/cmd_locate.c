@@ -38,6 +38,7 @@ static const char *locate_help =
     "  --annotate FILE  write the image with what was recognized drawn on it\n"
     "  --local POLICY   local pass: always (default), auto (the paper's: when fewer\n"
     "                   than 2 were identified) or never\n"
+    "  --min-score S    Pearson correlation an id needs in the global pass (default 0.8)\n"
     "  --gamma G|auto   the camera's tone curve (default auto), as for detect\n"
     "  --interval S     seconds between the frames of the drive (default 0.1, as\n"
     "                   recorded at 10 frames a second; 'every' of a recording\n"

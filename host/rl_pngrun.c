@@ -16,6 +16,7 @@ void rl_pngrun_defaults(rl_pngrun *pr, const char *cmd)
 typedef struct {
     const rl_pngrun *pr;
     long failed;
+    int stop;       /* the files could not be opened at all */
 } pngrun_state;
 
 static rl_err pngrun_put(void *ctx, const rl_run_report *rep)
@@ -23,6 +24,11 @@ static rl_err pngrun_put(void *ctx, const rl_run_report *rep)
     pngrun_state *st = (pngrun_state *)ctx;
     if (rep->event == RL_RUN_FRAME)
         return st->pr->put ? st->pr->put(st->pr->ctx, rep) : RL_OK;
+    if (rep->event == RL_RUN_NO_FRAME) { /* files have no down time: said once, the end */
+        rl_cli_fail(st->pr->cmd, RL_EXIT_FAIL, "%s", rep->error ? rep->error : "no frames");
+        st->stop = 1;
+        return RL_OK;
+    }
     st->failed++;
     if (!st->pr->quiet)
         rl_cli_fail(st->pr->cmd, RL_EXIT_FAIL, "%s%s", rep->error ? rep->error : "bad frame",
@@ -38,7 +44,6 @@ long rl_pngrun_files(const rl_pngrun *pr, rl_site *site, char *const *files, int
     rl_cam_config cc;
     rl_run_io io;
     pngrun_state st;
-    char err[512];
     rl_cam_defaults(&cc);
     cc.backend = "png";
     cc.rate = 0; /* as fast as they decode */
@@ -48,18 +53,14 @@ long rl_pngrun_files(const rl_pngrun *pr, rl_site *site, char *const *files, int
     io.source = rl_run_camera_source(&cam, &cc);
     st.pr = pr;
     st.failed = 0;
+    st.stop = 0;
     io.sink.name = pr->cmd;
     io.sink.put = pngrun_put;
     io.sink.ctx = &st;
     io.clock = rl_clock_system();
-    if (io.source.open(io.source.ctx, err, sizeof err) != RL_OK) {
-        rl_cli_fail(pr->cmd, RL_EXIT_FAIL, "%s", err);
-        return n;
-    }
-    io.source.close(io.source.ctx);
     rl_run_init(&runner, &pr->run, &io, site, &res);
-    while (rl_run_step(&runner) != RL_ENOTFOUND)
+    while (!st.stop && rl_run_step(&runner) != RL_ENOTFOUND)
         continue;
     rl_run_close(&runner);
-    return st.failed;
+    return st.stop ? n : st.failed;
 }

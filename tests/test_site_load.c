@@ -103,7 +103,7 @@ static void test_checks_name_the_files(void **state)
     assert_non_null(strstr(err, "site_high.yaml: camera_mount.z 3.500 m is not below the ceiling"));
     assert_non_null(strstr(err, "site_map.yaml: ceiling_height 2.750 m"));
     assert_int_equal(load(&s, cam_path, NULL, NULL, 1280, 960, err, sizeof err), RL_EINVAL);
-    assert_non_null(strstr(err, "--size: the image size is 1280x960 but"));
+    assert_non_null(strstr(err, "--size: image is 1280x960 but"));
     assert_non_null(strstr(err, "is for 640x480"));
     assert_int_equal(load(&s, cam_path, NULL, NULL, 640, 480, err, sizeof err), RL_OK); /* the same size */
     assert_int_equal(load(&s, NULL, "/nonexistent/map.yaml", NULL, 0, 0, err, sizeof err), RL_ENOTFOUND);

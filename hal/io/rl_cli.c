@@ -94,18 +94,10 @@ int rl_cli_double(const char *cmd, const char *opt, const char *s, double lo, do
 
 int rl_cli_int(const char *cmd, const char *opt, const char *s, long lo, long hi, int *out)
 {
-    char *end;
     long v;
-    errno = 0;
-    v = strtol(s, &end, 10);
-    if (end == s || *end != '\0' || errno == ERANGE || v < -2147483647L || v > 2147483647L) {
-        rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: '%s' is not an integer", opt, s);
+    /* an int's range, whatever lo and hi say */
+    if (!rl_cli_long(cmd, opt, s, lo > -2147483647L ? lo : -2147483647L, hi < 2147483647L ? hi : 2147483647L, &v))
         return 0;
-    }
-    if (v < lo || v > hi) {
-        rl_cli_fail(cmd, RL_EXIT_USAGE, "%s: %s is out of range (%ld .. %ld)", opt, s, lo, hi);
-        return 0;
-    }
     *out = (int)v;
     return 1;
 }
@@ -143,7 +135,14 @@ int rl_cli_recog_option(const char *cmd, int c, const char *arg, rl_recog_config
             cfg->gamma = 0;
             return 1;
         }
-        return rl_cli_double(cmd, "--gamma", arg, 1.0, 3.0, &cfg->gamma) ? 1 : -1;
+        {
+            char *end;
+            double g = strtod(arg, &end);
+            if (end == arg || *end != '\0' || !(g >= 1.0 && g <= 3.0))
+                return rl_cli_fail(cmd, RL_EXIT_USAGE, "--gamma: '%s' is not auto or a number from 1 to 3", arg), -1;
+            cfg->gamma = g;
+        }
+        return 1;
     case 's':
         if (!rl_cli_double(cmd, "--min-score", arg, 0.01, 1.0, &cfg->min_score))
             return -1;

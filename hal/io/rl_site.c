@@ -54,7 +54,7 @@ static rl_err check_site(const rl_site *s, char *err, size_t errlen)
 {
     const rl_site_files *f = &s->files;
     if (s->has_calib && f->width > 0 && (f->width != s->calib.width || f->height != s->calib.height)) {
-        snprintf(err, errlen, "%s: the image size is %dx%d but %s (image_width, image_height) is for %dx%d",
+        snprintf(err, errlen, "%s: image is %dx%d but %s (image_width, image_height) is for %dx%d",
                  f->size_from ? f->size_from : "size", f->width, f->height, f->calibration, s->calib.width,
                  s->calib.height);
         return RL_EINVAL;
