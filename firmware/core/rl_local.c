@@ -211,7 +211,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     if (!taken && m.id >= 0 && m.score >= rule.min_score) {
         /* read across the motion: the same id, and plain there */
         rl_match ma;
-        rl_search_across_motion(&rec->templates, rec->polar, cx, cy, r, &ma);
+        rl_search_across_motion(&rec->templates, rec->polar, cx, cy, r, m.id, &ma);
         taken = ma.id == m.id && rl_accept(&mrule, &ma, 255.0);
     }
     if (!taken) {

@@ -100,11 +100,18 @@ static void twin_check_axis(const rl_templates *tt, const rl_polar *pol, double 
     }
 }
 
+/* How far m's winner leads its runner-up (the lead rl_accept compares). */
+static double lead_of(const rl_match *m)
+{
+    double d = 1.0 - m->score * m->score;
+    return d > 0 ? (1.0 - m->second * m->second) / d : 1e9;
+}
+
 void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double cx, double cy,
-                             double r, rl_match *m)
+                             double r, int id, rl_match *m)
 {
     double x = cx - pol->cx, y = cy - pol->cy, s = r / pol->r;
-    int a, best = -1;
+    int a;
     m->id = -1;
     m->score = m->second = 0;
     for (a = 0; a < RL_POLAR_AXES; a++) {
@@ -112,13 +119,12 @@ void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double
         rl_match ma;
         rl_polar_profile_axis(pol, x, y, s, a, &p);
         rl_match_all(tt, &p, &ma);
-        if (ma.id >= 0 && ma.score > m->score) {
+        if (ma.id != id)
+            continue;
+        twin_check_axis(tt, pol, x, y, s, a, &ma);
+        if (m->id < 0 || lead_of(&ma) > lead_of(m))
             *m = ma;
-            best = a;
-        }
     }
-    if (best >= 0)
-        twin_check_axis(tt, pol, x, y, s, best, m);
 }
 
 /* The winner's zone twins (rl_match_twins) at their best radius
