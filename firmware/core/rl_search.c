@@ -119,8 +119,8 @@ void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double
         rl_match ma;
         rl_polar_profile_axis(pol, x, y, s, a, &p);
         rl_match_all(tt, &p, &ma);
-        if (ma.id != id)
-            continue;
+        if (ma.id != id || ma.blur == RL_BLUR_LEVELS - 1)
+            continue; /* another code, or smeared: along the motion */
         twin_check_axis(tt, pol, x, y, s, a, &ma);
         if (m->id < 0 || lead_of(&ma) > lead_of(m))
             *m = ma;
