@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "rl_outfile.h"
 #include "fuse_sim.h"
 
 #define STEP 0.001 /* the robot integrates its odometry at 1 kHz */
@@ -272,32 +273,39 @@ static int ticks(const fs_drive *d, const fs_scenario *sc, double T, const odo_s
 static int export_drive(const fs_drive *d, const fs_scenario *sc, double T, const odo_sample *odo, int no,
                         const sim_frame *fr, int nf)
 {
-    char path[1024];
-    FILE *fo, *ff, *ft;
-    int i;
+    static const char *names[3] = {"odometry.txt", "frames.bin", "truth.txt"};
+    char path[1024], err[1200];
+    rl_outfile o[3];
+    int i, j, ok = 1;
     long k;
-    snprintf(path, sizeof path, "%s/odometry.txt", sc->export_dir);
-    fo = fopen(path, "w");
-    snprintf(path, sizeof path, "%s/frames.bin", sc->export_dir);
-    ff = fopen(path, "wb");
-    snprintf(path, sizeof path, "%s/truth.txt", sc->export_dir);
-    ft = fopen(path, "w");
-    if (!fo || !ff || !ft)
-        return -1;
+    for (j = 0; j < 3; j++) { /* written whole or not at all (rl_outfile) */
+        snprintf(path, sizeof path, "%s/%s", sc->export_dir, names[j]);
+        if (rl_outfile_open(&o[j], path, err, sizeof err) != RL_OK) {
+            while (j-- > 0)
+                rl_outfile_abort(&o[j]);
+            fprintf(stderr, "%s\n", err);
+            return -1;
+        }
+    }
     for (i = 0; i < no; i++)
-        fprintf(fo, "%.4f %.6f %.6f %.6f\n", odo[i].t, odo[i].o[0], odo[i].o[1], odo[i].o[2]);
+        fprintf(o[0].f, "%.4f %.6f %.6f %.6f\n", odo[i].t, odo[i].o[0], odo[i].o[1], odo[i].o[2]);
     for (i = 0; i < nf; i++) {
         uint8_t buf[RL_PACKET_MAX];
         rl_msg m = fr[i].msg;
         m.time_ms = (uint32_t)lround(fr[i].capture * 1e3);
-        fwrite(buf, 1, rl_packet_encode(&m, buf), ff);
+        fwrite(buf, 1, rl_packet_encode(&m, buf), o[1].f);
     }
     for (k = 0; k * TICK <= T + 1e-9; k++) {
         fs_pose p;
         truth(d, sc, k * TICK, &p);
-        fprintf(ft, "%.3f %.6f %.6f %.6f\n", k * TICK, p.x, p.y, p.yaw);
+        fprintf(o[2].f, "%.3f %.6f %.6f %.6f\n", k * TICK, p.x, p.y, p.yaw);
     }
-    return (fclose(fo) | fclose(ff) | fclose(ft)) == 0 ? 0 : -1;
+    for (j = 0; j < 3; j++)
+        if (rl_outfile_commit(&o[j], err, sizeof err) != RL_OK) {
+            fprintf(stderr, "%s\n", err);
+            ok = 0;
+        }
+    return ok ? 0 : -1;
 }
 
 int fs_run(const fs_drive *d, const fs_scenario *sc, fs_result *r)
