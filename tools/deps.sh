@@ -8,7 +8,8 @@
 #
 # As root it installs what is missing with apt-get (Debian, Ubuntu,
 # Raspberry Pi OS); otherwise it prints the exact apt-get line and fails.
-# fuzz: clang and its libFuzzer runtime, libpng and libyaml only.
+# fuzz: clang and its libFuzzer runtime, libpng, libyaml, libturbojpeg
+# (the survey's PNG frames go through the firmware's loop) and json-c.
 # asan: the host's packages and clang (the sanitizer test build).
 # host and asan include Chromium, its driver and python3-selenium: the web
 # view's tests drive a real browser (test_view_page, test_view_hostile).
@@ -53,6 +54,7 @@ if [ "$profile" = fuzz ] || [ "$profile" = asan ]; then
     need_pkg libpng-dev pc libpng
     need_pkg libyaml-dev pc yaml-0.1
     need_pkg libjson-c-dev pc json-c
+    need_pkg libturbojpeg0-dev pc libturbojpeg
 fi
 if [ "$profile" != fuzz ]; then
     need_pkg cmake have cmake
