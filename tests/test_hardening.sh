@@ -245,6 +245,12 @@ cfg /dev/full 0 | sed "s|device: $T/frames.txt|device: $T/rec_list.txt|" >"$T/fu
 "$R" run --config "$T/full.yaml" >/dev/null 2>"$T/full.err"; rc=$?
 [ $rc = 1 ] && grep -q "serial: write failed (No space left on device)" "$T/full.err" &&
     grep -q "no frame reached /dev/full" "$T/full.err" && ok || bad "/dev/full: rc $rc: $(cat "$T/full.err")"
+#     and recording goes on without the line: every third of the 12 frames
+{ cat "$T/full.yaml"; printf 'record: {dir: rec_noline, every: 3}\n'; } >"$T/rec_noline.yaml"
+"$R" run --config "$T/rec_noline.yaml" >/dev/null 2>"$T/rec_noline.err"; rc=$?
+n=$(ls "$T/rec_noline/drive_001"/frame_*.png 2>/dev/null | wc -l)
+[ $rc = 1 ] && [ "$n" = 4 ] && grep -q "recorded 4 frames" "$T/rec_noline.err" && ok ||
+    bad "recording with the serial line down: rc $rc, $n frames: $(tail -3 "$T/rec_noline.err")"
 
 # 13. recording (issue 28): standard output closed gives no frame to the
 #     recorder's files; a second run gets its own folder; a planted link

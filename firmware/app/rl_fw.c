@@ -158,44 +158,33 @@ static int prepare_site(const char *C, fw_setup *s)
     return 1;
 }
 
+/* What watches the loop besides the serial line: the recorder and the
+ * web view. They see every report whether or not the line is up (a drive
+ * recorded with the robot's serial cable out is still recorded). */
 typedef struct {
     rl_record rec;
     const char *prefix;
-    int on;
-    rl_run_sink line; /* the serial line's packets */
-} fw_sink;
+    int on;            /* recording */
+    rl_run_view *view; /* the web view's side, or NULL */
+} fw_watch;
 
-/* Each recognized frame offered to the recorder, then the report sent as
- * a packet; when recording stopped (a full disk, the folder gone,
- * max_mb) the log says so then, once. */
-static rl_err fw_put(void *ctx, const rl_run_report *rep)
+/* Each recognized frame offered to the recorder (when recording stopped,
+ * for a full disk, the folder gone or max_mb, the log says so then,
+ * once), then the report to the web view. */
+static void fw_observe(void *ctx, const rl_run_report *rep)
 {
-    fw_sink *fs = (fw_sink *)ctx;
+    fw_watch *fw = (fw_watch *)ctx;
     const char *news;
-    if (fs->on && rep->frame != NULL) {
-        rl_record_offer(&fs->rec, &rep->frame->img, rep->frame->index, rep->frame->t_us);
-        if ((news = rl_record_news(&fs->rec)) != NULL)
-            log_line((void *)fs->prefix, news);
+    if (fw->on && rep->frame != NULL) {
+        rl_record_offer(&fw->rec, &rep->frame->img, rep->frame->index, rep->frame->t_us);
+        if ((news = rl_record_news(&fw->rec)) != NULL)
+            log_line((void *)fw->prefix, news);
     }
-    return fs->line.put(fs->line.ctx, rep);
-}
-static rl_err fw_open(void *ctx, char *err, size_t errlen)
-{
-    fw_sink *fs = (fw_sink *)ctx;
-    return fs->line.open(fs->line.ctx, err, errlen);
-}
-static void fw_close(void *ctx)
-{
-    fw_sink *fs = (fw_sink *)ctx;
-    fs->line.close(fs->line.ctx);
-}
-static const char *fw_why(void *ctx)
-{
-    fw_sink *fs = (fw_sink *)ctx;
-    return fs->line.why(fs->line.ctx);
+    if (fw->view != NULL)
+        rl_run_view_report(fw->view, rep);
 }
 
-static void wire_io(const fw_setup *s, out_ctx *octx, rl_packet_sink *ps, fw_sink *fs, rl_run_camera *cam,
+static void wire_io(const fw_setup *s, out_ctx *octx, rl_packet_sink *ps, fw_watch *fw, rl_run_camera *cam,
                     const char *prefix, rl_run_io *io)
 {
     rl_packet_line line;
@@ -207,16 +196,12 @@ static void wire_io(const fw_setup *s, out_ctx *octx, rl_packet_sink *ps, fw_sin
     line.close = out_close;
     line.why = out_why;
     line.ctx = octx;
-    fs->line = rl_packet_sink_make(ps, &line);
-    fs->prefix = prefix;
+    fw->prefix = prefix;
     memset(io, 0, sizeof *io);
     io->source = rl_run_camera_source(cam, &s->cam);
-    io->sink = fs->line;
-    io->sink.open = fw_open;
-    io->sink.put = fw_put;
-    io->sink.close = fw_close;
-    io->sink.why = fw_why;
-    io->sink.ctx = fs;
+    io->sink = rl_packet_sink_make(ps, &line);
+    io->observe = fw_observe;
+    io->observe_ctx = fw;
     io->clock = rl_clock_system();
     io->log = log_line;
     io->log_ctx = (void *)prefix;
@@ -312,7 +297,7 @@ static int probe_camera(const char *C, const char *config)
 
 /* --record DIR, or record.dir: recording starts; 0 and one error line
  * when it cannot. */
-static int start_recording(const char *C, fw_setup *s, const char *record, fw_sink *fs)
+static int start_recording(const char *C, fw_setup *s, const char *record, fw_watch *fw)
 {
     rl_record_config rcc;
     char err[512];
@@ -324,31 +309,31 @@ static int start_recording(const char *C, fw_setup *s, const char *record, fw_si
     rcc.dir = s->cfg.record_dir;
     rcc.every = s->cfg.record_every;
     rcc.max_mb = s->cfg.record_max_mb;
-    if (rl_record_start(&fs->rec, &rcc, s->site.calib.width, s->site.calib.height, err, sizeof err) != RL_OK)
+    if (rl_record_start(&fw->rec, &rcc, s->site.calib.width, s->site.calib.height, err, sizeof err) != RL_OK)
         return !rl_cli_fail(C, RL_EXIT_FAIL, "record: %s", err);
-    fprintf(stderr, "%s: recording one frame in %d to %s\n", fs->prefix, fs->rec.every, fs->rec.dir);
-    fs->on = 1;
+    fprintf(stderr, "%s: recording one frame in %d to %s\n", fw->prefix, fw->rec.every, fw->rec.dir);
+    fw->on = 1;
     return 1;
 }
 
-static void stop_recording(fw_sink *fs)
+static void stop_recording(fw_watch *fw)
 {
     const char *news;
-    if (!fs->on)
+    if (!fw->on)
         return;
-    rl_record_stop(&fs->rec);
+    rl_record_stop(&fw->rec);
     /* a stop the writer met after the last frame is logged now */
-    if ((news = rl_record_news(&fs->rec)) != NULL)
-        log_line((void *)fs->prefix, news);
+    if ((news = rl_record_news(&fw->rec)) != NULL)
+        log_line((void *)fw->prefix, news);
     fprintf(stderr, "%s: recorded %ld frames (%.1f MB) to %s, %ld skipped while the disk was behind%s%s\n",
-            fs->prefix, fs->rec.saved, fs->rec.bytes / 1e6, fs->rec.dir, fs->rec.skipped,
-            fs->rec.error[0] ? "; " : "", fs->rec.error);
+            fw->prefix, fw->rec.saved, fw->rec.bytes / 1e6, fw->rec.dir, fw->rec.skipped,
+            fw->rec.error[0] ? "; " : "", fw->rec.error);
 }
 
 /* --http ADDR:PORT, or http.listen: the web view started, observing the
  * loop; 0 and one error line when it cannot. */
-static int start_web(const char *C, fw_setup *s, const char *http, const rl_runner *runner, fw_sink *fs,
-                     rl_fw_http *web, rl_run_io *io)
+static int start_web(const char *C, fw_setup *s, const char *http, const rl_runner *runner, fw_watch *fw,
+                     rl_fw_http *web)
 {
     char err[512];
     if (http != NULL)
@@ -356,12 +341,11 @@ static int start_web(const char *C, fw_setup *s, const char *http, const rl_runn
     if (!s->cfg.http_listen[0])
         return 1;
     if (rl_fw_http_start(web, s->cfg.http_listen, s->cfg.http_token, s->site.calib.width, s->site.calib.height,
-                         &s->site.map, runner, s->cfg.serial, fs->on ? &fs->rec : NULL, err, sizeof err) != RL_OK)
+                         &s->site.map, runner, s->cfg.serial, fw->on ? &fw->rec : NULL, err, sizeof err) != RL_OK)
         return !rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-    fprintf(stderr, "%s: web view on http://%s/%s\n", fs->prefix, s->cfg.http_listen,
+    fprintf(stderr, "%s: web view on http://%s/%s\n", fw->prefix, s->cfg.http_listen,
             s->cfg.http_token[0] ? " (token required)" : "");
-    io->observe = rl_run_view_report;
-    io->observe_ctx = &web->rv;
+    fw->view = &web->rv;
     return 1;
 }
 
@@ -390,7 +374,7 @@ int rl_fw_main(const char *C, int argc, char **argv)
     static rl_runner runner;
     static out_ctx octx;
     static rl_packet_sink ps;
-    static fw_sink fs;
+    static fw_watch fw;
     static rl_run_camera cam;
     static char prefix[128];
     rl_run_io io;
@@ -408,9 +392,9 @@ int rl_fw_main(const char *C, int argc, char **argv)
     /* start-up: everything that can fail in configuration fails here, once */
     if (!load_setup(C, config, &s) || !prepare_site(C, &s))
         return RL_EXIT_FAIL;
-    wire_io(&s, &octx, &ps, &fs, &cam, prefix, &io);
-    if (!start_recording(C, &s, record, &fs) || !start_web(C, &s, http, &runner, &fs, &web, &io)) {
-        stop_recording(&fs);
+    wire_io(&s, &octx, &ps, &fw, &cam, prefix, &io);
+    if (!start_recording(C, &s, record, &fw) || !start_web(C, &s, http, &runner, &fw, &web)) {
+        stop_recording(&fw);
         rl_site_free(&s.site);
         return RL_EXIT_FAIL;
     }
@@ -423,7 +407,7 @@ int rl_fw_main(const char *C, int argc, char **argv)
     run_loop(&runner, max_frames);
     print_summary(prefix, rl_run_counts_of(&runner), &octx);
     rl_fw_http_stop(&web, prefix);
-    stop_recording(&fs);
+    stop_recording(&fw);
     if (s.site.place.pl)
         fprintf(stderr, "%s: %ld poses tracked from the last one, %ld frames ambiguous\n", prefix,
                 rl_run_counts_of(&runner)->tracked, rl_run_counts_of(&runner)->ambiguous);
