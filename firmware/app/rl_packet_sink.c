@@ -27,15 +27,12 @@ static uint8_t clamp8(int v)
 static void pose_msg(const rl_run_report *rep, rl_msg *m)
 {
     const rl_pose *pose = rep->pose;
-    int i, local = 0;
-    for (i = 0; i < rep->res->n_landmarks; i++)
-        local |= rep->res->landmarks[i].pass == RL_PASS_LOCAL;
     m->type = RL_PACKET_POSE;
     m->x_mm = clamp32(pose->x * 1000.0);
     m->y_mm = clamp32(pose->y * 1000.0);
     m->yaw_e4 = (int16_t)lround(pose->yaw * 1e4); /* |yaw| <= pi fits */
     m->used = clamp8(pose->used);
-    m->flags = (uint8_t)(local | (pose->tilt_solved ? 2 : 0));
+    m->flags = (uint8_t)((rep->local_used ? 1 : 0) | (pose->tilt_solved ? 2 : 0));
     m->residual_e4 = clampu16(pose->residual * 1e4);
     m->latency_e4 = clampu16((double)(rep->sent_us > rep->t_us ? rep->sent_us - rep->t_us : 0) / 100.0);
     m->version = RL_PACKET_VERSION;

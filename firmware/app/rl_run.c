@@ -333,7 +333,7 @@ static void use_frame(rl_runner *r, const rl_cam_frame *f)
     char why[512];
     uint64_t t0;
     rl_err e;
-    int i, local = 0;
+    int i;
     r->counts.frames++;
     if ((e = ready_for(r, f, why, sizeof why)) != RL_OK) {
         logf_(r, RL_LOG_FRAME, "%s; skipped", why);
@@ -359,8 +359,8 @@ static void use_frame(rl_runner *r, const rl_cam_frame *f)
     }
     rep.res = r->res;
     for (i = 0; i < r->res->n_landmarks; i++)
-        local |= r->res->landmarks[i].pass == RL_PASS_LOCAL;
-    r->counts.local_used += local;
+        rep.local_used |= r->res->landmarks[i].pass == RL_PASS_LOCAL;
+    r->counts.local_used += rep.local_used;
     localize(r, r->cfg.frame_interval > 0 ? (uint64_t)(r->reads * r->cfg.frame_interval * 1e6) : f->t_us, &rep,
              &pose, &found);
     report(r, &rep);

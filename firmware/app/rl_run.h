@@ -82,6 +82,7 @@ typedef struct {
     const rl_cam_frame *frame;  /* FRAME: the frame; else NULL */
     const rl_result *res;       /* FRAME: its landmarks; else NULL */
     double recog_us;            /* FRAME: recognition's time alone */
+    int local_used;             /* FRAME: 1 when the local pass identified one of its landmarks */
     rl_err pose_err;            /* FRAME: RL_OK with a pose; RL_ETOOFEW, RL_EAMBIGUOUS, ...;
                                    RL_EUNSUPPORTED when the site cannot localize */
     const rl_pose *pose;        /* FRAME after a solve (the failed one too: n_dropped) */
