@@ -6,20 +6,20 @@
 #include <getopt.h>
 #include <math.h>
 #include <poll.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <time.h>
 #include <unistd.h>
 #include "rl_cli.h"
+#include "rl_clock.h"
 #include "rl_cmd.h"
 #include "rl_fuse.h"
 #include "rl_infile.h"
 #include "rl_odolog.h"
 #include "rl_outfile.h"
 #include "rl_serial.h"
+#include "rl_stop.h"
 
 static const char *fuse_help =
     "usage: ringloc fuse --odometry LOG [--rate 100] [--baud 115200] [--time-offset S]\n"
@@ -54,19 +54,9 @@ typedef struct {
     unsigned long status, damaged;
 } frame_list;
 
-static volatile sig_atomic_t stop_flag;
-
-static void on_signal(int sig)
-{
-    (void)sig;
-    stop_flag = 1;
-}
-
 static double now_s(void)
 {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
+    return (double)rl_clock_now_us() * 1e-6;
 }
 
 static int push(frame_list *l, const timed_frame *tf)
@@ -131,7 +121,7 @@ static int read_frames(const char *C, const char *path, int baud, double offset,
         live = dev.is_tty;
     } else if ((fd = rl_infile_open(path, "a file of pose frames", &e, err, sizeof err)) < 0)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-    while (!stop_flag) {
+    while (!rl_stop_requested()) {
         ssize_t n;
         if (live) {
             struct pollfd p;
@@ -185,7 +175,7 @@ static long replay(rl_fuse *f, const rl_odolog *log, const frame_list *l, double
 {
     size_t io = 0, jf = 0;
     long k, ticks = 0, nt = (long)floor((log->s[log->n - 1].t - log->s[0].t) * rate + 1e-9);
-    for (k = 0; k <= nt && !stop_flag; k++) {
+    for (k = 0; k <= nt && !rl_stop_requested(); k++) {
         double t = log->s[0].t + k / rate;
         rl_fuse_pose p;
         while ((io < log->n && log->s[io].t <= t) || (jf < l->n && l->f[jf].arrival <= t)) {
@@ -261,7 +251,6 @@ int rl_cmd_fuse(int argc, char **argv)
     frame_list l;
     rl_outfile o;
     char err[1200];
-    struct sigaction sa;
     FILE *out = stdout;
     rl_fuse_defaults(&cfg);
     if ((rc = options(C, argc, argv, &cfg, &odo, &out_path, &rate, &baud, &offset)) != 0)
@@ -275,10 +264,7 @@ int rl_cmd_fuse(int argc, char **argv)
         rl_odolog_free(&log);
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s: its times span %.3g s, more than a day: do they jump?", odo, span);
     }
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
+    rl_stop_on_signals(0);
     memset(&l, 0, sizeof l);
     if ((rc = read_frames(C, argv[optind], baud, offset, &l)) != 0) {
         rl_odolog_free(&log);

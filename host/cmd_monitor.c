@@ -4,7 +4,6 @@
 #include <fcntl.h>
 #include <getopt.h>
 #include <poll.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,6 +14,7 @@
 #include "rl_cmd.h"
 #include "rl_packet.h"
 #include "rl_serial.h"
+#include "rl_stop.h"
 
 static const char *monitor_help =
     "usage: ringloc monitor [--baud 115200] [--follow] DEVICE|FILE\n"
@@ -37,13 +37,6 @@ static const char *monitor_help =
     "               ends when the writer closes it\n"
     "  --follow     keep reading a file as it grows\n";
 
-static volatile sig_atomic_t stop_flag;
-
-static void on_signal(int sig)
-{
-    (void)sig;
-    stop_flag = 1;
-}
 
 /* The fields a well-formed frame cannot hold (a yaw beyond pi, a flag or
  * status reason ringloc does not send, a tilt beyond 90 degrees), as the
@@ -151,7 +144,7 @@ static int monitor_loop(const char *C, const monitor_src *in, rl_decoder *d, uns
     uint8_t buf[4096];
     rl_msg m;
     int seen = 0;
-    while (!stop_flag) {
+    while (!rl_stop_requested()) {
         ssize_t n, i;
         if (in->is_pty) {
             struct pollfd p;
@@ -203,7 +196,6 @@ int rl_cmd_monitor(int argc, char **argv)
     unsigned long frames = 0;
     monitor_src in;
     rl_decoder d;
-    struct sigaction sa;
 
     optind = 1;
     while ((c = rl_cli_getopt(C, argc, argv, opts)) != -1) {
@@ -223,10 +215,7 @@ int rl_cmd_monitor(int argc, char **argv)
     }
     if ((link_path == NULL) == (optind >= argc))
         return rl_cli_fail(C, RL_EXIT_USAGE, "give a DEVICE or FILE, or --pty LINK (see --help)");
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
+    rl_stop_on_signals(0);
     memset(&in, 0, sizeof in);
     in.follow = follow;
     if ((r = link_path ? open_pty(C, link_path, &in) : open_file(C, argv[optind], &in)) != 0)

@@ -1,7 +1,6 @@
 /* The firmware: frames in from the camera, pose frames out on the serial
  * line, until SIGINT or SIGTERM (or the end of a PNG sequence). */
 #include <getopt.h>
-#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 #include "rl_fw.h"
@@ -11,6 +10,7 @@
 #include "rl_listen.h"
 #include "rl_packet_sink.h"
 #include "rl_record.h"
+#include "rl_stop.h"
 #include "rl_run.h"
 #include "rl_runcfg.h"
 #include "rl_serial.h"
@@ -35,14 +35,6 @@ static const char *run_help =
     "  --probe      list what the configured camera offers (formats, sizes,\n"
     "               controls) and exit\n";
 
-static volatile sig_atomic_t stop_flag;
-
-static void on_signal(int sig)
-{
-    (void)sig;
-    stop_flag = 1;
-}
-
 typedef struct {
     rl_serial s;
     const char *path;
@@ -64,9 +56,9 @@ static rl_err out_write(void *ctx, const uint8_t *p, size_t n)
 {
     out_ctx *o = (out_ctx *)ctx;
     rl_err e = rl_serial_write(&o->s, p, n, 100);
-    if (o->s.broken && !stop_flag) {
+    if (o->s.broken && !rl_stop_requested()) {
         fprintf(stderr, "%s: serial: standard output closed (broken pipe); stopping\n", o->prefix);
-        stop_flag = 1;
+        rl_stop_request();
     }
     return e;
 }
@@ -207,20 +199,9 @@ static void wire_io(const fw_setup *s, out_ctx *octx, rl_packet_sink *ps, fw_wat
     io->log_ctx = (void *)prefix;
 }
 
-static void on_signals(void)
-{
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    sigaction(SIGHUP, &sa, NULL); /* a closed terminal or a service reload: stop with the summary */
-    signal(SIGPIPE, SIG_IGN); /* a vanished reader is a write error, not a death */
-}
-
 static void run_loop(rl_runner *runner, long max_frames)
 {
-    while (!stop_flag) {
+    while (!rl_stop_requested()) {
         if (rl_run_step(runner) == RL_ENOTFOUND)
             break;
         if (max_frames > 0 && rl_run_counts_of(runner)->frames >= max_frames)
@@ -364,7 +345,7 @@ static void print_summary(const char *prefix, const rl_run_counts *n, const out_
                     "%ld bad frames, %ld timeouts, %ld serial errors, %ld frames dropped%s\n",
             prefix, n->frames, n->poses, n->statuses, n->camera_errors, n->bad_frames, n->camera_timeouts,
             n->sink_errors, n->dropped,
-            stop_flag ? (octx->s.broken ? " (standard output closed)" : " (stopped by signal)") : "");
+            rl_stop_requested() ? (octx->s.broken ? " (standard output closed)" : " (stopped by signal)") : "");
 }
 
 int rl_fw_main(const char *C, int argc, char **argv)
@@ -400,7 +381,9 @@ int rl_fw_main(const char *C, int argc, char **argv)
     }
     run_config(&s.cfg, &rc);
     rl_run_init(&runner, &rc, &io, &s.site, &res);
-    on_signals();
+    /* a closed terminal or a service reload: stop with the summary; a
+     * vanished reader of standard output is a write error */
+    rl_stop_on_signals(RL_STOP_HUP | RL_STOP_NO_SIGPIPE);
     fprintf(stderr, "%s: %s camera %s, %d landmarks in %s%s, poses to %s at %d baud\n", prefix,
             s.cfg.cam_backend, s.cfg.cam_device, s.site.map.count, s.cfg.map,
             s.site.place.pl ? " (ids repeat: places found from constellations)" : "", s.cfg.serial, s.cfg.baud);

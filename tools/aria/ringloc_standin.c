@@ -14,15 +14,15 @@
 #include <math.h>
 #include <netinet/in.h>
 #include <poll.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/socket.h>
-#include <time.h>
 #include <unistd.h>
 #include "rl_cli.h"
+#include "rl_clock.h"
 #include "rl_outfile.h"
+#include "rl_stop.h"
 #include "standin_sim.h"
 
 #define SIP_PERIOD 0.1
@@ -46,19 +46,9 @@ static const char *help =
     "  --seconds S        stop after S seconds (default: when the client closes)\n"
     "  --start X,Y,YAW    the true start in the map (default 1,1,0)\n";
 
-static volatile sig_atomic_t stop_flag;
-
-static void on_signal(int sig)
-{
-    (void)sig;
-    stop_flag = 1;
-}
-
 static double now_s(void)
 {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
+    return (double)rl_clock_now_us() * 1e-6;
 }
 
 typedef struct {
@@ -227,7 +217,7 @@ static int parse_start(const char *arg, double *x, double *y, double *yaw)
 static void run(standin *s, double seconds, FILE *truth)
 {
     double t0 = now_s(), last = t0, next_sip = t0, next_frame = t0, next_truth = t0;
-    while (!stop_flag) {
+    while (!rl_stop_requested()) {
         double t;
         network(s);
         t = now_s();
@@ -269,7 +259,6 @@ int main(int argc, char **argv)
     int c, port = 8101, seed = 1;
     rl_outfile o;
     char err[1200];
-    struct sigaction sa;
     rl_cli_start(P);
     while ((c = rl_cli_getopt(NULL, argc, argv, opts)) != -1) {
         int ok = 1;
@@ -300,11 +289,7 @@ int main(int argc, char **argv)
                            strerror(errno));
     if (truth_path && rl_outfile_open(&o, truth_path, err, sizeof err) != RL_OK)
         return rl_cli_fail(NULL, RL_EXIT_FAIL, "%s", err);
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    signal(SIGPIPE, SIG_IGN);
+    rl_stop_on_signals(RL_STOP_NO_SIGPIPE);
     fprintf(stderr, P ": listening on 127.0.0.1:%d%s%s\n", port, pty_link ? ", pose frames on " : "",
             pty_link ? pty_link : "");
     run(&s, seconds, truth_path ? o.f : NULL);
