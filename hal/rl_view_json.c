@@ -44,6 +44,13 @@ static void num(jbuf *b, const char *key, double v, int decimals)
         put(b, "\"%s\": null", key);
 }
 
+/* A number and the comma after it. */
+static void num_sep(jbuf *b, const char *key, double v, int decimals)
+{
+    num(b, key, v, decimals);
+    put(b, ", ");
+}
+
 static void str(jbuf *b, const char *key, const char *s)
 {
     put(b, "\"%s\": \"", key);
@@ -77,12 +84,9 @@ void rl_view_json_hist(const rl_view_snap *s, unsigned long hist[256])
 static void detection(jbuf *b, const rl_detection *d)
 {
     put(b, "{\"id\": %d, ", d->id);
-    num(b, "u", d->u, 2);
-    put(b, ", ");
-    num(b, "v", d->v, 2);
-    put(b, ", ");
-    num(b, "radius", d->radius, 2);
-    put(b, ", ");
+    num_sep(b, "u", d->u, 2);
+    num_sep(b, "v", d->v, 2);
+    num_sep(b, "radius", d->radius, 2);
     num(b, "score", d->score, 3);
     put(b, ", \"pass\": \"%s\", \"complete\": %s, ", d->pass == RL_PASS_LOCAL ? "local" : "global",
         d->complete ? "true" : "false");
@@ -95,8 +99,7 @@ static void result(jbuf *b, const rl_result *r)
     const rl_levels *l = &r->levels;
     int i;
     put(b, "\"levels\": {\"light\": %d, \"threshold\": %d, ", l->light, l->threshold);
-    num(b, "fg", l->fg, 1);
-    put(b, ", ");
+    num_sep(b, "fg", l->fg, 1);
     num(b, "bg", l->bg, 1);
     put(b, ", \"k\": %d}, ", l->k);
     num(b, "gamma", r->gamma, 3);
@@ -125,22 +128,14 @@ static void pose(jbuf *b, const rl_view_snap *s)
     const rl_pose *p = &s->pose;
     static const char *places[] = {"none", "found", "tracked", "ambiguous"};
     put(b, "\"pose\": {\"current\": %s, ", s->have_pose ? "true" : "false");
-    num(b, "x", p->x, 4);
-    put(b, ", ");
-    num(b, "y", p->y, 4);
-    put(b, ", ");
-    num(b, "yaw", p->yaw, 5);
-    put(b, ", ");
-    num(b, "sigma_x", p->sigma_x, 5);
-    put(b, ", ");
-    num(b, "sigma_y", p->sigma_y, 5);
-    put(b, ", ");
-    num(b, "sigma_yaw", p->sigma_yaw, 5);
-    put(b, ", ");
-    num(b, "roll", p->roll, 5);
-    put(b, ", ");
-    num(b, "pitch", p->pitch, 5);
-    put(b, ", ");
+    num_sep(b, "x", p->x, 4);
+    num_sep(b, "y", p->y, 4);
+    num_sep(b, "yaw", p->yaw, 5);
+    num_sep(b, "sigma_x", p->sigma_x, 5);
+    num_sep(b, "sigma_y", p->sigma_y, 5);
+    num_sep(b, "sigma_yaw", p->sigma_yaw, 5);
+    num_sep(b, "roll", p->roll, 5);
+    num_sep(b, "pitch", p->pitch, 5);
     num(b, "residual", p->residual, 4);
     put(b, ", \"used\": %d, \"place\": \"%s\"}, ", p->used,
         s->place >= 0 && s->place < 4 ? places[s->place] : "unique ids");
@@ -153,10 +148,8 @@ static void counters(jbuf *b, const rl_view_snap *s)
     const rl_view_counts *c = &s->counts;
     int i;
     put(b, "\"counters\": {");
-    num(b, "fps", s->fps, 2);
-    put(b, ", ");
-    num(b, "latency_ms", s->latency_ms, 2);
-    put(b, ", ");
+    num_sep(b, "fps", s->fps, 2);
+    num_sep(b, "latency_ms", s->latency_ms, 2);
     num(b, "landmarks_per_frame", s->landmarks, 2);
     put(b, ", \"uptime_s\": %.1f, ", s->now_us > s->start_us ? (double)(s->now_us - s->start_us) / 1e6 : 0.0);
     put(b, "\"frames\": %ld, \"poses\": %ld, \"statuses\": %ld, \"camera_errors\": %ld, "
@@ -216,14 +209,12 @@ size_t rl_view_json_map(const rl_map *m, char *buf, size_t cap)
     jbuf b = {buf, cap, 0, cap == 0};
     int i;
     put(&b, "{\"family\": \"ring%d\", ", m->family.bits);
-    num(&b, "diameter", m->diameter, 4);
-    put(&b, ", ");
+    num_sep(&b, "diameter", m->diameter, 4);
     num(&b, "ceiling", m->ceiling_height, 3);
     put(&b, ", \"landmarks\": [");
     for (i = 0; i < m->count && i < RL_MAX_MAP_LANDMARKS; i++) {
         put(&b, "%s{\"id\": %d, ", i ? ", " : "", m->lm[i].id);
-        num(&b, "x", m->lm[i].x, 3);
-        put(&b, ", ");
+        num_sep(&b, "x", m->lm[i].x, 3);
         num(&b, "y", m->lm[i].y, 3);
         put(&b, "}");
     }
