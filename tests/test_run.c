@@ -6,24 +6,13 @@
  * the loop runs. */
 #include "rl_test.h"
 #include <math.h>
+#include "alloc_count.h"
 #include "fixture_eval.h"
 #include "rl_packet_sink.h"
 #include "rl_png.h"
 #include "rl_run.h"
 #include "rl_run_view.h"
 #include "rl_site.h"
-
-/* ---- counting allocations ---- */
-void *__real_malloc(size_t n);
-void *__wrap_malloc(size_t n);
-void *__real_calloc(size_t a, size_t b);
-void *__wrap_calloc(size_t a, size_t b);
-void *__real_realloc(void *p, size_t n);
-void *__wrap_realloc(void *p, size_t n);
-static long allocations;
-void *__wrap_malloc(size_t n) { allocations++; return __real_malloc(n); }
-void *__wrap_calloc(size_t a, size_t b) { allocations++; return __real_calloc(a, b); }
-void *__wrap_realloc(void *p, size_t n) { allocations++; return __real_realloc(p, n); }
 
 /* ---- a scripted camera ---- */
 enum { OK, FAIL_OPEN, GRAB_EIO, GRAB_TIMEOUT, WRONG_SIZE, DAMAGED, END };
@@ -208,10 +197,10 @@ static void test_frames_become_poses_without_allocating(void **state)
     (void)state;
     start(script);
     assert_int_equal(rl_run_step(&runner), RL_OK); /* opens the camera */
-    before = allocations;
+    before = alloc_count();
     assert_true(before > 0); /* the counter works: setup's malloc was seen */
     run_to_end();
-    assert_int_equal(allocations - before, 0);
+    assert_int_equal(alloc_count() - before, 0);
     assert_int_equal(out.n, 5);
     for (i = 0; i < 5; i++) {
         assert_pose_right(&out.msgs[i]);
@@ -247,9 +236,9 @@ static void test_view_observer_without_allocating(void **state)
     runner.io.observe = rl_run_view_report;
     runner.io.observe_ctx = &rv;
     assert_int_equal(rl_run_step(&runner), RL_OK); /* opens the camera */
-    before = allocations;
+    before = alloc_count();
     run_to_end();
-    assert_int_equal(allocations - before, 0);
+    assert_int_equal(alloc_count() - before, 0);
     assert_int_equal(out.n, 5);
     for (i = 0; i < 5; i++)
         assert_pose_right(&out.msgs[i]);
@@ -408,9 +397,9 @@ static void test_repeated_ids_ambiguous_then_tracked(void **state)
     assert_non_null(twice.place.pl); /* ids repeat: places */
     start_on(script, &twice);
     assert_int_equal(rl_run_step(&runner), RL_OK);
-    before = allocations;
+    before = alloc_count();
     run_to_end();
-    assert_int_equal(allocations - before, 0);
+    assert_int_equal(alloc_count() - before, 0);
     assert_int_equal(out.n, 3);
     for (i = 0; i < 3; i++) {
         assert_int_equal(out.msgs[i].type, RL_PACKET_STATUS);

@@ -8,23 +8,13 @@
 #include <math.h>
 #include <pthread.h>
 #include <turbojpeg.h>
+#include "alloc_count.h"
 #include "rl_http_req.h"
 #include "rl_listen.h"
 #include "rl_runcfg.h"
 #include "rl_view.h"
 #include "rl_view_jpeg.h"
 #include "rl_view_json.h"
-
-void *__real_malloc(size_t n);
-void *__wrap_malloc(size_t n);
-void *__real_calloc(size_t a, size_t b);
-void *__wrap_calloc(size_t a, size_t b);
-void *__real_realloc(void *p, size_t n);
-void *__wrap_realloc(void *p, size_t n);
-static long allocations;
-void *__wrap_malloc(size_t n) { allocations++; return __real_malloc(n); }
-void *__wrap_calloc(size_t a, size_t b) { allocations++; return __real_calloc(a, b); }
-void *__wrap_realloc(void *p, size_t n) { allocations++; return __real_realloc(p, n); }
 
 #define W 64
 #define H 48
@@ -106,14 +96,14 @@ static void test_offer_rate_and_copy(void **st)
     setup_view();
     memset(&pose, 0, sizeof pose);
     pose.x = 1.5, pose.y = -2.25, pose.sigma_x = 0.004;
-    before = allocations;
+    before = alloc_count();
     for (i = 0; i < 30; i++) { /* 15 frames a second for 2 s */
         uint64_t t = 1000000u + (uint64_t)i * 66667u;
         frame_at(&f, i, t);
         o = obs_of(&f, i % 3 ? &pose : NULL, t + 20000u);
         copies += rl_view_offer(&view, &o);
     }
-    assert_int_equal(allocations, before);
+    assert_int_equal(alloc_count(), before);
     assert_in_range(copies, 9, 11); /* 5 a second */
     assert_int_equal(rl_view_take(&view, &snap), 1);
     assert_int_equal(rl_view_take(&view, &snap), 0); /* nothing newer */
