@@ -6,24 +6,7 @@ set -u
 R=$1
 T=$2
 mkdir -p "$T"
-pass=0
-fail=0
-
-# expect RC PATTERN -- command...: exit code RC and, for errors, exactly one
-# stderr line matching PATTERN.
-expect() {
-    want_rc=$1; pattern=$2; shift 3
-    "$@" >"$T/out" 2>"$T/err"
-    rc=$?
-    lines=$(grep -c . "$T/err")
-    if [ "$rc" != "$want_rc" ] || ! grep -qE -- "$pattern" "$T/err" "$T/out" ||
-        { [ "$want_rc" != 0 ] && [ "$lines" != 1 ]; }; then
-        echo "FAIL: $* -> rc $rc (want $want_rc), stderr:"; cat "$T/err"
-        fail=$((fail + 1))
-    else
-        pass=$((pass + 1))
-    fi
-}
+. "$(dirname "$0")/sh_check.sh"
 
 expect 0 'usage: ringloc COMMAND' -- "$R" --help
 expect 2 "unknown command 'frobnicate'" -- "$R" frobnicate
@@ -71,14 +54,14 @@ expect 0 '"cols": 9, "rows": 8, "landmarks": 72, "ids": [0-9]+, "even_parity": f
     "$R" plan --area 6x5 --pitch 0.61 --hfov 70 --distance 1.87 --ceiling-height 2.75 --map-out "$T/site.yaml"
 n_lm=$(grep -c '{id:' "$T/site.yaml")
 n_ids=$(grep -o '{id: [0-9]*' "$T/site.yaml" | sort -u | wc -l)
-if [ "$n_lm" = 72 ] && [ "$n_ids" -le 30 ]; then pass=$((pass + 1)); else
-    echo "FAIL: plan --area wrote $n_lm landmarks with $n_ids ids (want 72, at most 30)"; fail=$((fail + 1)); fi
+if [ "$n_lm" = 72 ] && [ "$n_ids" -le 30 ]; then ok; else
+    bad "plan --area wrote $n_lm landmarks with $n_ids ids (want 72, at most 30)"; fi
 expect 0 '"even_parity": true' -- "$R" plan --area 6x5 --pitch 0.61 --hfov 70 --distance 1.87 --ceiling-height 2.75 \
     --hamming 2 --map-out "$T/site2.yaml"
 # even parity: each id's code has an even number of black zones
 odd=$(grep -o '{id: [0-9]*' "$T/site2.yaml" | sed 's/{id: //' | sort -un | while read -r i; do
     b=0; v=$i; while [ "$v" -gt 0 ]; do b=$((b + v % 2)); v=$((v / 2)); done; [ $((b % 2)) = 1 ] && echo "$i"; done)
-if [ -z "$odd" ]; then pass=$((pass + 1)); else echo "FAIL: --hamming 2 used odd-parity ids: $odd"; fail=$((fail + 1)); fi
+if [ -z "$odd" ]; then ok; else bad "--hamming 2 used odd-parity ids: $odd"; fi
 
 # plan
 expect 2 'give --camera FILE, or --hfov' -- "$R" plan --landmarks 30 --distance 1.87
@@ -97,5 +80,4 @@ expect 0 'map +.*plan_map.yaml: 3x2 landmarks' -- "$R" plan --hfov 70 --ceiling-
 # the written map loads back and prints
 expect 0 'ringloc gen: 6 landmarks of ring3' -- "$R" gen --map "$T/plan_map.yaml" --pdf "$T/plan_map2.pdf"
 
-echo "$pass passed, $fail failed"
-[ "$fail" = 0 ]
+sh_done

@@ -7,22 +7,7 @@ R=$1
 D=$2
 T=$3
 mkdir -p "$T"
-pass=0
-fail=0
-ok() { pass=$((pass + 1)); }
-bad() { echo "FAIL: $*"; fail=$((fail + 1)); }
-
-# expect RC PATTERN -- command...: exit code and one stderr line matching
-expect() {
-    want_rc=$1; pattern=$2; shift 3
-    "$@" >"$T/out" 2>"$T/err"
-    rc=$?
-    if [ "$rc" != "$want_rc" ] || ! grep -qE -- "$pattern" "$T/err" "$T/out"; then
-        bad "$* -> rc $rc (want $want_rc): $(cat "$T/err")"
-    else
-        ok
-    fi
-}
+. "$(dirname "$0")/sh_check.sh"
 
 # truth of a frame: "x y yaw"
 truth() { sed -n 's/^robot: {x: \([-0-9.]*\), y: \([-0-9.]*\), yaw: \([-0-9.]*\)}/\1 \2 \3/p' "$D/$1.yaml"; }
@@ -65,5 +50,4 @@ if [ $? = 0 ] && near "$(pose "$T/off.json")" "$(truth straight_006)" 0.03; then
 else bad "locate --offsets: $(cat "$T/off.json" "$T/err")"; fi
 expect 2 "--pose: 'a,b' is not X,Y,YAW" -- "$R" calibrate-offsets --map "$D/map.yaml" --robot "$D/robot.yaml" --pose a,b --out "$T/o.yaml" "$D/straight_000.png"
 
-echo "$pass passed, $fail failed"
-[ "$fail" = 0 ]
+sh_done

@@ -8,22 +8,7 @@ SYNTH=$2
 SOAK=$3
 T=$4
 mkdir -p "$T"
-pass=0
-fail=0
-
-# expect RC PATTERN -- command...: exit code RC and exactly one stderr line
-# matching PATTERN.
-expect() {
-    want_rc=$1; pattern=$2; shift 3
-    "$@" >"$T/out" 2>"$T/err"
-    rc=$?
-    if [ "$rc" != "$want_rc" ] || ! grep -qE -- "$pattern" "$T/err" || [ "$(grep -c . "$T/err")" != 1 ]; then
-        echo "FAIL: $* -> rc $rc (want $want_rc), stderr:"; cat "$T/err"
-        fail=$((fail + 1))
-    else
-        pass=$((pass + 1))
-    fi
-}
+. "$(dirname "$0")/sh_check.sh"
 
 expect 2 "ringloc-render: --count: 'x' is not an integer" -- "$RENDER" --out "$T/r" --set clean --count x
 expect 2 "ringloc-render: --frames: '12abc' is not an integer" -- "$RENDER" --out "$T/r" --path rect --frames 12abc
@@ -43,5 +28,4 @@ expect 2 "ringloc-soak: --frames: 10 is out of range" -- "$SOAK" --frames 10 "$T
 expect 2 "ringloc-soak: --reopen-every: 'x' is not a number" -- "$SOAK" --reopen-every x "$T"
 expect 1 "ringloc-soak: $T/none/camera.yaml" -- "$SOAK" "$T/none"
 
-echo "$pass passed, $fail failed"
-[ "$fail" = 0 ]
+sh_done

@@ -80,5 +80,4 @@ st=$(grep -c '"type": "status", .*"reason": 2' "$T/status.jsonl")
 lines=$(grep -c "camera:" "$T/nocam.err")
 [ "$lines" -le 3 ] && ok || bad "$lines camera log lines in 1.5 s: not rate-limited"
 
-echo "$pass passed, $fail failed"
-[ "$fail" = 0 ]
+sh_done

@@ -331,5 +331,4 @@ printf 'not a png\n' >"$T/photos/p21.png"
     grep -q "p22.png" "$T/sc.err" && grep -q "2 of 22 files skipped" "$T/sc.err" &&
     ! grep -q "of 22 photos.*png" "$T/sc.err" && ok || bad "site-check with bad files: rc $rc: $(cat "$T/sc.err")"
 
-echo "$pass passed, $fail failed"
-[ "$fail" = 0 ]
+sh_done
