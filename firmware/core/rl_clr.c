@@ -6,7 +6,7 @@
 /* Shape limits of an outer ring's region (with whatever code rings merged
  * into it). The outer ring alone fills 0.28 of its bounding box, a nearly
  * black landmark 0.75; blur and thresholding move both a little. */
-#define FILL_MIN 0.15
+#define FILL_MIN 0.08
 #define FILL_MAX 0.85
 #define ASPECT_MAX 1.4   /* bounding box width/height (lens distortion) */
 #define CENTROID_MAX 0.2 /* centroid to box centre, in radii */
@@ -55,10 +55,67 @@ static rl_shape region_shape(const rl_label *lb, int i)
     return rl_shape_from_moments(cxx, cxy, cyy);
 }
 
+/* Motion breaks an outer ring: along the motion its thin arcs smear
+ * lighter than the threshold, and what is left are two arcs facing each
+ * other across the code. Arcs (regions of at least a minimum radius
+ * along their longer side, not ring-shaped themselves) are kept here,
+ * at most ARCS_MAX of them, to be paired. */
+#define ARCS_MAX 48
+
+static int arc_like(const rl_region *g, const rl_recog_config *cfg)
+{
+    int bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
+    return (bw > bh ? bw : bh) >= 1.4 * cfg->min_radius;
+}
+
+/* Two arcs side by side (neither box holds the other's centre) whose
+ * union is shaped like a closed outer ring; the union into *u. */
+static int arcs_close(const rl_region *a, const rl_region *b, const rl_recog_config *cfg,
+                      rl_region *u)
+{
+    double ax = (a->x0 + a->x1) / 2.0, ay = (a->y0 + a->y1) / 2.0;
+    double bx = (b->x0 + b->x1) / 2.0, by = (b->y0 + b->y1) / 2.0;
+    if ((ax >= b->x0 && ax <= b->x1 && ay >= b->y0 && ay <= b->y1) ||
+        (bx >= a->x0 && bx <= a->x1 && by >= a->y0 && by <= a->y1))
+        return 0;
+    u->x0 = a->x0 < b->x0 ? a->x0 : b->x0;
+    u->y0 = a->y0 < b->y0 ? a->y0 : b->y0;
+    u->x1 = a->x1 > b->x1 ? a->x1 : b->x1;
+    u->y1 = a->y1 > b->y1 ? a->y1 : b->y1;
+    u->area = a->area + b->area;
+    u->sx = a->sx + b->sx;
+    u->sy = a->sy + b->sy;
+    return ring_shaped(u, cfg);
+}
+
+/* The closed rings of the arcs kept, as candidates after the n in cand. */
+static int close_arcs(const rl_region *arcs, int na, const rl_recog_config *cfg, rl_result *res,
+                      rl_clr *cand, int n, int cap)
+{
+    int i, j;
+    for (i = 0; i < na; i++)
+        for (j = i + 1; j < na; j++) {
+            rl_region u;
+            if (!arcs_close(&arcs[i], &arcs[j], cfg, &u))
+                continue;
+            if (n == cap) {
+                res->dropped.candidates++;
+                continue;
+            }
+            cand[n].box.x0 = u.x0;
+            cand[n].box.y0 = u.y0;
+            cand[n].box.x1 = u.x1;
+            cand[n].box.y1 = u.y1;
+            cand[n++].shape = rl_shape_circle();
+        }
+    return n;
+}
+
 int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, rl_clr *cand,
                 int cap)
 {
-    int i, n = 0, W = lb->width, H = lb->height;
+    rl_region arcs[ARCS_MAX];
+    int i, n = 0, na = 0, W = lb->width, H = lb->height;
     for (i = 0; i < lb->n_regions; i++) {
         const rl_region *g = &lb->reg[i];
         int cut = g->x0 == 0 || g->y0 == 0 || g->x1 == W - 1 || g->y1 == H - 1, ring = 0;
@@ -68,8 +125,11 @@ int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, 
         b.x1 = g->x1;
         b.y1 = g->y1;
         if (cut ? !cut_candidate(g, cfg, W, H)
-                : !(ring = ring_shaped(g, cfg)) && !broken_by_light(g, cfg, res, &b))
+                : !(ring = ring_shaped(g, cfg)) && !broken_by_light(g, cfg, res, &b)) {
+            if (!cut && na < ARCS_MAX && arc_like(g, cfg))
+                arcs[na++] = *g;
             continue;
+        }
         if (n == cap) {
             res->dropped.candidates++;
             continue;
@@ -77,7 +137,7 @@ int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, 
         cand[n].box = b;
         cand[n++].shape = ring ? region_shape(lb, i) : rl_shape_circle();
     }
-    return n;
+    return close_arcs(arcs, na, cfg, res, cand, n, cap);
 }
 
 /* The larger side of a box. */
