@@ -145,6 +145,16 @@ int render_camera_frame(const render_scene *s, uint8_t *out)
     double rmax = sqrt(s->cam.cx * s->cam.cx + s->cam.cy * s->cam.cy);
     static render_grid grid;
     render_rng rng = {rng_normal, rng_uniform};
+    /* motion blur: each subsample at its own instant, the camera moved
+     * and turned (about its axis) by then */
+    double turn_c[SUB * SUB], turn_s[SUB * SUB], move_x[SUB * SUB], move_y[SUB * SUB];
+    for (a = 0; a < SUB * SUB; a++) {
+        double t = (a + 0.5) / (SUB * SUB) - 0.5;
+        turn_c[a] = cos(t * s->motion_turn);
+        turn_s[a] = sin(t * s->motion_turn);
+        move_x[a] = t * s->motion * cos(s->motion_dir);
+        move_y[a] = t * s->motion * sin(s->motion_dir);
+    }
     if (!lin || build_rays(&s->cam) != 0 || view_grid(s, &grid) != 0)
         return -1;
     for (y = 0; y < H; y++)
@@ -153,12 +163,9 @@ int render_camera_frame(const render_scene *s, uint8_t *out)
             for (b = 0; b < SUB; b++)
                 for (a = 0; a < SUB; a++) {
                     const double *r = ray_table + 2 * ((((size_t)y * W + x) * SUB + b) * SUB + a);
-                    /* motion blur: each subsample at its own instant, the
-                     * camera moved and turned (about its axis) by then */
-                    double t = (b * SUB + a + 0.5) / (SUB * SUB) - 0.5, X, Y;
-                    double c = cos(t * s->motion_turn), sn = sin(t * s->motion_turn);
-                    ray_to_map(s, c * r[0] - sn * r[1], sn * r[0] + c * r[1], t * s->motion * cos(s->motion_dir),
-                               t * s->motion * sin(s->motion_dir), &X, &Y);
+                    int k = b * SUB + a;
+                    double c = turn_c[k], sn = turn_s[k], X, Y;
+                    ray_to_map(s, c * r[0] - sn * r[1], sn * r[0] + c * r[1], move_x[k], move_y[k], &X, &Y);
                     acc += render_ceiling_radiance(s, &grid, X, Y);
                 }
             acc /= SUB * SUB;

@@ -116,7 +116,7 @@ static double object_radiance(const render_scene *s, const render_object *o, dou
 /* Gap from a point to a light's rectangle (0 inside). */
 double render_ceiling_light_gap(const render_object *o, double X, double Y)
 {
-    double c = cos(o->rot), s = sin(o->rot), dx = X - o->x, dy = Y - o->y;
+    double c = o->cr, s = o->sr, dx = X - o->x, dy = Y - o->y;
     double lx = fabs(c * dx + s * dy) - o->a, ly = fabs(-s * dx + c * dy) - o->b;
     lx = lx > 0 ? lx : 0;
     ly = ly > 0 ? ly : 0;
@@ -125,7 +125,7 @@ double render_ceiling_light_gap(const render_object *o, double X, double Y)
 
 double render_ceiling_radiance(const render_scene *s, const render_grid *g, double X, double Y)
 {
-    double v = tile_radiance(s, X, Y), halo = 0;
+    double v = -1, halo = 0;
     int gx = (int)floor((X - g->x0) / RENDER_GRID_CELL), gy = (int)floor((Y - g->y0) / RENDER_GRID_CELL), k, k0, k1;
     int all = gx < 0 || gy < 0 || gx >= g->nx || gy >= g->ny;
     k0 = all ? 0 : g->start[gy * g->nx + gx];
@@ -134,7 +134,7 @@ double render_ceiling_radiance(const render_scene *s, const render_grid *g, doub
     for (k = k0; k < k1; k++) {
         const render_object *o = &s->obj[all ? k : g->idx[k]];
         double dx = X - o->x, dy = Y - o->y, reach = o->a > o->b ? o->a : o->b;
-        double c, sn, r;
+        double r;
         if ((o->kind == RENDER_OBJ_LIGHT || o->kind == RENDER_OBJ_DOWNLIGHT) &&
             fabs(dx) < reach + 8 * s->halo_sigma && fabs(dy) < reach + 8 * s->halo_sigma) {
             double gap = o->kind == RENDER_OBJ_LIGHT ? render_ceiling_light_gap(o, X, Y) : fmax(0, sqrt(dx * dx + dy * dy) - 0.8 * o->a);
@@ -142,13 +142,12 @@ double render_ceiling_radiance(const render_scene *s, const render_grid *g, doub
         }
         if (fabs(dx) > reach * 1.5 || fabs(dy) > reach * 1.5)
             continue;
-        c = cos(o->rot);
-        sn = sin(o->rot);
-        r = object_radiance(s, o, c * dx + sn * dy, -sn * dx + c * dy);
+        r = object_radiance(s, o, o->cr * dx + o->sr * dy, -o->sr * dx + o->cr * dy);
         if (r >= 0)
             v = r;
     }
-    return v + halo;
+    /* the tile only where no object covers it */
+    return (v >= 0 ? v : tile_radiance(s, X, Y)) + halo;
 }
 
 /* The grid cells an object's reach (1.5 times its size, a light's halo)

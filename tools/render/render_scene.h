@@ -30,6 +30,7 @@ typedef enum {
 typedef struct {
     render_obj_kind kind;
     double x, y, rot; /* centre in the map frame, rotation */
+    double cr, sr;    /* cos and sin of rot (render_scene_add) */
     double a, b;      /* radius, or half extents */
     int id;           /* landmark id */
 } render_object;
