@@ -68,11 +68,18 @@ static int arc_like(const rl_region *g, const rl_recog_config *cfg)
     return (bw > bh ? bw : bh) >= 1.4 * cfg->min_radius;
 }
 
-/* Two arcs side by side (neither box holds the other's centre) whose
- * union is shaped like a closed outer ring; the union into *u. */
-static int arcs_close(const rl_region *a, const rl_region *b, const rl_recog_config *cfg,
-                      rl_region *u)
+static int touches_border(const rl_region *g, int W, int H)
 {
+    return g->x0 == 0 || g->y0 == 0 || g->x1 == W - 1 || g->y1 == H - 1;
+}
+
+/* Two arcs side by side (neither box holds the other's centre) whose
+ * union is shaped like a closed outer ring, or, where one of them runs
+ * into the border (the other not), like a cut one; the union into *u. */
+static int arcs_close(const rl_region *a, const rl_region *b, const rl_recog_config *cfg, int W,
+                      int H, rl_region *u)
+{
+    int cut_a = touches_border(a, W, H), cut_b = touches_border(b, W, H);
     double ax = (a->x0 + a->x1) / 2.0, ay = (a->y0 + a->y1) / 2.0;
     double bx = (b->x0 + b->x1) / 2.0, by = (b->y0 + b->y1) / 2.0;
     if ((ax >= b->x0 && ax <= b->x1 && ay >= b->y0 && ay <= b->y1) ||
@@ -85,18 +92,20 @@ static int arcs_close(const rl_region *a, const rl_region *b, const rl_recog_con
     u->area = a->area + b->area;
     u->sx = a->sx + b->sx;
     u->sy = a->sy + b->sy;
-    return ring_shaped(u, cfg);
+    if (cut_a && cut_b)
+        return 0;
+    return cut_a || cut_b ? cut_candidate(u, cfg, W, H) : ring_shaped(u, cfg);
 }
 
 /* The closed rings of the arcs kept, as candidates after the n in cand. */
-static int close_arcs(const rl_region *arcs, int na, const rl_recog_config *cfg, rl_result *res,
-                      rl_clr *cand, int n, int cap)
+static int close_arcs(const rl_region *arcs, int na, const rl_recog_config *cfg, int W, int H,
+                      rl_result *res, rl_clr *cand, int n, int cap)
 {
     int i, j;
     for (i = 0; i < na; i++)
         for (j = i + 1; j < na; j++) {
             rl_region u;
-            if (!arcs_close(&arcs[i], &arcs[j], cfg, &u))
+            if (!arcs_close(&arcs[i], &arcs[j], cfg, W, H, &u))
                 continue;
             if (n == cap) {
                 res->dropped.candidates++;
@@ -118,7 +127,7 @@ int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, 
     int i, n = 0, na = 0, W = lb->width, H = lb->height;
     for (i = 0; i < lb->n_regions; i++) {
         const rl_region *g = &lb->reg[i];
-        int cut = g->x0 == 0 || g->y0 == 0 || g->x1 == W - 1 || g->y1 == H - 1, ring = 0;
+        int cut = touches_border(g, W, H), ring = 0;
         rl_box b;
         b.x0 = g->x0;
         b.y0 = g->y0;
@@ -126,7 +135,7 @@ int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, 
         b.y1 = g->y1;
         if (cut ? !cut_candidate(g, cfg, W, H)
                 : !(ring = ring_shaped(g, cfg)) && !broken_by_light(g, cfg, res, &b)) {
-            if (!cut && na < ARCS_MAX && arc_like(g, cfg))
+            if (na < ARCS_MAX && arc_like(g, cfg))
                 arcs[na++] = *g;
             continue;
         }
@@ -137,7 +146,7 @@ int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, 
         cand[n].box = b;
         cand[n++].shape = ring ? region_shape(lb, i) : rl_shape_circle();
     }
-    return close_arcs(arcs, na, cfg, res, cand, n, cap);
+    return close_arcs(arcs, na, cfg, W, H, res, cand, n, cap);
 }
 
 /* The larger side of a box. */

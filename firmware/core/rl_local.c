@@ -208,12 +208,6 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &cx, &cy, &r, &m);
     mrule = moving_cut_rule(&rule, &m, rl_geom_visible_in(W, H, cx, cy, r));
     taken = rl_accept(&mrule, &m, 255.0);
-    if (!taken && m.id >= 0 && m.score >= rule.min_score) {
-        /* read across the motion: the same id, and plain there */
-        rl_match ma;
-        rl_search_across_motion(&rec->templates, rec->polar, cx, cy, r, m.id, &ma);
-        taken = ma.id == m.id && rl_accept(&mrule, &ma, 255.0);
-    }
     if (!taken) {
         /* not as a circle: as the ellipse its edge may be */
         rl_ellipse e;
@@ -226,6 +220,13 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
             r = e.r;
             taken = 1;
         }
+    }
+    if (!taken && m.id >= 0 && m.score >= rule.min_score) {
+        /* read across the motion: the same id, and plain there (after
+         * the ellipse, whose centre is the better one where both read) */
+        rl_match ma;
+        rl_search_across_motion(&rec->templates, rec->polar, cx, cy, r, m.id, &ma);
+        taken = ma.id == m.id && rl_accept(&mrule, &ma, 255.0);
     }
     out->u = cx;
     out->v = cy;
