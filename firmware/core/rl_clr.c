@@ -68,6 +68,21 @@ static int arc_like(const rl_region *g, const rl_recog_config *cfg)
     return (bw > bh ? bw : bh) >= 1.4 * cfg->min_radius;
 }
 
+/* Of a ring broken in two halves, each is nearly as long as the ring. */
+#define HALF_SPAN 0.8
+#define HALF_WHOLE 1.25
+
+static int longer_side(const rl_region *g)
+{
+    int bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
+    return bw > bh ? bw : bh;
+}
+
+static double box_area(const rl_region *g)
+{
+    return (double)(g->x1 - g->x0 + 1) * (g->y1 - g->y0 + 1);
+}
+
 static int touches_border(const rl_region *g, int W, int H)
 {
     return g->x0 == 0 || g->y0 == 0 || g->x1 == W - 1 || g->y1 == H - 1;
@@ -82,8 +97,7 @@ static int arcs_close(const rl_region *a, const rl_region *b, const rl_recog_con
     int cut_a = touches_border(a, W, H), cut_b = touches_border(b, W, H);
     double ax = (a->x0 + a->x1) / 2.0, ay = (a->y0 + a->y1) / 2.0;
     double bx = (b->x0 + b->x1) / 2.0, by = (b->y0 + b->y1) / 2.0;
-    if ((ax >= b->x0 && ax <= b->x1 && ay >= b->y0 && ay <= b->y1) ||
-        (bx >= a->x0 && bx <= a->x1 && by >= a->y0 && by <= a->y1))
+    if (cut_a && cut_b)
         return 0;
     u->x0 = a->x0 < b->x0 ? a->x0 : b->x0;
     u->y0 = a->y0 < b->y0 ? a->y0 : b->y0;
@@ -92,9 +106,15 @@ static int arcs_close(const rl_region *a, const rl_region *b, const rl_recog_con
     u->area = a->area + b->area;
     u->sx = a->sx + b->sx;
     u->sy = a->sy + b->sy;
-    if (cut_a && cut_b)
-        return 0;
-    return cut_a || cut_b ? cut_candidate(u, cfg, W, H) : ring_shaped(u, cfg);
+    if (!cut_a && !cut_b)
+        return !((ax >= b->x0 && ax <= b->x1 && ay >= b->y0 && ay <= b->y1) ||
+                 (bx >= a->x0 && bx <= a->x1 && by >= a->y0 && by <= a->y1)) &&
+               ring_shaped(u, cfg);
+    /* with a cut one: two halves of one ring, each nearly as long as the
+     * ring is wide and each well short of the whole */
+    return longer_side(a) >= HALF_SPAN * longer_side(u) && longer_side(b) >= HALF_SPAN * longer_side(u) &&
+           box_area(u) >= HALF_WHOLE * box_area(a) && box_area(u) >= HALF_WHOLE * box_area(b) &&
+           cut_candidate(u, cfg, W, H);
 }
 
 /* The closed rings of the arcs kept, as candidates after the n in cand. */
@@ -127,18 +147,18 @@ int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, 
     int i, n = 0, na = 0, W = lb->width, H = lb->height;
     for (i = 0; i < lb->n_regions; i++) {
         const rl_region *g = &lb->reg[i];
-        int cut = touches_border(g, W, H), ring = 0;
+        int cut = touches_border(g, W, H), ring = !cut && ring_shaped(g, cfg);
         rl_box b;
         b.x0 = g->x0;
         b.y0 = g->y0;
         b.x1 = g->x1;
         b.y1 = g->y1;
-        if (cut ? !cut_candidate(g, cfg, W, H)
-                : !(ring = ring_shaped(g, cfg)) && !broken_by_light(g, cfg, res, &b)) {
-            if (na < ARCS_MAX && arc_like(g, cfg))
-                arcs[na++] = *g;
+        /* any region but a closed ring may be half of a broken one (a
+         * cut candidate too: the half the border does not cut is apart) */
+        if (!ring && na < ARCS_MAX && arc_like(g, cfg))
+            arcs[na++] = *g;
+        if (cut ? !cut_candidate(g, cfg, W, H) : !ring && !broken_by_light(g, cfg, res, &b))
             continue;
-        }
         if (n == cap) {
             res->dropped.candidates++;
             continue;
@@ -184,8 +204,15 @@ int rl_clr_geometry(const rl_box *b, int W, int H, rl_detection *d)
     d->complete = !(cut_l || cut_r || cut_t || cut_b);
     if (d->complete)
         return 1;
-    if ((cut_l || cut_r) && (cut_t || cut_b))
-        return 0;
+    if ((cut_l || cut_r) && (cut_t || cut_b)) {
+        /* a corner: the longer side is at most the diameter (the local
+         * pass fits the circle) */
+        d->radius = (bw > bh ? bw : bh) / 2.0;
+        d->u = cut_l ? b->x1 + 0.5 - d->radius : b->x0 - 0.5 + d->radius;
+        d->v = cut_t ? b->y1 + 0.5 - d->radius : b->y0 - 0.5 + d->radius;
+        d->visible = rl_geom_visible_in(W, H, d->u, d->v, d->radius);
+        return 1;
+    }
     if (cut_l || cut_r) {
         d->radius = bh / 2.0;
         d->u = cut_l ? b->x1 + 0.5 - d->radius : b->x0 - 0.5 + d->radius;

@@ -188,6 +188,21 @@ static rl_accept_rule moving_cut_rule(const rl_accept_rule *rule, const rl_match
     return r;
 }
 
+/* A cut landmark's fitted radius this far under the frame's is retried at
+ * the frame's (cut_outwards). */
+#define CUT_SHRUNK 0.9
+
+/* (x, y) moved by d towards the nearest border. */
+static void cut_outwards(int W, int H, double d, double *x, double *y)
+{
+    double l = *x, rgt = W - 1 - *x, t = *y, b = H - 1 - *y;
+    double mx = l < rgt ? l : rgt, my = t < b ? t : b;
+    if (mx < my)
+        *x += l < rgt ? -d : d;
+    else
+        *y += t < b ? -d : d;
+}
+
 /* Retry one DUCLR u of expected radius R; 1 if identified (into *out). */
 static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *res,
                            const rl_detection *u, double R, rl_detection *out)
@@ -218,6 +233,22 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
             cx = e.cx;
             cy = e.cy;
             r = e.r;
+            taken = 1;
+        }
+    }
+    if (!taken && rl_geom_visible_in(W, H, cx, cy, r) < 1.0 && r < CUT_SHRUNK * R) {
+        /* a cut landmark whose edge fit came out small (a circle through
+         * what is left of a broken ring sits inside the frame): the frame's
+         * size, its centre moved out towards the border by the difference */
+        double ux = cx, uy = cy, ur = R;
+        rl_match mu;
+        cut_outwards(W, H, R - r, &ux, &uy);
+        rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &ux, &uy, &ur, &mu);
+        if (rl_accept(&mrule, &mu, 255.0)) {
+            m = mu;
+            cx = ux;
+            cy = uy;
+            r = ur;
             taken = 1;
         }
     }
