@@ -12,8 +12,8 @@
 #define CENTROID_MAX 0.2 /* centroid to box centre, in radii */
 
 /* A region touching the border: its uncut extent is the diameter, and at
- * most half may be missing. A corner cut is kept too, though it is never
- * identified: the rings inside it must not pass for landmarks. */
+ * most half may be missing. A corner cut is kept too: the rings inside it
+ * must not pass for landmarks, and the local pass reads it. */
 static int cut_candidate(const rl_region *g, const rl_recog_config *cfg, int W, int H)
 {
     int bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
@@ -95,8 +95,6 @@ static int arcs_close(const rl_region *a, const rl_region *b, const rl_recog_con
                       int H, rl_region *u)
 {
     int cut_a = touches_border(a, W, H), cut_b = touches_border(b, W, H);
-    double ax = (a->x0 + a->x1) / 2.0, ay = (a->y0 + a->y1) / 2.0;
-    double bx = (b->x0 + b->x1) / 2.0, by = (b->y0 + b->y1) / 2.0;
     if (cut_a && cut_b)
         return 0;
     u->x0 = a->x0 < b->x0 ? a->x0 : b->x0;
@@ -107,8 +105,7 @@ static int arcs_close(const rl_region *a, const rl_region *b, const rl_recog_con
     u->sx = a->sx + b->sx;
     u->sy = a->sy + b->sy;
     if (!cut_a && !cut_b)
-        return !((ax >= b->x0 && ax <= b->x1 && ay >= b->y0 && ay <= b->y1) ||
-                 (bx >= a->x0 && bx <= a->x1 && by >= a->y0 && by <= a->y1)) &&
+        return box_area(u) >= HALF_WHOLE * box_area(a) && box_area(u) >= HALF_WHOLE * box_area(b) &&
                ring_shaped(u, cfg);
     /* with a cut one: two halves of one ring, each nearly as long as the
      * ring is wide and each well short of the whole */

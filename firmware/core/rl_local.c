@@ -188,6 +188,42 @@ static rl_accept_rule moving_cut_rule(const rl_accept_rule *rule, const rl_match
     return r;
 }
 
+/* How far out an axis must lie in the frame, in radii (the quiet zone). */
+#define AXIS_REACH 1.1
+
+/* The polar axes (rl_polar_profile_axis) of the landmark at (cx, cy, r)
+ * whose two octants lie wholly in the W x H frame out to its quiet zone,
+ * as a mask (bit a: axis a). */
+static unsigned axes_in_frame(const rl_polar *pol, int W, int H, double cx, double cy, double r)
+{
+    unsigned mask = 0;
+    int a, k, e;
+    for (a = 0; a < RL_POLAR_AXES; a++) {
+        int whole = 1;
+        for (k = 0; k < 2; k++) {
+            int sct = a + k * RL_POLAR_AXES; /* an octant and its opposite */
+            double t = atan2(pol->uy[sct], pol->ux[sct]);
+            for (e = -1; e <= 1; e++) {
+                double x = cx + AXIS_REACH * r * cos(t + e * M_PI / 8);
+                double y = cy + AXIS_REACH * r * sin(t + e * M_PI / 8);
+                whole &= x >= 0 && y >= 0 && x <= W - 1 && y <= H - 1;
+            }
+        }
+        mask |= (unsigned)whole << a;
+    }
+    return mask;
+}
+
+/* A match taken by the local pass: the rule, with the larger lead of a
+ * moving template where the landmark at (cx, cy, r) is cut, as that
+ * match's own template is. */
+static int local_accept(const rl_accept_rule *rule, const rl_match *m, int W, int H, double cx, double cy,
+                        double r)
+{
+    rl_accept_rule mr = moving_cut_rule(rule, m, rl_geom_visible_in(W, H, cx, cy, r));
+    return rl_accept(&mr, m, 255.0);
+}
+
 /* A cut landmark's fitted radius this far under the frame's is retried at
  * the frame's (cut_outwards). */
 #define CUT_SHRUNK 0.9
@@ -207,7 +243,7 @@ static void cut_outwards(int W, int H, double d, double *x, double *y)
 static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *res,
                            const rl_detection *u, double R, rl_detection *out)
 {
-    rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL), mrule;
+    rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL);
     int W = rec->width, H = rec->height, light = res->levels.light;
     double cx, cy, r;
     rl_match m;
@@ -221,8 +257,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     if (rl_geom_visible_in(W, H, cx, cy, r) < 0.5) /* more than half missing: not tried */
         return 0;
     rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &cx, &cy, &r, &m);
-    mrule = moving_cut_rule(&rule, &m, rl_geom_visible_in(W, H, cx, cy, r));
-    taken = rl_accept(&mrule, &m, 255.0);
+    taken = local_accept(&rule, &m, W, H, cx, cy, r);
     if (!taken) {
         /* not as a circle: as the ellipse its edge may be */
         rl_ellipse e;
@@ -244,7 +279,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
         rl_match mu;
         cut_outwards(W, H, R - r, &ux, &uy);
         rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &ux, &uy, &ur, &mu);
-        if (rl_accept(&mrule, &mu, 255.0)) {
+        if (local_accept(&rule, &mu, W, H, ux, uy, ur)) {
             m = mu;
             cx = ux;
             cy = uy;
@@ -254,10 +289,13 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     }
     if (!taken && m.id >= 0 && m.score >= rule.min_score) {
         /* read across the motion: the same id, and plain there (after
-         * the ellipse, whose centre is the better one where both read) */
+         * the ellipse, whose centre is the better one where both read);
+         * on the axes wholly in the frame (the half of one the border
+         * cuts reads a zone twin as well) */
         rl_match ma;
-        rl_search_across_motion(&rec->templates, rec->polar, cx, cy, r, m.id, &ma);
-        taken = ma.id == m.id && rl_accept(&mrule, &ma, 255.0);
+        rl_search_across_motion(&rec->templates, rec->polar, cx, cy, r, m.id,
+                                axes_in_frame(rec->polar, W, H, cx, cy, r), &ma);
+        taken = ma.id == m.id && local_accept(&rule, &ma, W, H, cx, cy, r);
     }
     out->u = cx;
     out->v = cy;

@@ -108,7 +108,7 @@ static double lead_of(const rl_match *m)
 }
 
 void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double cx, double cy,
-                             double r, int id, rl_match *m)
+                             double r, int id, unsigned axes, rl_match *m)
 {
     double x = cx - pol->cx, y = cy - pol->cy, s = r / pol->r;
     int a;
@@ -117,6 +117,8 @@ void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double
     for (a = 0; a < RL_POLAR_AXES; a++) {
         rl_profile p;
         rl_match ma;
+        if (!(axes >> a & 1u))
+            continue;
         rl_polar_profile_axis(pol, x, y, s, a, &p);
         rl_match_all(tt, &p, &ma);
         if (ma.id != id || ma.blur == RL_BLUR_LEVELS - 1)
