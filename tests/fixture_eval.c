@@ -151,6 +151,9 @@ void eval_frame(const truth *t, const rl_result *res, eval_counts *c, int verbos
         } else if (l->visible >= 0.5) {
             c->border++;
             c->border_ident += ident;
+            if (verbose && !ident)
+                fprintf(stderr, "  %s: cut landmark %d at (%.1f, %.1f), %.0f%% visible, %s\n", t->image, l->id,
+                        l->u, l->v, 100 * l->visible, found ? "found, not identified" : "missed");
         }
     }
 }

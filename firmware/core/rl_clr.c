@@ -6,14 +6,14 @@
 /* Shape limits of an outer ring's region (with whatever code rings merged
  * into it). The outer ring alone fills 0.28 of its bounding box, a nearly
  * black landmark 0.75; blur and thresholding move both a little. */
-#define FILL_MIN 0.15
+#define FILL_MIN 0.08
 #define FILL_MAX 0.85
 #define ASPECT_MAX 1.4   /* bounding box width/height (lens distortion) */
 #define CENTROID_MAX 0.2 /* centroid to box centre, in radii */
 
 /* A region touching the border: its uncut extent is the diameter, and at
- * most half may be missing. A corner cut is kept too, though it is never
- * identified: the rings inside it must not pass for landmarks. */
+ * most half may be missing. A corner cut is kept too: the rings inside it
+ * must not pass for landmarks, and the local pass reads it. */
 static int cut_candidate(const rl_region *g, const rl_recog_config *cfg, int W, int H)
 {
     int bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
@@ -55,20 +55,106 @@ static rl_shape region_shape(const rl_label *lb, int i)
     return rl_shape_from_moments(cxx, cxy, cyy);
 }
 
+/* Motion breaks an outer ring: along the motion its thin arcs smear
+ * lighter than the threshold, and what is left are two arcs facing each
+ * other across the code. Arcs (regions of at least a minimum radius
+ * along their longer side, not ring-shaped themselves) are kept here,
+ * at most ARCS_MAX of them, to be paired. */
+#define ARCS_MAX 48
+
+static int arc_like(const rl_region *g, const rl_recog_config *cfg)
+{
+    int bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
+    return (bw > bh ? bw : bh) >= 1.4 * cfg->min_radius;
+}
+
+/* Of a ring broken in two halves, each is nearly as long as the ring. */
+#define HALF_SPAN 0.8
+#define HALF_WHOLE 1.25
+
+static int longer_side(const rl_region *g)
+{
+    int bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
+    return bw > bh ? bw : bh;
+}
+
+static double box_area(const rl_region *g)
+{
+    return (double)(g->x1 - g->x0 + 1) * (g->y1 - g->y0 + 1);
+}
+
+static int touches_border(const rl_region *g, int W, int H)
+{
+    return g->x0 == 0 || g->y0 == 0 || g->x1 == W - 1 || g->y1 == H - 1;
+}
+
+/* Two arcs side by side (neither box holds the other's centre) whose
+ * union is shaped like a closed outer ring, or, where one of them runs
+ * into the border (the other not), like a cut one; the union into *u. */
+static int arcs_close(const rl_region *a, const rl_region *b, const rl_recog_config *cfg, int W,
+                      int H, rl_region *u)
+{
+    int cut_a = touches_border(a, W, H), cut_b = touches_border(b, W, H);
+    if (cut_a && cut_b)
+        return 0;
+    u->x0 = a->x0 < b->x0 ? a->x0 : b->x0;
+    u->y0 = a->y0 < b->y0 ? a->y0 : b->y0;
+    u->x1 = a->x1 > b->x1 ? a->x1 : b->x1;
+    u->y1 = a->y1 > b->y1 ? a->y1 : b->y1;
+    u->area = a->area + b->area;
+    u->sx = a->sx + b->sx;
+    u->sy = a->sy + b->sy;
+    if (!cut_a && !cut_b)
+        return box_area(u) >= HALF_WHOLE * box_area(a) && box_area(u) >= HALF_WHOLE * box_area(b) &&
+               ring_shaped(u, cfg);
+    /* with a cut one: two halves of one ring, each nearly as long as the
+     * ring is wide and each well short of the whole */
+    return longer_side(a) >= HALF_SPAN * longer_side(u) && longer_side(b) >= HALF_SPAN * longer_side(u) &&
+           box_area(u) >= HALF_WHOLE * box_area(a) && box_area(u) >= HALF_WHOLE * box_area(b) &&
+           cut_candidate(u, cfg, W, H);
+}
+
+/* The closed rings of the arcs kept, as candidates after the n in cand. */
+static int close_arcs(const rl_region *arcs, int na, const rl_recog_config *cfg, int W, int H,
+                      rl_result *res, rl_clr *cand, int n, int cap)
+{
+    int i, j;
+    for (i = 0; i < na; i++)
+        for (j = i + 1; j < na; j++) {
+            rl_region u;
+            if (!arcs_close(&arcs[i], &arcs[j], cfg, W, H, &u))
+                continue;
+            if (n == cap) {
+                res->dropped.candidates++;
+                continue;
+            }
+            cand[n].box.x0 = u.x0;
+            cand[n].box.y0 = u.y0;
+            cand[n].box.x1 = u.x1;
+            cand[n].box.y1 = u.y1;
+            cand[n++].shape = rl_shape_circle();
+        }
+    return n;
+}
+
 int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, rl_clr *cand,
                 int cap)
 {
-    int i, n = 0, W = lb->width, H = lb->height;
+    rl_region arcs[ARCS_MAX];
+    int i, n = 0, na = 0, W = lb->width, H = lb->height;
     for (i = 0; i < lb->n_regions; i++) {
         const rl_region *g = &lb->reg[i];
-        int cut = g->x0 == 0 || g->y0 == 0 || g->x1 == W - 1 || g->y1 == H - 1, ring = 0;
+        int cut = touches_border(g, W, H), ring = !cut && ring_shaped(g, cfg);
         rl_box b;
         b.x0 = g->x0;
         b.y0 = g->y0;
         b.x1 = g->x1;
         b.y1 = g->y1;
-        if (cut ? !cut_candidate(g, cfg, W, H)
-                : !(ring = ring_shaped(g, cfg)) && !broken_by_light(g, cfg, res, &b))
+        /* any region but a closed ring may be half of a broken one (a
+         * cut candidate too: the half the border does not cut is apart) */
+        if (!ring && na < ARCS_MAX && arc_like(g, cfg))
+            arcs[na++] = *g;
+        if (cut ? !cut_candidate(g, cfg, W, H) : !ring && !broken_by_light(g, cfg, res, &b))
             continue;
         if (n == cap) {
             res->dropped.candidates++;
@@ -77,7 +163,7 @@ int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, 
         cand[n].box = b;
         cand[n++].shape = ring ? region_shape(lb, i) : rl_shape_circle();
     }
-    return n;
+    return close_arcs(arcs, na, cfg, W, H, res, cand, n, cap);
 }
 
 /* The larger side of a box. */
@@ -115,8 +201,15 @@ int rl_clr_geometry(const rl_box *b, int W, int H, rl_detection *d)
     d->complete = !(cut_l || cut_r || cut_t || cut_b);
     if (d->complete)
         return 1;
-    if ((cut_l || cut_r) && (cut_t || cut_b))
-        return 0;
+    if ((cut_l || cut_r) && (cut_t || cut_b)) {
+        /* a corner: the longer side is at most the diameter (the local
+         * pass fits the circle) */
+        d->radius = (bw > bh ? bw : bh) / 2.0;
+        d->u = cut_l ? b->x1 + 0.5 - d->radius : b->x0 - 0.5 + d->radius;
+        d->v = cut_t ? b->y1 + 0.5 - d->radius : b->y0 - 0.5 + d->radius;
+        d->visible = rl_geom_visible_in(W, H, d->u, d->v, d->radius);
+        return 1;
+    }
     if (cut_l || cut_r) {
         d->radius = bh / 2.0;
         d->u = cut_l ? b->x1 + 0.5 - d->radius : b->x0 - 0.5 + d->radius;

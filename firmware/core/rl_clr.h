@@ -44,7 +44,9 @@ int rl_clr_is_inner(const rl_clr *cand, int n, int i);
 /* Centre, radius and visible fraction of a CLR from its box into d: an
  * uncut box is the disk's; a box cut by one image side keeps the true
  * diameter across the cut, and the centre lies one radius in from the far
- * side. 0 for corner cuts (two sides), which are not identified. */
+ * side; a corner cut (two sides) takes its longer side for the diameter,
+ * the centre one radius in from both far sides (the local pass fits the
+ * circle). Returns 1. */
 int rl_clr_geometry(const rl_box *b, int W, int H, rl_detection *d);
 
 #endif

@@ -188,11 +188,62 @@ static rl_accept_rule moving_cut_rule(const rl_accept_rule *rule, const rl_match
     return r;
 }
 
+/* How far out an axis must lie in the frame, in radii (the quiet zone). */
+#define AXIS_REACH 1.1
+
+/* The polar axes (rl_polar_profile_axis) of the landmark at (cx, cy, r)
+ * whose two octants lie wholly in the W x H frame out to its quiet zone,
+ * as a mask (bit a: axis a). */
+static unsigned axes_in_frame(const rl_polar *pol, int W, int H, double cx, double cy, double r)
+{
+    unsigned mask = 0;
+    int a, k, e;
+    for (a = 0; a < RL_POLAR_AXES; a++) {
+        int whole = 1;
+        for (k = 0; k < 2; k++) {
+            int sct = a + k * RL_POLAR_AXES; /* an octant and its opposite */
+            double t = atan2(pol->uy[sct], pol->ux[sct]);
+            for (e = -1; e <= 1; e++) {
+                double x = cx + AXIS_REACH * r * cos(t + e * M_PI / 8);
+                double y = cy + AXIS_REACH * r * sin(t + e * M_PI / 8);
+                whole &= x >= 0 && y >= 0 && x <= W - 1 && y <= H - 1;
+            }
+        }
+        mask |= (unsigned)whole << a;
+    }
+    return mask;
+}
+
+/* A match taken by the local pass: the rule, with the larger lead of a
+ * moving template where the landmark at (cx, cy, r) is cut, as that
+ * match's own template is. */
+static int local_accept(const rl_accept_rule *rule, const rl_match *m, int W, int H, double cx, double cy,
+                        double r)
+{
+    rl_accept_rule mr = moving_cut_rule(rule, m, rl_geom_visible_in(W, H, cx, cy, r));
+    return rl_accept(&mr, m, 255.0);
+}
+
+/* A cut landmark's fitted radius this far under the frame's is retried at
+ * the frame's (cut_outwards). */
+#define CUT_SHRUNK 0.9
+
+/* (x, y) moved by d towards the nearest border. */
+static void cut_outwards(int W, int H, double d, double *x, double *y)
+{
+    double l = *x, rgt = W - 1 - *x, t = *y, b = H - 1 - *y;
+    double mx = l < rgt ? l : rgt, my = t < b ? t : b;
+    if (mx < my)
+        *x += l < rgt ? -d : d;
+    else
+        *y += t < b ? -d : d;
+}
+
 /* Retry one DUCLR u of expected radius R; 1 if identified (into *out). */
 static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *res,
                            const rl_detection *u, double R, rl_detection *out)
 {
-    rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL), mrule;
+    rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL);
     int W = rec->width, H = rec->height, light = res->levels.light;
     double cx, cy, r;
     rl_match m;
@@ -206,8 +257,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     if (rl_geom_visible_in(W, H, cx, cy, r) < 0.5) /* more than half missing: not tried */
         return 0;
     rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &cx, &cy, &r, &m);
-    mrule = moving_cut_rule(&rule, &m, rl_geom_visible_in(W, H, cx, cy, r));
-    taken = rl_accept(&mrule, &m, 255.0);
+    taken = local_accept(&rule, &m, W, H, cx, cy, r);
     if (!taken) {
         /* not as a circle: as the ellipse its edge may be */
         rl_ellipse e;
@@ -220,6 +270,32 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
             r = e.r;
             taken = 1;
         }
+    }
+    if (!taken && rl_geom_visible_in(W, H, cx, cy, r) < 1.0 && r < CUT_SHRUNK * R) {
+        /* a cut landmark whose edge fit came out small (a circle through
+         * what is left of a broken ring sits inside the frame): the frame's
+         * size, its centre moved out towards the border by the difference */
+        double ux = cx, uy = cy, ur = R;
+        rl_match mu;
+        cut_outwards(W, H, R - r, &ux, &uy);
+        rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &ux, &uy, &ur, &mu);
+        if (local_accept(&rule, &mu, W, H, ux, uy, ur)) {
+            m = mu;
+            cx = ux;
+            cy = uy;
+            r = ur;
+            taken = 1;
+        }
+    }
+    if (!taken && m.id >= 0 && m.score >= rule.min_score) {
+        /* read across the motion: the same id, and plain there (after
+         * the ellipse, whose centre is the better one where both read);
+         * on the axes wholly in the frame (the half of one the border
+         * cuts reads a zone twin as well) */
+        rl_match ma;
+        rl_search_across_motion(&rec->templates, rec->polar, cx, cy, r, m.id,
+                                axes_in_frame(rec->polar, W, H, cx, cy, r), &ma);
+        taken = ma.id == m.id && local_accept(&rule, &ma, W, H, cx, cy, r);
     }
     out->u = cx;
     out->v = cy;

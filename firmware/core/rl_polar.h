@@ -72,4 +72,13 @@ void rl_polar_gather(const rl_image *img, const rl_tone *tone, double cx, double
 void rl_polar_profile(const rl_polar *pol, double dx, double dy, double scale,
                             rl_profile *p);
 
+/* The axes a profile can be read along: an octant and its opposite. */
+#define RL_POLAR_AXES (RL_SECTORS / 4)
+
+/* As rl_polar_profile, from the two opposite octants of one axis (0 ..
+ * RL_POLAR_AXES - 1) alone: the directions across a motion, where it
+ * smears the rings least. */
+void rl_polar_profile_axis(const rl_polar *pol, double dx, double dy, double scale, int axis,
+                           rl_profile *p);
+
 #endif

@@ -38,4 +38,14 @@ void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *i
                         const rl_tone *tone, int light, double *cx, double *cy, double *r,
                         rl_match *m);
 
+/* The match of the candidate pol holds, at (cx, cy, r) after
+ * rl_search_identify, read along one axis at a time: across a motion the
+ * rings are sharp and the code plain where the full circle averages it
+ * with the smeared directions. Of the axes in the mask `axes` (bit a:
+ * axis a) whose best id is `id`, the one where it leads its runner-up
+ * (the winner's zone twins on that axis included) most, into *m; m->id < 0
+ * when no such axis reads `id`. */
+void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double cx, double cy,
+                             double r, int id, unsigned axes, rl_match *m);
+
 #endif
