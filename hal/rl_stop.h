@@ -7,9 +7,8 @@
  *
  *   rl_stop_on_signals(RL_STOP_HUP | RL_STOP_NO_SIGPIPE);
  *   while (!rl_stop_requested())
- *       step();
- *   if (output_broken)
- *       rl_stop_request();          // the same stop, from the program
+ *       use(n);                     // a step of the loop
+ *   rl_stop_request();              // the same stop, from the program (its output gone)
  */
 #ifndef RL_STOP_H
 #define RL_STOP_H
