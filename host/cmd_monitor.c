@@ -37,7 +37,6 @@ static const char *monitor_help =
     "               ends when the writer closes it\n"
     "  --follow     keep reading a file as it grows\n";
 
-
 /* The fields a well-formed frame cannot hold (a yaw beyond pi, a flag or
  * status reason ringloc does not send, a tilt beyond 90 degrees), as the
  * JSON list ", \"out_of_range\": [...]" (empty when all are in range). */

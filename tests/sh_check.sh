@@ -6,15 +6,17 @@ fail=0
 ok() { pass=$((pass + 1)); }
 bad() { echo "FAIL: $*"; fail=$((fail + 1)); }
 
-# expect RC PATTERN -- COMMAND...: exit code RC, PATTERN (an extended
-# regular expression) on stderr or stdout, and for an error (RC not 0)
-# exactly one line on stderr.
+# expect RC PATTERN -- COMMAND...: exit code RC; for an error (RC not 0)
+# exactly one line on stderr, matching PATTERN (an extended regular
+# expression); else PATTERN on stdout or stderr.
 expect() {
     want_rc=$1; pattern=$2; shift 3
     "$@" >"$T/out" 2>"$T/err"
     rc=$?
     lines=$(grep -c . "$T/err")
-    if [ "$rc" != "$want_rc" ] || ! grep -qE -- "$pattern" "$T/err" "$T/out" ||
+    if [ "$want_rc" = 0 ]; then seen() { grep -qE -- "$pattern" "$T/err" "$T/out"; }
+    else seen() { grep -qE -- "$pattern" "$T/err"; }; fi
+    if [ "$rc" != "$want_rc" ] || ! seen ||
         { [ "$want_rc" != 0 ] && [ "$lines" != 1 ]; }; then
         bad "$* -> rc $rc (want $want_rc), stderr: $(cat "$T/err")"
     else

@@ -12,9 +12,9 @@
 frame=$(ls "$D"/straight_*.png | head -1)
 cam=$D/camera.yaml map=$D/map.yaml robot=$D/robot.yaml
 n=0 desc=
-# expect RC PATTERN COMMAND...: the case ends with status RC and exactly
+# expect_case RC PATTERN COMMAND...: the case ends with status RC and exactly
 # one line on stderr containing PATTERN
-expect() {
+expect_case() {
     want=$1 pat=$2
     shift 2
     n=$((n + 1))
@@ -35,7 +35,7 @@ opt() {
     cmd=$1 o=$2 extra=$3
     shift 3
     for v in nan inf -inf 1e309 abc 1.5x "" 1e300 -1e300 $extra; do
-        expect 2 "$o" "$R" "$cmd" "--$o" "$v" "$@"
+        expect_case 2 "$o" "$R" "$cmd" "--$o" "$v" "$@"
     done
 }
 geom="--resolution 640x480 --hfov 70"
@@ -55,17 +55,17 @@ opt plan hamming "0 3 2.5 -2" $area
 opt plan min-view "0 2 101 2.5" $area
 opt plan seed "-1 2.5 1e10" $area
 for v in abc 0x10 10x0 nanxnan infx5 1e9x1 -5x5 10 "" 5x5x5x; do
-    expect 2 "--area" "$R" plan --area "$v" --pitch 0.61 $geom --distance 1.87 --ceiling-height 2.75
+    expect_case 2 "--area" "$R" plan --area "$v" --pitch 0.61 $geom --distance 1.87 --ceiling-height 2.75
 done
-expect 2 "--area needs --pitch" "$R" plan --area 6x5 $geom --distance 1.87 --ceiling-height 2.75
-expect 2 "--area needs --ceiling-height" "$R" plan --area 6x5 --pitch 0.61 $geom --distance 1.87
-expect 2 "give --area or --grid" "$R" plan $area --grid 6x5
-expect 2 "--family" "$R" plan $area --family ring9
-expect 2 "go with --area" "$R" plan $geom --distance 1.87 --landmarks 30 --hamming 2
-expect 2 "would overlap" "$R" plan --area 6x5 --pitch 0.1 $geom --distance 1.87 --ceiling-height 2.75
-expect 2 "more than a map holds" "$R" plan --area 600x600 --pitch 0.61 $geom --distance 1.87 --ceiling-height 2.75
-expect 2 "too few whole landmarks" "$R" plan --area 60x40 --pitch 2.5 $geom --distance 1.87 --ceiling-height 2.75
-expect 1 "/nonexistent/m.yaml" "$R" plan --area 6x5 --pitch 0.61 $geom --distance 1.87 --ceiling-height 2.75 \
+expect_case 2 "--area needs --pitch" "$R" plan --area 6x5 $geom --distance 1.87 --ceiling-height 2.75
+expect_case 2 "--area needs --ceiling-height" "$R" plan --area 6x5 --pitch 0.61 $geom --distance 1.87
+expect_case 2 "give --area or --grid" "$R" plan $area --grid 6x5
+expect_case 2 "--family" "$R" plan $area --family ring9
+expect_case 2 "go with --area" "$R" plan $geom --distance 1.87 --landmarks 30 --hamming 2
+expect_case 2 "would overlap" "$R" plan --area 6x5 --pitch 0.1 $geom --distance 1.87 --ceiling-height 2.75
+expect_case 2 "more than a map holds" "$R" plan --area 600x600 --pitch 0.61 $geom --distance 1.87 --ceiling-height 2.75
+expect_case 2 "too few whole landmarks" "$R" plan --area 60x40 --pitch 2.5 $geom --distance 1.87 --ceiling-height 2.75
+expect_case 1 "/nonexistent/m.yaml" "$R" plan --area 6x5 --pitch 0.61 $geom --distance 1.87 --ceiling-height 2.75 \
     --map-out /nonexistent/m.yaml
 opt site-check radius-px "0 -25 100000" --rounds 1 "$frame"
 opt site-check diameter "0 -0.21" --camera "$cam" --distance 1.87 --rounds 1 "$frame"
@@ -92,30 +92,30 @@ opt fuse baud "0 -9600 12345 2.5" --odometry "$T/none.txt" "$T/none.bin"
 
 # option values that are not numbers but are still wrong
 for v in 0x0 640x 640 x480 -640x480 640x-480 99999x480 640x480x3 abc 1e309x480; do
-    expect 2 "resolution" "$R" plan --resolution "$v" --hfov 70 --landmarks 30 --distance 1.87
+    expect_case 2 "resolution" "$R" plan --resolution "$v" --hfov 70 --landmarks 30 --distance 1.87
 done
 for v in 0x5 5x0 65536x65536 100000x100000 5 5x x5 axb -3x5; do
-    expect 2 "grid" "$R" plan $geom --distance 1.87 --ceiling-height 2.75 --grid "$v" --pitch 0.61
+    expect_case 2 "grid" "$R" plan $geom --distance 1.87 --ceiling-height 2.75 --grid "$v" --pitch 0.61
 done
 for v in nan,nan,nan inf,0,0 1,2 1,2,3,4 1,,3 a,b,c 1e309,0,0 1,2,3x ""; do
-    expect 2 "pose" "$R" calibrate-offsets --map "$map" --robot "$robot" --pose "$v" --out "$T/o.yaml" "$frame"
+    expect_case 2 "pose" "$R" calibrate-offsets --map "$map" --robot "$robot" --pose "$v" --out "$T/o.yaml" "$frame"
 done
 for v in 0 31 -1 abc 5,,6 5, ,5 1e3 2.5; do
-    expect 2 "id" "$R" gen --id "$v" --pdf "$T/g.pdf"
+    expect_case 2 "id" "$R" gen --id "$v" --pdf "$T/g.pdf"
 done
 for v in ring1 ring9 ring ring5x "" RING5; do
-    expect 2 "family" "$R" detect --family "$v" "$frame"
+    expect_case 2 "family" "$R" detect --family "$v" "$frame"
 done
 for v in sometimes "" ALWAYS 1; do
-    expect 2 "local" "$R" detect --local "$v" "$frame"
+    expect_case 2 "local" "$R" detect --local "$v" "$frame"
 done
 for v in a5 A4 "" b4; do
-    expect 2 "paper" "$R" gen --id 5 --paper "$v" --pdf "$T/g.pdf"
+    expect_case 2 "paper" "$R" gen --id 5 --paper "$v" --pdf "$T/g.pdf"
 done
-expect 2 "bogus" "$R" detect --bogus "$frame"
-expect 2 "bogus" "$R" bogus
-expect 2 "diameter" "$R" gen --id 5 --pdf "$T/g.pdf" --diameter
-expect 2 "fit" "$R" gen --id 5 --paper a4 --diameter 0.25 --pdf "$T/g.pdf"
+expect_case 2 "bogus" "$R" detect --bogus "$frame"
+expect_case 2 "bogus" "$R" bogus
+expect_case 2 "diameter" "$R" gen --id 5 --pdf "$T/g.pdf" --diameter
+expect_case 2 "fit" "$R" gen --id 5 --paper a4 --diameter 0.25 --pdf "$T/g.pdf"
 
 # --- files -----------------------------------------------------------------
 mkdir -p "$T/folder"
@@ -131,7 +131,7 @@ file() {
     cmd=$1 o=$2
     shift 2
     for f in "$T/absent.yaml" "$T/folder" "$T/empty.yaml" "$T/garbage.yaml" "$frame" "$T/fifo"; do
-        expect 1 "$(basename "$f")" "$R" "$cmd" "--$o" "$f" "$@"
+        expect_case 1 "$(basename "$f")" "$R" "$cmd" "--$o" "$f" "$@"
     done
 }
 file locate camera --map "$map" --robot "$robot" "$frame"
@@ -148,40 +148,40 @@ file survey map $sv "$frame"
 printf '0 0 0 0\n0.1 0.1 0 0\n' >"$T/odo.txt"
 file fuse odometry "$T/odo.txt"
 for f in "$T/absent.bin" "$T/folder" "$T/empty.yaml" "$T/garbage.yaml" "$frame" "$T/fifo"; do
-    expect 1 "$(basename "$f")" "$R" fuse --odometry "$T/odo.txt" "$f"
+    expect_case 1 "$(basename "$f")" "$R" fuse --odometry "$T/odo.txt" "$f"
 done
 for bad in '0 0 0' '0 0 0 0 0' '0 a 0 0' '0 nan 0 0' '0 1e309 0 0'; do
     printf '0.5 0 0 0\n%s\n' "$bad" >"$T/bad_odo.txt"
-    desc="$bad" expect 1 "bad_odo.txt:2" "$R" fuse --odometry "$T/bad_odo.txt" "$T/odo.txt"
+    desc="$bad" expect_case 1 "bad_odo.txt:2" "$R" fuse --odometry "$T/bad_odo.txt" "$T/odo.txt"
 done
 # odometry whose times jump (epoch seconds after relative ones): refused, never replayed for hours
 for last in 1700000000 1e300; do
     printf '0 0 0 0\n0.1 0.1 0 0\n%s 0.2 0 0\n' "$last" >"$T/jump_odo.txt"
-    desc="$last" expect 1 "more than a day: do they jump" "$R" fuse --odometry "$T/jump_odo.txt" "$T/odo.txt"
+    desc="$last" expect_case 1 "more than a day: do they jump" "$R" fuse --odometry "$T/jump_odo.txt" "$T/odo.txt"
 done
 desc=
-expect 2 "origin" "$R" survey $sv --origin 40 "$frame"
-expect 2 "same landmark" "$R" survey --camera "$cam" --robot "$robot" --origin 8 --axis 8 --out "$T/s.yaml" "$frame"
-expect 2 "not both" "$R" survey $sv --ceiling-height 2.75 --axis-distance 3 "$frame"
-expect 2 "required" "$R" survey --camera "$cam" "$frame"
+expect_case 2 "origin" "$R" survey $sv --origin 40 "$frame"
+expect_case 2 "same landmark" "$R" survey --camera "$cam" --robot "$robot" --origin 8 --axis 8 --out "$T/s.yaml" "$frame"
+expect_case 2 "not both" "$R" survey $sv --ceiling-height 2.75 --axis-distance 3 "$frame"
+expect_case 2 "required" "$R" survey --camera "$cam" "$frame"
 # detect's JSON lines as survey frames
 "$R" detect "$frame" >"$T/good.jsonl"
 for bad in 'not json' '[1, 2]' '{"image": "a.png"}' '{"landmarks": [{"id": 40, "u": 1, "v": 2, "radius": 20}]}' \
     '{"landmarks": [{"id": 5, "u": "x", "v": 2, "radius": 20}]}' '{"width": 320, "height": 240, "landmarks": []}' \
     '{"landmarks": [{"id": 5, "u": 1e309, "v": 2, "radius": 20}]}' '{"landmarks": [{"id": 5, "u": 1, "v": 2, "radius": -3}]}'; do
     { cat "$T/good.jsonl"; printf '%s\n' "$bad"; } >"$T/bad.jsonl"
-    desc="$bad" expect 1 "bad.jsonl:2" "$R" survey $sv "$T/bad.jsonl"
+    desc="$bad" expect_case 1 "bad.jsonl:2" "$R" survey $sv "$T/bad.jsonl"
 done
 desc=
 : >"$T/empty.jsonl"
-expect 1 "empty.jsonl" "$R" survey $sv "$T/empty.jsonl"
-expect 1 "folder" "$R" survey $sv "$T/folder"
-expect 1 "absent.png" "$R" survey $sv "$T/absent.png"
+expect_case 1 "empty.jsonl" "$R" survey $sv "$T/empty.jsonl"
+expect_case 1 "folder" "$R" survey $sv "$T/folder"
+expect_case 1 "absent.png" "$R" survey $sv "$T/absent.png"
 for f in "$T/absent.png" "$T/folder" "$T/empty.png" "$T/trunc.png" "$T/half.png" "$T/pnm.png" "$T/garbage.yaml" \
     "$T/fifo"; do
-    expect 1 "$(basename "$f")" "$R" detect "$f"
+    expect_case 1 "$(basename "$f")" "$R" detect "$f"
 done
-expect 1 "site-check" "$R" site-check --rounds 1 "$T/folder"
+expect_case 1 "site-check" "$R" site-check --rounds 1 "$T/folder"
 
 # --- keys of the YAML loaders ----------------------------------------------
 # key LOADER-OPTION FILE KEY-PATTERN SED: the file with SED applied, given
@@ -199,7 +199,7 @@ key() {
     map) set -- --camera "$cam" --map "$f" --robot "$robot" ;;
     robot) set -- --camera "$cam" --map "$map" --robot "$f" ;;
     esac
-    expect 1 "k$keyed.yaml:" "$R" locate "$@" "$frame"
+    expect_case 1 "k$keyed.yaml:" "$R" locate "$@" "$frame"
 }
 for v in nan .nan .inf -.inf 1e309 abc "[1]" "{a: 1}" "" 0 -0.21 100; do
     key map "$map" diameter "s/^diameter: .*/diameter: $v/"
@@ -228,7 +228,7 @@ for v in '!!str 0.88' '"0.88"' "'0.88'" 0x1.cp-1 0X1P0; do
     key robot "$robot" "z $v" "s/z: 0.8800/z: $v/"
 done
 sed "0,/{id: 1,/s//{id: 2147483648,/" "$map" >"$T/id31.yaml"
-expect 1 "landmarks[0].id: 2147483648 is out of range" "$R" detect --map "$T/id31.yaml" "$frame"
+expect_case 1 "landmarks[0].id: 2147483648 is out of range" "$R" detect --map "$T/id31.yaml" "$frame"
 key map "$map" "overlapping landmarks" "0,/{id: 8, x: 0.9150/s//{id: 8, x: 0.4050/"
 key map "$map" "doubled key" "0,/{id: 1, x: 0.3050/s//{id: 1, x: 0.3050, x: 1/"
 key map "$map" "no family" "/^family:/d"
@@ -299,7 +299,7 @@ rkey() { # SED [PATTERN]: run --config with the edited file; the error names
     f=$T/k$keyed.yaml desc=$1
     sed "$1" "$T/run.yaml" >"$f"
     cmp -s "$f" "$T/run.yaml" && { bad "case $((n + 1)): sed '$1' changed nothing"; n=$((n + 1)); return; }
-    expect 1 "${2:-k$keyed.yaml}" "$R" run --config "$f" --frames 3
+    expect_case 1 "${2:-k$keyed.yaml}" "$R" run --config "$f" --frames 3
 }
 for v in bogus "" 5 "[png]"; do rkey "s/backend: png/backend: $v/"; done
 for v in -640 abc 100000 nan 320; do rkey "s/width: 640/width: $v/"; rkey "s/height: 480/height: $v/"; done

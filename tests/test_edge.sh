@@ -65,5 +65,4 @@ rc=$?
 set -- $(judge "$T/run.txt")
 [ "$2" = 0 ] && [ "$3" = 0 ] && ok || bad "run: $1 right, $2 wrong, $3 without a place"
 
-echo "$pass passed, $fail failed"
-[ $fail = 0 ]
+sh_done

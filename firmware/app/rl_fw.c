@@ -1,5 +1,5 @@
 /* The firmware: frames in from the camera, pose frames out on the serial
- * line, until SIGINT or SIGTERM (or the end of a PNG sequence). */
+ * line, until SIGINT, SIGTERM or SIGHUP (or the end of a PNG sequence). */
 #include <getopt.h>
 #include <stdio.h>
 #include <string.h>

@@ -108,8 +108,9 @@ typedef struct {
     rl_clock clock;             /* rl_clock_system(), or a test's */
     void (*log)(void *ctx, const char *line); /* one line, no newline; NULL: none */
     void *log_ctx;
-    /* every report, whether the sink took it or not (the web view:
-     * rl_run_view.h); lent for the call; NULL: none */
+    /* every report, whether the sink took it or not (the firmware's
+     * recorder and web view, rl_run_view.h); lent for the call; NULL:
+     * none */
     void (*observe)(void *ctx, const rl_run_report *rep);
     void *observe_ctx;
 } rl_run_io;

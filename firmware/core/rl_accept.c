@@ -13,6 +13,12 @@ rl_accept_rule rl_accept_rule_of(const rl_recog_config *cfg, rl_pass pass)
     return r;
 }
 
+double rl_accept_lead(const rl_match *m)
+{
+    double d = 1.0 - m->score * m->score;
+    return d > 0 ? (1.0 - m->second * m->second) / d : 1e9;
+}
+
 int rl_accept(const rl_accept_rule *rule, const rl_match *m, double span)
 {
     return m->id >= 0 && m->score >= rule->min_score &&

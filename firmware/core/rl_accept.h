@@ -46,6 +46,11 @@ rl_accept_rule rl_accept_rule_of(const rl_recog_config *cfg, rl_pass pass);
  * pass, 255 on sector-normalized levels in the local pass). */
 int rl_accept(const rl_accept_rule *rule, const rl_match *m, double span);
 
+/* How far m's winner leads its runner-up: the runner-up's residual over
+ * the winner's, (1 - second^2) / (1 - score^2), as rl_accept compares it
+ * with min_lead (huge for a perfect score). */
+double rl_accept_lead(const rl_match *m);
+
 /* The frame's foreground and background levels as the light falls at
  * (u, v) (rl_illum's scale there). */
 void rl_accept_levels_at(const rl_illum *il, const rl_levels *frame, double u, double v,

@@ -5,7 +5,8 @@
 
 /* Shape limits of an outer ring's region (with whatever code rings merged
  * into it). The outer ring alone fills 0.28 of its bounding box, a nearly
- * black landmark 0.75; blur and thresholding move both a little. */
+ * black landmark 0.75; blur and thresholding move both a little, and a
+ * motion thins the ring's arcs along it down to 0.11-0.14. */
 #define FILL_MIN 0.08
 #define FILL_MAX 0.85
 #define ASPECT_MAX 1.4   /* bounding box width/height (lens distortion) */
@@ -58,17 +59,14 @@ static rl_shape region_shape(const rl_label *lb, int i)
 /* Motion breaks an outer ring: along the motion its thin arcs smear
  * lighter than the threshold, and what is left are two arcs facing each
  * other across the code. Arcs (regions of at least a minimum radius
- * along their longer side, not ring-shaped themselves) are kept here,
- * at most ARCS_MAX of them, to be paired. */
+ * along their longer side, not ring-shaped themselves; a cut candidate
+ * too) are kept here, at most ARCS_MAX of them (the first in label
+ * order), to be paired. */
 #define ARCS_MAX 48
 
-static int arc_like(const rl_region *g, const rl_recog_config *cfg)
-{
-    int bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
-    return (bw > bh ? bw : bh) >= 1.4 * cfg->min_radius;
-}
-
-/* Of a ring broken in two halves, each is nearly as long as the ring. */
+/* Two halves of one broken ring: each box well short of the whole
+ * (HALF_WHOLE of its area at most), and with a cut half each nearly as
+ * long as the ring is wide (HALF_SPAN). */
 #define HALF_SPAN 0.8
 #define HALF_WHOLE 1.25
 
@@ -76,6 +74,11 @@ static int longer_side(const rl_region *g)
 {
     int bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
     return bw > bh ? bw : bh;
+}
+
+static int arc_like(const rl_region *g, const rl_recog_config *cfg)
+{
+    return longer_side(g) >= 1.4 * cfg->min_radius;
 }
 
 static double box_area(const rl_region *g)
@@ -88,9 +91,10 @@ static int touches_border(const rl_region *g, int W, int H)
     return g->x0 == 0 || g->y0 == 0 || g->x1 == W - 1 || g->y1 == H - 1;
 }
 
-/* Two arcs side by side (neither box holds the other's centre) whose
- * union is shaped like a closed outer ring, or, where one of them runs
- * into the border (the other not), like a cut one; the union into *u. */
+/* Two arcs, halves of one ring (each box well short of their union's),
+ * whose union is shaped like a closed outer ring, or, where one of them
+ * runs into the border (the other not), like a cut one; the union into
+ * *u. */
 static int arcs_close(const rl_region *a, const rl_region *b, const rl_recog_config *cfg, int W,
                       int H, rl_region *u)
 {
@@ -189,7 +193,7 @@ int rl_clr_is_inner(const rl_clr *cand, int n, int i)
     return 0;
 }
 
-int rl_clr_geometry(const rl_box *b, int W, int H, rl_detection *d)
+void rl_clr_geometry(const rl_box *b, int W, int H, rl_detection *d)
 {
     int bw = b->x1 - b->x0 + 1, bh = b->y1 - b->y0 + 1;
     int cut_l = b->x0 == 0, cut_r = b->x1 == W - 1, cut_t = b->y0 == 0, cut_b = b->y1 == H - 1;
@@ -200,7 +204,7 @@ int rl_clr_geometry(const rl_box *b, int W, int H, rl_detection *d)
     d->visible = 1.0;
     d->complete = !(cut_l || cut_r || cut_t || cut_b);
     if (d->complete)
-        return 1;
+        return;
     if ((cut_l || cut_r) && (cut_t || cut_b)) {
         /* a corner: the longer side is at most the diameter (the local
          * pass fits the circle) */
@@ -208,7 +212,7 @@ int rl_clr_geometry(const rl_box *b, int W, int H, rl_detection *d)
         d->u = cut_l ? b->x1 + 0.5 - d->radius : b->x0 - 0.5 + d->radius;
         d->v = cut_t ? b->y1 + 0.5 - d->radius : b->y0 - 0.5 + d->radius;
         d->visible = rl_geom_visible_in(W, H, d->u, d->v, d->radius);
-        return 1;
+        return;
     }
     if (cut_l || cut_r) {
         d->radius = bh / 2.0;
@@ -219,5 +223,4 @@ int rl_clr_geometry(const rl_box *b, int W, int H, rl_detection *d)
         d->v = cut_t ? b->y1 + 0.5 - d->radius : b->y0 - 0.5 + d->radius;
         d->visible = rl_geom_disk_visible(d->radius, cut_t ? d->v + 0.5 : H - 0.5 - d->v);
     }
-    return 1;
 }

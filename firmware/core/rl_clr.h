@@ -6,14 +6,18 @@
  * ring's share of its bounding box, centroid near the box centre. A
  * region cut by the image border keeps its uncut extent as the diameter.
  * A region next to a light that fails the shape test is kept too, for the
- * local pass: glare may have washed part of an outer ring out. A CLR
- * whose box lies inside another's is an inner ring, not a landmark.
+ * local pass: glare may have washed part of an outer ring out; and two
+ * arcs of a ring a motion broke are paired into one (one of them may run
+ * into the border). A CLR whose box lies inside another's is an inner
+ * ring, not a landmark.
  *
  *   static rl_clr cand[RL_MAX_CANDIDATES];
  *   n = rl_clr_find(&lb, &cfg, &res, cand, RL_MAX_CANDIDATES);
  *   for (i = 0; i < n; i++)
- *       if (!rl_clr_is_inner(cand, n, i) && rl_clr_geometry(&cand[i].box, W, H, &d))
+ *       if (!rl_clr_is_inner(cand, n, i)) {
+ *           rl_clr_geometry(&cand[i].box, W, H, &d);
  *           use(d.u, d.v, d.radius);
+ *       }
  */
 #ifndef RL_CLR_H
 #define RL_CLR_H
@@ -46,7 +50,7 @@ int rl_clr_is_inner(const rl_clr *cand, int n, int i);
  * diameter across the cut, and the centre lies one radius in from the far
  * side; a corner cut (two sides) takes its longer side for the diameter,
  * the centre one radius in from both far sides (the local pass fits the
- * circle). Returns 1. */
-int rl_clr_geometry(const rl_box *b, int W, int H, rl_detection *d);
+ * circle). */
+void rl_clr_geometry(const rl_box *b, int W, int H, rl_detection *d);
 
 #endif

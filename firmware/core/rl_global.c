@@ -62,7 +62,7 @@ static int identify_through(const rl_recog *rec, const rl_image *img, const rl_t
     return taken;
 }
 
-int rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
+void rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
                    const rl_result *res, rl_detection *d)
 {
     const rl_levels *frame = &res->levels;
@@ -71,15 +71,14 @@ int rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, co
     memset(d, 0, sizeof *d);
     d->id = -1;
     d->pass = RL_PASS_GLOBAL;
-    if (!rl_clr_geometry(&c->box, rec->width, rec->height, d))
-        return 0;
+    rl_clr_geometry(&c->box, rec->width, rec->height, d);
     /* the frame's levels as the light falls here */
     rl_accept_levels_at(&rec->illum, frame, d->u, d->v, &local);
     if (d->complete)
         rl_refine_centre(img, &local, &d->u, &d->v, d->radius);
     if (d->visible < GLOBAL_MIN_VISIBLE) {
         rl_refine_radius(img, tone, d->u, d->v, &d->radius);
-        return 1;
+        return;
     }
     /* as a circle first; an ellipse only when the circle is not taken */
     if (identify_through(rec, img, tone, c, &local,
@@ -90,5 +89,4 @@ int rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, co
             rl_refine_radius_band(img, tone, &rec->cfg.family, d->id, d->u, d->v, &d->radius);
     }
     d->score = m.score;
-    return 1;
 }

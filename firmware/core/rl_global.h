@@ -5,8 +5,8 @@
  *   c.box.x0 = 100; c.box.y0 = 80; c.box.x1 = 150; c.box.y1 = 131;   // an outer CLR
  *   c.shape = rl_shape_circle();
  *   rl_detection d;
- *   if (rl_global_read(rec, &img, &c, rec->tone, &res, &d))
- *       use(d.id, d.score);   // d.id -1: a candidate, not identified
+ *   rl_global_read(rec, &img, &c, rec->tone, &res, &d);
+ *   use(d.id, d.score);   // d.id -1: a candidate, not identified
  */
 #ifndef RL_GLOBAL_H
 #define RL_GLOBAL_H
@@ -17,9 +17,9 @@
 /* Place the CLR c (centre and radius refined on the grey levels and, for
  * the radius, light through tone), and identify it through tone if it is
  * closed (complete, or with at most a sliver cut by the border): into *d,
- * its id -1 when not identified. 0 when c is no candidate (a corner cut).
- * res: the frame's levels and lights so far. */
-int rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
+ * its id -1 when not identified (a corner cut never: the local pass reads
+ * it). res: the frame's levels and lights so far. */
+void rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
                    const rl_result *res, rl_detection *d);
 
 #endif

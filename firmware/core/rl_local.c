@@ -190,28 +190,51 @@ static rl_accept_rule moving_cut_rule(const rl_accept_rule *rule, const rl_match
 
 /* How far out an axis must lie in the frame, in radii (the quiet zone). */
 #define AXIS_REACH 1.1
+/* The lead a read of half an axis needs. */
+#define HALF_READ_LEAD 2.0
 
-/* The polar axes (rl_polar_profile_axis) of the landmark at (cx, cy, r)
- * whose two octants lie wholly in the W x H frame out to its quiet zone,
- * as a mask (bit a: axis a). */
-static unsigned axes_in_frame(const rl_polar *pol, int W, int H, double cx, double cy, double r)
+/* 1 when octant `o` of the landmark at (cx, cy, r) lies wholly in the
+ * W x H frame out to its quiet zone. */
+static int octant_in_frame(const rl_polar *pol, int o, int W, int H, double cx, double cy, double r)
 {
-    unsigned mask = 0;
-    int a, k, e;
-    for (a = 0; a < RL_POLAR_AXES; a++) {
-        int whole = 1;
-        for (k = 0; k < 2; k++) {
-            int sct = a + k * RL_POLAR_AXES; /* an octant and its opposite */
-            double t = atan2(pol->uy[sct], pol->ux[sct]);
-            for (e = -1; e <= 1; e++) {
-                double x = cx + AXIS_REACH * r * cos(t + e * M_PI / 8);
-                double y = cy + AXIS_REACH * r * sin(t + e * M_PI / 8);
-                whole &= x >= 0 && y >= 0 && x <= W - 1 && y <= H - 1;
-            }
-        }
-        mask |= (unsigned)whole << a;
+    double t = atan2(pol->uy[o], pol->ux[o]);
+    int e, in = 1;
+    for (e = -1; e <= 1; e++) {
+        double x = cx + AXIS_REACH * r * cos(t + e * M_PI / 8);
+        double y = cy + AXIS_REACH * r * sin(t + e * M_PI / 8);
+        in &= x >= 0 && y >= 0 && x <= W - 1 && y <= H - 1;
     }
-    return mask;
+    return in;
+}
+
+/* The reads across the motion of the landmark at (cx, cy, r), as octant
+ * masks into reads[2 * RL_POLAR_AXES]: first the whole ones, *whole of
+ * them: each axis (an octant and its opposite) and each pair of an octant
+ * and its mirror image across the vertical (two octants on one side of
+ * the horizontal: a lamp or a shadow on the other side), wholly in the
+ * frame; then the half of an axis the
+ * border cuts that is in it (the other half reads a zone twin as well as
+ * the code). Returns how many in all. */
+static int reads_in_frame(const rl_polar *pol, int W, int H, double cx, double cy, double r,
+                          unsigned *reads, int *whole)
+{
+    unsigned half[RL_POLAR_AXES], in = 0;
+    int a, n = 0, nh = 0;
+    for (a = 0; a < 8; a++)
+        in |= octant_in_frame(pol, a, W, H, cx, cy, r) ? 1u << a : 0;
+    for (a = 0; a < RL_POLAR_AXES; a++) {
+        unsigned axis = 1u << a | 1u << rl_polar_opposite(a), side = 1u << a | 1u << (a ^ 4);
+        if ((in & axis) == axis)
+            reads[n++] = axis;
+        else if (in & axis)
+            half[nh++] = in & axis;
+        if ((in & side) == side)
+            reads[n++] = side;
+    }
+    *whole = n;
+    for (a = 0; a < nh; a++)
+        reads[n++] = half[a];
+    return n;
 }
 
 /* A match taken by the local pass: the rule, with the larger lead of a
@@ -239,6 +262,78 @@ static void cut_outwards(int W, int H, double d, double *x, double *y)
         *y += t < b ? -d : d;
 }
 
+/* A local candidate's read: its match and where it was made. */
+typedef struct {
+    rl_match m;
+    double cx, cy, r;
+} local_read;
+
+/* Not as a circle: as the ellipse its edge may be (the cut rule with the
+ * ellipse's own template); 1 when taken, into *rd. */
+static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_result *res,
+                        const rl_accept_rule *rule, local_read *rd)
+{
+    rl_ellipse e;
+    rl_match me;
+    rl_accept_rule mr;
+    double span;
+    if (!local_ellipse(rec, img, res, rd->cx, rd->cy, rd->r, &e, &me, &span))
+        return 0;
+    mr = moving_cut_rule(rule, &me, rl_geom_visible_in(rec->width, rec->height, e.cx, e.cy, e.r));
+    if (!rl_accept(&mr, &me, span))
+        return 0;
+    rd->m = me;
+    rd->cx = e.cx;
+    rd->cy = e.cy;
+    rd->r = e.r;
+    return 1;
+}
+
+/* Read across the motion: the same id as the circle's, and plain there,
+ * along each axis in the frame (reads_in_frame); a half axis, half the
+ * pixels, must lead by HALF_READ_LEAD. Reads the polar cells of the
+ * circle's search. */
+static int read_across(const rl_recog *rec, const rl_accept_rule *rule, const local_read *rd)
+{
+    int W = rec->width, H = rec->height, n, whole;
+    unsigned reads[3 * RL_POLAR_AXES];
+    rl_accept_rule half = *rule;
+    rl_match ma;
+    if (rd->m.id < 0 || rd->m.score < rule->min_score)
+        return 0;
+    n = reads_in_frame(rec->polar, W, H, rd->cx, rd->cy, rd->r, reads, &whole);
+    rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, reads, whole, &ma);
+    if (ma.id == rd->m.id && local_accept(rule, &ma, W, H, rd->cx, rd->cy, rd->r))
+        return 1;
+    if (half.min_lead < HALF_READ_LEAD)
+        half.min_lead = HALF_READ_LEAD;
+    rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, reads + whole,
+                            n - whole, &ma);
+    return ma.id == rd->m.id && local_accept(&half, &ma, W, H, rd->cx, rd->cy, rd->r);
+}
+
+/* A cut landmark whose edge fit came out small (a circle through what is
+ * left of a broken ring sits inside the frame): read again at the frame's
+ * size R, its centre moved out towards the border by the difference; 1
+ * when taken, into *rd. Gathers the polar cells anew. */
+static int read_cut_at_size(rl_recog *rec, const rl_image *img, int light, double R,
+                            const rl_accept_rule *rule, local_read *rd)
+{
+    int W = rec->width, H = rec->height;
+    local_read u;
+    if (!(rl_geom_visible_in(W, H, rd->cx, rd->cy, rd->r) < 1.0 && rd->r < CUT_SHRUNK * R))
+        return 0;
+    u.cx = rd->cx;
+    u.cy = rd->cy;
+    u.r = R;
+    cut_outwards(W, H, R - rd->r, &u.cx, &u.cy);
+    rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &u.cx, &u.cy, &u.r, &u.m);
+    if (!local_accept(rule, &u.m, W, H, u.cx, u.cy, u.r))
+        return 0;
+    *rd = u;
+    return 1;
+}
+
 /* Retry one DUCLR u of expected radius R; 1 if identified (into *out). */
 static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *res,
                            const rl_detection *u, double R, rl_detection *out)
@@ -246,6 +341,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL);
     int W = rec->width, H = rec->height, light = res->levels.light;
     double cx, cy, r;
+    local_read rd;
     rl_match m;
     int taken;
     memset(out, 0, sizeof *out);
@@ -256,47 +352,18 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     out->pass = RL_PASS_LOCAL;
     if (rl_geom_visible_in(W, H, cx, cy, r) < 0.5) /* more than half missing: not tried */
         return 0;
-    rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &cx, &cy, &r, &m);
-    taken = local_accept(&rule, &m, W, H, cx, cy, r);
-    if (!taken) {
-        /* not as a circle: as the ellipse its edge may be */
-        rl_ellipse e;
-        rl_match me;
-        double span;
-        if (local_ellipse(rec, img, res, cx, cy, r, &e, &me, &span) && rl_accept(&rule, &me, span)) {
-            m = me;
-            cx = e.cx;
-            cy = e.cy;
-            r = e.r;
-            taken = 1;
-        }
-    }
-    if (!taken && rl_geom_visible_in(W, H, cx, cy, r) < 1.0 && r < CUT_SHRUNK * R) {
-        /* a cut landmark whose edge fit came out small (a circle through
-         * what is left of a broken ring sits inside the frame): the frame's
-         * size, its centre moved out towards the border by the difference */
-        double ux = cx, uy = cy, ur = R;
-        rl_match mu;
-        cut_outwards(W, H, R - r, &ux, &uy);
-        rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &ux, &uy, &ur, &mu);
-        if (local_accept(&rule, &mu, W, H, ux, uy, ur)) {
-            m = mu;
-            cx = ux;
-            cy = uy;
-            r = ur;
-            taken = 1;
-        }
-    }
-    if (!taken && m.id >= 0 && m.score >= rule.min_score) {
-        /* read across the motion: the same id, and plain there (after
-         * the ellipse, whose centre is the better one where both read);
-         * on the axes wholly in the frame (the half of one the border
-         * cuts reads a zone twin as well) */
-        rl_match ma;
-        rl_search_across_motion(&rec->templates, rec->polar, cx, cy, r, m.id,
-                                axes_in_frame(rec->polar, W, H, cx, cy, r), &ma);
-        taken = ma.id == m.id && local_accept(&rule, &ma, W, H, cx, cy, r);
-    }
+    rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &cx, &cy, &r, &rd.m);
+    rd.cx = cx;
+    rd.cy = cy;
+    rd.r = r;
+    /* the circle; the ellipse (whose centre is the better one where both
+     * read); across the motion (the circle's cells); the frame's size */
+    taken = local_accept(&rule, &rd.m, W, H, cx, cy, r) || read_ellipse(rec, img, res, &rule, &rd) ||
+            read_across(rec, &rule, &rd) || read_cut_at_size(rec, img, light, R, &rule, &rd);
+    m = rd.m;
+    cx = rd.cx;
+    cy = rd.cy;
+    r = rd.r;
     out->u = cx;
     out->v = cy;
     out->radius = r;

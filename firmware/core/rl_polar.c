@@ -256,7 +256,7 @@ void rl_polar_gather(const rl_image *img, const rl_tone *tone, double cx, double
 /* The first step of a profile: every sector moved by its own fraction of
  * a bin (the shift, the same for all its cells: a two-tap filter), the
  * sectors summed into mid bins mn, ms, mq (MID_BINS, zeroed here). */
-static void shift_sectors(const rl_polar *pol, double dx, double dy, int axis, float *mn,
+static void shift_sectors(const rl_polar *pol, double dx, double dy, unsigned octants, float *mn,
                           float *ms, float *mq)
 {
     double bw = RL_PROFILE_EXTENT * pol->r / RL_PROFILE_BINS;
@@ -271,7 +271,7 @@ static void shift_sectors(const rl_polar *pol, double dx, double dy, int axis, f
         float u, w, *on, *os, *oq;
         double sh;
         int j0;
-        if (!pol->merged_usable[sct] || (axis >= 0 && sct % (RL_SECTORS / 4) != axis))
+        if (!pol->merged_usable[sct] || !(octants >> sct & 1u))
             continue;
         /* cell k moves to k + sh: (1 - w) of it to k + j0, w to k + j0 + 1 */
         sh = -(dx * pol->ux[sct] + dy * pol->uy[sct]) / bw;
@@ -366,15 +366,18 @@ static void rescale_bins(const float *mn, const float *ms, const float *mq, doub
 
 void rl_polar_profile(const rl_polar *pol, double dx, double dy, double scale, rl_profile *p)
 {
-    float mn[MID_BINS], ms[MID_BINS], mq[MID_BINS];
-    shift_sectors(pol, dx, dy, -1, mn, ms, mq);
-    rescale_bins(mn, ms, mq, scale, p);
+    rl_polar_profile_octants(pol, dx, dy, scale, RL_POLAR_ALL, p);
 }
 
-void rl_polar_profile_axis(const rl_polar *pol, double dx, double dy, double scale, int axis,
-                           rl_profile *p)
+int rl_polar_opposite(int o)
+{
+    return o ^ 6;
+}
+
+void rl_polar_profile_octants(const rl_polar *pol, double dx, double dy, double scale,
+                              unsigned octants, rl_profile *p)
 {
     float mn[MID_BINS], ms[MID_BINS], mq[MID_BINS];
-    shift_sectors(pol, dx, dy, axis, mn, ms, mq);
+    shift_sectors(pol, dx, dy, octants, mn, ms, mq);
     rescale_bins(mn, ms, mq, scale, p);
 }

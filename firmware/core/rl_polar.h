@@ -75,10 +75,17 @@ void rl_polar_profile(const rl_polar *pol, double dx, double dy, double scale,
 /* The axes a profile can be read along: an octant and its opposite. */
 #define RL_POLAR_AXES (RL_SECTORS / 4)
 
-/* As rl_polar_profile, from the two opposite octants of one axis (0 ..
- * RL_POLAR_AXES - 1) alone: the directions across a motion, where it
- * smears the rings least. */
-void rl_polar_profile_axis(const rl_polar *pol, double dx, double dy, double scale, int axis,
-                           rl_profile *p);
+/* The octant opposite octant o (0 .. 7: 4 for x < 0, 2 for y < 0, 1 for
+ * |x| > |y|): both signs flipped. Axis a (0 .. RL_POLAR_AXES - 1) is
+ * octant a and its opposite, a line through the centre. */
+int rl_polar_opposite(int o);
+
+/* Every octant, as a mask (bit o: octant o). */
+#define RL_POLAR_ALL 0xFFu
+
+/* As rl_polar_profile, from the octants of the mask alone (an axis: the
+ * directions across a motion, where it smears the rings least). */
+void rl_polar_profile_octants(const rl_polar *pol, double dx, double dy, double scale,
+                              unsigned octants, rl_profile *p);
 
 #endif

@@ -201,8 +201,9 @@ static int read_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int
     int i, found = 0;
     for (i = 0; i < n; i++) {
         rl_detection d;
-        if (rl_clr_is_inner(cand, n, i) || !rl_global_read(rec, img, &cand[i], &rec->tones.tone[t], res, &d))
+        if (rl_clr_is_inner(cand, n, i))
             continue;
+        rl_global_read(rec, img, &cand[i], &rec->tones.tone[t], res, &d);
         found += d.id >= 0;
         if (!into)
             continue;

@@ -1,5 +1,7 @@
 #include "rl_search.h"
 
+#include "rl_accept.h"
+
 /* Search steps: centre (px) and radius (fraction) steps of each round,
  * after a first sweep over radii. The sweep only looks further out: an
  * edge fit that glare or the border leaves with a short arc errs inwards
@@ -81,59 +83,12 @@ static void search_crosses(const rl_polar *pol, search_state *st)
     }
 }
 
-/* The twins' best score (as twin_check) read along one axis. */
-static void twin_check_axis(const rl_templates *tt, const rl_polar *pol, double x, double y,
-                            double s, int axis, rl_match *m)
-{
-    int twins[2], n = rl_match_twins(tt, m->id, twins), k;
-    rl_match_list ls;
-    if (n == 0)
-        return;
-    rl_match_list_make(tt, twins, n, -1, &ls);
-    for (k = 0; k < RL_SEARCH_TWIN_SCALES; k++) {
-        rl_profile p;
-        rl_match mm;
-        rl_polar_profile_axis(pol, x, y, s * rl_search_twin_scale[k], axis, &p);
-        rl_match_list_score(&ls, &p, &mm);
-        if (mm.id >= 0 && mm.score > m->second)
-            m->second = mm.score;
-    }
-}
-
-/* How far m's winner leads its runner-up (the lead rl_accept compares). */
-static double lead_of(const rl_match *m)
-{
-    double d = 1.0 - m->score * m->score;
-    return d > 0 ? (1.0 - m->second * m->second) / d : 1e9;
-}
-
-void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double cx, double cy,
-                             double r, int id, unsigned axes, rl_match *m)
-{
-    double x = cx - pol->cx, y = cy - pol->cy, s = r / pol->r;
-    int a;
-    m->id = -1;
-    m->score = m->second = 0;
-    for (a = 0; a < RL_POLAR_AXES; a++) {
-        rl_profile p;
-        rl_match ma;
-        if (!(axes >> a & 1u))
-            continue;
-        rl_polar_profile_axis(pol, x, y, s, a, &p);
-        rl_match_all(tt, &p, &ma);
-        if (ma.id != id || ma.blur == RL_BLUR_LEVELS - 1)
-            continue; /* another code, or smeared: along the motion */
-        twin_check_axis(tt, pol, x, y, s, a, &ma);
-        if (m->id < 0 || lead_of(&ma) > lead_of(m))
-            *m = ma;
-    }
-}
-
 /* The winner's zone twins (rl_match_twins) at their best radius
- * (RL_SEARCH_TWIN_SCALES) near the found one: when one comes close, the
- * evidence between the two codes is close, and m->second says so. */
+ * (RL_SEARCH_TWIN_SCALES) near the found one, read from the octants of
+ * the mask: when one comes close, the evidence between the two codes is
+ * close, and m->second says so. */
 static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, double y, double s,
-                       rl_match *m)
+                       unsigned octants, rl_match *m)
 {
     int twins[2], n = rl_match_twins(tt, m->id, twins), k;
     rl_match_list ls;
@@ -143,10 +98,30 @@ static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, do
     for (k = 0; k < RL_SEARCH_TWIN_SCALES; k++) {
         rl_profile p;
         rl_match mm;
-        rl_polar_profile(pol, x, y, s * rl_search_twin_scale[k], &p);
+        rl_polar_profile_octants(pol, x, y, s * rl_search_twin_scale[k], octants, &p);
         rl_match_list_score(&ls, &p, &mm);
         if (mm.id >= 0 && mm.score > m->second)
             m->second = mm.score;
+    }
+}
+
+void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double cx, double cy,
+                             double r, int id, const unsigned *reads, int n_reads, rl_match *m)
+{
+    double x = cx - pol->cx, y = cy - pol->cy, s = r / pol->r;
+    int a;
+    m->id = -1;
+    m->score = m->second = 0;
+    for (a = 0; a < n_reads; a++) {
+        rl_profile p;
+        rl_match ma;
+        rl_polar_profile_octants(pol, x, y, s, reads[a], &p);
+        rl_match_all(tt, &p, &ma);
+        if (ma.id != id || ma.blur == RL_BLUR_LEVELS - 1)
+            continue; /* another code, or smeared: along the motion */
+        twin_check(tt, pol, x, y, s, reads[a], &ma);
+        if (m->id < 0 || rl_accept_lead(&ma) > rl_accept_lead(m))
+            *m = ma;
     }
 }
 
@@ -178,5 +153,5 @@ void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *i
         *r *= st.s;
     }
     if (m->id >= 0)
-        twin_check(tt, pol, st.x, st.y, st.s, m);
+        twin_check(tt, pol, st.x, st.y, st.s, RL_POLAR_ALL, m);
 }

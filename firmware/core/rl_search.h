@@ -41,11 +41,12 @@ void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *i
 /* The match of the candidate pol holds, at (cx, cy, r) after
  * rl_search_identify, read along one axis at a time: across a motion the
  * rings are sharp and the code plain where the full circle averages it
- * with the smeared directions. Of the axes in the mask `axes` (bit a:
- * axis a) whose best id is `id`, the one where it leads its runner-up
- * (the winner's zone twins on that axis included) most, into *m; m->id < 0
- * when no such axis reads `id`. */
+ * with the smeared directions. reads[0 .. n_reads - 1] are octant masks
+ * (rl_polar_profile_octants): an axis, or the half of one in the frame.
+ * Of the reads whose best id is `id`, the one where it leads its
+ * runner-up (the winner's zone twins there included) most, into *m;
+ * m->id < 0 when none reads `id`. */
 void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double cx, double cy,
-                             double r, int id, unsigned axes, rl_match *m);
+                             double r, int id, const unsigned *reads, int n_reads, rl_match *m);
 
 #endif
