@@ -22,7 +22,7 @@ static const char *run_help =
     "robot's pose and send it as ARCOS-framed pose frames on the serial line (a\n"
     "status frame when there is no pose). Camera and serial faults are survived:\n"
     "the device is reopened with backoff and status frames say what happened.\n"
-    "Stops on SIGINT/SIGTERM, at the end of a PNG sequence, or after N frames.\n"
+    "Stops on SIGINT, SIGTERM or SIGHUP, at the end of a PNG sequence, or after N frames.\n"
     "Logs go to standard error, repeated lines at most every log_interval s.\n"
     "See rl_runcfg.h or the README for the configuration file.\n\n"
     "  --frames N   stop after N frames\n"
