@@ -23,8 +23,9 @@ static rl_heap_recog hr, hr_always;
  * 76.2% (70.2% after the lead a cut landmark needs at a moving template) and 78.6% for the
  * worst id; with motion-broken rings closed and the read across the motion 97.0%, 95.5%,
  * 76.2% and 78.6%; with the cut landmarks' halves paired, corners read and small fits
- * read again at the frame's size 97.5%, 95.5%, 79.8%, 78.6% (30 frames: 96.6%, 91.9%,
- * 85.7%, 71.4%): under the issue's 98%, 90% cut and 95% per id) */
+ * read again at the frame's size 97.5%, 95.5%, 79.8%, 78.6%; with true axes and half
+ * axes across the motion 98.1%, 96.6%, 82.1%, 78.6% (30 frames: 97.1%, 91.9%, 87.8%,
+ * 71.4%): under the issue's 90% cut and 95% per id) */
 #define HELDOUT_COMPLETE 0.95
 #define HELDOUT_GLARE 0.85
 #define HELDOUT_BORDER 0.75
