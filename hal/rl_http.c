@@ -40,15 +40,6 @@ struct rl_http {
     size_t jpeg_len;
 };
 
-void rl_http_defaults(rl_http_config *c)
-{
-    memset(c, 0, sizeof *c);
-    c->token = "";
-    c->max_clients = 16;
-    c->timeout_s = 10;
-    c->max_request = 8192;
-}
-
 /* The newest snapshot, taken from the view when it has a newer one. */
 static const rl_view_snap *latest(rl_http *h)
 {

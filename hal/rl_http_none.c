@@ -5,15 +5,6 @@
 #include <stdio.h>
 #include <string.h>
 
-void rl_http_defaults(rl_http_config *c)
-{
-    memset(c, 0, sizeof *c);
-    c->token = "";
-    c->max_clients = 16;
-    c->timeout_s = 10;
-    c->max_request = 8192;
-}
-
 rl_err rl_http_start(rl_http **h, const rl_http_config *c, rl_view *view, const rl_map *map, char *err,
                      size_t errlen)
 {

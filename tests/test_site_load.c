@@ -2,17 +2,22 @@
  * lines made by hand here (files written by the test, expectations from
  * what each file says), and what rl_site_prepare builds from them. */
 #include "rl_test.h"
+#include "rl_outfile.h"
 #include "rl_site.h"
 
 static char cam_path[1024], map_path[1024], empty_path[1024], robot_path[1024], high_path[1024],
     rep_path[1024];
 
+/* Written as every output is (a temporary renamed into place). */
 static void write_file(const char *path, const char *text)
 {
-    FILE *f = fopen(path, "w");
-    assert_non_null(f);
-    fputs(text, f);
-    fclose(f);
+    rl_outfile o;
+    char err[600];
+    if (rl_outfile_open(&o, path, err, sizeof err) != RL_OK)
+        fail_msg("%s", err);
+    fputs(text, o.f);
+    if (rl_outfile_commit(&o, err, sizeof err) != RL_OK)
+        fail_msg("%s", err);
 }
 
 static int setup(void **state)

@@ -237,8 +237,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        sys.exit(main())
-    except vl.Fail as e:
-        print("FAIL: %s" % e)
-        sys.exit(1)
+    vl.run(main)

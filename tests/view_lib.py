@@ -141,3 +141,12 @@ class Checks:
     def done(self):
         print("%d passed, %d failed" % (self.passed, self.failed))
         return 1 if self.failed else 0
+
+
+def run(main):
+    """A view test's entry: main's status, or 1 with the line of a Fail."""
+    try:
+        sys.exit(main())
+    except Fail as e:
+        print("FAIL: %s" % e)
+        sys.exit(1)

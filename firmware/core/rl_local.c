@@ -208,22 +208,22 @@ static int octant_in_frame(const rl_polar *pol, int o, int W, int H, double cx, 
 }
 
 /* The reads across the motion of the landmark at (cx, cy, r), as octant
- * masks into reads[2 * RL_POLAR_AXES]: first the whole ones, *whole of
- * them: each axis (an octant and its opposite) and each pair of an octant
- * and its mirror image across the vertical (two octants on one side of
- * the horizontal: a lamp or a shadow on the other side), wholly in the
- * frame; then the half of an axis the
- * border cuts that is in it (the other half reads a zone twin as well as
- * the code). Returns how many in all. */
+ * masks into reads[READS_MAX]: first the whole ones, *whole of them: each
+ * axis (an octant and its opposite) and each pair of an octant and its
+ * mirror image across the vertical (two octants on one side of the
+ * horizontal: a lamp or a shadow on the other side), wholly in the frame;
+ * then the half of an axis the border cuts that is in it (the other half
+ * reads a zone twin as well as the code). Returns how many in all. */
+#define READS_MAX (3 * RL_POLAR_AXES)
 static int reads_in_frame(const rl_polar *pol, int W, int H, double cx, double cy, double r,
                           unsigned *reads, int *whole)
 {
     unsigned half[RL_POLAR_AXES], in = 0;
     int a, n = 0, nh = 0;
-    for (a = 0; a < 8; a++)
+    for (a = 0; a < RL_POLAR_OCTANTS; a++)
         in |= octant_in_frame(pol, a, W, H, cx, cy, r) ? 1u << a : 0;
     for (a = 0; a < RL_POLAR_AXES; a++) {
-        unsigned axis = 1u << a | 1u << rl_polar_opposite(a), side = 1u << a | 1u << (a ^ 4);
+        unsigned axis = 1u << a | 1u << rl_polar_opposite(a), side = 1u << a | 1u << rl_polar_mirror(a);
         if ((in & axis) == axis)
             reads[n++] = axis;
         else if (in & axis)
@@ -239,12 +239,13 @@ static int reads_in_frame(const rl_polar *pol, int W, int H, double cx, double c
 
 /* A match taken by the local pass: the rule, with the larger lead of a
  * moving template where the landmark at (cx, cy, r) is cut, as that
- * match's own template is. */
+ * match's own template is; span as rl_accept's (255 on the polar cells'
+ * sector-normalized levels). */
 static int local_accept(const rl_accept_rule *rule, const rl_match *m, int W, int H, double cx, double cy,
-                        double r)
+                        double r, double span)
 {
     rl_accept_rule mr = moving_cut_rule(rule, m, rl_geom_visible_in(W, H, cx, cy, r));
-    return rl_accept(&mr, m, 255.0);
+    return rl_accept(&mr, m, span);
 }
 
 /* A cut landmark's fitted radius this far under the frame's is retried at
@@ -275,12 +276,9 @@ static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_resul
 {
     rl_ellipse e;
     rl_match me;
-    rl_accept_rule mr;
     double span;
-    if (!local_ellipse(rec, img, res, rd->cx, rd->cy, rd->r, &e, &me, &span))
-        return 0;
-    mr = moving_cut_rule(rule, &me, rl_geom_visible_in(rec->width, rec->height, e.cx, e.cy, e.r));
-    if (!rl_accept(&mr, &me, span))
+    if (!local_ellipse(rec, img, res, rd->cx, rd->cy, rd->r, &e, &me, &span) ||
+        !local_accept(rule, &me, rec->width, rec->height, e.cx, e.cy, e.r, span))
         return 0;
     rd->m = me;
     rd->cx = e.cx;
@@ -296,20 +294,20 @@ static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_resul
 static int read_across(const rl_recog *rec, const rl_accept_rule *rule, const local_read *rd)
 {
     int W = rec->width, H = rec->height, n, whole;
-    unsigned reads[3 * RL_POLAR_AXES];
+    unsigned reads[READS_MAX];
     rl_accept_rule half = *rule;
     rl_match ma;
     if (rd->m.id < 0 || rd->m.score < rule->min_score)
         return 0;
     n = reads_in_frame(rec->polar, W, H, rd->cx, rd->cy, rd->r, reads, &whole);
     rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, reads, whole, &ma);
-    if (ma.id == rd->m.id && local_accept(rule, &ma, W, H, rd->cx, rd->cy, rd->r))
+    if (ma.id == rd->m.id && local_accept(rule, &ma, W, H, rd->cx, rd->cy, rd->r, 255.0))
         return 1;
     if (half.min_lead < HALF_READ_LEAD)
         half.min_lead = HALF_READ_LEAD;
     rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, reads + whole,
                             n - whole, &ma);
-    return ma.id == rd->m.id && local_accept(&half, &ma, W, H, rd->cx, rd->cy, rd->r);
+    return ma.id == rd->m.id && local_accept(&half, &ma, W, H, rd->cx, rd->cy, rd->r, 255.0);
 }
 
 /* A cut landmark whose edge fit came out small (a circle through what is
@@ -328,7 +326,7 @@ static int read_cut_at_size(rl_recog *rec, const rl_image *img, int light, doubl
     u.r = R;
     cut_outwards(W, H, R - rd->r, &u.cx, &u.cy);
     rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &u.cx, &u.cy, &u.r, &u.m);
-    if (!local_accept(rule, &u.m, W, H, u.cx, u.cy, u.r))
+    if (!local_accept(rule, &u.m, W, H, u.cx, u.cy, u.r, 255.0))
         return 0;
     *rd = u;
     return 1;
@@ -340,39 +338,31 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
 {
     rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL);
     int W = rec->width, H = rec->height, light = res->levels.light;
-    double cx, cy, r;
     local_read rd;
-    rl_match m;
     int taken;
     memset(out, 0, sizeof *out);
-    if (!local_locate(rec, img, res, u, R, &out->box, &cx, &cy, &r))
+    if (!local_locate(rec, img, res, u, R, &out->box, &rd.cx, &rd.cy, &rd.r))
         return 0;
     /* the fitted radius, not the frame's median: lens distortion makes
      * landmarks smaller away from the image centre */
     out->pass = RL_PASS_LOCAL;
-    if (rl_geom_visible_in(W, H, cx, cy, r) < 0.5) /* more than half missing: not tried */
+    if (rl_geom_visible_in(W, H, rd.cx, rd.cy, rd.r) < 0.5) /* more than half missing: not tried */
         return 0;
-    rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &cx, &cy, &r, &rd.m);
-    rd.cx = cx;
-    rd.cy = cy;
-    rd.r = r;
+    rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &rd.cx, &rd.cy, &rd.r, &rd.m);
     /* the circle; the ellipse (whose centre is the better one where both
      * read); across the motion (the circle's cells); the frame's size */
-    taken = local_accept(&rule, &rd.m, W, H, cx, cy, r) || read_ellipse(rec, img, res, &rule, &rd) ||
-            read_across(rec, &rule, &rd) || read_cut_at_size(rec, img, light, R, &rule, &rd);
-    m = rd.m;
-    cx = rd.cx;
-    cy = rd.cy;
-    r = rd.r;
-    out->u = cx;
-    out->v = cy;
-    out->radius = r;
-    out->complete = rl_geom_disk_complete(W, H, cx, cy, r);
-    out->visible = rl_geom_visible_in(W, H, cx, cy, r);
-    if (!taken || rl_inner_enclosed(img, light, cx, cy, r))
+    taken = local_accept(&rule, &rd.m, W, H, rd.cx, rd.cy, rd.r, 255.0) ||
+            read_ellipse(rec, img, res, &rule, &rd) || read_across(rec, &rule, &rd) ||
+            read_cut_at_size(rec, img, light, R, &rule, &rd);
+    out->u = rd.cx;
+    out->v = rd.cy;
+    out->radius = rd.r;
+    out->complete = rl_geom_disk_complete(W, H, rd.cx, rd.cy, rd.r);
+    out->visible = rl_geom_visible_in(W, H, rd.cx, rd.cy, rd.r);
+    if (!taken || rl_inner_enclosed(img, light, rd.cx, rd.cy, rd.r))
         return 0;
-    out->id = m.id;
-    out->score = m.score;
+    out->id = rd.m.id;
+    out->score = rd.m.score;
     return 1;
 }
 

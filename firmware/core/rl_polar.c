@@ -374,6 +374,11 @@ int rl_polar_opposite(int o)
     return o ^ 6;
 }
 
+int rl_polar_mirror(int o)
+{
+    return o ^ 4;
+}
+
 void rl_polar_profile_octants(const rl_polar *pol, double dx, double dy, double scale,
                               unsigned octants, rl_profile *p)
 {

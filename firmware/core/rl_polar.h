@@ -80,6 +80,13 @@ void rl_polar_profile(const rl_polar *pol, double dx, double dy, double scale,
  * octant a and its opposite, a line through the centre. */
 int rl_polar_opposite(int o);
 
+/* Octants, the merged sectors a profile reads (RL_SECTORS / 2). */
+#define RL_POLAR_OCTANTS (RL_SECTORS / 2)
+
+/* Octant o's mirror image across the vertical (x's sign flipped): the
+ * pair lies on one side of the horizontal. */
+int rl_polar_mirror(int o);
+
 /* Every octant, as a mask (bit o: octant o). */
 #define RL_POLAR_ALL 0xFFu
 
