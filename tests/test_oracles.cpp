@@ -1,6 +1,7 @@
 // Each recognition stage against an independent oracle:
 // - histogram K-means against OpenCV's cv::kmeans on the same intensities;
-// - run-length labelling against cv::connectedComponentsWithStats;
+// - run-length labelling against cv::connectedComponentsWithStats (bands
+//   anywhere in the grey range, per-tile thresholds);
 // - radial Pearson identification against the direct formula over pixels.
 #include <algorithm>
 #include <cmath>
@@ -111,6 +112,59 @@ static void test_kmeans_edge_cases(void **)
     assert_int_equal(rl_hist_kmeans(&h, 100, 50, 2, c, NULL), RL_EINVAL);
 }
 
+// The labelling's regions and runs against OpenCV's 8-connected
+// components of bin (255 where a pixel is in the band).
+static void expect_opencv_regions(const rl_label &lb, const cv::Mat &bin, int min_area, int trial)
+{
+    cv::Mat labels, stats, cents;
+    int n = cv::connectedComponentsWithStats(bin, labels, stats, cents, 8, CV_32S);
+    struct box { int area, x0, y0, x1, y1; double cx, cy; };
+    std::vector<box> want, got;
+    for (int i = 1; i < n; i++) {
+        int a = stats.at<int>(i, cv::CC_STAT_AREA);
+        if (a < min_area)
+            continue;
+        int x = stats.at<int>(i, cv::CC_STAT_LEFT), y = stats.at<int>(i, cv::CC_STAT_TOP);
+        want.push_back({a, x, y, x + stats.at<int>(i, cv::CC_STAT_WIDTH) - 1,
+                        y + stats.at<int>(i, cv::CC_STAT_HEIGHT) - 1, cents.at<double>(i, 0),
+                        cents.at<double>(i, 1)});
+    }
+    for (int i = 0; i < lb.n_regions; i++) {
+        const rl_region &g = lb.reg[i];
+        got.push_back({g.area, g.x0, g.y0, g.x1, g.y1, g.sx / g.area, g.sy / g.area});
+    }
+    auto key = [](const box &a, const box &b) {
+        return std::tie(a.y0, a.x0, a.area) < std::tie(b.y0, b.x0, b.area);
+    };
+    std::sort(want.begin(), want.end(), key);
+    std::sort(got.begin(), got.end(), key);
+    if (want.size() != got.size())
+        fail_msg("trial %d: %zu regions, OpenCV %zu", trial, got.size(), want.size());
+    for (size_t i = 0; i < want.size(); i++) {
+        assert_int_equal(got[i].area, want[i].area);
+        assert_int_equal(got[i].x0, want[i].x0);
+        assert_int_equal(got[i].y1, want[i].y1);
+        assert_int_equal(got[i].x1, want[i].x1);
+        assert_true(std::fabs(got[i].cx - want[i].cx) < 1e-9);
+        assert_true(std::fabs(got[i].cy - want[i].cy) < 1e-9);
+    }
+    // every run's region is the one OpenCV gives its pixels, and the runs
+    // cover every pixel in the band
+    int covered = 0;
+    for (int y = 0; y < bin.rows; y++)
+        for (int r = lb.row[y]; r < lb.row[y + 1]; r++) {
+            int reg = rl_label_region_of(&lb, r);
+            int cvl = labels.at<int>(y, lb.x0[r]);
+            for (int x = lb.x0[r]; x <= lb.x1[r]; x++)
+                assert_int_equal(labels.at<int>(y, x), cvl);
+            assert_int_not_equal(cvl, 0);
+            covered += lb.x1[r] - lb.x0[r] + 1;
+            if (reg >= 0)
+                assert_int_equal(stats.at<int>(cvl, cv::CC_STAT_AREA), lb.reg[reg].area);
+        }
+    assert_int_equal(covered, cv::countNonZero(bin));
+}
+
 static void test_labelling_matches_opencv(void **)
 {
     std::mt19937 rng(7);
@@ -124,56 +178,63 @@ static void test_labelling_matches_opencv(void **)
         for (int i = 0; i < 200; i++) // specks and diagonal touches
             view.at<uchar>(Y(rng), X(rng)) = 10;
         rl_image ri = rl_image_view(W, H, (int)img.step, img.data);
-        std::vector<unsigned char> mem(rl_label_bytes(H, W * H, 4096) + 64);
+        std::vector<unsigned char> mem(rl_label_bytes(W, H, W * H, 4096) + 64);
         rl_ws ws;
         rl_ws_init(&ws, mem.data(), mem.size());
         rl_label lb;
         assert_int_equal(rl_label_init(&lb, &ws, W, H, W * H, 4096), RL_OK);
         int min_area = 1 + trial % 4;
         assert_int_equal(rl_label_band(&lb, &ri, 0, 128, min_area), RL_OK);
+        expect_opencv_regions(lb, view < 128, min_area, trial);
+    }
+}
 
-        cv::Mat bin = view < 128, labels, stats, cents;
-        int n = cv::connectedComponentsWithStats(bin, labels, stats, cents, 8, CV_32S);
-        struct box { int area, x0, y0, x1, y1; double cx, cy; };
-        std::vector<box> want, got;
-        for (int i = 1; i < n; i++) {
-            int a = stats.at<int>(i, cv::CC_STAT_AREA);
-            if (a < min_area)
-                continue;
-            int x = stats.at<int>(i, cv::CC_STAT_LEFT), y = stats.at<int>(i, cv::CC_STAT_TOP);
-            want.push_back({a, x, y, x + stats.at<int>(i, cv::CC_STAT_WIDTH) - 1,
-                            y + stats.at<int>(i, cv::CC_STAT_HEIGHT) - 1, cents.at<double>(i, 0),
-                            cents.at<double>(i, 1)});
+// Bands anywhere in the grey range and per-tile thresholds, on images of
+// every grey level whose widths are no multiple of the labeller's chunk:
+// the band as defined (lo <= I < hi, hi per tile) against OpenCV.
+static void test_bands_and_tiles_match_opencv(void **)
+{
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<int> grey(0, 255);
+    for (int trial = 0; trial < 40; trial++) {
+        int W = 50 + trial * 17, H = 40 + trial % 7 * 9, tile = trial % 3 == 0 ? 8 : trial % 3 == 1 ? 16 : 32;
+        cv::Mat img(H, W + 3, CV_8U), bin(H, W, CV_8U);
+        for (int y = 0; y < H; y++) // blobs of one grey level over noise
+            for (int x = 0; x < W + 3; x++)
+                img.at<uchar>(y, x) = (uchar)grey(rng);
+        cv::Mat view = img(cv::Rect(0, 0, W, H));
+        std::uniform_int_distribution<int> X(0, W - 1), Y(0, H - 1), R(2, 12);
+        for (int i = 0; i < 30; i++)
+            cv::circle(view, {X(rng), Y(rng)}, R(rng), cv::Scalar(grey(rng)), cv::FILLED);
+        rl_image ri = rl_image_view(W, H, (int)img.step, img.data);
+        std::vector<unsigned char> mem(rl_label_bytes(W, H, W * H, 1 << 16) + 64);
+        rl_ws ws;
+        rl_ws_init(&ws, mem.data(), mem.size());
+        rl_label lb;
+        assert_int_equal(rl_label_init(&lb, &ws, W, H, W * H, 1 << 16), RL_OK);
+        if (trial % 2 == 0) {
+            // a band: dark, light (to 256), the middle, all, or empty
+            static const int bands[][2] = {{0, 90}, {128, 256}, {60, 200}, {0, 256}, {200, 256},
+                                           {0, 1}, {77, 77}, {255, 256}, {1, 256}, {0, 200}};
+            int lo = bands[trial / 2 % 10][0], hi = bands[trial / 2 % 10][1];
+            assert_int_equal(rl_label_band(&lb, &ri, lo, hi, 1), RL_OK);
+            for (int y = 0; y < H; y++)
+                for (int x = 0; x < W; x++) {
+                    int v = view.at<uchar>(y, x);
+                    bin.at<uchar>(y, x) = lo <= v && v < hi ? 255 : 0;
+                }
+        } else {
+            int nx = (W + tile - 1) / tile, ny = (H + tile - 1) / tile;
+            std::vector<uint8_t> his(nx * ny);
+            for (auto &h : his)
+                h = (uint8_t)grey(rng);
+            rl_label_map map = {his.data(), tile, nx, ny};
+            assert_int_equal(rl_label_dark(&lb, &ri, &map, 1), RL_OK);
+            for (int y = 0; y < H; y++)
+                for (int x = 0; x < W; x++)
+                    bin.at<uchar>(y, x) = view.at<uchar>(y, x) < his[(y / tile) * nx + x / tile] ? 255 : 0;
         }
-        for (int i = 0; i < lb.n_regions; i++) {
-            const rl_region &g = lb.reg[i];
-            got.push_back({g.area, g.x0, g.y0, g.x1, g.y1, g.sx / g.area, g.sy / g.area});
-        }
-        auto key = [](const box &a, const box &b) {
-            return std::tie(a.y0, a.x0, a.area) < std::tie(b.y0, b.x0, b.area);
-        };
-        std::sort(want.begin(), want.end(), key);
-        std::sort(got.begin(), got.end(), key);
-        if (want.size() != got.size())
-            fail_msg("trial %d: %zu regions, OpenCV %zu", trial, got.size(), want.size());
-        for (size_t i = 0; i < want.size(); i++) {
-            assert_int_equal(got[i].area, want[i].area);
-            assert_int_equal(got[i].x0, want[i].x0);
-            assert_int_equal(got[i].y1, want[i].y1);
-            assert_int_equal(got[i].x1, want[i].x1);
-            assert_true(std::fabs(got[i].cx - want[i].cx) < 1e-9);
-            assert_true(std::fabs(got[i].cy - want[i].cy) < 1e-9);
-        }
-        // every run's region is the one OpenCV gives its pixels
-        for (int y = 0; y < H; y++)
-            for (int r = lb.row[y]; r < lb.row[y + 1]; r++) {
-                int reg = rl_label_region_of(&lb, r);
-                int cvl = labels.at<int>(y, lb.x0[r]);
-                for (int x = lb.x0[r]; x <= lb.x1[r]; x++)
-                    assert_int_equal(labels.at<int>(y, x), cvl);
-                if (reg >= 0)
-                    assert_int_equal(stats.at<int>(cvl, cv::CC_STAT_AREA), lb.reg[reg].area);
-            }
+        expect_opencv_regions(lb, bin, 1, trial);
     }
 }
 
@@ -186,7 +247,7 @@ static void test_labelling_limits(void **)
         for (int x = 0; x < 40; x++)
             img.at<uchar>(y, x) = (x + y) % 2 ? 0 : 255;
     rl_image ri = rl_image_view(40, 40, 40, img.data);
-    std::vector<unsigned char> mem(rl_label_bytes(40, 100, 10) + 64);
+    std::vector<unsigned char> mem(rl_label_bytes(40, 40, 100, 10) + 64);
     rl_ws ws;
     rl_ws_init(&ws, mem.data(), mem.size());
     rl_label lb;
@@ -297,6 +358,7 @@ int main(void)
         cmocka_unit_test(test_kmeans_matches_opencv),
         cmocka_unit_test(test_kmeans_edge_cases),
         cmocka_unit_test(test_labelling_matches_opencv),
+        cmocka_unit_test(test_bands_and_tiles_match_opencv),
         cmocka_unit_test(test_labelling_limits),
         cmocka_unit_test(test_ident_matches_direct_pearson),
         cmocka_unit_test(test_pearson_formula),

@@ -2,12 +2,12 @@
 
 #include <string.h>
 
-size_t rl_label_bytes(int height, int cap_runs, int cap_regions)
+size_t rl_label_bytes(int width, int height, int cap_runs, int cap_regions)
 {
     /* each slice may be padded up to RL_WS_ALIGN - 1 bytes */
     return (size_t)cap_runs * (2 * sizeof(uint16_t) + sizeof(int32_t)) +
            (size_t)(height + 1) * sizeof(int32_t) + (size_t)cap_regions * sizeof(rl_region) +
-           4 * RL_WS_ALIGN;
+           (size_t)width + 6 * RL_WS_ALIGN;
 }
 
 rl_err rl_label_init(rl_label *lb, rl_ws *ws, int width, int height, int cap_runs,
@@ -18,6 +18,7 @@ rl_err rl_label_init(rl_label *lb, rl_ws *ws, int width, int height, int cap_run
         return RL_EINVAL;
     lb->width = width;
     lb->height = height;
+    lb->max_width = width;
     lb->max_height = height;
     lb->cap_runs = cap_runs;
     lb->cap_regions = cap_regions;
@@ -26,60 +27,84 @@ rl_err rl_label_init(rl_label *lb, rl_ws *ws, int width, int height, int cap_run
         (e = rl_ws_alloc(ws, (size_t)cap_runs * sizeof(uint16_t), RL_WS_ALIGN, (void **)&lb->x1)) != RL_OK ||
         (e = rl_ws_alloc(ws, (size_t)cap_runs * sizeof(int32_t), RL_WS_ALIGN, (void **)&lb->tag)) != RL_OK ||
         (e = rl_ws_alloc(ws, (size_t)(height + 1) * sizeof(int32_t), RL_WS_ALIGN, (void **)&lb->row)) != RL_OK ||
-        (e = rl_ws_alloc(ws, (size_t)cap_regions * sizeof(rl_region), RL_WS_ALIGN, (void **)&lb->reg)) != RL_OK)
+        (e = rl_ws_alloc(ws, (size_t)cap_regions * sizeof(rl_region), RL_WS_ALIGN, (void **)&lb->reg)) != RL_OK ||
+        (e = rl_ws_alloc(ws, (size_t)width, RL_WS_ALIGN, (void **)&lb->span)) != RL_OK)
         return e;
     return RL_OK;
 }
 
-/* Word-at-a-time skipping over pixels outside the band. For a band that
- * starts at 0 and ends at or below 128 (dark ROIs), or starts at 128 or
- * above and ends at 256 (light sources), "does any of these 8 bytes fall
- * in the band" is one expression on a 64-bit word (the classic has-less-
- * than test), and most of a ceiling frame is skipped 8 pixels at a time. */
+/* A row is read CHUNK pixels at a time: each pixel's band test as a byte
+ * (16 at once in GCC/Clang vectors), the bytes packed into the bits of
+ * one word, and the runs found in the word by counting trailing zeros; a
+ * ceiling frame's long stretches outside the band cost a few instructions
+ * for 64 pixels. */
+#define CHUNK 64
 #define ONES 0x0101010101010101ull
-#define HIGHS 0x8080808080808080ull
+/* A word of eight 0/1 bytes times this has byte i's bit at bit 56 + i. */
+#define PACK_BITS 0x0102040810204080ull
 
-static uint64_t load8(const uint8_t *p)
+#if defined(__GNUC__) && !defined(RL_NO_VECTOR_EXT)
+#define LABEL_VECTORS 1
+typedef uint8_t label_v16 __attribute__((vector_size(16)));
+#endif
+
+/* Eight bytes, each 0 or with its low bit set, as eight bits (byte i:
+ * bit i). */
+static uint64_t pack8(const uint8_t *in)
 {
-    uint64_t w;
-    memcpy(&w, p, sizeof w);
-    return w;
+    uint64_t w = 0;
+#if defined(__GNUC__) && defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    memcpy(&w, in, sizeof w);
+#else
+    int i;
+    for (i = 7; i >= 0; i--)
+        w = w << 8 | in[i];
+#endif
+    return (w & ONES) * PACK_BITS >> 56;
 }
 
-/* First x >= from with lo <= row[x] < hi, or width. */
-static int skip_outside(const uint8_t *row, int from, int width, int lo, int hi)
+static int trailing_zeros(uint64_t w) /* w != 0 */
 {
-    int x = from;
-    if (lo == 0 && hi <= 128 && hi > 0) {
-        uint64_t n = ONES * (uint64_t)hi;
-        while (x + 8 <= width) {
-            uint64_t w = load8(row + x);
-            if (((w - n) & ~w & HIGHS) != 0)
-                break;
-            x += 8;
-        }
-    } else if (lo == 0 && hi > 128 && hi < 256) {
-        /* a byte under 128 is in the band; bytes of 128 and up compare
-         * their low 7 bits with hi - 128 (< 128, so the test holds) */
-        uint64_t n = ONES * (uint64_t)(hi - 128);
-        while (x + 8 <= width) {
-            uint64_t w = load8(row + x), low = w & ~HIGHS;
-            if ((~w & HIGHS) != 0 || ((low - n) & ~low & HIGHS) != 0)
-                break;
-            x += 8;
-        }
-    } else if (hi == 256 && lo >= 128) {
-        uint64_t n = ONES * (uint64_t)(256 - lo);
-        while (x + 8 <= width) {
-            uint64_t w = ~load8(row + x); /* 255 - v < 256 - lo  <=>  v >= lo */
-            if (((w - n) & ~w & HIGHS) != 0)
-                break;
-            x += 8;
-        }
+#if defined(__GNUC__)
+    return __builtin_ctzll((unsigned long long)w);
+#else
+    int k = 0;
+    while (!(w & 1)) {
+        w >>= 1;
+        k++;
     }
-    while (x < width && (unsigned)(row[x] - lo) >= (unsigned)(hi - lo))
-        x++;
-    return x;
+    return k;
+#endif
+}
+
+/* Bit i set when lo <= row[i] < lo + span[i], for i < n <= CHUNK. */
+static uint64_t chunk_bits(const uint8_t *row, const uint8_t *span, int lo, int n)
+{
+    uint8_t in[CHUNK];
+    uint64_t bits = 0;
+    int i = 0;
+#ifdef LABEL_VECTORS
+    label_v16 any = {0};
+    uint64_t half[2];
+    for (; i + 16 <= n; i += 16) {
+        label_v16 v, sp, m;
+        memcpy(&v, row + i, sizeof v);
+        memcpy(&sp, span + i, sizeof sp);
+        m = (label_v16)((label_v16)(v - (uint8_t)lo) < sp);
+        memcpy(in + i, &m, sizeof m);
+        any |= m;
+    }
+    memcpy(half, &any, sizeof half);
+    if (i == CHUNK && (half[0] | half[1]) == 0)
+        return 0; /* most of a ceiling: no pixel in the band */
+#endif
+    for (; i < n; i++)
+        in[i] = (uint8_t)(row[i] - lo) < span[i];
+    for (; i < CHUNK; i++)
+        in[i] = 0;
+    for (i = 0; i < CHUNK; i += 8)
+        bits |= pack8(in + i) << i;
+    return bits;
 }
 
 static int32_t find(int32_t *p, int32_t a)
@@ -125,77 +150,96 @@ static rl_err add_run(rl_label *lb, int a, int b, int *n, int *j, int prev_end)
     return RL_OK;
 }
 
-/* 1 if a tile row's thresholds lie within a few grey levels of each
- * other (an evenly lit row): its runs are then found 8 pixels at a time
- * under the largest (*hi), each pixel checked against its own tile's. */
-static int nearly_even(const uint8_t *his, int nx, int *hi)
+/* The band's width above lo under a threshold, as a byte: 0 for an
+ * empty band; 256 (the whole range) does not occur with a map, whose
+ * thresholds are bytes, and is taken apart by the caller. */
+static uint8_t band_span(int lo, int hi)
 {
-    int i, lo = 255, top = 0;
-    for (i = 0; i < nx; i++) {
-        if (his[i] < lo) lo = his[i];
-        if (his[i] > top) top = his[i];
+    return (uint8_t)(hi <= lo ? 0 : hi - lo > 255 ? 255 : hi - lo);
+}
+
+/* Each pixel's band width in span[0 .. width - 1]: its tile's threshold
+ * (his, tiles of 1 << sh) or hi for every pixel. */
+static void row_spans(uint8_t *span, int width, int lo, int hi, const uint8_t *his, int sh)
+{
+    int x, t;
+    if (his == NULL) {
+        memset(span, band_span(lo, hi), (size_t)width);
+        return;
     }
-    *hi = top;
-    return top - lo <= 12;
+    for (t = 0, x = 0; x < width; t++) {
+        int end = (t + 1) << sh;
+        end = end < width ? end : width;
+        memset(span + x, band_span(lo, his[t]), (size_t)(end - x));
+        x = end;
+    }
+}
+
+/* Row y's runs appended from *n on, each joined with the previous row's
+ * (prev_start .. prev_end - 1) it touches. RL_ELIMIT past cap_runs. */
+static rl_err row_runs(rl_label *lb, const uint8_t *row, int width, int lo, int all, int *n,
+                       int prev_start, int prev_end)
+{
+    int x, j = prev_start, open = -1;
+    rl_err e;
+    if (all)
+        return add_run(lb, 0, width - 1, n, &j, prev_end);
+    for (x = 0; x < width; x += CHUNK) {
+        int len = width - x < CHUNK ? width - x : CHUNK, pos = 0;
+        uint64_t bits = chunk_bits(row + x, lb->span + x, lo, len);
+        while (pos < len) {
+            uint64_t rest = (open < 0 ? bits : ~bits) >> pos;
+            if (rest == 0)
+                break; /* the chunk ends as it is: outside, or in a run */
+            pos += trailing_zeros(rest);
+            if (pos >= len)
+                break;
+            if (open < 0) {
+                open = x + pos;
+            } else {
+                if ((e = add_run(lb, open, x + pos - 1, n, &j, prev_end)) != RL_OK)
+                    return e;
+                open = -1;
+            }
+        }
+    }
+    return open < 0 ? RL_OK : add_run(lb, open, width - 1, n, &j, prev_end);
 }
 
 /* The runs of pixels in [lo, hi) (hi per tile column of the row's tile
- * row when map is given), row by row. RL_ELIMIT past cap_runs. */
-static rl_err collect_runs(rl_label *lb, const rl_image *img, int lo, int hi, const rl_label_map *map)
+ * row when map is given), row by row. Past cap_runs the rows left are
+ * counted, not labelled. */
+static void collect_runs(rl_label *lb, const rl_image *img, int lo, int hi, const rl_label_map *map)
 {
-    int x, y, n = 0, prev_start = 0, prev_end = 0, sh = 0, even = 0;
-    const uint8_t *his = NULL;
-    rl_err e;
+    int y, n = 0, prev_start = 0, prev_end = 0, sh = 0;
+    int all = map == NULL && lo == 0 && hi >= 256; /* every pixel in the band */
     while (map && (1 << sh) < map->tile)
         sh++;
+    if (map == NULL)
+        row_spans(lb->span, img->width, lo, hi, NULL, 0);
     for (y = 0; y < img->height; y++) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
-        int start = n, j = prev_start;
-        if (map && (y & ((1 << sh) - 1)) == 0) {
-            his = map->hi + (size_t)(y >> sh) * (size_t)map->nx;
-            even = nearly_even(his, map->nx, &hi);
-        }
+        int start = n;
+        if (map && (y & ((1 << sh) - 1)) == 0)
+            row_spans(lb->span, img->width, lo, 256, map->hi + (size_t)(y >> sh) * (size_t)map->nx, sh);
         lb->row[y] = n;
-        x = 0;
-        while (x < img->width) {
-            int a, end = img->width, h = hi;
-            if (his && !even) {
-                /* one tile column at a time, each with its own threshold */
-                end = ((x >> sh) + 1) << sh;
-                end = end < img->width ? end : img->width;
-                h = his[x >> sh];
-            }
-            /* unsigned trick: lo <= v < hi  <=>  (v - lo) < (hi - lo) */
-            x = h > lo ? skip_outside(row, x, end, lo, h) : end;
-            if (x >= end)
-                continue;
-            if (even && (unsigned)(row[x] - lo) >= (unsigned)(his[x >> sh] - lo)) {
-                x++; /* under the row's largest threshold, not its own tile's */
-                continue;
-            }
-            a = x;
-            while (x < img->width &&
-                   (unsigned)(row[x] - lo) < (unsigned)((his ? his[x >> sh] : hi) - lo))
-                x++;
-            if ((e = add_run(lb, a, x - 1, &n, &j, prev_end)) != RL_OK) {
-                /* out of runs (a frame of noise or a fine pattern): the
-                 * rows before this one are labelled, this one and the rest
-                 * are left out and counted */
-                int k;
-                lb->rows_left = img->height - y;
-                n = lb->row[y];
-                for (k = y + 1; k <= img->height; k++)
-                    lb->row[k] = n;
-                lb->n_runs = n;
-                return RL_OK;
-            }
+        if (row_runs(lb, row, img->width, lo, all, &n, prev_start, prev_end) != RL_OK) {
+            /* out of runs (a frame of noise or a fine pattern): the rows
+             * before this one are labelled, this one and the rest are left
+             * out and counted */
+            int k;
+            lb->rows_left = img->height - y;
+            n = lb->row[y];
+            for (k = y + 1; k <= img->height; k++)
+                lb->row[k] = n;
+            lb->n_runs = n;
+            return;
         }
         prev_start = start;
         prev_end = n;
     }
     lb->row[img->height] = n;
     lb->n_runs = n;
-    return RL_OK;
 }
 
 /* Runs into regions (specks, and regions past cap_regions, dropped). */
@@ -271,14 +315,12 @@ static void region_stats(rl_label *lb)
 static rl_err label(rl_label *lb, const rl_image *img, int lo, int hi, const rl_label_map *map,
                     int min_area)
 {
-    rl_err e;
-    if (!rl_image_valid(img) || img->width > 65535 || img->height > lb->max_height)
+    if (!rl_image_valid(img) || img->width > lb->max_width || img->height > lb->max_height)
         return RL_EINVAL;
     lb->width = img->width;
     lb->height = img->height;
     lb->n_runs = lb->n_regions = lb->overflow = lb->rows_left = 0;
-    if ((e = collect_runs(lb, img, lo < 0 ? 0 : lo, hi, map)) != RL_OK)
-        return e;
+    collect_runs(lb, img, lo < 0 ? 0 : lo, hi, map);
     resolve_regions(lb, min_area);
     region_stats(lb);
     return RL_OK;

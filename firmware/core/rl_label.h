@@ -28,6 +28,7 @@ typedef struct {
 
 typedef struct {
     int width, height;        /* the image last labelled */
+    int max_width;            /* the widest image it labels (width at init) */
     int max_height;           /* rows the row index holds (height at init) */
     int cap_runs, cap_regions;
     int n_runs, n_regions;
@@ -37,19 +38,19 @@ typedef struct {
     int32_t *tag;             /* per run: union-find parent, then region index or -1 */
     int32_t *row;             /* row y's runs are row[y] .. row[y+1]-1 */
     rl_region *reg;
+    uint8_t *span;            /* per pixel of a row: its band's width above lo */
 } rl_label;
 
 /* Bytes rl_label_init takes from a workspace for these capacities. */
-size_t rl_label_bytes(int height, int cap_runs, int cap_regions);
+size_t rl_label_bytes(int width, int height, int cap_runs, int cap_regions);
 
 /* Carve the arrays from ws. RL_ENOMEM if ws is too small, RL_EINVAL for
  * bad sizes. */
 RL_CHECK rl_err rl_label_init(rl_label *lb, rl_ws *ws, int width, int height, int cap_runs,
                               int cap_regions);
 
-/* Label pixels with lo <= I < hi in img: any image up to 65535 wide and
- * at most as high as the height given at init (a frame, or a window of
- * it). Regions of fewer than min_area pixels are dropped. RL_EINVAL for a
+/* Label pixels with lo <= I < hi in img: any image at most as wide and
+ * as high as the size given at init (a frame, or a window of it). Regions of fewer than min_area pixels are dropped. RL_EINVAL for a
  * larger image. Neither limit is an error: past cap_runs (a frame of
  * noise, a fine pattern) the rows left are counted in lb->rows_left and
  * not labelled; regions past cap_regions are counted in lb->overflow. */

@@ -52,8 +52,13 @@ int rl_tones_vote(rl_tones *ts, const int *which, int n, const int *identified)
     other = best == 0 ? 1 : 0;
     for (k = 0; k < ts->n; k++)
         ts->votes[k] *= VOTE_FADE;
+    /* a tie with landmarks: the current curve does as well (on sharp
+     * frames both read alike, and the choice settles instead of reading
+     * every frame twice); a frame with none says nothing */
     if (identified[best] > identified[other])
         ts->votes[which[best]] += 1.0;
+    else if (identified[0] > 0)
+        ts->votes[which[0]] += 1.0;
     /* the current curve changes when the other leads it clearly */
     if (ts->votes[1 - ts->current] > ts->votes[ts->current] + SWITCH_LEAD)
         ts->current = 1 - ts->current;

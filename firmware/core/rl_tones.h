@@ -8,7 +8,8 @@
  * shrink and a few landmarks pass for their zone twins, so the curve is
  * not guessed: while unsettled, each frame's candidates are read through
  * both, and the curve that identifies more of them earns a vote (the
- * votes of past frames fade). The current curve (2.2 at first) gives way
+ * votes of past frames fade); where both identify as many, the current
+ * curve earns it (a frame with no landmark votes for neither). The current curve (2.2 at first) gives way
  * when the other leads it by a vote; a frame is read through the current
  * curve unless the other identifies two landmarks more there. Once one
  * curve leads by RL_TONES_SETTLE votes only it is read, and both again

@@ -1,0 +1,91 @@
+/* The tone curve's choice (rl_tones): votes worked out by hand. A vote
+ * fades by 0.9 a frame, so n frames that each give the same curve a vote
+ * leave it 10 (1 - 0.9^n): at least 6 (settled) from n = 9 on, 5.70 at
+ * n = 8. A frame whose curves identify as many landmarks (at least one)
+ * votes for the current curve; a frame with none votes for neither. */
+#include "rl_test.h"
+#include "rl_tones.h"
+
+/* One frame read through what rl_tones_to_try asks, the current curve
+ * identifying cur landmarks and the other one other; how many curves
+ * were read. */
+static int frame(rl_tones *ts, int cur, int other)
+{
+    int which[RL_TONES_MAX], found[RL_TONES_MAX], n = rl_tones_to_try(ts, which), k;
+    for (k = 0; k < n; k++)
+        found[k] = which[k] == ts->current ? cur : other;
+    rl_tones_vote(ts, which, n, found);
+    return n;
+}
+
+static void test_ties_settle_on_the_current_curve(void **state)
+{
+    rl_tones ts;
+    int i;
+    (void)state;
+    rl_tones_init(&ts, 0.0);
+    assert_true(rl_tones_gamma(&ts) == 2.2);
+    for (i = 0; i < 8; i++)
+        assert_int_equal(frame(&ts, 7, 7), 2);
+    assert_non_null(rl_tones_doubt(&ts, rl_tones_current(&ts))); /* 5.70 votes */
+    assert_int_equal(frame(&ts, 7, 7), 2);                        /* the ninth: 6.13 */
+    assert_null(rl_tones_doubt(&ts, rl_tones_current(&ts)));
+    assert_true(rl_tones_gamma(&ts) == 2.2);
+    /* settled: one curve a frame, both again on every 16th */
+    for (i = 9; i < 16; i++)
+        assert_int_equal(frame(&ts, 7, 7), 1);
+    assert_int_equal(frame(&ts, 7, 7), 2);
+    assert_int_equal(frame(&ts, 7, 7), 1);
+}
+
+static void test_empty_frames_do_not_vote(void **state)
+{
+    rl_tones ts;
+    int i;
+    (void)state;
+    rl_tones_init(&ts, 0.0);
+    for (i = 0; i < 40; i++)
+        assert_int_equal(frame(&ts, 0, 0), 2);
+    assert_non_null(rl_tones_doubt(&ts, rl_tones_current(&ts)));
+}
+
+static void test_the_better_curve_takes_over(void **state)
+{
+    rl_tones ts;
+    int which[RL_TONES_MAX];
+    (void)state;
+    rl_tones_init(&ts, 0.0);
+    /* two frames where the linear curve identifies one more: 1, then
+     * 1.9 votes against 0, a lead over 1: it becomes the current curve */
+    frame(&ts, 5, 6);
+    assert_true(rl_tones_gamma(&ts) == 2.2);
+    frame(&ts, 5, 6);
+    assert_true(rl_tones_gamma(&ts) == 1.0);
+    /* a frame is read through the other curve when it finds two more */
+    assert_int_equal(rl_tones_to_try(&ts, which), 2);
+    assert_int_equal(rl_tones_vote(&ts, which, 2, (int[]){3, 5}), 1);
+    assert_int_equal(rl_tones_to_try(&ts, which), 2);
+    assert_int_equal(rl_tones_vote(&ts, which, 2, (int[]){4, 5}), 0);
+}
+
+static void test_a_configured_curve_is_the_only_one(void **state)
+{
+    rl_tones ts;
+    int which[RL_TONES_MAX];
+    (void)state;
+    rl_tones_init(&ts, 1.8);
+    assert_int_equal(rl_tones_to_try(&ts, which), 1);
+    assert_true(rl_tones_gamma(&ts) == 1.8);
+    assert_null(rl_tones_doubt(&ts, rl_tones_current(&ts)));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_ties_settle_on_the_current_curve),
+        cmocka_unit_test(test_empty_frames_do_not_vote),
+        cmocka_unit_test(test_the_better_curve_takes_over),
+        cmocka_unit_test(test_a_configured_curve_is_the_only_one),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
