@@ -273,6 +273,10 @@ static void test_labelling_limits(void **)
     assert_int_equal(lb.width, 20);
     rl_image taller = rl_image_view(40, 41, 40, dots.data);
     assert_int_equal(rl_label_band(&lb, &taller, 0, 128, 1), RL_EINVAL);
+    // and a wider one (a row's band widths are held for the width at init)
+    cv::Mat wide(40, 41, CV_8U, cv::Scalar(255));
+    rl_image wider = rl_image_view(41, 40, 41, wide.data);
+    assert_int_equal(rl_label_band(&lb, &wider, 0, 128, 1), RL_EINVAL);
 }
 
 // Direct Pearson over pixels within 1.2 R against a template evaluated per

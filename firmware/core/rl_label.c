@@ -158,15 +158,11 @@ static uint8_t band_span(int lo, int hi)
     return (uint8_t)(hi <= lo ? 0 : hi - lo > 255 ? 255 : hi - lo);
 }
 
-/* Each pixel's band width in span[0 .. width - 1]: its tile's threshold
- * (his, tiles of 1 << sh) or hi for every pixel. */
-static void row_spans(uint8_t *span, int width, int lo, int hi, const uint8_t *his, int sh)
+/* Each pixel's band width in span[0 .. width - 1] under its tile's
+ * threshold (his, tiles of 1 << sh). */
+static void tile_spans(uint8_t *span, int width, int lo, const uint8_t *his, int sh)
 {
     int x, t;
-    if (his == NULL) {
-        memset(span, band_span(lo, hi), (size_t)width);
-        return;
-    }
     for (t = 0, x = 0; x < width; t++) {
         int end = (t + 1) << sh;
         end = end < width ? end : width;
@@ -216,12 +212,12 @@ static void collect_runs(rl_label *lb, const rl_image *img, int lo, int hi, cons
     while (map && (1 << sh) < map->tile)
         sh++;
     if (map == NULL)
-        row_spans(lb->span, img->width, lo, hi, NULL, 0);
+        memset(lb->span, band_span(lo, hi), (size_t)img->width);
     for (y = 0; y < img->height; y++) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
         int start = n;
         if (map && (y & ((1 << sh) - 1)) == 0)
-            row_spans(lb->span, img->width, lo, 256, map->hi + (size_t)(y >> sh) * (size_t)map->nx, sh);
+            tile_spans(lb->span, img->width, lo, map->hi + (size_t)(y >> sh) * (size_t)map->nx, sh);
         lb->row[y] = n;
         if (row_runs(lb, row, img->width, lo, all, &n, prev_start, prev_end) != RL_OK) {
             /* out of runs (a frame of noise or a fine pattern): the rows
