@@ -135,12 +135,39 @@ static void test_moved_profiles(void **state)
         fail_msg("rescaled to the true radius: score %.3f", back.score);
 }
 
+/* The octants' directions after a gather are the odd multiples of 22.5
+ * degrees, each once; an octant's opposite points the other way, its
+ * mirror image has x's sign flipped (the octant numbering of rl_polar.h:
+ * 4 for x < 0, 2 for y < 0, 1 for |x| > |y|). */
+static void test_octant_directions(void **state)
+{
+    int o, seen = 0;
+    rl_image img = draw(13, 300.0, 300.0, 24.0);
+    (void)state;
+    rl_polar_gather(&img, &tone, 300.0, 300.0, 24.0, LIGHT, 20.0, &pol);
+    assert_int_equal(RL_POLAR_OCTANTS, 8);
+    assert_int_equal(RL_POLAR_ALL, 0xFF);
+    for (o = 0; o < RL_POLAR_OCTANTS; o++) {
+        int p = rl_polar_opposite(o), m = rl_polar_mirror(o), k;
+        double deg = atan2(pol.uy[o], pol.ux[o]) * 180.0 / M_PI;
+        k = (int)floor((deg < 0 ? deg + 360.0 : deg) / 45.0);
+        assert_true(fabs((deg < 0 ? deg + 360.0 : deg) - (45.0 * k + 22.5)) < 1e-6);
+        seen |= 1 << k;
+        assert_true((pol.ux[o] < 0) == ((o & 4) != 0) && (pol.uy[o] < 0) == ((o & 2) != 0));
+        assert_true((fabs(pol.ux[o]) > fabs(pol.uy[o])) == ((o & 1) != 0));
+        assert_true(fabs(pol.ux[p] + pol.ux[o]) < 1e-9 && fabs(pol.uy[p] + pol.uy[o]) < 1e-9);
+        assert_true(fabs(pol.ux[m] + pol.ux[o]) < 1e-9 && fabs(pol.uy[m] - pol.uy[o]) < 1e-9);
+    }
+    assert_int_equal(seen, 0xFF);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_counts_small),
         cmocka_unit_test(test_counts_large),
         cmocka_unit_test(test_moved_profiles),
+        cmocka_unit_test(test_octant_directions),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

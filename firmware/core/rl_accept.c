@@ -21,8 +21,7 @@ double rl_accept_lead(const rl_match *m)
 
 int rl_accept(const rl_accept_rule *rule, const rl_match *m, double span)
 {
-    return m->id >= 0 && m->score >= rule->min_score &&
-           (1.0 - m->second * m->second) >= rule->min_lead * (1.0 - m->score * m->score) &&
+    return m->id >= 0 && m->score >= rule->min_score && rl_accept_lead(m) >= rule->min_lead &&
            m->contrast >= rule->min_contrast * span && m->blur <= rule->max_blur;
 }
 

@@ -70,15 +70,35 @@ static rl_shape region_shape(const rl_label *lb, int i)
 #define HALF_SPAN 0.8
 #define HALF_WHOLE 1.25
 
-static int longer_side(const rl_region *g)
+/* The larger side of a box. */
+static int box_size(const rl_box *b)
 {
-    int bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
-    return bw > bh ? bw : bh;
+    int w = b->x1 - b->x0 + 1, h = b->y1 - b->y0 + 1;
+    return w > h ? w : h;
 }
 
+static rl_box region_box(const rl_region *g)
+{
+    rl_box b;
+    b.x0 = g->x0;
+    b.y0 = g->y0;
+    b.x1 = g->x1;
+    b.y1 = g->y1;
+    return b;
+}
+
+static int longer_side(const rl_region *g)
+{
+    rl_box b = region_box(g);
+    return box_size(&b);
+}
+
+/* Long enough to be part of a ring, no longer than a whole one (a wall,
+ * a fixture: they would take the places of arcs). */
 static int arc_like(const rl_region *g, const rl_recog_config *cfg)
 {
-    return longer_side(g) >= 1.4 * cfg->min_radius;
+    int side = longer_side(g);
+    return side >= 1.4 * cfg->min_radius && side <= 2 * cfg->max_radius;
 }
 
 static double box_area(const rl_region *g)
@@ -118,6 +138,20 @@ static int arcs_close(const rl_region *a, const rl_region *b, const rl_recog_con
            cut_candidate(u, cfg, W, H);
 }
 
+/* Candidate (box, shape) after the n in cand, or counted dropped at cap;
+ * the new count. */
+static int add_candidate(rl_clr *cand, int n, int cap, const rl_box *box, rl_shape shape,
+                         rl_result *res)
+{
+    if (n == cap) {
+        res->dropped.candidates++;
+        return n;
+    }
+    cand[n].box = *box;
+    cand[n].shape = shape;
+    return n + 1;
+}
+
 /* The closed rings of the arcs kept, as candidates after the n in cand. */
 static int close_arcs(const rl_region *arcs, int na, const rl_recog_config *cfg, int W, int H,
                       rl_result *res, rl_clr *cand, int n, int cap)
@@ -126,17 +160,11 @@ static int close_arcs(const rl_region *arcs, int na, const rl_recog_config *cfg,
     for (i = 0; i < na; i++)
         for (j = i + 1; j < na; j++) {
             rl_region u;
+            rl_box b;
             if (!arcs_close(&arcs[i], &arcs[j], cfg, W, H, &u))
                 continue;
-            if (n == cap) {
-                res->dropped.candidates++;
-                continue;
-            }
-            cand[n].box.x0 = u.x0;
-            cand[n].box.y0 = u.y0;
-            cand[n].box.x1 = u.x1;
-            cand[n].box.y1 = u.y1;
-            cand[n++].shape = rl_shape_circle();
+            b = region_box(&u);
+            n = add_candidate(cand, n, cap, &b, rl_shape_circle(), res);
         }
     return n;
 }
@@ -149,32 +177,21 @@ int rl_clr_find(const rl_label *lb, const rl_recog_config *cfg, rl_result *res, 
     for (i = 0; i < lb->n_regions; i++) {
         const rl_region *g = &lb->reg[i];
         int cut = touches_border(g, W, H), ring = !cut && ring_shaped(g, cfg);
-        rl_box b;
-        b.x0 = g->x0;
-        b.y0 = g->y0;
-        b.x1 = g->x1;
-        b.y1 = g->y1;
+        rl_box b = region_box(g);
         /* any region but a closed ring may be half of a broken one (a
-         * cut candidate too: the half the border does not cut is apart) */
-        if (!ring && na < ARCS_MAX && arc_like(g, cfg))
-            arcs[na++] = *g;
+         * cut candidate too: the half the border does not cut is apart);
+         * arcs past ARCS_MAX are counted with the candidates dropped */
+        if (!ring && arc_like(g, cfg)) {
+            if (na < ARCS_MAX)
+                arcs[na++] = *g;
+            else
+                res->dropped.candidates++;
+        }
         if (cut ? !cut_candidate(g, cfg, W, H) : !ring && !broken_by_light(g, cfg, res, &b))
             continue;
-        if (n == cap) {
-            res->dropped.candidates++;
-            continue;
-        }
-        cand[n].box = b;
-        cand[n++].shape = ring ? region_shape(lb, i) : rl_shape_circle();
+        n = add_candidate(cand, n, cap, &b, ring ? region_shape(lb, i) : rl_shape_circle(), res);
     }
     return close_arcs(arcs, na, cfg, W, H, res, cand, n, cap);
-}
-
-/* The larger side of a box. */
-static int box_size(const rl_box *b)
-{
-    int w = b->x1 - b->x0 + 1, h = b->y1 - b->y0 + 1;
-    return w > h ? w : h;
 }
 
 /* A code ring's box is at least 0.36 of its landmark's outer ring (the

@@ -200,8 +200,8 @@ static int octant_in_frame(const rl_polar *pol, int o, int W, int H, double cx, 
     double t = atan2(pol->uy[o], pol->ux[o]);
     int e, in = 1;
     for (e = -1; e <= 1; e++) {
-        double x = cx + AXIS_REACH * r * cos(t + e * M_PI / 8);
-        double y = cy + AXIS_REACH * r * sin(t + e * M_PI / 8);
+        double x = cx + AXIS_REACH * r * cos(t + e * M_PI / RL_POLAR_OCTANTS);
+        double y = cy + AXIS_REACH * r * sin(t + e * M_PI / RL_POLAR_OCTANTS);
         in &= x >= 0 && y >= 0 && x <= W - 1 && y <= H - 1;
     }
     return in;
@@ -214,14 +214,17 @@ static int octant_in_frame(const rl_polar *pol, int o, int W, int H, double cx, 
  * horizontal: a lamp or a shadow on the other side), wholly in the frame;
  * then the half of an axis the border cuts that is in it (the other half
  * reads a zone twin as well as the code). Returns how many in all. */
-#define READS_MAX (3 * RL_POLAR_AXES)
+#define READS_MAX (2 * RL_POLAR_AXES) /* an axis or its half, and a pair */
 static int reads_in_frame(const rl_polar *pol, int W, int H, double cx, double cy, double r,
                           unsigned *reads, int *whole)
 {
     unsigned half[RL_POLAR_AXES], in = 0;
     int a, n = 0, nh = 0;
-    for (a = 0; a < RL_POLAR_OCTANTS; a++)
-        in |= octant_in_frame(pol, a, W, H, cx, cy, r) ? 1u << a : 0;
+    if (rl_geom_disk_complete(W, H, cx, cy, AXIS_REACH * r + 0.5)) /* within 0 .. W - 1 */
+        in = RL_POLAR_ALL; /* most candidates: no octant to test */
+    else
+        for (a = 0; a < RL_POLAR_OCTANTS; a++)
+            in |= octant_in_frame(pol, a, W, H, cx, cy, r) ? 1u << a : 0;
     for (a = 0; a < RL_POLAR_AXES; a++) {
         unsigned axis = 1u << a | 1u << rl_polar_opposite(a), side = 1u << a | 1u << rl_polar_mirror(a);
         if ((in & axis) == axis)
@@ -301,13 +304,13 @@ static int read_across(const rl_recog *rec, const rl_accept_rule *rule, const lo
         return 0;
     n = reads_in_frame(rec->polar, W, H, rd->cx, rd->cy, rd->r, reads, &whole);
     rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, reads, whole, &ma);
-    if (ma.id == rd->m.id && local_accept(rule, &ma, W, H, rd->cx, rd->cy, rd->r, 255.0))
-        return 1;
+    if (local_accept(rule, &ma, W, H, rd->cx, rd->cy, rd->r, 255.0))
+        return 1; /* ma names the circle's id, or none */
     if (half.min_lead < HALF_READ_LEAD)
         half.min_lead = HALF_READ_LEAD;
     rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, reads + whole,
                             n - whole, &ma);
-    return ma.id == rd->m.id && local_accept(&half, &ma, W, H, rd->cx, rd->cy, rd->r, 255.0);
+    return local_accept(&half, &ma, W, H, rd->cx, rd->cy, rd->r, 255.0);
 }
 
 /* A cut landmark whose edge fit came out small (a circle through what is

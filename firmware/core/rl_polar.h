@@ -88,7 +88,7 @@ int rl_polar_opposite(int o);
 int rl_polar_mirror(int o);
 
 /* Every octant, as a mask (bit o: octant o). */
-#define RL_POLAR_ALL 0xFFu
+#define RL_POLAR_ALL ((1u << RL_POLAR_OCTANTS) - 1)
 
 /* As rl_polar_profile, from the octants of the mask alone (an axis: the
  * directions across a motion, where it smears the rings least). */

@@ -106,7 +106,8 @@ typedef struct {
                           run capacity were left out (never examined) */
     int lights;        /* light regions past RL_MAX_LIGHTS, plus one when rows past the
                           run capacity were left out */
-    int candidates;    /* CLRs past RL_MAX_CANDIDATES, unidentified ones included */
+    int candidates;    /* CLRs past RL_MAX_CANDIDATES, unidentified ones included, and
+                          arcs of broken rings past the 48 kept for pairing */
     int landmarks;     /* identified landmarks past RL_MAX_LANDMARKS */
 } rl_dropped;
 
