@@ -9,6 +9,11 @@ uint64_t rl_clock_now_us(void)
     return (uint64_t)ts.tv_sec * 1000000u + (uint64_t)ts.tv_nsec / 1000u;
 }
 
+double rl_clock_now_s(void)
+{
+    return (double)rl_clock_now_us() * 1e-6;
+}
+
 void rl_clock_sleep_us(uint64_t us)
 {
     struct timespec ts;

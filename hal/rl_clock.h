@@ -16,6 +16,9 @@
 /* CLOCK_MONOTONIC in microseconds. */
 uint64_t rl_clock_now_us(void);
 
+/* The same in seconds (tools' and commands' time stamps). */
+double rl_clock_now_s(void);
+
 /* Sleep for us microseconds (signals may cut it short). */
 void rl_clock_sleep_us(uint64_t us);
 

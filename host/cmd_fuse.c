@@ -54,11 +54,6 @@ typedef struct {
     unsigned long status, damaged;
 } frame_list;
 
-static double now_s(void)
-{
-    return (double)rl_clock_now_us() * 1e-6;
-}
-
 static int push(frame_list *l, const timed_frame *tf)
 {
     if (l->n == l->cap) {
@@ -88,7 +83,7 @@ static int take(frame_list *l, rl_decoder *d, const uint8_t *buf, size_t n, int 
             continue;
         }
         if (live) {
-            tf.arrival = now_s();
+            tf.arrival = rl_clock_now_s();
             rl_fuse_frame_from_msg(&m, tf.arrival, baud, &tf.fr);
         } else {
             double delay;

@@ -6,6 +6,7 @@
 #include <time.h>
 #include <unistd.h>
 #include "rl_cli.h"
+#include "rl_clock.h"
 #include "rl_cmd.h"
 #include "rl_mapfile.h"
 #include "rl_outfile.h"
@@ -231,7 +232,7 @@ int rl_cmd_survey(int argc, char **argv)
     const rl_map *old = &old_site.map;
     rl_site_files files;
     static rl_survey_move mv[RL_MAX_MAP_LANDMARKS];
-    struct timespec t0, t1;
+    double t0;
     char err[600];
     int i, r, n_mv = 0, code = 0;
     rl_err e;
@@ -260,7 +261,7 @@ int rl_cmd_survey(int argc, char **argv)
     cfg.origin_id = a.origin;
     cfg.axis_id = a.axis;
     cfg.pixel_scale = sqrt(site.calib.fx * site.calib.fy);
-    clock_gettime(CLOCK_MONOTONIC, &t0);
+    t0 = rl_clock_now_s();
     rl_survey_init(&sv, &cfg);
     rl_survey_input_init(&in, &site.calib, &rc.family, &sv, &site);
     in.progress = isatty(2);
@@ -285,9 +286,8 @@ int rl_cmd_survey(int argc, char **argv)
         goto out;
     }
     tell(&sv);
-    clock_gettime(CLOCK_MONOTONIC, &t1);
     report(&sv, in.frames + in.unreadable, in.unreadable, a.old ? mv : NULL, n_mv,
-           (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
+           rl_clock_now_s() - t0);
 out:
     rl_survey_free(&sv);
     rl_site_free(&site);

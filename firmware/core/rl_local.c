@@ -183,7 +183,7 @@ static int local_ellipse(const rl_recog *rec, const rl_image *img, const rl_resu
 static rl_accept_rule moving_cut_rule(const rl_accept_rule *rule, const rl_match *m, double visible)
 {
     rl_accept_rule r = *rule;
-    if (visible < 1.0 && m->blur >= 3 && m->blur <= 5 && r.min_lead < MOVING_CUT_LEAD)
+    if (visible < 1.0 && rl_templates_moving(m->blur) && r.min_lead < MOVING_CUT_LEAD)
         r.min_lead = MOVING_CUT_LEAD;
     return r;
 }
@@ -303,13 +303,14 @@ static int read_across(const rl_recog *rec, const rl_accept_rule *rule, const lo
     if (rd->m.id < 0 || rd->m.score < rule->min_score)
         return 0;
     n = reads_in_frame(rec->polar, W, H, rd->cx, rd->cy, rd->r, reads, &whole);
-    rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, reads, whole, &ma);
+    rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, rule->max_blur,
+                            reads, whole, &ma);
     if (local_accept(rule, &ma, W, H, rd->cx, rd->cy, rd->r, 255.0))
         return 1; /* ma names the circle's id, or none */
     if (half.min_lead < HALF_READ_LEAD)
         half.min_lead = HALF_READ_LEAD;
-    rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, reads + whole,
-                            n - whole, &ma);
+    rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, rule->max_blur,
+                            reads + whole, n - whole, &ma);
     return local_accept(&half, &ma, W, H, rd->cx, rd->cy, rd->r, 255.0);
 }
 

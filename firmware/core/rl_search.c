@@ -106,7 +106,8 @@ static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, do
 }
 
 void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double cx, double cy,
-                             double r, int id, const unsigned *reads, int n_reads, rl_match *m)
+                             double r, int id, int max_blur, const unsigned *reads, int n_reads,
+                             rl_match *m)
 {
     double x = cx - pol->cx, y = cy - pol->cy, s = r / pol->r;
     int a;
@@ -117,7 +118,7 @@ void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double
         rl_match ma;
         rl_polar_profile_octants(pol, x, y, s, reads[a], &p);
         rl_match_all(tt, &p, &ma);
-        if (ma.id != id || ma.blur == RL_BLUR_LEVELS - 1)
+        if (ma.id != id || ma.blur > max_blur)
             continue; /* another code, or smeared: along the motion */
         twin_check(tt, pol, x, y, s, reads[a], &ma);
         if (m->id < 0 || rl_accept_lead(&ma) > rl_accept_lead(m))

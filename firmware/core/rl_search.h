@@ -45,8 +45,10 @@ void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *i
  * (rl_polar_profile_octants): an axis, or the half of one in the frame.
  * Of the reads whose best id is `id`, the one where it leads its
  * runner-up (the winner's zone twins there included) most, into *m;
- * m->id < 0 when none reads `id`. */
+ * m->id < 0 when none reads `id` at a blur level up to max_blur (a read
+ * along the motion matches the softest). */
 void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double cx, double cy,
-                             double r, int id, const unsigned *reads, int n_reads, rl_match *m);
+                             double r, int id, int max_blur, const unsigned *reads, int n_reads,
+                             rl_match *m);
 
 #endif

@@ -44,6 +44,11 @@ float rl_templates_bin(const rl_templates *tt, int i, int blur, int k)
     return tt->table[table_index(tt, i, blur, k)];
 }
 
+int rl_templates_moving(int blur)
+{
+    return blur >= 0 && blur < RL_BLUR_LEVELS && blur_levels[blur].motion > 0;
+}
+
 int rl_templates_find(const rl_templates *tt, int id)
 {
     int i;

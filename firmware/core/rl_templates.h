@@ -57,6 +57,9 @@ double rl_templates_value_at(const rl_family *fam, int id, double rho, double si
 /* Table value of the i-th id at a blur level in bin k. */
 float rl_templates_bin(const rl_templates *tt, int i, int blur, int k);
 
+/* 1 for a blur level with motion (its template averages every direction). */
+int rl_templates_moving(int blur);
+
 /* Index of `id` among tt->ids, or -1. */
 int rl_templates_find(const rl_templates *tt, int id);
 

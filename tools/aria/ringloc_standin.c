@@ -46,11 +46,6 @@ static const char *help =
     "  --seconds S        stop after S seconds (default: when the client closes)\n"
     "  --start X,Y,YAW    the true start in the map (default 1,1,0)\n";
 
-static double now_s(void)
-{
-    return (double)rl_clock_now_us() * 1e-6;
-}
-
 typedef struct {
     standin_robot robot;
     int lfd, cfd;          /* listening socket, client (-1: none) */
@@ -216,11 +211,11 @@ static int parse_start(const char *arg, double *x, double *y, double *yaw)
 /* the drive until stopped: 1 ms steps, SIPs, frames, the truth */
 static void run(standin *s, double seconds, FILE *truth)
 {
-    double t0 = now_s(), last = t0, next_sip = t0, next_frame = t0, next_truth = t0;
+    double t0 = rl_clock_now_s(), last = t0, next_sip = t0, next_frame = t0, next_truth = t0;
     while (!rl_stop_requested()) {
         double t;
         network(s);
-        t = now_s();
+        t = rl_clock_now_s();
         standin_step(&s->robot, t - last);
         last = t;
         if (s->open && s->cfd >= 0 && t >= next_sip) {
