@@ -256,6 +256,67 @@ static void test_code_ring_of_merged_landmark_is_not_a_landmark(void **state)
     assert_true(found_dark);
 }
 
+/* Landmarks beside a lamp, in its glow: a ceiling brightening to the
+ * lamp (255) over `glow` px, the lamp starting `gap` px past the outer
+ * ring's right edge, a sheet reaching 1 px past the ring on both sides (a
+ * narrow margin) and 1.33 R up and down. The glow lifts the ring's right
+ * side past the frame's threshold, so the local pass must find it; and
+ * glow covers more of its window than the landmark does, so a threshold
+ * midway between the window's two classes falls between paper and glow
+ * and every pixel is dark. In the first scene the landmark's own square
+ * (the local levels) gives a threshold that works; in the second that
+ * one still joins the ring to the glow's foot, and a threshold nearer the
+ * ink does. The landmark is found where it was drawn (the glow pulls the
+ * fitted centre by up to 2 px), and nothing else. */
+typedef struct {
+    int id, ink, paper, ceiling, gap, glow;
+} glow_scene;
+
+static void test_landmark_in_lamp_glow_is_found(void **state)
+{
+    static const glow_scene scenes[] = {{9, 60, 150, 210, 5, 25}, {24, 90, 200, 210, 0, 40}};
+    static uint8_t t[H * W];
+    rl_recog_config cfg;
+    rl_family f = {5};
+    rl_image img = rl_image_view(W, H, W, frame), tv = rl_image_view(W, H, W, t);
+    const double cx = 160.3, cy = 120.6, r = 25.0;
+    size_t k;
+    int x, y, j;
+    (void)state;
+    for (k = 0; k < sizeof scenes / sizeof scenes[0]; k++) {
+        const glow_scene *sc = &scenes[k];
+        const int lamp = (int)(cx + r) + sc->gap;
+        int found = 0;
+        assert_int_equal(rl_raster_draw(&f, sc->id, cx, cy, r, NULL, &tv, NULL), RL_OK);
+        for (y = 0; y < H; y++)
+            for (x = 0; x < W; x++) {
+                double v = fabs(x - cx) <= r + 1 && fabs(y - cy) <= 1.33 * r
+                               ? sc->paper - (sc->paper - sc->ink) * t[y * W + x] / 255.0
+                               : sc->ceiling;
+                if (x >= lamp)
+                    v = 255;
+                else if (x >= lamp - sc->glow)
+                    v += (255 - v) * (x - (lamp - sc->glow)) / (double)sc->glow;
+                frame[y * W + x] = (uint8_t)lround(v);
+            }
+        rl_recog_defaults(&cfg);
+        init(&cfg);
+        assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
+        for (j = 0; j < res.n_landmarks; j++) {
+            const rl_detection *d = &res.landmarks[j];
+            if (d->id == sc->id && hypot(d->u - cx, d->v - cy) < 2.5 && fabs(d->radius - r) < 0.1 * r) {
+                found = 1;
+                continue;
+            }
+            fail_msg("scene %d, %s pass: id %d of radius %.1f at (%.1f, %.1f); drawn: id %d of "
+                     "radius %.1f at (%.1f, %.1f)", (int)k, d->pass == RL_PASS_LOCAL ? "local" : "global",
+                     d->id, d->radius, d->u, d->v, sc->id, r, cx, cy);
+        }
+        if (!found)
+            fail_msg("scene %d: id %d not found", (int)k, sc->id);
+    }
+}
+
 /* A fine checkerboard has a run every pixel or two, more than the run
  * capacity (RL_PIXELS_PER_RUN): the frame is recognized as far as the
  * capacity goes, the rest counted as left out, never an error. */
@@ -465,6 +526,7 @@ int main(void)
         cmocka_unit_test(test_inner_ring_is_not_a_landmark),
         cmocka_unit_test(test_soft_blob_next_to_light_is_not_a_landmark),
         cmocka_unit_test(test_code_ring_of_merged_landmark_is_not_a_landmark),
+        cmocka_unit_test(test_landmark_in_lamp_glow_is_found),
         cmocka_unit_test(test_map_restricts_ids),
         cmocka_unit_test(test_blank_frames),
         cmocka_unit_test(test_errors),

@@ -40,16 +40,32 @@ static int local_window(const rl_result *res, const rl_detection *u, double R, r
     return w->x1 - w->x0 >= 8 && w->y1 - w->y0 >= 8;
 }
 
-/* Local clustering: the window's dark/paper threshold by K-means on its
- * histogram, light excluded; 0 when the window has no clear contrast. */
-static int local_threshold(const rl_image *win, const rl_tone *tone, int light, int *thr)
+/* Local clustering: the dark/paper threshold by K-means on the histogram
+ * of the landmark's own square (LEVELS_RADII about the candidate, inside
+ * the window), light excluded; into *thr, and the ink's level into *ink.
+ * Not the whole window: beside a lamp its glare is the brightest class,
+ * and the midway would fall between paper and glare. 0 when the square
+ * has no clear contrast. */
+#define LEVELS_RADII 1.0
+static int local_threshold(const rl_image *img, const rl_box *w, const rl_detection *u, double R,
+                           const rl_tone *tone, int light, int *thr, double *ink)
 {
-    double centre[2];
+    double centre[2], half = LEVELS_RADII * R;
+    int x0 = (int)floor(u->u - half), x1 = (int)ceil(u->u + half);
+    int y0 = (int)floor(u->v - half), y1 = (int)ceil(u->v + half);
+    rl_image sq;
     rl_hist h;
-    rl_hist_compute_rows(win, &h, 4); /* every fourth row: over a thousand pixels still */
+    x0 = x0 < w->x0 ? w->x0 : x0;
+    y0 = y0 < w->y0 ? w->y0 : y0;
+    x1 = x1 > w->x1 ? w->x1 : x1;
+    y1 = y1 > w->y1 ? w->y1 : y1;
+    if (x1 - x0 < 8 || y1 - y0 < 8 || rl_image_sub(img, x0, y0, x1 - x0 + 1, y1 - y0 + 1, &sq) != RL_OK)
+        return 0;
+    rl_hist_compute_rows(&sq, &h, 4); /* every fourth row: 600 pixels at 25 px */
     if (rl_hist_kmeans(&h, 0, light, 2, centre, NULL) != RL_OK || centre[1] - centre[0] < 8.0)
         return 0;
     *thr = rl_tone_midway(tone, centre[0], centre[1]);
+    *ink = centre[0];
     return 1;
 }
 
@@ -75,6 +91,12 @@ static int local_outer_ring(const rl_label *lb, const rl_box *w, const rl_detect
 
 #define LOCATE_SIZE_TOLERANCE 0.45
 
+/* Thresholds tried, each midway between the ink and the one before: the
+ * first may join the outer ring to its surroundings (a ceiling darker
+ * than the paper past a narrow margin, paper dimmed away from a lamp)
+ * into one region too large for a landmark. */
+#define LOCATE_STEPS 3
+
 /* Window, threshold, outer ring and its edge: the candidate's box and its
  * centre and radius in the frame; 0 when any step finds nothing. */
 static int local_locate(rl_recog *rec, const rl_image *img, const rl_result *res,
@@ -84,13 +106,20 @@ static int local_locate(rl_recog *rec, const rl_image *img, const rl_result *res
     rl_image win;
     rl_box w;
     rl_edge_window ew;
-    int thr, reg, light = res->levels.light;
-    double tx, ty, tr = R;
+    int thr, reg = -1, step, light = res->levels.light;
+    double ink, tx, ty, tr = R;
     if (!local_window(res, u, R, &w) ||
         rl_image_sub(img, w.x0, w.y0, w.x1 - w.x0 + 1, w.y1 - w.y0 + 1, &win) != RL_OK ||
-        !local_threshold(&win, rec->tone, light, &thr) ||
-        rl_label_band(&rec->dark, &win, 0, thr, rl_recog_speck_area(&rec->cfg)) != RL_OK ||
-        (reg = local_outer_ring(&rec->dark, &w, u, R)) < 0)
+        !local_threshold(img, &w, u, R, rec->tone, light, &thr, &ink))
+        return 0;
+    for (step = 0; step < LOCATE_STEPS && reg < 0; step++) {
+        if (step > 0)
+            thr = rl_tone_midway(rec->tone, ink, thr);
+        if (rl_label_band(&rec->dark, &win, 0, thr, rl_recog_speck_area(&rec->cfg)) != RL_OK)
+            return 0;
+        reg = local_outer_ring(&rec->dark, &w, u, R);
+    }
+    if (reg < 0)
         return 0;
     box->x0 = w.x0 + rec->dark.reg[reg].x0;
     box->y0 = w.y0 + rec->dark.reg[reg].y0;
@@ -175,16 +204,20 @@ static int local_ellipse(const rl_recog *rec, const rl_image *img, const rl_resu
     return 1;
 }
 
-/* The rule for a match at a moving template on a landmark the border
- * cuts: the moving templates average every direction of the motion, and a
- * cut landmark shows only some of them, so its lead over the runner-up
- * must be larger (a zone twin can fit the directions that are left). */
+/* The rule for a match on a landmark the border cuts: a circle fitted to
+ * what is left of it can be a tenth off in size, and at a radius that
+ * much off a zone twin comes close, so its lead over the runner-up must
+ * be CUT_LEAD; at a moving template MOVING_CUT_LEAD, as the moving
+ * templates average every direction of the motion and a cut landmark
+ * shows only some of them (a zone twin can fit the directions left). */
+#define CUT_LEAD 1.5
 #define MOVING_CUT_LEAD 1.6
-static rl_accept_rule moving_cut_rule(const rl_accept_rule *rule, const rl_match *m, double visible)
+static rl_accept_rule cut_rule(const rl_accept_rule *rule, const rl_match *m, double visible)
 {
     rl_accept_rule r = *rule;
-    if (visible < 1.0 && rl_templates_moving(m->blur) && r.min_lead < MOVING_CUT_LEAD)
-        r.min_lead = MOVING_CUT_LEAD;
+    double lead = rl_templates_moving(m->blur) ? MOVING_CUT_LEAD : CUT_LEAD;
+    if (visible < 1.0 && r.min_lead < lead)
+        r.min_lead = lead;
     return r;
 }
 
@@ -241,13 +274,13 @@ static int reads_in_frame(const rl_polar *pol, int W, int H, double cx, double c
 }
 
 /* A match taken by the local pass: the rule, with the larger lead of a
- * moving template where the landmark at (cx, cy, r) is cut, as that
- * match's own template is; span as rl_accept's (255 on the polar cells'
+ * landmark the border cuts (cut_rule) where the one at (cx, cy, r) is;
+ * span as rl_accept's (255 on the polar cells'
  * sector-normalized levels). */
 static int local_accept(const rl_accept_rule *rule, const rl_match *m, int W, int H, double cx, double cy,
                         double r, double span)
 {
-    rl_accept_rule mr = moving_cut_rule(rule, m, rl_geom_visible_in(W, H, cx, cy, r));
+    rl_accept_rule mr = cut_rule(rule, m, rl_geom_visible_in(W, H, cx, cy, r));
     return rl_accept(&mr, m, span);
 }
 

@@ -102,6 +102,7 @@ static rl_err layout(rl_ws *ws, const rl_recog_config *cfg, int w, int h, rl_rec
         (e = rl_label_init(&r->dark, ws, w, h, runs, RL_MAX_REGIONS)) != RL_OK ||
         (e = rl_label_init(&r->light, ws, w, (h + 1) / 2, runs / 4, RL_MAX_LIGHTS * 8)) != RL_OK ||
         (e = rl_illum_init(&r->illum, ws, w, h)) != RL_OK ||
+        (e = rl_split_init(&r->split, ws, &r->illum.map)) != RL_OK ||
         (e = rl_ws_alloc(ws, sizeof(rl_polar), RL_WS_ALIGN, (void **)&r->polar)) != RL_OK)
         return e;
     return RL_OK;
@@ -268,8 +269,11 @@ rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
     /* regions never examined: past the capacity, or in rows past the
      * run capacity (at least one there) */
     res->dropped.regions = rec->dark.overflow + (rec->dark.rows_left > 0);
-    /* 3. CLR extraction */
+    /* 3. CLR extraction, and the landmarks the ceiling beside them joined
+     *    into regions too large for a CLR (labelled again nearer the ink) */
     ncand = rl_clr_find(&rec->dark, &rec->cfg, res, cand, RL_MAX_CANDIDATES);
+    ncand = rl_split_find(&rec->split, &rec->illum.map, &rec->dark, img, &rec->cfg, speck, res, cand,
+                          ncand, RL_MAX_CANDIDATES);
     /* 4. identification: ICLRs and UCLRs */
     identify_clrs(rec, img, cand, ncand, res);
     rl_filter_duplicates(res);

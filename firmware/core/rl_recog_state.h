@@ -16,6 +16,7 @@
 #include "rl_label.h"
 #include "rl_polar.h"
 #include "rl_recog.h"
+#include "rl_split.h"
 #include "rl_templates.h"
 #include "rl_tones.h"
 
@@ -29,6 +30,7 @@ struct rl_recog {
     rl_label dark;  /* ROI labelling: the frame, then the local pass's windows */
     rl_label light; /* light-source labelling */
     rl_illum illum; /* the ceiling's light across the frame: per-tile thresholds */
+    rl_split split; /* the lowered thresholds under regions too large for a CLR */
     rl_polar *polar;/* a local-pass candidate in polar cells */
 };
 
