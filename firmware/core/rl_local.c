@@ -347,26 +347,46 @@ static int read_across(const rl_recog *rec, const rl_accept_rule *rule, const lo
     return local_accept(&half, &ma, W, H, rd->cx, rd->cy, rd->r, 255.0);
 }
 
+/* A read searched from the circle (cx, cy, r) (its polar cells gathered
+ * anew); 1 when taken, into *rd. */
+static int read_from(rl_recog *rec, const rl_image *img, int light, const rl_accept_rule *rule,
+                     double cx, double cy, double r, local_read *rd)
+{
+    local_read s;
+    s.cx = cx;
+    s.cy = cy;
+    s.r = r;
+    rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &s.cx, &s.cy, &s.r, &s.m);
+    if (!local_accept(rule, &s.m, rec->width, rec->height, s.cx, s.cy, s.r, 255.0))
+        return 0;
+    *rd = s;
+    return 1;
+}
+
 /* A cut landmark whose edge fit came out small (a circle through what is
  * left of a broken ring sits inside the frame): read again at the frame's
  * size R, its centre moved out towards the border by the difference; 1
- * when taken, into *rd. Gathers the polar cells anew. */
+ * when taken, into *rd. */
 static int read_cut_at_size(rl_recog *rec, const rl_image *img, int light, double R,
                             const rl_accept_rule *rule, local_read *rd)
 {
-    int W = rec->width, H = rec->height;
-    local_read u;
-    if (!(rl_geom_visible_in(W, H, rd->cx, rd->cy, rd->r) < 1.0 && rd->r < CUT_SHRUNK * R))
+    double cx = rd->cx, cy = rd->cy;
+    if (!(rl_geom_visible_in(rec->width, rec->height, rd->cx, rd->cy, rd->r) < 1.0 &&
+          rd->r < CUT_SHRUNK * R))
         return 0;
-    u.cx = rd->cx;
-    u.cy = rd->cy;
-    u.r = R;
-    cut_outwards(W, H, R - rd->r, &u.cx, &u.cy);
-    rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &u.cx, &u.cy, &u.r, &u.m);
-    if (!local_accept(rule, &u.m, W, H, u.cx, u.cy, u.r, 255.0))
-        return 0;
-    *rd = u;
-    return 1;
+    cut_outwards(rec->width, rec->height, R - rd->r, &cx, &cy);
+    return read_from(rec, img, light, rule, cx, cy, R, rd);
+}
+
+/* A cut landmark read where the global pass's box put it (the box's uncut
+ * extent its diameter, its centre a radius in from the far side: the
+ * UCLR u): where a motion or a lamp broke the ring, the edge fit can go
+ * astray (a fifth or more off in size) while the box still holds; 1 when
+ * taken, into *rd. */
+static int read_cut_at_box(rl_recog *rec, const rl_image *img, int light, const rl_detection *u,
+                           const rl_accept_rule *rule, local_read *rd)
+{
+    return !u->complete && read_from(rec, img, light, rule, u->u, u->v, u->radius, rd);
 }
 
 /* Retry one DUCLR u of expected radius R; 1 if identified (into *out). */
@@ -387,10 +407,12 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
         return 0;
     rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &rd.cx, &rd.cy, &rd.r, &rd.m);
     /* the circle; the ellipse (whose centre is the better one where both
-     * read); across the motion (the circle's cells); the frame's size */
+     * read); across the motion (the circle's cells); a cut one at the
+     * frame's size, and where its box put it */
     taken = local_accept(&rule, &rd.m, W, H, rd.cx, rd.cy, rd.r, 255.0) ||
             read_ellipse(rec, img, res, &rule, &rd) || read_across(rec, &rule, &rd) ||
-            read_cut_at_size(rec, img, light, R, &rule, &rd);
+            read_cut_at_size(rec, img, light, R, &rule, &rd) ||
+            read_cut_at_box(rec, img, light, u, &rule, &rd);
     out->u = rd.cx;
     out->v = rd.cy;
     out->radius = rd.r;
