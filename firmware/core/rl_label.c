@@ -159,16 +159,20 @@ static uint8_t band_span(int lo, int hi)
 }
 
 /* Each pixel's band width in span[0 .. width - 1] under its tile's
- * threshold (his, tiles of 1 << sh). */
-static void tile_spans(uint8_t *span, int width, int lo, const uint8_t *his, int sh)
+ * threshold (his, tiles of 1 << sh); 0 when every band is empty (the
+ * tile row has nothing to label), else 1. */
+static int tile_spans(uint8_t *span, int width, int lo, const uint8_t *his, int sh)
 {
-    int x, t;
+    int x, t, any = 0;
     for (t = 0, x = 0; x < width; t++) {
         int end = (t + 1) << sh;
+        uint8_t w = band_span(lo, his[t]);
         end = end < width ? end : width;
-        memset(span + x, band_span(lo, his[t]), (size_t)(end - x));
+        memset(span + x, w, (size_t)(end - x));
+        any |= w;
         x = end;
     }
+    return any != 0;
 }
 
 /* Row y's runs appended from *n on, each joined with the previous row's
@@ -207,7 +211,7 @@ static rl_err row_runs(rl_label *lb, const uint8_t *row, int width, int lo, int 
  * counted, not labelled. */
 static void collect_runs(rl_label *lb, const rl_image *img, int lo, int hi, const rl_label_map *map)
 {
-    int y, n = 0, prev_start = 0, prev_end = 0, sh = 0;
+    int y, n = 0, prev_start = 0, prev_end = 0, sh = 0, live = 1;
     int all = map == NULL && lo == 0 && hi >= 256; /* every pixel in the band */
     while (map && (1 << sh) < map->tile)
         sh++;
@@ -217,8 +221,13 @@ static void collect_runs(rl_label *lb, const rl_image *img, int lo, int hi, cons
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
         int start = n;
         if (map && (y & ((1 << sh) - 1)) == 0)
-            tile_spans(lb->span, img->width, lo, map->hi + (size_t)(y >> sh) * (size_t)map->nx, sh);
+            live = tile_spans(lb->span, img->width, lo,
+                              map->hi + (size_t)(y >> sh) * (size_t)map->nx, sh);
         lb->row[y] = n;
+        if (!live) { /* a tile row with every band empty: no runs */
+            prev_start = prev_end = n;
+            continue;
+        }
         if (row_runs(lb, row, img->width, lo, all, &n, prev_start, prev_end) != RL_OK) {
             /* out of runs (a frame of noise or a fine pattern): the rows
              * before this one are labelled, this one and the rest are left

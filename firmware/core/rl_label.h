@@ -64,7 +64,8 @@ typedef struct {
 } rl_label_map;
 
 /* Label the dark pixels of img under per-tile thresholds (as
- * rl_label_band otherwise). RL_EINVAL when the map does not cover img. */
+ * rl_label_band otherwise; a tile row whose thresholds are all 0 costs
+ * next to nothing). RL_EINVAL when the map does not cover img. */
 RL_CHECK rl_err rl_label_dark(rl_label *lb, const rl_image *img, const rl_label_map *map,
                               int min_area);
 

@@ -217,12 +217,13 @@ static int read_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int
     return found;
 }
 
-/* 4. identification of the outer CLRs through the camera's tone curve:
+/* 4. identification of the outer CLRs through the camera's tone curve
+ * (returned, as an index into rec->tones):
  * the configured one, or, while it is being learned, the one the frame's
  * landmarks read best through (rl_tones.h): each curve is read first,
  * counting only, then the one taken into res (three reads of a frame's
  * candidates while the curve is open, one after). */
-static void identify_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n,
+static int identify_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n,
                           rl_result *res)
 {
     int which[RL_TONES_MAX], found[RL_TONES_MAX], nt = rl_tones_to_try(&rec->tones, which), t;
@@ -232,6 +233,7 @@ static void identify_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand
     rec->tone = &rec->tones.tone[t];
     res->gamma = rec->tones.gamma[t];
     read_clrs(rec, img, cand, n, t, 1, res);
+    return t;
 }
 
 static int local_wanted(const rl_recog_config *cfg, const rl_result *res)
@@ -243,7 +245,7 @@ static int local_wanted(const rl_recog_config *cfg, const rl_result *res)
 rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
 {
     rl_clr cand[RL_MAX_CANDIDATES];
-    int ncand, speck;
+    int ncand, speck, t;
     rl_err e;
     if (rec == NULL || res == NULL || img == NULL || !rl_image_valid(img))
         return RL_EINVAL;
@@ -269,13 +271,16 @@ rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
     /* regions never examined: past the capacity, or in rows past the
      * run capacity (at least one there) */
     res->dropped.regions = rec->dark.overflow + (rec->dark.rows_left > 0);
-    /* 3. CLR extraction, and the landmarks the ceiling beside them joined
-     *    into regions too large for a CLR (labelled again nearer the ink) */
+    /* 3. CLR extraction; the regions where the frame's thresholds may have
+     *    failed a landmark marked for a second labelling */
     ncand = rl_clr_find(&rec->dark, &rec->cfg, res, cand, RL_MAX_CANDIDATES);
-    ncand = rl_split_find(&rec->split, &rec->illum.map, &rec->dark, img, &rec->cfg, speck, res, cand,
-                          ncand, RL_MAX_CANDIDATES);
-    /* 4. identification: ICLRs and UCLRs */
-    identify_clrs(rec, img, cand, ncand, res);
+    rl_split_mark(&rec->split, &rec->dark, cand, ncand, &rec->cfg);
+    /* 4. identification: ICLRs and UCLRs; then the new CLRs of the second
+     *    labellings, through the same tone curve */
+    t = identify_clrs(rec, img, cand, ncand, res);
+    ncand = rl_split_find(&rec->split, &rec->dark, img, &rec->cfg, speck, res, cand,
+                          RL_MAX_CANDIDATES);
+    read_clrs(rec, img, cand, ncand, t, 1, res);
     rl_filter_duplicates(res);
     /* 5. local recognition of the DUCLRs */
     if (local_wanted(&rec->cfg, res)) {

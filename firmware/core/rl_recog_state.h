@@ -27,10 +27,11 @@ struct rl_recog {
     rl_templates templates;        /* rendered at init */
     rl_tones tones; /* the camera's tone curve, configured or learned */
     const rl_tone *tone; /* the one this frame is read through (in tones) */
-    rl_label dark;  /* ROI labelling: the frame, then the local pass's windows */
+    rl_label dark;  /* ROI labelling: the frame, its second labellings (rl_split), then the
+                       local pass's windows */
     rl_label light; /* light-source labelling */
     rl_illum illum; /* the ceiling's light across the frame: per-tile thresholds */
-    rl_split split; /* the lowered thresholds under regions too large for a CLR */
+    rl_split split; /* the second labellings' thresholds */
     rl_polar *polar;/* a local-pass candidate in polar cells */
 };
 

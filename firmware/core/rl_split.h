@@ -1,29 +1,36 @@
-/* rl_split: landmarks joined to the ceiling beside them, taken apart
- * (internal).
+/* rl_split: second labellings where the frame's thresholds fail a
+ * landmark (internal).
  *
  * The frame's dark threshold lies between the ceiling's paper-white and
- * the ink. A ceiling darker than the paper (a grey panel, the strip
- * between two lamps) can come under it too, and where a sheet's margin is
- * narrow (3 mm of a letter sheet beside a 210 mm landmark) the outer ring
- * touches that ceiling: ring and ceiling make one dark region, too large
- * and misshapen for a CLR, and the landmark is never a candidate. Beside
- * a lamp it is worse, as the lamp raises its tiles' thresholds.
- *
- * The tiles under every region large enough to hold a landmark beside
- * something else are labelled again under thresholds nearer the ink
- * (RL_SPLIT_RATIO of the frame's), the rest of the frame not at all (its
- * tiles' thresholds are 0, and the labeller skips what has nothing in its
- * band); the CLRs that come apart there, and that the first labelling did
- * not find already, are added.
+ * the ink, tile by tile (rl_illum). It fails a landmark two ways:
+ * - too high: a ceiling darker than the paper (a grey panel, the strip
+ *   between two lamps) comes under it too, and where a sheet's margin is
+ *   narrow (3 mm of a letter sheet beside a 210 mm landmark) the outer
+ *   ring touches that ceiling: ring and ceiling are one region, too large
+ *   and misshapen for a CLR;
+ * - too low: motion in dim light smears the thin outer ring lighter than
+ *   the threshold, and what is left are pieces of arc too thin to pair.
+ * So, from the frame's labelling, the tiles under every region large
+ * enough to hold a landmark beside something else (and not a candidate
+ * the border leaves whole) get thresholds nearer the ink
+ * (RL_SPLIT_LOWER of the frame's), the tiles under thin landmark-sized
+ * pieces thresholds nearer the paper (RL_SPLIT_HIGHER), and the rest 0;
+ * after the identification, each set is labelled (the labeller skips tile
+ * rows, and chunks of rows, with nothing in their band) and its CLRs are the new candidates,
+ * save those at a landmark already identified or where a candidate was
+ * already read.
  *
  *   static rl_clr cand[RL_MAX_CANDIDATES];
- *   static uint8_t thr[20 * 15];        // the frame's per-tile thresholds
- *   rl_label_map frame_thr = {thr, 32, 20, 15};
+ *   static uint8_t thr[20 * 15];            // the frame's thresholds, 32 px tiles
+ *   static const rl_label_map frame_thr = {thr, 32, 20, 15};
  *   rl_split sp;
+ *   memset(thr, 100, sizeof thr);           // rl_illum_measure sets them tile by tile
  *   if (rl_split_init(&sp, &ws, &frame_thr) == RL_OK &&
  *       rl_label_dark(&lb, &img, &frame_thr, 3) == RL_OK) {
  *       n = rl_clr_find(&lb, &cfg, &res, cand, RL_MAX_CANDIDATES);
- *       n = rl_split_find(&sp, &frame_thr, &lb, &img, &cfg, 3, &res, cand, n, RL_MAX_CANDIDATES);
+ *       rl_split_mark(&sp, &lb, cand, n, &cfg);
+ *       use(cand[0].box.x0);                // the candidates read into res here
+ *       n = rl_split_find(&sp, &lb, &img, &cfg, 3, &res, cand, RL_MAX_CANDIDATES);
  *   }
  */
 #ifndef RL_SPLIT_H
@@ -35,25 +42,33 @@
 #include "rl_recog.h"
 #include "rl_workspace.h"
 
-/* The thresholds of the second labelling, as a fraction of the frame's:
- * a fifth of the way nearer the ink. */
-#define RL_SPLIT_RATIO 0.8
+/* The second labellings' thresholds, as fractions of the frame's (grey
+ * levels, tile by tile). */
+#define RL_SPLIT_LOWER 0.8
+#define RL_SPLIT_HIGHER 1.15
 
 typedef struct {
-    uint8_t *hi;      /* per tile: the lowered threshold, 0 where no large region lies */
-    rl_label_map map; /* hi as the labeller takes it */
+    const rl_label_map *frame; /* the frame's thresholds (rl_illum's map) */
+    uint8_t *lower, *higher;   /* per tile: the second thresholds, 0 where unmarked */
+    int n_lower, n_higher;     /* regions marked for each */
+    rl_clr *found;             /* RL_MAX_CANDIDATES: one labelling's CLRs */
 } rl_split;
 
-/* Carve the tile array for the tiles of the frame's map from ws. */
+/* Carve the tile arrays and the CLR scratch for the tiles of `frame` (which
+ * must outlive sp: its thresholds are read at each rl_split_mark). */
 RL_CHECK rl_err rl_split_init(rl_split *sp, rl_ws *ws, const rl_label_map *frame);
 
-/* With lb holding the frame's labelling under the thresholds `frame`, and
- * cand[0 .. n) its CLRs: label the tiles under lb's large regions again
- * under lowered thresholds (into lb: the first labelling is gone after)
- * and add the new CLRs to cand, at most cap in all (the rest counted in
- * res->dropped.candidates). Returns the new count. */
-int rl_split_find(rl_split *sp, const rl_label_map *frame, rl_label *lb, const rl_image *img,
-                  const rl_recog_config *cfg, int speck, rl_result *res, rl_clr *cand, int n,
-                  int cap);
+/* Mark the tiles under lb's regions (the frame's labelling under sp's
+ * frame thresholds; cand[0 .. n) its CLRs; cfg's radii resolved). */
+void rl_split_mark(rl_split *sp, const rl_label *lb, const rl_clr *cand, int n,
+                   const rl_recog_config *cfg);
+
+/* Label the marked tiles of img under each second threshold (into lb),
+ * and their CLRs into out (at most cap, the rest counted in
+ * res->dropped.candidates), save those at an identified landmark of res
+ * or at one of its unidentified candidates; the labellings' limits are
+ * counted in res->dropped.regions. Returns how many. */
+int rl_split_find(rl_split *sp, rl_label *lb, const rl_image *img, const rl_recog_config *cfg,
+                  int speck, rl_result *res, rl_clr *out, int cap);
 
 #endif
