@@ -378,11 +378,11 @@ static int read_cut_at_size(rl_recog *rec, const rl_image *img, int light, doubl
     return read_from(rec, img, light, rule, cx, cy, R, rd);
 }
 
-/* A cut landmark read where the global pass's box put it (the box's uncut
- * extent its diameter, its centre a radius in from the far side: the
- * UCLR u): where a motion or a lamp broke the ring, the edge fit can go
- * astray (a fifth or more off in size) while the box still holds; 1 when
- * taken, into *rd. */
+/* A cut landmark read where the global pass put it (the UCLR u: the
+ * centre from its box, a radius in from the far side, and the radius
+ * refined from there): where a motion or a lamp broke the ring, the edge
+ * fit can go astray (a fifth or more off in size) while the box still
+ * holds; 1 when taken, into *rd. */
 static int read_cut_at_box(rl_recog *rec, const rl_image *img, int light, const rl_detection *u,
                            const rl_accept_rule *rule, local_read *rd)
 {

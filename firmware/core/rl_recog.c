@@ -193,7 +193,8 @@ static int analyse_histogram(const rl_image *img, const rl_tone *tone, rl_result
     return 1;
 }
 
-/* Read the outer CLRs (a CLR inside another's box is an inner ring)
+/* Read the outer CLRs (a CLR inside another's box of the same batch is an
+ * inner ring; rl_split leaves out the code rings of a batch read before)
  * through tone t: into res when `into` (landmarks and unidentified),
  * else only counted. Returns how many are identified. */
 static int read_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n, int t, int into,
@@ -234,6 +235,16 @@ static int identify_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand,
     res->gamma = rec->tones.gamma[t];
     read_clrs(rec, img, cand, n, t, 1, res);
     return t;
+}
+
+/* 4b. the new CLRs of the second labellings (rl_split), read through the
+ * frame's tone curve t into res (cand is reused). */
+static void read_second_labellings(rl_recog *rec, const rl_image *img, int speck, int t,
+                                   rl_clr *cand, rl_result *res)
+{
+    int n = rl_split_find(&rec->split, &rec->dark, img, &rec->cfg, speck, res, cand,
+                          RL_MAX_CANDIDATES);
+    read_clrs(rec, img, cand, n, t, 1, res);
 }
 
 static int local_wanted(const rl_recog_config *cfg, const rl_result *res)
@@ -278,9 +289,7 @@ rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
     /* 4. identification: ICLRs and UCLRs; then the new CLRs of the second
      *    labellings, through the same tone curve */
     t = identify_clrs(rec, img, cand, ncand, res);
-    ncand = rl_split_find(&rec->split, &rec->dark, img, &rec->cfg, speck, res, cand,
-                          RL_MAX_CANDIDATES);
-    read_clrs(rec, img, cand, ncand, t, 1, res);
+    read_second_labellings(rec, img, speck, t, cand, res);
     rl_filter_duplicates(res);
     /* 5. local recognition of the DUCLRs */
     if (local_wanted(&rec->cfg, res)) {

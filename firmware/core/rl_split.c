@@ -66,7 +66,7 @@ static void set_tiles(const rl_label_map *frame, uint8_t *hi, const rl_region *g
     for (ty = ty0; ty <= ty1; ty++)
         for (tx = tx0; tx <= tx1; tx++) {
             int i = ty * frame->nx + tx, v = (int)(ratio * frame->hi[i] + 0.5);
-            hi[i] = (uint8_t)(v > 254 ? 254 : v);
+            hi[i] = (uint8_t)(v > 254 ? 254 : v); /* under the light threshold's top */
         }
 }
 
@@ -83,12 +83,12 @@ void rl_split_mark(rl_split *sp, const rl_label *lb, const rl_clr *cand, int n,
         const rl_region *g = &lb->reg[i];
         int bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1, side = bw > bh ? bw : bh;
         double fill = g->area / ((double)bw * bh);
-        if (side >= PIECE_MIN_SIDE * r && side <= PIECE_MAX_SIDE * r && fill <= PIECE_MAX_FILL) {
-            if (!in_candidate(g, cand, n)) {
-                set_tiles(sp->frame, sp->higher, g, side / 2, RL_SPLIT_HIGHER);
-                sp->n_higher++;
-            }
-        } else if (side >= LARGE_SIDE * r && !whole_candidate(g, cand, n, lb->width, lb->height)) {
+        if (side >= PIECE_MIN_SIDE * r && side <= PIECE_MAX_SIDE * r && fill <= PIECE_MAX_FILL &&
+            !in_candidate(g, cand, n)) {
+            set_tiles(sp->frame, sp->higher, g, side / 2, RL_SPLIT_HIGHER);
+            sp->n_higher++;
+        }
+        if (side >= LARGE_SIDE * r && !whole_candidate(g, cand, n, lb->width, lb->height)) {
             set_tiles(sp->frame, sp->lower, g, 0, RL_SPLIT_LOWER);
             sp->n_lower++;
         }
@@ -123,15 +123,30 @@ static int same_box(const rl_box *a, const rl_box *b)
            sa < 1.33 * sb;
 }
 
+/* 1 when box b is a code ring of candidate d: about concentric with it
+ * (its centre within CODE_RING_OFFSET radii; a box the border cuts is off
+ * by part of what is cut) and smaller (a code ring lies inside
+ * RL_OUTER_RING_INNER of the radius; blur widens it a little). */
+#define CODE_RING_MAX 0.9
+#define CODE_RING_OFFSET 0.3
+static int code_ring_of(const rl_detection *d, const rl_box *b)
+{
+    double bw = b->x1 - b->x0 + 1, bh = b->y1 - b->y0 + 1, side = bw > bh ? bw : bh;
+    double dx = (b->x0 + b->x1) / 2.0 - d->u, dy = (b->y0 + b->y1) / 2.0 - d->v;
+    return side <= CODE_RING_MAX * 2 * d->radius &&
+           dx * dx + dy * dy <= CODE_RING_OFFSET * CODE_RING_OFFSET * d->radius * d->radius;
+}
+
 /* 1 when CLR box b is no new candidate: at a landmark, at an unidentified
- * candidate already read, or at one of out[0 .. n). */
+ * candidate already read or one of its code rings (a cut landmark's, never
+ * identified in the global pass), or at one of out[0 .. n). */
 static int known(const rl_result *res, const rl_clr *out, int n, const rl_box *b)
 {
     int k;
     if (at_landmark(res, b))
         return 1;
     for (k = 0; k < res->n_unidentified; k++)
-        if (same_box(&res->unidentified[k].box, b))
+        if (same_box(&res->unidentified[k].box, b) || code_ring_of(&res->unidentified[k], b))
             return 1;
     for (k = 0; k < n; k++)
         if (same_box(&out[k].box, b))

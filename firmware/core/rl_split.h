@@ -13,12 +13,13 @@
  * So, from the frame's labelling, the tiles under every region large
  * enough to hold a landmark beside something else (and not a candidate
  * the border leaves whole) get thresholds nearer the ink
- * (RL_SPLIT_LOWER of the frame's), the tiles under thin landmark-sized
- * pieces thresholds nearer the paper (RL_SPLIT_HIGHER), and the rest 0;
- * after the identification, each set is labelled (the labeller skips tile
- * rows, and chunks of rows, with nothing in their band) and its CLRs are the new candidates,
- * save those at a landmark already identified or where a candidate was
- * already read.
+ * (RL_SPLIT_LOWER of the frame's), the tiles around thin landmark-sized
+ * pieces in no candidate thresholds nearer the paper (RL_SPLIT_HIGHER;
+ * a region may be both), and the rest 0;
+ * after the identification, each set is labelled (the labeller skips
+ * tile rows with nothing in their band) and its CLRs are the new
+ * candidates, save those at a landmark already identified, or where a
+ * candidate was already read, or at one's code rings.
  *
  *   static rl_clr cand[RL_MAX_CANDIDATES];
  *   static uint8_t thr[20 * 15];            // the frame's thresholds, 32 px tiles
@@ -66,8 +67,10 @@ void rl_split_mark(rl_split *sp, const rl_label *lb, const rl_clr *cand, int n,
 /* Label the marked tiles of img under each second threshold (into lb),
  * and their CLRs into out (at most cap, the rest counted in
  * res->dropped.candidates), save those at an identified landmark of res
- * or at one of its unidentified candidates; the labellings' limits are
- * counted in res->dropped.regions. Returns how many. */
+ * or at one of its unidentified candidates or its code rings; the
+ * labellings' limits are counted in res->dropped.regions (and
+ * rl_clr_find's own in dropped.candidates: an arc or CLR the first
+ * labelling had too may count twice). Returns how many. */
 int rl_split_find(rl_split *sp, rl_label *lb, const rl_image *img, const rl_recog_config *cfg,
                   int speck, rl_result *res, rl_clr *out, int cap);
 
