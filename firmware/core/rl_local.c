@@ -378,15 +378,24 @@ static int read_cut_at_size(rl_recog *rec, const rl_image *img, int light, doubl
     return read_from(rec, img, light, rule, cx, cy, R, rd);
 }
 
-/* A cut landmark read where the global pass put it (the UCLR u: the
+/* A cut landmark read where the global pass put it too (the UCLR u: the
  * centre from its box, a radius in from the far side, and the radius
  * refined from there): where a motion or a lamp broke the ring, the edge
  * fit can go astray (a fifth or more off in size) while the box still
- * holds; 1 when taken, into *rd. */
-static int read_cut_at_box(rl_recog *rec, const rl_image *img, int light, const rl_detection *u,
-                           const rl_accept_rule *rule, local_read *rd)
+ * holds, and at a fit a tenth short a zone twin can pass. The two must
+ * agree: taken (into *rd) when the fit's read was and the box's names no
+ * other id, or when only the box's was; 0 when they name different ids. */
+static int cut_agrees_with_box(rl_recog *rec, const rl_image *img, int light, const rl_detection *u,
+                               const rl_accept_rule *rule, int taken, local_read *rd)
 {
-    return !u->complete && read_from(rec, img, light, rule, u->u, u->v, u->radius, rd);
+    local_read b;
+    int at_box = read_from(rec, img, light, rule, u->u, u->v, u->radius, &b);
+    if (!taken) {
+        if (at_box)
+            *rd = b;
+        return at_box;
+    }
+    return !at_box || b.m.id == rd->m.id;
 }
 
 /* Retry one DUCLR u of expected radius R; 1 if identified (into *out). */
@@ -408,11 +417,12 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &rd.cx, &rd.cy, &rd.r, &rd.m);
     /* the circle; the ellipse (whose centre is the better one where both
      * read); across the motion (the circle's cells); a cut one at the
-     * frame's size, and where its box put it */
+     * frame's size, and always where its box put it too */
     taken = local_accept(&rule, &rd.m, W, H, rd.cx, rd.cy, rd.r, 255.0) ||
             read_ellipse(rec, img, res, &rule, &rd) || read_across(rec, &rule, &rd) ||
-            read_cut_at_size(rec, img, light, R, &rule, &rd) ||
-            read_cut_at_box(rec, img, light, u, &rule, &rd);
+            read_cut_at_size(rec, img, light, R, &rule, &rd);
+    if (!u->complete)
+        taken = cut_agrees_with_box(rec, img, light, u, &rule, taken, &rd);
     out->u = rd.cx;
     out->v = rd.cy;
     out->radius = rd.r;
