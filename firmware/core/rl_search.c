@@ -112,7 +112,8 @@ void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double
     double x = cx - pol->cx, y = cy - pol->cy, s = r / pol->r;
     int a;
     m->id = -1;
-    m->score = m->second = 0;
+    m->score = m->second = m->contrast = 0;
+    m->blur = 0; /* no read: a match of no id, every field set */
     for (a = 0; a < n_reads; a++) {
         rl_profile p;
         rl_match ma;
