@@ -40,15 +40,18 @@ static int whole_candidate(const rl_region *g, const rl_clr *cand, int n, int W,
     return 0;
 }
 
+static int box_has(const rl_box *b, double x, double y)
+{
+    return x >= b->x0 && x <= b->x1 && y >= b->y0 && y <= b->y1;
+}
+
 /* 1 when region g lies inside a candidate of cand[0 .. n) (its centre in
  * the box): a code ring, not a piece of an outer ring. */
 static int in_candidate(const rl_region *g, const rl_clr *cand, int n)
 {
-    double cx = (g->x0 + g->x1) / 2.0, cy = (g->y0 + g->y1) / 2.0;
     int k;
     for (k = 0; k < n; k++)
-        if (cx >= cand[k].box.x0 && cx <= cand[k].box.x1 && cy >= cand[k].box.y0 &&
-            cy <= cand[k].box.y1)
+        if (box_has(&cand[k].box, (g->x0 + g->x1) / 2.0, (g->y0 + g->y1) / 2.0))
             return 1;
     return 0;
 }
@@ -93,11 +96,6 @@ void rl_split_mark(rl_split *sp, const rl_label *lb, const rl_clr *cand, int n,
             sp->n_lower++;
         }
     }
-}
-
-static int box_has(const rl_box *b, double x, double y)
-{
-    return x >= b->x0 && x <= b->x1 && y >= b->y0 && y <= b->y1;
 }
 
 /* 1 when box b is at an identified landmark of res: its centre inside the
