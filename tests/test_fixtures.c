@@ -26,11 +26,13 @@ static rl_heap_recog hr, hr_always;
  * read again at the frame's size 97.5%, 95.5%, 79.8%, 78.6%; with true axes and half
  * axes across the motion 98.1%, 96.6%, 82.1%, 78.6%; with the local levels from the
  * landmark's own square, large regions split and cut landmarks read where their box
- * puts them 99.2%, 98.9%, 90.5%, 85.7% (30 frames: 98.9%, 97.3%, 87.5%, 85.7%)) */
+ * puts them 99.2%, 98.9%, 92.9%, 85.7% (30 frames: 98.9%, 97.3%, 91.7%)). From then on
+ * 150 frames (60 were too few for a rate per id: one miss was 7%): 99.7%, 99.6%, 93.3%
+ * and 94.3% for the worst id (300 frames, measured once: 99.4%, 99.0%, 88.8%, 93.4%). */
 #define HELDOUT_COMPLETE 0.98
-#define HELDOUT_GLARE 0.90
+#define HELDOUT_GLARE 0.95
 #define HELDOUT_BORDER 0.85
-#define HELDOUT_PER_ID 0.80
+#define HELDOUT_PER_ID 0.90
 static rl_result res;
 
 static const char *set_of(const char *image)
