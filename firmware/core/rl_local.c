@@ -398,6 +398,14 @@ static int cut_agrees_with_box(rl_recog *rec, const rl_image *img, int light, co
     return !at_box || b.m.id == rd->m.id;
 }
 
+/* A candidate whose fitted circle has less than this in the frame is not
+ * tried: more than half of it is missing. Under a half, not at it: a
+ * circle fitted to half a ring sits up to a tenth of a radius further out
+ * than the ring (the arc, cut by the border, fixes centre and radius
+ * together only loosely), and a landmark half in the frame still shows
+ * every zone along the directions that point into it. */
+#define CUT_MIN_VISIBLE 0.4
+
 /* Retry one DUCLR u of expected radius R; 1 if identified (into *out). */
 static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *res,
                            const rl_detection *u, double R, rl_detection *out)
@@ -412,7 +420,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     /* the fitted radius, not the frame's median: lens distortion makes
      * landmarks smaller away from the image centre */
     out->pass = RL_PASS_LOCAL;
-    if (rl_geom_visible_in(W, H, rd.cx, rd.cy, rd.r) < 0.5) /* more than half missing: not tried */
+    if (rl_geom_visible_in(W, H, rd.cx, rd.cy, rd.r) < CUT_MIN_VISIBLE)
         return 0;
     rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &rd.cx, &rd.cy, &rd.r, &rd.m);
     /* the circle; the ellipse (whose centre is the better one where both
