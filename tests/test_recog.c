@@ -230,6 +230,69 @@ static void test_half_landmark_at_border_is_read(void **state)
     }
 }
 
+/* A landmark whose outer ring touches a printed marker (a black square:
+ * the two are one region, too large for a landmark, whose centre lies
+ * towards the marker), beside a lamp, with a dark bar (a fixture) below
+ * it: the local pass must take the ring around the candidate's centre
+ * (here code zone 2's, 1.44 R across), not the bar, which is larger (1.56
+ * R in the window). Truth: id 8 (code 01000) drawn at (150.3, 120.6),
+ * and two landmarks elsewhere that give the frame its landmarks' size. */
+static int on_sheet(int x, int y, double cx, double cy, double r)
+{
+    return fabs(x - cx) <= 1.3 * r && fabs(y - cy) <= 1.3 * r;
+}
+
+static void test_landmark_touching_a_marker_is_read(void **state)
+{
+    static const placed lm[] = {{8, 150.3, 120.6, 25.0}, {25, 45.2, 190.3, 25.0}, {17, 270.6, 185.4, 25.0}};
+    static uint8_t t[H * W], dk[H * W];
+    rl_recog_config cfg;
+    rl_family f = {5};
+    rl_image img = rl_image_view(W, H, W, frame), tv = rl_image_view(W, H, W, t);
+    const double cx = lm[0].u, cy = lm[0].v, r = lm[0].r;
+    size_t k;
+    int x, y, j, found = 0;
+    (void)state;
+    /* the landmark, and two more that give the frame its landmarks' size */
+    memset(dk, 0, sizeof dk);
+    for (k = 0; k < sizeof lm / sizeof lm[0]; k++) {
+        assert_int_equal(rl_raster_draw(&f, lm[k].id, lm[k].u, lm[k].v, lm[k].r, NULL, &tv, NULL), RL_OK);
+        for (j = 0; j < W * H; j++)
+            dk[j] = t[j] > dk[j] ? t[j] : dk[j];
+    }
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            int sheet = 0;
+            double v;
+            for (k = 0; k < sizeof lm / sizeof lm[0]; k++)
+                sheet |= on_sheet(x, y, lm[k].u, lm[k].v, lm[k].r);
+            v = sheet ? 200 - 170 * dk[y * W + x] / 255.0 : 150;
+            if (x >= cx + 0.56 * r && x <= cx + 1.68 * r && y >= cy + 0.56 * r && y <= cy + 1.68 * r)
+                v = 30; /* the marker, over the ring's lower right */
+            if (x >= cx - 1.3 * r && x <= cx + 0.4 * r && y >= cy + 1.25 * r && y <= cy + 1.6 * r)
+                v = 40; /* the bar, below the ring */
+            if (y <= cy - 1.5 * r)
+                v = 255; /* the lamp, above */
+            frame[y * W + x] = (uint8_t)lround(v);
+        }
+    rl_recog_defaults(&cfg);
+    init(&cfg);
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
+    for (j = 0; j < res.n_landmarks; j++) {
+        const rl_detection *d = &res.landmarks[j];
+        if (d->id == 8 && hypot(d->u - cx, d->v - cy) < 1.5) {
+            found = 1;
+            continue;
+        }
+        if ((d->id == 25 || d->id == 17) && d->pass == RL_PASS_GLOBAL)
+            continue;
+        fail_msg("id %d of radius %.1f at (%.1f, %.1f); drawn: id 8 of radius %.1f at (%.1f, %.1f)", d->id,
+                 d->radius, d->u, d->v, r, cx, cy);
+    }
+    if (!found)
+        fail_msg("id 8 not found (%d candidates not identified)", res.n_unidentified);
+}
+
 /* A soft dark blob next to a lamp (a shade, a fixture's edge out of
  * focus) looks, once each sector is normalized on its own, like a disk in
  * a ring, code 01111: drawn here as id 15 blurred by 0.2 of its radius, it
@@ -602,6 +665,7 @@ int main(void)
         cmocka_unit_test(test_code_ring_of_merged_landmark_is_not_a_landmark),
         cmocka_unit_test(test_landmark_in_lamp_glow_is_found),
         cmocka_unit_test(test_half_landmark_at_border_is_read),
+        cmocka_unit_test(test_landmark_touching_a_marker_is_read),
         cmocka_unit_test(test_map_restricts_ids),
         cmocka_unit_test(test_blank_frames),
         cmocka_unit_test(test_errors),

@@ -70,20 +70,27 @@ static int local_threshold(const rl_image *img, const rl_box *w, const rl_detect
 }
 
 /* Re-extraction: the largest region of landmark size near the candidate
- * (window coordinates, the window at w), or -1. */
+ * (window coordinates, the window at w), one whose box holds the
+ * candidate's centre before any other (a ring surrounds its centre; a
+ * printed marker or a fixture beside the landmark does not, and the
+ * candidate's centre, pulled towards such a thing when the two were one
+ * region, still lies within the ring), or -1. */
 static int local_outer_ring(const rl_label *lb, const rl_box *w, const rl_detection *u, double R)
 {
     double best_size = 0;
-    int i, best = -1;
+    int i, best = -1, best_holds = 0;
     for (i = 0; i < lb->n_regions; i++) {
         const rl_region *g = &lb->reg[i];
         double bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1, size = bw > bh ? bw : bh;
         double gx = w->x0 + (g->x0 + g->x1) / 2.0, gy = w->y0 + (g->y0 + g->y1) / 2.0;
+        int holds = u->u >= w->x0 + g->x0 && u->u <= w->x0 + g->x1 && u->v >= w->y0 + g->y0 &&
+                    u->v <= w->y0 + g->y1;
         if (size < R || size > 2.5 * R || fabs(gx - u->u) > 1.2 * R || fabs(gy - u->v) > 1.2 * R)
             continue;
-        if (size > best_size) {
+        if (holds > best_holds || (holds == best_holds && size > best_size)) {
             best_size = size;
             best = i;
+            best_holds = holds;
         }
     }
     return best;
