@@ -221,6 +221,54 @@ static void copies_are_ambiguous(void **state)
     assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 1, NULL, &prior, &pose, &f), RL_ETOOFEW);
 }
 
+/* A robot carried from one copy of three ids to the other, with three
+ * more landmarks in view there: near the last pose two of the frame's
+ * five ids fit the first copy, but a place that leaves most of the frame
+ * unverified is no tracked place; the search over the whole map finds the
+ * second copy, all five verified. Truth: the pose the detections were
+ * projected from. */
+static void carried_robot_is_found_where_it_is(void **state)
+{
+    rl_place_config cfg;
+    rl_place *pl;
+    rl_calib cam;
+    rl_mount mount;
+    rl_detection d[5];
+    rl_place_found f;
+    rl_place_prior prior = {1, 0.35, 0.25, 0.45, 0.1};
+    rl_pose pose;
+    int seen[5] = {3, 4, 6, 7, 8}, i; /* ids 4 and 5 of the second copy, 8, 9 and 10 */
+    static const double extra[3][3] = {{8, 10.61, 0.61}, {9, 9.39, 0.0}, {10, 10.0, -0.61}};
+    (void)state;
+    memset(&map, 0, sizeof map);
+    assert_int_equal(rl_family_init(&map.family, 5), RL_OK);
+    map.diameter = 0.2;
+    map.ceiling_height = 2.75;
+    /* ids 4 5 6 at (0,0) (0.61,0) (0,0.61), again 10 m away, and 8 9 10
+     * around the second copy only */
+    for (i = 0; i < 6; i++) {
+        map.lm[i].id = 4 + i % 3;
+        map.lm[i].x = (i % 3 == 1 ? 0.61 : 0) + (i >= 3 ? 10 : 0);
+        map.lm[i].y = i % 3 == 2 ? 0.61 : 0;
+    }
+    for (i = 0; i < 3; i++) {
+        map.lm[6 + i].id = (int)extra[i][0];
+        map.lm[6 + i].x = extra[i][1];
+        map.lm[6 + i].y = extra[i][2];
+    }
+    map.count = 9;
+    rl_place_defaults(&cfg);
+    pl = build(&cfg);
+    rl_calib_defaults(&cam, 640, 480, 70 * M_PI / 180);
+    rl_mount_defaults(&mount, 0.88);
+    view(&cam, &mount, 10.3, 0.3, 0.4, seen, 5, d);
+    assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 5, NULL, &prior, &pose, &f), RL_OK);
+    assert_int_equal(f.status, RL_PLACE_FOUND);
+    assert_int_equal(f.verified, 5);
+    if (hypot(pose.x - 10.3, pose.y - 0.3) > 0.01)
+        fail_msg("pose (%.3f, %.3f), truth (10.300, 0.300)", pose.x, pose.y);
+}
+
 /* Ids falling along the detections' order (the nearest the image centre
  * first: 9, then 7, then 5): every pair is looked up with its higher id
  * first, and still proposes the place. */
@@ -257,7 +305,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(index_matches_brute_force), cmocka_unit_test(near_matches_brute_force),
         cmocka_unit_test(sizes_and_refusals), cmocka_unit_test(map_repeats_but_never_overlaps),
-        cmocka_unit_test(copies_are_ambiguous), cmocka_unit_test(ids_in_falling_order),
+        cmocka_unit_test(copies_are_ambiguous),
+        cmocka_unit_test(carried_robot_is_found_where_it_is), cmocka_unit_test(ids_in_falling_order),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -2,6 +2,11 @@
 
 #include <math.h>
 
+int rl_geom_box_has(const rl_box *b, double x, double y)
+{
+    return x >= b->x0 && x <= b->x1 && y >= b->y0 && y <= b->y1;
+}
+
 int rl_geom_box_inside(const rl_box *in, const rl_box *out)
 {
     return in->x0 >= out->x0 && in->x1 <= out->x1 && in->y0 >= out->y0 && in->y1 <= out->y1;

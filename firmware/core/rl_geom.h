@@ -7,6 +7,9 @@
 
 #include "rl_recog.h"
 
+/* 1 if the point (x, y) lies in box b (its edges included). */
+int rl_geom_box_has(const rl_box *b, double x, double y);
+
 /* 1 if box `in` lies within box `out`. */
 int rl_geom_box_inside(const rl_box *in, const rl_box *out);
 

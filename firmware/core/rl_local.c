@@ -69,6 +69,17 @@ static int local_threshold(const rl_image *img, const rl_box *w, const rl_detect
     return 1;
 }
 
+/* A region smaller than this (box side, in expected radii) is no outer
+ * ring: a code ring, taken for the centre it surrounds. */
+#define RING_MIN_SIZE 1.6
+
+/* The longer side of a region's box. */
+static double region_size(const rl_region *g)
+{
+    double bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
+    return bw > bh ? bw : bh;
+}
+
 /* Re-extraction: the largest region of landmark size near the candidate
  * (window coordinates, the window at w), one whose box holds the
  * candidate's centre before any other (a ring surrounds its centre; a
@@ -81,12 +92,17 @@ static int local_outer_ring(const rl_label *lb, const rl_box *w, const rl_detect
     int i, best = -1, best_holds = 0;
     for (i = 0; i < lb->n_regions; i++) {
         const rl_region *g = &lb->reg[i];
-        double bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1, size = bw > bh ? bw : bh;
+        double size = region_size(g);
         double gx = w->x0 + (g->x0 + g->x1) / 2.0, gy = w->y0 + (g->y0 + g->y1) / 2.0;
-        int holds = u->u >= w->x0 + g->x0 && u->u <= w->x0 + g->x1 && u->v >= w->y0 + g->y0 &&
-                    u->v <= w->y0 + g->y1;
+        rl_box b;
+        int holds;
         if (size < R || size > 2.5 * R || fabs(gx - u->u) > 1.2 * R || fabs(gy - u->v) > 1.2 * R)
             continue;
+        b.x0 = w->x0 + g->x0;
+        b.y0 = w->y0 + g->y0;
+        b.x1 = w->x0 + g->x1;
+        b.y1 = w->y0 + g->y1;
+        holds = rl_geom_box_has(&b, u->u, u->v);
         if (holds > best_holds || (holds == best_holds && size > best_size)) {
             best_size = size;
             best = i;
@@ -97,6 +113,7 @@ static int local_outer_ring(const rl_label *lb, const rl_box *w, const rl_detect
 }
 
 #define LOCATE_SIZE_TOLERANCE 0.45
+
 
 /* Thresholds tried, each midway between the ink and the one before: the
  * first may join the outer ring to its surroundings (a ceiling darker
@@ -151,6 +168,15 @@ static int local_locate(rl_recog *rec, const rl_image *img, const rl_result *res
         *cx = tx;
         *cy = ty;
         *r = tr;
+    } else if (region_size(&rec->dark.reg[reg]) < RING_MIN_SIZE * R) {
+        return 0; /* a code ring taken for its centre: its radius is not the landmark's */
+    }
+    if (region_size(&rec->dark.reg[reg]) < RING_MIN_SIZE * R) {
+        /* the box of the outer ring found from a code ring's centre */
+        box->x0 = (int)floor(*cx - *r);
+        box->y0 = (int)floor(*cy - *r);
+        box->x1 = (int)ceil(*cx + *r);
+        box->y1 = (int)ceil(*cy + *r);
     }
     /* the frame's landmarks are of one size but for the lens: a wide angle
      * shrinks them towards the corners, where a circle fitted to an
@@ -406,11 +432,14 @@ static int cut_agrees_with_box(rl_recog *rec, const rl_image *img, int light, co
 }
 
 /* A candidate whose fitted circle has less than this in the frame is not
- * tried: more than half of it is missing. Under a half, not at it: a
- * circle fitted to half a ring sits up to a tenth of a radius further out
- * than the ring (the arc, cut by the border, fixes centre and radius
- * together only loosely), and a landmark half in the frame still shows
- * every zone along the directions that point into it. */
+ * tried. The candidate was taken as a DUCLR with at least half of its
+ * box's circle in the frame (is_duclr); its fitted circle may show less:
+ * a circle fitted to half a ring sits up to a tenth of a radius further
+ * out than the ring (the arc, cut by the border, fixes centre and radius
+ * together only loosely), which leaves about 0.44 of it in the frame. A
+ * landmark half in the frame still shows every zone along the directions
+ * that point into it; one only 0.4 in it (its centre 0.16 R out) is tried
+ * too, under the cut rule. */
 #define CUT_MIN_VISIBLE 0.4
 
 /* Retry one DUCLR u of expected radius R; 1 if identified (into *out). */
@@ -458,7 +487,9 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
 #define UNREAD_MAX_SIZE 1.3
 
 /* A DUCLR: next to a light, cut by the border with at most half of it
- * missing, or a landmark-sized UCLR the global pass could not read. */
+ * missing (as its box puts it; the fitted circle may show a little less,
+ * CUT_MIN_VISIBLE), or a landmark-sized UCLR the global pass could not
+ * read. */
 static int is_duclr(const rl_recog_config *cfg, const rl_result *res, const rl_detection *u,
                     double R)
 {

@@ -275,6 +275,17 @@ static int clear(const search *s, int min_landmarks, int margin)
            s->best.matched >= s->best.conflicts + margin;
 }
 
+/* Near the last pose two landmarks are enough, but only as a place that
+ * verifies at least half of what the frame identified: where most of the
+ * frame's landmarks verify nowhere near, the robot is not there (it was
+ * carried, or the last pose was wrong), and two ids that happen to lie
+ * near where the prior puts them are a coincidence of a map whose ids
+ * repeat. */
+static int explains(const search *s, const obs_set *o)
+{
+    return 2 * s->best.matched >= o->n;
+}
+
 static void report(const search *s, const obs_set *o, int status, rl_place_found *f)
 {
     int k;
@@ -311,7 +322,7 @@ rl_err rl_place_find(const rl_place *pl, const rl_calib *cam, const rl_mount *mo
     s.gate = pl->cfg.gate;
     if (prior != NULL && prior->valid && prior->age >= 0 && prior->age <= pl->cfg.track_age) {
         search_near(pl, &o, prior, &s);
-        if (clear(&s, 2, 1)) {
+        if (clear(&s, 2, 1) && explains(&s, &o)) {
             report(&s, &o, RL_PLACE_TRACKED, found);
             return RL_OK;
         }

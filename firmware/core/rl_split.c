@@ -1,6 +1,7 @@
 #include "rl_split.h"
 
 #include <string.h>
+#include "rl_geom.h"
 
 /* A region this long (box side, in the smallest readable landmark radii)
  * can hold a landmark and something beside it. */
@@ -40,18 +41,13 @@ static int whole_candidate(const rl_region *g, const rl_clr *cand, int n, int W,
     return 0;
 }
 
-static int box_has(const rl_box *b, double x, double y)
-{
-    return x >= b->x0 && x <= b->x1 && y >= b->y0 && y <= b->y1;
-}
-
 /* 1 when region g lies inside a candidate of cand[0 .. n) (its centre in
  * the box): a code ring, not a piece of an outer ring. */
 static int in_candidate(const rl_region *g, const rl_clr *cand, int n)
 {
     int k;
     for (k = 0; k < n; k++)
-        if (box_has(&cand[k].box, (g->x0 + g->x1) / 2.0, (g->y0 + g->y1) / 2.0))
+        if (rl_geom_box_has(&cand[k].box, (g->x0 + g->x1) / 2.0, (g->y0 + g->y1) / 2.0))
             return 1;
     return 0;
 }
@@ -106,8 +102,8 @@ static int at_landmark(const rl_result *res, const rl_box *b)
     double cx = (b->x0 + b->x1) / 2.0, cy = (b->y0 + b->y1) / 2.0;
     int j;
     for (j = 0; j < res->n_landmarks; j++)
-        if (box_has(&res->landmarks[j].box, cx, cy) ||
-            box_has(b, res->landmarks[j].u, res->landmarks[j].v))
+        if (rl_geom_box_has(&res->landmarks[j].box, cx, cy) ||
+            rl_geom_box_has(b, res->landmarks[j].u, res->landmarks[j].v))
             return 1;
     return 0;
 }
@@ -117,7 +113,7 @@ static int at_landmark(const rl_result *res, const rl_box *b)
 static int same_box(const rl_box *a, const rl_box *b)
 {
     double sa = a->x1 - a->x0 + a->y1 - a->y0, sb = b->x1 - b->x0 + b->y1 - b->y0;
-    return box_has(a, (b->x0 + b->x1) / 2.0, (b->y0 + b->y1) / 2.0) && sa > 0.75 * sb &&
+    return rl_geom_box_has(a, (b->x0 + b->x1) / 2.0, (b->y0 + b->y1) / 2.0) && sa > 0.75 * sb &&
            sa < 1.33 * sb;
 }
 
