@@ -3,9 +3,10 @@
  * Unidentified CLRs next to a light or on the image border (DUCLRs) are
  * retried in their own window of the frame: extension (a window around
  * the candidate, kept out of the lights), local clustering (K-means on
- * the window alone, so the threshold follows the local illumination),
- * re-extraction of the outer ring, its centre and radius from the visible
- * outer edge, then identification with a search over centre and radius
+ * the landmark's own square, so the threshold follows the local
+ * illumination), re-extraction of the outer ring, its centre and radius
+ * from the visible outer edge (rl_locate.h), then identification with a
+ * search over centre and radius
  * (rl_search.h), accepted by the local rule (rl_accept.h). The frame's
  * dark labelling is reused for the windows: its regions have been turned
  * into candidates by then.

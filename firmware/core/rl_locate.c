@@ -1,0 +1,177 @@
+#include "rl_locate.h"
+
+#include <math.h>
+#include "rl_edge.h"
+#include "rl_geom.h"
+#include "rl_hist.h"
+
+/* Window half-size around a DUCLR, in expected radii: room for the whole
+ * landmark and its quiet zone with a quarter radius to spare for the
+ * centre estimate of a ring broken by glare. */
+#define WINDOW_RADII 1.5
+
+/* Extension: the window around candidate u (expected radius R), clipped
+ * to the frame and shrunk on any side that would reach into a light
+ * source (never into the landmark itself); 0 when too small. */
+static int local_window(const rl_result *res, const rl_detection *u, double R, rl_box *w)
+{
+    double half = WINDOW_RADII * R;
+    int i, x0 = (int)floor(u->u - half), x1 = (int)ceil(u->u + half);
+    int y0 = (int)floor(u->v - half), y1 = (int)ceil(u->v + half);
+    for (i = 0; i < res->n_lights; i++) {
+        const rl_box *l = &res->lights[i];
+        if (l->x1 < x0 || l->x0 > x1 || l->y1 < y0 || l->y0 > y1)
+            continue;
+        if (l->x0 > u->u + 1.1 * R && l->x0 - 1 < x1) x1 = l->x0 - 1;
+        if (l->x1 < u->u - 1.1 * R && l->x1 + 1 > x0) x0 = l->x1 + 1;
+        if (l->y0 > u->v + 1.1 * R && l->y0 - 1 < y1) y1 = l->y0 - 1;
+        if (l->y1 < u->v - 1.1 * R && l->y1 + 1 > y0) y0 = l->y1 + 1;
+    }
+    w->x0 = x0 < 0 ? 0 : x0;
+    w->y0 = y0 < 0 ? 0 : y0;
+    w->x1 = x1 > res->width - 1 ? res->width - 1 : x1;
+    w->y1 = y1 > res->height - 1 ? res->height - 1 : y1;
+    return w->x1 - w->x0 >= 8 && w->y1 - w->y0 >= 8;
+}
+
+/* Local clustering: the dark/paper threshold by K-means on the histogram
+ * of the landmark's own square (LEVELS_RADII about the candidate, inside
+ * the window), light excluded; into *thr, and the ink's level into *ink.
+ * Not the whole window: beside a lamp its glare is the brightest class,
+ * and the midway would fall between paper and glare. 0 when the square
+ * has no clear contrast. */
+#define LEVELS_RADII 1.0
+static int local_threshold(const rl_image *img, const rl_box *w, const rl_detection *u, double R,
+                           const rl_tone *tone, int light, int *thr, double *ink)
+{
+    double centre[2], half = LEVELS_RADII * R;
+    int x0 = (int)floor(u->u - half), x1 = (int)ceil(u->u + half);
+    int y0 = (int)floor(u->v - half), y1 = (int)ceil(u->v + half);
+    rl_image sq;
+    rl_hist h;
+    x0 = x0 < w->x0 ? w->x0 : x0;
+    y0 = y0 < w->y0 ? w->y0 : y0;
+    x1 = x1 > w->x1 ? w->x1 : x1;
+    y1 = y1 > w->y1 ? w->y1 : y1;
+    if (x1 - x0 < 8 || y1 - y0 < 8 || rl_image_sub(img, x0, y0, x1 - x0 + 1, y1 - y0 + 1, &sq) != RL_OK)
+        return 0;
+    rl_hist_compute_rows(&sq, &h, 4); /* every fourth row: 600 pixels at 25 px */
+    if (rl_hist_kmeans(&h, 0, light, 2, centre, NULL) != RL_OK || centre[1] - centre[0] < 8.0)
+        return 0;
+    *thr = rl_tone_midway(tone, centre[0], centre[1]);
+    *ink = centre[0];
+    return 1;
+}
+
+/* A region smaller than this (box side, in expected radii) is no outer
+ * ring: a code ring, taken for the centre it surrounds. */
+#define RING_MIN_SIZE 1.6
+
+/* The longer side of a region's box. */
+static double region_size(const rl_region *g)
+{
+    double bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
+    return bw > bh ? bw : bh;
+}
+
+/* Re-extraction: the largest region of landmark size near the candidate
+ * (window coordinates, the window at w), one whose box holds the
+ * candidate's centre before any other (a ring surrounds its centre; a
+ * printed marker or a fixture beside the landmark does not, and the
+ * candidate's centre, pulled towards such a thing when the two were one
+ * region, still lies within the ring), or -1. */
+static int local_outer_ring(const rl_label *lb, const rl_box *w, const rl_detection *u, double R)
+{
+    double best_size = 0;
+    int i, best = -1, best_holds = 0;
+    for (i = 0; i < lb->n_regions; i++) {
+        const rl_region *g = &lb->reg[i];
+        double size = region_size(g);
+        double gx = w->x0 + (g->x0 + g->x1) / 2.0, gy = w->y0 + (g->y0 + g->y1) / 2.0;
+        rl_box b;
+        int holds;
+        if (size < R || size > 2.5 * R || fabs(gx - u->u) > 1.2 * R || fabs(gy - u->v) > 1.2 * R)
+            continue;
+        b.x0 = w->x0 + g->x0;
+        b.y0 = w->y0 + g->y0;
+        b.x1 = w->x0 + g->x1;
+        b.y1 = w->y0 + g->y1;
+        holds = rl_geom_box_has(&b, u->u, u->v);
+        if (holds > best_holds || (holds == best_holds && size > best_size)) {
+            best_size = size;
+            best = i;
+            best_holds = holds;
+        }
+    }
+    return best;
+}
+
+#define LOCATE_SIZE_TOLERANCE 0.45
+
+
+/* Thresholds tried, each midway between the ink and the one before: the
+ * first may join the outer ring to its surroundings (a ceiling darker
+ * than the paper past a narrow margin, paper dimmed away from a lamp)
+ * into one region too large for a landmark. */
+#define LOCATE_STEPS 3
+
+int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *res,
+                         const rl_detection *u, double R, rl_box *box, double *cx, double *cy,
+                         double *r)
+{
+    rl_image win;
+    rl_box w;
+    rl_edge_window ew;
+    int thr, reg = -1, step, light = res->levels.light;
+    double ink, tx, ty, tr = R;
+    if (!local_window(res, u, R, &w) ||
+        rl_image_sub(img, w.x0, w.y0, w.x1 - w.x0 + 1, w.y1 - w.y0 + 1, &win) != RL_OK ||
+        !local_threshold(img, &w, u, R, rec->tone, light, &thr, &ink))
+        return 0;
+    for (step = 0; step < LOCATE_STEPS && reg < 0; step++) {
+        if (step > 0)
+            thr = rl_tone_midway(rec->tone, ink, thr);
+        if (rl_label_band(&rec->dark, &win, 0, thr, rl_recog_speck_area(&rec->cfg)) != RL_OK)
+            return 0;
+        reg = local_outer_ring(&rec->dark, &w, u, R);
+    }
+    if (reg < 0)
+        return 0;
+    box->x0 = w.x0 + rec->dark.reg[reg].x0;
+    box->y0 = w.y0 + rec->dark.reg[reg].y0;
+    box->x1 = w.x0 + rec->dark.reg[reg].x1;
+    box->y1 = w.y0 + rec->dark.reg[reg].y1;
+    /* the centre from the visible outer edge, not the centroid of what is
+     * left (biased inwards when part is missing) */
+    ew.img = &win;
+    ew.x0 = w.x0;
+    ew.y0 = w.y0;
+    ew.frame_w = rec->width;
+    ew.frame_h = rec->height;
+    if (!rl_edge_fit_outline(&rec->dark, reg, &ew, thr, light, cx, cy, r))
+        return 0;
+    *cx += w.x0;
+    *cy += w.y0;
+    /* then the grey outer edge, from that centre (the identification
+     * refines centre and radius once more) */
+    tx = *cx;
+    ty = *cy;
+    if (rl_edge_fit_rays(img, rec->tone, light, &tx, &ty, &tr)) {
+        *cx = tx;
+        *cy = ty;
+        *r = tr;
+    } else if (region_size(&rec->dark.reg[reg]) < RING_MIN_SIZE * R) {
+        return 0; /* a code ring taken for its centre: its radius is not the landmark's */
+    }
+    if (region_size(&rec->dark.reg[reg]) < RING_MIN_SIZE * R) {
+        /* the box of the outer ring found from a code ring's centre */
+        box->x0 = (int)floor(*cx - *r);
+        box->y0 = (int)floor(*cy - *r);
+        box->x1 = (int)ceil(*cx + *r);
+        box->y1 = (int)ceil(*cy + *r);
+    }
+    /* the frame's landmarks are of one size but for the lens: a wide angle
+     * shrinks them towards the corners, where a circle fitted to an
+     * ellipse's arc comes out shorter still */
+    return fabs(*r - R) <= LOCATE_SIZE_TOLERANCE * R;
+}
