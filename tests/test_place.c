@@ -153,6 +153,28 @@ static int view(const rl_calib *cam, const rl_mount *mount, double x, double y, 
     return n;
 }
 
+/* A map of two copies of ids 4 5 6, at (0,0) (0.61,0) (0,0.61) and again
+ * 10 m away, and the n landmarks of `more` (id, x, y) after them. */
+static void two_copies(const double (*more)[3], int n)
+{
+    int i;
+    memset(&map, 0, sizeof map);
+    assert_int_equal(rl_family_init(&map.family, 5), RL_OK);
+    map.diameter = 0.2;
+    map.ceiling_height = 2.75;
+    for (i = 0; i < 6; i++) {
+        map.lm[i].id = 4 + i % 3;
+        map.lm[i].x = (i % 3 == 1 ? 0.61 : 0) + (i >= 3 ? 10 : 0);
+        map.lm[i].y = i % 3 == 2 ? 0.61 : 0;
+    }
+    for (i = 0; i < n; i++) {
+        map.lm[6 + i].id = (int)more[i][0];
+        map.lm[6 + i].x = more[i][1];
+        map.lm[6 + i].y = more[i][2];
+    }
+    map.count = 6 + n;
+}
+
 /* Two copies of the same three ids in the same shape: no prior cannot
  * tell them apart (ambiguous, no pose); a fourth landmark that only one
  * copy has settles it; the prior settles it with two. */
@@ -167,21 +189,9 @@ static void copies_are_ambiguous(void **state)
     rl_place_prior prior = {1, 0.61, 0.0, 0.0, 0.1};
     rl_pose pose;
     int both[3] = {0, 1, 2}, with_fourth[4] = {0, 1, 2, 3}, two[2] = {0, 1}, i;
+    static const double seventh[1][3] = {{7, 0.61, 0.61}}; /* beside the first copy */
     (void)state;
-    memset(&map, 0, sizeof map);
-    assert_int_equal(rl_family_init(&map.family, 5), RL_OK);
-    map.diameter = 0.2;
-    map.ceiling_height = 2.75;
-    /* ids 4 5 6 at (0,0) (0.61,0) (0,0.61), again 10 m away, and a 7 beside the first */
-    for (i = 0; i < 6; i++) {
-        map.lm[i].id = 4 + i % 3;
-        map.lm[i].x = (i % 3 == 1 ? 0.61 : 0) + (i >= 3 ? 10 : 0);
-        map.lm[i].y = i % 3 == 2 ? 0.61 : 0;
-    }
-    map.lm[6].id = 7;
-    map.lm[6].x = 0.61;
-    map.lm[6].y = 0.61;
-    map.count = 7;
+    two_copies(seventh, 1);
     rl_place_defaults(&cfg);
     pl = build(&cfg);
     rl_calib_defaults(&cam, 640, 480, 70 * M_PI / 180);
@@ -237,26 +247,10 @@ static void carried_robot_is_found_where_it_is(void **state)
     rl_place_found f;
     rl_place_prior prior = {1, 0.35, 0.25, 0.45, 0.1};
     rl_pose pose;
-    int seen[5] = {3, 4, 6, 7, 8}, i; /* ids 4 and 5 of the second copy, 8, 9 and 10 */
-    static const double extra[3][3] = {{8, 10.61, 0.61}, {9, 9.39, 0.0}, {10, 10.0, -0.61}};
+    int seen[5] = {3, 4, 6, 7, 8}; /* ids 4 and 5 of the second copy, 8, 9 and 10 */
+    static const double around_second[3][3] = {{8, 10.61, 0.61}, {9, 9.39, 0.0}, {10, 10.0, -0.61}};
     (void)state;
-    memset(&map, 0, sizeof map);
-    assert_int_equal(rl_family_init(&map.family, 5), RL_OK);
-    map.diameter = 0.2;
-    map.ceiling_height = 2.75;
-    /* ids 4 5 6 at (0,0) (0.61,0) (0,0.61), again 10 m away, and 8 9 10
-     * around the second copy only */
-    for (i = 0; i < 6; i++) {
-        map.lm[i].id = 4 + i % 3;
-        map.lm[i].x = (i % 3 == 1 ? 0.61 : 0) + (i >= 3 ? 10 : 0);
-        map.lm[i].y = i % 3 == 2 ? 0.61 : 0;
-    }
-    for (i = 0; i < 3; i++) {
-        map.lm[6 + i].id = (int)extra[i][0];
-        map.lm[6 + i].x = extra[i][1];
-        map.lm[6 + i].y = extra[i][2];
-    }
-    map.count = 9;
+    two_copies(around_second, 3);
     rl_place_defaults(&cfg);
     pl = build(&cfg);
     rl_calib_defaults(&cam, 640, 480, 70 * M_PI / 180);
