@@ -186,14 +186,17 @@ static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_resul
 /* Read across the motion: the same id as the circle's, and plain there,
  * along each axis in the frame (reads_in_frame); a half axis, half the
  * pixels, must lead by HALF_READ_LEAD. Reads the polar cells of the
- * circle's search. */
+ * circle's search. Not from a centre outside the frame (a circle fitted
+ * to less than half a ring): no read sees it, and a few octants read
+ * from a centre a few pixels off can name another code clearly. */
 static int read_across(const rl_recog *rec, const rl_accept_rule *rule, const local_read *rd)
 {
     int W = rec->width, H = rec->height, n, whole;
     unsigned reads[READS_MAX];
     rl_accept_rule half = *rule;
     rl_match ma;
-    if (rd->m.id < 0 || rd->m.score < rule->min_score)
+    if (rd->m.id < 0 || rd->m.score < rule->min_score || rd->cx < 0 || rd->cy < 0 || rd->cx > W - 1 ||
+        rd->cy > H - 1)
         return 0;
     n = reads_in_frame(rec->polar, W, H, rd->cx, rd->cy, rd->r, reads, &whole);
     rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, rule->max_blur,
