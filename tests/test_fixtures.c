@@ -222,7 +222,7 @@ static const char *stats_dir;
  * time. */
 static void moving_guards(const char *set, const eval_counts *c)
 {
-    double complete = 0.96, glare = 0.93, border = 0.85, per_id = 0.75;
+    double complete = 0.96, glare = 0.93, border = 0.80, per_id = 0.75;
     int id, per_id_min = 8;
     if (strcmp(set, "degraded") == 0)
         return;
