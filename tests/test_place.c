@@ -263,6 +263,41 @@ static void carried_robot_is_found_where_it_is(void **state)
         fail_msg("pose (%.3f, %.3f), truth (10.300, 0.300)", pose.x, pose.y);
 }
 
+/* Near the last pose, two ids that verify and three the map does not
+ * hold (landmarks left out of the survey): the whole map gives no clear
+ * place (the two copies look alike there), so the tracked place is kept.
+ * Truth: the pose the detections were projected from. */
+static void unmapped_landmarks_keep_tracking(void **state)
+{
+    rl_place_config cfg;
+    rl_place *pl;
+    rl_calib cam;
+    rl_mount mount;
+    rl_detection d[5];
+    rl_place_found f;
+    rl_place_prior prior = {1, 0.35, 0.25, 0.45, 0.1};
+    rl_pose pose;
+    int two[2] = {0, 1}, k;
+    (void)state;
+    two_copies(NULL, 0);
+    rl_place_defaults(&cfg);
+    pl = build(&cfg);
+    rl_calib_defaults(&cam, 640, 480, 70 * M_PI / 180);
+    rl_mount_defaults(&mount, 0.88);
+    view(&cam, &mount, 0.3, 0.3, 0.4, two, 2, d);
+    for (k = 2; k < 5; k++) {
+        d[k] = d[0];
+        d[k].id = 18 + k; /* 20, 21, 22: not in the map */
+        d[k].u = 100.0 + 150.0 * (k - 2);
+        d[k].v = 400.0;
+    }
+    assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 5, NULL, &prior, &pose, &f), RL_OK);
+    assert_int_equal(f.status, RL_PLACE_TRACKED);
+    assert_int_equal(f.verified, 2);
+    if (hypot(pose.x - 0.3, pose.y - 0.3) > 0.01)
+        fail_msg("pose (%.3f, %.3f), truth (0.300, 0.300)", pose.x, pose.y);
+}
+
 /* Ids falling along the detections' order (the nearest the image centre
  * first: 9, then 7, then 5): every pair is looked up with its higher id
  * first, and still proposes the place. */
@@ -300,7 +335,8 @@ int main(void)
         cmocka_unit_test(index_matches_brute_force), cmocka_unit_test(near_matches_brute_force),
         cmocka_unit_test(sizes_and_refusals), cmocka_unit_test(map_repeats_but_never_overlaps),
         cmocka_unit_test(copies_are_ambiguous),
-        cmocka_unit_test(carried_robot_is_found_where_it_is), cmocka_unit_test(ids_in_falling_order),
+        cmocka_unit_test(carried_robot_is_found_where_it_is),
+        cmocka_unit_test(unmapped_landmarks_keep_tracking), cmocka_unit_test(ids_in_falling_order),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

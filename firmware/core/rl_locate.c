@@ -108,7 +108,6 @@ static int local_outer_ring(const rl_label *lb, const rl_box *w, const rl_detect
 
 #define LOCATE_SIZE_TOLERANCE 0.45
 
-
 /* Thresholds tried, each midway between the ink and the one before: the
  * first may join the outer ring to its surroundings (a ceiling darker
  * than the paper past a narrow margin, paper dimmed away from a lamp)
@@ -164,11 +163,12 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
         return 0; /* a code ring taken for its centre: its radius is not the landmark's */
     }
     if (region_size(&rec->dark.reg[reg]) < RING_MIN_SIZE * R) {
-        /* the box of the outer ring found from a code ring's centre */
-        box->x0 = (int)floor(*cx - *r);
-        box->y0 = (int)floor(*cy - *r);
-        box->x1 = (int)ceil(*cx + *r);
-        box->y1 = (int)ceil(*cy + *r);
+        /* the box of the outer ring found from a code ring's centre, in
+         * the frame */
+        box->x0 = *cx - *r > 0 ? (int)floor(*cx - *r) : 0;
+        box->y0 = *cy - *r > 0 ? (int)floor(*cy - *r) : 0;
+        box->x1 = *cx + *r < rec->width - 1 ? (int)ceil(*cx + *r) : rec->width - 1;
+        box->y1 = *cy + *r < rec->height - 1 ? (int)ceil(*cy + *r) : rec->height - 1;
     }
     /* the frame's landmarks are of one size but for the lens: a wide angle
      * shrinks them towards the corners, where a circle fitted to an

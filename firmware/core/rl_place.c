@@ -275,12 +275,13 @@ static int clear(const search *s, int min_landmarks, int margin)
            s->best.matched >= s->best.conflicts + margin;
 }
 
-/* Near the last pose two landmarks are enough, but only as a place that
- * verifies at least half of what the frame identified: where most of the
- * frame's landmarks verify nowhere near, the robot is not there (it was
- * carried, or the last pose was wrong), and two ids that happen to lie
- * near where the prior puts them are a coincidence of a map whose ids
- * repeat. */
+/* Near the last pose two landmarks are enough; a tracked place that
+ * leaves more than half of the frame's landmarks unverified is checked
+ * against the whole map first: the robot may have been carried (or the
+ * last pose was wrong), and two ids that happen to lie near where the
+ * prior puts them are a coincidence of a map whose ids repeat. It is kept
+ * when the whole map gives no clear place (the frame's other landmarks
+ * may be ones the map does not hold). */
 static int explains(const search *s, const obs_set *o)
 {
     return 2 * s->best.matched >= o->n;
@@ -307,8 +308,8 @@ rl_err rl_place_find(const rl_place *pl, const rl_calib *cam, const rl_mount *mo
                      const rl_offsets *offsets, const rl_place_prior *prior, rl_place_found *found)
 {
     obs_set o;
-    search s;
-    int i;
+    search s, tracked;
+    int i, have_tracked = 0;
     if (pl == NULL || cam == NULL || mount == NULL || found == NULL || n < 0 || (n > 0 && lm == NULL) ||
         rl_calib_check(cam) != RL_OK)
         return RL_EINVAL;
@@ -326,6 +327,8 @@ rl_err rl_place_find(const rl_place *pl, const rl_calib *cam, const rl_mount *mo
             report(&s, &o, RL_PLACE_TRACKED, found);
             return RL_OK;
         }
+        have_tracked = clear(&s, 2, 1);
+        tracked = s;
         found->candidates = s.candidates;
         memset(&s, 0, sizeof s);
         s.gate = pl->cfg.gate;
@@ -333,6 +336,11 @@ rl_err rl_place_find(const rl_place *pl, const rl_calib *cam, const rl_mount *mo
     search_all(pl, &o, &s);
     if (clear(&s, pl->cfg.min_landmarks, pl->cfg.margin)) {
         report(&s, &o, RL_PLACE_FOUND, found);
+        return RL_OK;
+    }
+    if (have_tracked) {
+        found->candidates = s.candidates; /* report adds the tracked search's */
+        report(&tracked, &o, RL_PLACE_TRACKED, found);
         return RL_OK;
     }
     report(&s, &o, RL_PLACE_AMBIGUOUS, found);

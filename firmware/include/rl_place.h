@@ -20,11 +20,13 @@
  * within max_speed * age and max_turn * age of it, from the map landmarks
  * of each id near where the previous pose puts them (no index needed): two
  * landmarks suffice, and the place is taken when no other place within the
- * bound verifies as many and it verifies at least half of the frame's
- * landmarks (two ids that happen to lie near where the prior puts them,
- * while the rest of the frame verifies nowhere near, are a coincidence of
- * a map whose ids repeat). Otherwise (a robot carried elsewhere) the frame
- * is searched as if there were no prior.
+ * bound verifies as many. One that leaves more than half of the frame's
+ * landmarks unverified is taken only when the whole map, searched as if
+ * there were no prior, gives no clear place (two ids that happen to lie
+ * near where the prior puts them, while the rest of the frame verifies
+ * nowhere near, are a coincidence of a map whose ids repeat). Otherwise
+ * (a robot carried elsewhere) the frame is searched as if there were no
+ * prior.
  *
  *   static uint8_t mem[1 << 20];
  *   rl_place_config pc;
