@@ -231,6 +231,31 @@ static void copies_are_ambiguous(void **state)
     assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 1, NULL, &prior, &pose, &f), RL_ETOOFEW);
 }
 
+/* The place finder with its defaults over the map, and the camera and
+ * mounting the detections are projected through (view). */
+static rl_place *rig(rl_calib *cam, rl_mount *mount)
+{
+    rl_place_config cfg;
+    rl_place_defaults(&cfg);
+    rl_calib_defaults(cam, 640, 480, 70 * M_PI / 180);
+    rl_mount_defaults(mount, 0.88);
+    return build(&cfg);
+}
+
+/* The n detections d with the prior give a pose near (x, y), found with
+ * `status` and `verified` landmarks verified. */
+static void expect_place(rl_place *pl, const rl_calib *cam, const rl_mount *mount, const rl_detection *d,
+                         int n, const rl_place_prior *prior, int status, int verified, double x, double y)
+{
+    rl_place_found f;
+    rl_pose pose;
+    assert_int_equal(rl_place_solve(pl, cam, mount, d, n, NULL, prior, &pose, &f), RL_OK);
+    assert_int_equal(f.status, status);
+    assert_int_equal(f.verified, verified);
+    if (hypot(pose.x - x, pose.y - y) > 0.01)
+        fail_msg("pose (%.3f, %.3f), truth (%.3f, %.3f)", pose.x, pose.y, x, y);
+}
+
 /* A robot carried from one copy of three ids to the other, with three
  * more landmarks in view there: near the last pose two of the frame's
  * five ids fit the first copy, but a place that leaves most of the frame
@@ -239,28 +264,18 @@ static void copies_are_ambiguous(void **state)
  * projected from. */
 static void carried_robot_is_found_where_it_is(void **state)
 {
-    rl_place_config cfg;
     rl_place *pl;
     rl_calib cam;
     rl_mount mount;
     rl_detection d[5];
-    rl_place_found f;
     rl_place_prior prior = {1, 0.35, 0.25, 0.45, 0.1};
-    rl_pose pose;
     int seen[5] = {3, 4, 6, 7, 8}; /* ids 4 and 5 of the second copy, 8, 9 and 10 */
     static const double around_second[3][3] = {{8, 10.61, 0.61}, {9, 9.39, 0.0}, {10, 10.0, -0.61}};
     (void)state;
     two_copies(around_second, 3);
-    rl_place_defaults(&cfg);
-    pl = build(&cfg);
-    rl_calib_defaults(&cam, 640, 480, 70 * M_PI / 180);
-    rl_mount_defaults(&mount, 0.88);
+    pl = rig(&cam, &mount);
     view(&cam, &mount, 10.3, 0.3, 0.4, seen, 5, d);
-    assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 5, NULL, &prior, &pose, &f), RL_OK);
-    assert_int_equal(f.status, RL_PLACE_FOUND);
-    assert_int_equal(f.verified, 5);
-    if (hypot(pose.x - 10.3, pose.y - 0.3) > 0.01)
-        fail_msg("pose (%.3f, %.3f), truth (10.300, 0.300)", pose.x, pose.y);
+    expect_place(pl, &cam, &mount, d, 5, &prior, RL_PLACE_FOUND, 5, 10.3, 0.3);
 }
 
 /* Near the last pose, two ids that verify and three the map does not
@@ -269,21 +284,15 @@ static void carried_robot_is_found_where_it_is(void **state)
  * Truth: the pose the detections were projected from. */
 static void unmapped_landmarks_keep_tracking(void **state)
 {
-    rl_place_config cfg;
     rl_place *pl;
     rl_calib cam;
     rl_mount mount;
     rl_detection d[5];
-    rl_place_found f;
     rl_place_prior prior = {1, 0.35, 0.25, 0.45, 0.1};
-    rl_pose pose;
     int two[2] = {0, 1}, k;
     (void)state;
     two_copies(NULL, 0);
-    rl_place_defaults(&cfg);
-    pl = build(&cfg);
-    rl_calib_defaults(&cam, 640, 480, 70 * M_PI / 180);
-    rl_mount_defaults(&mount, 0.88);
+    pl = rig(&cam, &mount);
     view(&cam, &mount, 0.3, 0.3, 0.4, two, 2, d);
     for (k = 2; k < 5; k++) {
         d[k] = d[0];
@@ -291,11 +300,7 @@ static void unmapped_landmarks_keep_tracking(void **state)
         d[k].u = 100.0 + 150.0 * (k - 2);
         d[k].v = 400.0;
     }
-    assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 5, NULL, &prior, &pose, &f), RL_OK);
-    assert_int_equal(f.status, RL_PLACE_TRACKED);
-    assert_int_equal(f.verified, 2);
-    if (hypot(pose.x - 0.3, pose.y - 0.3) > 0.01)
-        fail_msg("pose (%.3f, %.3f), truth (0.300, 0.300)", pose.x, pose.y);
+    expect_place(pl, &cam, &mount, d, 5, &prior, RL_PLACE_TRACKED, 2, 0.3, 0.3);
 }
 
 /* Ids falling along the detections' order (the nearest the image centre

@@ -108,6 +108,15 @@ static int local_outer_ring(const rl_label *lb, const rl_box *w, const rl_detect
 
 #define LOCATE_SIZE_TOLERANCE 0.45
 
+/* The box of the circle (cx, cy, r) within the W x H frame. */
+static void circle_box(int W, int H, double cx, double cy, double r, rl_box *box)
+{
+    box->x0 = cx - r > 0 ? (int)floor(cx - r) : 0;
+    box->y0 = cy - r > 0 ? (int)floor(cy - r) : 0;
+    box->x1 = cx + r < W - 1 ? (int)ceil(cx + r) : W - 1;
+    box->y1 = cy + r < H - 1 ? (int)ceil(cy + r) : H - 1;
+}
+
 /* Thresholds tried, each midway between the ink and the one before: the
  * first may join the outer ring to its surroundings (a ceiling darker
  * than the paper past a narrow margin, paper dimmed away from a lamp)
@@ -121,7 +130,7 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
     rl_image win;
     rl_box w;
     rl_edge_window ew;
-    int thr, reg = -1, step, light = res->levels.light;
+    int thr, reg = -1, step, light = res->levels.light, code_ring;
     double ink, tx, ty, tr = R;
     if (!local_window(res, u, R, &w) ||
         rl_image_sub(img, w.x0, w.y0, w.x1 - w.x0 + 1, w.y1 - w.y0 + 1, &win) != RL_OK ||
@@ -136,6 +145,7 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
     }
     if (reg < 0)
         return 0;
+    code_ring = region_size(&rec->dark.reg[reg]) < RING_MIN_SIZE * R;
     box->x0 = w.x0 + rec->dark.reg[reg].x0;
     box->y0 = w.y0 + rec->dark.reg[reg].y0;
     box->x1 = w.x0 + rec->dark.reg[reg].x1;
@@ -159,17 +169,11 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
         *cx = tx;
         *cy = ty;
         *r = tr;
-    } else if (region_size(&rec->dark.reg[reg]) < RING_MIN_SIZE * R) {
+    } else if (code_ring) {
         return 0; /* a code ring taken for its centre: its radius is not the landmark's */
     }
-    if (region_size(&rec->dark.reg[reg]) < RING_MIN_SIZE * R) {
-        /* the box of the outer ring found from a code ring's centre, in
-         * the frame */
-        box->x0 = *cx - *r > 0 ? (int)floor(*cx - *r) : 0;
-        box->y0 = *cy - *r > 0 ? (int)floor(*cy - *r) : 0;
-        box->x1 = *cx + *r < rec->width - 1 ? (int)ceil(*cx + *r) : rec->width - 1;
-        box->y1 = *cy + *r < rec->height - 1 ? (int)ceil(*cy + *r) : rec->height - 1;
-    }
+    if (code_ring) /* the outer ring's box, not the code ring's */
+        circle_box(rec->width, rec->height, *cx, *cy, *r, box);
     /* the frame's landmarks are of one size but for the lens: a wide angle
      * shrinks them towards the corners, where a circle fitted to an
      * ellipse's arc comes out shorter still */

@@ -323,12 +323,14 @@ rl_err rl_place_find(const rl_place *pl, const rl_calib *cam, const rl_mount *mo
     s.gate = pl->cfg.gate;
     if (prior != NULL && prior->valid && prior->age >= 0 && prior->age <= pl->cfg.track_age) {
         search_near(pl, &o, prior, &s);
-        if (clear(&s, 2, 1) && explains(&s, &o)) {
-            report(&s, &o, RL_PLACE_TRACKED, found);
-            return RL_OK;
+        if (clear(&s, 2, 1)) {
+            if (explains(&s, &o)) {
+                report(&s, &o, RL_PLACE_TRACKED, found);
+                return RL_OK;
+            }
+            tracked = s; /* kept unless the whole map gives a clear place */
+            have_tracked = 1;
         }
-        have_tracked = clear(&s, 2, 1);
-        tracked = s;
         found->candidates = s.candidates;
         memset(&s, 0, sizeof s);
         s.gate = pl->cfg.gate;
