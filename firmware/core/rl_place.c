@@ -320,6 +320,7 @@ rl_err rl_place_find(const rl_place *pl, const rl_calib *cam, const rl_mount *mo
     if (o.n < 2)
         return RL_ETOOFEW;
     memset(&s, 0, sizeof s);
+    memset(&tracked, 0, sizeof tracked); /* read only when have_tracked; GCC's -O3 cannot tell */
     s.gate = pl->cfg.gate;
     if (prior != NULL && prior->valid && prior->age >= 0 && prior->age <= pl->cfg.track_age) {
         search_near(pl, &o, prior, &s);
