@@ -55,8 +55,9 @@ static void test_the_better_curve_takes_over(void **state)
     int which[RL_TONES_MAX];
     (void)state;
     rl_tones_init(&ts, 0.0);
-    /* two frames where the linear curve identifies one more: 1, then
-     * 1.9 votes against 0, a lead over 1: it becomes the current curve */
+    /* three frames where the linear curve identifies one more: 1, 1.9,
+     * then 2.71 votes against 0, a lead over 2: it becomes the current curve */
+    frame(&ts, 5, 6);
     frame(&ts, 5, 6);
     assert_true(rl_tones_gamma(&ts) == 2.2);
     frame(&ts, 5, 6);
@@ -66,6 +67,23 @@ static void test_the_better_curve_takes_over(void **state)
     assert_int_equal(rl_tones_vote(&ts, which, 2, (int[]){3, 5}), 1);
     assert_int_equal(rl_tones_to_try(&ts, which), 2);
     assert_int_equal(rl_tones_vote(&ts, which, 2, (int[]){4, 5}), 0);
+}
+
+static void test_a_tie_between_holds_the_current_curve(void **state)
+{
+    rl_tones ts;
+    (void)state;
+    rl_tones_init(&ts, 0.0);
+    /* linear one more twice (1.9 against 0), a tie (2.2 gets 1, linear
+     * 1.71), linear one more (0.9 against 2.54): a lead of 1.64, short of 2 */
+    frame(&ts, 5, 6);
+    frame(&ts, 5, 6);
+    frame(&ts, 5, 5);
+    frame(&ts, 5, 6);
+    assert_true(rl_tones_gamma(&ts) == 2.2);
+    /* one more such frame: 0.81 against 3.29, a lead of 2.48 */
+    frame(&ts, 5, 6);
+    assert_true(rl_tones_gamma(&ts) == 1.0);
 }
 
 static void test_a_configured_curve_is_the_only_one(void **state)
@@ -85,6 +103,7 @@ int main(void)
         cmocka_unit_test(test_ties_settle_on_the_current_curve),
         cmocka_unit_test(test_empty_frames_do_not_vote),
         cmocka_unit_test(test_the_better_curve_takes_over),
+        cmocka_unit_test(test_a_tie_between_holds_the_current_curve),
         cmocka_unit_test(test_a_configured_curve_is_the_only_one),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -6,8 +6,11 @@
 /* Votes of past frames fade by this much a frame: a change of camera
  * settings is followed within some twenty frames. */
 #define VOTE_FADE 0.9
-/* Votes the other curve must lead by to become the current one. */
-#define SWITCH_LEAD 1.0
+/* Votes the other curve must lead by to become the current one: two, as
+ * one landmark more in each of the first two frames is no camera's curve
+ * (paper darker than the ceiling passes the contrast rule more often in
+ * grey levels than in light); a linear camera takes the third frame. */
+#define SWITCH_LEAD 2.0
 /* Landmarks more that make a frame's own choice clear. */
 #define CLEAR_LEAD 2
 
