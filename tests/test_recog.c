@@ -298,6 +298,59 @@ static void test_landmark_touching_a_marker_is_read(void **state)
         fail_msg("id 8 not found (%d candidates not identified)", res.n_unidentified);
 }
 
+/* A landmark on a letter sheet (0.03 R of paper beside its ring on two
+ * sides) on a grille of dark and light stripes, beside a lamp: past the
+ * narrow margin the stripes are dark, then light, at about one radius in
+ * many directions, which is no ring around it (a ring that large would
+ * belong to a landmark twice the frame's size). */
+static void test_landmark_on_a_grille_is_read(void **state)
+{
+    static const placed lm[] = {{3, 150.3, 120.6, 25.0}, {25, 45.2, 60.3, 25.0}, {17, 275.6, 60.4, 25.0}};
+    static uint8_t t[H * W], dk[H * W];
+    static float im[H * W];
+    rl_recog_config cfg;
+    rl_family f = {5};
+    rl_image img = rl_image_view(W, H, W, frame), tv = rl_image_view(W, H, W, t);
+    const double cx = lm[0].u, cy = lm[0].v, r = lm[0].r;
+    size_t k;
+    int x, y, j, found = 0;
+    (void)state;
+    memset(dk, 0, sizeof dk);
+    for (k = 0; k < sizeof lm / sizeof lm[0]; k++) {
+        assert_int_equal(rl_raster_draw(&f, lm[k].id, lm[k].u, lm[k].v, lm[k].r, NULL, &tv, NULL), RL_OK);
+        for (j = 0; j < W * H; j++)
+            dk[j] = t[j] > dk[j] ? t[j] : dk[j];
+    }
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            int sheet = fabs(x - cx) <= 1.03 * r && fabs(y - cy) <= 1.33 * r; /* letter */
+            double v;
+            for (k = 1; k < sizeof lm / sizeof lm[0]; k++)
+                sheet |= on_sheet(x, y, lm[k].u, lm[k].v, lm[k].r);
+            v = sheet ? 200 - 160 * dk[y * W + x] / 255.0 : (x + y) % 5 < 2 ? 45 : 140; /* the grille */
+            if (y >= cy + 1.6 * r)
+                v = 255; /* the lamp, below */
+            im[y * W + x] = (float)v;
+        }
+    blur_float(im, 1.0);
+    for (j = 0; j < W * H; j++)
+        frame[j] = (uint8_t)lround(im[j]);
+    rl_recog_defaults(&cfg);
+    init(&cfg);
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
+    for (j = 0; j < res.n_landmarks; j++) {
+        const rl_detection *d = &res.landmarks[j];
+        for (k = 0; k < sizeof lm / sizeof lm[0]; k++)
+            if (d->id == lm[k].id && hypot(d->u - lm[k].u, d->v - lm[k].v) < 1.5)
+                break;
+        if (k == sizeof lm / sizeof lm[0])
+            fail_msg("id %d of radius %.1f at (%.1f, %.1f), where none was drawn", d->id, d->radius, d->u, d->v);
+        found += k == 0;
+    }
+    if (!found)
+        fail_msg("id 3 not found (%d candidates not identified)", res.n_unidentified);
+}
+
 /* A soft dark blob next to a lamp (a shade, a fixture's edge out of
  * focus) looks, once each sector is normalized on its own, like a disk in
  * a ring, code 01111: drawn here as id 15 blurred by 0.2 of its radius, it
@@ -671,6 +724,7 @@ int main(void)
         cmocka_unit_test(test_landmark_in_lamp_glow_is_found),
         cmocka_unit_test(test_half_landmark_at_border_is_read),
         cmocka_unit_test(test_landmark_touching_a_marker_is_read),
+        cmocka_unit_test(test_landmark_on_a_grille_is_read),
         cmocka_unit_test(test_map_restricts_ids),
         cmocka_unit_test(test_blank_frames),
         cmocka_unit_test(test_errors),

@@ -83,7 +83,7 @@ void rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, c
     /* as a circle first; an ellipse only when the circle is not taken */
     if (identify_through(rec, img, tone, c, &local,
                          rl_result_light_gap(res, &c->box) <= rec->cfg.near_light * d->radius, d, &m) &&
-        !rl_inner_enclosed(img, frame->light, d->u, d->v, d->radius)) {
+        !rl_inner_enclosed(img, frame->light, d->u, d->v, d->radius, 0.0)) {
         d->id = m.id;
         if (rec->cfg.band_radius && d->complete && rl_shape_is_circle(&c->shape))
             rl_refine_radius_band(img, tone, &rec->cfg.family, d->id, d->u, d->v, &d->radius);

@@ -30,10 +30,10 @@ enum { RAY_UNKNOWN, RAY_CLEAR, RAY_HIT };
 
 /* What the ray in direction (c, s) meets beyond the candidate's quiet
  * zone: a dark ring with paper beyond it (its radius in radii in *hit),
- * nothing up to ENCLOSE_TO, or unknown (no contrast of its own here, the
+ * nothing up to `to` px, or unknown (no contrast of its own here, the
  * border or a light came first, or the dark does not end like a ring's). */
-static int ray_meets(const rl_image *img, int light, double cx, double cy, double r, double c,
-                     double s, double *hit)
+static int ray_meets(const rl_image *img, int light, double cx, double cy, double r, double to,
+                     double c, double s, double *hit)
 {
     double rho;
     int ink = 256, paper = -1, mid, g = 0;
@@ -49,7 +49,7 @@ static int ray_meets(const rl_image *img, int light, double cx, double cy, doubl
     if (g < 0 || ink > 255 || paper < 0 || paper - ink < 20)
         return RAY_UNKNOWN;
     mid = (ink + paper) / 2;
-    for (rho = ENCLOSE_FROM * r; rho <= ENCLOSE_TO * r; rho += 1.0) {
+    for (rho = ENCLOSE_FROM * r; rho <= to; rho += 1.0) {
         g = grey_at(img, cx + rho * c, cy + rho * s);
         if (g < 0 || g >= light || g < mid)
             break;
@@ -67,16 +67,17 @@ static int ray_meets(const rl_image *img, int light, double cx, double cy, doubl
         }
         return RAY_UNKNOWN;
     }
-    return rho > ENCLOSE_TO * r ? RAY_CLEAR : RAY_UNKNOWN;
+    return rho > to ? RAY_CLEAR : RAY_UNKNOWN;
 }
 
-int rl_inner_enclosed(const rl_image *img, int light, double cx, double cy, double r)
+int rl_inner_enclosed(const rl_image *img, int light, double cx, double cy, double r, double reach)
 {
     double hit[ENCLOSE_RAYS], dc[ENCLOSE_RAYS], ds[ENCLOSE_RAYS], med;
+    double to = reach > 0 && reach < ENCLOSE_TO * r ? reach : ENCLOSE_TO * r;
     int a, clear = 0, nhit = 0, agree = 0, i;
     rl_ray_dirs(ENCLOSE_RAYS, dc, ds);
     for (a = 0; a < ENCLOSE_RAYS; a++) {
-        int k = ray_meets(img, light, cx, cy, r, dc[a], ds[a], &hit[nhit]);
+        int k = ray_meets(img, light, cx, cy, r, to, dc[a], ds[a], &hit[nhit]);
         nhit += k == RAY_HIT;
         clear += k == RAY_CLEAR;
     }

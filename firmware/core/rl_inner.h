@@ -11,7 +11,14 @@
  * directions mean the candidate sits inside a larger landmark. A dark
  * ceiling around a sheet is dark that does not end: no ring.
  *
- *   if (rl_inner_enclosed(&img, light, d.u, d.v, d.radius))
+ * An enclosing landmark is at most a few times the candidate's size; where
+ * the frame's landmark size is known, no larger than one of that size
+ * (the lens's spread allowed for): `reach` bounds how far out its ring may
+ * start, so that a striped or grated ceiling past a narrow margin (dark,
+ * then light, at about one radius in many directions) is no ring around a
+ * landmark of the frame's size.
+ *
+ *   if (rl_inner_enclosed(&img, light, d.u, d.v, d.radius, 0.0))
  *       d.id = -1;   // not a landmark
  */
 #ifndef RL_INNER_H
@@ -20,7 +27,9 @@
 #include "rl_image.h"
 #include "rl_recog.h"
 
-/* 1 if the candidate (cx, cy, r) is enclosed by a concentric dark ring. */
-int rl_inner_enclosed(const rl_image *img, int light, double cx, double cy, double r);
+/* 1 if the candidate (cx, cy, r) is enclosed by a concentric dark ring
+ * that starts within `reach` px of its centre (0: within 2.9 r, the ring
+ * around the smallest mimic). */
+int rl_inner_enclosed(const rl_image *img, int light, double cx, double cy, double r, double reach);
 
 #endif

@@ -272,9 +272,11 @@ static int cut_agrees_with_box(rl_recog *rec, const rl_image *img, int light, co
  * too, under the cut rule. */
 #define CUT_MIN_VISIBLE 0.4
 
-/* Retry one DUCLR u of expected radius R; 1 if identified (into *out). */
+/* Retry one DUCLR u of expected radius R; 1 if identified (into *out).
+ * An identified one is dropped when a ring starting within `reach` px of
+ * its centre encloses it (rl_inner; 0: any its size allows). */
 static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *res,
-                           const rl_detection *u, double R, rl_detection *out)
+                           const rl_detection *u, double R, double reach, rl_detection *out)
 {
     rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL);
     int W = rec->width, H = rec->height, light = res->levels.light;
@@ -302,7 +304,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     out->radius = rd.r;
     out->complete = rl_geom_disk_complete(W, H, rd.cx, rd.cy, rd.r);
     out->visible = rl_geom_visible_in(W, H, rd.cx, rd.cy, rd.r);
-    if (!taken || rl_inner_enclosed(img, light, rd.cx, rd.cy, rd.r))
+    if (!taken || rl_inner_enclosed(img, light, rd.cx, rd.cy, rd.r, reach))
         return 0;
     out->id = rd.m.id;
     out->score = rd.m.score;
@@ -329,16 +331,24 @@ static int is_duclr(const rl_recog_config *cfg, const rl_result *res, const rl_d
     return (near_light || on_border || landmark_sized) && (!on_border || u->visible >= 0.5);
 }
 
+/* Where the frame's landmark size is known, a landmark enclosing a
+ * candidate is no larger than 1.5 times it (the lens's spread of sizes,
+ * as LOCATE_SIZE_TOLERANCE allows): its outer ring starts within 0.8 of
+ * that, in the frame's radii. Beyond, a grille or striped ceiling past a
+ * narrow margin looked like a ring around landmarks of the frame's size
+ * (next to lamps, on composited photos: 2-3% of them). */
+#define ENCLOSER_REACH 1.2
+
 void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res)
 {
-    double rexp = rl_result_median_radius(res);
+    double rexp = rl_result_median_radius(res), reach = rexp > 0 ? ENCLOSER_REACH * rexp : 0.0;
     int i, kept = 0, n = res->n_unidentified;
     for (i = 0; i < n; i++) {
         rl_detection u = res->unidentified[i], d;
         double R = rexp > 0 ? rexp : u.radius;
         if (is_duclr(&rec->cfg, res, &u, R)) {
             res->local_tried++;
-            if (local_candidate(rec, img, res, &u, R, &d)) {
+            if (local_candidate(rec, img, res, &u, R, reach, &d)) {
                 if (rl_result_add_landmark(res, &d))
                     res->local_found++;
                 continue;
