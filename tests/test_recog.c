@@ -123,6 +123,53 @@ static void test_inner_ring_is_not_a_landmark(void **state)
     }
 }
 
+/* The same code ring where the frame's landmarks give it a size (two of
+ * radius 22 beside the landmark of radius 30, a lamp over its top): the
+ * ring, 15 px, is 0.7 of the frame's size, one the local pass would take.
+ * The local pass must find the outer ring around it, from the ring
+ * (rl_locate) or else as enclosing it (rl_inner: from 24 px, within the
+ * reach of a landmark 1.45 times the frame's size). Fails with both
+ * undone (no code ring told apart, the reach 0.9 of the frame's radii). */
+static void test_inner_ring_among_smaller_landmarks_is_not_one(void **state)
+{
+    static const placed lm[] = {{2, 100.4, H - 18, 30.0}, {25, 230.3, 60.6, 22.0}, {17, 275.2, 150.7, 22.0}};
+    static uint8_t t[H * W], dk[H * W];
+    rl_recog_config cfg;
+    rl_family f = {5};
+    rl_image img = rl_image_view(W, H, W, frame), tv = rl_image_view(W, H, W, t);
+    size_t k;
+    int x, y, j;
+    (void)state;
+    memset(dk, 0, sizeof dk);
+    for (k = 0; k < sizeof lm / sizeof lm[0]; k++) {
+        assert_int_equal(rl_raster_draw(&f, lm[k].id, lm[k].u, lm[k].v, lm[k].r, NULL, &tv, NULL), RL_OK);
+        for (j = 0; j < W * H; j++)
+            dk[j] = t[j] > dk[j] ? t[j] : dk[j];
+    }
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            int v = 215 - (215 - 30) * dk[y * W + x] / 255;
+            double top = lm[0].v - lm[0].r;
+            if (fabs(x - lm[0].u) < 1.5 * lm[0].r && y < top + 14) /* the lamp and its glow */
+                v = y < top + 7 ? 255 : v + (255 - v) * (int)(top + 14 - y) / 7;
+            frame[y * W + x] = (uint8_t)v;
+        }
+    rl_recog_defaults(&cfg);
+    cfg.local = RL_LOCAL_ALWAYS;
+    init(&cfg);
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
+    for (j = 0; j < res.n_landmarks; j++) {
+        const rl_detection *d = &res.landmarks[j];
+        for (k = 0; k < sizeof lm / sizeof lm[0]; k++)
+            if (d->id == lm[k].id && hypot(d->u - lm[k].u, d->v - lm[k].v) < 2.0 &&
+                fabs(d->radius - lm[k].r) < 0.2 * lm[k].r)
+                break;
+        if (k == sizeof lm / sizeof lm[0])
+            fail_msg("%s pass: id %d of radius %.1f at (%.1f, %.1f), where none was drawn",
+                     d->pass == RL_PASS_LOCAL ? "local" : "global", d->id, d->radius, d->u, d->v);
+    }
+}
+
 /* One pass of a Gaussian (kernel k of radius rad, sum 1) along rows
  * (dx = 1) or columns (dx = 0) of a W x H float image, edges clamped. */
 static void blur_pass(const float *in, float *out, const double *k, int rad, int dx)
@@ -719,6 +766,7 @@ int main(void)
         cmocka_unit_test(test_stride_is_honoured),
         cmocka_unit_test(test_checkerboard_is_no_error),
         cmocka_unit_test(test_inner_ring_is_not_a_landmark),
+        cmocka_unit_test(test_inner_ring_among_smaller_landmarks_is_not_one),
         cmocka_unit_test(test_soft_blob_next_to_light_is_not_a_landmark),
         cmocka_unit_test(test_code_ring_of_merged_landmark_is_not_a_landmark),
         cmocka_unit_test(test_landmark_in_lamp_glow_is_found),

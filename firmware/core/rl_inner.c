@@ -74,6 +74,10 @@ int rl_inner_enclosed(const rl_image *img, int light, double cx, double cy, doub
 {
     double hit[ENCLOSE_RAYS], dc[ENCLOSE_RAYS], ds[ENCLOSE_RAYS], med;
     double to = reach > 0 && reach < ENCLOSE_TO * r ? reach : ENCLOSE_TO * r;
+    /* one sample at least: the ring around the largest mimic (a zone
+     * boundary at 0.72 R) is under it */
+    if (to < ENCLOSE_FROM * r)
+        to = ENCLOSE_FROM * r;
     int a, clear = 0, nhit = 0, agree = 0, i;
     rl_ray_dirs(ENCLOSE_RAYS, dc, ds);
     for (a = 0; a < ENCLOSE_RAYS; a++) {

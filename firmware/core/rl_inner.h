@@ -29,7 +29,8 @@
 
 /* 1 if the candidate (cx, cy, r) is enclosed by a concentric dark ring
  * that starts within `reach` px of its centre (0: within 2.9 r, the ring
- * around the smallest mimic). */
+ * around the smallest mimic); rays are looked along from 1.3 r, past the
+ * candidate's quiet zone, however small `reach` is. */
 int rl_inner_enclosed(const rl_image *img, int light, double cx, double cy, double r, double reach);
 
 #endif

@@ -332,16 +332,18 @@ static int is_duclr(const rl_recog_config *cfg, const rl_result *res, const rl_d
 }
 
 /* Where the frame's landmark size is known, a landmark enclosing a
- * candidate is no larger than 1.5 times it (the lens's spread of sizes,
+ * candidate is no larger than 1.45 times it (the lens's spread of sizes,
  * as LOCATE_SIZE_TOLERANCE allows): its outer ring starts within 0.8 of
- * that, in the frame's radii. Beyond, a grille or striped ceiling past a
- * narrow margin looked like a ring around landmarks of the frame's size
- * (next to lamps, on composited photos: 2-3% of them). */
-#define ENCLOSER_REACH 1.2
+ * that, 1.16 of the frame's radii, and 2 px (blur, the rays' steps).
+ * Beyond, a grille or striped ceiling past a narrow margin looked like a
+ * ring around landmarks of the frame's size (next to lamps, on composited
+ * photos: 2-3% of them). */
+#define ENCLOSER_REACH 1.16
+#define ENCLOSER_SLACK_PX 2.0
 
 void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res)
 {
-    double rexp = rl_result_median_radius(res), reach = rexp > 0 ? ENCLOSER_REACH * rexp : 0.0;
+    double rexp = rl_result_median_radius(res), reach = rexp > 0 ? ENCLOSER_REACH * rexp + ENCLOSER_SLACK_PX : 0.0;
     int i, kept = 0, n = res->n_unidentified;
     for (i = 0; i < n; i++) {
         rl_detection u = res->unidentified[i], d;
