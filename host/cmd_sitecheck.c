@@ -34,7 +34,9 @@ static const char *help =
     "     lighter, grey ink, perspective, glare next to lamps, lens blur, sensor\n"
     "     noise, all laid in light as a camera forms it): wholly inside the image,\n"
     "     within one radius of a light, and cut by the image border (up to half\n"
-    "     outside), and per id;\n"
+    "     outside), and per id; a kind with none placed has no rate (\"-\", null in\n"
+    "     JSON): no lamp in the photos, or a sheet too large to lie within a\n"
+    "     radius of one without covering it (A3 for 210 mm landmarks);\n"
     "  3. which ids to leave out of the map because the site's own objects look\n"
     "     like them.\n\n"
     "  --family NAME     landmark family (default ring5; the map's with --map)\n"
@@ -250,9 +252,12 @@ static void print_table(const tally *t, const check *k, FILE *f)
             t->photos, k->rounds, k->cc.radius_px, (unsigned long long)k->cc.seed,
             ms_per_frame(t));
     fprintf(f, "%-24s %8s %10s %8s %6s\n", "landmarks placed", "placed", "identified", "rate", "wrong");
-    for (i = 0; i < 3; i++)
-        fprintf(f, "%-24s %8ld %10ld %7.1f%% %6ld\n", rows[i], t->placed[i], t->found[i],
-                pct(t->found[i], t->placed[i]), t->wrong[i]);
+    for (i = 0; i < 3; i++) {
+        char rate[16] = "-"; /* none placed: no rate (no lamp, or a sheet too large beside one) */
+        if (t->placed[i] > 0)
+            snprintf(rate, sizeof rate, "%.1f%%", pct(t->found[i], t->placed[i]));
+        fprintf(f, "%-24s %8ld %10ld %8s %6ld\n", rows[i], t->placed[i], t->found[i], rate, t->wrong[i]);
+    }
     fprintf(f, "identified per id (placed, all kinds):");
     for (i = 0; i < 256; i++)
         if (t->placed_by_id[i])
@@ -279,8 +284,12 @@ static void print_json(const tally *t, const check *k, FILE *f)
             t->photos, k->rounds, k->cc.radius_px, (unsigned long long)k->cc.seed,
             ms_per_frame(t));
     for (i = 0; i < 3; i++)
-        fprintf(f, ", \"%s\": {\"placed\": %ld, \"identified\": %ld, \"rate\": %.4f, \"wrong\": %ld}",
-                keys[i], t->placed[i], t->found[i], pct(t->found[i], t->placed[i]) / 100.0, t->wrong[i]);
+        if (t->placed[i] > 0)
+            fprintf(f, ", \"%s\": {\"placed\": %ld, \"identified\": %ld, \"rate\": %.4f, \"wrong\": %ld}",
+                    keys[i], t->placed[i], t->found[i], pct(t->found[i], t->placed[i]) / 100.0, t->wrong[i]);
+        else
+            fprintf(f, ", \"%s\": {\"placed\": 0, \"identified\": 0, \"rate\": null, \"wrong\": %ld}",
+                    keys[i], t->wrong[i]);
     fprintf(f, ", \"per_id\": {");
     for (i = 0; i < 256; i++)
         if (t->placed_by_id[i])
