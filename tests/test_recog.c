@@ -123,6 +123,44 @@ static void test_inner_ring_is_not_a_landmark(void **state)
     }
 }
 
+/* The ink (0 .. 255) of the n landmarks lm drawn together, into dk. */
+static void draw_ink(const placed *lm, size_t n, uint8_t *dk)
+{
+    static uint8_t t[H * W];
+    rl_family f = {5};
+    rl_image tv = rl_image_view(W, H, W, t);
+    size_t k;
+    int j;
+    memset(dk, 0, (size_t)W * H);
+    for (k = 0; k < n; k++) {
+        assert_int_equal(rl_raster_draw(&f, lm[k].id, lm[k].u, lm[k].v, lm[k].r, NULL, &tv, NULL), RL_OK);
+        for (j = 0; j < W * H; j++)
+            dk[j] = t[j] > dk[j] ? t[j] : dk[j];
+    }
+}
+
+/* Every landmark of res is one of the n drawn at lm (its id, its centre
+ * within tol px, its radius within 20%); lm[0] among them when must_find. */
+static void expect_drawn(const placed *lm, size_t n, double tol, int must_find)
+{
+    int j, found = 0;
+    for (j = 0; j < res.n_landmarks; j++) {
+        const rl_detection *d = &res.landmarks[j];
+        size_t k;
+        for (k = 0; k < n; k++)
+            if (d->id == lm[k].id && hypot(d->u - lm[k].u, d->v - lm[k].v) < tol &&
+                fabs(d->radius - lm[k].r) < 0.2 * lm[k].r)
+                break;
+        if (k == n)
+            fail_msg("%s pass: id %d of radius %.1f at (%.1f, %.1f), where none was drawn",
+                     d->pass == RL_PASS_LOCAL ? "local" : "global", d->id, d->radius, d->u, d->v);
+        found |= k == 0;
+    }
+    if (must_find && !found)
+        fail_msg("id %d at (%.1f, %.1f) not found (%d candidates not identified)", lm[0].id, lm[0].u, lm[0].v,
+                 res.n_unidentified);
+}
+
 /* The same code ring where the frame's landmarks give it a size (two of
  * radius 22 beside the landmark of radius 30, a lamp over its top): the
  * ring, 15 px, is 0.7 of the frame's size, one the local pass would take.
@@ -133,23 +171,17 @@ static void test_inner_ring_is_not_a_landmark(void **state)
 static void test_inner_ring_among_smaller_landmarks_is_not_one(void **state)
 {
     static const placed lm[] = {{2, 100.4, H - 18, 30.0}, {25, 230.3, 60.6, 22.0}, {17, 275.2, 150.7, 22.0}};
-    static uint8_t t[H * W], dk[H * W];
+    static uint8_t dk[H * W];
+    const size_t n = sizeof lm / sizeof lm[0];
+    const double top = lm[0].v - lm[0].r;
     rl_recog_config cfg;
-    rl_family f = {5};
-    rl_image img = rl_image_view(W, H, W, frame), tv = rl_image_view(W, H, W, t);
-    size_t k;
-    int x, y, j;
+    rl_image img = rl_image_view(W, H, W, frame);
+    int x, y;
     (void)state;
-    memset(dk, 0, sizeof dk);
-    for (k = 0; k < sizeof lm / sizeof lm[0]; k++) {
-        assert_int_equal(rl_raster_draw(&f, lm[k].id, lm[k].u, lm[k].v, lm[k].r, NULL, &tv, NULL), RL_OK);
-        for (j = 0; j < W * H; j++)
-            dk[j] = t[j] > dk[j] ? t[j] : dk[j];
-    }
+    draw_ink(lm, n, dk);
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
             int v = 215 - (215 - 30) * dk[y * W + x] / 255;
-            double top = lm[0].v - lm[0].r;
             if (fabs(x - lm[0].u) < 1.5 * lm[0].r && y < top + 14) /* the lamp and its glow */
                 v = y < top + 7 ? 255 : v + (255 - v) * (int)(top + 14 - y) / 7;
             frame[y * W + x] = (uint8_t)v;
@@ -158,16 +190,7 @@ static void test_inner_ring_among_smaller_landmarks_is_not_one(void **state)
     cfg.local = RL_LOCAL_ALWAYS;
     init(&cfg);
     assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
-    for (j = 0; j < res.n_landmarks; j++) {
-        const rl_detection *d = &res.landmarks[j];
-        for (k = 0; k < sizeof lm / sizeof lm[0]; k++)
-            if (d->id == lm[k].id && hypot(d->u - lm[k].u, d->v - lm[k].v) < 2.0 &&
-                fabs(d->radius - lm[k].r) < 0.2 * lm[k].r)
-                break;
-        if (k == sizeof lm / sizeof lm[0])
-            fail_msg("%s pass: id %d of radius %.1f at (%.1f, %.1f), where none was drawn",
-                     d->pass == RL_PASS_LOCAL ? "local" : "global", d->id, d->radius, d->u, d->v);
-    }
+    expect_drawn(lm, n, 2.0, 0);
 }
 
 /* One pass of a Gaussian (kernel k of radius rad, sum 1) along rows
@@ -296,26 +319,21 @@ static void test_half_landmark_at_border_is_read(void **state)
 static void test_landmark_touching_a_marker_is_read(void **state)
 {
     static const placed lm[] = {{8, 150.3, 120.6, 25.0}, {25, 45.2, 190.3, 25.0}, {17, 270.6, 185.4, 25.0}};
-    static uint8_t t[H * W], dk[H * W];
+    static uint8_t dk[H * W];
+    const size_t n = sizeof lm / sizeof lm[0];
     rl_recog_config cfg;
-    rl_family f = {5};
-    rl_image img = rl_image_view(W, H, W, frame), tv = rl_image_view(W, H, W, t);
+    rl_image img = rl_image_view(W, H, W, frame);
     const double cx = lm[0].u, cy = lm[0].v, r = lm[0].r;
     size_t k;
-    int x, y, j, found = 0;
+    int x, y;
     (void)state;
     /* the landmark, and two more that give the frame its landmarks' size */
-    memset(dk, 0, sizeof dk);
-    for (k = 0; k < sizeof lm / sizeof lm[0]; k++) {
-        assert_int_equal(rl_raster_draw(&f, lm[k].id, lm[k].u, lm[k].v, lm[k].r, NULL, &tv, NULL), RL_OK);
-        for (j = 0; j < W * H; j++)
-            dk[j] = t[j] > dk[j] ? t[j] : dk[j];
-    }
+    draw_ink(lm, n, dk);
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
             int sheet = 0;
             double v;
-            for (k = 0; k < sizeof lm / sizeof lm[0]; k++)
+            for (k = 0; k < n; k++)
                 sheet |= on_sheet(x, y, lm[k].u, lm[k].v, lm[k].r);
             v = sheet ? 200 - 170 * dk[y * W + x] / 255.0 : 150;
             if (x >= cx + 0.56 * r && x <= cx + 1.68 * r && y >= cy + 0.56 * r && y <= cy + 1.68 * r)
@@ -329,20 +347,7 @@ static void test_landmark_touching_a_marker_is_read(void **state)
     rl_recog_defaults(&cfg);
     init(&cfg);
     assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
-    for (j = 0; j < res.n_landmarks; j++) {
-        const rl_detection *d = &res.landmarks[j];
-        if (d->id == 8 && hypot(d->u - cx, d->v - cy) < 1.5) {
-            found = 1;
-            continue;
-        }
-        if ((d->id == lm[1].id && hypot(d->u - lm[1].u, d->v - lm[1].v) < 1.5) ||
-            (d->id == lm[2].id && hypot(d->u - lm[2].u, d->v - lm[2].v) < 1.5))
-            continue;
-        fail_msg("id %d of radius %.1f at (%.1f, %.1f); drawn: id 8 of radius %.1f at (%.1f, %.1f)", d->id,
-                 d->radius, d->u, d->v, r, cx, cy);
-    }
-    if (!found)
-        fail_msg("id 8 not found (%d candidates not identified)", res.n_unidentified);
+    expect_drawn(lm, n, 1.5, 1);
 }
 
 /* A landmark on a letter sheet (0.03 R of paper beside its ring on two
@@ -353,26 +358,21 @@ static void test_landmark_touching_a_marker_is_read(void **state)
 static void test_landmark_on_a_grille_is_read(void **state)
 {
     static const placed lm[] = {{3, 150.3, 120.6, 25.0}, {25, 45.2, 60.3, 25.0}, {17, 275.6, 60.4, 25.0}};
-    static uint8_t t[H * W], dk[H * W];
+    static uint8_t dk[H * W];
     static float im[H * W];
+    const size_t n = sizeof lm / sizeof lm[0];
     rl_recog_config cfg;
-    rl_family f = {5};
-    rl_image img = rl_image_view(W, H, W, frame), tv = rl_image_view(W, H, W, t);
+    rl_image img = rl_image_view(W, H, W, frame);
     const double cx = lm[0].u, cy = lm[0].v, r = lm[0].r;
     size_t k;
-    int x, y, j, found = 0;
+    int x, y, j;
     (void)state;
-    memset(dk, 0, sizeof dk);
-    for (k = 0; k < sizeof lm / sizeof lm[0]; k++) {
-        assert_int_equal(rl_raster_draw(&f, lm[k].id, lm[k].u, lm[k].v, lm[k].r, NULL, &tv, NULL), RL_OK);
-        for (j = 0; j < W * H; j++)
-            dk[j] = t[j] > dk[j] ? t[j] : dk[j];
-    }
+    draw_ink(lm, n, dk);
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
             int sheet = fabs(x - cx) <= 1.03 * r && fabs(y - cy) <= 1.33 * r; /* letter */
             double v;
-            for (k = 1; k < sizeof lm / sizeof lm[0]; k++)
+            for (k = 1; k < n; k++)
                 sheet |= on_sheet(x, y, lm[k].u, lm[k].v, lm[k].r);
             v = sheet ? 200 - 160 * dk[y * W + x] / 255.0 : (x + y) % 5 < 2 ? 45 : 140; /* the grille */
             if (y >= cy + 1.6 * r)
@@ -385,17 +385,7 @@ static void test_landmark_on_a_grille_is_read(void **state)
     rl_recog_defaults(&cfg);
     init(&cfg);
     assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
-    for (j = 0; j < res.n_landmarks; j++) {
-        const rl_detection *d = &res.landmarks[j];
-        for (k = 0; k < sizeof lm / sizeof lm[0]; k++)
-            if (d->id == lm[k].id && hypot(d->u - lm[k].u, d->v - lm[k].v) < 1.5)
-                break;
-        if (k == sizeof lm / sizeof lm[0])
-            fail_msg("id %d of radius %.1f at (%.1f, %.1f), where none was drawn", d->id, d->radius, d->u, d->v);
-        found += k == 0;
-    }
-    if (!found)
-        fail_msg("id 3 not found (%d candidates not identified)", res.n_unidentified);
+    expect_drawn(lm, n, 1.5, 1);
 }
 
 /* A soft dark blob next to a lamp (a shade, a fixture's edge out of
