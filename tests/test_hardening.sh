@@ -330,5 +330,13 @@ printf 'not a png\n' >"$T/photos/p21.png"
 [ $rc = 1 ] && grep -q "wholly inside" "$T/sc.out" && grep -q "p21.png" "$T/sc.err" &&
     grep -q "p22.png" "$T/sc.err" && grep -q "2 of 22 files skipped" "$T/sc.err" &&
     ! grep -q "of 22 photos.*png" "$T/sc.err" && ok || bad "site-check with bad files: rc $rc: $(cat "$T/sc.err")"
+# a kind with none placed has no rate: A3 sheets (the default for 0.21 m)
+# cannot lie within 1 R of a lamp without covering it; the others have one
+grep -qE 'wholly inside +[1-9][0-9]* +[0-9]+ +[0-9.]+% +0' "$T/sc.out" &&
+    grep -qE 'within 1 R of a light +0 +0 +- +0' "$T/sc.out" && ok || bad "site-check's rates: $(cat "$T/sc.out")"
+"$R" site-check --rounds 1 --json "$T/photos/p01.png" >"$T/sc.json" 2>"$T/sc.err"
+grep -qE '"near_light": \{"placed": 0, "identified": 0, "rate": null' "$T/sc.json" &&
+    grep -qE '"complete": \{"placed": [1-9][0-9]*, "identified": [0-9]+, "rate": [0-9.]+' "$T/sc.json" && ok ||
+    bad "site-check's JSON rates: $(cat "$T/sc.json" "$T/sc.err")"
 
 sh_done

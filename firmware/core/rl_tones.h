@@ -10,7 +10,7 @@
  * both, and the curve that identifies more of them earns a vote (the
  * votes of past frames fade); where both identify as many, the current
  * curve earns it (a frame with no landmark votes for neither). The current curve (2.2 at first) gives way
- * when the other leads it by two votes; a frame is read through the current
+ * when the other leads it by more than two votes; a frame is read through the current
  * curve unless the other identifies two landmarks more there. Once one
  * curve leads by RL_TONES_SETTLE votes only it is read, and both again
  * every RL_TONES_RECHECK frames (a camera's settings can change).
