@@ -343,7 +343,8 @@ static int is_duclr(const rl_recog_config *cfg, const rl_result *res, const rl_d
 
 void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res)
 {
-    double rexp = rl_result_median_radius(res), reach = rexp > 0 ? ENCLOSER_REACH * rexp + ENCLOSER_SLACK_PX : 0.0;
+    double rexp = rl_result_median_radius(res);
+    double reach = rexp > 0 ? ENCLOSER_REACH * rexp + ENCLOSER_SLACK_PX : 0.0; /* 0: the frame's size unknown */
     int i, kept = 0, n = res->n_unidentified;
     for (i = 0; i < n; i++) {
         rl_detection u = res->unidentified[i], d;
