@@ -11,7 +11,7 @@ static const char *gen_help =
     "usage: ringloc gen [--family ring5] (--id ID[,ID...] | --map MAP.yaml)\n"
     "                   [--diameter 0.21] [--paper a4] [--margin 5] [--pdf FILE] [--svg FILE]\n"
     "                   [--png FILE --px N]\n\n"
-    "Print-ready landmarks per shared/landmark-spec.md: one landmark per page at\n"
+    "Print-ready landmarks per docs/landmark-spec.md: one landmark per page at\n"
     "its exact printed diameter, crop marks, and the id in small type.\n\n"
     "  --family NAME   ring2 .. ring8 (default ring5; a map's family with --map)\n"
     "  --id LIST       landmark ids, comma-separated (1 .. 2^N-2)\n"

@@ -1,5 +1,5 @@
 /* rl_print: landmarks drawn with cairo for printing (PDF, SVG) and for
- * tests (PNG), exactly per shared/landmark-spec.md.
+ * tests (PNG), exactly per docs/landmark-spec.md.
  *
  * Black zones are drawn as even-odd annuli, adjacent black zones merged,
  * so no edge is drawn twice and anti-aliasing is exact coverage.

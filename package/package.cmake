@@ -23,8 +23,9 @@ install(TARGETS ringloc-fw RUNTIME DESTINATION bin COMPONENT firmware)
 install(FILES ${CMAKE_BINARY_DIR}/package/ringloc.yaml DESTINATION /etc/ringloc COMPONENT firmware)
 install(FILES ${CMAKE_BINARY_DIR}/package/ringloc.service DESTINATION /lib/systemd/system
         COMPONENT firmware)
-install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/../shared/landmark-spec.md
-        DESTINATION share/doc/ringloc OPTIONAL COMPONENT firmware)
+install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION share/doc/ringloc COMPONENT firmware)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION share/doc/ringloc/docs COMPONENT firmware
+        FILES_MATCHING PATTERN "*.md" PATTERN "*.png")
 # the web view's drop-in for the unit (network for http:), copied by hand
 install(FILES ${PROJECT_SOURCE_DIR}/package/ringloc-web.conf DESTINATION share/doc/ringloc COMPONENT firmware)
 install(TARGETS ringloc RUNTIME DESTINATION bin COMPONENT tools)

@@ -1,5 +1,5 @@
 // `ringloc gen` output rasterized by independent renderers and measured
-// against shared/landmark-spec.md: PNGs read back with OpenCV, PDFs
+// against docs/landmark-spec.md: PNGs read back with OpenCV, PDFs
 // rasterized by poppler's pdftoppm at print scale.
 #include <cmath>
 #include <cstdio>

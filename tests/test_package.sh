@@ -29,6 +29,7 @@ check "no desktop tools on the robot" sh -c "! grep -q '\./usr/bin/ringloc$' '$T
 check "default configuration" grep -q '\./etc/ringloc/ringloc.yaml$' "$T/files"
 check "systemd unit" grep -q '\./lib/systemd/system/ringloc.service$' "$T/files"
 check "docs" grep -q '\./usr/share/doc/ringloc/README.md$' "$T/files"
+check "the landmark contract" grep -q '\./usr/share/doc/ringloc/docs/landmark-spec.md$' "$T/files"
 mkdir -p "$T/ctl" "$T/root"
 dpkg-deb -e "$deb" "$T/ctl"
 dpkg-deb -x "$deb" "$T/root"

@@ -3,7 +3,7 @@
  * A template is the landmark's darkness (0 white .. 255 black) drawn at a
  * chosen centre and radius into a caller-provided image, with anti-aliased
  * coverage at zone boundaries. Pixel centres are at integer coordinates
- * (shared/landmark-spec.md). A landmark cut by the image border is drawn
+ * (docs/landmark-spec.md). A landmark cut by the image border is drawn
  * with a cut: a half-plane beyond which nothing is visible, optionally
  * written to a visibility mask, so that matching can use only what the
  * camera saw.

@@ -1,6 +1,6 @@
 /* rl_family: landmark families ringN, ids, codes and zone radii.
  *
- * The contract is shared/landmark-spec.md: a landmark of radius R has a
+ * The contract is docs/landmark-spec.md: a landmark of radius R has a
  * black outer ring 0.8R..R and N code zones of equal area inside it; zone
  * k = 1 touches the outer ring, zone N is the central disk. The code
  * c_1..c_N (outer to inner) read as binary with c_1 most significant is

@@ -1,6 +1,6 @@
 /* rl_map: the landmark map: which ids hang where on the ceiling.
  *
- * Map frame per shared/landmark-spec.md (metres, REP-103). Filled by the
+ * Map frame per docs/landmark-spec.md (metres, REP-103). Filled by the
  * host's YAML loader or by firmware configuration; the core only reads it.
  *
  *   int i = rl_map_find(&map, 25);

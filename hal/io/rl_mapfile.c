@@ -158,7 +158,7 @@ rl_err rl_mapfile_load(const char *path, rl_map *map, char *err, size_t errlen)
 
 void rl_mapfile_put_header(FILE *f, const rl_family *fam, double diameter, double ceiling_height)
 {
-    fprintf(f, "family: ring%d          # shared/landmark-spec.md\n", fam->bits);
+    fprintf(f, "family: ring%d          # docs/landmark-spec.md\n", fam->bits);
     fprintf(f, "diameter: %.4f        # printed outer diameter, metres\n", diameter);
     fprintf(f, "ceiling_height: %.5f  # ceiling above the floor, metres\n", ceiling_height);
     fprintf(f, "landmarks:\n");

@@ -1,6 +1,6 @@
 /* rl_mapfile: map YAML files <-> rl_map.
  *
- *   family: ring5          # shared/landmark-spec.md
+ *   family: ring5          # docs/landmark-spec.md
  *   diameter: 0.210        # printed outer diameter, metres
  *   ceiling_height: 2.750  # ceiling above the floor, metres
  *   landmarks:

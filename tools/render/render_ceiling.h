@@ -1,6 +1,6 @@
 /* render_ceiling: the light a point of the ceiling sends to the camera:
  * tiles and T-bars, the objects on them (landmarks printed per
- * shared/landmark-spec.md, or AprilTag 36h11 twins; lights that saturate;
+ * docs/landmark-spec.md, or AprilTag 36h11 twins; lights that saturate;
  * clutter) and the halo lights cast around them.
  *
  * A frame looks up a point's objects in a grid over what it sees (0.1 m

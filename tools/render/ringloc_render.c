@@ -4,7 +4,7 @@
  * rl_calib model) onto a ceiling plane: tiles and T-bars, light fixtures
  * that saturate and wash out their surroundings, clutter (smoke detectors,
  * downlights, sprinklers, vents, round speaker grilles, boxes, exit signs),
- * landmarks printed per shared/landmark-spec.md on paper, and camera
+ * landmarks printed per docs/landmark-spec.md on paper, and camera
  * effects (vignetting, exposure, blur, motion blur, noise). Writes each
  * frame as PNG with a ground-truth YAML: the camera and robot pose and,
  * for every landmark, id, projected centre, radius, visible fraction and

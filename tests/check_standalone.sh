@@ -1,0 +1,40 @@
+#!/bin/sh
+# The tree stands alone: no file names a path outside it (a clone has
+# nothing beside it), and every relative Markdown link and every
+# docs/ Markdown file a file names exists in the tree.
+# Usage: check_standalone.sh SOURCE_DIR
+src=${1:?usage: check_standalone.sh SOURCE_DIR}
+cd "$src" || exit 2
+status=0
+if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+    files=$(git ls-files --cached --others --exclude-standard | grep -v '^build')
+else
+    files=$(find . -type f ! -path './build*' ! -path './.git/*' | sed 's#^\./##')
+fi
+# 1. paths that leave the tree: the steering folder beside it, or a
+#    build file reaching above the source's top
+for f in $files; do
+    case $f in *.png|*.pdf|*.jpg|*.bin) continue ;; esac
+    [ -f "$f" ] || continue
+    if grep -nE '\.\./shared|(^|[^a-z_/])shared/(landmark-spec|paper|style)' "$f"; then
+        echo "standalone: $f names the folder beside the tree (the contract is docs/landmark-spec.md)"
+        status=1
+    fi
+    if grep -nE '(PROJECT_SOURCE_DIR|CMAKE_SOURCE_DIR|CURDIR)\)?\}?/\.\.(/|$|[ "])' "$f"; then
+        echo "standalone: $f reaches above the source tree"
+        status=1
+    fi
+done
+# 2. every Markdown file under docs named anywhere exists
+for d in $(grep -ahoE 'docs/[A-Za-z0-9_-]+\.md' $files 2>/dev/null | sort -u); do
+    [ -f "$d" ] || { echo "standalone: $d is named but not in the tree"; status=1; }
+done
+# 3. relative links of the Markdown files resolve
+for f in $(printf '%s\n' $files | grep '\.md$'); do
+    dir=$(dirname "$f")
+    for l in $(grep -oE '\]\([^)# ]+' "$f" | sed 's/^](//' | grep -v '^[a-z]*:'); do
+        [ -e "$dir/$l" ] || { echo "standalone: $f links to $l, which is not there"; status=1; }
+    done
+done
+[ $status -eq 0 ] && echo "standalone: the tree names nothing outside it"
+exit $status
