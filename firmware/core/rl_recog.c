@@ -210,24 +210,57 @@ static int read_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int
     return found;
 }
 
+/* What read_clrs adds to res, to be taken back (rl_global_read reads
+ * only res's lights, which it leaves as they are). */
+typedef struct {
+    int n_landmarks, n_unidentified, n_candidates, dropped_landmarks, dropped_candidates;
+} reads_mark;
+
+static reads_mark mark_reads(const rl_result *res)
+{
+    reads_mark m = {res->n_landmarks, res->n_unidentified, res->n_candidates, res->dropped.landmarks,
+                    res->dropped.candidates};
+    return m;
+}
+
+static void undo_reads(rl_result *res, const reads_mark *m)
+{
+    res->n_landmarks = m->n_landmarks;
+    res->n_unidentified = m->n_unidentified;
+    res->n_candidates = m->n_candidates;
+    res->dropped.landmarks = m->dropped_landmarks;
+    res->dropped.candidates = m->dropped_candidates;
+}
+
 /* 4. identification of the outer CLRs through the camera's tone curve
  * (returned, as an index into rec->tones):
  * the configured one, or, while it is being learned, the one the frame's
- * landmarks read best through (rl_tones.h): each curve is read first,
- * counting only, then the one taken into res (three reads of a frame's
- * candidates while the curve is open, one after). */
+ * landmarks read best through (rl_tones.h). The current curve is read
+ * into res (the global pass); while the curve is open the other is read
+ * too, counting only (the tone reads), and only when the vote takes the
+ * other for this frame (seldom) are the current curve's reads taken back
+ * and the other's read into res: two reads of a frame's candidates while
+ * the curve is open (three at most), one after. */
 static int identify_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n,
                           rl_result *res)
 {
+    const rl_stage_hook *hook = &rec->cfg.stage_hook;
     int which[RL_TONES_MAX], found[RL_TONES_MAX], nt = rl_tones_to_try(&rec->tones, which), t;
-    rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_TONES);
-    for (t = 0; t < nt && nt > 1; t++)
+    reads_mark before = mark_reads(res);
+    rl_stage_enter(hook, RL_STAGE_GLOBAL);
+    found[0] = read_clrs(rec, img, cand, n, which[0], 1, res);
+    if (nt > 1)
+        rl_stage_enter(hook, RL_STAGE_TONES);
+    for (t = 1; t < nt; t++)
         found[t] = read_clrs(rec, img, cand, n, which[t], 0, res);
-    t = which[rl_tones_vote(&rec->tones, which, nt, found)];
+    t = rl_tones_vote(&rec->tones, which, nt, found);
+    if (t != 0) {
+        undo_reads(res, &before);
+        read_clrs(rec, img, cand, n, which[t], 1, res);
+    }
+    t = which[t];
     rec->tone = &rec->tones.tone[t];
     res->gamma = rec->tones.gamma[t];
-    rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_GLOBAL);
-    read_clrs(rec, img, cand, n, t, 1, res);
     return t;
 }
 
