@@ -9,6 +9,9 @@
  * AprilTag (tag36h11, one thread, default decimation), their ratio, what
  * each found, and ringloc's workspace. Both run in this process on the
  * same core, one after the other, so the ratio holds on any machine.
+ * Then, for each DIR, --pose, --site and --real, the recognizer's stages
+ * (rl_stage.h, timed through its hook: bench_stages.h) per frame in
+ * microseconds and in whole-frame histogram passes, beside AprilTag 3.
  */
 #define _GNU_SOURCE
 #include <sched.h>
@@ -286,7 +289,11 @@ int main(int argc, char **argv)
                 "  DRIVE_DIR: a drive from ringloc-render --path (map, camera, robot files);\n"
                 "  SITE_DIR: a planned site (ringloc plan --area) and random_NNN.png frames under it\n"
                 "  (ringloc-render --site-map --path random);\n"
-                "  PHOTO_DIR: real ceiling photos (PNG) to place rings and AprilTag twins into\n");
+                "  PHOTO_DIR: real ceiling photos (PNG) to place rings and AprilTag twins into\n"
+                "Each set also gets a table of the recognizer's stages (histogram, labelling, CLRs,\n"
+                "global pass, tone reads, second labellings, local pass, reads across motion; pose\n"
+                "and place where there is a map): time per frame in us and in passes of one\n"
+                "histogram over the whole frame, measured in the same run (docs/design.md)\n");
         return argc < 2 ? 2 : 0;
     }
     /* one core: both detectors on the same one */
