@@ -6,7 +6,8 @@
 #   make host-test-asan  the same tests built with clang under AddressSanitizer + UBSan (build-asan/),
 #                        with the plain-C matcher (RL_NO_VECTOR_EXT) instead of the vector one
 #   make demo            the firmware on a bundled drive: poses over a pty, report
-#   make bench           recognition, pose, place and survey benchmarks (figures, not pass/fail)
+#   make bench           recognition, pose, place and survey benchmarks (figures, not pass/fail),
+#                        with the time of each stage of the recognizer (docs/design.md)
 #   make bench-real REAL=DIR  ringloc and AprilTag 3 on real photos with landmarks placed in them
 #   make fuzz [FUZZ_SECONDS=60]  libFuzzer (clang, ASan + UBSan) on the recognizer, the PNG
 #                        reader, the YAML loaders, the pose solver, the frame decoder,
@@ -115,6 +116,9 @@ bench: host
 	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/$$size --set cluttered \
 	    --count $(BENCH_FRAMES) --seed 3 --size $$size --twin || exit 1; \
 	done
+	@[ -f $(BENCH_DIR)/moving/moving_000_tag.png ] || \
+	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/moving --set moving --count $(BENCH_FRAMES) --seed 7 \
+	    --rock 0.03 --twin
 	@[ -f $(BENCH_DIR)/glare/glare_000.png ] || \
 	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/glare --set glare --count $(BENCH_FRAMES) --seed 3
 	@[ -f $(BENCH_DIR)/drive/circle_007.png ] || { \
@@ -130,7 +134,8 @@ bench: host
 	    --ceiling-height 2.75 --camera-height 0.88 --map-out $(BENCH_DIR)/site/map.yaml >$(BENCH_DIR)/site/plan.json && \
 	  $(BUILD)/tools/ringloc-render --site-map $(BENCH_DIR)/site/map.yaml --out $(BENCH_DIR)/site --path random \
 	    --frames 100 --seed 9 --mount 0.12,-0.03,0.02; }
-	$(BUILD)/tools/ringloc-bench $(BENCH_DIR)/640x480 $(BENCH_DIR)/1280x960 --local $(BENCH_DIR)/glare \
+	$(BUILD)/tools/ringloc-bench $(BENCH_DIR)/640x480 $(BENCH_DIR)/1280x960 $(BENCH_DIR)/moving \
+	  --local $(BENCH_DIR)/glare \
 	  --pose $(BENCH_DIR)/drive --site $(BENCH_DIR)/site
 	@[ -f $(BENCH_DIR)/survey/detect.jsonl ] || \
 	  $(BUILD)/tools/ringloc-survey-synth --camera $(BENCH_DIR)/drive/camera.yaml --out $(BENCH_DIR)/survey

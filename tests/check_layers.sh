@@ -22,5 +22,11 @@ forbid "the public API includes an internal header" "$src/firmware/include" \
     "$(names "$src"/firmware/core/*.h "$src"/firmware/fuse/*.h)"
 forbid "the controller's filter (firmware/fuse) includes more than the public API" "$src/firmware/fuse" \
     "$(names "$src"/firmware/core/*.h "$src"/hal/*.h "$src"/hal/io/*.h "$src"/firmware/app/*.h)"
+# The recognizer's hub (rl_recog.c) runs the passes; none of them calls
+# back into it (rl_local -> rl_locate -> rl_recog -> rl_local was a circle).
+if grep -nE 'rl_recog_[a-z_]+ *\(' $(ls "$src"/firmware/core/*.c | grep -v '/rl_recog\.c$'); then
+    echo "layers: a pass calls into the recognizer's hub (rl_recog.c)"
+    status=1
+fi
 [ $status -eq 0 ] && echo "layers: dependencies run one way"
 exit $status

@@ -77,6 +77,70 @@ static void test_finds_what_was_drawn(void **state)
         assert_true(res.landmarks[j - 1].u <= res.landmarks[j].u);
 }
 
+/* The stages a frame runs through (rl_stage.h), as its hook sees them. */
+typedef struct {
+    rl_stage seen[64];
+    int n;
+} stage_log;
+
+static void log_stage(void *ctx, rl_stage s)
+{
+    stage_log *lg = ctx;
+    if (lg->n < 64)
+        lg->seen[lg->n++] = s;
+}
+
+/* From the contract: a frame opens with the histogram and ends with one
+ * DONE; the global stages follow in the table's order; after the local
+ * pass only its reads across the motion (and its return), and the zone
+ * twins' check while the tone curve is open. A configured curve has no
+ * tone reads; a blank frame ends after the histogram. */
+static void test_stages_run_in_order(void **state)
+{
+    static const rl_stage first[] = {RL_STAGE_HIST,  RL_STAGE_LABEL,  RL_STAGE_CLR,  RL_STAGE_GLOBAL,
+                                     RL_STAGE_TONES, RL_STAGE_SECOND, RL_STAGE_LOCAL};
+    rl_recog_config cfg;
+    rl_image img = draw(W);
+    stage_log lg;
+    int k, gamma;
+    (void)state;
+    for (gamma = 0; gamma <= 1; gamma++) {
+        int tones = 0;
+        memset(&lg, 0, sizeof lg);
+        rl_recog_defaults(&cfg);
+        cfg.gamma = gamma ? 2.2 : 0.0; /* 0: open, both curves read */
+        cfg.stage_hook.enter = log_stage;
+        cfg.stage_hook.ctx = &lg;
+        init(&cfg);
+        assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
+        assert_int_equal(res.n_landmarks, 4);
+        assert_true(lg.n >= 7 - gamma);
+        for (k = 0; k < 7; k++)
+            if (!(gamma && first[k] == RL_STAGE_TONES))
+                assert_int_equal(lg.seen[k - (gamma && k > 4)], first[k]);
+        assert_int_equal(lg.seen[lg.n - 1], RL_STAGE_DONE);
+        for (k = 6 - gamma; k < lg.n - 1; k++) {
+            rl_stage s = lg.seen[k];
+            assert_true(s == RL_STAGE_LOCAL || s == RL_STAGE_ACROSS || s == RL_STAGE_TONES);
+            tones += s == RL_STAGE_TONES;
+        }
+        for (k = 0; k < lg.n - 1; k++)
+            assert_true(lg.seen[k] != RL_STAGE_DONE && lg.seen[k] != RL_STAGE_POSE && lg.seen[k] != RL_STAGE_PLACE);
+        assert_int_equal(tones, gamma ? 0 : 1); /* the twins' check once */
+        for (k = 0; k < lg.n; k++)
+            assert_true(!gamma || lg.seen[k] != RL_STAGE_TONES);
+    }
+    /* a blank frame: the histogram, then the end */
+    memset(&lg, 0, sizeof lg);
+    memset(frame, 215, sizeof frame);
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
+    assert_int_equal(lg.n, 2);
+    assert_int_equal(lg.seen[0], RL_STAGE_HIST);
+    assert_int_equal(lg.seen[1], RL_STAGE_DONE);
+    assert_string_equal(rl_stage_name(RL_STAGE_ACROSS), "reads across motion");
+    assert_string_equal(rl_stage_name(RL_STAGE_DONE), "?");
+}
+
 /* A code ring inside a landmark whose outer ring is broken by a light and
  * cut by the border looks like a whole landmark of half the size (id 2's
  * zone 4 ring reads as id 16): neither pass may report it as one. The two
@@ -753,6 +817,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_finds_what_was_drawn),
+        cmocka_unit_test(test_stages_run_in_order),
         cmocka_unit_test(test_stride_is_honoured),
         cmocka_unit_test(test_checkerboard_is_no_error),
         cmocka_unit_test(test_inner_ring_is_not_a_landmark),

@@ -2,7 +2,8 @@
  * fades by 0.9 a frame, so n frames that each give the same curve a vote
  * leave it 10 (1 - 0.9^n): at least 6 (settled) from n = 9 on, 5.70 at
  * n = 8. A frame whose curves identify as many landmarks (at least one)
- * votes for the current curve; a frame with none votes for neither. */
+ * votes for the current curve; a frame with none votes for neither and
+ * leaves the votes as they were. */
 #include "rl_test.h"
 #include "rl_tones.h"
 
@@ -47,6 +48,26 @@ static void test_empty_frames_do_not_vote(void **state)
     for (i = 0; i < 40; i++)
         assert_int_equal(frame(&ts, 0, 0), 2);
     assert_non_null(rl_tones_doubt(&ts, rl_tones_current(&ts)));
+}
+
+/* An empty frame says nothing: a settled curve whose every-16th check
+ * falls on frames with no landmark stays settled (6.13 votes faded would
+ * be 5.52, and each frame read twice again). */
+static void test_empty_frames_keep_the_curve_settled(void **state)
+{
+    rl_tones ts;
+    int i;
+    (void)state;
+    rl_tones_init(&ts, 0.0);
+    for (i = 0; i < 9; i++)
+        assert_int_equal(frame(&ts, 7, 7), 2); /* 6.13 votes: settled */
+    assert_null(rl_tones_doubt(&ts, rl_tones_current(&ts)));
+    for (i = 9; i < 16; i++)
+        assert_int_equal(frame(&ts, 0, 0), 1);
+    assert_int_equal(frame(&ts, 0, 0), 2);     /* the 16th: both curves, none found */
+    assert_null(rl_tones_doubt(&ts, rl_tones_current(&ts)));
+    assert_int_equal(frame(&ts, 0, 0), 1);
+    assert_int_equal(frame(&ts, 7, 7), 1);
 }
 
 static void test_the_better_curve_takes_over(void **state)
@@ -102,6 +123,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ties_settle_on_the_current_curve),
         cmocka_unit_test(test_empty_frames_do_not_vote),
+        cmocka_unit_test(test_empty_frames_keep_the_curve_settled),
         cmocka_unit_test(test_the_better_curve_takes_over),
         cmocka_unit_test(test_a_tie_between_holds_the_current_curve),
         cmocka_unit_test(test_a_configured_curve_is_the_only_one),

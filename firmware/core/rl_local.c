@@ -189,7 +189,7 @@ static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_resul
  * circle's search. Not from a centre outside the frame (a circle fitted
  * to less than half a ring): no read sees it, and a few octants read
  * from a centre a few pixels off can name another code clearly. */
-static int read_across(const rl_recog *rec, const rl_accept_rule *rule, const local_read *rd)
+static int read_across_axes(const rl_recog *rec, const rl_accept_rule *rule, const local_read *rd)
 {
     int W = rec->width, H = rec->height, n, whole;
     unsigned reads[READS_MAX];
@@ -208,6 +208,16 @@ static int read_across(const rl_recog *rec, const rl_accept_rule *rule, const lo
     rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, rule->max_blur,
                             reads + whole, n - whole, &ma);
     return local_accept(&half, &ma, W, H, rd->cx, rd->cy, rd->r, 255.0);
+}
+
+/* read_across_axes, timed as the stage of its own it is (rl_stage.h). */
+static int read_across(const rl_recog *rec, const rl_accept_rule *rule, const local_read *rd)
+{
+    int taken;
+    rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_ACROSS);
+    taken = read_across_axes(rec, rule, rd);
+    rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_LOCAL);
+    return taken;
 }
 
 /* A read searched from the circle (cx, cy, r) (its polar cells gathered

@@ -4,6 +4,7 @@
 #include "rl_edge.h"
 #include "rl_geom.h"
 #include "rl_hist.h"
+#include "rl_speck.h"
 
 /* Window half-size around a DUCLR, in expected radii: room for the whole
  * landmark and its quiet zone with a quarter radius to spare for the
@@ -139,7 +140,7 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
     for (step = 0; step < LOCATE_STEPS && reg < 0; step++) {
         if (step > 0)
             thr = rl_tone_midway(rec->tone, ink, thr);
-        if (rl_label_band(&rec->dark, &win, 0, thr, rl_recog_speck_area(&rec->cfg)) != RL_OK)
+        if (rl_label_band(&rec->dark, &win, 0, thr, rl_speck_area(&rec->cfg)) != RL_OK)
             return 0;
         reg = local_outer_ring(&rec->dark, &w, u, R);
     }

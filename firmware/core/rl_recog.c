@@ -13,6 +13,7 @@
 #include "rl_local.h"
 #include "rl_recog_state.h"
 #include "rl_result.h"
+#include "rl_speck.h"
 #include "rl_twins.h"
 
 void rl_recog_defaults(rl_recog_config *cfg)
@@ -171,15 +172,6 @@ void rl_recog_frame_size(const rl_recog *rec, int *w, int *h)
     *h = rec->height;
 }
 
-int rl_recog_speck_area(const rl_recog_config *cfg)
-{
-    int n = cfg->family.bits;
-    double r = cfg->min_radius;
-    double zone = M_PI * 0.64 * r * r / n;
-    int a = (int)(0.1 * zone);
-    return a < 2 ? 2 : a;
-}
-
 /* 1. histogram analysis: light sources, foreground and background; 0 when
  * the frame has no dark class (nothing to find). */
 static int analyse_histogram(const rl_image *img, const rl_tone *tone, rl_result *res)
@@ -218,22 +210,57 @@ static int read_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int
     return found;
 }
 
+/* What read_clrs adds to res, to be taken back (rl_global_read reads
+ * only res's lights, which it leaves as they are). */
+typedef struct {
+    int n_landmarks, n_unidentified, n_candidates, dropped_landmarks, dropped_candidates;
+} reads_mark;
+
+static reads_mark mark_reads(const rl_result *res)
+{
+    reads_mark m = {res->n_landmarks, res->n_unidentified, res->n_candidates, res->dropped.landmarks,
+                    res->dropped.candidates};
+    return m;
+}
+
+static void undo_reads(rl_result *res, const reads_mark *m)
+{
+    res->n_landmarks = m->n_landmarks;
+    res->n_unidentified = m->n_unidentified;
+    res->n_candidates = m->n_candidates;
+    res->dropped.landmarks = m->dropped_landmarks;
+    res->dropped.candidates = m->dropped_candidates;
+}
+
 /* 4. identification of the outer CLRs through the camera's tone curve
  * (returned, as an index into rec->tones):
  * the configured one, or, while it is being learned, the one the frame's
- * landmarks read best through (rl_tones.h): each curve is read first,
- * counting only, then the one taken into res (three reads of a frame's
- * candidates while the curve is open, one after). */
+ * landmarks read best through (rl_tones.h). The current curve is read
+ * into res (the global pass); while the curve is open the other is read
+ * too, counting only (the tone reads), and only when the vote takes the
+ * other for this frame (seldom) are the current curve's reads taken back
+ * and the other's read into res: two reads of a frame's candidates while
+ * the curve is open (three at most), one after. */
 static int identify_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n,
                           rl_result *res)
 {
+    const rl_stage_hook *hook = &rec->cfg.stage_hook;
     int which[RL_TONES_MAX], found[RL_TONES_MAX], nt = rl_tones_to_try(&rec->tones, which), t;
-    for (t = 0; t < nt && nt > 1; t++)
+    reads_mark before = mark_reads(res);
+    rl_stage_enter(hook, RL_STAGE_GLOBAL);
+    found[0] = read_clrs(rec, img, cand, n, which[0], 1, res);
+    if (nt > 1)
+        rl_stage_enter(hook, RL_STAGE_TONES);
+    for (t = 1; t < nt; t++)
         found[t] = read_clrs(rec, img, cand, n, which[t], 0, res);
-    t = which[rl_tones_vote(&rec->tones, which, nt, found)];
+    t = rl_tones_vote(&rec->tones, which, nt, found);
+    if (t != 0) {
+        undo_reads(res, &before);
+        read_clrs(rec, img, cand, n, which[t], 1, res);
+    }
+    t = which[t];
     rec->tone = &rec->tones.tone[t];
     res->gamma = rec->tones.gamma[t];
-    read_clrs(rec, img, cand, n, t, 1, res);
     return t;
 }
 
@@ -253,20 +280,20 @@ static int local_wanted(const rl_recog_config *cfg, const rl_result *res)
            (cfg->local == RL_LOCAL_AUTO && res->n_landmarks < cfg->need);
 }
 
-rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
+/* The frame through the stages of rl_stage.h, in their order; each
+ * announced to the configuration's hook as it begins. */
+static rl_err run_stages(rl_recog *rec, const rl_image *img, rl_result *res)
 {
+    const rl_stage_hook *hook = &rec->cfg.stage_hook;
     rl_clr cand[RL_MAX_CANDIDATES];
     int ncand, speck, t;
     rl_err e;
-    if (rec == NULL || res == NULL || img == NULL || !rl_image_valid(img))
-        return RL_EINVAL;
-    if (img->width != rec->width || img->height != rec->height || img->stride > INT_MAX / 2)
-        return RL_EINVAL;
     rl_result_clear(res, rec->width, rec->height);
     res->gamma = rl_tones_gamma(&rec->tones);
-    speck = rl_recog_speck_area(&rec->cfg);
+    speck = rl_speck_area(&rec->cfg);
 
     /* 1. histogram analysis, and the light sources it finds */
+    rl_stage_enter(hook, RL_STAGE_HIST);
     if (!analyse_histogram(img, rec->tone, res))
         return RL_OK;
     if ((e = rl_light_find(&rec->light, img, res->levels.light, speck, res)) != RL_OK)
@@ -275,6 +302,7 @@ rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
         return RL_OK; /* no dark class in the frame */
     /* 2. image clustering into dark ROIs, as connected regions, under the
      *    threshold scaled by the ceiling's light across the frame */
+    rl_stage_enter(hook, RL_STAGE_LABEL);
     rl_illum_measure(&rec->illum, img, &res->levels);
     if ((e = rl_label_dark(&rec->dark, img, &rec->illum.map, speck)) != RL_OK)
         return e;
@@ -284,24 +312,43 @@ rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
     res->dropped.regions = rec->dark.overflow + (rec->dark.rows_left > 0);
     /* 3. CLR extraction; the regions where the frame's thresholds may have
      *    failed a landmark marked for a second labelling */
+    rl_stage_enter(hook, RL_STAGE_CLR);
     ncand = rl_clr_find(&rec->dark, &rec->cfg, res, cand, RL_MAX_CANDIDATES);
     rl_split_mark(&rec->split, &rec->dark, cand, ncand, &rec->cfg);
-    /* 4. identification: ICLRs and UCLRs; then the new CLRs of the second
-     *    labellings, through the same tone curve */
+    /* 4. identification: ICLRs and UCLRs (tone reads, then the global
+     *    pass); then the new CLRs of the second labellings, through the
+     *    same tone curve */
     t = identify_clrs(rec, img, cand, ncand, res);
+    rl_stage_enter(hook, RL_STAGE_SECOND);
     read_second_labellings(rec, img, speck, t, cand, res);
     rl_filter_duplicates(res);
-    /* 5. local recognition of the DUCLRs */
+    /* 5. local recognition of the DUCLRs (its reads across the motion
+     *    announced by rl_local) */
     if (local_wanted(&rec->cfg, res)) {
+        rl_stage_enter(hook, RL_STAGE_LOCAL);
         rl_local_pass(rec, img, res);
         rl_filter_duplicates(res);
     }
     /* while the camera's tone curve is being learned, no landmark whose
      * zone twin reads better through the other curve */
-    if (rl_tones_doubt(&rec->tones, rec->tone) != NULL)
+    if (rl_tones_doubt(&rec->tones, rec->tone) != NULL) {
+        rl_stage_enter(hook, RL_STAGE_TONES);
         rl_twins_check(rec, img, rl_tones_doubt(&rec->tones, rec->tone), res);
+    }
     /* 6. the frame's landmarks: consistent sizes, in order */
     rl_filter_size(res, rec->cfg.size_tolerance);
     rl_filter_sort(res);
     return RL_OK;
+}
+
+rl_err rl_recog_run(rl_recog *rec, const rl_image *img, rl_result *res)
+{
+    rl_err e;
+    if (rec == NULL || res == NULL || img == NULL || !rl_image_valid(img))
+        return RL_EINVAL;
+    if (img->width != rec->width || img->height != rec->height || img->stride > INT_MAX / 2)
+        return RL_EINVAL;
+    e = run_stages(rec, img, res);
+    rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_DONE);
+    return e;
 }

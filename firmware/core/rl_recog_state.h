@@ -1,6 +1,11 @@
 /* rl_recog_state: what a recognizer holds between frames (internal: the
  * public header keeps rl_recog opaque).
  *
+ * A header of its own, below every pass: the passes (rl_global, rl_local,
+ * rl_locate, rl_twins) include it, and rl_recog.c, the hub above them
+ * that runs them in the order of rl_stage.h, includes theirs; nothing
+ * below the hub calls into it.
+ *
  * It lives at the start of the caller's block; every array it points to
  * follows it in the same block, carved by the one layout sequence that
  * rl_recog_workspace_size also runs.
@@ -34,9 +39,5 @@ struct rl_recog {
     rl_split split; /* the second labellings' thresholds */
     rl_polar *polar;/* a local-pass candidate in polar cells */
 };
-
-/* Specks: regions smaller than 10% of the narrowest code ring of the
- * smallest landmark considered (the paper's rule). */
-int rl_recog_speck_area(const rl_recog_config *cfg);
 
 #endif

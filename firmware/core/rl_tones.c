@@ -53,11 +53,14 @@ int rl_tones_vote(rl_tones *ts, const int *which, int n, const int *identified)
         if (identified[k] > identified[best])
             best = k;
     other = best == 0 ? 1 : 0;
+    if (identified[best] == 0)
+        return 0; /* a frame with none says nothing: no vote, and the votes kept as they
+                     were (a settled curve stays settled across empty frames) */
     for (k = 0; k < ts->n; k++)
         ts->votes[k] *= VOTE_FADE;
     /* a tie with landmarks: the current curve does as well (on sharp
      * frames both read alike, and the choice settles instead of reading
-     * every frame twice); a frame with none says nothing */
+     * every frame twice) */
     if (identified[best] > identified[other])
         ts->votes[which[best]] += 1.0;
     else if (identified[0] > 0)

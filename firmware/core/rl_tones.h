@@ -9,7 +9,8 @@
  * not guessed: while unsettled, each frame's candidates are read through
  * both, and the curve that identifies more of them earns a vote (the
  * votes of past frames fade); where both identify as many, the current
- * curve earns it (a frame with no landmark votes for neither). The current curve (2.2 at first) gives way
+ * curve earns it (a frame with no landmark votes for neither, nor fades
+ * the votes: it says nothing). The current curve (2.2 at first) gives way
  * when the other leads it by more than two votes; a frame is read through the current
  * curve unless the other identifies two landmarks more there. Once one
  * curve leads by RL_TONES_SETTLE votes only it is read, and both again

@@ -32,6 +32,7 @@
 #include "rl_family.h"
 #include "rl_image.h"
 #include "rl_map.h"
+#include "rl_stage.h"
 #include "rl_workspace.h"
 
 typedef enum {
@@ -83,6 +84,8 @@ typedef struct {
                              (default): learned from the landmarks, between 2.2 and 1.
                              Blur and motion mix light, so identification reads light
                              (the curve undone), never grey levels */
+    rl_stage_hook stage_hook; /* called as each stage of a frame begins (rl_stage.h);
+                                 none by default */
 } rl_recog_config;
 
 typedef struct {

@@ -16,6 +16,7 @@
 #include "rl_composite.h"
 #include "rl_png.h"
 #include "rl_report.h"
+#include "bench_stages.h"
 
 typedef struct {
     long placed[3], found[3], wrong, false_det;
@@ -61,7 +62,7 @@ static void print_row(const char *what, const score *a, const score *b, int kind
 /* One photo, one round: rings and tags at the same places. */
 static void one_frame(const rl_image *photo, rl_composite_config *cc, const int *ids, int n_ids,
                       rl_heap_recog *hr, apriltag_detector_t *td, uint8_t *a, uint8_t *b,
-                      score *ring, score *tag)
+                      score *ring, score *tag, rl_bench_stages *st)
 {
     static rl_result res;
     rl_site_mark marks[RL_COMPOSITE_MAX];
@@ -85,6 +86,7 @@ static void one_frame(const rl_image *photo, rl_composite_config *cc, const int 
         ring->placed[marks[i].kind]++;
         tag->placed[marks[i].kind]++;
     }
+    rl_bench_stages_unit(st, &ia);
     if (rl_report_run(hr, &ia, &res, &us) == RL_OK) {
         ring->us += us;
         ring->frames++;
@@ -110,6 +112,7 @@ int rl_bench_real(const char *dir, int rounds, int seed, double radius, apriltag
                   apriltag_family_t *tf)
 {
     static rl_result res;
+    static rl_bench_stages st, as_is; /* the composited frames' stages; the photos' own run apart */
     char **names;
     score ring, tag;
     rl_composite_config cc;
@@ -137,6 +140,7 @@ int rl_bench_real(const char *dir, int rounds, int seed, double radius, apriltag
     cc.radius_px = radius;
     cc.seed = (uint64_t)seed;
     rl_recog_defaults(&cfg);
+    rl_bench_stages_start(&st, &cfg);
     rl_heap_recog_init(&hr, &cfg);
     for (p = 0; p < n; p++) {
         rl_image img;
@@ -150,10 +154,12 @@ int rl_bench_real(const char *dir, int rounds, int seed, double radius, apriltag
         b = malloc((size_t)img.width * (size_t)img.height);
         if (a == NULL || b == NULL)
             return 1;
+        as_is = st;
         if (rl_heap_recog_run(&hr, &img, &res) == RL_OK)
             false_as_is += res.n_landmarks;
+        st = as_is;
         for (r = 0; r < rounds; r++)
-            one_frame(&img, &cc, ids, 30, &hr, td, a, b, &ring, &tag);
+            one_frame(&img, &cc, ids, 30, &hr, td, a, b, &ring, &tag, &st);
         rl_png_free(&img);
         photos++;
         if (photos % 20 == 0)
@@ -177,6 +183,7 @@ int rl_bench_real(const char *dir, int rounds, int seed, double radius, apriltag
     printf("%-24s %10.3f %12.3f   (AprilTag / ringloc: %.1fx)\n", "ms per frame",
            ring.frames ? ring.us / ring.frames / 1000 : 0.0, tag.frames ? tag.us / tag.frames / 1000 : 0.0,
            ring.us > 0 ? (tag.us / tag.frames) / (ring.us / ring.frames) : 0.0);
+    rl_bench_stages_print(&st, "real photos with landmarks placed in them", tag.frames ? tag.us / tag.frames : 0.0);
     free(a);
     free(b);
     rl_heap_recog_free(&hr);

@@ -1,5 +1,6 @@
 #include "bench_site.h"
 #include "bench_stats.h"
+#include "bench_stages.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -57,6 +58,8 @@ static double least_us(void (*fn)(job *), job *j)
 /* dir's site: map, camera and robot, the recognizer for the map's ids and
  * the place index (its build time into *build_ms). 0, or 1 with the line
  * printed. */
+static rl_bench_stages stages;
+
 static int load_site(const char *dir, rl_site *site, double *build_ms)
 {
     static rl_site_folder held;
@@ -66,6 +69,7 @@ static int load_site(const char *dir, rl_site *site, double *build_ms)
     uint64_t t0;
     rl_site_files_folder(&files, &held, dir);
     rl_recog_defaults(&cfg);
+    rl_bench_stages_start(&stages, &cfg);
     if (rl_site_load(site, &files, err, sizeof err) != RL_OK) {
         fprintf(stderr, "ringloc-bench: %s\n", err);
         return 1;
@@ -100,6 +104,9 @@ static int time_frame(rl_site *site, const rl_image *img, rl_result *res, double
     {
         job j = {&site->map, &site->place, &site->calib, &site->mount, res, NULL, &f, 1};
         *find_t = least_us(find, &j);
+        /* the place found once per recognition, in the stage table */
+        rl_bench_stages_add(&stages, RL_STAGE_PLACE, *find_t * 1000.0 * REPEAT);
+        rl_bench_stages_unit(&stages, img);
         /* tracking: the frame's own place as the last pose, a tenth of a second ago */
         prior.valid = 1;
         prior.x = f.x;
@@ -150,6 +157,8 @@ int rl_bench_site(const char *dir)
            "%.1f us tracked; the pose solve after it %.1f us; recognition %.0f us (finding the place is %.1f%% of "
            "it)\n", n, failed, REPEAT, rl_bench_median(find_us, n), rl_bench_median(track_us, n), rl_bench_median(solve_us, n),
            rl_bench_median(recog_us, n), 100.0 * rl_bench_median(find_us, n) / rl_bench_median(recog_us, n));
+    snprintf(path, sizeof path, "%s (a large site's %d frames, the place found with no prior)", dir, n);
+    rl_bench_stages_print(&stages, path, 0.0);
     rl_site_free(&site);
     return 0;
 }

@@ -9,6 +9,9 @@
  * AprilTag (tag36h11, one thread, default decimation), their ratio, what
  * each found, and ringloc's workspace. Both run in this process on the
  * same core, one after the other, so the ratio holds on any machine.
+ * Then, for each DIR, --pose, --site and --real, the recognizer's stages
+ * (rl_stage.h, timed through its hook: bench_stages.h) per frame in
+ * microseconds and in whole-frame histogram passes, beside AprilTag 3.
  */
 #define _GNU_SOURCE
 #include <sched.h>
@@ -24,6 +27,7 @@
 #include "rl_site.h"
 #include "bench_real.h"
 #include "bench_site.h"
+#include "bench_stages.h"
 #include "bench_stats.h"
 
 #define REPEAT 5
@@ -64,8 +68,8 @@ static int twin_names(const char *dir, char **names)
  * the rest of the machine only ever adds time, to either. What each found
  * is added to *found_rl and *found_at, the ring frame's size put in *W, *H.
  * 0, or 1 with the line printed. */
-static int time_twin(const char *name, rl_heap_recog *hr, apriltag_detector_t *td, double *t_rl, double *t_at,
-                     int *found_rl, int *found_at, int *W, int *H)
+static int time_twin(const char *name, rl_heap_recog *hr, apriltag_detector_t *td, rl_bench_stages *st,
+                     double *t_rl, double *t_at, double *at_sum, int *found_rl, int *found_at, int *W, int *H)
 {
     static rl_result res;
     rl_image ring, tag;
@@ -88,10 +92,12 @@ static int time_twin(const char *name, rl_heap_recog *hr, apriltag_detector_t *t
         double t0 = (double)rl_clock_now_us();
         zarray_t *dets = apriltag_detector_detect(td, &im);
         ta[k] = (double)rl_clock_now_us() - t0;
+        *at_sum += ta[k];
         if (k == 0)
             *found_at += zarray_size(dets);
         apriltag_detections_destroy(dets);
     }
+    rl_bench_stages_unit(st, &ring);
     *t_rl = least(t, REPEAT);
     *t_at = least(ta, REPEAT);
     *found_rl += res.n_landmarks;
@@ -100,11 +106,20 @@ static int time_twin(const char *name, rl_heap_recog *hr, apriltag_detector_t *t
     return 0;
 }
 
+/* Each twin folder's stage table, printed after the summary rows. */
+#define MAX_DIRS 8
+static rl_bench_stages stages[MAX_DIRS];
+static double stage_peer[MAX_DIRS];
+static char stage_what[MAX_DIRS][512];
+static int n_stages;
+
 static int bench_dir(const char *dir, apriltag_detector_t *td)
 {
     static char *names[MAX_FRAMES];
     static double t_rl[MAX_FRAMES], t_at[MAX_FRAMES];
+    static rl_bench_stages st;
     int n, i, found_rl = 0, found_at = 0, W = 0, H = 0;
+    double at_sum = 0;
     rl_recog_config cfg;
     rl_heap_recog hr;
     if ((n = twin_names(dir, names)) < 0)
@@ -114,9 +129,10 @@ static int bench_dir(const char *dir, apriltag_detector_t *td)
         return 1;
     }
     rl_recog_defaults(&cfg);
+    rl_bench_stages_start(&st, &cfg);
     rl_heap_recog_init(&hr, &cfg);
     for (i = 0; i < n; i++) {
-        if (time_twin(names[i], &hr, td, &t_rl[i], &t_at[i], &found_rl, &found_at, &W, &H) != 0)
+        if (time_twin(names[i], &hr, td, &st, &t_rl[i], &t_at[i], &at_sum, &found_rl, &found_at, &W, &H) != 0)
             return 1;
         free(names[i]);
     }
@@ -125,6 +141,10 @@ static int bench_dir(const char *dir, apriltag_detector_t *td)
         size_t ws = rl_recog_workspace_size(W, H, &cfg);
         printf("%4dx%-4d %6d %12.3f %12.3f %9.1fx %9d %9d %10zu %7.2f\n", W, H, n, mr, ma, ma / mr,
                found_rl, found_at, ws, (double)ws / ((double)W * H));
+        stages[n_stages] = st;
+        stage_peer[n_stages] = at_sum / ((double)n * REPEAT);
+        snprintf(stage_what[n_stages], sizeof stage_what[0], "%s (%d frames)", dir, n);
+        n_stages += n_stages < MAX_DIRS - 1;
     }
     rl_heap_recog_free(&hr);
     return 0;
@@ -200,12 +220,14 @@ static int bench_pose(const char *dir)
     static rl_site site;
     static rl_site_folder held;
     static double pose_us[MAX_FRAMES], recog_us[MAX_FRAMES];
+    static rl_bench_stages st;
     rl_site_files files;
     rl_recog_config cfg;
     char path[2048], err[768];
     int q, k, n = 0, solved = 0;
     rl_site_files_folder(&files, &held, dir);
     rl_recog_defaults(&cfg);
+    rl_bench_stages_start(&st, &cfg);
     if (rl_site_load(&site, &files, err, sizeof err) != RL_OK || rl_site_prepare(&site, &cfg, err, sizeof err) != RL_OK) {
         fprintf(stderr, "ringloc-bench: %s\n", err);
         return 1;
@@ -228,7 +250,9 @@ static int bench_pose(const char *dir)
                     bad |= rl_pose_solve(&site.calib, &site.map, &site.mount, res.landmarks, res.n_landmarks, NULL,
                                          &pose) != RL_OK;
                 t[i] = (double)(rl_clock_now_us() - a) / 20.0;
+                rl_bench_stages_add(&st, RL_STAGE_POSE, t[i] * 1000.0);
             }
+            rl_bench_stages_unit(&st, &img);
             rl_png_free(&img);
             if (i < REPEAT || bad)
                 continue;
@@ -245,6 +269,8 @@ static int bench_pose(const char *dir)
     printf("pose: %d frames (the tilt solved in %d), %.1f us per pose (median of the least of %d runs), "
            "%.0f%% of the same frames' recognition (%.1f us)\n", n, solved, rl_bench_median(pose_us, n), REPEAT,
            100.0 * rl_bench_median(pose_us, n) / rl_bench_median(recog_us, n), rl_bench_median(recog_us, n));
+    snprintf(path, sizeof path, "%s (a drive's %d frames, with the pose)", dir, n);
+    rl_bench_stages_print(&st, path, 0.0);
     return 0;
 }
 
@@ -263,7 +289,11 @@ int main(int argc, char **argv)
                 "  DRIVE_DIR: a drive from ringloc-render --path (map, camera, robot files);\n"
                 "  SITE_DIR: a planned site (ringloc plan --area) and random_NNN.png frames under it\n"
                 "  (ringloc-render --site-map --path random);\n"
-                "  PHOTO_DIR: real ceiling photos (PNG) to place rings and AprilTag twins into\n");
+                "  PHOTO_DIR: real ceiling photos (PNG) to place rings and AprilTag twins into\n"
+                "Each set also gets a table of the recognizer's stages (histogram, labelling, CLRs,\n"
+                "global pass, tone reads, second labellings, local pass, reads across motion; pose\n"
+                "and place where there is a map): time per frame in us and in passes of one\n"
+                "histogram over the whole frame, measured in the same run (docs/design.md)\n");
         return argc < 2 ? 2 : 0;
     }
     /* one core: both detectors on the same one */
@@ -300,6 +330,8 @@ int main(int argc, char **argv)
         }
         rc |= bench_dir(argv[i], td);
     }
+    for (i = 0; i < n_stages; i++)
+        rl_bench_stages_print(&stages[i], stage_what[i], stage_peer[i]);
     apriltag_detector_destroy(td);
     tag36h11_destroy(tf);
     return rc;

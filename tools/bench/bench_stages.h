@@ -1,0 +1,46 @@
+/* bench_stages: the recognizer's stages (rl_stage.h) timed through its
+ * hook, and printed per frame in microseconds and in histogram passes:
+ * the time of one histogram of the whole frame (every pixel), measured on
+ * the same frames in the same run, a unit that does not depend on the
+ * machine.
+ *
+ *   rl_bench_stages st;
+ *   rl_bench_stages_start(&st, &cfg);          // before the recognizer is made
+ *   ... recognize frames; rl_bench_stages_unit(&st, &img) once per frame ...
+ *   rl_bench_stages_print(&st, "640x480 twins", apriltag_us);
+ */
+#ifndef BENCH_STAGES_H
+#define BENCH_STAGES_H
+
+#include <stdint.h>
+#include "rl_image.h"
+#include "rl_recog.h"
+
+typedef struct {
+    double ns[RL_STAGE_DONE]; /* summed over every run */
+    long runs;                /* frames recognized (RL_STAGE_DONE calls) */
+    double unit_ns;           /* summed whole-frame histogram passes */
+    long units;
+    rl_stage cur;
+    uint64_t t0;
+    int open;
+} rl_bench_stages;
+
+/* Zero st and put its hook into cfg. */
+void rl_bench_stages_start(rl_bench_stages *st, rl_recog_config *cfg);
+
+/* Monotonic nanoseconds. */
+uint64_t rl_bench_ns(void);
+
+/* Add ns to stage s (the caller's own stages: pose, place). */
+void rl_bench_stages_add(rl_bench_stages *st, rl_stage s, double ns);
+
+/* One whole-frame histogram pass over img, timed (the least of a few). */
+void rl_bench_stages_unit(rl_bench_stages *st, const rl_image *img);
+
+/* The table: each stage's mean time per frame (us) and in histogram
+ * passes, the total, and a peer's time per frame (AprilTag 3; 0: none)
+ * beside it. */
+void rl_bench_stages_print(const rl_bench_stages *st, const char *what, double peer_us);
+
+#endif
