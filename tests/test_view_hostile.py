@@ -7,14 +7,12 @@
      an oversized header, slowloris clients, 100 connections at once, bad
      paths, methods, numbers and tokens, and garbage bytes.
 Every run must send every pose frame, B's and C's equal to A's (all but
-their times), the bad requests must get their 4xx (or be closed), never a
-crash, the server must hold no more than its bound of connections and
-answer again once the attack is over; with
-the pages open, the median latency is within 10% of A's (A run before and
-after B, the slower of the two: CI's cores are shared; from frame 45 on,
-when the browsers, on the same cores in CI but not on a robot, have
-started; measured once more before failing, a neighbour's burst on CI's
-shared cores not being ours). Prints the runs' latencies.
+their times), with no gap in their sequence numbers; the bad requests must
+get their 4xx (or be closed), never a crash, the server must hold no more
+than its bound of connections and answer again once the attack is over.
+Nothing here depends on the machine's load (issue 39): the latencies of
+the runs are printed as a benchmark (with the pages open against A and
+A2, run before and after B), never asserted.
 
 usage: test_view_hostile.py RINGLOC PATHS_DIR TMPDIR"""
 import os
@@ -28,7 +26,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import view_lib as vl  # noqa: E402
 
 FRAMES = 120       # 8 s at 15 frames a second
-SETTLED = 45       # latency is compared from here on: the browsers started (on CI's cores) by then
+SETTLED = 45       # latency is printed from here on: the browsers started (on CI's cores) by then
 ATTACKED = 180     # the attacked run is longer: the attack must end before it does
 TOKEN = "s3cret"
 
@@ -190,13 +188,6 @@ def latencies(got):
     return (statistics.mean(late), statistics.median(late)) if late else (0.0, 0.0)
 
 
-def latency_ok(runs):
-    """The median, 10% and the latency field's resolution, against the
-    slower of the runs without: CI's cores are shared."""
-    lat = {tag: latencies(got) for tag, got in runs.items()}
-    return lat["B"][1] <= 1.10 * max(lat["A"][1], lat["A2"][1]) + 0.2, lat
-
-
 def main():
     ringloc, paths_dir, tmp = sys.argv[1:4]
     vl.browser_or_skip()
@@ -204,14 +195,7 @@ def main():
     names = vl.frames_of(paths_dir)
     ck = vl.Checks()
     runs, updates = measure(ringloc, tmp, paths_dir, names)
-    ok, lat = latency_ok(runs)
-    if not ok:  # once more: a neighbour's burst on CI's shared cores is not ours
-        print("latency with two pages open %.2f ms, without %.2f/%.2f ms (median): measuring again"
-              % (lat["B"][1], lat["A"][1], lat["A2"][1]))
-        runs, updates = measure(ringloc, tmp, paths_dir, names)
-        ok, lat = latency_ok(runs)
-    ck.check(ok, "latency with two pages open %.2f ms, without %.2f/%.2f ms (median)"
-             % (lat["B"][1], lat["A"][1], lat["A2"][1]))
+    lat = {tag: latencies(got) for tag, got in runs.items()}
     port = vl.free_port()
     cfg_c = vl.write_config(tmp, paths_dir, names, "C.bin")
     with open(cfg_c, "a") as f:
@@ -225,10 +209,13 @@ def main():
         poses = [p for p in got if p["type"] == "pose"]
         ck.check(len(poses) == n and len(got) == n, "run %s: %d pose frames (%d frames in all) for %d frames"
                  % (tag, len(poses), len(got), n))
+        seqs = [p.get("seq") for p in got]
+        gaps = [i for i in range(1, len(seqs)) if seqs[i] != (seqs[i - 1] + 1) % 65536]
+        ck.check(not gaps, "run %s: sequence numbers jump at frames %s" % (tag, gaps[:5]))
         if tag != "A":
             same = sum(vl.same_pose(a, b) for a, b in zip(runs["A"], got[:FRAMES]))
             ck.check(same == FRAMES, "run %s: %d of %d pose frames equal to those without the view" % (tag, same, FRAMES))
-    print("pose frames: A %d, A2 %d, B %d, C %d; latency mean/median A %.2f/%.2f ms, A2 %.2f/%.2f ms, "
+    print("benchmark (not asserted): pose frames: A %d, A2 %d, B %d, C %d; latency mean/median A %.2f/%.2f ms, A2 %.2f/%.2f ms, "
           "B (two pages open) %.2f/%.2f ms, C (attacked) %.2f/%.2f ms; pages drew %s frames; "
           "flood: %d connections, %d answered 200"
           % (len(runs["A"]), len(runs["A2"]), len(runs["B"]), len(runs["C"]), lat["A"][0], lat["A"][1], lat["A2"][0],
