@@ -10,7 +10,11 @@ as a robot's controller would read it:
      "kept" stops counting, the pose frames go on;
   4. a run that records no frame (the camera never opens) leaves no empty
      drive_NNN behind;
-  5. the service's watchdog: with a fake NOTIFY_SOCKET, READY=1, then
+  5. the web view heard beyond loopback without a token: a token made and
+     printed, asked before anything else (401 with WWW-Authenticate), the
+     URL's token returned as an HttpOnly cookie, a Host not the robot's
+     refused, a request trickled byte by byte closed at its deadline;
+  6. the service's watchdog: with a fake NOTIFY_SOCKET, READY=1, then
      WATCHDOG=1 pings while frames flow, and none while the camera is
      down.
 Nothing asserted depends on the machine's load: frames are counted, never
@@ -20,6 +24,7 @@ usage: test_service.py RINGLOC PATHS_DIR TMPDIR"""
 import json
 import os
 import select
+import shutil
 import signal
 import socket
 import subprocess
@@ -290,11 +295,90 @@ def watchdog(ringloc, paths_dir, tmp, ck):
         note.close()
 
 
+def raw_http(port, raw, source="127.0.0.1"):
+    """Send raw bytes, return the status and the headers (lower-case names)."""
+    s = socket.create_connection(("127.0.0.1", port), timeout=10, source_address=(source, 0))
+    s.sendall(raw)
+    data = b""
+    while b"\r\n\r\n" not in data:
+        b = s.recv(4096)
+        if not b:
+            break
+        data += b
+    s.close()
+    head = data.split(b"\r\n\r\n")[0].decode("latin-1").split("\r\n")
+    parts = head[0].split(" ")
+    code = int(parts[1]) if len(parts) > 1 and parts[1].isdigit() else 0
+    hdrs = {}
+    for ln in head[1:]:
+        k, _, v = ln.partition(":")
+        hdrs.setdefault(k.strip().lower(), []).append(v.strip())
+    return code, hdrs
+
+
+def trickle(port, source, limit):
+    """One header byte every 0.1 s: the bytes sent before the server
+    closed the connection, or limit when it never did."""
+    s = socket.create_connection(("127.0.0.1", port), timeout=10, source_address=(source, 0))
+    s.sendall(b"GET /status.json HTTP/1.1\r\nHost: 127.0.0.1\r\n")
+    sent = 0
+    try:
+        while sent < limit:
+            s.sendall(b"X-a: b\r\n"[sent % 8:sent % 8 + 1])
+            sent += 1
+            r, _, _ = select.select([s], [], [], 0.1)
+            if r and not s.recv(4096):
+                break
+    except OSError:
+        pass
+    s.close()
+    return sent
+
+
+def web_security(ringloc, paths_dir, tmp, ck):
+    """Heard beyond loopback without a token: one is made and printed; the
+    token before anything, 401 with WWW-Authenticate, the token from the
+    URL returned as a cookie, a foreign Host refused, a trickling request
+    closed at its deadline however it trickles."""
+    pty = Pty(tmp, "web")
+    port = vl.free_port()
+    cfg, _ = config(tmp, paths_dir, "web", pty.name, True, "http: {listen: 0.0.0.0:%d}\n" % port)
+    fw = start(ringloc, cfg, tmp, "web")
+    try:
+        ok = wait_for(lambda: "the token for this run is" in err_of(tmp, "web"), fw)
+        ck.check(ok, "0.0.0.0 without http.token: no token made: %s" % err_of(tmp, "web"))
+        token = err_of(tmp, "web").split("the token for this run is ")[-1].split(" ")[0] if ok else "x"
+        vl.wait_http(port, fw)
+        get = "GET %s HTTP/1.1\r\nHost: %s\r\n%s\r\n"
+        code, h = raw_http(port, (get % ("/nothing", "127.0.0.1", "")).encode())
+        ck.check(code == 401 and "www-authenticate" in h, "no token: %d %s (401 with WWW-Authenticate)" % (code, h))
+        code, h = raw_http(port, (get % ("/?token=" + token, "127.0.0.1", "")).encode())
+        cookie = (h.get("set-cookie") or [""])[0]
+        ck.check(code == 200 and cookie.startswith("ringloc_token=" + token + ";") and "HttpOnly" in cookie,
+                 "token in the URL: %d, cookie %r" % (code, cookie))
+        code, _ = raw_http(port, (get % ("/status.json", "127.0.0.1", "Cookie: ringloc_token=%s\r\n" % token)).encode())
+        ck.check(code == 200, "the cookie alone: %d" % code)
+        code, _ = raw_http(port, (get % ("/status.json?token=" + token, "evil.example:%d" % port, "")).encode())
+        ck.check(code == 421, "a rebinding Host: %d" % code)
+        # 10 s of deadline: a per-byte idle timeout would never close it (600 bytes: 60 s)
+        sent = trickle(port, "127.0.0.2", 600)
+        ck.check(sent < 600, "a request trickled a byte every 0.1 s was never closed (%d bytes)" % sent)
+        ck.check(serving(port) or raw_http(port, (get % ("/status.json", "127.0.0.1",
+                                                          "Cookie: ringloc_token=%s\r\n" % token)).encode())[0] == 200,
+                 "served after the trickle")
+    finally:
+        rc = stop(fw)
+        pty.close()
+    ck.check(rc == 0 and len(pty.poses(ringloc)) > 0, "web: rc %d" % rc)
+
+
 def main():
     ringloc, paths_dir, tmp = sys.argv[1:4]
-    os.makedirs(tmp, exist_ok=True)
+    shutil.rmtree(tmp, ignore_errors=True)
+    os.makedirs(tmp)
     ck = vl.Checks()
     port_taken(ringloc, paths_dir, tmp, ck)
+    web_security(ringloc, paths_dir, tmp, ck)
     ro = os.path.join(tmp, "rec_ro")
     os.makedirs(ro, exist_ok=True)
     if os.geteuid() == 0:

@@ -3,6 +3,8 @@
 
 #include <stdio.h>
 #include <string.h>
+#include <sys/random.h>
+#include "rl_listen.h"
 
 void rl_fw_side_init(rl_fw_side *s, const char *prefix, const rl_runner *runner, int w, int h)
 {
@@ -53,11 +55,44 @@ static void try_recording(rl_fw_side *s, uint64_t now)
     s->rec_note[0] = 0;
 }
 
+/* 1 when listen is on this computer only (127.0.0.0/8, ::1). */
+static int loopback_only(const char *listen)
+{
+    rl_listen l;
+    char err[160];
+    if (rl_listen_parse(listen, &l, err, sizeof err) != RL_OK)
+        return 1; /* refused at start anyway */
+    return l.ipv6 ? strcmp(l.host, "::1") == 0 : strncmp(l.host, "127.", 4) == 0;
+}
+
+/* A web view heard beyond this computer without a token gets one made
+ * up (32 hex digits from the kernel's random source), printed once. */
+static void make_token(rl_fw_side *s)
+{
+    unsigned char b[16];
+    int i;
+    if (s->token != NULL && s->token[0])
+        return;
+    if (getrandom(b, sizeof b, 0) != (ssize_t)sizeof b) {
+        fprintf(stderr, "%s: http: no random token could be made; the web view is open to anyone who can "
+                        "reach %s (set http.token)\n", s->prefix, s->listen);
+        return;
+    }
+    for (i = 0; i < 16; i++)
+        snprintf(s->made_token + 2 * i, 3, "%02x", b[i]);
+    s->token = s->made_token;
+    fprintf(stderr, "%s: http: %s is heard beyond this computer and http.token is not set: the token for this "
+                    "run is %s (open http://ADDRESS:PORT/?token=%s once; set http.token to choose one)\n",
+            s->prefix, s->listen, s->made_token, s->made_token);
+}
+
 static void try_web(rl_fw_side *s, uint64_t now)
 {
     char err[512];
     if (!web_wanted(s) || s->web.on || now < s->web_retry_at)
         return;
+    if (!loopback_only(s->listen))
+        make_token(s);
     if (rl_fw_http_start(&s->web, s->listen, s->token, s->width, s->height, s->map, s->runner, s->serial,
                          rec_wanted(s) ? &s->rec : NULL, err, sizeof err) != RL_OK) {
         failed(s, s->web_note, sizeof s->web_note, "the web view", err, &s->web_retry_at, now);

@@ -6,8 +6,10 @@
  * logged in one line and tried again every retry_us from the loop's
  * observer (a new line only when the reason changes, and one when it
  * starts); recording that stops later (a full disk, max_mb) stays off,
- * and the page says why. Each report of the loop is offered to the
- * recorder and the view (rl_run_io.observe).
+ * and the page says why. A web view that listens beyond this computer
+ * (not 127.0.0.0/8 or ::1) without http.token gets a random token for the
+ * run, printed once. Each report of the loop is offered to the recorder
+ * and the view (rl_run_io.observe).
  *
  *   static rl_fw_side side;
  *   static rl_runner runner;
@@ -51,6 +53,7 @@ typedef struct {
     rl_fw_http web;
     uint64_t web_retry_at;
     char web_note[512];         /* why the web view is not up, or "" */
+    char made_token[33];        /* the token made up for a view heard beyond loopback without one */
 } rl_fw_side;
 
 /* Nothing asked for yet; prefix starts every log line (stderr). */
