@@ -33,9 +33,15 @@ static const char *run_help =
     "               or playing back; at most record.max_mb (1000) on disk\n"
     "  --http ADDR:PORT  a live web view: the camera image with the landmarks found,\n"
     "               the map, the pose and the counters (read-only; http.token in\n"
-    "               the file asks for a token)\n"
+    "               the file asks for a token; on an address beyond 127.0.0.1 and\n"
+    "               ::1 without one, a token is made for the run and printed)\n"
     "  --probe      list what the configured camera offers (formats, sizes,\n"
-    "               controls) and exit\n";
+    "               controls) and exit\n\n"
+    "Recording and the web view never stop the pose frames: one that cannot start\n"
+    "(a port taken, an address not there yet, a read-only or full folder) is said\n"
+    "in one line and tried again every 5 s. Under systemd (Type=notify) the\n"
+    "firmware says READY=1 and pings the watchdog while frames are recognized.\n"
+    "See docs/service.md.\n";
 
 typedef struct {
     rl_serial s;
