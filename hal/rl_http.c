@@ -384,6 +384,12 @@ rl_err rl_http_start(rl_http **hp, const rl_http_config *c, rl_view *view, const
         snprintf(err, errlen, "the access token is longer than %d characters", RL_HTTP_MAX_TOKEN);
         return RL_EFORMAT;
     }
+    if (c->token != NULL && c->token[strspn(c->token, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                       "0123456789-._~")] != 0) {
+        /* it travels in a URL and a cookie as it is */
+        snprintf(err, errlen, "the access token may hold letters, digits and -._~ only");
+        return RL_EFORMAT;
+    }
     if ((h = (rl_http *)calloc(1, sizeof *h)) == NULL)
         return RL_ENOMEM;
     h->view = view;

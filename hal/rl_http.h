@@ -37,7 +37,7 @@
 
 typedef struct {
     const char *listen;      /* "ADDR:PORT" (rl_listen.h) */
-    const char *token;       /* access token; "" or NULL: none */
+    const char *token;       /* access token (letters, digits, -._~); "" or NULL: none */
     int max_clients;         /* connections at once (default 32) */
     int max_per_client;      /* of them from one address (default 8: a browser keeps a few open) */
     int timeout_s;           /* a request not whole this long after the connection opened or its
@@ -55,7 +55,7 @@ typedef struct {
 void rl_http_defaults(rl_http_config *c);
 
 /* Start serving view (and map: kept while the server runs). RL_EFORMAT
- * for a bad listen address, RL_EIO when the socket cannot be bound (err
+ * for a bad listen address or token, RL_EIO when the socket cannot be bound (err
  * names the address and why), RL_ENOMEM, RL_EUNSUPPORTED when the
  * program was built without libmicrohttpd. */
 RL_CHECK rl_err rl_http_start(rl_http **h, const rl_http_config *c, rl_view *view, const rl_map *map,

@@ -372,6 +372,21 @@ def web_security(ringloc, paths_dir, tmp, ck):
     ck.check(rc == 0 and len(pty.poses(ringloc)) > 0, "web: rc %d" % rc)
 
 
+def bad_token(ringloc, paths_dir, tmp, ck):
+    """A token that cannot travel in a cookie: one line, the poses all
+    the same."""
+    pty = Pty(tmp, "badtoken")
+    cfg, n = config(tmp, paths_dir, "badtoken", pty.name, False,
+                    "http: {listen: 127.0.0.1:%d, token: 'a b;c'}\n" % vl.free_port())
+    rc = start(ringloc, cfg, tmp, "badtoken").wait(60)
+    time.sleep(0.3)
+    poses = pty.poses(ringloc)
+    pty.close()
+    lines = [ln for ln in err_of(tmp, "badtoken").splitlines() if "access token may hold" in ln]
+    ck.check(rc == 0 and len(poses) == n and len(lines) == 1,
+             "a token with a space and ';': rc %d, %d poses: %s" % (rc, len(poses), err_of(tmp, "badtoken")))
+
+
 def main():
     ringloc, paths_dir, tmp = sys.argv[1:4]
     shutil.rmtree(tmp, ignore_errors=True)
@@ -379,6 +394,7 @@ def main():
     ck = vl.Checks()
     port_taken(ringloc, paths_dir, tmp, ck)
     web_security(ringloc, paths_dir, tmp, ck)
+    bad_token(ringloc, paths_dir, tmp, ck)
     ro = os.path.join(tmp, "rec_ro")
     os.makedirs(ro, exist_ok=True)
     if os.geteuid() == 0:
