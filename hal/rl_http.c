@@ -3,12 +3,15 @@
 #include <arpa/inet.h>
 #include <microhttpd.h>
 #include <netinet/in.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <sys/socket.h>
 #include <sys/syscall.h>
 #include <unistd.h>
+#include "rl_clock.h"
 #include "rl_http_req.h"
 #include "rl_listen.h"
 #include "rl_view_jpeg.h"
@@ -21,6 +24,13 @@ extern const size_t rl_view_page_len;
 /* Snapshots kept: the page asks for the frame of the status it drew, by
  * seq, after other clients may have moved the newest on. */
 #define RING 3
+
+/* A connection's slot for the whole-request deadline: the time its
+ * current request may have started (its opening, or the last answer). */
+typedef struct {
+    int used, shut, fd;
+    uint64_t since_us;
+} rl_http_slot;
 
 struct rl_http {
     struct MHD_Daemon *d;
@@ -38,6 +48,19 @@ struct rl_http {
     long jpeg_seq;            /* the JPEG last encoded: of this snapshot ... */
     int jpeg_width;           /* ... at this width (two pages ask for the same) */
     size_t jpeg_len;
+    char self[256];           /* this computer's name, for the Host check */
+    char cookie[RL_HTTP_MAX_TOKEN + 64]; /* Set-Cookie with the token */
+    int set_cookie;           /* the request being answered gave the token in its URL */
+    /* the deadline's watch: a thread that shuts a connection whose request
+     * is not answered within deadline_us of its start, however it trickles */
+    rl_http_slot *slots;
+    int n_slots;
+    uint64_t deadline_us;
+    pthread_t watch;
+    pthread_mutex_t lock;
+    pthread_cond_t wake;
+    int watching, quit;
+    long late;                /* connections shut at the deadline (under lock) */
 };
 
 /* The newest snapshot, taken from the view when it has a newer one. */
@@ -61,9 +84,10 @@ static const rl_view_snap *by_seq(rl_http *h, long seq)
     return latest(h);
 }
 
-static enum MHD_Result reply(struct MHD_Connection *c, unsigned status, const char *type, const void *p,
-                            size_t n, enum MHD_ResponseMemoryMode mode, long seq)
+static enum MHD_Result reply(rl_http *h, struct MHD_Connection *c, unsigned status, const char *type,
+                             const void *p, size_t n, enum MHD_ResponseMemoryMode mode, long seq)
 {
+    const char *cookie = h->set_cookie ? h->cookie : NULL;
     struct MHD_Response *r = MHD_create_response_from_buffer(n, (void *)p, mode);
     enum MHD_Result ok;
     char s[32];
@@ -79,6 +103,10 @@ static enum MHD_Result reply(struct MHD_Connection *c, unsigned status, const ch
         snprintf(s, sizeof s, "%ld", seq);
         MHD_add_response_header(r, "X-Ringloc-Seq", s);
     }
+    if (status == MHD_HTTP_OK && cookie != NULL)
+        MHD_add_response_header(r, "Set-Cookie", cookie);
+    if (status == MHD_HTTP_UNAUTHORIZED)
+        MHD_add_response_header(r, "WWW-Authenticate", "Bearer realm=\"ringloc\"");
     ok = MHD_queue_response(c, status, r);
     MHD_destroy_response(r);
     return ok;
@@ -89,7 +117,7 @@ static enum MHD_Result refuse(rl_http *h, struct MHD_Connection *c, unsigned sta
     char line[128];
     int n = snprintf(line, sizeof line, "%u %s\n", status, why);
     h->counts.refused++;
-    return reply(c, status, "text/plain; charset=utf-8", line, (size_t)n, MHD_RESPMEM_MUST_COPY, 0);
+    return reply(h, c, status, "text/plain; charset=utf-8", line, (size_t)n, MHD_RESPMEM_MUST_COPY, 0);
 }
 
 static enum MHD_Result frame(rl_http *h, struct MHD_Connection *c, const rl_http_req *q)
@@ -109,7 +137,7 @@ static enum MHD_Result frame(rl_http *h, struct MHD_Connection *c, const rl_http
         h->jpeg_len = n;
     }
     h->counts.served++;
-    return reply(c, MHD_HTTP_OK, "image/jpeg", rl_view_jpeg_data(h->jpeg), h->jpeg_len, MHD_RESPMEM_MUST_COPY,
+    return reply(h, c, MHD_HTTP_OK, "image/jpeg", rl_view_jpeg_data(h->jpeg), h->jpeg_len, MHD_RESPMEM_MUST_COPY,
                  s->seq);
 }
 
@@ -120,22 +148,123 @@ static enum MHD_Result respond(rl_http *h, struct MHD_Connection *c, const rl_ht
     switch (q->route) {
     case RL_ROUTE_PAGE:
         h->counts.served++;
-        return reply(c, MHD_HTTP_OK, "text/html; charset=utf-8", rl_view_page, rl_view_page_len,
+        return reply(h, c, MHD_HTTP_OK, "text/html; charset=utf-8", rl_view_page, rl_view_page_len,
                     MHD_RESPMEM_PERSISTENT, 0);
     case RL_ROUTE_MAP:
         h->counts.served++;
-        return reply(c, MHD_HTTP_OK, "application/json", h->map, h->map_len, MHD_RESPMEM_PERSISTENT, 0);
+        return reply(h, c, MHD_HTTP_OK, "application/json", h->map, h->map_len, MHD_RESPMEM_PERSISTENT, 0);
     case RL_ROUTE_STATUS:
         s = latest(h);
         if ((n = rl_view_json_status(s, h->status, RL_VIEW_JSON_STATUS_MAX)) == 0)
             return refuse(h, c, MHD_HTTP_INTERNAL_SERVER_ERROR, "status too large");
         h->counts.served++;
-        return reply(c, MHD_HTTP_OK, "application/json", h->status, n, MHD_RESPMEM_MUST_COPY, s->seq);
+        return reply(h, c, MHD_HTTP_OK, "application/json", h->status, n, MHD_RESPMEM_MUST_COPY, s->seq);
     case RL_ROUTE_FRAME:
         return frame(h, c, q);
     default:
         return refuse(h, c, MHD_HTTP_NOT_FOUND, "no such page");
     }
+}
+
+/* A request came whole: the connection's next one is timed from now. */
+static void answered(rl_http *h, struct MHD_Connection *c)
+{
+    const union MHD_ConnectionInfo *ci = MHD_get_connection_info(c, MHD_CONNECTION_INFO_SOCKET_CONTEXT);
+    rl_http_slot *s = ci != NULL ? (rl_http_slot *)ci->socket_context : NULL;
+    if (s == NULL)
+        return;
+    pthread_mutex_lock(&h->lock);
+    s->since_us = rl_clock_now_us();
+    pthread_mutex_unlock(&h->lock);
+}
+
+/* Connections opened and closed (the server's thread; closed before the
+ * socket is): each opened one takes a slot of the deadline's watch. */
+static void on_connection(void *cls, struct MHD_Connection *c, void **ctx, enum MHD_ConnectionNotificationCode toe)
+{
+    rl_http *h = (rl_http *)cls;
+    rl_http_slot *s = (rl_http_slot *)*ctx;
+    int i;
+    pthread_mutex_lock(&h->lock);
+    if (toe == MHD_CONNECTION_NOTIFY_STARTED) {
+        const union MHD_ConnectionInfo *ci = MHD_get_connection_info(c, MHD_CONNECTION_INFO_CONNECTION_FD);
+        for (i = 0; i < h->n_slots && ci != NULL; i++)
+            if (!h->slots[i].used) {
+                h->slots[i].used = 1;
+                h->slots[i].shut = 0;
+                h->slots[i].fd = ci->connect_fd;
+                h->slots[i].since_us = rl_clock_now_us();
+                *ctx = &h->slots[i];
+                break;
+            }
+    } else if (s != NULL) {
+        s->used = 0;
+        *ctx = NULL;
+    }
+    pthread_mutex_unlock(&h->lock);
+}
+
+/* The deadline's watch: a connection whose request is not whole within
+ * the deadline of its start (a client trickling a byte at a time, which
+ * an idle timeout never ends) is shut down; the server then closes it. */
+static void *watch(void *arg)
+{
+    rl_http *h = (rl_http *)arg;
+    pthread_mutex_lock(&h->lock);
+    while (!h->quit) {
+        struct timespec t;
+        uint64_t now = rl_clock_now_us();
+        int i;
+        for (i = 0; i < h->n_slots; i++) {
+            rl_http_slot *s = &h->slots[i];
+            if (s->used && !s->shut && now > s->since_us + h->deadline_us) {
+                (void)shutdown(s->fd, SHUT_RDWR);
+                s->shut = 1;
+                h->late++;
+            }
+        }
+        clock_gettime(CLOCK_REALTIME, &t);
+        t.tv_nsec += 250000000L;
+        if (t.tv_nsec >= 1000000000L) {
+            t.tv_sec++;
+            t.tv_nsec -= 1000000000L;
+        }
+        pthread_cond_timedwait(&h->wake, &h->lock, &t);
+    }
+    pthread_mutex_unlock(&h->lock);
+    return NULL;
+}
+
+static rl_err start_watch(rl_http *h, const rl_http_config *c)
+{
+    h->n_slots = c->max_clients > 0 ? c->max_clients : 1;
+    h->deadline_us = (uint64_t)(c->timeout_s > 0 ? c->timeout_s : 1) * 1000000u;
+    if ((h->slots = (rl_http_slot *)calloc((size_t)h->n_slots, sizeof *h->slots)) == NULL)
+        return RL_ENOMEM;
+    pthread_mutex_init(&h->lock, NULL);
+    pthread_cond_init(&h->wake, NULL);
+    if (pthread_create(&h->watch, NULL, watch, h) != 0) {
+        pthread_mutex_destroy(&h->lock);
+        pthread_cond_destroy(&h->wake);
+        return RL_ENOMEM;
+    }
+    h->watching = 1;
+    return RL_OK;
+}
+
+static void stop_watch(rl_http *h)
+{
+    if (h->watching) {
+        pthread_mutex_lock(&h->lock);
+        h->quit = 1;
+        pthread_cond_signal(&h->wake);
+        pthread_mutex_unlock(&h->lock);
+        pthread_join(h->watch, NULL);
+        pthread_mutex_destroy(&h->lock);
+        pthread_cond_destroy(&h->wake);
+        h->watching = 0;
+    }
+    free(h->slots);
 }
 
 static const char *arg(struct MHD_Connection *c, const char *key)
@@ -167,8 +296,16 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const cha
     if (in.auth == NULL)
         in.auth = MHD_lookup_connection_value(c, MHD_HEADER_KIND, "Authorization");
     (void)upload_size;
+    in.cookie = MHD_lookup_connection_value(c, MHD_COOKIE_KIND, "ringloc_token");
+    in.host = MHD_lookup_connection_value(c, MHD_HEADER_KIND, "Host");
+    in.self = h->self;
+    answered(h, c);
+    h->set_cookie = 0;
     if (rl_http_req_judge(&in, h->token, &q) != 200)
         return refuse(h, c, (unsigned)q.status, q.why);
+    /* the token came in the URL: from now on the browser sends it as a
+     * cookie, and the page takes it out of the address bar */
+    h->set_cookie = q.set_cookie;
     return respond(h, c, &q);
 }
 
@@ -227,6 +364,8 @@ static struct MHD_Daemon *listen_on(rl_http *h, const rl_http_config *c, const r
     return MHD_start_daemon(MHD_USE_POLL_INTERNAL_THREAD | (l->ipv6 ? MHD_USE_IPv6 : 0), (uint16_t)l->port,
                             NULL, NULL, on_request, h, MHD_OPTION_SOCK_ADDR, a,
                             MHD_OPTION_CONNECTION_LIMIT, (unsigned)c->max_clients,
+                            MHD_OPTION_PER_IP_CONNECTION_LIMIT, (unsigned)c->max_per_client,
+                            MHD_OPTION_NOTIFY_CONNECTION, on_connection, h,
                             MHD_OPTION_CONNECTION_TIMEOUT, (unsigned)c->timeout_s,
                             MHD_OPTION_CONNECTION_MEMORY_LIMIT, c->max_request,
                             MHD_OPTION_EXTERNAL_LOGGER, quiet, NULL, MHD_OPTION_END);
@@ -245,11 +384,20 @@ rl_err rl_http_start(rl_http **hp, const rl_http_config *c, rl_view *view, const
         snprintf(err, errlen, "the access token is longer than %d characters", RL_HTTP_MAX_TOKEN);
         return RL_EFORMAT;
     }
+    if (c->token != NULL && c->token[strspn(c->token, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                       "0123456789-._~")] != 0) {
+        /* it travels in a URL and a cookie as it is */
+        snprintf(err, errlen, "the access token may hold letters, digits and -._~ only");
+        return RL_EFORMAT;
+    }
     if ((h = (rl_http *)calloc(1, sizeof *h)) == NULL)
         return RL_ENOMEM;
     h->view = view;
     snprintf(h->token, sizeof h->token, "%s", c->token ? c->token : "");
-    if ((e = make_buffers(h, map)) != RL_OK) {
+    snprintf(h->cookie, sizeof h->cookie, "ringloc_token=%s; Path=/; HttpOnly; SameSite=Strict", h->token);
+    if (gethostname(h->self, sizeof h->self - 1) != 0)
+        h->self[0] = 0;
+    if ((e = make_buffers(h, map)) != RL_OK || (e = start_watch(h, c)) != RL_OK) {
         snprintf(err, errlen, "out of memory for the web view");
         rl_http_stop(h, NULL);
         return e;
@@ -272,9 +420,12 @@ void rl_http_stop(rl_http *h, rl_http_counts *counts)
     if (h == NULL)
         return;
     if (h->d)
-        MHD_stop_daemon(h->d); /* joins the server's thread: its counts are final */
-    if (counts != NULL)
+        MHD_stop_daemon(h->d); /* joins the server's thread */
+    stop_watch(h);             /* the watch's too: the counts are final */
+    if (counts != NULL) {
         *counts = h->counts;
+        counts->refused += h->late;
+    }
     for (i = 0; i < RING; i++)
         free(h->ring_mem[i]);
     rl_view_jpeg_free(h->jpeg);

@@ -4,11 +4,16 @@
  * /map.json, read-only, from snapshots of the loop (rl_view.h). The server
  * runs in one thread of its own that polls every client without blocking
  * (a slow or vanished browser holds nothing; at most max_clients at once,
- * more are refused); a client idle for timeout_s is dropped, a
- * request larger than max_request bytes gets 431 or is closed. Every
- * request is judged by rl_http_req before anything is served: bad ones
- * get a 4xx and a one-line reason. Nothing is read from disk, nothing is
- * changed: the loop never waits for the server.
+ * max_per_client from one address, more are refused); a request that is
+ * not whole within timeout_s of the connection's opening or last answer
+ * is closed however slowly it trickles in (a second thread watches the
+ * deadline), a request larger than max_request bytes gets 431 or is
+ * closed. Every request is judged by rl_http_req before anything is
+ * served, the token first (a 401 carries WWW-Authenticate; a token given
+ * in the URL comes back as an HttpOnly cookie, so the page's own requests
+ * carry none), then the Host header: bad ones get a 4xx and a one-line
+ * reason. Nothing is read from disk, nothing is changed: the loop never
+ * waits for the server.
  *
  *   static rl_view view;               // rl_view_init'ed, offered by the loop
  *   static rl_map map;
@@ -32,9 +37,11 @@
 
 typedef struct {
     const char *listen;      /* "ADDR:PORT" (rl_listen.h) */
-    const char *token;       /* access token; "" or NULL: none */
-    int max_clients;         /* connections at once (default 16: a browser keeps a few open) */
-    int timeout_s;           /* an idle connection is closed after this (default 10) */
+    const char *token;       /* access token (letters, digits, -._~); "" or NULL: none */
+    int max_clients;         /* connections at once (default 32) */
+    int max_per_client;      /* of them from one address (default 8: a browser keeps a few open) */
+    int timeout_s;           /* a request not whole this long after the connection opened or its
+                                last answer, or a connection idle this long, is closed (default 10) */
     size_t max_request;      /* bytes of one request's line and headers (default 8192) */
 } rl_http_config;
 
@@ -48,7 +55,7 @@ typedef struct {
 void rl_http_defaults(rl_http_config *c);
 
 /* Start serving view (and map: kept while the server runs). RL_EFORMAT
- * for a bad listen address, RL_EIO when the socket cannot be bound (err
+ * for a bad listen address or token, RL_EIO when the socket cannot be bound (err
  * names the address and why), RL_ENOMEM, RL_EUNSUPPORTED when the
  * program was built without libmicrohttpd. */
 RL_CHECK rl_err rl_http_start(rl_http **h, const rl_http_config *c, rl_view *view, const rl_map *map,

@@ -8,7 +8,8 @@ void rl_http_defaults(rl_http_config *c)
 {
     memset(c, 0, sizeof *c);
     c->token = "";
-    c->max_clients = 16;
+    c->max_clients = 32;
+    c->max_per_client = 8;
     c->timeout_s = 10;
     c->max_request = 8192;
 }

@@ -29,18 +29,80 @@ static int same_token(const char *given, const char *want)
     return diff == 0;
 }
 
-static int token_ok(const rl_http_req_in *in, const char *token)
+/* 1 when the request carries the token (r->set_cookie when in its URL). */
+static int token_ok(const rl_http_req_in *in, const char *token, rl_http_req *r)
 {
     const char *a = in->auth;
     if (token == NULL || token[0] == 0)
         return 1;
     if (in->token != NULL && same_token(in->token, token))
+        return r->set_cookie = 1;
+    if (in->cookie != NULL && same_token(in->cookie, token))
         return 1;
     if (a == NULL)
         return 0;
     if (strncmp(a, "Bearer ", 7) == 0)
         a += 7;
     return same_token(a, token);
+}
+
+/* s[0..n) equals name, letters in any case. */
+static int same_name(const char *s, size_t n, const char *name)
+{
+    size_t i;
+    for (i = 0; i < n && name[i]; i++) {
+        char a = s[i], b = name[i];
+        if (a >= 'A' && a <= 'Z')
+            a = (char)(a - 'A' + 'a');
+        if (b >= 'A' && b <= 'Z')
+            b = (char)(b - 'A' + 'a');
+        if (a != b)
+            return 0;
+    }
+    return i == n && name[i] == 0;
+}
+
+/* An IP address (IPv4 digits and dots, IPv6 in brackets), localhost or
+ * self (or self.local), each with an optional :port. A name resolving to
+ * the robot that is none of these is a page of another site
+ * (DNS rebinding). */
+static int host_ok(const char *host, const char *self)
+{
+    size_t n = bounded_len(host, 300), i, name;
+    int digits = 1;
+    if (n == 0 || n > 300)
+        return 0;
+    if (host[0] == '[') {
+        for (i = 1; i < n && host[i] != ']'; i++)
+            if (!((host[i] >= '0' && host[i] <= '9') || (host[i] >= 'a' && host[i] <= 'f') ||
+                  (host[i] >= 'A' && host[i] <= 'F') || host[i] == ':' || host[i] == '.'))
+                return 0;
+        name = i < n ? i + 1 : 0;
+        if (name == 0)
+            return 0;
+        digits = 0;
+    } else {
+        for (name = 0; name < n && host[name] != ':'; name++)
+            digits &= (host[name] >= '0' && host[name] <= '9') || host[name] == '.';
+    }
+    if (name < n) { /* :port */
+        if (host[name] != ':' || name + 1 == n)
+            return 0;
+        for (i = name + 1; i < n; i++)
+            if (host[i] < '0' || host[i] > '9')
+                return 0;
+    }
+    if (host[0] == '[' || (digits && name > 0))
+        return 1;
+    if (same_name(host, name, "localhost"))
+        return 1;
+    if (self == NULL || self[0] == 0)
+        return 0;
+    {
+        size_t k = strlen(self);
+        return same_name(host, name, self) ||
+               (name == k + 6 && same_name(host, k, self) && same_name(host + k, 6, ".local"));
+    }
 }
 
 /* A decimal number of at most `digits` digits within lo .. hi. */
@@ -78,6 +140,14 @@ int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *
     long v;
     r->width = 0;
     r->seq = -1;
+    r->set_cookie = 0;
+    /* the token first: without it nothing is said, not even what exists */
+    if (!token_ok(in, token, r))
+        return fail(r, 401, "access token missing or wrong");
+    if (in->host == NULL)
+        return fail(r, 400, "no Host header");
+    if (!host_ok(in->host, in->self))
+        return fail(r, 421, "Host is not this robot (an IP address, localhost or its own name)");
     if (in->method == NULL || (strcmp(in->method, "GET") != 0 && strcmp(in->method, "HEAD") != 0))
         return fail(r, 405, "only GET and HEAD: the view is read-only");
     if (in->url == NULL || in->url[0] != '/')
@@ -86,8 +156,6 @@ int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *
         return fail(r, 414, "path too long");
     if ((route = route_of(in->url)) == RL_ROUTE_NONE)
         return fail(r, 404, "no such page");
-    if (!token_ok(in, token))
-        return fail(r, 401, "access token missing or wrong");
     if (in->w != NULL) {
         if (!number(in->w, 5, 16, 8192, &v))
             return fail(r, 400, "w is not a width (16 .. 8192)");

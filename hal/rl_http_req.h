@@ -1,13 +1,16 @@
 /* rl_http_req: one request to the live web view judged, before anything
- * is served: the method (GET or HEAD), the path (one of the five routes;
- * nothing is ever served from disk), the access token when one is
- * configured (the query's ?token= or an "Authorization: Bearer" or
- * "X-Ringloc-Token" header, compared in constant time), and the query's
- * numbers (w, the JPEG's width; seq, the snapshot an overlay was drawn
- * for). Pure: no I/O, no allocation, any bytes in (the fuzz target's
- * contract).
+ * is served, in this order: the access token when one is configured (the
+ * query's ?token=, an "Authorization: Bearer" or "X-Ringloc-Token" header,
+ * or the ringloc_token cookie set after the first request that gave it,
+ * compared in constant time: nothing, not even a 404, is answered before
+ * it), the Host header (an IP address, localhost, or this computer's name,
+ * with or without ".local": a DNS-rebinding page that calls the robot by
+ * its own name is refused), the method (GET or HEAD), the path (one of the
+ * five routes; nothing is ever served from disk) and the query's numbers
+ * (w, the JPEG's width; seq, the snapshot an overlay was drawn for). Pure:
+ * no I/O, no allocation, any bytes in (the fuzz target's contract).
  *
- *   rl_http_req_in in = {"GET", "/frame.jpg", "320", NULL, NULL, NULL};
+ *   rl_http_req_in in = {"GET", "/frame.jpg", "320", NULL, NULL, NULL, NULL, "127.0.0.1:8080", NULL};
  *   rl_http_req r;
  *   if (rl_http_req_judge(&in, "", &r) == 200)
  *       use(r.route, r.width);          // RL_ROUTE_FRAME, 320
@@ -34,6 +37,9 @@ typedef struct {
     const char *w, *seq;          /* query arguments */
     const char *token;            /* ?token= */
     const char *auth;             /* the Authorization or X-Ringloc-Token header */
+    const char *cookie;           /* the ringloc_token cookie's value */
+    const char *host;             /* the Host header (NULL: refused, 400) */
+    const char *self;             /* this computer's name (gethostname), or NULL */
 } rl_http_req_in;
 
 typedef struct {
@@ -42,12 +48,13 @@ typedef struct {
     long seq;         /* seq (-1: not asked) */
     int status;       /* 200, or the 4xx returned */
     const char *why;  /* a short static reason for a 4xx */
+    int set_cookie;   /* 1: the token came in the URL; answer with the cookie (then the page drops it) */
 } rl_http_req;
 
 /* Judge in against the configured token ("" or NULL: none needed).
- * Returns r->status: 200, 400 (a bad number), 401 (token missing or
- * wrong), 404 (no such path), 405 (not GET or HEAD), 414 (path too
- * long). */
+ * Returns r->status: 200, 401 (token missing or wrong), 400 (no Host, or
+ * a bad number), 421 (a Host that is not this computer), 405 (not GET or
+ * HEAD), 404 (no such path), 414 (path too long). */
 int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *r);
 
 #endif

@@ -152,10 +152,21 @@ static rl_err make_drive_folder(rl_record *r, const char *dir, char *err, size_t
         r->list_fd = open(list, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_APPEND | O_CLOEXEC, 0644);
         if (r->list_fd < 0) {
             snprintf(err, errlen, "%s: %s", list, strerror(errno));
+            (void)rmdir(r->dir);
             return RL_EIO;
         }
     }
     return RL_OK;
+}
+
+/* The drive's folder and its empty frames.txt removed (a start that failed,
+ * or a run that recorded nothing): only what this run made. */
+static void remove_drive(rl_record *r)
+{
+    char list[600];
+    snprintf(list, sizeof list, "%s/frames.txt", r->dir);
+    (void)unlink(list);
+    (void)rmdir(r->dir);
 }
 
 rl_err rl_record_start(rl_record *r, const rl_record_config *c, int w, int h, char *err, size_t errlen)
@@ -179,6 +190,7 @@ rl_err rl_record_start(rl_record *r, const rl_record_config *c, int w, int h, ch
             while (s-- > 0)
                 free(r->buf[s]);
             close(r->list_fd);
+            remove_drive(r);
             snprintf(err, errlen, "%s: out of memory for the recording's buffers", r->dir);
             return RL_ENOMEM;
         }
@@ -188,6 +200,7 @@ rl_err rl_record_start(rl_record *r, const rl_record_config *c, int w, int h, ch
         for (s = 0; s < RL_RECORD_SLOTS; s++)
             free(r->buf[s]);
         close(r->list_fd);
+        remove_drive(r);
         snprintf(err, errlen, "%s: cannot start the recording's writer", r->dir);
         return RL_ENOMEM;
     }
@@ -239,6 +252,7 @@ void rl_record_offer(rl_record *r, const rl_image *img, long index, uint64_t t_u
     r->t_us[slot] = t_us;
     pthread_mutex_lock(&r->lock);
     r->full[slot] = 1;
+    r->kept++;
     pthread_cond_signal(&r->wake);
     pthread_mutex_unlock(&r->lock);
 }
@@ -260,4 +274,6 @@ void rl_record_stop(rl_record *r)
     close(r->list_fd);
     r->list_fd = -1;
     r->running = 0;
+    if (r->saved == 0 && r->list_bytes == 0)
+        remove_drive(r);
 }

@@ -9,7 +9,10 @@
  * O_EXCL | O_NOFOLLOW. When every buffer is still being written, the
  * frame is skipped and counted, never waited for; at max_mb on disk, a
  * full disk or a folder gone recording stops (a partial frame removed)
- * and rl_record_news says so once, while the loop goes on.
+ * and rl_record_news says so once, while the loop goes on. A start that
+ * fails leaves no drive_NNN behind, and a drive that recorded no frame is
+ * removed at the stop (a service restarted every few seconds at boot does
+ * not use up the 999 drives).
  *
  *   rl_record rec;
  *   rl_record_config rc;
@@ -59,6 +62,7 @@ typedef struct {
     int quit, running, stopped; /* stopped: at max_mb, or a write failed (under lock) */
     int write_failed;            /* the writer's own: max_mb reached, or a write failed */
     long offered;
+    long kept;                   /* the loop's: frames handed to the writer (not counted once stopped) */
     /* what happened, read after rl_record_stop */
     long saved, skipped;
     uint64_t bytes;
@@ -83,7 +87,8 @@ void rl_record_offer(rl_record *r, const rl_image *img, long index, uint64_t t_u
  * otherwise. */
 const char *rl_record_news(rl_record *r);
 
-/* Write what is waiting, stop the writer, free the buffers. */
+/* Write what is waiting, stop the writer, free the buffers; a drive with
+ * no frame saved (and an empty frames.txt) is removed. */
 void rl_record_stop(rl_record *r);
 
 #endif

@@ -152,6 +152,7 @@ int rl_view_offer(rl_view *v, const rl_view_obs *o)
     v->loop.seq = s->seq;
     copy_str(s->cam_info, sizeof s->cam_info, o->cam_info);
     copy_str(s->serial, sizeof s->serial, o->serial);
+    copy_str(s->rec_note, sizeof s->rec_note, o->rec_note);
     s->have_pose = o->pose != NULL;
     if (o->frame != NULL) {
         copy_image(s, &o->frame->img);

@@ -72,6 +72,7 @@ typedef struct {
     uint64_t now_us;           /* when the pose or status was sent (rl_clock.h) */
     const char *cam_info;      /* the camera's format, exposure, gain; may be NULL */
     const char *serial;        /* the serial device; may be NULL */
+    const char *rec_note;      /* why recording is off though asked for (cannot start, stopped); may be NULL */
     rl_view_counts counts;
 } rl_view_obs;
 
@@ -99,7 +100,7 @@ typedef struct {
     double landmarks;          /* identified per frame, smoothed */
     long skipped;              /* copies skipped: a reader held the snapshot */
     uint64_t start_us, now_us;
-    char cam_info[256], serial[128];
+    char cam_info[256], serial[128], rec_note[256];
     int n_track;               /* oldest first */
     rl_view_point track[RL_VIEW_TRACK];
 } rl_view_snap;

@@ -162,8 +162,10 @@ static void counters(jbuf *b, const rl_view_snap *s)
     put(b, "}}, ");
     put(b, "\"serial\": {\"up\": %s, ", c->serial_up ? "true" : "false");
     str(b, "device", s->serial);
-    put(b, "}, \"recording\": {\"on\": %s, \"kept\": %ld, \"skipped\": %ld}, ", c->recording ? "true" : "false",
+    put(b, "}, \"recording\": {\"on\": %s, \"kept\": %ld, \"skipped\": %ld, ", c->recording ? "true" : "false",
         c->rec_kept, c->rec_skipped);
+    str(b, "note", s->rec_note);
+    put(b, "}, ");
 }
 
 size_t rl_view_json_status(const rl_view_snap *s, char *buf, size_t cap)

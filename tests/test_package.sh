@@ -69,7 +69,11 @@ if [ "$ARCH" = "$(dpkg --print-architecture)" ] && command -v pkg-config >/dev/n
 fi
 check "configuration names the board's serial device" grep -q "device: $SERIAL" "$T/root/etc/ringloc/ringloc.yaml"
 unit="$T/root/lib/systemd/system/ringloc.service"
-check "unit restarts on failure" grep -qx 'Restart=on-failure' "$unit"
+check "unit restarts whatever the end (SIGHUP's status 0 too)" grep -qx 'Restart=always' "$unit"
+check "unit is Type=notify with a watchdog" sh -c "grep -qx 'Type=notify' '$unit' && grep -qx 'WatchdogSec=10' '$unit'"
+check "the web drop-in orders the service after the network" sh -c \
+    "grep -qx 'After=network-online.target' '$T/root/usr/share/doc/ringloc/ringloc-web.conf' &&
+     grep -qx 'Wants=network-online.target' '$T/root/usr/share/doc/ringloc/ringloc-web.conf'"
 check "unit waits for the serial device" grep -q '^After=.*\.device' "$unit"
 check "unit runs the firmware on the packaged configuration" grep -qx 'ExecStart=/usr/bin/ringloc-fw --config /etc/ringloc/ringloc.yaml' "$unit"
 # the service: an unprivileged user, sandboxed (issue 28)

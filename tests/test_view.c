@@ -149,8 +149,45 @@ static void test_offer_skips_when_held(void **st)
 static int judge(const char *method, const char *url, const char *w, const char *token, const char *auth,
                  rl_http_req *r)
 {
-    rl_http_req_in in = {method, url, w, NULL, token, auth};
+    rl_http_req_in in = {method, url, w, NULL, token, auth, NULL, "127.0.0.1:8080", "ringbot"};
     return rl_http_req_judge(&in, "s3cret", r);
+}
+
+/* The token before anything else, the Host header after it (issue 39). */
+static int judge_host(const char *host, const char *token, const char *cookie, const char *url, rl_http_req *r)
+{
+    rl_http_req_in in = {"GET", url, NULL, NULL, token, NULL, cookie, host, "ringbot"};
+    return rl_http_req_judge(&in, "s3cret", r);
+}
+
+static void test_request_order_host(void **st)
+{
+    rl_http_req r;
+    (void)st;
+    /* nothing answered before the token: not a 404, 405 or 421 */
+    assert_int_equal(judge("GET", "/nothing-here", NULL, NULL, NULL, &r), 401);
+    assert_int_equal(judge("POST", "/", NULL, "wrong", NULL, &r), 401);
+    assert_int_equal(judge_host("evil.example:8080", NULL, NULL, "/", &r), 401);
+    /* the token in the URL asks for the cookie; the cookie alone is enough */
+    assert_int_equal(judge_host("127.0.0.1:8080", "s3cret", NULL, "/", &r), 200);
+    assert_int_equal(r.set_cookie, 1);
+    assert_int_equal(judge_host("127.0.0.1:8080", NULL, "s3cret", "/status.json", &r), 200);
+    assert_int_equal(r.set_cookie, 0);
+    assert_int_equal(judge_host("127.0.0.1:8080", NULL, "s3cre", "/status.json", &r), 401);
+    /* Host: addresses, localhost, the computer's own name; a rebinding name is not */
+    {
+        static const struct {
+            const char *host;
+            int status;
+        } hosts[] = {{"evil.example:8080", 421}, {"evil.example", 421},     {"ringbot.evil.example", 421},
+                     {"1.2.3.4.evil.example", 421}, {"127.0.0.1:80x", 421}, {"", 421},
+                     {NULL, 400},                {"192.168.1.20", 200},     {"[fe80::1]:8080", 200},
+                     {"LocalHost:8080", 200},    {"ringbot", 200},          {"RingBot.local:8080", 200},
+                     {"ringbot.localx", 421}};
+        size_t k;
+        for (k = 0; k < sizeof hosts / sizeof hosts[0]; k++)
+            assert_int_equal(judge_host(hosts[k].host, NULL, "s3cret", "/", &r), hosts[k].status);
+    }
 }
 
 static void test_request_judge(void **st)
@@ -173,13 +210,14 @@ static void test_request_judge(void **st)
     assert_int_equal(judge("GET", "/frame.jpg", "8193", "s3cret", NULL, &r), 400);
     assert_int_equal(judge("GET", "/frame.jpg", "3e2", "s3cret", NULL, &r), 400);
     assert_int_equal(judge("GET", "/frame.jpg", "", "s3cret", NULL, &r), 400);
-    assert_int_equal(judge(NULL, NULL, NULL, NULL, NULL, &r), 405);
+    assert_int_equal(judge(NULL, NULL, NULL, NULL, NULL, &r), 401); /* the token first */
+    assert_int_equal(judge(NULL, NULL, NULL, "s3cret", NULL, &r), 405);
     memset(longurl, 'a', sizeof longurl - 1);
     longurl[0] = '/';
     longurl[sizeof longurl - 1] = 0;
     assert_int_equal(judge("GET", longurl, NULL, "s3cret", NULL, &r), 414);
     {
-        rl_http_req_in in = {"GET", "/", NULL, NULL, NULL, NULL};
+        rl_http_req_in in = {"GET", "/", NULL, NULL, NULL, NULL, NULL, "localhost", NULL};
         assert_int_equal(rl_http_req_judge(&in, "", &r), 200); /* no token configured */
     }
 }
@@ -330,7 +368,9 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_offer_rate_and_copy), cmocka_unit_test(test_offer_skips_when_held),
-        cmocka_unit_test(test_request_judge),       cmocka_unit_test(test_status_json),
+        cmocka_unit_test(test_request_order_host),
+        cmocka_unit_test(test_request_judge),
+        cmocka_unit_test(test_status_json),
         cmocka_unit_test(test_map_json),            cmocka_unit_test(test_jpeg),
         cmocka_unit_test(test_listen),              cmocka_unit_test(test_runcfg_http),
     };

@@ -7,14 +7,14 @@
      an oversized header, slowloris clients, 100 connections at once, bad
      paths, methods, numbers and tokens, and garbage bytes.
 Every run must send every pose frame, B's and C's equal to A's (all but
-their times), the bad requests must get their 4xx (or be closed), never a
-crash, the server must hold no more than its bound of connections and
-answer again once the attack is over; with
-the pages open, the median latency is within 10% of A's (A run before and
-after B, the slower of the two: CI's cores are shared; from frame 45 on,
-when the browsers, on the same cores in CI but not on a robot, have
-started; measured once more before failing, a neighbour's burst on CI's
-shared cores not being ours). Prints the runs' latencies.
+their times), with no gap in their sequence numbers; the bad requests must
+get their 4xx (or be closed; the token before anything else, a Host that is
+not the robot's refused), never a crash, the server must hold no more than
+its bound of connections from one address while another address is still
+served, and answer again once the attack is over.
+Nothing here depends on the machine's load (issue 39): the latencies of
+the runs are printed as a benchmark (with the pages open against A and
+A2, run before and after B), never asserted.
 
 usage: test_view_hostile.py RINGLOC PATHS_DIR TMPDIR"""
 import os
@@ -28,15 +28,15 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import view_lib as vl  # noqa: E402
 
 FRAMES = 120       # 8 s at 15 frames a second
-SETTLED = 45       # latency is compared from here on: the browsers started (on CI's cores) by then
+SETTLED = 45       # latency is printed from here on: the browsers started (on CI's cores) by then
 ATTACKED = 180     # the attacked run is longer: the attack must end before it does
 TOKEN = "s3cret"
 
 
-def status_of(raw, port, timeout=3.0):
-    """Send raw bytes, return the HTTP status (0: closed without one)."""
+def status_of(raw, port, timeout=3.0, source="127.0.0.1"):
+    """Send raw bytes from source, return the HTTP status (0: closed without one)."""
     try:
-        s = socket.create_connection(("127.0.0.1", port), timeout=timeout)
+        s = socket.create_connection(("127.0.0.1", port), timeout=timeout, source_address=(source, 0))
         s.sendall(raw)
         data = s.recv(256)
         s.close()
@@ -47,11 +47,14 @@ def status_of(raw, port, timeout=3.0):
 
 
 def get(path, extra=b""):
-    return b"GET " + path + b" HTTP/1.1\r\nHost: robot\r\n" + extra + b"Connection: close\r\n\r\n"
+    return b"GET " + path + b" HTTP/1.1\r\nHost: 127.0.0.1\r\n" + extra + b"Connection: close\r\n\r\n"
 
 
 BAD = [  # (what, request, statuses accepted; 0: closed)
     ("no token", get(b"/status.json"), {401}),
+    ("no such page, no token: 401 before 404", get(b"/secret.txt"), {401}),
+    ("POST, no token: 401 before 405", b"POST / HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n", {401}),
+    ("a rebinding name as Host", b"GET /status.json?token=s3cret HTTP/1.1\r\nHost: evil.example:80\r\n\r\n", {421}),
     ("wrong token", get(b"/status.json?token=s3cre"), {401}),
     ("wrong bearer", get(b"/frame.jpg", b"Authorization: Bearer nope\r\n"), {401}),
     ("path escape", get(b"/../../etc/passwd?token=" + TOKEN.encode()), {400, 404}),
@@ -61,10 +64,10 @@ BAD = [  # (what, request, statuses accepted; 0: closed)
     ("huge width", get(b"/frame.jpg?w=99999999999&token=" + TOKEN.encode()), {400}),
     ("tiny width", get(b"/frame.jpg?w=3&token=" + TOKEN.encode()), {400}),
     ("bad seq", get(b"/frame.jpg?seq=-1&token=" + TOKEN.encode()), {400}),
-    ("POST", b"POST /status.json?token=s3cret HTTP/1.1\r\nHost: r\r\nContent-Length: 5\r\n\r\nhello", {405}),
-    ("DELETE", b"DELETE /?token=s3cret HTTP/1.1\r\nHost: r\r\n\r\n", {405}),
+    ("POST", b"POST /status.json?token=s3cret HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: 5\r\n\r\nhello", {405}),
+    ("DELETE", b"DELETE /?token=s3cret HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n", {405}),
     ("garbage", b"\x00\xff\xfe garbage \r\n\r\n", {0, 400}),
-    ("HTTP/9", b"GET / HTTP/9.9\r\nHost: r\r\n\r\n", {0, 400, 505}),
+    ("HTTP/9", b"GET / HTTP/9.9\r\nHost: 127.0.0.1\r\n\r\n", {0, 400, 505}),
     ("oversized header", get(b"/?token=s3cret", b"X-Big: " + b"a" * 200000 + b"\r\n"), {0, 413, 431}),
 ]
 GOOD = [
@@ -79,7 +82,7 @@ def slowloris(port, n, stop):
     for _ in range(n):
         try:
             s = socket.create_connection(("127.0.0.1", port), timeout=2)
-            s.sendall(b"GET /status.json HTTP/1.1\r\nHost: r\r\n")
+            s.sendall(b"GET /status.json HTTP/1.1\r\nHost: 127.0.0.1\r\n")
             socks.append(s)
         except OSError:
             pass
@@ -129,9 +132,11 @@ def attack(port, fw, ck):
     threads = [threading.Thread(target=slowloris, args=(port, 20, stop)),
                threading.Thread(target=flood, args=(port, 100, flooded))]
     threads[0].start()
-    time.sleep(0.5)  # 20 slowloris clients: more than the server's 16 at once
+    time.sleep(0.5)  # 20 slowloris clients: more than one address may hold (8)
     got = status_of(GOOD[0][1], port, 1.0)
-    ck.check(got == 0, "with every connection taken, one more was answered %d: no bound on clients" % got)
+    ck.check(got == 0, "with its 8 connections taken, one more from 127.0.0.1 was answered %d: no bound" % got)
+    got = status_of(GOOD[0][1], port, 3.0, "127.0.0.2")
+    ck.check(got == 200, "the slowloris clients of 127.0.0.1 kept 127.0.0.2 out (answered %d)" % got)
     threads[1].start()
     threads[1].join()
     stop.set()
@@ -190,13 +195,6 @@ def latencies(got):
     return (statistics.mean(late), statistics.median(late)) if late else (0.0, 0.0)
 
 
-def latency_ok(runs):
-    """The median, 10% and the latency field's resolution, against the
-    slower of the runs without: CI's cores are shared."""
-    lat = {tag: latencies(got) for tag, got in runs.items()}
-    return lat["B"][1] <= 1.10 * max(lat["A"][1], lat["A2"][1]) + 0.2, lat
-
-
 def main():
     ringloc, paths_dir, tmp = sys.argv[1:4]
     vl.browser_or_skip()
@@ -204,14 +202,7 @@ def main():
     names = vl.frames_of(paths_dir)
     ck = vl.Checks()
     runs, updates = measure(ringloc, tmp, paths_dir, names)
-    ok, lat = latency_ok(runs)
-    if not ok:  # once more: a neighbour's burst on CI's shared cores is not ours
-        print("latency with two pages open %.2f ms, without %.2f/%.2f ms (median): measuring again"
-              % (lat["B"][1], lat["A"][1], lat["A2"][1]))
-        runs, updates = measure(ringloc, tmp, paths_dir, names)
-        ok, lat = latency_ok(runs)
-    ck.check(ok, "latency with two pages open %.2f ms, without %.2f/%.2f ms (median)"
-             % (lat["B"][1], lat["A"][1], lat["A2"][1]))
+    lat = {tag: latencies(got) for tag, got in runs.items()}
     port = vl.free_port()
     cfg_c = vl.write_config(tmp, paths_dir, names, "C.bin")
     with open(cfg_c, "a") as f:
@@ -225,10 +216,13 @@ def main():
         poses = [p for p in got if p["type"] == "pose"]
         ck.check(len(poses) == n and len(got) == n, "run %s: %d pose frames (%d frames in all) for %d frames"
                  % (tag, len(poses), len(got), n))
+        seqs = [p.get("seq") for p in got]
+        gaps = [i for i in range(1, len(seqs)) if seqs[i] != (seqs[i - 1] + 1) % 65536]
+        ck.check(not gaps, "run %s: sequence numbers jump at frames %s" % (tag, gaps[:5]))
         if tag != "A":
             same = sum(vl.same_pose(a, b) for a, b in zip(runs["A"], got[:FRAMES]))
             ck.check(same == FRAMES, "run %s: %d of %d pose frames equal to those without the view" % (tag, same, FRAMES))
-    print("pose frames: A %d, A2 %d, B %d, C %d; latency mean/median A %.2f/%.2f ms, A2 %.2f/%.2f ms, "
+    print("benchmark (not asserted): pose frames: A %d, A2 %d, B %d, C %d; latency mean/median A %.2f/%.2f ms, A2 %.2f/%.2f ms, "
           "B (two pages open) %.2f/%.2f ms, C (attacked) %.2f/%.2f ms; pages drew %s frames; "
           "flood: %d connections, %d answered 200"
           % (len(runs["A"]), len(runs["A2"]), len(runs["B"]), len(runs["C"]), lat["A"][0], lat["A"][1], lat["A2"][0],

@@ -7,7 +7,9 @@ every landmark id the page drew sits within 2 px of where the renderer put
 that landmark (and a marker is on the canvas there), every landmark wholly
 in view was drawn, the page's pose is within 1 cm of the pose frame of the
 same capture time (and of the truth), the counters are shown, and the
-image updates at least twice a second. A screenshot is kept.
+image updates at least twice a second; the page is opened with ?token=
+once and works on from the cookie, the token gone from its address. A
+screenshot is kept.
 
 usage: test_view_page.py RINGLOC PATHS_DIR TMPDIR"""
 import math
@@ -19,6 +21,7 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import view_lib as vl  # noqa: E402
 
+TOKEN = "page-t0ken"
 SAMPLE_JS = """
 const v = window.rlView, c = document.getElementById("cam"), g = c.getContext("2d");
 const marks = v.labels.map(l => {
@@ -99,23 +102,26 @@ def main():
         os.remove(tty)
     cfg = vl.write_config(tmp, paths_dir, names, tty)
     port = vl.free_port()
+    with open(cfg, "a") as f:  # with a token: given once in the address, then a cookie (issue 39)
+        f.write("http: {listen: 127.0.0.1:%d, token: %s}\n" % (port, TOKEN))
     mon = subprocess.Popen([ringloc, "monitor", "--pty", tty], stdout=open(os.path.join(tmp, "poses.jsonl"), "w"),
                            stderr=open(os.path.join(tmp, "monitor.err"), "w"))
     for _ in range(50):
         if os.path.islink(tty):
             break
         time.sleep(0.1)
-    fw = vl.start_firmware(ringloc, cfg, tmp, 30 * vl.RATE, "127.0.0.1:%d" % port)  # ended once sampled
+    fw = vl.start_firmware(ringloc, cfg, tmp, 30 * vl.RATE)  # ended once sampled
     drv = None
     ck = vl.Checks()
     try:
         vl.wait_http(port, fw)
         drv = vl.chromium()
-        drv.get("http://127.0.0.1:%d/" % port)
+        drv.get("http://127.0.0.1:%d/?token=%s" % (port, TOKEN))
         end = time.time() + 15
         while time.time() < end and not drv.execute_script("return window.rlView && window.rlView.updates > 1"):
             time.sleep(0.1)
         samples = sample_page(drv, 4.0)
+        address = drv.current_url
         drv.save_screenshot(os.path.join(tmp, "view.png"))
     finally:
         if drv:
@@ -128,6 +134,7 @@ def main():
             mon.kill()
     poses = [__import__("json").loads(x) for x in open(os.path.join(tmp, "poses.jsonl")) if x.strip()]
     ck.check(len(samples) >= 5 and samples[-1]["updates"] > 1, "the page never showed a frame")
+    ck.check(TOKEN not in address, "the token stayed in the address bar: %s" % address)
     if ck.failed:
         return ck.done()
     first, last = samples[0], samples[-1]

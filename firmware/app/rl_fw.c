@@ -6,7 +6,8 @@
 #include "rl_fw.h"
 
 #include "rl_cli.h"
-#include "rl_fw_http.h"
+#include "rl_fw_side.h"
+#include "rl_notify.h"
 #include "rl_listen.h"
 #include "rl_packet_sink.h"
 #include "rl_record.h"
@@ -32,9 +33,15 @@ static const char *run_help =
     "               or playing back; at most record.max_mb (1000) on disk\n"
     "  --http ADDR:PORT  a live web view: the camera image with the landmarks found,\n"
     "               the map, the pose and the counters (read-only; http.token in\n"
-    "               the file asks for a token)\n"
+    "               the file asks for a token; on an address beyond 127.0.0.1 and\n"
+    "               ::1 without one, a token is made for the run and printed)\n"
     "  --probe      list what the configured camera offers (formats, sizes,\n"
-    "               controls) and exit\n";
+    "               controls) and exit\n\n"
+    "Recording and the web view never stop the pose frames: one that cannot start\n"
+    "(a port taken, an address not there yet, a read-only or full folder) is said\n"
+    "in one line and tried again every 5 s. Under systemd (Type=notify) the\n"
+    "firmware says READY=1 and pings the watchdog while frames are recognized.\n"
+    "See docs/service.md.\n";
 
 typedef struct {
     rl_serial s;
@@ -151,33 +158,22 @@ static int prepare_site(const char *C, fw_setup *s)
     return 1;
 }
 
-/* What watches the loop besides the serial line: the recorder and the
- * web view. They see every report whether or not the line is up (a drive
- * recorded with the robot's serial cable out is still recorded). */
+/* What watches the loop besides the serial line: the side features and
+ * systemd's watchdog, pinged for frames recognized only. */
 typedef struct {
-    rl_record rec;
-    const char *prefix;
-    int on;            /* recording */
-    rl_run_view *view; /* the web view's side, or NULL */
+    rl_fw_side *side;
+    rl_notify notify;
 } fw_watch;
 
-/* Each recognized frame offered to the recorder (when recording stopped,
- * for a full disk, the folder gone or max_mb, the log says so then,
- * once), then the report to the web view. */
 static void fw_observe(void *ctx, const rl_run_report *rep)
 {
-    fw_watch *fw = (fw_watch *)ctx;
-    const char *news;
-    if (fw->on && rep->frame != NULL) {
-        rl_record_offer(&fw->rec, &rep->frame->img, rep->frame->index, rep->frame->t_us);
-        if ((news = rl_record_news(&fw->rec)) != NULL)
-            log_line((void *)fw->prefix, news);
-    }
-    if (fw->view != NULL)
-        rl_run_view_report(fw->view, rep);
+    fw_watch *w = (fw_watch *)ctx;
+    rl_fw_side_observe(w->side, rep);
+    if (rep->event == RL_RUN_FRAME)
+        rl_notify_alive(&w->notify, rep->sent_us);
 }
 
-static void wire_io(const fw_setup *s, out_ctx *octx, rl_packet_sink *ps, fw_watch *fw, rl_run_camera *cam,
+static void wire_io(const fw_setup *s, out_ctx *octx, rl_packet_sink *ps, fw_watch *watch, rl_run_camera *cam,
                     const char *prefix, rl_run_io *io)
 {
     rl_packet_line line;
@@ -189,12 +185,11 @@ static void wire_io(const fw_setup *s, out_ctx *octx, rl_packet_sink *ps, fw_wat
     line.close = out_close;
     line.why = out_why;
     line.ctx = octx;
-    fw->prefix = prefix;
     memset(io, 0, sizeof *io);
     io->source = rl_run_camera_source(cam, &s->cam);
     io->sink = rl_packet_sink_make(ps, &line);
     io->observe = fw_observe;
-    io->observe_ctx = fw;
+    io->observe_ctx = watch;
     io->clock = rl_clock_system();
     io->log = log_line;
     io->log_ctx = (void *)prefix;
@@ -277,58 +272,23 @@ static int probe_camera(const char *C, const char *config)
     return 0;
 }
 
-/* --record DIR, or record.dir: recording starts; 0 and one error line
- * when it cannot. */
-static int start_recording(const char *C, fw_setup *s, const char *record, fw_watch *fw)
+/* Recording (--record DIR, or record.dir) and the web view (--http
+ * ADDR:PORT, or http.listen) asked for: each tried now, and again from
+ * the loop while it cannot start; neither stops the pose frames. */
+static void start_side(fw_setup *s, const char *record, const char *http, rl_fw_side *side)
 {
-    rl_record_config rcc;
-    char err[512];
     if (record != NULL)
         snprintf(s->cfg.record_dir, sizeof s->cfg.record_dir, "%s", record);
-    if (!s->cfg.record_dir[0])
-        return 1;
-    rl_record_defaults(&rcc);
-    rcc.dir = s->cfg.record_dir;
-    rcc.every = s->cfg.record_every;
-    rcc.max_mb = s->cfg.record_max_mb;
-    if (rl_record_start(&fw->rec, &rcc, s->site.calib.width, s->site.calib.height, err, sizeof err) != RL_OK)
-        return !rl_cli_fail(C, RL_EXIT_FAIL, "record: %s", err);
-    fprintf(stderr, "%s: recording one frame in %d to %s\n", fw->prefix, fw->rec.every, fw->rec.dir);
-    fw->on = 1;
-    return 1;
-}
-
-static void stop_recording(fw_watch *fw)
-{
-    const char *news;
-    if (!fw->on)
-        return;
-    rl_record_stop(&fw->rec);
-    /* a stop the writer met after the last frame is logged now */
-    if ((news = rl_record_news(&fw->rec)) != NULL)
-        log_line((void *)fw->prefix, news);
-    fprintf(stderr, "%s: recorded %ld frames (%.1f MB) to %s, %ld skipped while the disk was behind%s%s\n",
-            fw->prefix, fw->rec.saved, fw->rec.bytes / 1e6, fw->rec.dir, fw->rec.skipped,
-            fw->rec.error[0] ? "; " : "", fw->rec.error);
-}
-
-/* --http ADDR:PORT, or http.listen: the web view started, observing the
- * loop; 0 and one error line when it cannot. */
-static int start_web(const char *C, fw_setup *s, const char *http, const rl_runner *runner, fw_watch *fw,
-                     rl_fw_http *web)
-{
-    char err[512];
     if (http != NULL)
         snprintf(s->cfg.http_listen, sizeof s->cfg.http_listen, "%s", http);
-    if (!s->cfg.http_listen[0])
-        return 1;
-    if (rl_fw_http_start(web, s->cfg.http_listen, s->cfg.http_token, s->site.calib.width, s->site.calib.height,
-                         &s->site.map, runner, s->cfg.serial, fw->on ? &fw->rec : NULL, err, sizeof err) != RL_OK)
-        return !rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
-    fprintf(stderr, "%s: web view on http://%s/%s\n", fw->prefix, s->cfg.http_listen,
-            s->cfg.http_token[0] ? " (token required)" : "");
-    fw->view = &web->rv;
-    return 1;
+    side->rcc.dir = s->cfg.record_dir;
+    side->rcc.every = s->cfg.record_every;
+    side->rcc.max_mb = s->cfg.record_max_mb;
+    side->listen = s->cfg.http_listen;
+    side->token = s->cfg.http_token;
+    side->map = &s->site.map;
+    side->serial = s->cfg.serial;
+    rl_fw_side_start(side, rl_clock_now_us());
 }
 
 /* The loop's settings from the configuration. */
@@ -356,12 +316,12 @@ int rl_fw_main(const char *C, int argc, char **argv)
     static rl_runner runner;
     static out_ctx octx;
     static rl_packet_sink ps;
-    static fw_watch fw;
+    static rl_fw_side side;
+    static fw_watch watch;
     static rl_run_camera cam;
     static char prefix[128];
     rl_run_io io;
     rl_run_config rc;
-    static rl_fw_http web;
     const char *config = NULL, *record = NULL, *http = NULL;
     long max_frames = 0;
     int code, done, probe = 0;
@@ -374,12 +334,10 @@ int rl_fw_main(const char *C, int argc, char **argv)
     /* start-up: everything that can fail in configuration fails here, once */
     if (!load_setup(C, config, &s) || !prepare_site(C, &s))
         return RL_EXIT_FAIL;
-    wire_io(&s, &octx, &ps, &fw, &cam, prefix, &io);
-    if (!start_recording(C, &s, record, &fw) || !start_web(C, &s, http, &runner, &fw, &web)) {
-        stop_recording(&fw);
-        rl_site_free(&s.site);
-        return RL_EXIT_FAIL;
-    }
+    rl_fw_side_init(&side, prefix, &runner, s.site.calib.width, s.site.calib.height);
+    watch.side = &side;
+    wire_io(&s, &octx, &ps, &watch, &cam, prefix, &io);
+    start_side(&s, record, http, &side);
     run_config(&s.cfg, &rc);
     rl_run_init(&runner, &rc, &io, &s.site, &res);
     /* a closed terminal or a service reload: stop with the summary; a
@@ -388,10 +346,15 @@ int rl_fw_main(const char *C, int argc, char **argv)
     fprintf(stderr, "%s: %s camera %s, %d landmarks in %s%s, poses to %s at %d baud\n", prefix,
             s.cfg.cam_backend, s.cfg.cam_device, s.site.map.count, s.cfg.map,
             s.site.place.pl ? " (ids repeat: places found from constellations)" : "", s.cfg.serial, s.cfg.baud);
+    /* under systemd (Type=notify): ready once everything that can stop
+     * the start is behind */
+    rl_notify_open(&watch.notify);
+    rl_notify_send(&watch.notify, "READY=1");
     run_loop(&runner, max_frames);
+    rl_notify_send(&watch.notify, "STOPPING=1");
     print_summary(prefix, rl_run_counts_of(&runner), &octx);
-    rl_fw_http_stop(&web, prefix);
-    stop_recording(&fw);
+    rl_fw_side_stop(&side);
+    rl_notify_close(&watch.notify);
     if (s.site.place.pl)
         fprintf(stderr, "%s: %ld poses tracked from the last one, %ld frames ambiguous\n", prefix,
                 rl_run_counts_of(&runner)->tracked, rl_run_counts_of(&runner)->ambiguous);

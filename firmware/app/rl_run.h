@@ -20,7 +20,7 @@
  *   static rl_runner runner;
  *   static rl_result result;
  *   static rl_site site;            // loaded and prepared (rl_site.h)
- *   rl_run_camera camera;
+ *   rl_run_camera camera;           // rl_run_camera.h
  *   rl_cam_config cc;
  *   rl_run_config cfg;
  *   rl_run_io io;
@@ -59,13 +59,6 @@ typedef struct {
     const char *(*info)(void *ctx);  /* what was opened (format, size), or "" */
     void *ctx;
 } rl_run_source;
-
-/* The camera (rl_cam: PNG files, V4L2, libcamera) as a source. */
-typedef struct {
-    rl_cam cam;
-    rl_cam_config cc;
-} rl_run_camera;
-rl_run_source rl_run_camera_source(rl_run_camera *rc, const rl_cam_config *cc);
 
 typedef enum {
     RL_RUN_FRAME,     /* a frame recognized (and localized when the site can) */
@@ -180,5 +173,8 @@ void rl_run_start_at(rl_runner *r, const rl_pose *pose, uint64_t t_us);
 
 /* Close what is open. */
 void rl_run_close(rl_runner *r);
+
+/* the camera as a source (its own module; included here for the loop's users) */
+#include "rl_run_camera.h"
 
 #endif

@@ -28,9 +28,11 @@ static void counts(const rl_runner *r, const rl_record *rec, rl_view_counts *c)
     c->local_used = n->local_used;
     c->serial_up = r->sink_up;
     /* the recorder's loop-side counts only (its writer's are its own) */
-    c->recording = rec != NULL;
+    /* off once the loop was told it stopped (a full disk, max_mb): the
+     * counts then stay as they were */
+    c->recording = rec != NULL && rec->running && !rec->told;
     if (rec != NULL) {
-        c->rec_kept = rec->every > 0 ? rec->offered / rec->every - rec->skipped : 0;
+        c->rec_kept = rec->kept;
         c->rec_skipped = rec->skipped;
     }
 }
@@ -51,6 +53,7 @@ void rl_run_view_report(void *ctx, const rl_run_report *rep)
     o.now_us = rep->sent_us;
     o.cam_info = r->io.source.info != NULL ? r->io.source.info(r->io.source.ctx) : NULL;
     o.serial = rv->serial;
+    o.rec_note = rv->rec_note;
     counts(r, rv->rec, &o.counts);
     (void)rl_view_offer(rv->view, &o);
 }

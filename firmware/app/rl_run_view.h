@@ -26,7 +26,8 @@ typedef struct {
     rl_view *view;
     const rl_runner *runner;
     const char *serial;       /* the serial device's name */
-    const rl_record *rec;     /* NULL: not recording */
+    const rl_record *rec;     /* NULL: not recording; else on while running and not stopped */
+    const char *rec_note;     /* why recording is off though asked for, or ""; NULL: none (set after init) */
 } rl_run_view;
 
 void rl_run_view_init(rl_run_view *rv, rl_view *view, const rl_runner *runner, const char *serial,

@@ -1,5 +1,5 @@
 /* The web view's request handling on arbitrary bytes: a request's method,
- * path, query numbers, token and header (fields split at newlines, a
+ * path, query numbers, token, header, cookie and Host (fields split at newlines, a
  * field of one byte 0x01 standing for "absent") judged against a token;
  * its answer must be one of the documented codes, a 200 a real route with
  * numbers in range. The rest of the input fills a snapshot (any doubles:
@@ -11,7 +11,7 @@
 #include "rl_http_req.h"
 #include "rl_view_json.h"
 
-#define FIELDS 6
+#define FIELDS 8
 
 static int split(const uint8_t **p, size_t *n, char fields[FIELDS][96], const char *out[FIELDS])
 {
@@ -33,7 +33,7 @@ static int split(const uint8_t **p, size_t *n, char fields[FIELDS][96], const ch
 
 static void judge(const char *f[FIELDS])
 {
-    rl_http_req_in in = {f[0], f[1], f[2], f[3], f[4], f[5]};
+    rl_http_req_in in = {f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], "ringbot"};
     rl_http_req r;
     int s = rl_http_req_judge(&in, "secret", &r);
     if (s != r.status || r.why == NULL)
@@ -41,7 +41,7 @@ static void judge(const char *f[FIELDS])
     if (s == 200) {
         if (r.route == RL_ROUTE_NONE || (r.width != 0 && (r.width < 16 || r.width > 8192)))
             abort();
-    } else if (s != 400 && s != 401 && s != 404 && s != 405 && s != 414) {
+    } else if (s != 400 && s != 401 && s != 404 && s != 405 && s != 414 && s != 421) {
         abort();
     }
 }
