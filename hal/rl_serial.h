@@ -1,7 +1,11 @@
 /* rl_serial: where a pose leaves: a serial line (POSIX termios, raw 8N1),
- * or, on the host, a file or standard output ("-"). A pseudo-terminal
+ * or, on the host, a new file or standard output ("-"). A pseudo-terminal
  * works as a serial device. Nothing is ever created in /dev: a device
- * that is not there is RL_ENOTFOUND, for the caller to retry.
+ * that is not there is RL_ENOTFOUND, for the caller to retry. Nothing is
+ * written into a file the run did not create: an existing regular file is
+ * refused, and a symbolic link (/dev/serial0, a pty monitor's link) is
+ * followed only to a character device, which is opened with O_NOFOLLOW
+ * and checked on the open descriptor.
  *
  *   rl_serial s;
  *   char err[256];
@@ -32,14 +36,17 @@ typedef struct {
 int rl_serial_baud_ok(int baud);
 
 /* rl_serial_open flags: a path outside /dev that does not exist is
- * created as a file to record into (a first open; a reopen after a
- * failure must find what was there). */
+ * created as a file to record into (a first open; an existing file is
+ * refused then). Without it (a reopen after a failure) the file the first
+ * open created is appended to, and a missing one is RL_ENOTFOUND. */
 #define RL_SERIAL_MAY_CREATE 1u
 
-/* Open path: "-" (standard output), a character device (a serial line or
- * a pty: raw 8N1 at baud), or a regular file outside /dev (appended to).
- * RL_ENOTFOUND when the device, the file or a link's target is not
- * there; RL_EINVAL for an unsupported baud rate. */
+/* Open path: "-" (standard output), a character device or a link to one
+ * (a serial line or a pty: raw 8N1 at baud), or a regular file outside
+ * /dev (see the flags). RL_ENOTFOUND when the device, the file or a
+ * link's target is not there; RL_ENODEV for anything else there (an
+ * existing file at a first open, a link to a file, a FIFO), err naming
+ * path; RL_EINVAL for an unsupported baud rate. */
 RL_CHECK rl_err rl_serial_open(rl_serial *s, const char *path, int baud, unsigned flags, char *err,
                                size_t errlen);
 

@@ -13,12 +13,13 @@
 #include "rl_cli.h"
 #include "rl_cmd.h"
 #include "rl_packet.h"
+#include "rl_ptylink.h"
 #include "rl_serial.h"
 #include "rl_stop.h"
 
 static const char *monitor_help =
     "usage: ringloc monitor [--baud 115200] [--follow] DEVICE|FILE\n"
-    "       ringloc monitor --pty LINK\n\n"
+    "       ringloc monitor --pty LINK [--force]\n\n"
     "Decode ringloc's pose and status frames (ARCOS framing) from a serial device or\n"
     "a recorded file and print one JSON line per frame:\n"
     "  {\"type\": \"pose\", \"version\": 2, \"seq\": 7, \"time_ms\": 123456, \"x\": 1.203,\n"
@@ -34,7 +35,10 @@ static const char *monitor_help =
     "Garbage and damaged frames are skipped (counted on exit).\n\n"
     "  --pty LINK   create a pseudo-terminal, make LINK point to its device (give\n"
     "               LINK to 'ringloc run' as serial.device), and decode what comes;\n"
-    "               ends when the writer closes it\n"
+    "               ends when the writer closes it. LINK may be new, or a link a\n"
+    "               monitor left to a pseudo-terminal that is gone; anything else\n"
+    "               there is refused (kept)\n"
+    "  --force      with --pty: replace whatever LINK is (not a folder)\n"
     "  --follow     keep reading a file as it grows\n";
 
 /* The fields a well-formed frame cannot hold (a yaw beyond pi, a flag or
@@ -97,17 +101,13 @@ typedef struct {
 } monitor_src;
 
 /* --pty LINK: a pseudo-terminal, LINK pointing at it. */
-static int open_pty(const char *C, const char *link_path, monitor_src *in)
+static int open_pty(const char *C, const char *link_path, int force, rl_ptylink *pty, monitor_src *in)
 {
-    const char *name;
-    int fd = posix_openpt(O_RDWR | O_NOCTTY);
-    if (fd < 0 || grantpt(fd) != 0 || unlockpt(fd) != 0 || (name = ptsname(fd)) == NULL)
-        return rl_cli_fail(C, RL_EXIT_FAIL, "cannot create a pseudo-terminal: %s", strerror(errno));
-    unlink(link_path);
-    if (symlink(name, link_path) != 0)
-        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: %s", link_path, strerror(errno));
-    fprintf(stderr, "ringloc monitor: listening on %s (-> %s)\n", link_path, name);
-    in->fd = fd;
+    char err[600];
+    if (rl_ptylink_open(pty, link_path, force, 0, err, sizeof err) != RL_OK)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    fprintf(stderr, "ringloc monitor: listening on %s (-> %s)\n", link_path, pty->name);
+    in->fd = pty->fd;
     in->name = link_path;
     in->is_pty = 1;
     return 0;
@@ -161,6 +161,8 @@ static int monitor_loop(const char *C, const monitor_src *in, rl_decoder *d, uns
                     print_msg(&m);
                     (*frames)++;
                 }
+            if (ferror(stdout))
+                return 0; /* the output is gone: the exit status says so (rl_cli_finish) */
             continue;
         }
         if (n < 0 && errno == EINTR)
@@ -188,12 +190,14 @@ int rl_cmd_monitor(int argc, char **argv)
     static const struct option opts[] = {{"pty", required_argument, 0, 'p'},
                                          {"baud", required_argument, 0, 'b'},
                                          {"follow", no_argument, 0, 'f'},
+                                         {"force", no_argument, 0, 'F'},
                                          {"help", no_argument, 0, 'h'},
                                          {0, 0, 0, 0}};
     const char *C = "monitor", *link_path = NULL;
-    int c, r, follow = 0, baud = 115200;
+    int c, r, follow = 0, force = 0, baud = 115200;
     unsigned long frames = 0;
     monitor_src in;
+    rl_ptylink pty;
     rl_decoder d;
 
     optind = 1;
@@ -208,6 +212,7 @@ int rl_cmd_monitor(int argc, char **argv)
                                    "(9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600)", baud);
             break;
         case 'f': follow = 1; break;
+        case 'F': force = 1; break;
         case 'h': fputs(monitor_help, stdout); return 0;
         default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
@@ -217,15 +222,18 @@ int rl_cmd_monitor(int argc, char **argv)
     rl_stop_on_signals(0);
     memset(&in, 0, sizeof in);
     in.follow = follow;
-    if ((r = link_path ? open_pty(C, link_path, &in) : open_file(C, argv[optind], &in)) != 0)
+    if (force && link_path == NULL)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--force goes with --pty LINK");
+    if ((r = link_path ? open_pty(C, link_path, force, &pty, &in) : open_file(C, argv[optind], &in)) != 0)
         return r;
     rl_decoder_init(&d);
     r = monitor_loop(C, &in, &d, &frames);
-    close(in.fd);
+    if (link_path)
+        rl_ptylink_close(&pty);
+    else
+        close(in.fd);
     if (r != 0)
         return r;
-    if (link_path)
-        unlink(link_path);
     fprintf(stderr, "ringloc monitor: %lu frames decoded, %lu rejected\n", frames, d.bad);
     return 0;
 }

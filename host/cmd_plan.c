@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "rl_cli.h"
 #include "rl_cmd.h"
 #include "rl_mapfile.h"
@@ -20,9 +21,10 @@ static const char *plan_help =
     "                    (--distance M | --ceiling-height H --camera-height Z)\n"
     "                    [--min-ring-px 2] [--paper a4]\n"
     "                    [--grid COLSxROWS --pitch P [--map-out map.yaml] [--pdf FILE]]\n"
+    "                    [--force]\n"
     "       ringloc plan --area WxH --pitch P (camera options) --ceiling-height H --camera-height Z\n"
     "                    [--family ring5] [--hamming 2] [--min-view 3] [--seed S]\n"
-    "                    [--map-out map.yaml] [--pdf FILE]\n\n"
+    "                    [--map-out map.yaml] [--pdf FILE] [--force]\n\n"
     "The paper's design method as a calculator: recommends the family, the printed\n"
     "diameter and a grid pitch that keeps two whole landmarks in view anywhere,\n"
     "and prints the expected pixel size of every ring. With --grid it writes a map\n"
@@ -38,7 +40,10 @@ static const char *plan_help =
     "  --paper NAME         largest printable size: a4, letter, a3, tabloid (default a4)\n"
     "  --diameter M         use this diameter instead of the recommended one\n"
     "  --grid CxR --pitch P lay out C columns and R rows P metres apart\n"
-    "  --map-out FILE       map YAML to write with --grid (default map.yaml)\n"
+    "  --map-out FILE       map YAML to write with --grid or --area (default map.yaml,\n"
+    "                       which is not replaced when there already: name it, or\n"
+    "                       give --force)\n"
+    "  --force              replace an existing map.yaml without --map-out\n"
     "  --pdf FILE           the map's landmarks, a page each, with --grid or --area\n\n"
     "With --area it lays a grid of --pitch over a W x H metre site and gives it ids\n"
     "from one small family, repeated, so that every view the camera can have with\n"
@@ -67,6 +72,7 @@ typedef struct {
     int hamming;                  /* 1, or 2: even-parity ids only */
     int min_view;                 /* 0: not given (3) */
     unsigned long seed;           /* 0: not given (1) */
+    int force;                    /* --force: the default map.yaml may be replaced */
 } plan_opts;
 
 static void plan_opts_defaults(plan_opts *o)
@@ -106,6 +112,7 @@ static int plan_option(const char *C, int c, const char *arg, plan_opts *o)
     case 'P': ok = rl_cli_double(C, "--pitch", arg, 0.01, 100, &o->pitch); break;
     case 'o': o->map_out = arg; break;
     case 'F': o->pdf = arg; break;
+    case 'W': o->force = 1; break;
     case 'D': ok = rl_cli_double(C, "--diameter", arg, 0.001, 5, &o->diameter); break;
     case 'A': return parse_area(C, arg, o);
     case 'y': o->family = arg; break;
@@ -133,7 +140,7 @@ static int plan_args(const char *C, int argc, char **argv, plan_opts *o)
         {"pdf", required_argument, 0, 'F'},        {"diameter", required_argument, 0, 'D'},
         {"area", required_argument, 0, 'A'},       {"family", required_argument, 0, 'y'},
         {"hamming", required_argument, 0, 'M'},    {"min-view", required_argument, 0, 'K'},
-        {"seed", required_argument, 0, 'S'},
+        {"seed", required_argument, 0, 'S'},       {"force", no_argument, 0, 'W'},
         {"help", no_argument, 0, 'h'},             {0, 0, 0, 0}};
     int c, r;
     plan_opts_defaults(o);
@@ -292,6 +299,17 @@ static int plan_grid(const char *C, const plan_opts *o, const rl_plan_result *ou
         return RL_EXIT_FAIL;
     printf("  pdf                %s: %d pages\n", o->pdf, map.count);
     return 0;
+}
+
+/* The map goes to map.yaml when no --map-out names it: a map already
+ * there (a surveyed one, say) is kept unless --force. 0, or the exit code. */
+static int default_map_free(const char *C, const plan_opts *o)
+{
+    struct stat st;
+    if (o->map_out != NULL || o->force || lstat("map.yaml", &st) != 0)
+        return 0;
+    return rl_cli_fail(C, RL_EXIT_FAIL, "map.yaml exists; not replaced (name it with --map-out map.yaml, "
+                       "or give --force)");
 }
 
 /* --area: what the area is planned with, from the options and the plan. */
@@ -475,6 +493,8 @@ int rl_cmd_plan(int argc, char **argv)
                            (1 << RL_MAX_BITS) - 2, RL_MAX_BITS);
     if (e == RL_EINVAL)
         return rl_cli_fail(C, RL_EXIT_USAGE, "inputs must be positive");
+    if ((o.area_w > 0 || o.cols > 0) && (r = default_map_free(C, &o)) != 0)
+        return r;
     if (o.area_w > 0)
         return plan_area_mode(C, &o, &out, e, paper);
     if ((r = print_plan(C, &o.in, &out, e, paper)) != 0)

@@ -128,24 +128,6 @@ static int seen_as_is(const rl_result *as_is, const rl_detection *d)
     return 0;
 }
 
-static void write_truth(const char *path, const char *image, const rl_site_mark *m, int n)
-{
-    static const char *kinds[] = {"complete", "near_light", "cut"};
-    rl_outfile o;
-    char err[1200];
-    int i;
-    if (rl_outfile_open(&o, path, err, sizeof err) != RL_OK) {
-        fprintf(stderr, "ringloc site-check: %s\n", err);
-        return;
-    }
-    fprintf(o.f, "image: %s\nlandmarks:\n", image);
-    for (i = 0; i < n; i++)
-        fprintf(o.f, "  - {id: %d, u: %.3f, v: %.3f, radius: %.3f, kind: %s, visible: %.3f}\n",
-                m[i].id, m[i].u, m[i].v, m[i].r, kinds[m[i].kind], m[i].visible);
-    if (rl_outfile_commit(&o, err, sizeof err) != RL_OK)
-        fprintf(stderr, "ringloc site-check: %s\n", err);
-}
-
 typedef struct {
     const char *C, *out;
     rl_heap_recog *hr;
@@ -153,10 +135,36 @@ typedef struct {
     const int *ids;
     int n_ids, rounds;
     rl_family fam;
+    int unwritten;  /* files under --out that could not be written (each named) */
 } check;
 
+/* A file under --out that failed: its line, and counted for the exit status. */
+static void not_written(check *k, const char *err)
+{
+    rl_cli_fail(k->C, RL_EXIT_FAIL, "%s", err);
+    k->unwritten++;
+}
+
+static void write_truth(check *k, const char *path, const char *image, const rl_site_mark *m, int n)
+{
+    static const char *kinds[] = {"complete", "near_light", "cut"};
+    rl_outfile o;
+    char err[1200];
+    int i;
+    if (rl_outfile_open(&o, path, err, sizeof err) != RL_OK) {
+        not_written(k, err);
+        return;
+    }
+    fprintf(o.f, "image: %s\nlandmarks:\n", image);
+    for (i = 0; i < n; i++)
+        fprintf(o.f, "  - {id: %d, u: %.3f, v: %.3f, radius: %.3f, kind: %s, visible: %.3f}\n",
+                m[i].id, m[i].u, m[i].v, m[i].r, kinds[m[i].kind], m[i].visible);
+    if (rl_outfile_commit(&o, err, sizeof err) != RL_OK)
+        not_written(k, err);
+}
+
 /* The photo as it is: every landmark reported there is false. */
-static void photo_as_is(const check *k, const char *path, const rl_image *img, rl_result *as_is,
+static void photo_as_is(check *k, const char *path, const rl_image *img, rl_result *as_is,
                         tally *t)
 {
     double us;
@@ -172,7 +180,7 @@ static void photo_as_is(const check *k, const char *path, const rl_image *img, r
     if (k->out && as_is->n_landmarks > 0) {
         snprintf(out, sizeof out, "%s/false_%s.png", k->out, stem(path, name, sizeof name));
         if (rl_annotate_png(out, img, as_is, &k->fam, path, err, sizeof err) != RL_OK)
-            rl_cli_fail(k->C, RL_EXIT_FAIL, "%s", err);
+            not_written(k, err);
     }
 }
 
@@ -216,8 +224,8 @@ static void photo_composited(check *k, const char *path, const rl_image *photo, 
         snprintf(png, sizeof png, "%s/%s_r%d.png", k->out, name, round);
         snprintf(yaml, sizeof yaml, "%s/%s_r%d.yaml", k->out, name, round);
         if (rl_png_write_gray(png, &img, err, sizeof err) != RL_OK)
-            rl_cli_fail(k->C, RL_EXIT_FAIL, "%s", err);
-        write_truth(yaml, png, marks, n);
+            not_written(k, err);
+        write_truth(k, yaml, png, marks, n);
     }
 }
 
@@ -375,6 +383,8 @@ static int run_check(check *k, char **photos, int n, int json)
     free(t);
     if (skipped > 0) /* the figures hold for the photos read; the run did not read them all */
         return rl_cli_fail(k->C, RL_EXIT_FAIL, "%d of %d files skipped (named above)", skipped, n);
+    if (k->unwritten > 0)
+        return rl_cli_fail(k->C, RL_EXIT_FAIL, "%s: %d files not written (named above)", k->out, k->unwritten);
     return 0;
 }
 

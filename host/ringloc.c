@@ -57,15 +57,16 @@ int main(int argc, char **argv)
     if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
         strcmp(argv[1], "help") == 0) {
         usage(stdout);
-        return 0;
+        return rl_cli_finish(NULL, 0);
     }
     if (strcmp(argv[1], "--version") == 0) {
         printf("ringloc %s\n", RL_VERSION);
-        return 0;
+        return rl_cli_finish(NULL, 0);
     }
+    /* every command's results reach the exit status, standard output's too */
     for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
         if (strcmp(argv[1], commands[i].name) == 0)
-            return commands[i].run(argc - 1, argv + 1);
+            return rl_cli_finish(commands[i].name, commands[i].run(argc - 1, argv + 1));
     fprintf(stderr, "ringloc: unknown command '%s' (try 'ringloc --help')\n", argv[1]);
     return RL_EXIT_USAGE;
 }

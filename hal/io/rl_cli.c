@@ -33,6 +33,21 @@ void rl_cli_start(const char *name)
     signal(SIGXFSZ, SIG_IGN); /* over a file-size limit: EFBIG, not a silent death */
 }
 
+int rl_cli_finish(const char *cmd, int code)
+{
+    int failed = ferror(stdout);
+    errno = 0;
+    if (fflush(stdout) != 0)
+        failed = 1;
+    if (fclose(stdout) != 0 && !failed)
+        failed = 1;
+    if (!failed)
+        return code;
+    rl_cli_fail(cmd, RL_EXIT_FAIL, "standard output: %s",
+                errno ? strerror(errno) : "a write failed (the output is incomplete)");
+    return code ? code : RL_EXIT_FAIL;
+}
+
 void rl_cli_prefix(const char *cmd, char *out, size_t len)
 {
     if (cmd == NULL || cmd[0] == '\0')

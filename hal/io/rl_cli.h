@@ -31,6 +31,15 @@ void rl_cli_set_program(const char *name);
  * reported like a full disk, instead of a silent death). */
 void rl_cli_start(const char *name);
 
+/* Last thing in every main that prints results: standard output flushed
+ * and closed. If any write to it failed (a full disk, a closed pipe, a
+ * file-size limit), one line "PROGRAM CMD: standard output: REASON" and
+ * RL_EXIT_FAIL when code was 0; else code.
+ *
+ *   return rl_cli_finish("detect", code);  // code: the command's own exit status
+ */
+int rl_cli_finish(const char *cmd, int code);
+
 /* "PROGRAM CMD" (or "PROGRAM" when cmd is NULL or empty) into out. */
 void rl_cli_prefix(const char *cmd, char *out, size_t len);
 

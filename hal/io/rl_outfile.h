@@ -10,6 +10,14 @@
  * file is refused before anything is written. The error line names the
  * target and the system's reason ("robot.yaml: No space left on device").
  *
+ * A rewritten file keeps the old one's group and mode (the group where the
+ * user may give it). The temporary is ".NAME.tmpPID_N", NAME shortened
+ * when the whole would pass the folder's name limit, so any name the
+ * folder takes can be written. SIGINT, SIGTERM and SIGHUP remove the open
+ * temporaries before the program ends, where the program left those
+ * signals' default action (a program with its own stop handler aborts or
+ * commits itself).
+ *
  *   rl_outfile o;
  *   char err[600];
  *   if (rl_outfile_open(&o, "robot.yaml", err, sizeof err) == RL_OK) {
@@ -36,6 +44,7 @@ typedef struct {
     char tmp[RL_OUTFILE_PATH];  /* the temporary beside it ("" once gone) */
     FILE *f;                    /* write here between open and commit */
     int errnum;                 /* the first failure's errno (0: none yet) */
+    int slot;                   /* its place among the temporaries a signal removes (-1: none) */
 } rl_outfile;
 
 /* Check the target and create its temporary. RL_EINVAL (a link, not a

@@ -22,6 +22,7 @@
 #include "rl_cli.h"
 #include "rl_clock.h"
 #include "rl_outfile.h"
+#include "rl_ptylink.h"
 #include "rl_stop.h"
 #include "standin_sim.h"
 
@@ -34,14 +35,17 @@
 
 static const char *help =
     "usage: ringloc-standin [--port 8101] [--frames-pty LINK] [--truth FILE] [--seconds S]\n"
-    "                       [--start X,Y,YAW] [--seed N]\n\n"
+    "                       [--start X,Y,YAW] [--seed N] [--force]\n\n"
     "A Pioneer stand-in speaking ARCOS on TCP port PORT of 127.0.0.1 (ARIA: -remoteHost\n"
     "localhost -remoteRobotTcpPort PORT): the handshake, a server information packet every\n"
     "100 ms with the odometry of a simulated drive (1%% wheel scale and 2%% track width off,\n"
     "wheel noise), the motion commands VEL, RVEL, ROTATE, ENABLE, STOP, ESTOP, SETO.\n"
     "  --frames-pty LINK  also ringloc's camera: a pseudo-terminal (LINK points to it)\n"
     "                     carrying pose frames about the true pose, 10 a second, each\n"
-    "                     read 100 ms after its capture (its latency field says so)\n"
+    "                     read 100 ms after its capture (its latency field says so);\n"
+    "                     LINK may be new or a link left to a pseudo-terminal that\n"
+    "                     is gone: anything else there is refused (kept)\n"
+    "  --force            replace whatever LINK is (not a folder)\n"
     "  --truth FILE       the true pose every 10 ms, 't x y yaw' (t: CLOCK_MONOTONIC s)\n"
     "  --seconds S        stop after S seconds (default: when the client closes)\n"
     "  --start X,Y,YAW    the true start in the map (default 1,1,0)\n";
@@ -50,6 +54,7 @@ typedef struct {
     standin_robot robot;
     int lfd, cfd;          /* listening socket, client (-1: none) */
     int pty;               /* master of the frames' pty (-1: none) */
+    rl_ptylink link;       /* it, and the link to it */
     int synced;            /* 0..3: SYNC steps done */
     int open;              /* OPEN received: SIPs flow */
     int served;            /* a client has come and opened */
@@ -120,20 +125,6 @@ static int listen_on(int port)
     a.sin_port = htons((uint16_t)port);
     a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
     if (bind(fd, (struct sockaddr *)&a, sizeof a) != 0 || listen(fd, 1) != 0) {
-        close(fd);
-        return -1;
-    }
-    return fd;
-}
-
-static int open_pty(const char *link)
-{
-    const char *name;
-    int fd = posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK);
-    if (fd < 0 || grantpt(fd) != 0 || unlockpt(fd) != 0 || (name = ptsname(fd)) == NULL)
-        return -1;
-    unlink(link);
-    if (symlink(name, link) != 0) {
         close(fd);
         return -1;
     }
@@ -247,11 +238,12 @@ int main(int argc, char **argv)
         {"port", required_argument, 0, 'p'},  {"frames-pty", required_argument, 0, 'f'},
         {"truth", required_argument, 0, 't'}, {"seconds", required_argument, 0, 's'},
         {"start", required_argument, 0, 'x'}, {"seed", required_argument, 0, 'S'},
-        {"help", no_argument, 0, 'h'},        {0, 0, 0, 0}};
+        {"force", no_argument, 0, 'F'},       {"help", no_argument, 0, 'h'},
+        {0, 0, 0, 0}};
     static standin s;
     const char *pty_link = NULL, *truth_path = NULL;
     double seconds = 0, x = 1, y = 1, yaw = 0;
-    int c, port = 8101, seed = 1;
+    int c, port = 8101, seed = 1, force = 0;
     rl_outfile o;
     char err[1200];
     rl_cli_start(P);
@@ -260,6 +252,7 @@ int main(int argc, char **argv)
         switch (c) {
         case 'p': ok = rl_cli_int(NULL, "--port", optarg, 1, 65535, &port); break;
         case 'f': pty_link = optarg; break;
+        case 'F': force = 1; break;
         case 't': truth_path = optarg; break;
         case 's': ok = rl_cli_double(NULL, "--seconds", optarg, 0, 1e6, &seconds); break;
         case 'S': ok = rl_cli_int(NULL, "--seed", optarg, 0, 1000000000, &seed); break;
@@ -279,17 +272,20 @@ int main(int argc, char **argv)
     s.cfd = s.pty = -1;
     if ((s.lfd = listen_on(port)) < 0)
         return rl_cli_fail(NULL, RL_EXIT_FAIL, "127.0.0.1:%d: %s", port, strerror(errno));
-    if (pty_link && (s.pty = open_pty(pty_link)) < 0)
-        return rl_cli_fail(NULL, RL_EXIT_FAIL, "%s: cannot make a pseudo-terminal there: %s", pty_link,
-                           strerror(errno));
-    if (truth_path && rl_outfile_open(&o, truth_path, err, sizeof err) != RL_OK)
+    if (pty_link && rl_ptylink_open(&s.link, pty_link, force, 1, err, sizeof err) != RL_OK)
         return rl_cli_fail(NULL, RL_EXIT_FAIL, "%s", err);
+    s.pty = pty_link ? s.link.fd : -1;
+    if (truth_path && rl_outfile_open(&o, truth_path, err, sizeof err) != RL_OK) {
+        if (pty_link)
+            rl_ptylink_close(&s.link);
+        return rl_cli_fail(NULL, RL_EXIT_FAIL, "%s", err);
+    }
     rl_stop_on_signals(RL_STOP_NO_SIGPIPE);
     fprintf(stderr, P ": listening on 127.0.0.1:%d%s%s\n", port, pty_link ? ", pose frames on " : "",
             pty_link ? pty_link : "");
     run(&s, seconds, truth_path ? o.f : NULL);
     if (pty_link)
-        unlink(pty_link);
+        rl_ptylink_close(&s.link);
     fprintf(stderr, P ": %lu server information packets, %lu pose frames sent, %lu dropped; odometry "
             "(%.3f, %.3f, %.4f), truth (%.4f, %.4f, %.4f)\n", s.sips, s.frames_sent, s.frames_dropped,
             s.robot.ox, s.robot.oy, s.robot.oyaw, s.robot.tx, s.robot.ty, s.robot.tyaw);
