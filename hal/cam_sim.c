@@ -103,29 +103,17 @@ static int parse_line(sim_state *s, const char *line, uint64_t *t)
     return 0;
 }
 
-/* The block large enough for s->path's frame (its header read first). */
+/* The block large enough for s->path's frame, of the configured size. */
 static rl_err fit_block(sim_state *s, char *err, size_t errlen)
 {
     int w, h;
-    size_t need;
-    void *block;
-    rl_err e;
-    if ((e = rl_png_size(s->path, &w, &h, err, errlen)) != RL_OK)
-        return e;
-    if (s->width > 0 && (w != s->width || h != s->height)) {
+    rl_err e = rl_cam_png_fit(s->path, &s->block, &s->cap, &w, &h, err, errlen);
+    if (e == RL_OK && s->width > 0 && (w != s->width || h != s->height)) {
         snprintf(err, errlen, "%.300s: image is %dx%d but the camera is set to %dx%d", s->path, w, h, s->width,
                  s->height);
         return RL_EFORMAT;
     }
-    if ((need = rl_png_block_size(w, h)) <= s->cap)
-        return RL_OK;
-    if ((block = realloc(s->block, need)) == NULL) {
-        snprintf(err, errlen, "%.300s: out of memory for %dx%d", s->path, w, h);
-        return RL_ENOMEM;
-    }
-    s->block = block;
-    s->cap = need;
-    return RL_OK;
+    return e;
 }
 
 static rl_err sim_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)

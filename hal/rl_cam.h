@@ -107,6 +107,10 @@ RL_CHECK rl_err rl_cam_probe(const rl_cam_config *cc, rl_cam_line_fn line, void 
 RL_CHECK rl_err rl_cam_open_png(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen);
 RL_CHECK rl_err rl_cam_open_v4l2(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen);
 RL_CHECK rl_err rl_cam_open_libcamera(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen);
+/* A PNG's size read from its header into w, h, and *block (of *cap bytes,
+ * realloc'd) grown to hold it decoded; err names the file (png and sim). */
+RL_CHECK rl_err rl_cam_png_fit(const char *path, void **block, size_t *cap, int *w, int *h, char *err,
+                               size_t errlen);
 RL_CHECK rl_err rl_cam_open_sim(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen);
 RL_CHECK rl_err rl_cam_probe_png(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx, char *err,
                                  size_t errlen);
