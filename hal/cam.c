@@ -22,6 +22,7 @@ static const struct {
     {rl_cam_open_png, rl_cam_probe_png},
     {rl_cam_open_v4l2, rl_cam_probe_v4l2},
     {rl_cam_open_libcamera, rl_cam_probe_libcamera},
+    {rl_cam_open_sim, rl_cam_probe_sim},
 };
 
 /* The backend cc names (none: png), or -1 with err saying so. */

@@ -75,25 +75,29 @@ static void rewind_names(png_state *s)
         rewind(s->list);
 }
 
-/* Files of any size: the block made large enough for the next one (its
- * header read first: a file that does not read says why here). */
+rl_err rl_cam_png_fit(const char *path, void **block, size_t *cap, int *w, int *h, char *err, size_t errlen)
+{
+    size_t need;
+    void *grown;
+    rl_err e;
+    if ((e = rl_png_size(path, w, h, err, errlen)) != RL_OK)
+        return e;
+    if ((need = rl_png_block_size(*w, *h)) <= *cap)
+        return RL_OK;
+    if ((grown = realloc(*block, need)) == NULL) {
+        snprintf(err, errlen, "%.160s: out of memory for %dx%d", path, *w, *h);
+        return RL_ENOMEM;
+    }
+    *block = grown;
+    *cap = need;
+    return RL_OK;
+}
+
+/* Files of any size: the block made large enough for the next one. */
 static rl_err grow_for(png_state *s, char *err, size_t errlen)
 {
     int w, h;
-    size_t need;
-    void *block;
-    rl_err e;
-    if ((e = rl_png_size(s->path, &w, &h, err, errlen)) != RL_OK)
-        return e;
-    if ((need = rl_png_block_size(w, h)) <= s->cap)
-        return RL_OK;
-    if ((block = realloc(s->block, need)) == NULL) {
-        snprintf(err, errlen, "%.160s: out of memory for %dx%d", s->path, w, h);
-        return RL_ENOMEM;
-    }
-    s->block = block;
-    s->cap = need;
-    return RL_OK;
+    return rl_cam_png_fit(s->path, &s->block, &s->cap, &w, &h, err, errlen);
 }
 
 static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)

@@ -5,7 +5,8 @@
  * time, for the host and the demo), "v4l2" (USB webcams and CSI drivers,
  * mmap streaming, the best of GREY, NV12, YU12, YUYV, UYVY and MJPEG the
  * device offers), "libcamera" (the Raspberry Pi camera; built only where
- * libcamera is found). A frame is lent, not copied where its format
+ * libcamera is found), "sim" (frames a renderer draws as a simulated robot
+ * moves: each carries its pose's time as capture time, hal/cam_sim.c). A frame is lent, not copied where its format
  * allows: grab gives a view into the backend's buffer with its capture
  * time from the driver (rl_clock.h's monotonic clock), release gives it
  * back. Exposure and gain are automatic unless set. The loop takes a
@@ -45,7 +46,7 @@ typedef rl_err (*rl_cam_open_fn)(struct rl_cam *c, const struct rl_cam_config *c
                                  size_t errlen);
 
 typedef struct rl_cam_config {
-    const char *backend; /* "png", "v4l2", "libcamera" */
+    const char *backend; /* "png", "v4l2", "libcamera", "sim" */
     const char *device;  /* png: directory or list file; v4l2: /dev/videoN; libcamera: index */
     const char *const *files; /* png: these files in this order instead of device (n_files of them;
                                  kept, not copied); with width 0 each frame has its own size */
@@ -106,11 +107,18 @@ RL_CHECK rl_err rl_cam_probe(const rl_cam_config *cc, rl_cam_line_fn line, void 
 RL_CHECK rl_err rl_cam_open_png(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen);
 RL_CHECK rl_err rl_cam_open_v4l2(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen);
 RL_CHECK rl_err rl_cam_open_libcamera(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen);
+/* A PNG's size read from its header into w, h, and *block (of *cap bytes,
+ * realloc'd) grown to hold it decoded; err names the file (png and sim). */
+RL_CHECK rl_err rl_cam_png_fit(const char *path, void **block, size_t *cap, int *w, int *h, char *err,
+                               size_t errlen);
+RL_CHECK rl_err rl_cam_open_sim(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen);
 RL_CHECK rl_err rl_cam_probe_png(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx, char *err,
                                  size_t errlen);
 RL_CHECK rl_err rl_cam_probe_v4l2(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx, char *err,
                                   size_t errlen);
 RL_CHECK rl_err rl_cam_probe_libcamera(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx,
                                        char *err, size_t errlen);
+RL_CHECK rl_err rl_cam_probe_sim(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx, char *err,
+                                 size_t errlen);
 
 #endif

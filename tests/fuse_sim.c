@@ -17,6 +17,10 @@ void fs_scenario_defaults(fs_scenario *sc)
     sc->odo_hz = 50;
     sc->delay = 0.100;
     sc->jitter = 0.0005;
+    sc->extra_max = sc->extra_fixed = sc->ftdi_tick = 0;
+    sc->from_clock = 0;
+    sc->drift_ppm = 0;
+    sc->restart_at = -1;
     sc->laps = 1;
     sc->gap_from = sc->gap_to = -1;
     sc->outlier = -1;

@@ -43,8 +43,18 @@ typedef struct {
 typedef struct {
     double v;            /* m/s */
     double odo_hz;       /* odometry samples a second */
-    double delay;        /* capture -> arrival of a frame, s */
+    double delay;        /* capture -> send of a frame, s: in its latency field */
     double jitter;       /* the arrival stamp's error, uniform +-, s */
+    /* the transport, outside the latency field (a frame never overtakes
+     * the one before it on the line): */
+    double extra_max;    /* a delay uniform in 0 .. this, s (a reader's polling, a loaded kernel) */
+    double extra_fixed;  /* a constant delay, s */
+    double ftdi_tick;    /* a USB adapter's latency timer: held to its next tick, s (0: none) */
+    int from_clock;      /* frames through rl_fuse_msg_add (the board's time_ms and the
+                            arrival) rather than capture = arrival - latency - line time */
+    double drift_ppm;    /* the board's clock runs fast by this */
+    double restart_at;   /* s: the firmware restarts (time_ms and seq from 0, 0.5 s without
+                            frames); < 0 never */
     double laps;         /* of a closed drive (the frames reused lap after lap) */
     double gap_from, gap_to; /* distance driven (m) between which no frame comes */
     int outlier;         /* frame (in order of capture) replaced by the truth + 0.5 m; -1 none */
@@ -73,6 +83,8 @@ typedef struct {
     double warm_max_err, warm_max_step, warm_max_yaw; /* in the warm-up */
     double gap_max_err, gap_dist;  /* in the stretch: largest error, m driven */
     double kidnap_err;             /* error after the second frame since the kidnap */
+    double kidnap_err_2s;          /* largest error from 2 s after the kidnap on */
+    double p95_fused;              /* m, over the ticks of rms_fused */
     double mean_latency;           /* the firmware's, s */
     rl_fuse_stats stats;
     double scale, turn;            /* learned at the end */

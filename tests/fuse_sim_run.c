@@ -90,11 +90,38 @@ static int odometry(const fs_drive *d, const fs_scenario *sc, double T, odo_samp
     return n;
 }
 
+#define CLOCK0 1234.5678 /* the board's clock at the drive's start, s */
+#define BOOT 0.5         /* s a restarted firmware sends nothing */
+
+/* the board's clock at capture time t (s), and the frame's sequence number */
+static void board_clock(const fs_scenario *sc, double t, int order, int order_at_restart, rl_msg *m)
+{
+    double rate = 1 + sc->drift_ppm * 1e-6;
+    int after = sc->restart_at >= 0 && t >= sc->restart_at;
+    double c = after ? (t - sc->restart_at) * rate : CLOCK0 + t * rate;
+    if (sc->from_clock == 0 && !after)
+        c = t; /* the capture on the controller's clock (ringloc fuse without --arrivals) */
+    m->time_ms = (uint32_t)lround(c * 1e3);
+    m->seq = (uint16_t)(after ? order - order_at_restart : order);
+}
+
+/* when frame f, sent at `sent`, is read by the controller, the frame
+ * before it read at `prev` (a line keeps the order) */
+static double arrive(const fs_scenario *sc, double sent, double prev)
+{
+    double a = sent + sc->extra_fixed + (sc->extra_max > 0 ? sc->extra_max * uniform() : 0), line = (RL_POSE_PAYLOAD + 5) * 10.0 / BAUD;
+    if (sc->ftdi_tick > 0) /* a free-running timer, its phase 3 ms */
+        a = 0.003 + ceil((a - 0.003) / sc->ftdi_tick) * sc->ftdi_tick;
+    if (a < prev + line)
+        a = prev + line;
+    return a;
+}
+
 /* the frames of the drive, lap after lap, in order of arrival */
 static int frames(const fs_drive *d, const fs_scenario *sc, double T, sim_frame *out)
 {
-    int lap, k, n = 0, order = 0;
-    double line = (RL_POSE_PAYLOAD + 5) * 10.0 / BAUD;
+    int lap, k, n = 0, order = 0, order_at_restart = -1;
+    double line = (RL_POSE_PAYLOAD + 5) * 10.0 / BAUD, prev = -1;
     for (lap = 0; lap < (d->closed ? (int)ceil(sc->laps) : 1); lap++)
         for (k = 0; k < d->n && n < MAX_FR; k++) {
             double s = lap * d->length + (d->closed ? k * d->length / d->n : d->length * k / (d->n - 1));
@@ -104,6 +131,10 @@ static int frames(const fs_drive *d, const fs_scenario *sc, double T, sim_frame 
                 return n;
             if (s >= sc->gap_from && s < sc->gap_to)
                 continue;
+            if (sc->restart_at >= 0 && s / sc->v >= sc->restart_at && s / sc->v < sc->restart_at + BOOT)
+                continue;
+            if (sc->restart_at >= 0 && s / sc->v >= sc->restart_at && order_at_restart < 0)
+                order_at_restart = order;
             f->capture = s / sc->v;
             truth(d, sc, f->capture, &tr);
             if (sc->simulated) {
@@ -114,10 +145,12 @@ static int frames(const fs_drive *d, const fs_scenario *sc, double T, sim_frame 
                 f->meas = d->meas[k];
                 f->meas.x += tr.x - d->truth[k].x; /* carried: the same error, elsewhere */
             }
+            memset(&f->msg, 0, sizeof f->msg);
+            board_clock(sc, f->capture, order, order_at_restart, &f->msg);
             if (order++ == sc->outlier)
                 f->meas.x += 0.5;
-            f->arrival = f->capture + sc->delay + sc->jitter * (2 * uniform() - 1);
-            memset(&f->msg, 0, sizeof f->msg);
+            f->arrival = arrive(sc, f->capture + sc->delay, prev) + sc->jitter * (2 * uniform() - 1);
+            prev = f->arrival;
             f->msg.type = RL_PACKET_POSE;
             f->msg.version = 2;
             f->msg.x_mm = (int32_t)lround(f->meas.x * 1e3);
@@ -164,8 +197,15 @@ static int near_corner(const fs_drive *d, const fs_scenario *sc, double t)
     return 0;
 }
 
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
 static void metrics(const fs_drive *d, const fs_scenario *sc, fs_result *r)
 {
+    static double errs[FS_MAX_TICKS];
     double s2 = 0, s2r = 0, sy2 = 0, prev_ex = 0, prev_ey = 0;
     int i, m = 0, first = 1;
     r->max_err_fused = r->max_step = r->max_yaw = r->gap_max_err = 0;
@@ -189,6 +229,7 @@ static void metrics(const fs_drive *d, const fs_scenario *sc, fs_result *r)
             first = 1;
             continue;
         }
+        errs[m] = e;
         s2 += e * e;
         s2r += pow(r->reset[i].x - r->truth[i].x, 2) + pow(r->reset[i].y - r->truth[i].y, 2);
         sy2 += ey_aw * ey_aw;
@@ -208,6 +249,8 @@ static void metrics(const fs_drive *d, const fs_scenario *sc, fs_result *r)
         first = 0;
     }
     r->rms_fused = m ? sqrt(s2 / m) : NAN;
+    qsort(errs, (size_t)m, sizeof errs[0], by_value);
+    r->p95_fused = m ? errs[(int)ceil(0.95 * m) - 1] : NAN;
     r->rms_reset = m ? sqrt(s2r / m) : NAN;
     r->rms_yaw = m ? sqrt(sy2 / m) : NAN;
     r->gap_dist = sc->gap_to > sc->gap_from ? sc->gap_to - sc->gap_from : 0;
@@ -223,6 +266,7 @@ static int ticks(const fs_drive *d, const fs_scenario *sc, double T, const odo_s
     fs_pose reset_base = {0, 0, 0};
     r->n = 0;
     r->kidnap_err = NAN;
+    r->kidnap_err_2s = 0;
     for (t = 0; t <= T + 1e-9; t += TICK) {
         rl_fuse_pose p;
         while ((io < no && odo[io].t <= t) || (jf < nf && fr[jf].arrival <= t)) {
@@ -233,7 +277,10 @@ static int ticks(const fs_drive *d, const fs_scenario *sc, double T, const odo_s
             } else {
                 rl_fuse_frame ff;
                 rl_fuse_frame_from_msg(&fr[jf].msg, fr[jf].arrival, BAUD, &ff);
-                (void)!rl_fuse_frame_add(f, &ff); /* outcomes are counted in the stats */
+                if (sc->from_clock)
+                    (void)!rl_fuse_msg_add(f, &fr[jf].msg, fr[jf].arrival, BAUD); /* in the stats */
+                else
+                    (void)!rl_fuse_frame_add(f, &ff); /* outcomes are counted in the stats */
                 reset_base = fr[jf].meas; /* today's snippet: moveTo(frame) */
                 memcpy(reset_odo, odo[io > 0 ? io - 1 : 0].o, sizeof reset_odo);
                 have_reset = 1;
@@ -260,6 +307,8 @@ static int ticks(const fs_drive *d, const fs_scenario *sc, double T, const odo_s
         r->corner[r->n] = near_corner(d, sc, t);
         if (kid_frames == 2 && isnan(r->kidnap_err))
             r->kidnap_err = hypot(p.x - r->truth[r->n].x, p.y - r->truth[r->n].y);
+        if (sc->kidnap_at >= 0 && sc->v * t >= sc->kidnap_at + 2.0 * sc->v)
+            r->kidnap_err_2s = fmax(r->kidnap_err_2s, hypot(p.x - r->truth[r->n].x, p.y - r->truth[r->n].y));
         r->scale = p.scale;
         r->turn = p.turn;
         r->n++;
@@ -268,17 +317,18 @@ static int ticks(const fs_drive *d, const fs_scenario *sc, double T, const odo_s
 }
 
 /* The drive as `ringloc fuse` takes it: the odometry log, the frames
- * recorded as sent (time_ms: the capture on the controller's clock), and
- * the truth at every 10 ms. */
+ * recorded as sent (time_ms: the board's clock; without from_clock the
+ * capture on the controller's clock), their arrivals (seq, s) and the
+ * truth at every 10 ms. */
 static int export_drive(const fs_drive *d, const fs_scenario *sc, double T, const odo_sample *odo, int no,
                         const sim_frame *fr, int nf)
 {
-    static const char *names[3] = {"odometry.txt", "frames.bin", "truth.txt"};
+    static const char *names[4] = {"odometry.txt", "frames.bin", "truth.txt", "arrivals.txt"};
     char path[1024], err[1200];
-    rl_outfile o[3];
+    rl_outfile o[4];
     int i, j, ok = 1;
     long k;
-    for (j = 0; j < 3; j++) { /* written whole or not at all (rl_outfile) */
+    for (j = 0; j < 4; j++) { /* written whole or not at all (rl_outfile) */
         snprintf(path, sizeof path, "%s/%s", sc->export_dir, names[j]);
         if (rl_outfile_open(&o[j], path, err, sizeof err) != RL_OK) {
             while (j-- > 0)
@@ -291,16 +341,15 @@ static int export_drive(const fs_drive *d, const fs_scenario *sc, double T, cons
         fprintf(o[0].f, "%.4f %.6f %.6f %.6f\n", odo[i].t, odo[i].o[0], odo[i].o[1], odo[i].o[2]);
     for (i = 0; i < nf; i++) {
         uint8_t buf[RL_PACKET_MAX];
-        rl_msg m = fr[i].msg;
-        m.time_ms = (uint32_t)lround(fr[i].capture * 1e3);
-        fwrite(buf, 1, rl_packet_encode(&m, buf), o[1].f);
+        fwrite(buf, 1, rl_packet_encode(&fr[i].msg, buf), o[1].f);
+        fprintf(o[3].f, "%u %.6f\n", (unsigned)fr[i].msg.seq, fr[i].arrival);
     }
     for (k = 0; k * TICK <= T + 1e-9; k++) {
         fs_pose p;
         truth(d, sc, k * TICK, &p);
         fprintf(o[2].f, "%.3f %.6f %.6f %.6f\n", k * TICK, p.x, p.y, p.yaw);
     }
-    for (j = 0; j < 3; j++)
+    for (j = 0; j < 4; j++)
         if (rl_outfile_commit(&o[j], err, sizeof err) != RL_OK) {
             fprintf(stderr, "%s\n", err);
             ok = 0;

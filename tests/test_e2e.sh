@@ -57,7 +57,7 @@ done <"$T/frames.txt"
 # configuration errors: one line naming the file and key, exit 1
 printf 'camera: {backend: usb, device: x}\nserial: {device: -}\ncalibration: c\nmap: m\nrobot: r\n' >"$T/bad1.yaml"
 "$R" run --config "$T/bad1.yaml" 2>"$T/err"; rc=$?
-[ $rc = 1 ] && grep -q "bad1.yaml:1: camera.backend: 'usb' is not png, v4l2 or libcamera" "$T/err" && ok || bad "bad backend: $(cat "$T/err")"
+[ $rc = 1 ] && grep -q "bad1.yaml:1: camera.backend: 'usb' is not png, v4l2, libcamera or sim" "$T/err" && ok || bad "bad backend: $(cat "$T/err")"
 sed 's/baud: 115200/baud: 12345/' "$T/ringloc.yaml" >"$T/bad2.yaml"
 "$R" run --config "$T/bad2.yaml" 2>"$T/err"; rc=$?
 [ $rc = 1 ] && grep -q "serial.baud: 12345 is not a supported baud rate" "$T/err" && ok || bad "bad baud: $(cat "$T/err")"

@@ -27,6 +27,7 @@ static rl_fuse_frame frame(double t, double x, double y, double yaw, double sd)
     fr.y = y;
     fr.yaw = yaw;
     fr.sx = fr.sy = fr.syaw = sd;
+    fr.st = 0;
     return fr;
 }
 
@@ -170,6 +171,8 @@ static void test_scale_learned(void **state)
 
 static void test_refused_and_counted(void **state)
 {
+    rl_fuse_event ev;
+    unsigned long n;
     rl_fuse_frame fr;
     rl_fuse_pose p;
     rl_fuse_config cfg;
@@ -200,6 +203,18 @@ static void test_refused_and_counted(void **state)
     assert_int_equal((int)f.stats.rejected, 1);
     assert_int_equal(rl_fuse_pose_at(&f, 2.54, &p), RL_OK);
     assert_true(fabs(p.x) < 1e-3);
+    /* its event: each frame's x variance 1e-6 + the floor's 0.0005^2, two
+     * fused on a robot standing still (which adds none): the pose's half
+     * of it, 0.5^2 / (0.625e-6 + 1.25e-6) */
+    rl_fuse_last_event(&f, &ev);
+    assert_int_equal(ev.fate, RL_FUSE_REJECTED);
+    assert_true(fabs(ev.d2 - 0.25 / 1.875e-6) < 1 && ev.t == 2.54 && ev.clock_reset == 0);
+    n = ev.n;
+    fr = frame(2.55, 0.5, 0, 0, 0.001); /* a second that agrees: carried, restarted */
+    assert_int_equal(rl_fuse_frame_add(&f, &fr), RL_OK);
+    rl_fuse_last_event(&f, &ev);
+    assert_true(ev.fate == RL_FUSE_RESTARTED && ev.n == n + 1 && ev.d2 > 1e4);
+    assert_int_equal((int)f.stats.recoveries, 1);
     rl_fuse_defaults(&cfg);
     cfg.track = 0;
     assert_int_equal(rl_fuse_init(&f, &cfg), RL_EINVAL);

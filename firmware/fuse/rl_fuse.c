@@ -4,8 +4,11 @@
 #include <math.h>
 #include <string.h>
 #include "rl_fuse.h"
+#include "rl_fuse_clock.h"
 #include "rl_fuse_hist.h"
 #include "rl_fuse_kf.h"
+
+#define UNTIMED 0.01 /* s: frames whose capture time is less certain are not fused */
 
 void rl_fuse_defaults(rl_fuse_config *cfg)
 {
@@ -36,8 +39,11 @@ rl_err rl_fuse_init(rl_fuse *f, const rl_fuse_config *cfg)
     f->cfg = *cfg;
     f->head = -1;
     f->last_frame_t = -HUGE_VAL;
+    rl_fuse_clock_init(&f->clock);
     return RL_OK;
 }
+
+static rl_err add(rl_fuse *f, const rl_fuse_frame *fr);
 
 rl_err rl_fuse_odometry(rl_fuse *f, double t, double x, double y, double yaw)
 {
@@ -53,8 +59,9 @@ rl_err rl_fuse_odometry(rl_fuse *f, double t, double x, double y, double yaw)
     if (f->has_waiting && f->waiting.t <= t) {
         rl_fuse_frame w = f->waiting;
         f->has_waiting = 0;
-        if (rl_fuse_frame_add(f, &w) != RL_OK)
-            return RL_OK; /* the frame's fate is counted in stats */
+        f->pending_seq = f->waiting_seq;
+        f->pending_reset = f->waiting_reset;
+        (void)!add(f, &w); /* the frame's fate is in stats and the event */
     }
     return RL_OK;
 }
@@ -64,6 +71,18 @@ static void frame_pose(const rl_fuse_frame *fr, double *z)
     z[0] = fr->x;
     z[1] = fr->y;
     z[2] = fr->yaw;
+}
+
+/* the fate of the frame being added (captured at t) is decided: r back */
+static rl_err decide(rl_fuse *f, double t, rl_fuse_fate fate, double d2, rl_err r)
+{
+    f->event.n++;
+    f->event.fate = fate;
+    f->event.t = t;
+    f->event.d2 = d2;
+    f->event.seq = f->pending_seq;
+    f->event.clock_reset = f->pending_reset;
+    return r;
 }
 
 /* (Re)start the filter from frame fr alone: its pose and covariance, the
@@ -104,9 +123,9 @@ static int agree(const rl_fuse *f, const rl_fuse_frame *c, const rl_fuse_frame *
     return rl_fuse_kf_distance(&s, z, R) <= f->cfg.gate;
 }
 
-/* A rejected frame: counted; the start of a run of frames that agree, or
- * the end of one long enough to restart from. 1 after a restart. */
-static int rejected(rl_fuse *f, const rl_fuse_frame *fr)
+/* A rejected frame (distance d2): counted; the start of a run of frames
+ * that agree, or the end of one long enough to restart from (RL_OK). */
+static rl_err rejected(rl_fuse *f, const rl_fuse_frame *fr, double d2)
 {
     f->stats.rejected++;
     if (f->n_cand > 0 && agree(f, &f->cand, fr))
@@ -115,59 +134,109 @@ static int rejected(rl_fuse *f, const rl_fuse_frame *fr)
         f->n_cand = 1;
     f->cand = *fr;
     if (f->cfg.recover_frames == 0 || f->n_cand < f->cfg.recover_frames)
-        return 0;
+        return decide(f, fr->t, RL_FUSE_REJECTED, d2, RL_ERANGE);
     f->n_cand = 0;
     f->stats.recoveries++;
     start_from(f, fr);
-    return 1;
+    return decide(f, fr->t, RL_FUSE_RESTARTED, d2, RL_OK);
 }
 
 /* Fuse frame fr at its capture time (inside the history, a pose known). */
 static rl_err fuse(rl_fuse *f, const rl_fuse_frame *fr)
 {
     rl_fuse_kf_state s;
-    double z[3], R[3][3];
+    double z[3], R[3][3], d2;
     if (rl_fuse_hist_state_at(f, fr->t, &s) != 0) {
         f->stats.too_old++;
-        return RL_ERANGE;
+        return decide(f, fr->t, RL_FUSE_TOO_OLD, 0, RL_ERANGE);
     }
     frame_pose(fr, z);
     rl_fuse_hist_frame_cov(f, fr, s.m[2], R);
-    if (rl_fuse_kf_distance(&s, z, R) > f->cfg.gate)
-        return rejected(f, fr) ? RL_OK : RL_ERANGE;
+    d2 = rl_fuse_kf_distance(&s, z, R);
+    if (d2 > f->cfg.gate)
+        return rejected(f, fr, d2);
     rl_fuse_kf_update(&s, z, R);
     rl_fuse_hist_anchor(f, fr->t, &s);
     f->n_cand = 0;
     f->stats.applied++;
-    return RL_OK;
+    return decide(f, fr->t, RL_FUSE_APPLIED, d2, RL_OK);
 }
 
-rl_err rl_fuse_frame_add(rl_fuse *f, const rl_fuse_frame *fr)
+/* frame fr, whose sequence number and clock reset are pending_* */
+static rl_err add(rl_fuse *f, const rl_fuse_frame *fr)
 {
     if (!isfinite(fr->t) || !isfinite(fr->x) || !isfinite(fr->y) || !isfinite(fr->yaw) ||
-        !isfinite(fr->sx) || !isfinite(fr->sy) || !isfinite(fr->syaw))
+        !isfinite(fr->sx) || !isfinite(fr->sy) || !isfinite(fr->syaw) || !isfinite(fr->st))
         return RL_EINVAL;
     if (fr->t <= f->last_frame_t) {
         f->stats.out_of_order++;
-        return RL_ERANGE;
+        return decide(f, fr->t, RL_FUSE_OUT_OF_ORDER, 0, RL_ERANGE);
     }
     if (f->count == 0 || fr->t > f->h[f->head].t) {
-        if (f->has_waiting)
+        if (f->has_waiting) { /* the event is the lost frame's */
+            unsigned seq = f->pending_seq;
+            int reset = f->pending_reset;
             f->stats.waiting_lost++;
+            f->pending_seq = f->waiting_seq;
+            f->pending_reset = f->waiting_reset;
+            (void)decide(f, f->waiting.t, RL_FUSE_LOST, 0, RL_OK);
+            f->pending_seq = seq;
+            f->pending_reset = reset;
+        }
         f->waiting = *fr;
+        f->waiting_seq = f->pending_seq;
+        f->waiting_reset = f->pending_reset;
         f->has_waiting = 1;
         return RL_OK;
     }
     if (rl_fuse_hist_find(f, fr->t) < 0) {
         f->stats.too_old++;
-        return RL_ERANGE;
+        return decide(f, fr->t, RL_FUSE_TOO_OLD, 0, RL_ERANGE);
     }
     if (!f->has_pose) {
         start_from(f, fr);
         f->stats.applied++;
-        return RL_OK;
+        return decide(f, fr->t, RL_FUSE_APPLIED, 0, RL_OK);
     }
     return fuse(f, fr);
+}
+
+rl_err rl_fuse_frame_add(rl_fuse *f, const rl_fuse_frame *fr)
+{
+    f->pending_seq = 0;
+    f->pending_reset = 0;
+    return add(f, fr);
+}
+
+static size_t frame_bytes(const rl_msg *m)
+{
+    return (m->version == 1 ? RL_POSE_V1_PAYLOAD : RL_POSE_PAYLOAD) + 5;
+}
+
+rl_err rl_fuse_msg_add(rl_fuse *f, const rl_msg *m, double arrival, int baud)
+{
+    rl_fuse_frame fr;
+    double known;
+    if (m->type != RL_PACKET_POSE || !isfinite(arrival))
+        return RL_EINVAL;
+    rl_fuse_frame_from_msg(m, 0, 0, &fr);
+    known = m->latency_e4 * 1e-4 + (baud > 0 ? frame_bytes(m) * 10.0 / baud : 0);
+    f->pending_seq = m->seq;
+    f->pending_reset = rl_fuse_clock_stamp(&f->clock, m->time_ms, m->seq, known, arrival, &fr.t, &fr.st);
+    if (f->pending_reset)
+        f->stats.clock_resets++;
+    /* a time this uncertain is wrong beyond the filter's linear model (a
+     * turn's chord): the frame waits for the clock to be known */
+    if (!(fr.st <= UNTIMED)) {
+        f->stats.untimed++;
+        return decide(f, fr.t, RL_FUSE_UNTIMED, 0, RL_ERANGE);
+    }
+    return add(f, &fr);
+}
+
+void rl_fuse_last_event(const rl_fuse *f, rl_fuse_event *ev)
+{
+    *ev = f->event;
 }
 
 rl_err rl_fuse_pose_at(const rl_fuse *f, double t, rl_fuse_pose *p)
@@ -195,12 +264,12 @@ rl_err rl_fuse_pose_at(const rl_fuse *f, double t, rl_fuse_pose *p)
 
 void rl_fuse_frame_from_msg(const rl_msg *m, double arrival, int baud, rl_fuse_frame *fr)
 {
-    size_t bytes = (m->version == 1 ? RL_POSE_V1_PAYLOAD : RL_POSE_PAYLOAD) + 5;
-    fr->t = arrival - m->latency_e4 * 1e-4 - (baud > 0 ? bytes * 10.0 / baud : 0);
+    fr->t = arrival - m->latency_e4 * 1e-4 - (baud > 0 ? frame_bytes(m) * 10.0 / baud : 0);
     fr->x = m->x_mm * 1e-3;
     fr->y = m->y_mm * 1e-3;
     fr->yaw = m->yaw_e4 * 1e-4;
     fr->sx = m->version == 1 ? 0 : m->sigma_x_e4 * 1e-4;
     fr->sy = m->version == 1 ? 0 : m->sigma_y_e4 * 1e-4;
     fr->syaw = m->version == 1 ? 0 : m->sigma_yaw_e4 * 1e-4;
+    fr->st = 0;
 }

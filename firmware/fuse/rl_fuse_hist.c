@@ -145,7 +145,8 @@ void rl_fuse_hist_frame_cov(const rl_fuse *f, const rl_fuse_frame *fr, double ya
 {
     const rl_fuse_config *c = &f->cfg;
     double sx = fr->sx > 0 ? fr->sx : c->sigma_xy, sy = fr->sy > 0 ? fr->sy : c->sigma_xy;
-    double sa = fr->syaw > 0 ? fr->syaw : c->sigma_yaw, v, w, u[3], t2 = c->time_sigma * c->time_sigma;
+    double sa = fr->syaw > 0 ? fr->syaw : c->sigma_yaw, v, w, u[3];
+    double t2 = c->time_sigma * c->time_sigma + fr->st * fr->st;
     int i, j;
     odo_rate(f, fr->t, &v, &w);
     u[0] = v * cos(yaw);

@@ -5,7 +5,7 @@
  *
  *   rl_fuse_kf_state s;
  *   double o[3] = {0, 0, 0}, R[3][3];
- *   rl_fuse_frame fr = {1.0, 0, 0, 0, 0.001, 0.001, 0.001};
+ *   rl_fuse_frame fr = {1.0, 0, 0, 0, 0.001, 0.001, 0.001, 0};
  *   static rl_fuse f;
  *   rl_fuse_hist_push(&f, 1.0, o);                 // an odometry sample
  *   if (rl_fuse_hist_state_at(&f, fr.t, &s) >= 0) {

@@ -16,25 +16,31 @@
  * noise and the scales' uncertainty.
  *
  * Clocks. Every time is in seconds on ONE monotonic clock, the
- * controller's: odometry samples carry the time the wheels were read, and
- * a frame carries its capture time on that clock, which the controller
- * reconstructs as capture = arrival - latency - line time
- * (rl_fuse_frame_from_msg): arrival is when the frame's last byte was read
- * (stamp it in the thread that reads the port, not in a later control
- * cycle), latency the firmware's capture-to-send delay carried in the
- * frame, line time the frame's bytes at the baud rate (39 bytes: 3.4 ms at
- * 115200). The firmware's own time_ms is another clock and is not used.
- * What breaks this: a USB serial adapter that holds bytes (FTDI's latency
- * timer, 16 ms by default: set it to 1 ms), odometry stamped when a
- * packet was processed rather than when the wheels were read (ARIA: use
- * the packet's receive time), a clock that steps (wall time, NTP). A
- * timing error dt moves the frame v*dt along the track (1 mm per ms at
- * 1 m/s); `time_sigma` is how much of that the filter expects.
+ * controller's: odometry samples carry the time the wheels were read (ARIA:
+ * the packet's receive time, not when it was processed), and each frame
+ * its capture time on that clock. rl_fuse_msg_add finds that time itself
+ * from the frame's time_ms (the camera board's clock, steady) and the
+ * frame's arrival: the delays on the way are never negative, so the lowest
+ * arrival - time_ms over time gives the offset between the two clocks and
+ * its slope their drift (a crystal's 100 ppm); a firmware restart (time_ms
+ * going back, the sequence going back or far ahead) or an offset that
+ * changed is detected, counted (stats.clock_resets) and learned afresh
+ * without restarting the pose. The controller must stamp each frame's
+ * arrival on the clock of its odometry when it reads the frame (any thread,
+ * any polling cycle: a delay that varies does not matter, nor the latency
+ * timer of a USB serial adapter, nor a loaded kernel). What still matters:
+ * a delay that is the same for every frame cannot be told from the clocks'
+ * offset, and the pose then lags by speed x that delay (1 mm per ms at
+ * 1 m/s): the frame's latency field and its bytes on the line are counted,
+ * anything constant the controller adds is not; and a controller clock
+ * that steps (wall time, NTP). Callers that know each capture time on
+ * their clock give frames with rl_fuse_frame_add, as before (version 1
+ * frames, which have no sigmas, work both ways).
  *
  *   rl_fuse_config cfg;
  *   static rl_fuse f;                     // about 40 kB: static or caller's block
- *   rl_fuse_frame fr;
  *   rl_fuse_pose p;
+ *   rl_fuse_event ev;
  *   rl_msg m;                             // a decoded pose frame (rl_packet.h)
  *   rl_fuse_defaults(&cfg);
  *   cfg.track = 0.33;                     // the odometry's nominal track width, m
@@ -43,8 +49,11 @@
  *   if (rl_fuse_odometry(&f, 12.30, 1.02, 0.51, 0.12) != RL_OK)  // t, x, y, yaw
  *       return;
  *   memset(&m, 0, sizeof m);
- *   rl_fuse_frame_from_msg(&m, 12.31, 115200, &fr); // arrival time, baud
- *   if (rl_fuse_frame_add(&f, &fr) == RL_OK && rl_fuse_pose_at(&f, 12.32, &p) == RL_OK)
+ *   m.type = RL_PACKET_POSE;
+ *   if (rl_fuse_msg_add(&f, &m, 12.31, 115200) != RL_OK) { // arrival time, baud
+ *       rl_fuse_last_event(&f, &ev);      // ev.fate RL_FUSE_REJECTED: ev.d2
+ *   }
+ *   if (rl_fuse_pose_at(&f, 12.32, &p) == RL_OK)
  *       use(p.x, p.y, p.yaw, p.cov[0][0]);
  */
 #ifndef RL_FUSE_H
@@ -91,6 +100,7 @@ typedef struct {
     double t;            /* capture time, s */
     double x, y, yaw;    /* m, m, rad */
     double sx, sy, syaw; /* standard deviations */
+    double st;           /* the capture time's, s, added to the config's time_sigma (0: none) */
 } rl_fuse_frame;
 
 /* What happened to the frames (nothing is dropped without a count). */
@@ -101,7 +111,53 @@ typedef struct {
     unsigned long too_old;      /* older than the history */
     unsigned long out_of_order; /* older than a frame already fused */
     unsigned long waiting_lost; /* newer than the odometry, replaced by a newer one before it came */
+    unsigned long clock_resets; /* the camera board restarted or its clock's offset changed
+                                   (rl_fuse_msg_add): its clock learned afresh, the pose kept */
+    unsigned long untimed;      /* not fused: the board's clock not yet known to 10 ms (the
+                                   first second or so after a start or a reset) */
 } rl_fuse_stats;
+
+/* A frame's fate, as it is decided (rl_fuse_last_event). */
+typedef enum {
+    RL_FUSE_NONE = 0,      /* no frame's fate decided yet */
+    RL_FUSE_APPLIED,       /* fused (or the first: it set the pose) */
+    RL_FUSE_REJECTED,      /* beyond the gate: d2 is its squared Mahalanobis distance */
+    RL_FUSE_RESTARTED,     /* rejected, but it agreed with the rejected frames before it:
+                              the robot was carried, the pose restarted from it (d2 as above) */
+    RL_FUSE_TOO_OLD,       /* older than the history */
+    RL_FUSE_OUT_OF_ORDER,  /* not newer than a frame already fused */
+    RL_FUSE_LOST,          /* waited for the odometry and was replaced by a newer frame */
+    RL_FUSE_UNTIMED        /* not fused: the board's clock not yet known (rl_fuse_msg_add) */
+} rl_fuse_fate;
+
+typedef struct {
+    unsigned long n;       /* frames whose fate was decided so far: a new event when it grows */
+    rl_fuse_fate fate;
+    double t;              /* the frame's capture time on the controller's clock, s */
+    double d2;             /* squared Mahalanobis distance (APPLIED, REJECTED, RESTARTED) */
+    int clock_reset;       /* this frame reset the board's clock (rl_fuse_msg_add) */
+    unsigned seq;          /* its sequence number (rl_fuse_msg_add; else 0) */
+} rl_fuse_event;
+
+/* The camera board's clock as learned from the frames' arrivals (see
+ * rl_fuse_msg_add); internal. */
+#define RL_FUSE_CLOCK_SPANS 16
+typedef struct {
+    double start, c, y;    /* a span's first board time; its lowest arrival - capture */
+} rl_fuse_clock_pt;
+
+typedef struct {
+    rl_fuse_clock_pt low[RL_FUSE_CLOCK_SPANS];
+    int head, count;       /* newest span at head */
+    double a, b, c0;       /* controller time = board time + a + b (board time - c0) */
+    double excess;         /* the typical delay beyond the envelope, s */
+    double spread;         /* the spans' lowest points' mean gap above it, s */
+    int excess_n;
+    long n;                /* frames since the clock (re)started */
+    int late;              /* frames in a row far later than the envelope */
+    uint32_t last_ms;
+    uint16_t last_seq;
+} rl_fuse_clock;
 
 typedef struct {
     double t;
@@ -124,6 +180,10 @@ typedef struct {
     rl_fuse_frame waiting;            /* a frame newer than the odometry */
     int has_waiting;
     rl_fuse_stats stats;
+    rl_fuse_clock clock;              /* the camera board's (rl_fuse_msg_add) */
+    rl_fuse_event event;              /* the last frame's fate */
+    unsigned pending_seq, waiting_seq; /* the sequence numbers of the frame being added */
+    int pending_reset, waiting_reset;  /* and of the waiting one; did it reset the clock */
 } rl_fuse;
 
 /* The fused pose at a time. */
@@ -164,7 +224,21 @@ RL_CHECK rl_err rl_fuse_frame_add(rl_fuse *f, const rl_fuse_frame *fr);
  * past the extrapolation limit: *p then holds the pose at the limit). */
 RL_CHECK rl_err rl_fuse_pose_at(const rl_fuse *f, double t, rl_fuse_pose *p);
 
-/* A decoded pose frame (rl_packet.h) as a frame on the controller's clock:
+/* A decoded pose frame (rl_packet.h), and its arrival on the controller's
+ * clock (s: when its last byte was read), through the camera board's
+ * clock: the frame's capture time is its time_ms moved by the offset and
+ * drift learned from the arrivals (see "Clocks" above), then as
+ * rl_fuse_frame_add (same returns; RL_EINVAL for a frame that is not a
+ * pose). baud: the line's, for the frame's bytes (0: not counted). */
+RL_CHECK rl_err rl_fuse_msg_add(rl_fuse *f, const rl_msg *m, double arrival, int baud);
+
+/* The last frame whose fate was decided (by rl_fuse_frame_add,
+ * rl_fuse_msg_add, or rl_fuse_odometry for a frame that waited for it). A
+ * caller that wants every event compares ev->n with the last it saw. */
+void rl_fuse_last_event(const rl_fuse *f, rl_fuse_event *ev);
+
+/* A decoded pose frame (rl_packet.h) as a frame on the controller's clock,
+ * for callers that trust their arrival stamps (rl_fuse_msg_add does not):
  * capture = arrival - latency - the frame's bytes at baud (10 bits a byte).
  * Version 1 frames have no sigmas (0: the config's stand in). */
 void rl_fuse_frame_from_msg(const rl_msg *m, double arrival, int baud, rl_fuse_frame *fr);

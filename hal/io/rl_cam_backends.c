@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
-const char *const rl_cam_backend_names[RL_CAM_BACKEND_COUNT] = {"png", "v4l2", "libcamera"};
+const char *const rl_cam_backend_names[RL_CAM_BACKEND_COUNT] = {"png", "v4l2", "libcamera", "sim"};
 
 int rl_cam_backend_find(const char *name)
 {

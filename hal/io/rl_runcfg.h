@@ -2,8 +2,9 @@
  * (`ringloc-fw`, `ringloc run`).
  *
  *   camera:
- *     backend: v4l2          # png | v4l2 | libcamera
- *     device: /dev/video0    # png: a directory or a list file of PNGs
+ *     backend: v4l2          # png | v4l2 | libcamera | sim
+ *     device: /dev/video0    # png: a directory or a list file of PNGs; sim: a pipe of
+ *                            # 'T_US FILE' lines (ringloc-render --path stream)
  *     width: 640
  *     height: 480
  *     rate: 10               # frames per second

@@ -14,7 +14,8 @@
  * This file is the command line and the frame loop; the jobs are modules:
  * render_random (the random numbers), render_set (each set's scenes),
  * render_look (their looks), render_path and render_tour (the robot's
- * poses), render_camera (its pose and the frame), render_ceiling (what the
+ * poses), render_stream (poses a simulator streams in), render_camera (its
+ * pose and the frame), render_ceiling (what the
  * ceiling radiates), render_sensor (light to 8 bits), render_truth (the
  * YAML beside each frame).
  *
@@ -34,6 +35,7 @@
 #include "render_path.h"
 #include "render_random.h"
 #include "render_set.h"
+#include "render_stream.h"
 #include "render_tour.h"
 #include "render_truth.h"
 #include "rl_calibfile.h"
@@ -49,7 +51,8 @@ static const char *help =
     "                      [--seed S] [--size 640x480] [--camera CAM.yaml] [--twin]\n"
     "                      [--mount X,Y,YAW] [--write-map FILE] [--write-camera FILE]\n"
     "                      [--write-robot FILE] [--rock SIGMA] [--site grid|irregular]\n"
-    "                      [--move ID,DX,DY] [--look SET] [--sheet PAPER]\n\n"
+    "                      [--move ID,DX,DY] [--look SET] [--sheet PAPER]\n"
+    "       ringloc-render --out DIR --path stream --site-map FILE [--newest] [...]\n\n"
     "Render ceiling fixtures with ground truth (NAME_NNN.png + NAME_NNN.yaml).\n"
     "  --set NAME      clean, cluttered, glare, border, clutter_only, dim, blur, motion,\n"
     "                  illum (vignetting, fall-off, a shadow, grey ink), degraded (blur\n"
@@ -87,7 +90,16 @@ static const char *help =
     "                  landmarks' extent, any heading) or --path tour (a drive over the\n"
     "                  site, 0.1 m a frame, carried elsewhere halfway) or --path edge (a\n"
     "                  drive out past the lower edge and along it: one row in view); its family,\n"
-    "                  diameter and ceiling height\n";
+    "                  diameter and ceiling height\n"
+    "  --path stream   follow a simulated robot: poses in on standard input, one line\n"
+    "                  each, 'T_US X Y YAW' (the pose's time in microseconds; m, m, rad\n"
+    "                  in the map's frame); each drawn at once to DIR/stream_NNNNNN.png\n"
+    "                  (+ .yaml truth) and announced on standard output as 'T_US\n"
+    "                  stream_NNNNNN.png' when written: the lines the firmware's sim\n"
+    "                  camera reads (a pipe in DIR), each frame stamped with its pose's\n"
+    "                  time. One frame per pose, in lockstep; a slow machine slows the\n"
+    "                  stream, or with --newest draws only the latest pose waiting\n"
+    "                  (the others skipped and counted on standard error at the end)\n";
 
 /* What the command line asks for. */
 typedef struct {
@@ -107,6 +119,7 @@ typedef struct {
     double mdx, mdy;
     const char *site_map;           /* --site-map FILE */
     rl_paper sheet;                 /* --sheet (name NULL: the set's) */
+    int newest;                     /* --newest: a stream's latest pose only */
 } render_opts;
 
 static void render_opts_defaults(render_opts *o)
@@ -188,6 +201,7 @@ static int render_option(int c, const char *arg, render_opts *o)
         if (!rl_paper_parse(arg, &o->sheet))
             return !rl_cli_fail(NULL, 2, "--sheet: '%s' is not %s or WxH in mm", arg, rl_paper_names());
         return 1;
+    case 'W': o->newest = 1; return 1;
     case 'M': o->map_out = arg; return 1;
     case 'C': o->cam_out = arg; return 1;
     case 'R': o->robot_out = arg; return 1;
@@ -208,7 +222,7 @@ static int render_args(int argc, char **argv, render_opts *o)
         {"write-robot", required_argument, 0, 'R'}, {"rock", required_argument, 0, 'r'},
         {"look", required_argument, 0, 'l'}, {"site", required_argument, 0, 'G'},
         {"move", required_argument, 0, 'V'}, {"site-map", required_argument, 0, 'E'},
-        {"sheet", required_argument, 0, 'P'},
+        {"sheet", required_argument, 0, 'P'}, {"newest", no_argument, 0, 'W'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     int c;
     render_opts_defaults(o);
@@ -339,6 +353,8 @@ typedef struct {
     render_set kind;      /* the set (RENDER_SET_PATH: a drive) */
     render_set look;      /* a drive's looks (RENDER_SET_PATH: its own) */
     render_pose *poses;   /* a large site's drive; NULL: none */
+    int stream;           /* --path stream: the pose below, from standard input */
+    double q[3];
 } render_plan;
 
 /* The frames o asks for into p: 0, or the exit code. */
@@ -349,6 +365,7 @@ static int plan_frames(const render_opts *o, const rl_site *site, render_plan *p
     int i;
     p->kind = p->look = RENDER_SET_PATH;
     p->poses = NULL;
+    p->stream = 0;
     if ((o->set == NULL) == (o->path == NULL))
         return rl_cli_fail(NULL, 2, "give --set NAME or --path KIND (see --help)");
     if (o->set) {
@@ -363,6 +380,12 @@ static int plan_frames(const render_opts *o, const rl_site *site, render_plan *p
         if ((i = render_set_by_name(o->look)) < 0 || (render_set)i == RENDER_SET_LENS)
             return rl_cli_fail(NULL, 2, "--look: '%s' is not a set's look (lens excepted)", o->look);
         p->look = (render_set)i;
+    }
+    if (strcmp(o->path, "stream") == 0) {
+        if (!site->has_map)
+            return rl_cli_fail(NULL, 2, "--path stream: give the site's map (--site-map FILE)");
+        p->stream = 1;
+        return 0;
     }
     if (!site->has_map) {
         if (render_path_pose(o->path, 0, 2, &x, &y, &yaw) != 0)
@@ -386,7 +409,9 @@ static int plan_frames(const render_opts *o, const rl_site *site, render_plan *p
 /* Frame k's robot pose and name (NAME_NNN). */
 static void frame_pose(const render_opts *o, const render_plan *p, int k, double *q, char *name, size_t len)
 {
-    if (p->poses) {
+    if (p->stream) {
+        memcpy(q, p->q, sizeof p->q);
+    } else if (p->poses) {
         q[0] = p->poses[k].x;
         q[1] = p->poses[k].y;
         q[2] = p->poses[k].yaw;
@@ -397,7 +422,10 @@ static void frame_pose(const render_opts *o, const render_plan *p, int k, double
         q[1] = render_random_uniform(2, 8);
         q[2] = render_random_uniform(-M_PI, M_PI);
     }
-    snprintf(name, len, "%s_%03d", p->kind == RENDER_SET_PATH ? o->path : o->set, k);
+    if (p->stream)
+        snprintf(name, len, "stream_%06d", k);
+    else
+        snprintf(name, len, "%s_%03d", p->kind == RENDER_SET_PATH ? o->path : o->set, k);
 }
 
 /* Frame k: its scene, drawn (and its twin), and its truth. 0, or the
@@ -443,8 +471,27 @@ static int render_frame(const render_opts *o, const render_plan *p, render_scene
     return render_truth_write(err, file, s, q[0], q[1], q[2]) != 0 ? 1 : 0; /* the line is printed */
 }
 
+/* --path stream: a frame per pose read, each announced when written.
+ * 0, or the exit code. */
+static int render_stream_frames(const render_opts *o, render_plan *p, render_scene *s, uint8_t *px)
+{
+    render_stream st;
+    uint64_t t;
+    int k, r = 0, got = 0;
+    render_stream_open(&st, 0, "standard input", o->newest);
+    for (k = 0; r == 0 && (got = render_stream_next(&st, &t, &p->q[0], &p->q[1], &p->q[2])) == 1; k++)
+        if ((r = render_frame(o, p, s, k, px)) == 0 &&
+            (printf("%llu stream_%06d.png\n", (unsigned long long)t, k) < 0 || fflush(stdout) != 0))
+            r = rl_cli_fail(NULL, 1, "standard output: %s", strerror(errno));
+    if (r == 0 && got < 0)
+        r = 1;
+    if (st.skipped > 0)
+        fprintf(stderr, "ringloc-render: %d frames drawn, %ld poses skipped as stale (--newest)\n", k, st.skipped);
+    return r;
+}
+
 /* Every frame into o->out. 0, or the exit code. */
-static int render_frames(const render_opts *o, const render_plan *p, render_scene *s)
+static int render_frames(const render_opts *o, render_plan *p, render_scene *s)
 {
     uint8_t *px;
     int k, r = 0;
@@ -452,7 +499,9 @@ static int render_frames(const render_opts *o, const render_plan *p, render_scen
         return rl_cli_fail(NULL, 1, "%s: %s", o->out, strerror(errno));
     if (render_ceiling_tags_open() != 0 || (px = malloc((size_t)s->cam.width * s->cam.height)) == NULL)
         return rl_cli_fail(NULL, 1, "out of memory");
-    for (k = 0; k < o->count && r == 0; k++)
+    if (p->stream)
+        r = render_stream_frames(o, p, s, px);
+    for (k = 0; !p->stream && k < o->count && r == 0; k++)
         r = render_frame(o, p, s, k, px);
     free(px);
     render_ceiling_tags_close();
