@@ -189,6 +189,24 @@ static long replay(rl_fuse *f, const rl_odolog *log, const frame_list *l, double
     return ticks;
 }
 
+/* The filter, its history HISTORY_S s of the log's odometry (at its mean
+ * rate); 0, or an exit code after the error line. */
+#define HISTORY_S 5.0
+static int start_filter(const char *C, rl_fuse *f, const rl_fuse_config *cfg, const rl_odolog *log,
+                        rl_fuse_entry **hist)
+{
+    double span = log->s[log->n - 1].t - log->s[0].t;
+    size_t n = rl_fuse_history_count(HISTORY_S, span > 0 ? (log->n - 1) / span : 1);
+    if (n == 0 || (*hist = malloc(n * sizeof **hist)) == NULL)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "no memory for %.0f s of odometry", HISTORY_S);
+    if (rl_fuse_init(f, cfg, *hist, n) != RL_OK) {
+        free(*hist);
+        *hist = NULL;
+        return rl_cli_fail(C, RL_EXIT_USAGE, "the filter's settings are out of range");
+    }
+    return 0;
+}
+
 static int by_arrival(const void *a, const void *b)
 {
     double x = ((const timed_frame *)a)->arrival, y = ((const timed_frame *)b)->arrival;
@@ -236,7 +254,8 @@ static int options(const char *C, int argc, char **argv, rl_fuse_config *cfg, co
 int rl_cmd_fuse(int argc, char **argv)
 {
     const char *C = "fuse", *odo = NULL, *out_path = NULL;
-    static rl_fuse f; /* 40 kB: not on the stack */
+    static rl_fuse f;
+    rl_fuse_entry *hist = NULL;
     rl_fuse_config cfg;
     double rate = 100, offset = 0;
     int baud = 115200, rc;
@@ -250,8 +269,6 @@ int rl_cmd_fuse(int argc, char **argv)
     rl_fuse_defaults(&cfg);
     if ((rc = options(C, argc, argv, &cfg, &odo, &out_path, &rate, &baud, &offset)) != 0)
         return rc < 0 ? 0 : rc;
-    if (rl_fuse_init(&f, &cfg) != RL_OK)
-        return rl_cli_fail(C, RL_EXIT_USAGE, "the filter's settings are out of range");
     if (rl_odolog_load(odo, &log, err, sizeof err) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
     if (!(log.s[log.n - 1].t - log.s[0].t <= FUSE_MAX_SPAN)) {
@@ -259,16 +276,22 @@ int rl_cmd_fuse(int argc, char **argv)
         rl_odolog_free(&log);
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s: its times span %.3g s, more than a day: do they jump?", odo, span);
     }
+    if ((rc = start_filter(C, &f, &cfg, &log, &hist)) != 0) {
+        rl_odolog_free(&log);
+        return rc;
+    }
     rl_stop_on_signals(0);
     memset(&l, 0, sizeof l);
     if ((rc = read_frames(C, argv[optind], baud, offset, &l)) != 0) {
         rl_odolog_free(&log);
         free(l.f);
+        free(hist);
         return rc;
     }
     if (l.n == 0) {
         rl_odolog_free(&log);
         free(l.f);
+        free(hist);
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s: no pose frames (%lu status frames, %lu damaged)",
                            argv[optind], l.status, l.damaged);
     }
@@ -276,6 +299,7 @@ int rl_cmd_fuse(int argc, char **argv)
     if (out_path && rl_outfile_open(&o, out_path, err, sizeof err) != RL_OK) {
         rl_odolog_free(&log);
         free(l.f);
+        free(hist);
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
     }
     if (out_path)
@@ -283,6 +307,7 @@ int rl_cmd_fuse(int argc, char **argv)
     ticks = replay(&f, &log, &l, rate, out, &unfed);
     rl_odolog_free(&log);
     free(l.f);
+    free(hist);
     if (ticks == 0) { /* the user's old file stays as it was */
         if (out_path)
             rl_outfile_abort(&o);

@@ -157,6 +157,7 @@ static int connect_to(int port)
 int main(int argc, char **argv)
 {
     static rl_fuse f;
+    static rl_fuse_entry hist[64];
     rl_fuse_config cfg;
     rl_arcos_reader r;
     rl_decoder d;
@@ -172,7 +173,7 @@ int main(int argc, char **argv)
         return fail("cannot reach the stand-in (port, pty) or write the log");
     rl_fuse_defaults(&cfg);
     cfg.wheel_noise = 0.0005;
-    if (rl_fuse_init(&f, &cfg) != RL_OK)
+    if (rl_fuse_init(&f, &cfg, hist, rl_fuse_history_count(2.5, 10)) != RL_OK) /* 10 SIPs a second */
         return fail("rl_fuse_init");
     rl_arcos_reader_init(&r);
     rl_decoder_init(&d);

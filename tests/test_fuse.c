@@ -9,6 +9,7 @@
 #include "rl_fuse_kf.h"
 
 static rl_fuse f;
+static rl_fuse_entry hist[128];
 
 static void setup(double wheel_noise)
 {
@@ -16,7 +17,7 @@ static void setup(double wheel_noise)
     rl_fuse_defaults(&cfg);
     cfg.wheel_noise = wheel_noise;
     cfg.time_sigma = 0;
-    assert_int_equal(rl_fuse_init(&f, &cfg), RL_OK);
+    assert_int_equal(rl_fuse_init(&f, &cfg, hist, 128), RL_OK);
 }
 
 static rl_fuse_frame frame(double t, double x, double y, double yaw, double sd)
@@ -185,7 +186,7 @@ static void test_refused_and_counted(void **state)
     fr.t = 0.06; /* a second one replaces it: counted */
     assert_int_equal(rl_fuse_frame_add(&f, &fr), RL_OK);
     assert_int_equal((int)f.stats.waiting_lost, 1);
-    for (k = 0; k < 2 * RL_FUSE_HISTORY; k++)
+    for (k = 0; k < 256; k++) /* twice the history */
         assert_int_equal(rl_fuse_odometry(&f, k * 0.01, 0, 0, 0), RL_OK);
     assert_int_equal((int)f.stats.applied, 1); /* fused once the odometry passed its time */
     assert_int_equal(rl_fuse_odometry(&f, 0.0, 0, 0, 0), RL_EINVAL); /* time not increasing */
@@ -216,8 +217,9 @@ static void test_refused_and_counted(void **state)
     assert_true(ev.fate == RL_FUSE_RESTARTED && ev.n == n + 1 && ev.d2 > 1e4);
     assert_int_equal((int)f.stats.recoveries, 1);
     rl_fuse_defaults(&cfg);
+    assert_int_equal(rl_fuse_init(&f, &cfg, hist, 1), RL_EINVAL); /* no room for a past */
     cfg.track = 0;
-    assert_int_equal(rl_fuse_init(&f, &cfg), RL_EINVAL);
+    assert_int_equal(rl_fuse_init(&f, &cfg, hist, 128), RL_EINVAL);
 }
 
 int main(void)

@@ -1,6 +1,7 @@
 /* rl_fuse: see rl_fuse.h. The frames' road: waiting for the odometry,
  * the gate, the restart after the robot was carried; the arithmetic is
  * rl_fuse_kf.c, the past rl_fuse_hist.c. */
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 #include "rl_fuse.h"
@@ -27,15 +28,26 @@ void rl_fuse_defaults(rl_fuse_config *cfg)
     cfg->max_extrapolate = 0.5;
 }
 
-rl_err rl_fuse_init(rl_fuse *f, const rl_fuse_config *cfg)
+size_t rl_fuse_history_count(double seconds, double odo_hz)
+{
+    double n = ceil(seconds * odo_hz) + 2; /* a sample before the oldest frame, the newest */
+    if (!(seconds >= 0) || !(odo_hz > 0) || !(n <= INT_MAX))
+        return 0;
+    return (size_t)n;
+}
+
+rl_err rl_fuse_init(rl_fuse *f, const rl_fuse_config *cfg, rl_fuse_entry *hist, size_t n)
 {
     if (!(cfg->track > 0) || !(cfg->wheel_noise >= 0) || !(cfg->scale_sigma >= 0) ||
         !(cfg->turn_sigma >= 0) || !(cfg->scale_drift >= 0) || !(cfg->time_sigma >= 0) ||
         !(cfg->sigma_xy > 0) || !(cfg->sigma_yaw > 0) || !(cfg->floor_xy >= 0) ||
         !(cfg->floor_yaw >= 0) || !(cfg->gate > 0) || cfg->recover_frames < 0 ||
-        !(cfg->max_extrapolate >= 0))
+        !(cfg->max_extrapolate >= 0) || hist == NULL || n < 2 || n > INT_MAX)
         return RL_EINVAL;
     memset(f, 0, sizeof *f);
+    memset(hist, 0, n * sizeof *hist);
+    f->h = hist;
+    f->cap = (int)n;
     f->cfg = *cfg;
     f->head = -1;
     f->last_frame_t = -HUGE_VAL;

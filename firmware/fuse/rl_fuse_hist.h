@@ -7,6 +7,11 @@
  *   double o[3] = {0, 0, 0}, R[3][3];
  *   rl_fuse_frame fr = {1.0, 0, 0, 0, 0.001, 0.001, 0.001, 0};
  *   static rl_fuse f;
+ *   static rl_fuse_entry hist[64];
+ *   rl_fuse_config cfg;
+ *   rl_fuse_defaults(&cfg);
+ *   if (rl_fuse_init(&f, &cfg, hist, 64) != RL_OK)
+ *       return;
  *   rl_fuse_hist_push(&f, 1.0, o);                 // an odometry sample
  *   if (rl_fuse_hist_state_at(&f, fr.t, &s) >= 0) {
  *       rl_fuse_hist_frame_cov(&f, &fr, s.m[2], R);
