@@ -22,8 +22,9 @@
 #include "rl_stop.h"
 
 static const char *fuse_help =
-    "usage: ringloc fuse --odometry LOG [--rate 100] [--baud 115200] [--time-offset S]\n"
-    "                    [--track 0.33] [--wheel-noise 0.001] [--out FILE] FRAMES\n\n"
+    "usage: ringloc fuse --odometry LOG [--arrivals FILE | --time-offset S] [--rate 100]\n"
+    "                    [--baud 115200] [--track 0.33] [--wheel-noise 0.001] [--out FILE]\n"
+    "                    [--fates FILE] FRAMES\n\n"
     "Fuse a robot's odometry with ringloc's pose frames (rl_fuse: each frame at its capture\n"
     "time, the odometry since replayed, implausible frames rejected, the odometry's wheel\n"
     "and track scales learned) and print the fused pose at RATE per second, one JSON line\n"
@@ -32,12 +33,21 @@ static const char *fuse_help =
     "   \"y\": 0.0003, \"yaw\": 0.00021}, \"scale\": 1.0098, \"turn\": 0.9903}\n"
     "and on exit what became of the frames (applied, rejected, ...).\n\n"
     "  --odometry LOG  one sample a line, 't x y yaw' (s, m, m, rad), on the controller's clock\n"
-    "  FRAMES          pose frames as 'ringloc monitor' reads them: a recorded file, whose\n"
-    "                  frames' capture time is their time_ms on the controller's clock plus\n"
-    "                  --time-offset; or a serial device or pty, read until it closes (or\n"
+    "  FRAMES          pose frames as 'ringloc monitor' reads them: a recorded file (see\n"
+    "                  --arrivals), or a serial device or pty, read until it closes (or\n"
     "                  Ctrl-C), each frame stamped on arrival with this computer's monotonic\n"
-    "                  clock (capture = arrival - latency - the bytes' time at --baud), which\n"
-    "                  the odometry log must then share\n"
+    "                  clock, which the odometry log must then share; the capture times are\n"
+    "                  then found from the frames' time_ms (the camera board's clock) and\n"
+    "                  the arrivals, as a controller does (rl_fuse_msg_add)\n"
+    "  --arrivals FILE when each recorded frame arrived: one line per pose frame of FRAMES,\n"
+    "                  in order, 'seq arrival_seconds' on the odometry's clock ('ringloc\n"
+    "                  monitor --arrivals' writes it): the drive replayed as the controller\n"
+    "                  saw it. Without it, a recorded frame's capture time is its time_ms\n"
+    "                  on the odometry's clock plus --time-offset S\n"
+    "  --fates FILE    one line per frame as its fate is decided: 'seq capture_s fate d2\n"
+    "                  clock_reset' (fate: applied, rejected, restarted (the robot was\n"
+    "                  carried), too-old, out-of-order, lost, untimed (the board's clock\n"
+    "                  not yet known); d2: the squared Mahalanobis distance)\n"
     "  --rate HZ       ticks a second (1 .. 1000)\n"
     "  --track M       the odometry's nominal track width (m)\n"
     "  --wheel-noise M each wheel's travel error after 1 m (m); rl_fuse.h has the rest\n"
@@ -46,12 +56,14 @@ static const char *fuse_help =
 typedef struct {
     double arrival; /* when it can be known, on the controller's clock */
     rl_fuse_frame fr;
+    rl_msg m;       /* as decoded */
 } timed_frame;
 
 typedef struct {
     timed_frame *f;
     size_t n, cap;
     unsigned long status, damaged;
+    int by_clock;   /* capture times from time_ms and the arrivals (rl_fuse_msg_add) */
 } frame_list;
 
 static int push(frame_list *l, const timed_frame *tf)
@@ -82,6 +94,7 @@ static int take(frame_list *l, rl_decoder *d, const uint8_t *buf, size_t n, int 
             l->status++;
             continue;
         }
+        tf.m = m;
         if (live) {
             tf.arrival = rl_clock_now_s();
             rl_fuse_frame_from_msg(&m, tf.arrival, baud, &tf.fr);
@@ -95,6 +108,44 @@ static int take(frame_list *l, rl_decoder *d, const uint8_t *buf, size_t n, int 
         if (push(l, &tf) != 0)
             return -1;
     }
+    return 0;
+}
+
+/* The arrivals of l's frames from FILE ('seq arrival_seconds', one line a
+ * pose frame, in order): 0, or an exit code after the error line. */
+static int read_arrivals(const char *C, const char *path, frame_list *l)
+{
+    char line[256], rest;
+    size_t k = 0;
+    long no = 0;
+    unsigned seq;
+    double a;
+    FILE *f = fopen(path, "r");
+    if (f == NULL)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: %s", path, strerror(errno));
+    while (fgets(line, sizeof line, f)) {
+        no++;
+        if (sscanf(line, " %c", &rest) != 1 || rest == '#')
+            continue;
+        if (sscanf(line, "%u %lf %c", &seq, &a, &rest) != 2 || !isfinite(a) || seq > 65535) {
+            fclose(f);
+            return rl_cli_fail(C, RL_EXIT_FAIL, "%s:%ld: expected 'seq arrival_seconds'", path, no);
+        }
+        if (k >= l->n || l->f[k].m.seq != seq) {
+            fclose(f);
+            if (k >= l->n)
+                return rl_cli_fail(C, RL_EXIT_FAIL, "%s:%ld: more arrivals than the %lu pose frames", path,
+                                   no, (unsigned long)l->n);
+            return rl_cli_fail(C, RL_EXIT_FAIL, "%s:%ld: sequence %u, but pose frame %lu is %u: not "
+                               "this recording's arrivals?", path, no, seq, (unsigned long)k + 1, l->f[k].m.seq);
+        }
+        l->f[k++].arrival = a;
+    }
+    fclose(f);
+    if (k != l->n)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: %lu arrivals for %lu pose frames", path, (unsigned long)k,
+                           (unsigned long)l->n);
+    l->by_clock = 1;
     return 0;
 }
 
@@ -149,7 +200,25 @@ static int read_frames(const char *C, const char *path, int baud, double offset,
     }
     close(fd);
     l->damaged = d.bad;
+    l->by_clock = live;
     return 0;
+}
+
+static const char *fate_name(rl_fuse_fate fate)
+{
+    static const char *names[] = {"none", "applied", "rejected", "restarted", "too-old", "out-of-order",
+                                  "lost", "untimed"};
+    return (unsigned)fate < sizeof names / sizeof names[0] ? names[fate] : "?";
+}
+
+/* the fate decided since the last call, if any, as a line of `fates` */
+static void log_fate(const rl_fuse *f, unsigned long *seen, FILE *fates)
+{
+    rl_fuse_event ev;
+    rl_fuse_last_event(f, &ev);
+    if (fates && ev.n != *seen)
+        fprintf(fates, "%u %.4f %s %.2f %d\n", ev.seq, ev.t, fate_name(ev.fate), ev.d2, ev.clock_reset);
+    *seen = ev.n;
 }
 
 static void print_pose(FILE *out, const rl_fuse_pose *p)
@@ -166,9 +235,11 @@ static void print_pose(FILE *out, const rl_fuse_pose *p)
 /* The controller's loop: odometry and frames in the order they become
  * known, the pose at every tick, until SIGINT or SIGTERM; returns the
  * ticks written, *unfed the frames that arrived after the log's end. */
-static long replay(rl_fuse *f, const rl_odolog *log, const frame_list *l, double rate, FILE *out, size_t *unfed)
+static long replay(rl_fuse *f, const rl_odolog *log, const frame_list *l, double rate, int baud, FILE *out,
+                   FILE *fates, size_t *unfed)
 {
     size_t io = 0, jf = 0;
+    unsigned long seen = 0;
     long k, ticks = 0, nt = (long)floor((log->s[log->n - 1].t - log->s[0].t) * rate + 1e-9);
     for (k = 0; k <= nt && !rl_stop_requested(); k++) {
         double t = log->s[0].t + k / rate;
@@ -177,8 +248,12 @@ static long replay(rl_fuse *f, const rl_odolog *log, const frame_list *l, double
             if (jf >= l->n || (io < log->n && log->s[io].t <= l->f[jf].arrival)) {
                 const rl_odosample *s = &log->s[io++];
                 (void)!rl_fuse_odometry(f, s->t, s->x, s->y, s->yaw); /* times checked on loading */
+            } else if (l->by_clock) {
+                (void)!rl_fuse_msg_add(f, &l->f[jf].m, l->f[jf].arrival, baud); /* in f->stats */
+                jf++;
             } else
                 (void)!rl_fuse_frame_add(f, &l->f[jf++].fr); /* outcomes counted in f->stats */
+            log_fate(f, &seen, fates);
         }
         if (rl_fuse_pose_at(f, t, &p) == RL_OK) {
             print_pose(out, &p);
@@ -215,9 +290,11 @@ static int by_arrival(const void *a, const void *b)
 
 /* the options into cfg and the rest; 0, or an exit code after the error line */
 static int options(const char *C, int argc, char **argv, rl_fuse_config *cfg, const char **odo,
-                   const char **out, double *rate, int *baud, double *offset)
+                   const char **out, double *rate, int *baud, double *offset, const char **arrivals,
+                   const char **fates)
 {
     static const struct option opts[] = {
+        {"arrivals", required_argument, 0, 'a'}, {"fates", required_argument, 0, 'F'},
         {"odometry", required_argument, 0, 'o'}, {"rate", required_argument, 0, 'r'},
         {"baud", required_argument, 0, 'b'},     {"time-offset", required_argument, 0, 'T'},
         {"track", required_argument, 0, 't'},    {"wheel-noise", required_argument, 0, 'w'},
@@ -229,6 +306,8 @@ static int options(const char *C, int argc, char **argv, rl_fuse_config *cfg, co
         int ok = 1;
         switch (c) {
         case 'o': *odo = optarg; break;
+        case 'a': *arrivals = optarg; break;
+        case 'F': *fates = optarg; break;
         case 'O': *out = optarg; break;
         case 'r': ok = rl_cli_double(C, "--rate", optarg, 1, 1000, rate); break;
         case 'T': ok = rl_cli_double(C, "--time-offset", optarg, -1e9, 1e9, offset); break;
@@ -253,7 +332,8 @@ static int options(const char *C, int argc, char **argv, rl_fuse_config *cfg, co
 
 int rl_cmd_fuse(int argc, char **argv)
 {
-    const char *C = "fuse", *odo = NULL, *out_path = NULL;
+    const char *C = "fuse", *odo = NULL, *out_path = NULL, *arrivals = NULL, *fates_path = NULL;
+    rl_outfile fo;
     static rl_fuse f;
     rl_fuse_entry *hist = NULL;
     rl_fuse_config cfg;
@@ -267,7 +347,7 @@ int rl_cmd_fuse(int argc, char **argv)
     char err[1200];
     FILE *out = stdout;
     rl_fuse_defaults(&cfg);
-    if ((rc = options(C, argc, argv, &cfg, &odo, &out_path, &rate, &baud, &offset)) != 0)
+    if ((rc = options(C, argc, argv, &cfg, &odo, &out_path, &rate, &baud, &offset, &arrivals, &fates_path)) != 0)
         return rc < 0 ? 0 : rc;
     if (rl_odolog_load(odo, &log, err, sizeof err) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
@@ -288,15 +368,19 @@ int rl_cmd_fuse(int argc, char **argv)
         free(hist);
         return rc;
     }
-    if (l.n == 0) {
+    if (l.n == 0 || (arrivals && (rc = read_arrivals(C, arrivals, &l)) != 0)) {
         rl_odolog_free(&log);
         free(l.f);
         free(hist);
+        if (l.n > 0)
+            return rc;
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s: no pose frames (%lu status frames, %lu damaged)",
                            argv[optind], l.status, l.damaged);
     }
     qsort(l.f, l.n, sizeof *l.f, by_arrival);
-    if (out_path && rl_outfile_open(&o, out_path, err, sizeof err) != RL_OK) {
+    if ((out_path && rl_outfile_open(&o, out_path, err, sizeof err) != RL_OK) ||
+        (fates_path && rl_outfile_open(&fo, fates_path, err, sizeof err) != RL_OK &&
+         (!out_path || (rl_outfile_abort(&o), 1)))) {
         rl_odolog_free(&log);
         free(l.f);
         free(hist);
@@ -304,22 +388,30 @@ int rl_cmd_fuse(int argc, char **argv)
     }
     if (out_path)
         out = o.f;
-    ticks = replay(&f, &log, &l, rate, out, &unfed);
+    ticks = replay(&f, &log, &l, rate, baud, out, fates_path ? fo.f : NULL, &unfed);
     rl_odolog_free(&log);
     free(l.f);
     free(hist);
-    if (ticks == 0) { /* the user's old file stays as it was */
+    if (ticks == 0) { /* the user's old files stay as they were */
         if (out_path)
             rl_outfile_abort(&o);
+        if (fates_path)
+            rl_outfile_abort(&fo);
         return rl_cli_fail(C, RL_EXIT_FAIL, "no pose: %s covers no time the frames could be fused in", odo);
+    }
+    if (fates_path && rl_outfile_commit(&fo, err, sizeof err) != RL_OK) {
+        if (out_path)
+            rl_outfile_abort(&o);
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
     }
     if (out_path && rl_outfile_commit(&o, err, sizeof err) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
     fprintf(stderr, "ringloc fuse: %ld poses; %lu pose frames: %lu applied, %lu rejected, %lu restarts "
-                    "(carried), %lu older than the odometry kept, %lu out of order, %lu past the odometry's "
-                    "end; %lu status frames, %lu damaged\n",
+                    "(carried), %lu older than the odometry kept, %lu out of order, %lu before the board's "
+                    "clock was known, %lu clock resets, %lu past the odometry's end; %lu status frames, "
+                    "%lu damaged\n",
             ticks, (unsigned long)l.n, f.stats.applied, f.stats.rejected, f.stats.recoveries,
-            f.stats.too_old, f.stats.out_of_order,
+            f.stats.too_old, f.stats.out_of_order, f.stats.untimed, f.stats.clock_resets,
             f.stats.waiting_lost + (unsigned long)f.has_waiting + (unsigned long)unfed, l.status, l.damaged);
     return 0;
 }

@@ -64,7 +64,7 @@ if [ "$ARCH" = "$(dpkg --print-architecture)" ] && command -v pkg-config >/dev/n
       printf 'int main(void)\n{\n'; sed 's/return;/return 1;/' "$T/body.c"; printf '    return 0;\n}\n'; } >"$T/use_fuse.c"
     flags=$(PKG_CONFIG_PATH="$T/fuse/usr/lib/pkgconfig" pkg-config --cflags --libs ringloc-fuse)
     # shellcheck disable=SC2086 # the flags' words
-    check "a program builds against ringloc-fuse.pc and runs on its shared library" sh -c "$CC -std=c99 -Wall -Werror -o '$T/use_fuse' '$T/use_fuse.c' $flags && LD_LIBRARY_PATH='$T/fuse/usr/lib' '$T/use_fuse'"
+    check "a program builds against ringloc-fuse.pc and runs on its shared library" sh -c "$CC -std=c99 -Wall -Werror -DRL_FUSE_HISTORY=16 -o '$T/use_fuse' '$T/use_fuse.c' $flags && LD_LIBRARY_PATH='$T/fuse/usr/lib' '$T/use_fuse'"
 fi
 check "configuration names the board's serial device" grep -q "device: $SERIAL" "$T/root/etc/ringloc/ringloc.yaml"
 unit="$T/root/lib/systemd/system/ringloc.service"
