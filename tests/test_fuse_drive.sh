@@ -76,4 +76,9 @@ printf '0 0 0 0\n0.1 0.1 0 0\n0.05 0.2 0 0\n' >"$T/bad_odo.txt"
 [ $? = 2 ] && grep -q -- "--rate: 0 is out of range" "$T/err" || { echo "FAIL: bad rate: $(cat "$T/err")"; fail=1; }
 "$R" fuse --odometry "$T/odometry.txt" "$T/missing.bin" >/dev/null 2>"$T/err"
 [ $? = 1 ] && grep -q "missing.bin" "$T/err" || { echo "FAIL: missing frames: $(cat "$T/err")"; fail=1; }
+# `ringloc monitor --record --arrivals`: the bytes kept as read, each pose
+# frame's sequence number with its arrival (here a file: all at once)
+"$R" monitor --record "$T/rec.bin" --arrivals "$T/rec_arrivals.txt" "$L/frames.bin" >/dev/null 2>"$T/err" &&
+    cmp -s "$T/rec.bin" "$L/frames.bin" && [ "$(cut -d' ' -f1 "$T/rec_arrivals.txt")" = "$(cut -d' ' -f1 "$L/arrivals.txt")" ] ||
+    { echo "FAIL: monitor --record --arrivals: $(cat "$T/err")"; fail=1; }
 [ $rc = 0 ] && [ $fail = 0 ]
