@@ -23,7 +23,7 @@
 
 static const char *fuse_help =
     "usage: ringloc fuse --odometry LOG [--arrivals FILE | --time-offset S] [--rate 100]\n"
-    "                    [--baud 115200] [--track 0.33] [--wheel-noise 0.001] [--out FILE]\n"
+    "                    [--baud 115200] [--track 0.33] [--wheel-noise 0.0002] [--out FILE]\n"
     "                    [--fates FILE] FRAMES\n\n"
     "Fuse a robot's odometry with ringloc's pose frames (rl_fuse: each frame at its capture\n"
     "time, the odometry since replayed, implausible frames rejected, the odometry's wheel\n"

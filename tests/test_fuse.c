@@ -170,6 +170,32 @@ static void test_scale_learned(void **state)
     assert_true(fabs(p.x - 10.0) < 0.003);
 }
 
+/* A warm start: the odometry 2% short, the scale 1.02 learned yesterday
+ * given back: from a frame at x = 0 the pose 1 s later at 1 m/s is
+ * odometry 1 / 1.02 times 1.02 = 1 m, and the fused speed 1 m/s; a cold
+ * start (scale 1) is 1 / 1.02 m and m/s. */
+static void test_warm_start(void **state)
+{
+    rl_fuse_config cfg;
+    rl_fuse_frame fr;
+    rl_fuse_pose p;
+    int k, warm;
+    (void)state;
+    for (warm = 0; warm <= 1; warm++) {
+        rl_fuse_defaults(&cfg);
+        cfg.scale = warm ? 1.02 : 1;
+        cfg.scale_sigma = 0.001;
+        assert_int_equal(rl_fuse_init(&f, &cfg, hist, 128), RL_OK);
+        for (k = 0; k <= 100; k++)
+            assert_int_equal(rl_fuse_odometry(&f, k * 0.01, k * 0.01 / 1.02, 0, 0), RL_OK);
+        fr = frame(0.0, 0.0, 0.0, 0.0, 0.001);
+        assert_int_equal(rl_fuse_frame_add(&f, &fr), RL_OK);
+        assert_int_equal(rl_fuse_pose_at(&f, 1.0, &p), RL_OK);
+        assert_true(fabs(p.x - (warm ? 1.0 : 1 / 1.02)) < 1e-9);
+        assert_true(fabs(p.v - (warm ? 1.0 : 1 / 1.02)) < 1e-9 && fabs(p.w) < 1e-12);
+    }
+}
+
 static void test_refused_and_counted(void **state)
 {
     rl_fuse_event ev;
@@ -231,6 +257,7 @@ int main(void)
         cmocka_unit_test(test_capture_time),
         cmocka_unit_test(test_late_frame_replayed),
         cmocka_unit_test(test_scale_learned),
+        cmocka_unit_test(test_warm_start),
         cmocka_unit_test(test_refused_and_counted),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

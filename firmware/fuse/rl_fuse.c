@@ -14,7 +14,8 @@
 void rl_fuse_defaults(rl_fuse_config *cfg)
 {
     cfg->track = 0.33;
-    cfg->wheel_noise = 0.001;
+    cfg->wheel_noise = 0.0002;
+    cfg->scale = cfg->turn = 1;
     cfg->scale_sigma = 0.03;
     cfg->turn_sigma = 0.05;
     cfg->scale_drift = 1e-4;
@@ -42,7 +43,7 @@ rl_err rl_fuse_init(rl_fuse *f, const rl_fuse_config *cfg, rl_fuse_entry *hist, 
         !(cfg->turn_sigma >= 0) || !(cfg->scale_drift >= 0) || !(cfg->time_sigma >= 0) ||
         !(cfg->sigma_xy > 0) || !(cfg->sigma_yaw > 0) || !(cfg->floor_xy >= 0) ||
         !(cfg->floor_yaw >= 0) || !(cfg->gate > 0) || cfg->recover_frames < 0 ||
-        !(cfg->max_extrapolate >= 0) || hist == NULL || n < 2 || n > INT_MAX)
+        !(cfg->max_extrapolate >= 0) || !(cfg->scale > 0) || !(cfg->turn > 0) || hist == NULL || n < 2 || n > INT_MAX)
         return RL_EINVAL;
     memset(f, 0, sizeof *f);
     memset(hist, 0, n * sizeof *hist);
@@ -103,8 +104,8 @@ static void start_from(rl_fuse *f, const rl_fuse_frame *fr)
 {
     rl_fuse_kf_state cur, s;
     double z[3], R[3][3];
-    double sc = 1, sv = f->cfg.scale_sigma * f->cfg.scale_sigma;
-    double tu = 1, tv = f->cfg.turn_sigma * f->cfg.turn_sigma;
+    double sc = f->cfg.scale, sv = f->cfg.scale_sigma * f->cfg.scale_sigma;
+    double tu = f->cfg.turn, tv = f->cfg.turn_sigma * f->cfg.turn_sigma;
     if (f->has_pose && rl_fuse_hist_state_at(f, fr->t, &cur) == 0) {
         sc = cur.m[3];
         sv = cur.P[3][3];
@@ -271,6 +272,9 @@ rl_err rl_fuse_pose_at(const rl_fuse *f, double t, rl_fuse_pose *p)
     p->turn = s.m[4];
     p->scale_sd = sqrt(s.P[3][3]);
     p->turn_sd = sqrt(s.P[4][4]);
+    rl_fuse_hist_rate(f, t, &p->v, &p->w);
+    p->v *= p->scale;
+    p->w *= p->turn;
     return r == 0 ? RL_OK : RL_ERANGE;
 }
 

@@ -68,7 +68,7 @@ int rl_fuse_hist_odo_at(const rl_fuse *f, double t, double *o)
 }
 
 /* the odometry's speed (m/s) and turn rate (rad/s) around time t */
-static void odo_rate(const rl_fuse *f, double t, double *v, double *w)
+void rl_fuse_hist_rate(const rl_fuse *f, double t, double *v, double *w)
 {
     int k = rl_fuse_hist_find(f, t);
     const rl_fuse_entry *a, *b;
@@ -147,7 +147,7 @@ void rl_fuse_hist_frame_cov(const rl_fuse *f, const rl_fuse_frame *fr, double ya
     double sa = fr->syaw > 0 ? fr->syaw : c->sigma_yaw, v, w, u[3];
     double t2 = c->time_sigma * c->time_sigma + fr->st * fr->st;
     int i, j;
-    odo_rate(f, fr->t, &v, &w);
+    rl_fuse_hist_rate(f, fr->t, &v, &w);
     u[0] = v * cos(yaw);
     u[1] = v * sin(yaw);
     u[2] = w;

@@ -45,6 +45,10 @@ int rl_fuse_hist_state_at(const rl_fuse *f, double t, rl_fuse_kf_state *s);
  * becomes the anchor; every later sample's state is recomputed from it. */
 void rl_fuse_hist_anchor(rl_fuse *f, double t, const rl_fuse_kf_state *s);
 
+/* the odometry's speed (m/s) and turn rate (rad/s) over the samples
+ * around t (the newest two past them; 0 with fewer than two) */
+void rl_fuse_hist_rate(const rl_fuse *f, double t, double *v, double *w);
+
 /* a frame's covariance R: its sigmas (or the config's), the floor, and
  * the capture time's error carried by the motion at heading yaw */
 void rl_fuse_hist_frame_cov(const rl_fuse *f, const rl_fuse_frame *fr, double yaw, double R[3][3]);

@@ -73,8 +73,13 @@ extern "C" {
 
 typedef struct {
     double track;        /* the odometry's nominal track width, m (0.33) */
-    double wheel_noise;  /* each wheel's travel error after 1 m, m (sd grows as sqrt(distance); 0.001) */
-    double scale_sigma;  /* the distance scale's uncertainty before any frame (0.03) */
+    double wheel_noise;  /* each wheel's travel error after 1 m, m (sd grows as sqrt(distance);
+                            0.0002: through 3 m without landmarks the error is 0.7 .. 1.2 times
+                            the sigma reported, with wheels that noisy, test_fuse_drive) */
+    double scale, turn;  /* the odometry's distance and turn scales at the start (1, 1): a warm
+                            start gives those learned before (rl_fuse_pose.scale, .turn) */
+    double scale_sigma;  /* the distance scale's uncertainty before any frame (0.03; after a
+                            warm start, what a day may change: rl_fuse_pose.scale_sd or more) */
     double turn_sigma;   /* the turn scale's (0.05) */
     double scale_drift;  /* the two scales' random walk, sd per sqrt(m) driven (1e-4) */
     double time_sigma;   /* error of a frame's capture time, s (0.002): v*dt added to its sigma */
@@ -189,6 +194,8 @@ typedef struct {
     double cov[3][3];     /* of x, y, yaw */
     double scale, turn;   /* the odometry's learned distance and turn scales */
     double scale_sd, turn_sd;
+    double v, w;          /* the fused velocity: forward, m/s, and turn rate, rad/s (the
+                             odometry's around t, times the learned scales) */
 } rl_fuse_pose;
 
 /* Every field of cfg at its default (in parentheses above). */
