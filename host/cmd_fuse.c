@@ -30,7 +30,10 @@ static const char *fuse_help =
     "and track scales learned) and print the fused pose at RATE per second, one JSON line\n"
     "per tick from the first frame's arrival to the log's last sample:\n"
     "  {\"t\": 12.340, \"x\": 1.2034, \"y\": -0.5021, \"yaw\": 0.31204, \"sigma\": {\"x\": 0.0004,\n"
-    "   \"y\": 0.0003, \"yaw\": 0.00021}, \"scale\": 1.0098, \"turn\": 0.9903}\n"
+    "   \"y\": 0.0003, \"yaw\": 0.00021}, \"scale\": 1.0098, \"turn\": 0.9903, \"v\": 0.9981,\n"
+    "   \"w\": 1.6612}\n"
+    "(scale, turn: the odometry's learned scales; v, w: the fused speed, m/s, and turn rate,\n"
+    "rad/s)\n"
     "and on exit what became of the frames (applied, rejected, ...).\n\n"
     "  --odometry LOG  one sample a line, 't x y yaw' (s, m, m, rad), on the controller's clock\n"
     "  FRAMES          pose frames as 'ringloc monitor' reads them: a recorded file (see\n"
@@ -224,9 +227,9 @@ static void log_fate(const rl_fuse *f, unsigned long *seen, FILE *fates)
 static void print_pose(FILE *out, const rl_fuse_pose *p)
 {
     fprintf(out, "{\"t\": %.3f, \"x\": %.4f, \"y\": %.4f, \"yaw\": %.5f, \"sigma\": {\"x\": %.4f, "
-                 "\"y\": %.4f, \"yaw\": %.5f}, \"scale\": %.4f, \"turn\": %.4f}\n",
+                 "\"y\": %.4f, \"yaw\": %.5f}, \"scale\": %.4f, \"turn\": %.4f, \"v\": %.4f, \"w\": %.4f}\n",
             p->t, p->x, p->y, p->yaw, sqrt(p->cov[0][0]), sqrt(p->cov[1][1]), sqrt(p->cov[2][2]),
-            p->scale, p->turn);
+            p->scale, p->turn, p->v, p->w);
 }
 
 /* The longest odometry log replayed (a day): longer, its times jump. */
