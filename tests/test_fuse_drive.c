@@ -176,6 +176,15 @@ typedef struct {
     double kidnap_at;
 } line_case;
 
+/* the real line's drive: 37 s, 15 ms in the latency field, the board's clock */
+static void line_defaults(fs_scenario *sc)
+{
+    fs_scenario_defaults(sc);
+    sc->laps = 10;
+    sc->delay = 0.015;
+    sc->from_clock = 1;
+}
+
 static void line_row(const char *how, const line_case *c, const fs_result *r)
 {
     printf("%-34s %-10s fused %6.2f mm RMS, p95 %6.2f mm, max %6.2f mm | reset-on-arrival %6.2f mm | "
@@ -205,9 +214,7 @@ static void real_line(const fs_drive *ci)
         for (old = 1; old >= 0; old--) {
             const line_case *c = &cases[i];
             fs_scenario sc;
-            fs_scenario_defaults(&sc);
-            sc.laps = 10;
-            sc.delay = 0.015;
+            line_defaults(&sc);
             sc.extra_max = c->extra_max;
             sc.extra_fixed = c->extra_fixed;
             sc.ftdi_tick = c->ftdi_tick;
@@ -273,11 +280,8 @@ int main(int argc, char **argv)
     { /* the real line as `ringloc fuse --arrivals` takes it (EXPORT_DIR/line) */
         static char dir[1024];
         fs_scenario sc;
-        fs_scenario_defaults(&sc);
-        sc.laps = 10;
-        sc.delay = 0.015;
+        line_defaults(&sc);
         sc.extra_max = 0.1;
-        sc.from_clock = 1;
         snprintf(dir, sizeof dir, "%s/line", argv[6]);
         sc.export_dir = dir;
         check(fs_run(&ci, &sc, &res) == 0, "export of the real line for ringloc fuse");
