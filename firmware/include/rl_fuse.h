@@ -6,8 +6,9 @@
  * (x, y, yaw) and the odometry's two systematic errors, a distance scale
  * (the wheels' diameter) and a turn scale (the track width): an extended
  * Kalman filter whose past (the last odometry samples, each with the state
- * after it, in the caller's memory: rl_fuse_history_count) lets a frame that arrives late be applied at the
- * instant its image was taken, the odometry since then replayed on top.
+ * after it, in the caller's memory: rl_fuse_history_count) lets a frame
+ * that arrives late be applied at the instant its image was taken, the
+ * odometry since then replayed on top.
  * A frame the odometry and both covariances make implausible (Mahalanobis
  * gate) is rejected and counted; when `recover_frames` rejected frames in
  * a row agree with each other through the odometry between them, the robot
