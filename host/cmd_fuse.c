@@ -11,6 +11,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "cmd_fuse_live.h"
 #include "rl_cli.h"
 #include "rl_clock.h"
 #include "rl_cmd.h"
@@ -35,7 +36,11 @@ static const char *fuse_help =
     "(scale, turn: the odometry's learned scales; v, w: the fused speed, m/s, and turn rate,\n"
     "rad/s)\n"
     "and on exit what became of the frames (applied, rejected, ...).\n\n"
-    "  --odometry LOG  one sample a line, 't x y yaw' (s, m, m, rad), on the controller's clock\n"
+    "  --odometry LOG  one sample a line, 't x y yaw' (s, m, m, rad), on the controller's clock;\n"
+    "                  '-': live, from standard input as the robot drives, its times on\n"
+    "                  CLOCK_MONOTONIC, with FRAMES a serial device or pty: the fused pose\n"
+    "                  printed at each odometry sample as it comes (until the odometry\n"
+    "                  ends, the device closes, or Ctrl-C)\n"
     "  FRAMES          pose frames as 'ringloc monitor' reads them: a recorded file (see\n"
     "                  --arrivals), or a serial device or pty, read until it closes (or\n"
     "                  Ctrl-C), each frame stamped on arrival with this computer's monotonic\n"
@@ -207,31 +212,6 @@ static int read_frames(const char *C, const char *path, int baud, double offset,
     return 0;
 }
 
-static const char *fate_name(rl_fuse_fate fate)
-{
-    static const char *names[] = {"none", "applied", "rejected", "restarted", "too-old", "out-of-order",
-                                  "lost", "untimed"};
-    return (unsigned)fate < sizeof names / sizeof names[0] ? names[fate] : "?";
-}
-
-/* the fate decided since the last call, if any, as a line of `fates` */
-static void log_fate(const rl_fuse *f, unsigned long *seen, FILE *fates)
-{
-    rl_fuse_event ev;
-    rl_fuse_last_event(f, &ev);
-    if (fates && ev.n != *seen)
-        fprintf(fates, "%u %.4f %s %.2f %d\n", ev.seq, ev.t, fate_name(ev.fate), ev.d2, ev.clock_reset);
-    *seen = ev.n;
-}
-
-static void print_pose(FILE *out, const rl_fuse_pose *p)
-{
-    fprintf(out, "{\"t\": %.3f, \"x\": %.4f, \"y\": %.4f, \"yaw\": %.5f, \"sigma\": {\"x\": %.4f, "
-                 "\"y\": %.4f, \"yaw\": %.5f}, \"scale\": %.4f, \"turn\": %.4f, \"v\": %.4f, \"w\": %.4f}\n",
-            p->t, p->x, p->y, p->yaw, sqrt(p->cov[0][0]), sqrt(p->cov[1][1]), sqrt(p->cov[2][2]),
-            p->scale, p->turn, p->v, p->w);
-}
-
 /* The longest odometry log replayed (a day): longer, its times jump. */
 #define FUSE_MAX_SPAN 86400.0
 
@@ -256,10 +236,10 @@ static long replay(rl_fuse *f, const rl_odolog *log, const frame_list *l, double
                 jf++;
             } else
                 (void)!rl_fuse_frame_add(f, &l->f[jf++].fr); /* outcomes counted in f->stats */
-            log_fate(f, &seen, fates);
+            rl_fuse_log_fate(f, &seen, fates);
         }
         if (rl_fuse_pose_at(f, t, &p) == RL_OK) {
-            print_pose(out, &p);
+            rl_fuse_print_pose(out, &p);
             ticks++;
         }
     }
@@ -283,6 +263,53 @@ static int start_filter(const char *C, rl_fuse *f, const rl_fuse_config *cfg, co
         return rl_cli_fail(C, RL_EXIT_USAGE, "the filter's settings are out of range");
     }
     return 0;
+}
+
+/* --odometry -: stdin's odometry and a device's frames as they come
+ * (cmd_fuse_live.c); 0, or an exit code after the error line. */
+#define LIVE_HZ 200.0 /* the fastest odometry the live history is sized for */
+static int live(const char *C, const rl_fuse_config *cfg, const char *dev_path, int baud, const char *fates_path)
+{
+    static rl_fuse f;
+    size_t n = rl_fuse_history_count(HISTORY_S, LIVE_HZ);
+    rl_fuse_entry *hist = malloc(n * sizeof *hist);
+    unsigned long frames = 0;
+    struct stat st;
+    rl_serial dev;
+    rl_outfile fo;
+    char err[1200];
+    int rc;
+    if (hist == NULL)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "no memory for %.0f s of odometry", HISTORY_S);
+    if (rl_fuse_init(&f, cfg, hist, n) != RL_OK) {
+        free(hist);
+        return rl_cli_fail(C, RL_EXIT_USAGE, "the filter's settings are out of range");
+    }
+    if (stat(dev_path, &st) != 0 || !S_ISCHR(st.st_mode)) {
+        free(hist);
+        return rl_cli_fail(C, RL_EXIT_USAGE, "%s: --odometry - reads a serial device or pty, not this",
+                           dev_path);
+    }
+    if (rl_serial_open(&dev, dev_path, baud, 0, err, sizeof err) != RL_OK) {
+        free(hist);
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    }
+    if (fates_path && rl_outfile_open(&fo, fates_path, err, sizeof err) != RL_OK) {
+        rl_serial_close(&dev);
+        free(hist);
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    }
+    rl_stop_on_signals(0);
+    rc = rl_fuse_live(C, &f, 0, dev.fd, dev_path, baud, stdout, fates_path ? fo.f : NULL, &frames);
+    rl_serial_close(&dev);
+    free(hist);
+    if (fates_path && (rc != 0 ? (rl_outfile_abort(&fo), 0) : rl_outfile_commit(&fo, err, sizeof err) != RL_OK))
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    if (rc == 0)
+        fprintf(stderr, "ringloc fuse: %lu pose frames: %lu applied, %lu rejected, %lu restarts (carried), "
+                        "%lu before the board's clock was known, %lu clock resets\n", frames, f.stats.applied,
+                f.stats.rejected, f.stats.recoveries, f.stats.untimed, f.stats.clock_resets);
+    return rc;
 }
 
 static int by_arrival(const void *a, const void *b)
@@ -352,6 +379,8 @@ int rl_cmd_fuse(int argc, char **argv)
     rl_fuse_defaults(&cfg);
     if ((rc = options(C, argc, argv, &cfg, &odo, &out_path, &rate, &baud, &offset, &arrivals, &fates_path)) != 0)
         return rc < 0 ? 0 : rc;
+    if (strcmp(odo, "-") == 0)
+        return live(C, &cfg, argv[optind], baud, fates_path);
     if (rl_odolog_load(odo, &log, err, sizeof err) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
     if (!(log.s[log.n - 1].t - log.s[0].t <= FUSE_MAX_SPAN)) {
