@@ -286,9 +286,12 @@ static int live(const char *C, const rl_fuse_config *cfg, const char *dev_path, 
         return rl_cli_fail(C, RL_EXIT_USAGE, "the filter's settings are out of range");
     }
     if (stat(dev_path, &st) != 0 || !S_ISCHR(st.st_mode)) {
+        int en = errno;
         free(hist);
-        return rl_cli_fail(C, RL_EXIT_USAGE, "%s: --odometry - reads a serial device or pty, not this",
-                           dev_path);
+        if (!S_ISCHR(st.st_mode) && en != ENOENT)
+            return rl_cli_fail(C, RL_EXIT_USAGE, "%s: --odometry - reads a serial device or pty, not a file",
+                               dev_path);
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s: %s", dev_path, strerror(en));
     }
     if (rl_serial_open(&dev, dev_path, baud, 0, err, sizeof err) != RL_OK) {
         free(hist);
