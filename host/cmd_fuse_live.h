@@ -5,6 +5,7 @@
  *
  *   static rl_fuse f;                // initialised (rl_fuse_init)
  *   unsigned long frames = 0;
+ *   int dev_fd = 3;                  // an open serial device (rl_serial_open)
  *   int rc = rl_fuse_live("fuse", &f, 0, dev_fd, "/dev/ttyUSB1", 115200, stdout, NULL, &frames);
  *   // 0 when the odometry ended, the device closed or a signal came
  */
