@@ -52,7 +52,8 @@ mkdir -p "$T/fuse"
 dpkg-deb -x "$fuse" "$T/fuse" 2>/dev/null
 for f in usr/lib/libringloc_fuse.a usr/lib/libringloc_fuse.so usr/lib/pkgconfig/ringloc-fuse.pc \
     usr/include/ringloc/rl_fuse.h usr/include/ringloc/rl_packet.h usr/include/ringloc/rl_error.h \
-    usr/share/doc/ringloc-fuse/examples/ringloc_aria_fuse.cpp; do
+    usr/share/doc/ringloc-fuse/examples/ringloc_aria_fuse.cpp usr/share/doc/ringloc-fuse/examples/rl_outfile.c \
+    usr/share/doc/ringloc-fuse/examples/rl_outfile.h; do
     check "ringloc-fuse has /$f" test -e "$T/fuse/$f"
 done
 check "the fuse package needs only libc" sh -c "dpkg-deb -f '$fuse' Depends | grep -qx 'libc6 (>= 2.34)'"

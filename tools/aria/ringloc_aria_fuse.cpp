@@ -19,7 +19,13 @@
  *
  *   ringloc-aria-fuse -remoteHost localhost -remoteRobotTcpPort 8101 \
  *       -ringlocPort /dev/ttyUSB1 -drive 20 -vel 500 -rotVel 20 -poseLog poses.txt \
- *       -arrivalsLog arrivals.txt */
+ *       -arrivalsLog arrivals.txt
+ *
+ * Built from the ringloc-fuse package's examples folder (rl_outfile.c and
+ * .h beside this file):
+ *   cc -c rl_outfile.c $(pkg-config --cflags ringloc-fuse)
+ *   c++ -I. ringloc_aria_fuse.cpp rl_outfile.o $(pkg-config --cflags --libs ringloc-fuse) -lAria \
+ *       -lpthread -ldl -o ringloc-aria-fuse */
 #include <Aria/Aria.h>
 #include <cstdio>
 #include <ctime>
