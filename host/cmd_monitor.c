@@ -11,15 +11,18 @@
 #include <termios.h>
 #include <unistd.h>
 #include "rl_cli.h"
+#include "rl_clock.h"
 #include "rl_cmd.h"
+#include "rl_outfile.h"
 #include "rl_packet.h"
 #include "rl_ptylink.h"
 #include "rl_serial.h"
 #include "rl_stop.h"
 
 static const char *monitor_help =
-    "usage: ringloc monitor [--baud 115200] [--follow] DEVICE|FILE\n"
-    "       ringloc monitor --pty LINK [--force]\n\n"
+    "usage: ringloc monitor [--baud 115200] [--follow] [--record FILE [--arrivals FILE]]\n"
+    "                       DEVICE|FILE\n"
+    "       ringloc monitor --pty LINK [--force] [--record FILE [--arrivals FILE]]\n\n"
     "Decode ringloc's pose and status frames (ARCOS framing) from a serial device or\n"
     "a recorded file and print one JSON line per frame:\n"
     "  {\"type\": \"pose\", \"version\": 2, \"seq\": 7, \"time_ms\": 123456, \"x\": 1.203,\n"
@@ -39,7 +42,13 @@ static const char *monitor_help =
     "               monitor left to a pseudo-terminal that is gone; anything else\n"
     "               there is refused (kept)\n"
     "  --force      with --pty: replace whatever LINK is (not a folder)\n"
-    "  --follow     keep reading a file as it grows\n";
+    "  --follow     keep reading a file as it grows\n"
+    "  --record FILE    also keep every byte read in FILE (a recording 'ringloc fuse'\n"
+    "                   replays), written whole when the monitor ends (Ctrl-C)\n"
+    "  --arrivals FILE  and when each pose frame arrived: 'seq arrival_seconds' a line,\n"
+    "                   on this computer's monotonic clock (CLOCK_MONOTONIC), stamped as\n"
+    "                   its bytes are read: log the odometry on the same clock and give\n"
+    "                   both to 'ringloc fuse --arrivals'\n";
 
 /* The fields a well-formed frame cannot hold (a yaw beyond pi, a flag or
  * status reason ringloc does not send, a tilt beyond 90 degrees), as the
@@ -136,9 +145,16 @@ static int open_file(const char *C, const char *path, monitor_src *in)
     return 0;
 }
 
+/* The recording (--record, --arrivals): NULL streams when not asked for. */
+typedef struct {
+    FILE *bytes, *arrivals;
+} monitor_rec;
+
 /* Read and decode until the end, a signal or an error; each frame
- * printed as a JSON line and counted in *frames. 0, or the exit code. */
-static int monitor_loop(const char *C, const monitor_src *in, rl_decoder *d, unsigned long *frames)
+ * printed as a JSON line and counted in *frames, the bytes and the pose
+ * frames' arrivals recorded. 0, or the exit code. */
+static int monitor_loop(const char *C, const monitor_src *in, rl_decoder *d, const monitor_rec *rec,
+                        unsigned long *frames)
 {
     uint8_t buf[4096];
     rl_msg m;
@@ -155,10 +171,15 @@ static int monitor_loop(const char *C, const monitor_src *in, rl_decoder *d, uns
         }
         n = read(in->fd, buf, sizeof buf);
         if (n > 0) {
+            double arrival = rl_clock_now_s(); /* the bytes' arrival, as a controller stamps it */
             seen = 1;
+            if (rec->bytes)
+                fwrite(buf, 1, (size_t)n, rec->bytes); /* checked when committed */
             for (i = 0; i < n; i++)
                 if (rl_decoder_push(d, buf[i], &m)) {
                     print_msg(&m);
+                    if (rec->arrivals && m.type == RL_PACKET_POSE)
+                        fprintf(rec->arrivals, "%u %.6f\n", m.seq, arrival);
                     (*frames)++;
                 }
             if (ferror(stdout))
@@ -191,9 +212,14 @@ int rl_cmd_monitor(int argc, char **argv)
                                          {"baud", required_argument, 0, 'b'},
                                          {"follow", no_argument, 0, 'f'},
                                          {"force", no_argument, 0, 'F'},
+                                         {"record", required_argument, 0, 'r'},
+                                         {"arrivals", required_argument, 0, 'a'},
                                          {"help", no_argument, 0, 'h'},
                                          {0, 0, 0, 0}};
-    const char *C = "monitor", *link_path = NULL;
+    const char *C = "monitor", *link_path = NULL, *rec_path = NULL, *arr_path = NULL;
+    rl_outfile ro, ao;
+    monitor_rec rec = {NULL, NULL};
+    char err[1200];
     int c, r, follow = 0, force = 0, baud = 115200;
     unsigned long frames = 0;
     monitor_src in;
@@ -213,27 +239,50 @@ int rl_cmd_monitor(int argc, char **argv)
             break;
         case 'f': follow = 1; break;
         case 'F': force = 1; break;
+        case 'r': rec_path = optarg; break;
+        case 'a': arr_path = optarg; break;
         case 'h': fputs(monitor_help, stdout); return 0;
         default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
     }
     if ((link_path == NULL) == (optind >= argc))
         return rl_cli_fail(C, RL_EXIT_USAGE, "give a DEVICE or FILE, or --pty LINK (see --help)");
+    if (force && link_path == NULL)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--force goes with --pty LINK");
+    if (arr_path && !rec_path)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--arrivals: give --record FILE too (the frames they stamp)");
+    if (rec_path && rl_outfile_open(&ro, rec_path, err, sizeof err) != RL_OK)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    if (arr_path && rl_outfile_open(&ao, arr_path, err, sizeof err) != RL_OK) {
+        rl_outfile_abort(&ro);
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    }
+    rec.bytes = rec_path ? ro.f : NULL;
+    rec.arrivals = arr_path ? ao.f : NULL;
     rl_stop_on_signals(0);
     memset(&in, 0, sizeof in);
     in.follow = follow;
-    if (force && link_path == NULL)
-        return rl_cli_fail(C, RL_EXIT_USAGE, "--force goes with --pty LINK");
-    if ((r = link_path ? open_pty(C, link_path, force, &pty, &in) : open_file(C, argv[optind], &in)) != 0)
+    if ((r = link_path ? open_pty(C, link_path, force, &pty, &in) : open_file(C, argv[optind], &in)) == 0) {
+        rl_decoder_init(&d);
+        r = monitor_loop(C, &in, &d, &rec, &frames);
+        if (link_path)
+            rl_ptylink_close(&pty);
+        else
+            close(in.fd);
+    }
+    if (r != 0) { /* the user's old recordings stay as they were */
+        if (rec_path)
+            rl_outfile_abort(&ro);
+        if (arr_path)
+            rl_outfile_abort(&ao);
         return r;
-    rl_decoder_init(&d);
-    r = monitor_loop(C, &in, &d, &frames);
-    if (link_path)
-        rl_ptylink_close(&pty);
-    else
-        close(in.fd);
-    if (r != 0)
-        return r;
+    }
+    if ((rec_path && rl_outfile_commit(&ro, err, sizeof err) != RL_OK) ||
+        (arr_path && rl_outfile_commit(&ao, err, sizeof err) != RL_OK)) {
+        if (arr_path)
+            rl_outfile_abort(&ao); /* safe after a commit */
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    }
     fprintf(stderr, "ringloc monitor: %lu frames decoded, %lu rejected\n", frames, d.bad);
     return 0;
 }

@@ -40,8 +40,9 @@ install(TARGETS ringloc_fuse ringloc_fuse_shared
 install(FILES ${PROJECT_SOURCE_DIR}/firmware/include/rl_fuse.h ${PROJECT_SOURCE_DIR}/firmware/include/rl_packet.h
         ${PROJECT_SOURCE_DIR}/firmware/include/rl_error.h DESTINATION include/ringloc COMPONENT fuse)
 install(FILES ${CMAKE_BINARY_DIR}/package/ringloc-fuse.pc DESTINATION lib/pkgconfig COMPONENT fuse)
-install(FILES ${PROJECT_SOURCE_DIR}/tools/aria/ringloc_aria_fuse.cpp DESTINATION share/doc/ringloc-fuse/examples
-        COMPONENT fuse)
+# the ARIA example and the project's whole-or-nothing file writer it logs through
+install(FILES ${PROJECT_SOURCE_DIR}/tools/aria/ringloc_aria_fuse.cpp ${PROJECT_SOURCE_DIR}/hal/io/rl_outfile.c
+        ${PROJECT_SOURCE_DIR}/hal/io/rl_outfile.h DESTINATION share/doc/ringloc-fuse/examples COMPONENT fuse)
 
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME ringloc)

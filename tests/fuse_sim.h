@@ -4,7 +4,10 @@
  * and a track width off and each wheel's travel noisy, integrated at 1 kHz
  * and sampled at a rate; the pose frames are the firmware's on the
  * rendered frames (or the truth plus their measured sigmas' noise), each
- * arriving a fixed delay after its capture with the arrival stamp jittered.
+ * arriving a fixed delay after its capture (the frame's latency field)
+ * with the arrival stamp jittered, plus a transport delay the field does
+ * not carry (uniform, fixed, or a USB adapter's latency timer); time_ms on
+ * the camera board's clock (drifting, restarting) for rl_fuse_msg_add.
  * A controller ticks every 10 ms: rl_fuse and today's reset-on-arrival
  * (the pose set to each frame when it arrives, odometry on top), both
  * compared with the truth at every tick.

@@ -1,6 +1,7 @@
 /* standin_client: the controller's side in C on the project's own ARCOS
  * code (rl_arcos for the robot's packets, rl_packet's decoder for the pose
- * frames, rl_fuse between them), against ringloc-standin: the handshake
+ * frames, rl_fuse between them: rl_fuse_msg_add, the capture from the
+ * board's clock), against ringloc-standin: the handshake
  * checked step by step, a drive commanded with ENABLE, VEL and RVEL, the
  * odometry of every server information packet (15-bit positions unwrapped
  * as ARIA does) fused with the frames read from the pty, one line per
@@ -156,6 +157,7 @@ static int connect_to(int port)
 int main(int argc, char **argv)
 {
     static rl_fuse f;
+    static rl_fuse_entry hist[64];
     rl_fuse_config cfg;
     rl_arcos_reader r;
     rl_decoder d;
@@ -171,7 +173,7 @@ int main(int argc, char **argv)
         return fail("cannot reach the stand-in (port, pty) or write the log");
     rl_fuse_defaults(&cfg);
     cfg.wheel_noise = 0.0005;
-    if (rl_fuse_init(&f, &cfg) != RL_OK)
+    if (rl_fuse_init(&f, &cfg, hist, rl_fuse_history_count(2.5, 10)) != RL_OK) /* 10 SIPs a second */
         return fail("rl_fuse_init");
     rl_arcos_reader_init(&r);
     rl_decoder_init(&d);
@@ -198,11 +200,10 @@ int main(int argc, char **argv)
         if ((p[1].revents & POLLIN) && (n = read(lfd, buf, sizeof buf)) > 0)
             for (i = 0; i < n; i++) {
                 rl_msg m;
-                rl_fuse_frame fr;
                 if (!rl_decoder_push(&d, buf[i], &m) || m.type != RL_PACKET_POSE)
                     continue;
-                rl_fuse_frame_from_msg(&m, now_s(), 115200, &fr);
-                (void)!rl_fuse_frame_add(&f, &fr); /* counted in f.stats */
+                /* the arrival stamped as read; the capture from the board's clock */
+                (void)!rl_fuse_msg_add(&f, &m, now_s(), 115200); /* counted in f.stats */
             }
     }
     send_cmd(rfd, RL_ARCOS_STOP, 0, 0);
@@ -210,7 +211,8 @@ int main(int argc, char **argv)
     close(rfd);
     close(lfd);
     fclose(log);
-    printf("server information packets: %lu; pose frames: %lu applied, %lu rejected, %lu damaged; "
-           "learned scale and turn in the log's last lines\n", sips, f.stats.applied, f.stats.rejected, d.bad);
+    printf("server information packets: %lu; pose frames: %lu applied, %lu rejected, %lu restarts, %lu clock "
+           "resets, %lu untimed, %lu damaged\n", sips, f.stats.applied, f.stats.rejected, f.stats.recoveries,
+           f.stats.clock_resets, f.stats.untimed, d.bad);
     return 0;
 }

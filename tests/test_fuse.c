@@ -9,6 +9,7 @@
 #include "rl_fuse_kf.h"
 
 static rl_fuse f;
+static rl_fuse_entry hist[128];
 
 static void setup(double wheel_noise)
 {
@@ -16,7 +17,7 @@ static void setup(double wheel_noise)
     rl_fuse_defaults(&cfg);
     cfg.wheel_noise = wheel_noise;
     cfg.time_sigma = 0;
-    assert_int_equal(rl_fuse_init(&f, &cfg), RL_OK);
+    assert_int_equal(rl_fuse_init(&f, &cfg, hist, 128), RL_OK);
 }
 
 static rl_fuse_frame frame(double t, double x, double y, double yaw, double sd)
@@ -169,6 +170,32 @@ static void test_scale_learned(void **state)
     assert_true(fabs(p.x - 10.0) < 0.003);
 }
 
+/* A warm start: the odometry 2% short, the scale 1.02 learned yesterday
+ * given back: from a frame at x = 0 the pose 1 s later at 1 m/s is
+ * odometry 1 / 1.02 times 1.02 = 1 m, and the fused speed 1 m/s; a cold
+ * start (scale 1) is 1 / 1.02 m and m/s. */
+static void test_warm_start(void **state)
+{
+    rl_fuse_config cfg;
+    rl_fuse_frame fr;
+    rl_fuse_pose p;
+    int k, warm;
+    (void)state;
+    for (warm = 0; warm <= 1; warm++) {
+        rl_fuse_defaults(&cfg);
+        cfg.scale = warm ? 1.02 : 1;
+        cfg.scale_sigma = 0.001;
+        assert_int_equal(rl_fuse_init(&f, &cfg, hist, 128), RL_OK);
+        for (k = 0; k <= 100; k++)
+            assert_int_equal(rl_fuse_odometry(&f, k * 0.01, k * 0.01 / 1.02, 0, 0), RL_OK);
+        fr = frame(0.0, 0.0, 0.0, 0.0, 0.001);
+        assert_int_equal(rl_fuse_frame_add(&f, &fr), RL_OK);
+        assert_int_equal(rl_fuse_pose_at(&f, 1.0, &p), RL_OK);
+        assert_true(fabs(p.x - (warm ? 1.0 : 1 / 1.02)) < 1e-9);
+        assert_true(fabs(p.v - (warm ? 1.0 : 1 / 1.02)) < 1e-9 && fabs(p.w) < 1e-12);
+    }
+}
+
 static void test_refused_and_counted(void **state)
 {
     rl_fuse_event ev;
@@ -185,7 +212,7 @@ static void test_refused_and_counted(void **state)
     fr.t = 0.06; /* a second one replaces it: counted */
     assert_int_equal(rl_fuse_frame_add(&f, &fr), RL_OK);
     assert_int_equal((int)f.stats.waiting_lost, 1);
-    for (k = 0; k < 2 * RL_FUSE_HISTORY; k++)
+    for (k = 0; k < 256; k++) /* twice the history */
         assert_int_equal(rl_fuse_odometry(&f, k * 0.01, 0, 0, 0), RL_OK);
     assert_int_equal((int)f.stats.applied, 1); /* fused once the odometry passed its time */
     assert_int_equal(rl_fuse_odometry(&f, 0.0, 0, 0, 0), RL_EINVAL); /* time not increasing */
@@ -216,8 +243,9 @@ static void test_refused_and_counted(void **state)
     assert_true(ev.fate == RL_FUSE_RESTARTED && ev.n == n + 1 && ev.d2 > 1e4);
     assert_int_equal((int)f.stats.recoveries, 1);
     rl_fuse_defaults(&cfg);
+    assert_int_equal(rl_fuse_init(&f, &cfg, hist, 1), RL_EINVAL); /* no room for a past */
     cfg.track = 0;
-    assert_int_equal(rl_fuse_init(&f, &cfg), RL_EINVAL);
+    assert_int_equal(rl_fuse_init(&f, &cfg, hist, 128), RL_EINVAL);
 }
 
 int main(void)
@@ -229,6 +257,7 @@ int main(void)
         cmocka_unit_test(test_capture_time),
         cmocka_unit_test(test_late_frame_replayed),
         cmocka_unit_test(test_scale_learned),
+        cmocka_unit_test(test_warm_start),
         cmocka_unit_test(test_refused_and_counted),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -94,6 +94,7 @@ static void test_resets(void **state)
 static void test_msg_add(void **state)
 {
     static rl_fuse f;
+    static rl_fuse_entry hist[512];
     rl_fuse_config cfg;
     rl_fuse_event ev;
     rl_fuse_pose p;
@@ -102,7 +103,7 @@ static void test_msg_add(void **state)
     int i;
     (void)state;
     rl_fuse_defaults(&cfg);
-    assert_int_equal(rl_fuse_init(&f, &cfg), RL_OK);
+    assert_int_equal(rl_fuse_init(&f, &cfg, hist, rl_fuse_history_count(2.5, 100)), RL_OK);
     memset(&m, 0, sizeof m);
     m.type = RL_PACKET_POSE;
     m.x_mm = 2000;

@@ -53,7 +53,8 @@ mkdir -p "$T/fuse"
 dpkg-deb -x "$fuse" "$T/fuse" 2>/dev/null
 for f in usr/lib/libringloc_fuse.a usr/lib/libringloc_fuse.so usr/lib/pkgconfig/ringloc-fuse.pc \
     usr/include/ringloc/rl_fuse.h usr/include/ringloc/rl_packet.h usr/include/ringloc/rl_error.h \
-    usr/share/doc/ringloc-fuse/examples/ringloc_aria_fuse.cpp; do
+    usr/share/doc/ringloc-fuse/examples/ringloc_aria_fuse.cpp usr/share/doc/ringloc-fuse/examples/rl_outfile.c \
+    usr/share/doc/ringloc-fuse/examples/rl_outfile.h; do
     check "ringloc-fuse has /$f" test -e "$T/fuse/$f"
 done
 check "the fuse package needs only libc" sh -c "dpkg-deb -f '$fuse' Depends | grep -qx 'libc6 (>= 2.34)'"
@@ -65,7 +66,7 @@ if [ "$ARCH" = "$(dpkg --print-architecture)" ] && command -v pkg-config >/dev/n
       printf 'int main(void)\n{\n'; sed 's/return;/return 1;/' "$T/body.c"; printf '    return 0;\n}\n'; } >"$T/use_fuse.c"
     flags=$(PKG_CONFIG_PATH="$T/fuse/usr/lib/pkgconfig" pkg-config --cflags --libs ringloc-fuse)
     # shellcheck disable=SC2086 # the flags' words
-    check "a program builds against ringloc-fuse.pc and runs on its shared library" sh -c "$CC -std=c99 -Wall -Werror -o '$T/use_fuse' '$T/use_fuse.c' $flags && LD_LIBRARY_PATH='$T/fuse/usr/lib' '$T/use_fuse'"
+    check "a program builds against ringloc-fuse.pc and runs on its shared library" sh -c "$CC -std=c99 -Wall -Werror -DRL_FUSE_HISTORY=16 -o '$T/use_fuse' '$T/use_fuse.c' $flags && LD_LIBRARY_PATH='$T/fuse/usr/lib' '$T/use_fuse'"
 fi
 check "configuration names the board's serial device" grep -q "device: $SERIAL" "$T/root/etc/ringloc/ringloc.yaml"
 unit="$T/root/lib/systemd/system/ringloc.service"

@@ -1,6 +1,7 @@
 /* rl_fuse: see rl_fuse.h. The frames' road: waiting for the odometry,
  * the gate, the restart after the robot was carried; the arithmetic is
  * rl_fuse_kf.c, the past rl_fuse_hist.c. */
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 #include "rl_fuse.h"
@@ -13,7 +14,8 @@
 void rl_fuse_defaults(rl_fuse_config *cfg)
 {
     cfg->track = 0.33;
-    cfg->wheel_noise = 0.001;
+    cfg->wheel_noise = 0.0002;
+    cfg->scale = cfg->turn = 1;
     cfg->scale_sigma = 0.03;
     cfg->turn_sigma = 0.05;
     cfg->scale_drift = 1e-4;
@@ -27,15 +29,26 @@ void rl_fuse_defaults(rl_fuse_config *cfg)
     cfg->max_extrapolate = 0.5;
 }
 
-rl_err rl_fuse_init(rl_fuse *f, const rl_fuse_config *cfg)
+size_t rl_fuse_history_count(double seconds, double odo_hz)
+{
+    double n = ceil(seconds * odo_hz) + 2; /* a sample before the oldest frame, the newest */
+    if (!(seconds >= 0) || !(odo_hz > 0) || !(n <= INT_MAX))
+        return 0;
+    return (size_t)n;
+}
+
+rl_err rl_fuse_init(rl_fuse *f, const rl_fuse_config *cfg, rl_fuse_entry *hist, size_t n)
 {
     if (!(cfg->track > 0) || !(cfg->wheel_noise >= 0) || !(cfg->scale_sigma >= 0) ||
         !(cfg->turn_sigma >= 0) || !(cfg->scale_drift >= 0) || !(cfg->time_sigma >= 0) ||
         !(cfg->sigma_xy > 0) || !(cfg->sigma_yaw > 0) || !(cfg->floor_xy >= 0) ||
         !(cfg->floor_yaw >= 0) || !(cfg->gate > 0) || cfg->recover_frames < 0 ||
-        !(cfg->max_extrapolate >= 0))
+        !(cfg->max_extrapolate >= 0) || !(cfg->scale > 0) || !(cfg->turn > 0) || hist == NULL || n < 2 || n > INT_MAX)
         return RL_EINVAL;
     memset(f, 0, sizeof *f);
+    memset(hist, 0, n * sizeof *hist);
+    f->h = hist;
+    f->cap = (int)n;
     f->cfg = *cfg;
     f->head = -1;
     f->last_frame_t = -HUGE_VAL;
@@ -91,8 +104,8 @@ static void start_from(rl_fuse *f, const rl_fuse_frame *fr)
 {
     rl_fuse_kf_state cur, s;
     double z[3], R[3][3];
-    double sc = 1, sv = f->cfg.scale_sigma * f->cfg.scale_sigma;
-    double tu = 1, tv = f->cfg.turn_sigma * f->cfg.turn_sigma;
+    double sc = f->cfg.scale, sv = f->cfg.scale_sigma * f->cfg.scale_sigma;
+    double tu = f->cfg.turn, tv = f->cfg.turn_sigma * f->cfg.turn_sigma;
     if (f->has_pose && rl_fuse_hist_state_at(f, fr->t, &cur) == 0) {
         sc = cur.m[3];
         sv = cur.P[3][3];
@@ -259,6 +272,9 @@ rl_err rl_fuse_pose_at(const rl_fuse *f, double t, rl_fuse_pose *p)
     p->turn = s.m[4];
     p->scale_sd = sqrt(s.P[3][3]);
     p->turn_sd = sqrt(s.P[4][4]);
+    rl_fuse_hist_rate(f, t, &p->v, &p->w);
+    p->v *= p->scale;
+    p->w *= p->turn;
     return r == 0 ? RL_OK : RL_ERANGE;
 }
 

@@ -35,15 +35,17 @@ static double offset_at(const rl_fuse_clock *k, double c)
     return k->a + k->b * (c - k->c0);
 }
 
-/* the mean gap between the spans' lowest points and the line: how far
- * the envelope of one span may lie above the least delay */
+/* the mean gap between the whole spans' lowest points and the line (one
+ * of them on it): how far the envelope of one span may lie above the
+ * least delay (the newest span, still filling, is left out) */
 static void spread(rl_fuse_clock *k)
 {
     double sum = 0;
     int i;
     for (i = 0; i < k->count; i++)
-        sum += k->low[i].y - offset_at(k, k->low[i].c);
-    k->spread = k->count > 1 ? sum / (k->count - 1) : 0;
+        if (i != k->head)
+            sum += fmax(0, k->low[i].y - offset_at(k, k->low[i].c));
+    k->spread = k->count > 2 ? sum / (k->count - 2) : 0;
 }
 
 static void fit(rl_fuse_clock *k)

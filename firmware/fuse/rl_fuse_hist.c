@@ -17,13 +17,12 @@
 #include "rl_fuse_hist.h"
 #include "rl_fuse_kf.h"
 
-#define H RL_FUSE_HISTORY
 #define RATE_SPAN 0.15 /* s of odometry a prediction's speed and turn rate are taken over */
 
 /* the sample `age` back from the newest (0: newest) */
 static const rl_fuse_entry *at_age(const rl_fuse *f, int age)
 {
-    return &f->h[(f->head - age + H) % H];
+    return &f->h[(f->head - age + f->cap) % f->cap];
 }
 
 /* the age of the newest sample at or before t; -1 if t is before all */
@@ -69,7 +68,7 @@ int rl_fuse_hist_odo_at(const rl_fuse *f, double t, double *o)
 }
 
 /* the odometry's speed (m/s) and turn rate (rad/s) around time t */
-static void odo_rate(const rl_fuse *f, double t, double *v, double *w)
+void rl_fuse_hist_rate(const rl_fuse *f, double t, double *v, double *w)
 {
     int k = rl_fuse_hist_find(f, t);
     const rl_fuse_entry *a, *b;
@@ -111,7 +110,7 @@ static void replay(rl_fuse *f)
     const rl_fuse_entry *prev = &f->anchor;
     int k;
     for (k = f->count - 1; k >= 0; k--) {
-        rl_fuse_entry *e = &f->h[(f->head - k + H) % H];
+        rl_fuse_entry *e = &f->h[(f->head - k + f->cap) % f->cap];
         rl_fuse_kf_state s;
         if (e->t <= f->anchor.t)
             continue;
@@ -148,7 +147,7 @@ void rl_fuse_hist_frame_cov(const rl_fuse *f, const rl_fuse_frame *fr, double ya
     double sa = fr->syaw > 0 ? fr->syaw : c->sigma_yaw, v, w, u[3];
     double t2 = c->time_sigma * c->time_sigma + fr->st * fr->st;
     int i, j;
-    odo_rate(f, fr->t, &v, &w);
+    rl_fuse_hist_rate(f, fr->t, &v, &w);
     u[0] = v * cos(yaw);
     u[1] = v * sin(yaw);
     u[2] = w;
@@ -166,8 +165,8 @@ void rl_fuse_hist_push(rl_fuse *f, double t, const double *o)
     const rl_fuse_entry *prev = f->count > 0 ? at_age(f, 0) : NULL;
     rl_fuse_entry *e;
     rl_fuse_kf_state s;
-    f->head = (f->head + 1) % H;
-    if (f->count < H)
+    f->head = (f->head + 1) % f->cap;
+    if (f->count < f->cap)
         f->count++;
     e = &f->h[f->head];
     e->t = t;

@@ -7,6 +7,11 @@
  *   double o[3] = {0, 0, 0}, R[3][3];
  *   rl_fuse_frame fr = {1.0, 0, 0, 0, 0.001, 0.001, 0.001, 0};
  *   static rl_fuse f;
+ *   static rl_fuse_entry hist[64];
+ *   rl_fuse_config cfg;
+ *   rl_fuse_defaults(&cfg);
+ *   if (rl_fuse_init(&f, &cfg, hist, 64) != RL_OK)
+ *       return;
  *   rl_fuse_hist_push(&f, 1.0, o);                 // an odometry sample
  *   if (rl_fuse_hist_state_at(&f, fr.t, &s) >= 0) {
  *       rl_fuse_hist_frame_cov(&f, &fr, s.m[2], R);
@@ -39,6 +44,10 @@ int rl_fuse_hist_state_at(const rl_fuse *f, double t, rl_fuse_kf_state *s);
 /* s, the state just after a frame captured at t (inside the history),
  * becomes the anchor; every later sample's state is recomputed from it. */
 void rl_fuse_hist_anchor(rl_fuse *f, double t, const rl_fuse_kf_state *s);
+
+/* the odometry's speed (m/s) and turn rate (rad/s) over the samples
+ * around t (the newest two past them; 0 with fewer than two) */
+void rl_fuse_hist_rate(const rl_fuse *f, double t, double *v, double *w);
 
 /* a frame's covariance R: its sigmas (or the config's), the floor, and
  * the capture time's error carried by the motion at heading yaw */

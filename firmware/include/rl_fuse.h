@@ -5,9 +5,10 @@
  * board: C99, no allocation, no stdio, libm only. The state is the pose
  * (x, y, yaw) and the odometry's two systematic errors, a distance scale
  * (the wheels' diameter) and a turn scale (the track width): an extended
- * Kalman filter whose past (RL_FUSE_HISTORY odometry samples, each with
- * the state after it) lets a frame that arrives late be applied at the
- * instant its image was taken, the odometry since then replayed on top.
+ * Kalman filter whose past (the last odometry samples, each with the state
+ * after it, in the caller's memory: rl_fuse_history_count) lets a frame
+ * that arrives late be applied at the instant its image was taken, the
+ * odometry since then replayed on top.
  * A frame the odometry and both covariances make implausible (Mahalanobis
  * gate) is rejected and counted; when `recover_frames` rejected frames in
  * a row agree with each other through the odometry between them, the robot
@@ -38,13 +39,14 @@
  * frames, which have no sigmas, work both ways).
  *
  *   rl_fuse_config cfg;
- *   static rl_fuse f;                     // about 40 kB: static or caller's block
+ *   static rl_fuse f;
+ *   static rl_fuse_entry hist[256];       // or malloc: rl_fuse_history_count entries
  *   rl_fuse_pose p;
  *   rl_fuse_event ev;
  *   rl_msg m;                             // a decoded pose frame (rl_packet.h)
  *   rl_fuse_defaults(&cfg);
  *   cfg.track = 0.33;                     // the odometry's nominal track width, m
- *   if (rl_fuse_init(&f, &cfg) != RL_OK)
+ *   if (rl_fuse_init(&f, &cfg, hist, rl_fuse_history_count(2.5, 50)) != RL_OK)
  *       return;
  *   if (rl_fuse_odometry(&f, 12.30, 1.02, 0.51, 0.12) != RL_OK)  // t, x, y, yaw
  *       return;
@@ -59,6 +61,7 @@
 #ifndef RL_FUSE_H
 #define RL_FUSE_H
 
+#include <stddef.h>
 #include "rl_error.h"
 #include "rl_packet.h"
 
@@ -67,19 +70,17 @@
 extern "C" {
 #endif
 
-/* Odometry samples kept (with the state after each): the oldest capture
- * time a frame can have is this many samples back (2.5 s at 50 Hz);
- * older frames are counted in rl_fuse_stats.too_old. */
-#ifndef RL_FUSE_HISTORY
-#define RL_FUSE_HISTORY 128
-#endif
-
 #define RL_FUSE_N 5 /* state: x, y, yaw, distance scale, turn scale */
 
 typedef struct {
     double track;        /* the odometry's nominal track width, m (0.33) */
-    double wheel_noise;  /* each wheel's travel error after 1 m, m (sd grows as sqrt(distance); 0.001) */
-    double scale_sigma;  /* the distance scale's uncertainty before any frame (0.03) */
+    double wheel_noise;  /* each wheel's travel error after 1 m, m (sd grows as sqrt(distance);
+                            0.0002: through 3 m without landmarks the error is 0.7 .. 1.2 times
+                            the sigma reported, with wheels that noisy, test_fuse_drive) */
+    double scale, turn;  /* the odometry's distance and turn scales at the start (1, 1): a warm
+                            start gives those learned before (rl_fuse_pose.scale, .turn) */
+    double scale_sigma;  /* the distance scale's uncertainty before any frame (0.03; after a
+                            warm start, what a day may change: rl_fuse_pose.scale_sd or more) */
     double turn_sigma;   /* the turn scale's (0.05) */
     double scale_drift;  /* the two scales' random walk, sd per sqrt(m) driven (1e-4) */
     double time_sigma;   /* error of a frame's capture time, s (0.002): v*dt added to its sigma */
@@ -170,7 +171,8 @@ typedef struct {
 /* The filter; fields are internal (read stats, or use the functions). */
 typedef struct {
     rl_fuse_config cfg;
-    rl_fuse_entry h[RL_FUSE_HISTORY]; /* ring of odometry samples */
+    rl_fuse_entry *h;                 /* ring of odometry samples (the caller's) */
+    int cap;                          /* its entries */
     int head, count;                  /* newest at head */
     rl_fuse_entry anchor;             /* the state just after the last fused frame */
     int has_pose;                     /* a frame has given the pose */
@@ -193,14 +195,23 @@ typedef struct {
     double cov[3][3];     /* of x, y, yaw */
     double scale, turn;   /* the odometry's learned distance and turn scales */
     double scale_sd, turn_sd;
+    double v, w;          /* the fused velocity: forward, m/s, and turn rate, rad/s (the
+                             odometry's around t, times the learned scales) */
 } rl_fuse_pose;
 
 /* Every field of cfg at its default (in parentheses above). */
 void rl_fuse_defaults(rl_fuse_config *cfg);
 
-/* Empty filter; RL_EINVAL for a config out of its domain (track, noises,
- * gate not positive). */
-RL_CHECK rl_err rl_fuse_init(rl_fuse *f, const rl_fuse_config *cfg);
+/* The entries a history needs to take frames up to `seconds` late (their
+ * capture before the newest odometry sample) at `odo_hz` odometry samples
+ * a second: 2.5 s at 50 Hz, 127 entries (about 32 kB). Older frames are
+ * counted in rl_fuse_stats.too_old. 0 for values out of range. */
+size_t rl_fuse_history_count(double seconds, double odo_hz);
+
+/* Empty filter keeping its past in hist (n entries, the caller's, for as
+ * long as f is used); RL_EINVAL for a config out of its domain (track,
+ * noises, gate not positive) or fewer than 2 entries. */
+RL_CHECK rl_err rl_fuse_init(rl_fuse *f, const rl_fuse_config *cfg, rl_fuse_entry *hist, size_t n);
 
 /* One odometry sample: the robot's own dead-reckoned pose (m, rad) at time
  * t, at any rate. RL_EINVAL when t does not increase or a value is not

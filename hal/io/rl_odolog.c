@@ -6,8 +6,7 @@
 #include "rl_infile.h"
 #include "rl_odolog.h"
 
-/* one line into *s: 1 a sample, 0 blank or a comment, -1 malformed */
-static int parse_line(char *line, rl_odosample *s)
+int rl_odolog_parse_line(char *line, rl_odosample *s)
 {
     double v[4];
     char *p = line, *end;
@@ -64,7 +63,7 @@ rl_err rl_odolog_load(const char *path, rl_odolog *log, char *err, size_t errlen
         no++;
         if (strchr(line, '\n') == NULL && !feof(f))
             return fail(log, f, RL_EFORMAT, err, errlen, path, no, "line too long");
-        r = parse_line(line, &s);
+        r = rl_odolog_parse_line(line, &s);
         if (r < 0)
             return fail(log, f, RL_EFORMAT, err, errlen, path, no, "not 't x y yaw' (four numbers)");
         if (r == 0)

@@ -32,4 +32,8 @@ RL_CHECK rl_err rl_odolog_load(const char *path, rl_odolog *log, char *err, size
 
 void rl_odolog_free(rl_odolog *log);
 
+/* One line of a log into *s (the line is changed: its comment cut): 1 a
+ * sample, 0 blank or a comment, -1 malformed. */
+int rl_odolog_parse_line(char *line, rl_odosample *s);
+
 #endif

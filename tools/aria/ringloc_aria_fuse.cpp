@@ -7,19 +7,32 @@
  *
  * Clocks: ARIA's ArTime is CLOCK_MONOTONIC. The odometry's time is the
  * packet's (getLastOdometryTime, less ArRobot's odometry delay); a frame is
- * stamped when ArRobotPacketReceiver hands it over in this thread, which
- * does nothing else, and its capture is that less its latency and its
- * bytes' time on the line (rl_fuse_frame_from_msg).
+ * stamped on that clock when ArRobotPacketReceiver hands it over, and
+ * rl_fuse_msg_add finds its capture from the camera board's time_ms and
+ * those arrival stamps (a delay on the way does not matter).
  *
  * The pose log (-poseLog): per packet "t x y yaw ariaX ariaY ariaYaw sigma"
- * (t: CLOCK_MONOTONIC s; m, rad; sigma: the fused position's, m).
+ * (t: CLOCK_MONOTONIC s; m, rad; sigma: the fused position's, m). The
+ * arrivals (-arrivalsLog): per frame "seq arrival_seconds" on ArTime's
+ * clock, the odometry's, for `ringloc fuse --arrivals`. Both are written
+ * whole or not at all (rl_outfile: a temporary renamed over the target).
  *
  *   ringloc-aria-fuse -remoteHost localhost -remoteRobotTcpPort 8101 \
- *       -ringlocPort /dev/ttyUSB1 -drive 20 -vel 500 -rotVel 20 -poseLog poses.txt */
+ *       -ringlocPort /dev/ttyUSB1 -drive 20 -vel 500 -rotVel 20 -poseLog poses.txt \
+ *       -arrivalsLog arrivals.txt
+ *
+ * Built from the ringloc-fuse package's examples folder (rl_outfile.c and
+ * .h beside this file):
+ *   cc -c rl_outfile.c $(pkg-config --cflags ringloc-fuse)
+ *   c++ -I. ringloc_aria_fuse.cpp rl_outfile.o $(pkg-config --cflags --libs ringloc-fuse) -lAria \
+ *       -lpthread -ldl -o ringloc-aria-fuse */
 #include <Aria/Aria.h>
 #include <cstdio>
 #include <ctime>
 #include "rl_fuse.h"
+extern "C" {
+#include "rl_outfile.h"
+}
 
 static double secs(const ArTime &t)
 {
@@ -49,7 +62,8 @@ public:
         cfg.track = 0.33;            /* a Pioneer 3-DX's wheel base; the filter learns the rest */
         cfg.wheel_noise = 0.0005;
         cfg.time_sigma = 0.002;      /* ArTime counts milliseconds */
-        myOk = rl_fuse_init(&myFuse, &cfg) == RL_OK;
+        /* 2.5 s of ARIA's 10 server information packets a second */
+        myOk = rl_fuse_init(&myFuse, &cfg, myHist, rl_fuse_history_count(2.5, 10)) == RL_OK;
         myFused = 0;
         robot->addSensorInterpTask("ringloc fuse", 10, &myTask);
     }
@@ -77,12 +91,12 @@ public:
                     myRobot->getY() / 1000, ArMath::degToRad(myRobot->getTh()), sqrt(p.cov[0][0] + p.cov[1][1]));
     }
 
-    /* the reader's thread: one ARCOS packet from ringloc's line */
-    void frame(ArRobotPacket *packet, double arrival, int baud)
+    /* the reader's thread: one ARCOS packet from ringloc's line, arrived
+     * at `arrival` (ArTime s); its sequence and arrival into `arrivals` */
+    void frame(ArRobotPacket *packet, double arrival, int baud, FILE *arrivals)
     {
         rl_decoder d;
         rl_msg m;
-        rl_fuse_frame fr;
         const unsigned char *b = (const unsigned char *)packet->getBuf();
         bool got = false;
         rl_decoder_init(&d); /* ARIA checked the framing; rl_packet reads the fields */
@@ -90,10 +104,14 @@ public:
             got = rl_decoder_push(&d, b[i], &m) || got;
         if (!got || m.type != RL_PACKET_POSE)
             return;
-        rl_fuse_frame_from_msg(&m, arrival, baud, &fr);
+        if (arrivals)
+            fprintf(arrivals, "%u %.6f\n", (unsigned)m.seq, arrival);
         myMutex.lock();
-        if (rl_fuse_frame_add(&myFuse, &fr) != RL_OK) {
-            /* rejected or too old: counted in the stats */
+        if (rl_fuse_msg_add(&myFuse, &m, arrival, baud) != RL_OK) {
+            rl_fuse_event ev; /* rejected, too old, waiting for the board's clock: */
+            rl_fuse_last_event(&myFuse, &ev);  /* counted in the stats */
+            if (ev.fate == RL_FUSE_REJECTED)
+                ArLog::log(ArLog::Verbose, "ringloc-aria-fuse: frame %u rejected, distance^2 %.1f", ev.seq, ev.d2);
         }
         myMutex.unlock();
     }
@@ -124,6 +142,7 @@ private:
     ArFunctorC<RinglocFuser> myTask;
     ArMutex myMutex;
     rl_fuse myFuse;
+    rl_fuse_entry myHist[64];
     bool myOk;
     unsigned long myFused;
     double myOffset;
@@ -136,7 +155,7 @@ int main(int argc, char **argv)
     parser.loadDefaultArguments();
     ArRobot robot;
     ArRobotConnector connector(&parser, &robot);
-    const char *port = "/dev/ttyUSB1", *logPath = NULL;
+    const char *port = "/dev/ttyUSB1", *logPath = NULL, *arrivalsPath = NULL;
     int baud = 115200;
     double drive = 0, vel = 0, rotVel = 0;
     if (!parser.checkParameterArgumentString("-ringlocPort", &port) ||
@@ -144,10 +163,12 @@ int main(int argc, char **argv)
         !parser.checkParameterArgumentDouble("-drive", &drive) ||
         !parser.checkParameterArgumentDouble("-vel", &vel) ||
         !parser.checkParameterArgumentDouble("-rotVel", &rotVel) ||
-        !parser.checkParameterArgumentString("-poseLog", &logPath) || !Aria::parseArgs() ||
+        !parser.checkParameterArgumentString("-poseLog", &logPath) ||
+        !parser.checkParameterArgumentString("-arrivalsLog", &arrivalsPath) || !Aria::parseArgs() ||
         !parser.checkHelpAndWarnUnparsed()) {
         ArLog::log(ArLog::Terse, "usage: ringloc-aria-fuse [ARIA's robot options] [-ringlocPort /dev/ttyUSB1] "
-                                 "[-ringlocBaud 115200] [-drive SECONDS -vel MM/S -rotVel DEG/S] [-poseLog FILE]");
+                                 "[-ringlocBaud 115200] [-drive SECONDS -vel MM/S -rotVel DEG/S] [-poseLog FILE] "
+                                 "[-arrivalsLog FILE]");
         Aria::logOptions();
         Aria::exit(2);
     }
@@ -163,11 +184,20 @@ int main(int argc, char **argv)
         Aria::exit(1);
     }
     ArRobotPacketReceiver rx(&line);
-    FILE *log = logPath ? fopen(logPath, "w") : NULL;
-    if (logPath && log == NULL) {
-        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s: cannot write", logPath);
+    /* the logs: temporaries beside their targets, renamed over them at the end */
+    rl_outfile logFile, arrivalsFile;
+    char err[1200];
+    if (logPath && rl_outfile_open(&logFile, logPath, err, sizeof err) != RL_OK) {
+        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
         Aria::exit(1);
     }
+    if (arrivalsPath && rl_outfile_open(&arrivalsFile, arrivalsPath, err, sizeof err) != RL_OK) {
+        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
+        if (logPath)
+            rl_outfile_abort(&logFile);
+        Aria::exit(1);
+    }
+    FILE *log = logPath ? logFile.f : NULL, *arrivals = arrivalsPath ? arrivalsFile.f : NULL;
     RinglocFuser fuser(&robot, log);
     if (!fuser.ok())
         Aria::exit(1);
@@ -182,7 +212,7 @@ int main(int argc, char **argv)
         ArRobotPacket *p = rx.receivePacket(200);
         if (p != NULL && p->getID() == RL_PACKET_POSE) {
             ArTime now;
-            fuser.frame(p, secs(now), baud);
+            fuser.frame(p, secs(now), baud, arrivals);
         }
     }
     robot.lock();
@@ -198,12 +228,20 @@ int main(int argc, char **argv)
                    p.x, p.y, p.yaw, 1000 * sqrt(p.cov[0][0] + p.cov[1][1]), aria.getX(), aria.getY(),
                    aria.getTh(), p.scale, p.turn);
     ArLog::log(ArLog::Normal, "ringloc-aria-fuse: %lu packets fused; frames: %lu applied, %lu rejected, "
-                              "%lu restarts, %lu too old, %lu out of order",
-               fuser.fused(), s.applied, s.rejected, s.recoveries, s.too_old, s.out_of_order);
+                              "%lu restarts, %lu too old, %lu out of order, %lu clock resets, %lu untimed",
+               fuser.fused(), s.applied, s.rejected, s.recoveries, s.too_old, s.out_of_order, s.clock_resets,
+               s.untimed);
     robot.stopRunning();
     robot.waitForRunExit();
-    if (log)
-        fclose(log);
-    Aria::exit(0);
+    int rc = 0; /* a log that cannot be written whole leaves the old file as it was */
+    if (logPath && rl_outfile_commit(&logFile, err, sizeof err) != RL_OK) {
+        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
+        rc = 1;
+    }
+    if (arrivalsPath && rl_outfile_commit(&arrivalsFile, err, sizeof err) != RL_OK) {
+        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
+        rc = 1;
+    }
+    Aria::exit(rc);
     return 0;
 }

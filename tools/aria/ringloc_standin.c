@@ -28,14 +28,18 @@
 
 #define SIP_PERIOD 0.1
 #define FRAME_PERIOD 0.1
-#define FRAME_DELAY 0.1      /* capture -> the frame's last byte read */
+#define FRAME_DELAY 0.1      /* capture -> the frame's last byte read (no --transport) */
+#define FIELD_DELAY 0.015    /* with --transport: what the latency field says */
+#define BOARD0 5000.0        /* s on the camera board's clock at the start */
+#define BOOT 0.5             /* s a restarted camera board sends nothing */
 #define LINE_TIME (39 * 10.0 / 115200)
 #define QUEUE 8
 #define P "ringloc-standin"
 
 static const char *help =
     "usage: ringloc-standin [--port 8101] [--frames-pty LINK] [--truth FILE] [--seconds S]\n"
-    "                       [--start X,Y,YAW] [--seed N] [--force]\n\n"
+    "                       [--start X,Y,YAW] [--seed N] [--force] [--transport MAX]\n"
+    "                       [--drift PPM] [--restart-at S]\n\n"
     "A Pioneer stand-in speaking ARCOS on TCP port PORT of 127.0.0.1 (ARIA: -remoteHost\n"
     "localhost -remoteRobotTcpPort PORT): the handshake, a server information packet every\n"
     "100 ms with the odometry of a simulated drive (1%% wheel scale and 2%% track width off,\n"
@@ -45,7 +49,13 @@ static const char *help =
     "                     read 100 ms after its capture (its latency field says so);\n"
     "                     LINK may be new or a link left to a pseudo-terminal that\n"
     "                     is gone: anything else there is refused (kept)\n"
+    "                     time_ms is the camera board's own clock (5000 s at the start)\n"
     "  --force            replace whatever LINK is (not a folder)\n"
+    "  --transport MAX    a serial line's delays instead: the latency field says 15 ms,\n"
+    "                     then a delay uniform in 0 .. MAX s the field does not carry\n"
+    "  --drift PPM        the board's clock runs PPM parts per million fast (negative: slow)\n"
+    "  --restart-at S     the camera board restarts S s after the start: time_ms and the\n"
+    "                     sequence from 0, 0.5 s without frames\n"
     "  --truth FILE       the true pose every 10 ms, 't x y yaw' (t: CLOCK_MONOTONIC s)\n"
     "  --seconds S        stop after S seconds (default: when the client closes)\n"
     "  --start X,Y,YAW    the true start in the map (default 1,1,0)\n";
@@ -63,6 +73,9 @@ typedef struct {
     size_t qlen[QUEUE];
     double qsend[QUEUE];
     int qn;
+    double transport, drift, restart_at; /* --transport, --drift (ppm), --restart-at (s; < 0 none) */
+    double t0, last_send;  /* the start; when the last frame was queued to be read */
+    int restarted;
     unsigned long frames_sent, frames_dropped, sips;
 } standin;
 
@@ -131,17 +144,36 @@ static int listen_on(int port)
     return fd;
 }
 
-/* a frame captured now, queued to be written when it would have arrived */
+/* a frame captured now (t), queued to be written when it would have
+ * arrived (after the one before it: a line keeps the order); time_ms on
+ * the board's clock, which restarts with the board */
 static void capture(standin *s, double t)
 {
+    double since = t - s->t0, board, send;
     int k;
+    if (s->restart_at >= 0 && since >= s->restart_at) {
+        if (since < s->restart_at + BOOT)
+            return;
+        if (!s->restarted)
+            s->robot.seq = 0;
+        s->restarted = 1;
+        board = since - s->restart_at;
+    } else
+        board = BOARD0 + since;
     if (s->qn >= QUEUE) {
         s->frames_dropped++;
         return;
     }
     k = s->qn++;
-    s->qlen[k] = standin_frame(&s->robot, (uint32_t)(t * 1000), FRAME_DELAY - LINE_TIME, s->q[k]);
-    s->qsend[k] = t + FRAME_DELAY;
+    board *= 1 + s->drift * 1e-6;
+    if (s->transport > 0) {
+        s->qlen[k] = standin_frame(&s->robot, (uint32_t)(board * 1000), FIELD_DELAY, s->q[k]);
+        send = t + FIELD_DELAY + LINE_TIME + s->transport * standin_uniform(&s->robot);
+    } else {
+        s->qlen[k] = standin_frame(&s->robot, (uint32_t)(board * 1000), FRAME_DELAY - LINE_TIME, s->q[k]);
+        send = t + FRAME_DELAY;
+    }
+    s->qsend[k] = s->last_send = fmax(send, s->last_send + LINE_TIME);
 }
 
 static void send_due(standin *s, double t)
@@ -203,6 +235,7 @@ static int parse_start(const char *arg, double *x, double *y, double *yaw)
 static void run(standin *s, double seconds, FILE *truth)
 {
     double t0 = rl_clock_now_s(), last = t0, next_sip = t0, next_frame = t0, next_truth = t0;
+    s->t0 = t0;
     while (!rl_stop_requested()) {
         double t;
         network(s);
@@ -238,8 +271,9 @@ int main(int argc, char **argv)
         {"port", required_argument, 0, 'p'},  {"frames-pty", required_argument, 0, 'f'},
         {"truth", required_argument, 0, 't'}, {"seconds", required_argument, 0, 's'},
         {"start", required_argument, 0, 'x'}, {"seed", required_argument, 0, 'S'},
-        {"force", no_argument, 0, 'F'},       {"help", no_argument, 0, 'h'},
-        {0, 0, 0, 0}};
+        {"force", no_argument, 0, 'F'},
+        {"transport", required_argument, 0, 'T'}, {"drift", required_argument, 0, 'D'},
+        {"restart-at", required_argument, 0, 'R'}, {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     static standin s;
     const char *pty_link = NULL, *truth_path = NULL;
     double seconds = 0, x = 1, y = 1, yaw = 0;
@@ -247,6 +281,7 @@ int main(int argc, char **argv)
     rl_outfile o;
     char err[1200];
     rl_cli_start(P);
+    s.restart_at = -1;
     while ((c = rl_cli_getopt(NULL, argc, argv, opts)) != -1) {
         int ok = 1;
         switch (c) {
@@ -256,6 +291,9 @@ int main(int argc, char **argv)
         case 't': truth_path = optarg; break;
         case 's': ok = rl_cli_double(NULL, "--seconds", optarg, 0, 1e6, &seconds); break;
         case 'S': ok = rl_cli_int(NULL, "--seed", optarg, 0, 1000000000, &seed); break;
+        case 'T': ok = rl_cli_double(NULL, "--transport", optarg, 0, 1, &s.transport); break;
+        case 'D': ok = rl_cli_double(NULL, "--drift", optarg, -1000, 1000, &s.drift); break;
+        case 'R': ok = rl_cli_double(NULL, "--restart-at", optarg, 0, 1e6, &s.restart_at); break;
         case 'x':
             if (!parse_start(optarg, &x, &y, &yaw))
                 return rl_cli_fail(NULL, RL_EXIT_USAGE, "--start: '%s' is not X,Y,YAW", optarg);

@@ -10,7 +10,7 @@ static double wrap(double a)
     return atan2(sin(a), cos(a));
 }
 
-static double uniform(standin_robot *r)
+double standin_uniform(standin_robot *r)
 {
     r->rng ^= r->rng << 13;
     r->rng ^= r->rng >> 7;
@@ -20,7 +20,7 @@ static double uniform(standin_robot *r)
 
 static double gauss(standin_robot *r)
 {
-    return sqrt(-2 * log(uniform(r))) * cos(2 * M_PI * uniform(r));
+    return sqrt(-2 * log(standin_uniform(r))) * cos(2 * M_PI * standin_uniform(r));
 }
 
 void standin_init(standin_robot *r, double x, double y, double yaw, unsigned seed)

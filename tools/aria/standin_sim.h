@@ -37,6 +37,9 @@ typedef struct {
 
 void standin_init(standin_robot *r, double x, double y, double yaw, unsigned seed);
 
+/* a number uniform in 0 .. 1 from the robot's generator */
+double standin_uniform(standin_robot *r);
+
 /* dt seconds of driving */
 void standin_step(standin_robot *r, double dt);
 
