@@ -13,7 +13,7 @@
 /* A fresh, empty scratch folder for one test. */
 static const char *fresh_dir(char *buf, size_t len, const char *name)
 {
-    char cmd[1200];
+    char cmd[2 * 1024 + 64]; /* two paths of up to 1023 bytes and the words */
     rl_test_path(buf, len, name);
     snprintf(cmd, sizeof cmd, "rm -rf '%s' && mkdir -p '%s'", buf, buf);
     assert_int_equal(system(cmd), 0);

@@ -34,10 +34,13 @@ static int web_wanted(const rl_fw_side *s)
 static void failed(rl_fw_side *s, char *note, size_t cap, const char *what, const char *err, uint64_t *retry_at,
                    uint64_t now)
 {
+    size_t n;
     if (strcmp(note, err) != 0)
         fprintf(stderr, "%s: %s; the robot's poses go on, %s tried again every %.0f s\n", s->prefix, err, what,
                 s->retry_us / 1e6);
-    snprintf(note, cap, "%s", err);
+    n = strlen(err) < cap ? strlen(err) : cap - 1; /* the note may be cut: the log has it whole */
+    memcpy(note, err, n);
+    note[n] = '\0';
     *retry_at = now + s->retry_us;
 }
 
