@@ -42,7 +42,7 @@ static const char *help =
     "                       [--drift PPM] [--restart-at S]\n\n"
     "A Pioneer stand-in speaking ARCOS on TCP port PORT of 127.0.0.1 (ARIA: -remoteHost\n"
     "localhost -remoteRobotTcpPort PORT): the handshake, a server information packet every\n"
-    "100 ms with the odometry of a simulated drive (1%% wheel scale and 2%% track width off,\n"
+    "100 ms with the odometry of a simulated drive (1% wheel scale and 2% track width off,\n"
     "wheel noise), the motion commands VEL, RVEL, ROTATE, ENABLE, STOP, ESTOP, SETO.\n"
     "  --frames-pty LINK  also ringloc's camera: a pseudo-terminal (LINK points to it)\n"
     "                     carrying pose frames about the true pose, 10 a second, each\n"
