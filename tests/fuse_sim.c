@@ -29,6 +29,8 @@ void fs_scenario_defaults(fs_scenario *sc)
     sc->scale_err = 1.01;
     sc->track_err = 1.02;
     sc->wheel_noise = 0.0002;
+    sc->read_late = sc->stall_p = sc->stall_max = sc->lose_p = 0;
+    sc->cycled = 0;
     sc->warmup = 1.0;
     sc->track = 0.33;
     sc->seed = 1;

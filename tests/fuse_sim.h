@@ -66,6 +66,12 @@ typedef struct {
     double scale_err;    /* true distance / odometry's (1.01) */
     double track_err;    /* true track / nominal (1.02) */
     double wheel_noise;  /* m per sqrt(m) of each wheel's travel (0.0002) */
+    /* the controller reading the odometry (stamped when read, as ARIA does): */
+    double read_late;    /* every read late by uniform 0 .. this, s */
+    double stall_p;      /* the chance a read is stalled (a loaded machine) ... */
+    double stall_max;    /* ... by uniform 0 .. this more, s (the samples behind it wait) */
+    double lose_p;       /* the chance a sample is lost on the line (never read) */
+    int cycled;          /* the read stamps moved to the cycle's envelope (rl_fuse_cycle) */
     double warmup;       /* s from the start the filter learns the scales, left out of the figures (1) */
     double track;        /* nominal track, m */
     unsigned seed;

@@ -16,6 +16,8 @@
 
 typedef struct {
     double t, o[3];
+    double read; /* when the controller read it (stamped then) */
+    int lost;    /* never read */
 } odo_sample;
 
 typedef struct {
@@ -81,7 +83,8 @@ static int odometry(const fs_drive *d, const fs_scenario *sc, double T, odo_samp
             prev = p;
         }
         if (t >= next - 1e-9) {
-            out[n].t = t;
+            out[n].t = out[n].read = t;
+            out[n].lost = 0;
             memcpy(out[n].o, o, sizeof o);
             n++;
             next += 1.0 / sc->odo_hz;
@@ -115,6 +118,22 @@ static double arrive(const fs_scenario *sc, double sent, double prev)
     if (a < prev + line)
         a = prev + line;
     return a;
+}
+
+/* the controller's reads of the odometry: late, some stalled (the
+ * samples behind a stalled one read right after it) */
+static void reads(const fs_scenario *sc, odo_sample *odo, int no)
+{
+    int i;
+    if (sc->read_late <= 0 && sc->stall_p <= 0 && sc->lose_p <= 0)
+        return;
+    for (i = 0; i < no; i++) {
+        double r = odo[i].t + sc->read_late * uniform();
+        if (uniform() < sc->stall_p)
+            r += sc->stall_max * uniform();
+        odo[i].lost = i > 0 && uniform() < sc->lose_p;
+        odo[i].read = i > 0 && r <= odo[i - 1].read ? odo[i - 1].read + 1e-5 : r;
+    }
 }
 
 /* the frames of the drive, lap after lap, in order of arrival */
@@ -263,15 +282,24 @@ static int ticks(const fs_drive *d, const fs_scenario *sc, double T, const odo_s
 {
     int io = 0, jf = 0, have_reset = 0, kid_frames = 0;
     double t, reset_odo[3];
+    rl_fuse_cycle cy;
     fs_pose reset_base = {0, 0, 0};
     r->n = 0;
     r->kidnap_err = NAN;
     r->kidnap_err_2s = 0;
+    if (rl_fuse_cycle_init(&cy, 1.0 / sc->odo_hz) != RL_OK)
+        return -1;
     for (t = 0; t <= T + 1e-9; t += TICK) {
         rl_fuse_pose p;
-        while ((io < no && odo[io].t <= t) || (jf < nf && fr[jf].arrival <= t)) {
-            if (jf >= nf || (io < no && odo[io].t <= fr[jf].arrival)) {
-                if (rl_fuse_odometry(f, odo[io].t, odo[io].o[0], odo[io].o[1], odo[io].o[2]) != RL_OK)
+        while ((io < no && odo[io].read <= t) || (jf < nf && fr[jf].arrival <= t)) {
+            if (jf >= nf || (io < no && odo[io].read <= fr[jf].arrival)) {
+                double stamp;
+                if (odo[io].lost) {
+                    io++;
+                    continue;
+                }
+                stamp = sc->cycled ? rl_fuse_cycle_stamp(&cy, odo[io].read) : odo[io].read;
+                if (rl_fuse_odometry(f, stamp, odo[io].o[0], odo[io].o[1], odo[io].o[2]) != RL_OK)
                     return -1;
                 io++;
             } else {
@@ -369,6 +397,7 @@ int fs_run(const fs_drive *d, const fs_scenario *sc, fs_result *r)
     rng = 0x9E3779B97F4A7C15ULL ^ (sc->seed * 0x2545F4914F6CDD1DULL);
     no = odometry(d, sc, T, odo);
     nf = frames(d, sc, T, fr);
+    reads(sc, odo, no);
     if (sc->export_dir && export_drive(d, sc, T, odo, no, fr, nf) != 0)
         return -1;
     rl_fuse_defaults(&cfg);

@@ -4,7 +4,8 @@
  * board's clock), against ringloc-standin: the handshake
  * checked step by step, a drive commanded with ENABLE, VEL and RVEL, the
  * odometry of every server information packet (15-bit positions unwrapped
- * as ARIA does) fused with the frames read from the pty, one line per
+ * as ARIA does, stamped when read and moved to the 100 ms packet cycle:
+ * rl_fuse_cycle) fused with the frames read from the pty, one line per
  * packet "t x y yaw odo_x odo_y odo_yaw sigma" (t: CLOCK_MONOTONIC s) for
  * the script to judge against the stand-in's truth.
  * usage: standin_client PORT FRAMES_PTY SECONDS VEL_MM_S ROTVEL_DEG_S LOG */
@@ -99,15 +100,17 @@ typedef struct {
     double x, y;         /* unwrapped, mm */
 } odo_track;
 
-/* a server information packet: its odometry into the filter, the fused
- * pose at its arrival into the log; 1 when it was one */
-static int sip(rl_fuse *f, odo_track *o, const uint8_t *pl, int n, double t, FILE *log)
+/* a server information packet read at `read`: its odometry into the
+ * filter at its cycle's time, the fused pose then into the log; 1 when it
+ * was one */
+static int sip(rl_fuse *f, rl_fuse_cycle *cy, odo_track *o, const uint8_t *pl, int n, double read, FILE *log)
 {
     int x, y, dx, dy;
-    double yaw;
+    double yaw, t;
     rl_fuse_pose p;
     if (n < 20 || (pl[0] != RL_ARCOS_SIP_STOPPED && pl[0] != RL_ARCOS_SIP_MOVING))
         return 0;
+    t = rl_fuse_cycle_stamp(cy, read);
     x = get16(pl + 1) & 0x7FFF;
     y = get16(pl + 3) & 0x7FFF;
     yaw = (int16_t)get16(pl + 5) * ANGLE_UNIT;
@@ -158,6 +161,7 @@ int main(int argc, char **argv)
 {
     static rl_fuse f;
     static rl_fuse_entry hist[64];
+    static rl_fuse_cycle cy;
     rl_fuse_config cfg;
     rl_arcos_reader r;
     rl_decoder d;
@@ -173,7 +177,8 @@ int main(int argc, char **argv)
         return fail("cannot reach the stand-in (port, pty) or write the log");
     rl_fuse_defaults(&cfg);
     cfg.wheel_noise = 0.0005;
-    if (rl_fuse_init(&f, &cfg, hist, rl_fuse_history_count(2.5, 10)) != RL_OK) /* 10 SIPs a second */
+    if (rl_fuse_init(&f, &cfg, hist, rl_fuse_history_count(2.5, 10)) != RL_OK || /* 10 SIPs a second */
+        rl_fuse_cycle_init(&cy, 0.1) != RL_OK)
         return fail("rl_fuse_init");
     rl_arcos_reader_init(&r);
     rl_decoder_init(&d);
@@ -196,7 +201,7 @@ int main(int argc, char **argv)
         if ((p[0].revents & POLLIN) && (n = read(rfd, buf, sizeof buf)) > 0)
             for (i = 0; i < n; i++)
                 if (rl_arcos_reader_push(&r, buf[i], pl, &len))
-                    sips += (unsigned long)sip(&f, &o, pl, (int)len, now_s(), log);
+                    sips += (unsigned long)sip(&f, &cy, &o, pl, (int)len, now_s(), log);
         if ((p[1].revents & POLLIN) && (n = read(lfd, buf, sizeof buf)) > 0)
             for (i = 0; i < n; i++) {
                 rl_msg m;

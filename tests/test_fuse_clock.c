@@ -130,6 +130,39 @@ static void test_msg_add(void **state)
     assert_int_equal(rl_fuse_msg_add(&f, &m, 3.1, 0), RL_EINVAL);
 }
 
+/* The odometry's cycle (rl_fuse_cycle): samples sent every 100 ms from
+ * 50 s, read 1 ms late (every 5th on time): once known, each stamp is its
+ * send time within 1 ms; sample 20 stalled 60 ms gets its cycle's time
+ * (its read is 61 ms off); sample 30 lost: 31 is read a cycle late and
+ * given its read time (1 ms off), 32 shows the loss, counted once, and
+ * from there the stamps are the send times again; sample 40 stalled a
+ * whole cycle is given its read time (documented), and 41, on time,
+ * counts no loss. */
+static void test_cycle(void **state)
+{
+    rl_fuse_cycle cy;
+    int k;
+    (void)state;
+    assert_int_equal(rl_fuse_cycle_init(&cy, 0), RL_EINVAL);
+    assert_int_equal(rl_fuse_cycle_init(&cy, 0.1), RL_OK);
+    for (k = 0; k < 60; k++) {
+        double sent = 50 + 0.1 * k, read = sent + (k % 5 ? 0.001 : 0), t;
+        if (k == 30)
+            continue;
+        if (k == 20)
+            read = sent + 0.061;
+        if (k == 40)
+            read = sent + 0.100;
+        t = rl_fuse_cycle_stamp(&cy, read);
+        if (k == 40)
+            assert_true(t == read);
+        else if (k >= 8)
+            assert_true(fabs(t - sent) <= 0.001 + 1e-9);
+        assert_true(t <= read);
+    }
+    assert_int_equal(cy.lost, 1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -137,6 +170,7 @@ int main(void)
         cmocka_unit_test(test_drift),
         cmocka_unit_test(test_resets),
         cmocka_unit_test(test_msg_add),
+        cmocka_unit_test(test_cycle),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -41,14 +41,17 @@
  *   rl_fuse_config cfg;
  *   static rl_fuse f;
  *   static rl_fuse_entry hist[256];       // or malloc: rl_fuse_history_count entries
+ *   static rl_fuse_cycle cy;              // the odometry's packet cycle
  *   rl_fuse_pose p;
  *   rl_fuse_event ev;
  *   rl_msg m;                             // a decoded pose frame (rl_packet.h)
  *   rl_fuse_defaults(&cfg);
  *   cfg.track = 0.33;                     // the odometry's nominal track width, m
- *   if (rl_fuse_init(&f, &cfg, hist, rl_fuse_history_count(2.5, 50)) != RL_OK)
+ *   if (rl_fuse_init(&f, &cfg, hist, rl_fuse_history_count(2.5, 50)) != RL_OK ||
+ *       rl_fuse_cycle_init(&cy, 0.02) != RL_OK)  // a packet every 20 ms
  *       return;
- *   if (rl_fuse_odometry(&f, 12.30, 1.02, 0.51, 0.12) != RL_OK)  // t, x, y, yaw
+ *   // read at 12.30 s: t (the packet's cycle), x, y, yaw
+ *   if (rl_fuse_odometry(&f, rl_fuse_cycle_stamp(&cy, 12.30), 1.02, 0.51, 0.12) != RL_OK)
  *       return;
  *   memset(&m, 0, sizeof m);
  *   m.type = RL_PACKET_POSE;
@@ -253,6 +256,45 @@ void rl_fuse_last_event(const rl_fuse *f, rl_fuse_event *ev);
  * capture = arrival - latency - the frame's bytes at baud (10 bits a byte).
  * Version 1 frames have no sigmas (0: the config's stand in). */
 void rl_fuse_frame_from_msg(const rl_msg *m, double arrival, int baud, rl_fuse_frame *fr);
+
+/* Odometry read late. A robot's controller reports its odometry on a
+ * fixed cycle (ARCOS: a server information packet every 100 ms, on the
+ * controller's crystal), and the program stamps each packet when it reads
+ * it (ARIA: getLastOdometryTime). A loaded machine reads some of them late
+ * (tens of ms: the pose then lags by speed x that), so the read stamps are
+ * moved to the cycle's lower envelope (the reads that met the least delay,
+ * its slope the crystals' drift), as for the frames' arrivals; the reads
+ * queued behind a stalled one get their cycles' times too. A read a whole
+ * number of cycles late, as closely as reads usually lie on the envelope
+ * (a few ms), may be the packet after one lost on the line or a stall that
+ * long: it is given its read time; when the next read is late too, the
+ * cycles are counted in as lost. Until the envelope is known (a few
+ * cycles) the read time is given as it is.
+ *
+ *   static rl_fuse_cycle cy;
+ *   rl_fuse_cycle_init(&cy, 0.1);         // ARCOS's 100 ms
+ *   // for each odometry packet, read at `read` on the controller's clock:
+ *   if (rl_fuse_odometry(&f, rl_fuse_cycle_stamp(&cy, read), x, y, yaw) != RL_OK) ...
+ */
+typedef struct {
+    rl_fuse_clock clock;   /* the cycle's envelope: cycle k at board time k x period */
+    double period;         /* s */
+    double last;           /* the last stamp given */
+    double prev_read;      /* the last read time */
+    uint32_t k;            /* the next sample's cycle */
+    int late;              /* reads in a row whole periods after the envelope */
+    int known;             /* the envelope known to a quarter period */
+    unsigned long lost;    /* cycles counted in as lost on the line */
+} rl_fuse_cycle;
+
+/* Empty: no sample read yet, a cycle of `period` s (RL_EINVAL unless
+ * 0 < period <= 10). */
+RL_CHECK rl_err rl_fuse_cycle_init(rl_fuse_cycle *c, double period);
+
+/* The time of the sample read at `read` (s, the controller's clock):
+ * its place on the cycle's envelope, always later than the last stamp
+ * given (the read time itself while the envelope is not known). */
+double rl_fuse_cycle_stamp(rl_fuse_cycle *c, double read);
 
 #ifdef __cplusplus
 }

@@ -6,7 +6,10 @@
  * moveTo(to, from) after every server information packet.
  *
  * Clocks: ARIA's ArTime is CLOCK_MONOTONIC. The odometry's time is the
- * packet's (getLastOdometryTime, less ArRobot's odometry delay); a frame is
+ * packet's (getLastOdometryTime, less ArRobot's odometry delay) moved to
+ * the robot's packet cycle (rl_fuse_cycle, -odometryCycle MS, ARCOS's 100
+ * by default): a loaded machine that reads a packet 60 ms late would
+ * otherwise put the robot 60 mm behind at 1 m/s; a frame is
  * stamped on that clock when ArRobotPacketReceiver hands it over, and
  * rl_fuse_msg_add finds its capture from the camera board's time_ms and
  * those arrival stamps (a delay on the way does not matter).
@@ -54,7 +57,7 @@ static double clock_offset()
 class RinglocFuser
 {
 public:
-    RinglocFuser(ArRobot *robot, FILE *log) : myRobot(robot), myLog(log), myTask(this, &RinglocFuser::cycle)
+    RinglocFuser(ArRobot *robot, FILE *log, double cycle) : myRobot(robot), myLog(log), myTask(this, &RinglocFuser::cycle)
     {
         myOffset = clock_offset();
         rl_fuse_config cfg;
@@ -63,7 +66,9 @@ public:
         cfg.wheel_noise = 0.0005;
         cfg.time_sigma = 0.002;      /* ArTime counts milliseconds */
         /* 2.5 s of ARIA's 10 server information packets a second */
-        myOk = rl_fuse_init(&myFuse, &cfg, myHist, rl_fuse_history_count(2.5, 10)) == RL_OK;
+        myOk = rl_fuse_init(&myFuse, &cfg, myHist, rl_fuse_history_count(2.5, 10)) == RL_OK &&
+               rl_fuse_cycle_init(&myCycle, cycle) == RL_OK;
+        myLastRead = -1;
         myFused = 0;
         robot->addSensorInterpTask("ringloc fuse", 10, &myTask);
     }
@@ -74,15 +79,19 @@ public:
     void cycle()
     {
         ArPose e = myRobot->getEncoderPose();
-        double t = secs(myRobot->getLastOdometryTime());
+        double read = secs(myRobot->getLastOdometryTime()), t;
         rl_fuse_pose p;
         bool have;
+        if (read == myLastRead)
+            return; /* no new packet this cycle */
+        myLastRead = read;
+        t = rl_fuse_cycle_stamp(&myCycle, read);
         myMutex.lock();
         have = rl_fuse_odometry(&myFuse, t, e.getX() / 1000, e.getY() / 1000, ArMath::degToRad(e.getTh())) == RL_OK &&
                rl_fuse_pose_at(&myFuse, t, &p) == RL_OK;
         myMutex.unlock();
         if (!have)
-            return; /* no new packet this cycle, or no frame yet */
+            return; /* no frame yet */
         /* from: where ARIA had the robot at that packet; to: where it was */
         myRobot->moveTo(ArPose(p.x * 1000, p.y * 1000, ArMath::radToDeg(p.yaw)), myRobot->getPose());
         myFused++;
@@ -143,10 +152,33 @@ private:
     ArMutex myMutex;
     rl_fuse myFuse;
     rl_fuse_entry myHist[64];
+    rl_fuse_cycle myCycle;     /* the odometry's packet cycle */
+    double myLastRead;
     bool myOk;
     unsigned long myFused;
     double myOffset;
 };
+
+/* the robot stopped; the fused pose, ARIA's and the frames' fates logged */
+static void report(ArRobot *robot, RinglocFuser *fuser)
+{
+    robot->lock();
+    robot->stop();
+    ArPose aria = robot->getPose();
+    double t = secs(robot->getLastOdometryTime());
+    robot->unlock();
+    rl_fuse_stats s = fuser->stats();
+    rl_fuse_pose p;
+    if (fuser->pose(t, &p))
+        ArLog::log(ArLog::Normal, "ringloc-aria-fuse: fused pose (%.4f m, %.4f m, %.4f rad), sigma %.2f mm; "
+                                  "ARIA's pose (%.1f mm, %.1f mm, %.2f deg); odometry scale %.4f, turn %.4f",
+                   p.x, p.y, p.yaw, 1000 * sqrt(p.cov[0][0] + p.cov[1][1]), aria.getX(), aria.getY(),
+                   aria.getTh(), p.scale, p.turn);
+    ArLog::log(ArLog::Normal, "ringloc-aria-fuse: %lu packets fused; frames: %lu applied, %lu rejected, "
+                              "%lu restarts, %lu too old, %lu out of order, %lu clock resets, %lu untimed",
+               fuser->fused(), s.applied, s.rejected, s.recoveries, s.too_old, s.out_of_order, s.clock_resets,
+               s.untimed);
+}
 
 int main(int argc, char **argv)
 {
@@ -158,17 +190,19 @@ int main(int argc, char **argv)
     const char *port = "/dev/ttyUSB1", *logPath = NULL, *arrivalsPath = NULL;
     int baud = 115200;
     double drive = 0, vel = 0, rotVel = 0;
+    int cycleMs = 100;
     if (!parser.checkParameterArgumentString("-ringlocPort", &port) ||
         !parser.checkParameterArgumentInteger("-ringlocBaud", &baud) ||
         !parser.checkParameterArgumentDouble("-drive", &drive) ||
         !parser.checkParameterArgumentDouble("-vel", &vel) ||
         !parser.checkParameterArgumentDouble("-rotVel", &rotVel) ||
         !parser.checkParameterArgumentString("-poseLog", &logPath) ||
-        !parser.checkParameterArgumentString("-arrivalsLog", &arrivalsPath) || !Aria::parseArgs() ||
+        !parser.checkParameterArgumentString("-arrivalsLog", &arrivalsPath) ||
+        !parser.checkParameterArgumentInteger("-odometryCycle", &cycleMs) || !Aria::parseArgs() ||
         !parser.checkHelpAndWarnUnparsed()) {
         ArLog::log(ArLog::Terse, "usage: ringloc-aria-fuse [ARIA's robot options] [-ringlocPort /dev/ttyUSB1] "
                                  "[-ringlocBaud 115200] [-drive SECONDS -vel MM/S -rotVel DEG/S] [-poseLog FILE] "
-                                 "[-arrivalsLog FILE]");
+                                 "[-arrivalsLog FILE] [-odometryCycle MS (the robot's packet cycle, 100)]");
         Aria::logOptions();
         Aria::exit(2);
     }
@@ -198,9 +232,11 @@ int main(int argc, char **argv)
         Aria::exit(1);
     }
     FILE *log = logPath ? logFile.f : NULL, *arrivals = arrivalsPath ? arrivalsFile.f : NULL;
-    RinglocFuser fuser(&robot, log);
-    if (!fuser.ok())
-        Aria::exit(1);
+    RinglocFuser fuser(&robot, log, cycleMs / 1000.0);
+    if (!fuser.ok()) {
+        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: -odometryCycle %d: not a cycle of 1 .. 10000 ms", cycleMs);
+        Aria::exit(2);
+    }
     robot.runAsync(true);
     robot.lock();
     robot.enableMotors();
@@ -215,22 +251,7 @@ int main(int argc, char **argv)
             fuser.frame(p, secs(now), baud, arrivals);
         }
     }
-    robot.lock();
-    robot.stop();
-    ArPose aria = robot.getPose();
-    double t = secs(robot.getLastOdometryTime());
-    robot.unlock();
-    rl_fuse_stats s = fuser.stats();
-    rl_fuse_pose p;
-    if (fuser.pose(t, &p))
-        ArLog::log(ArLog::Normal, "ringloc-aria-fuse: fused pose (%.4f m, %.4f m, %.4f rad), sigma %.2f mm; "
-                                  "ARIA's pose (%.1f mm, %.1f mm, %.2f deg); odometry scale %.4f, turn %.4f",
-                   p.x, p.y, p.yaw, 1000 * sqrt(p.cov[0][0] + p.cov[1][1]), aria.getX(), aria.getY(),
-                   aria.getTh(), p.scale, p.turn);
-    ArLog::log(ArLog::Normal, "ringloc-aria-fuse: %lu packets fused; frames: %lu applied, %lu rejected, "
-                              "%lu restarts, %lu too old, %lu out of order, %lu clock resets, %lu untimed",
-               fuser.fused(), s.applied, s.rejected, s.recoveries, s.too_old, s.out_of_order, s.clock_resets,
-               s.untimed);
+    report(&robot, &fuser);
     robot.stopRunning();
     robot.waitForRunExit();
     int rc = 0; /* a log that cannot be written whole leaves the old file as it was */

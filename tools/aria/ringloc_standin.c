@@ -231,7 +231,19 @@ static int parse_start(const char *arg, double *x, double *y, double *yaw)
            isfinite(*yaw);
 }
 
-/* the drive until stopped: 1 ms steps, SIPs, frames, the truth */
+/* the simulated robot moved on to `to` (s) */
+static void advance(standin *s, double *last, double to)
+{
+    if (to > *last) {
+        standin_step(&s->robot, to - *last);
+        *last = to;
+    }
+}
+
+/* the drive until stopped: 1 ms steps; each SIP, frame and truth line at
+ * its own instant, the robot moved to it first (a process the machine
+ * runs late sends late, as a line delays, but never a pose of another
+ * time: a Pioneer's controller does not stall) */
 static void run(standin *s, double seconds, FILE *truth)
 {
     double t0 = rl_clock_now_s(), last = t0, next_sip = t0, next_frame = t0, next_truth = t0;
@@ -240,28 +252,38 @@ static void run(standin *s, double seconds, FILE *truth)
         double t;
         network(s);
         t = rl_clock_now_s();
-        standin_step(&s->robot, t - last);
-        last = t;
-        if (s->open && s->cfd >= 0 && t >= next_sip) {
-            uint8_t buf[RL_ARCOS_MAX];
-            send_all(s, buf, standin_sip(&s->robot, buf));
-            s->sips++;
-            next_sip += SIP_PERIOD;
-        }
-        if (s->pty >= 0 && t >= next_frame) {
-            capture(s, t);
-            next_frame += FRAME_PERIOD;
-        }
-        if (s->pty >= 0)
-            send_due(s, t);
-        if (truth && t >= next_truth) {
-            fprintf(truth, "%.4f %.5f %.5f %.5f\n", t, s->robot.tx, s->robot.ty, s->robot.tyaw);
-            next_truth += 0.01;
-        }
-        if ((seconds > 0 && t - t0 >= seconds) || (seconds <= 0 && s->served && s->cfd < 0))
-            break;
         if (next_sip < t - 1) /* no client for a while: no burst of SIPs when one comes */
             next_sip = t;
+        for (;;) {
+            double ev = t;
+            int what = 0;
+            if (s->open && s->cfd >= 0 && next_sip <= ev)
+                ev = next_sip, what = 1;
+            if (s->pty >= 0 && next_frame <= ev)
+                ev = next_frame, what = 2;
+            if (truth && next_truth <= ev)
+                ev = next_truth, what = 3;
+            if (!what)
+                break;
+            advance(s, &last, ev);
+            if (what == 1) {
+                uint8_t buf[RL_ARCOS_MAX];
+                send_all(s, buf, standin_sip(&s->robot, buf));
+                s->sips++;
+                next_sip += SIP_PERIOD;
+            } else if (what == 2) {
+                capture(s, ev);
+                next_frame += FRAME_PERIOD;
+            } else {
+                fprintf(truth, "%.4f %.5f %.5f %.5f\n", ev, s->robot.tx, s->robot.ty, s->robot.tyaw);
+                next_truth += 0.01;
+            }
+        }
+        advance(s, &last, t);
+        if (s->pty >= 0)
+            send_due(s, t);
+        if ((seconds > 0 && t - t0 >= seconds) || (seconds <= 0 && s->served && s->cfd < 0))
+            break;
     }
 }
 
