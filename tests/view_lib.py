@@ -32,8 +32,9 @@ def browser_or_skip():
             sys.exit(SKIP)
 
 
-def chromium(width=1280, height=900, tmp=None):
-    """Headless Chromium; with tmp, at the lowest priority (through a
+def chromium(width=1280, height=900, tmp=None, phone=False):
+    """Headless Chromium; phone: as a phone of width x height (mobile
+    emulation: a window is never narrower than 500 px); with tmp, at the lowest priority (through a
     wrapper there), as if it ran on another computer: on CI's shared cores
     a browser would otherwise take the loop's time, not the server."""
     from selenium import webdriver
@@ -48,8 +49,11 @@ def chromium(width=1280, height=900, tmp=None):
         binary = wrapper
     opts.binary_location = binary
     for a in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-              "--force-device-scale-factor=1", "--window-size=%d,%d" % (width, height)):
+              "--force-device-scale-factor=1", "--window-size=%d,%d" % (max(width, 500), height)):
         opts.add_argument(a)
+    if phone:
+        opts.add_experimental_option("mobileEmulation", {"deviceMetrics": {"width": width, "height": height,
+                                                                           "pixelRatio": 1.0}})
     drv = shutil.which("chromedriver") or "/usr/bin/chromedriver"
     return webdriver.Chrome(service=Service(drv), options=opts)
 
