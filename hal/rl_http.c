@@ -64,7 +64,7 @@ struct rl_http {
 };
 
 /* The newest snapshot, taken from the view when it has a newer one. */
-static const rl_view_snap *latest(rl_http *h)
+static rl_view_snap *latest(rl_http *h)
 {
     int next = (h->newest + 1) % RING;
     if (rl_view_seq(h->view) != h->ring[h->newest].seq) {
@@ -144,7 +144,7 @@ static enum MHD_Result frame(rl_http *h, struct MHD_Connection *c, const rl_http
 static enum MHD_Result respond(rl_http *h, struct MHD_Connection *c, const rl_http_req *q)
 {
     size_t n;
-    const rl_view_snap *s;
+    rl_view_snap *s;
     switch (q->route) {
     case RL_ROUTE_PAGE:
         h->counts.served++;
@@ -155,6 +155,7 @@ static enum MHD_Result respond(rl_http *h, struct MHD_Connection *c, const rl_ht
         return reply(h, c, MHD_HTTP_OK, "application/json", h->map, h->map_len, MHD_RESPMEM_PERSISTENT, 0);
     case RL_ROUTE_STATUS:
         s = latest(h);
+        s->served_us = rl_clock_now_us();
         if ((n = rl_view_json_status(s, h->status, RL_VIEW_JSON_STATUS_MAX)) == 0)
             return refuse(h, c, MHD_HTTP_INTERNAL_SERVER_ERROR, "status too large");
         h->counts.served++;

@@ -1,5 +1,6 @@
 #include "rl_view.h"
 
+#include <math.h>
 #include <string.h>
 #include "rl_config.h"
 
@@ -67,6 +68,23 @@ static void copy_str(char *dst, size_t cap, const char *src)
     dst[n] = 0;
 }
 
+/* A track point, the oldest dropped when full; marked as a gap after
+ * frames without a pose or a jump. */
+static void track_add(rl_view_snap *l, const rl_pose *p)
+{
+    rl_view_point *t;
+    if (l->n_track == RL_VIEW_TRACK) {
+        memmove(l->track, l->track + 1, (RL_VIEW_TRACK - 1) * sizeof l->track[0]);
+        l->n_track--;
+    }
+    t = &l->track[l->n_track];
+    t->x = p->x;
+    t->y = p->y;
+    t->gap = l->n_track > 0 && (l->lost || hypot(p->x - t[-1].x, p->y - t[-1].y) > RL_VIEW_JUMP);
+    l->lost = 0;
+    l->n_track++;
+}
+
 /* The loop's own bookkeeping: every observation, copied or not. */
 static void count(rl_view *v, const rl_view_obs *o)
 {
@@ -82,6 +100,12 @@ static void count(rl_view *v, const rl_view_obs *o)
         l->pose = *o->pose; /* the last pose stays shown; have_pose says whose */
     if (o->reason >= 0 && o->reason < RL_VIEW_REASONS)
         l->reasons[o->reason]++;
+    if (o->cam_error != NULL) {
+        copy_str(l->cam_error, sizeof l->cam_error, o->cam_error);
+        l->cam_error_us = o->now_us;
+    }
+    if (o->pose == NULL)
+        l->lost = 1;
     if (o->frame == NULL)
         return;
     if (v->last_t_us != 0 && o->frame->t_us > v->last_t_us) {
@@ -96,13 +120,7 @@ static void count(rl_view *v, const rl_view_obs *o)
         l->latency_ms = l->latency_ms > 0 ? l->latency_ms + SMOOTH * (ms - l->latency_ms) : ms;
     }
     if (o->pose != NULL && o->now_us >= v->next_track_us) {
-        if (l->n_track == RL_VIEW_TRACK) {
-            memmove(l->track, l->track + 1, (RL_VIEW_TRACK - 1) * sizeof l->track[0]);
-            l->n_track--;
-        }
-        l->track[l->n_track].x = o->pose->x;
-        l->track[l->n_track].y = o->pose->y;
-        l->n_track++;
+        track_add(l, o->pose);
         v->next_track_us = o->now_us + (uint64_t)(v->cfg.track_period * 1e6);
     }
 }
@@ -153,6 +171,8 @@ int rl_view_offer(rl_view *v, const rl_view_obs *o)
     copy_str(s->cam_info, sizeof s->cam_info, o->cam_info);
     copy_str(s->serial, sizeof s->serial, o->serial);
     copy_str(s->rec_note, sizeof s->rec_note, o->rec_note);
+    copy_str(s->serial_error, sizeof s->serial_error, o->serial_error);
+    s->serial_ok_us = o->serial_ok_us;
     s->have_pose = o->pose != NULL;
     if (o->frame != NULL) {
         copy_image(s, &o->frame->img);

@@ -56,7 +56,8 @@ typedef struct {
 typedef struct {
     long frames, poses, statuses, camera_errors, camera_timeouts, bad_frames;
     long serial_errors, dropped, ambiguous, tracked, local_used;
-    int serial_up;          /* 1 while the serial line is open */
+    int serial_up;          /* 1 when the last report reached the serial line (a write that
+                               succeeded, not a descriptor held open) */
     int recording;          /* 1 while frames are recorded */
     long rec_kept, rec_skipped; /* frames handed to the writer, and skipped */
 } rl_view_counts;
@@ -73,12 +74,24 @@ typedef struct {
     const char *cam_info;      /* the camera's format, exposure, gain; may be NULL */
     const char *serial;        /* the serial device; may be NULL */
     const char *rec_note;      /* why recording is off though asked for (cannot start, stopped); may be NULL */
+    const char *serial_error;  /* why the serial line last failed (its open or a write), or ""; may be NULL */
+    uint64_t serial_ok_us;     /* when a report last reached the serial line (0: never) */
+    const char *cam_error;     /* this report's camera error (the driver's message); NULL: none */
     rl_view_counts counts;
 } rl_view_obs;
 
+/* A track point; gap: the track broke before it (frames without a pose
+ * between, or a jump of more than RL_VIEW_JUMP metres). */
 typedef struct {
     double x, y;
+    int gap;
 } rl_view_point;
+
+/* Metres between two track points past which the robot cannot have
+ * driven in one track period: the pose jumped. */
+#ifndef RL_VIEW_JUMP
+#define RL_VIEW_JUMP 1.0
+#endif
 
 /* A copy of the loop's state, as a reader sees it. */
 typedef struct {
@@ -101,6 +114,12 @@ typedef struct {
     long skipped;              /* copies skipped: a reader held the snapshot */
     uint64_t start_us, now_us;
     char cam_info[256], serial[128], rec_note[256];
+    char serial_error[256];    /* why the serial line last failed, or "" */
+    uint64_t serial_ok_us;     /* when a report last reached it (0: never) */
+    char cam_error[256];       /* the camera's last error (the driver's message), or "" */
+    uint64_t cam_error_us;     /* when it came (0: never) */
+    uint64_t served_us;        /* the reader's: when it wrote this copy out (rl_http) */
+    int lost;                  /* the loop's: a report without a pose since the last track point */
     int n_track;               /* oldest first */
     rl_view_point track[RL_VIEW_TRACK];
 } rl_view_snap;

@@ -141,6 +141,23 @@ static void pose(jbuf *b, const rl_view_snap *s)
         s->place >= 0 && s->place < 4 ? places[s->place] : "unique ids");
 }
 
+/* When the reader wrote the snapshot out (the loop's last report when
+ * it did not say). */
+static uint64_t served(const rl_view_snap *s)
+{
+    return s->served_us > s->now_us ? s->served_us : s->now_us;
+}
+
+/* Milliseconds from t_us to when the snapshot was served; null for never. */
+static void ago(jbuf *b, const char *key, const rl_view_snap *s, uint64_t t_us)
+{
+    uint64_t now = served(s);
+    if (t_us == 0)
+        put(b, "\"%s\": null", key);
+    else
+        put(b, "\"%s\": %.1f", key, now > t_us ? (double)(now - t_us) / 1e3 : 0.0);
+}
+
 static void counters(jbuf *b, const rl_view_snap *s)
 {
     static const char *names[RL_VIEW_REASONS] = {"pose", "too_few", "camera_error", "camera_timeout",
@@ -162,6 +179,14 @@ static void counters(jbuf *b, const rl_view_snap *s)
     put(b, "}}, ");
     put(b, "\"serial\": {\"up\": %s, ", c->serial_up ? "true" : "false");
     str(b, "device", s->serial);
+    put(b, ", ");
+    str(b, "error", s->serial_error);
+    put(b, ", ");
+    ago(b, "last_ok_ago_ms", s, s->serial_ok_us);
+    put(b, "}, \"camera_error\": {");
+    str(b, "text", s->cam_error);
+    put(b, ", ");
+    ago(b, "ago_ms", s, s->cam_error_us);
     put(b, "}, \"recording\": {\"on\": %s, \"kept\": %ld, \"skipped\": %ld, ", c->recording ? "true" : "false",
         c->rec_kept, c->rec_skipped);
     str(b, "note", s->rec_note);
@@ -182,6 +207,12 @@ size_t rl_view_json_status(const rl_view_snap *s, char *buf, size_t cap)
      * down: status frames go on, the image stays the last one) */
     put(&b, "\"frame_age_ms\": %.1f, \"reason\": %d, ",
         s->have_image && s->now_us > s->t_us ? (double)(s->now_us - s->t_us) / 1e3 : 0.0, s->reason);
+    /* the same when it was served (the page adds its own wait), and how
+     * long the loop has been silent (a stalled firmware whose server lives) */
+    ago(&b, "image_age_ms", s, s->have_image ? s->t_us : 0);
+    put(&b, ", ");
+    ago(&b, "loop_age_ms", s, s->now_us);
+    put(&b, ", ");
     str(&b, "camera", s->cam_info);
     put(&b, ", ");
     if (s->have_result)
@@ -194,8 +225,8 @@ size_t rl_view_json_status(const rl_view_snap *s, char *buf, size_t cap)
         put(&b, "%s%lu", i ? "," : "", hist[i]);
     put(&b, "], \"track\": [");
     for (i = 0; i < s->n_track && i < RL_VIEW_TRACK; i++)
-        put(&b, "%s[%.3f, %.3f]", i ? ", " : "", isfinite(s->track[i].x) ? s->track[i].x : 0.0,
-            isfinite(s->track[i].y) ? s->track[i].y : 0.0);
+        put(&b, "%s[%.3f, %.3f, %d]", i ? ", " : "", isfinite(s->track[i].x) ? s->track[i].x : 0.0,
+            isfinite(s->track[i].y) ? s->track[i].y : 0.0, s->track[i].gap);
     put(&b, "]}\n");
     return done(&b);
 }

@@ -264,6 +264,65 @@ static void test_status_json(void **st)
     teardown_view();
 }
 
+/* Faults as the JSON says them (issue 41): the serial line's error and
+ * the age of its last good write, the camera's last message kept past
+ * the frames after it, the image's age at serving; the track broken
+ * after frames without a pose and at a jump, not along a drive. */
+static void test_faults_and_track(void **st)
+{
+    static char buf[RL_VIEW_JSON_STATUS_MAX];
+    rl_cam_frame f;
+    rl_pose pose;
+    rl_view_obs o;
+    json_object *j, *v, *k;
+    int i;
+    (void)st;
+    setup_view();
+    memset(&pose, 0, sizeof pose);
+    /* 1 s apart (past the track period): 0.3 m steps, a lost frame before
+     * the 4th, a 2 m jump at the 6th */
+    for (i = 0; i < 7; i++) {
+        uint64_t t = 1000000u * (uint64_t)(i + 1);
+        pose.x = 0.3 * i + (i >= 5 ? 2.0 : 0.0);
+        frame_at(&f, i, t);
+        if (i == 3) {
+            o = obs_of(&f, NULL, t - 500000u);
+            o.cam_error = "/dev/video0: VIDIOC_DQBUF: No such device";
+            (void)rl_view_offer(&view, &o);
+        }
+        o = obs_of(&f, &pose, t + 10000u);
+        o.serial_error = "write failed: Input/output error";
+        o.serial_ok_us = 4000000u;
+        (void)rl_view_offer(&view, &o);
+    }
+    assert_int_equal(rl_view_take(&view, &snap), 1);
+    snap.served_us = 7500000u;
+    assert_true(rl_view_json_status(&snap, buf, sizeof buf) > 0);
+    j = json_tokener_parse(buf);
+    assert_non_null(j);
+    assert_true(json_object_object_get_ex(j, "track", &v));
+    assert_int_equal(json_object_array_length(v), 7);
+    for (i = 0; i < 7; i++) /* breaks before the 4th (lost) and the 6th (jumped) only */
+        assert_int_equal(json_object_get_int(json_object_array_get_idx(json_object_array_get_idx(v, i), 2)),
+                         i == 3 || i == 5);
+    assert_true(json_object_object_get_ex(j, "serial", &v));
+    assert_true(json_object_object_get_ex(v, "error", &k));
+    assert_string_equal(json_object_get_string(k), "write failed: Input/output error");
+    assert_true(json_object_object_get_ex(v, "last_ok_ago_ms", &k));
+    assert_true(fabs(json_object_get_double(k) - 3500.0) < 1e-6);
+    assert_true(json_object_object_get_ex(j, "camera_error", &v));
+    assert_true(json_object_object_get_ex(v, "text", &k));
+    assert_string_equal(json_object_get_string(k), "/dev/video0: VIDIOC_DQBUF: No such device");
+    assert_true(json_object_object_get_ex(v, "ago_ms", &k));
+    assert_true(fabs(json_object_get_double(k) - 4000.0) < 1e-6); /* 7.5 s - 3.5 s */
+    assert_true(json_object_object_get_ex(j, "image_age_ms", &k)); /* captured at 7 s */
+    assert_true(fabs(json_object_get_double(k) - 500.0) < 1e-6);
+    assert_true(json_object_object_get_ex(j, "loop_age_ms", &k)); /* last report at 7.01 s */
+    assert_true(fabs(json_object_get_double(k) - 490.0) < 1e-6);
+    json_object_put(j);
+    teardown_view();
+}
+
 static void test_map_json(void **st)
 {
     static rl_map map;
@@ -370,7 +429,7 @@ int main(void)
         cmocka_unit_test(test_offer_rate_and_copy), cmocka_unit_test(test_offer_skips_when_held),
         cmocka_unit_test(test_request_order_host),
         cmocka_unit_test(test_request_judge),
-        cmocka_unit_test(test_status_json),
+        cmocka_unit_test(test_status_json),         cmocka_unit_test(test_faults_and_track),
         cmocka_unit_test(test_map_json),            cmocka_unit_test(test_jpeg),
         cmocka_unit_test(test_listen),              cmocka_unit_test(test_runcfg_http),
     };

@@ -7,11 +7,19 @@ Judged against the renderer's truth and hand-made expectations:
    (document.scrollingElement.scrollWidth <= innerWidth, which is the
    phone's width: a page too wide is zoomed out) and the panels
    are stacked; at 1280 px the map stands beside the camera;
+ - the state line is green "pose" while poses go out; the firmware
+   stopped (SIGSTOP) greys the page and says it does not answer; the
+   serial line's reader gone (the pty closed) turns the state red with
+   the cause (the write's error) and the time of the last good write,
+   and /status.json says serial.up false with that error;
 Screenshots go to TMPDIR (view-*.png; docs/ holds copies).
 
 usage: test_view_install.py RINGLOC PATHS_DIR TMPDIR"""
+import json
 import os
+import signal
 import subprocess
+import urllib.request
 import sys
 import time
 
@@ -56,6 +64,75 @@ def check_layout(ck, port, tmp):
                                                                     "beside" if beside else "below"))
 
 
+STATE_JS = """
+const el = document.getElementById("state");
+return {cls: el.className, text: el.innerText, bg: getComputedStyle(el).backgroundColor,
+        greyed: document.querySelector("main").classList.contains("stale"),
+        filter: getComputedStyle(document.querySelector("main")).filter};
+"""
+
+
+def wait_state(drv, cls, seconds):
+    end = time.time() + seconds
+    st = None
+    while time.time() < end:
+        st = drv.execute_script(STATE_JS)
+        if st["cls"] == cls:
+            return st
+        time.sleep(0.2)
+    return st
+
+
+def rgb(css):
+    return [int(x) for x in css[css.index("(") + 1:css.index(")")].split(",")[:3]]
+
+
+def status(port):
+    with urllib.request.urlopen("http://127.0.0.1:%d/status.json" % port, timeout=5) as r:
+        return json.loads(r.read())
+
+
+def check_faults(ck, port, fw, mon, tmp):
+    """Last: it closes the serial line for good."""
+    drv = vl.chromium(390, 1100, phone=True)
+    try:
+        drv.get("http://127.0.0.1:%d/" % port)
+        ck.check(wait_updates(drv), "faults: the page never showed a frame")
+        st = wait_state(drv, "ok", 5)
+        ck.check(st["cls"] == "ok" and st["text"].startswith("pose"), "poses going out, the state is %s" % st)
+        c = rgb(st["bg"])
+        ck.check(c[1] > c[0] and c[1] > c[2], "the pose state is not green: %s" % st["bg"])
+        fw.send_signal(signal.SIGSTOP)
+        try:
+            st = wait_state(drv, "stale", 8)
+            drv.save_screenshot(os.path.join(tmp, "view-stale.png"))
+        finally:
+            fw.send_signal(signal.SIGCONT)
+        ck.check(st["cls"] == "stale" and "does not answer" in st["text"] and st["greyed"]
+                 and "grayscale" in st["filter"], "the firmware stopped: the page is not greyed: %s" % st)
+        print("stopped firmware: %s" % st["text"])
+        st = wait_state(drv, "ok", 8)
+        ck.check(st["cls"] == "ok" and not st["greyed"], "the firmware back: the state is %s" % st)
+        mon.terminate()  # the serial line's reader goes: its pty closes
+        mon.wait(5)
+        st = wait_state(drv, "bad", 8)
+        drv.save_screenshot(os.path.join(tmp, "view-serial-down.png"))
+    finally:
+        drv.quit()
+    c = rgb(st["bg"])
+    ck.check(st["cls"] == "bad" and c[0] > 2 * c[1] and c[0] > 2 * c[2], "serial closed: the state is %s" % st)
+    js = status(port)
+    ck.check(js["serial"]["up"] is False and js["serial"]["error"] and js["serial"]["last_ok_ago_ms"] > 0,
+             "serial closed: /status.json says %s" % js["serial"])
+    # the cause: the write's error (EIO) or the reopen's (the pty gone)
+    cause = st["text"][len("serial down: "):].split("; last good write")[0]
+    ck.check(st["text"].startswith("serial down: ") and cause
+             and (cause == js["serial"]["error"] or "write failed" in cause)
+             and ("write failed" in cause or "tty" in cause) and "; last good write " in st["text"]
+             and "never" not in st["text"], "serial closed: the state does not give the cause: %s" % st["text"])
+    print("serial closed: %s" % st["text"])
+
+
 def main():
     ringloc, paths_dir, tmp = sys.argv[1:4]
     vl.browser_or_skip()
@@ -79,6 +156,7 @@ def main():
     try:
         vl.wait_http(port, fw)
         check_layout(ck, port, tmp)
+        check_faults(ck, port, fw, mon, tmp)
     finally:
         fw.terminate()
         fw.wait(10)

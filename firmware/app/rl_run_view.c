@@ -26,7 +26,6 @@ static void counts(const rl_runner *r, const rl_record *rec, rl_view_counts *c)
     c->ambiguous = n->ambiguous;
     c->tracked = n->tracked;
     c->local_used = n->local_used;
-    c->serial_up = r->sink_up;
     /* the recorder's loop-side counts only (its writer's are its own) */
     /* off once the loop was told it stopped (a full disk, max_mb): the
      * counts then stay as they were */
@@ -55,5 +54,13 @@ void rl_run_view_report(void *ctx, const rl_run_report *rep)
     o.serial = rv->serial;
     o.rec_note = rv->rec_note;
     counts(r, rv->rec, &o.counts);
+    /* up: this report reached the line (a write that succeeded; a
+     * descriptor held open proves nothing) */
+    o.counts.serial_up = r->sink_ok_us != 0 && r->sink_ok_us == rep->sent_us;
+    o.serial_ok_us = r->sink_ok_us;
+    o.serial_error = r->sink_error;
+    /* the driver's message; "camera down" only says a retry is not due */
+    if (rep->event != RL_RUN_FRAME && rep->error != NULL && strcmp(rep->error, "camera down") != 0)
+        o.cam_error = rep->error;
     (void)rl_view_offer(rv->view, &o);
 }
