@@ -103,10 +103,18 @@ static enum MHD_Result reply(rl_http *h, struct MHD_Connection *c, unsigned stat
         snprintf(s, sizeof s, "%ld", seq);
         MHD_add_response_header(r, "X-Ringloc-Seq", s);
     }
-    if (status == MHD_HTTP_OK && cookie != NULL)
+    if ((status == MHD_HTTP_OK || status == MHD_HTTP_SEE_OTHER) && cookie != NULL)
         MHD_add_response_header(r, "Set-Cookie", cookie);
-    if (status == MHD_HTTP_UNAUTHORIZED)
+    if (status == MHD_HTTP_SEE_OTHER)
+        MHD_add_response_header(r, "Location", "/");
+    if (status == MHD_HTTP_UNAUTHORIZED) {
+        /* Basic first: a browser asks for it in its own prompt (any user
+         * name, the token as the password); scripts send a Bearer */
+        MHD_add_response_header(r, "WWW-Authenticate",
+                                "Basic realm=\"ringloc: any user name, the access token as the password\", "
+                                "charset=\"UTF-8\"");
         MHD_add_response_header(r, "WWW-Authenticate", "Bearer realm=\"ringloc\"");
+    }
     ok = MHD_queue_response(c, status, r);
     MHD_destroy_response(r);
     return ok;
@@ -145,6 +153,12 @@ static enum MHD_Result respond(rl_http *h, struct MHD_Connection *c, const rl_ht
 {
     size_t n;
     rl_view_snap *s;
+    if (q->redirect) {
+        static const char moved[] = "303 the token is kept in a cookie: /\n";
+        h->counts.served++;
+        return reply(h, c, MHD_HTTP_SEE_OTHER, "text/plain; charset=utf-8", moved, sizeof moved - 1,
+                     MHD_RESPMEM_PERSISTENT, 0);
+    }
     switch (q->route) {
     case RL_ROUTE_PAGE:
         h->counts.served++;

@@ -9,9 +9,10 @@
  * is closed however slowly it trickles in (a second thread watches the
  * deadline), a request larger than max_request bytes gets 431 or is
  * closed. Every request is judged by rl_http_req before anything is
- * served, the token first (a 401 carries WWW-Authenticate; a token given
- * in the URL comes back as an HttpOnly cookie, so the page's own requests
- * carry none), then the Host header: bad ones get a 4xx and a one-line
+ * served, the token first (a 401 carries WWW-Authenticate: Basic, so a
+ * browser asks for it, and Bearer; the page asked with ?token= is
+ * answered 303 to itself with the token in an HttpOnly cookie, so no
+ * address or request of the page carries it), then the Host header: bad ones get a 4xx and a one-line
  * reason. Nothing is read from disk, nothing is changed: the loop never
  * waits for the server.
  *

@@ -29,10 +29,56 @@ static int same_token(const char *given, const char *want)
     return diff == 0;
 }
 
+/* The value of a base64 digit, or -1. */
+static int b64(char c)
+{
+    if (c >= 'A' && c <= 'Z')
+        return c - 'A';
+    if (c >= 'a' && c <= 'z')
+        return c - 'a' + 26;
+    if (c >= '0' && c <= '9')
+        return c - '0' + 52;
+    return c == '+' ? 62 : c == '/' ? 63 : -1;
+}
+
+/* HTTP Basic's "user:password" decoded into out[0..cap) (NUL-ended);
+ * 0 when it is not base64 or does not fit. */
+static int basic_decode(const char *s, char *out, size_t cap)
+{
+    size_t n = 0;
+    unsigned acc = 0;
+    int bits = 0, d;
+    for (; *s && *s != '='; s++) {
+        if ((d = b64(*s)) < 0)
+            return 0;
+        acc = (acc << 6) | (unsigned)d;
+        bits += 6;
+        if (bits >= 8) {
+            bits -= 8;
+            if (n + 1 >= cap)
+                return 0;
+            out[n++] = (char)((acc >> bits) & 0xff);
+        }
+    }
+    out[n] = 0;
+    return 1;
+}
+
+/* The password of an "Authorization: Basic" value (the browser's own
+ * prompt: any user name, the token as the password), or NULL. */
+static const char *basic_password(const char *a, char *buf, size_t cap)
+{
+    const char *colon;
+    if (!basic_decode(a, buf, cap) || (colon = strchr(buf, ':')) == NULL)
+        return NULL;
+    return colon + 1;
+}
+
 /* 1 when the request carries the token (r->set_cookie when in its URL). */
 static int token_ok(const rl_http_req_in *in, const char *token, rl_http_req *r)
 {
     const char *a = in->auth;
+    char basic[RL_HTTP_MAX_TOKEN + 192];
     if (token == NULL || token[0] == 0)
         return 1;
     if (in->token != NULL && same_token(in->token, token))
@@ -43,6 +89,8 @@ static int token_ok(const rl_http_req_in *in, const char *token, rl_http_req *r)
         return 0;
     if (strncmp(a, "Bearer ", 7) == 0)
         a += 7;
+    else if (strncmp(a, "Basic ", 6) == 0 && (a = basic_password(a + 6, basic, sizeof basic)) == NULL)
+        return 0;
     return same_token(a, token);
 }
 
@@ -141,6 +189,7 @@ int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *
     r->width = 0;
     r->seq = -1;
     r->set_cookie = 0;
+    r->redirect = 0;
     /* the token first: without it nothing is said, not even what exists */
     if (!token_ok(in, token, r))
         return fail(r, 401, "access token missing or wrong");
@@ -167,6 +216,9 @@ int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *
         r->seq = v;
     }
     r->route = route;
+    /* the page asked with ?token=: a cookie and a redirect to the same
+     * page without it (the token leaves the address bar and the history) */
+    r->redirect = r->set_cookie && route == RL_ROUTE_PAGE;
     r->status = 200;
     r->why = "";
     return 200;

@@ -1,6 +1,8 @@
 /* rl_http_req: one request to the live web view judged, before anything
  * is served, in this order: the access token when one is configured (the
  * query's ?token=, an "Authorization: Bearer" or "X-Ringloc-Token" header,
+ * "Authorization: Basic" with the token as the password (a browser's own
+ * prompt, asked for by the 401's WWW-Authenticate: Basic),
  * or the ringloc_token cookie set after the first request that gave it,
  * compared in constant time: nothing, not even a 404, is answered before
  * it), the Host header (an IP address, localhost, or this computer's name,
@@ -49,6 +51,7 @@ typedef struct {
     int status;       /* 200, or the 4xx returned */
     const char *why;  /* a short static reason for a 4xx */
     int set_cookie;   /* 1: the token came in the URL; answer with the cookie (then the page drops it) */
+    int redirect;     /* 1: the page with ?token=: answer 303 to the page without it, with the cookie */
 } rl_http_req;
 
 /* Judge in against the configured token ("" or NULL: none needed).

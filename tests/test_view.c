@@ -171,6 +171,9 @@ static void test_request_order_host(void **st)
     /* the token in the URL asks for the cookie; the cookie alone is enough */
     assert_int_equal(judge_host("127.0.0.1:8080", "s3cret", NULL, "/", &r), 200);
     assert_int_equal(r.set_cookie, 1);
+    assert_int_equal(r.redirect, 1); /* the page: 303 to itself without the token (issue 41) */
+    assert_int_equal(judge_host("127.0.0.1:8080", "s3cret", NULL, "/status.json", &r), 200);
+    assert_int_equal(r.redirect, 0); /* a script's request is answered */
     assert_int_equal(judge_host("127.0.0.1:8080", NULL, "s3cret", "/status.json", &r), 200);
     assert_int_equal(r.set_cookie, 0);
     assert_int_equal(judge_host("127.0.0.1:8080", NULL, "s3cre", "/status.json", &r), 401);
@@ -201,6 +204,15 @@ static void test_request_judge(void **st)
     assert_int_equal(judge("HEAD", "/", NULL, NULL, "Bearer s3cret", &r), 200);
     assert_int_equal(r.route, RL_ROUTE_PAGE);
     assert_int_equal(judge("GET", "/map.json", NULL, NULL, "s3cret", &r), 200);
+    /* HTTP Basic, a browser's own prompt: any user, the token as the
+     * password (base64 of "installer:s3cret", ":s3cret", "installer:s3creT") */
+    assert_int_equal(judge("GET", "/", NULL, NULL, "Basic aW5zdGFsbGVyOnMzY3JldA==", &r), 200);
+    assert_int_equal(r.redirect, 0);
+    assert_int_equal(judge("GET", "/", NULL, NULL, "Basic OnMzY3JldA==", &r), 200);
+    assert_int_equal(judge("GET", "/", NULL, NULL, "Basic aW5zdGFsbGVyOnMzY3JlVA==", &r), 401);
+    assert_int_equal(judge("GET", "/", NULL, NULL, "Basic czNjcmV0", &r), 401);    /* "s3cret": no colon */
+    assert_int_equal(judge("GET", "/", NULL, NULL, "Basic !!!!", &r), 401);       /* not base64 */
+    assert_int_equal(judge("GET", "/", NULL, NULL, "Basic ", &r), 401);
     assert_int_equal(judge("POST", "/status.json", NULL, "s3cret", NULL, &r), 405);
     assert_int_equal(judge("GET", "/status.json", NULL, NULL, NULL, &r), 401);
     assert_int_equal(judge("GET", "/status.json", NULL, "s3cre", NULL, &r), 401);

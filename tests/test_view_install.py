@@ -12,6 +12,10 @@ Judged against the renderer's truth and hand-made expectations:
    serial line's reader gone (the pty closed) turns the state red with
    the cause (the write's error) and the time of the last good write,
    and /status.json says serial.up false with that error;
+ - a 401 asks a browser for the token (WWW-Authenticate: Basic) and
+   HTTP Basic with the token as the password lets it in; /?token= is
+   answered 303 to / with the cookie, so the address keeps no token and
+   the page works on from the cookie;
 Screenshots go to TMPDIR (view-*.png; docs/ holds copies).
 
 usage: test_view_install.py RINGLOC PATHS_DIR TMPDIR"""
@@ -19,7 +23,8 @@ import json
 import os
 import signal
 import subprocess
-import urllib.request
+import base64
+import http.client
 import sys
 import time
 
@@ -32,6 +37,40 @@ const se = document.scrollingElement, cam = document.getElementById("cam").getBo
 return {scroll: se.scrollWidth, inner: window.innerWidth, updates: window.rlView.updates,
         cam: [cam.left, cam.top, cam.right], map: [map.left, map.top, map.right]};
 """
+
+
+TOKEN = "inst4ller-t0ken"
+
+
+def page(drv, port):
+    """The page opened as an installer does: the token once in the address."""
+    drv.get("http://127.0.0.1:%d/?token=%s" % (port, TOKEN))
+
+
+def get(port, path, headers=None):
+    c = http.client.HTTPConnection("127.0.0.1", port, timeout=5)
+    c.request("GET", path, headers=headers or {})
+    r = c.getresponse()
+    body = r.read()
+    c.close()
+    return r.status, r.msg, body
+
+
+def check_way_in(ck, port):
+    code, h, _ = get(port, "/")
+    challenges = h.get_all("WWW-Authenticate") or []
+    ck.check(code == 401 and any(c.startswith("Basic realm=") for c in challenges),
+             "no token: %d, WWW-Authenticate %s (a browser asks for Basic only)" % (code, challenges))
+    basic = "Basic " + base64.b64encode(("installer:" + TOKEN).encode()).decode()
+    code, _, body = get(port, "/", {"Authorization": basic})
+    ck.check(code == 200 and b"ringloc live view" in body, "HTTP Basic with the token as the password: %d" % code)
+    bad = "Basic " + base64.b64encode(b"installer:nope").decode()
+    ck.check(get(port, "/status.json", {"Authorization": bad})[0] == 401, "HTTP Basic with a wrong password: served")
+    code, h, _ = get(port, "/?token=" + TOKEN)
+    cookie = h.get("Set-Cookie") or ""
+    ck.check(code == 303 and h.get("Location") == "/" and cookie.startswith("ringloc_token=%s;" % TOKEN),
+             "/?token=: %d, Location %s, cookie %r (303 to / with the cookie)" % (code, h.get("Location"), cookie))
+    print("way in: 401 asks %s; Basic let in; ?token= answered %d to %s" % (challenges, code, h.get("Location")))
 
 
 def wait_updates(drv, n=2, seconds=15):
@@ -47,7 +86,8 @@ def check_layout(ck, port, tmp):
     for width, height, stacked in ((390, 1900, True), (360, 1900, True), (1280, 900, False)):
         drv = vl.chromium(width, height, phone=stacked)
         try:
-            drv.get("http://127.0.0.1:%d/" % port)
+            page(drv, port)
+            ck.check(TOKEN not in drv.current_url, "the token stayed in the address: %s" % drv.current_url)
             ck.check(wait_updates(drv), "%d px: the page never showed a frame" % width)
             time.sleep(0.6)  # the numbers and the map drawn too
             lay = drv.execute_script(LAYOUT_JS)
@@ -88,15 +128,17 @@ def rgb(css):
 
 
 def status(port):
-    with urllib.request.urlopen("http://127.0.0.1:%d/status.json" % port, timeout=5) as r:
-        return json.loads(r.read())
+    code, _, body = get(port, "/status.json", {"X-Ringloc-Token": TOKEN})
+    if code != 200:
+        raise vl.Fail("/status.json: %d" % code)
+    return json.loads(body)
 
 
 def check_faults(ck, port, fw, mon, tmp):
     """Last: it closes the serial line for good."""
     drv = vl.chromium(390, 1100, phone=True)
     try:
-        drv.get("http://127.0.0.1:%d/" % port)
+        page(drv, port)
         ck.check(wait_updates(drv), "faults: the page never showed a frame")
         st = wait_state(drv, "ok", 5)
         ck.check(st["cls"] == "ok" and st["text"].startswith("pose"), "poses going out, the state is %s" % st)
@@ -144,7 +186,7 @@ def main():
     cfg = vl.write_config(tmp, paths_dir, names, tty)
     port = vl.free_port()
     with open(cfg, "a") as f:
-        f.write("http: {listen: 127.0.0.1:%d}\n" % port)
+        f.write("http: {listen: 127.0.0.1:%d, token: %s}\n" % (port, TOKEN))
     mon = subprocess.Popen([ringloc, "monitor", "--pty", tty], stdout=open(os.path.join(tmp, "poses.jsonl"), "w"),
                            stderr=open(os.path.join(tmp, "monitor.err"), "w"))
     for _ in range(50):
@@ -155,6 +197,7 @@ def main():
     ck = vl.Checks()
     try:
         vl.wait_http(port, fw)
+        check_way_in(ck, port)
         check_layout(ck, port, tmp)
         check_faults(ck, port, fw, mon, tmp)
     finally:
