@@ -14,6 +14,7 @@
 #include "rl_clock.h"
 #include "rl_http_req.h"
 #include "rl_listen.h"
+#include "rl_png.h"
 #include "rl_view_jpeg.h"
 #include "rl_view_json.h"
 
@@ -48,6 +49,9 @@ struct rl_http {
     long jpeg_seq;            /* the JPEG last encoded: of this snapshot ... */
     int jpeg_width;           /* ... at this width (two pages ask for the same) */
     size_t jpeg_len;
+    uint8_t *png;             /* the last /snapshot.png ... */
+    size_t png_cap, png_len;
+    long png_seq;             /* ... of this snapshot */
     char self[256];           /* this computer's name, for the Host check */
     char cookie[RL_HTTP_MAX_TOKEN + 64]; /* Set-Cookie with the token */
     int set_cookie;           /* the request being answered gave the token in its URL */
@@ -75,7 +79,7 @@ static rl_view_snap *latest(rl_http *h)
     return &h->ring[h->newest];
 }
 
-static const rl_view_snap *by_seq(rl_http *h, long seq)
+static rl_view_snap *by_seq(rl_http *h, long seq)
 {
     int i;
     for (i = 0; seq > 0 && i < RING; i++)
@@ -149,6 +153,27 @@ static enum MHD_Result frame(rl_http *h, struct MHD_Connection *c, const rl_http
                  s->seq);
 }
 
+/* The frame as recognized, lossless (its status: /status.json?seq=). */
+static enum MHD_Result snapshot(rl_http *h, struct MHD_Connection *c, const rl_http_req *q)
+{
+    const rl_view_snap *s = q->seq > 0 ? by_seq(h, q->seq) : latest(h);
+    rl_image img;
+    if (!s->have_image)
+        return refuse(h, c, MHD_HTTP_SERVICE_UNAVAILABLE, "no frame yet");
+    if (s->seq != h->png_seq) {
+        h->png_seq = 0;
+        img.width = s->width;
+        img.height = s->height;
+        img.stride = s->width;
+        img.data = s->image;
+        if (rl_png_encode_gray(&img, h->png, h->png_cap, &h->png_len) != RL_OK)
+            return refuse(h, c, MHD_HTTP_INTERNAL_SERVER_ERROR, "PNG encoding failed");
+        h->png_seq = s->seq;
+    }
+    h->counts.served++;
+    return reply(h, c, MHD_HTTP_OK, "image/png", h->png, h->png_len, MHD_RESPMEM_MUST_COPY, s->seq);
+}
+
 static enum MHD_Result respond(rl_http *h, struct MHD_Connection *c, const rl_http_req *q)
 {
     size_t n;
@@ -160,6 +185,13 @@ static enum MHD_Result respond(rl_http *h, struct MHD_Connection *c, const rl_ht
                      MHD_RESPMEM_PERSISTENT, 0);
     }
     switch (q->route) {
+    case RL_ROUTE_RECORD:
+        rl_view_ask_record(h->view, q->on);
+        h->counts.served++;
+        return reply(h, c, MHD_HTTP_OK, "text/plain; charset=utf-8", q->on ? "recording asked to start\n"
+                     : "recording asked to stop\n", q->on ? 25 : 24, MHD_RESPMEM_PERSISTENT, 0);
+    case RL_ROUTE_SNAPSHOT:
+        return snapshot(h, c, q);
     case RL_ROUTE_PAGE:
         h->counts.served++;
         return reply(h, c, MHD_HTTP_OK, "text/html; charset=utf-8", rl_view_page, rl_view_page_len,
@@ -168,7 +200,7 @@ static enum MHD_Result respond(rl_http *h, struct MHD_Connection *c, const rl_ht
         h->counts.served++;
         return reply(h, c, MHD_HTTP_OK, "application/json", h->map, h->map_len, MHD_RESPMEM_PERSISTENT, 0);
     case RL_ROUTE_STATUS:
-        s = latest(h);
+        s = q->seq > 0 ? by_seq(h, q->seq) : latest(h);
         s->served_us = rl_clock_now_us();
         if ((n = rl_view_json_status(s, h->status, RL_VIEW_JSON_STATUS_MAX)) == 0)
             return refuse(h, c, MHD_HTTP_INTERNAL_SERVER_ERROR, "status too large");
@@ -295,7 +327,12 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const cha
     rl_http_req q;
     (void)version;
     (void)upload;
-    (void)state;
+    if (*state != NULL) {
+        /* answered at its first call: a body sent with it is dropped */
+        *upload_size = 0;
+        return MHD_YES;
+    }
+    *state = h;
     if (!h->niced) {
         /* the loop first: where cores are short, the server waits (Linux
          * sets a nice value per thread) */
@@ -310,10 +347,11 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const cha
     in.auth = MHD_lookup_connection_value(c, MHD_HEADER_KIND, "X-Ringloc-Token");
     if (in.auth == NULL)
         in.auth = MHD_lookup_connection_value(c, MHD_HEADER_KIND, "Authorization");
-    (void)upload_size;
     in.cookie = MHD_lookup_connection_value(c, MHD_COOKIE_KIND, "ringloc_token");
     in.host = MHD_lookup_connection_value(c, MHD_HEADER_KIND, "Host");
     in.self = h->self;
+    in.on = arg(c, "on");
+    in.action = MHD_lookup_connection_value(c, MHD_HEADER_KIND, "X-Ringloc-Action");
     answered(h, c);
     h->set_cookie = 0;
     if (rl_http_req_judge(&in, h->token, &q) != 200)
@@ -349,7 +387,9 @@ static rl_err make_buffers(rl_http *h, const rl_map *map)
     h->status = (char *)malloc(RL_VIEW_JSON_STATUS_MAX);
     h->map = (char *)malloc(rl_view_json_map_size(map));
     h->jpeg = rl_view_jpeg_new(vc.width, vc.height);
-    if (h->status == NULL || h->map == NULL || h->jpeg == NULL)
+    h->png_cap = rl_png_gray_max(vc.width, vc.height);
+    h->png = (uint8_t *)malloc(h->png_cap);
+    if (h->status == NULL || h->map == NULL || h->jpeg == NULL || h->png == NULL)
         return RL_ENOMEM;
     h->map_len = rl_view_json_map(map, h->map, rl_view_json_map_size(map));
     return h->map_len ? RL_OK : RL_ENOMEM;
@@ -444,6 +484,7 @@ void rl_http_stop(rl_http *h, rl_http_counts *counts)
     for (i = 0; i < RING; i++)
         free(h->ring_mem[i]);
     rl_view_jpeg_free(h->jpeg);
+    free(h->png);
     free(h->status);
     free(h->map);
     free(h);

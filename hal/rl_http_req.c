@@ -179,7 +179,28 @@ static rl_http_route route_of(const char *url)
         return RL_ROUTE_STATUS;
     if (strcmp(url, "/map.json") == 0)
         return RL_ROUTE_MAP;
+    if (strcmp(url, "/snapshot.png") == 0)
+        return RL_ROUTE_SNAPSHOT;
+    if (strcmp(url, "/record") == 0)
+        return RL_ROUTE_RECORD;
     return RL_ROUTE_NONE;
+}
+
+/* POST /record?on=1|0 with X-Ringloc-Action (the token and Host already
+ * judged). */
+static int judge_record(const rl_http_req_in *in, rl_http_req *r)
+{
+    if (in->method == NULL || strcmp(in->method, "POST") != 0)
+        return fail(r, 405, "POST /record?on=1 or ?on=0 starts or stops recording");
+    if (in->action == NULL || in->action[0] == 0)
+        return fail(r, 405, "POST /record needs the X-Ringloc-Action header (the page sends it)");
+    if (in->on == NULL || (strcmp(in->on, "1") != 0 && strcmp(in->on, "0") != 0))
+        return fail(r, 400, "on is not 1 (start) or 0 (stop)");
+    r->on = in->on[0] == '1';
+    r->route = RL_ROUTE_RECORD;
+    r->status = 200;
+    r->why = "";
+    return 200;
 }
 
 int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *r)
@@ -190,6 +211,7 @@ int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *
     r->seq = -1;
     r->set_cookie = 0;
     r->redirect = 0;
+    r->on = 0;
     /* the token first: without it nothing is said, not even what exists */
     if (!token_ok(in, token, r))
         return fail(r, 401, "access token missing or wrong");
@@ -197,8 +219,10 @@ int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *
         return fail(r, 400, "no Host header");
     if (!host_ok(in->host, in->self))
         return fail(r, 421, "Host is not this robot (an IP address, localhost or its own name)");
+    if (in->url != NULL && strcmp(in->url, "/record") == 0)
+        return judge_record(in, r);
     if (in->method == NULL || (strcmp(in->method, "GET") != 0 && strcmp(in->method, "HEAD") != 0))
-        return fail(r, 405, "only GET and HEAD: the view is read-only");
+        return fail(r, 405, "only GET and HEAD: the view is read-only but for POST /record");
     if (in->url == NULL || in->url[0] != '/')
         return fail(r, 404, "no such page");
     if (bounded_len(in->url, RL_HTTP_MAX_URL) > RL_HTTP_MAX_URL)

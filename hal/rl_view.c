@@ -48,6 +48,7 @@ rl_err rl_view_init(rl_view *v, const rl_view_config *c, void *mem, size_t size)
     v->loop.width = c->width;
     v->loop.height = c->height;
     v->loop.place = -1;
+    v->rec_ask = -1;
     if (pthread_mutex_init(&v->lock, NULL) != 0)
         return RL_EIO;
     return RL_OK;
@@ -205,6 +206,16 @@ int rl_view_take(rl_view *v, rl_view_snap *s)
     }
     pthread_mutex_unlock(&v->lock);
     return newer;
+}
+
+void rl_view_ask_record(rl_view *v, int on)
+{
+    __atomic_store_n(&v->rec_ask, on ? 1 : 0, __ATOMIC_RELEASE);
+}
+
+int rl_view_record_asked(rl_view *v)
+{
+    return __atomic_exchange_n(&v->rec_ask, -1, __ATOMIC_ACQ_REL);
 }
 
 long rl_view_seq(rl_view *v)

@@ -59,6 +59,7 @@ typedef struct {
     int serial_up;          /* 1 when the last report reached the serial line (a write that
                                succeeded, not a descriptor held open) */
     int recording;          /* 1 while frames are recorded */
+    int rec_can;            /* 1: a recording folder is configured (the page may start and stop it) */
     long rec_kept, rec_skipped; /* frames handed to the writer, and skipped */
 } rl_view_counts;
 
@@ -130,6 +131,7 @@ typedef struct {
     rl_view_snap shared;       /* under lock */
     rl_view_snap loop;         /* the loop's own: counters, track, without the image */
     uint64_t next_us, next_track_us, last_t_us;
+    int rec_ask;               /* the reader's request to the loop (atomic): -1 none, 0 stop, 1 start */
 } rl_view;
 
 void rl_view_defaults(rl_view_config *c);
@@ -158,6 +160,14 @@ int rl_view_take(rl_view *v, rl_view_snap *s);
 
 /* Reader: the seq of the latest snapshot (0: none yet), without a copy. */
 long rl_view_seq(rl_view *v);
+
+/* Reader: ask the loop to start (on 1) or stop (0) recording; the loop
+ * takes it with rl_view_record_asked. Atomic: neither side waits. */
+void rl_view_ask_record(rl_view *v, int on);
+
+/* Loop thread: what a reader asked since the last call (-1 nothing, 0
+ * stop, 1 start), taken. */
+int rl_view_record_asked(rl_view *v);
 
 /* Destroy the mutex (the memory stays the caller's). */
 void rl_view_destroy(rl_view *v);

@@ -187,8 +187,8 @@ static void counters(jbuf *b, const rl_view_snap *s)
     str(b, "text", s->cam_error);
     put(b, ", ");
     ago(b, "ago_ms", s, s->cam_error_us);
-    put(b, "}, \"recording\": {\"on\": %s, \"kept\": %ld, \"skipped\": %ld, ", c->recording ? "true" : "false",
-        c->rec_kept, c->rec_skipped);
+    put(b, "}, \"recording\": {\"on\": %s, \"can\": %s, \"kept\": %ld, \"skipped\": %ld, ",
+        c->recording ? "true" : "false", c->rec_can ? "true" : "false", c->rec_kept, c->rec_skipped);
     str(b, "note", s->rec_note);
     put(b, "}, ");
 }

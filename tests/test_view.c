@@ -149,14 +149,14 @@ static void test_offer_skips_when_held(void **st)
 static int judge(const char *method, const char *url, const char *w, const char *token, const char *auth,
                  rl_http_req *r)
 {
-    rl_http_req_in in = {method, url, w, NULL, token, auth, NULL, "127.0.0.1:8080", "ringbot"};
+    rl_http_req_in in = {method, url, w, NULL, token, auth, NULL, "127.0.0.1:8080", "ringbot", NULL, NULL};
     return rl_http_req_judge(&in, "s3cret", r);
 }
 
 /* The token before anything else, the Host header after it (issue 39). */
 static int judge_host(const char *host, const char *token, const char *cookie, const char *url, rl_http_req *r)
 {
-    rl_http_req_in in = {"GET", url, NULL, NULL, token, NULL, cookie, host, "ringbot"};
+    rl_http_req_in in = {"GET", url, NULL, NULL, token, NULL, cookie, host, "ringbot", NULL, NULL};
     return rl_http_req_judge(&in, "s3cret", r);
 }
 
@@ -229,8 +229,32 @@ static void test_request_judge(void **st)
     longurl[sizeof longurl - 1] = 0;
     assert_int_equal(judge("GET", longurl, NULL, "s3cret", NULL, &r), 414);
     {
-        rl_http_req_in in = {"GET", "/", NULL, NULL, NULL, NULL, NULL, "localhost", NULL};
+        rl_http_req_in in = {"GET", "/", NULL, NULL, NULL, NULL, NULL, "localhost", NULL, NULL, NULL};
         assert_int_equal(rl_http_req_judge(&in, "", &r), 200); /* no token configured */
+    }
+    assert_int_equal(judge("GET", "/snapshot.png", NULL, "s3cret", NULL, &r), 200);
+    assert_int_equal(r.route, RL_ROUTE_SNAPSHOT);
+    { /* recording from the page: POST, the action header, on=1|0, the token first */
+        rl_http_req_in in = {"POST", "/record", NULL, NULL, "s3cret", NULL, NULL, "localhost", NULL, "1", "1"};
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 200);
+        assert_true(r.route == RL_ROUTE_RECORD && r.on == 1);
+        in.on = "0";
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 200);
+        assert_int_equal(r.on, 0);
+        in.on = "2";
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 400);
+        in.on = "1";
+        in.action = NULL; /* a form of another site cannot set the header */
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 405);
+        in.action = "1";
+        in.method = "GET";
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 405);
+        in.method = "POST";
+        in.token = NULL;
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 401);
+        in.url = "/status.json";
+        in.token = "s3cret";
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 405); /* POST nowhere else */
     }
 }
 

@@ -16,11 +16,19 @@ Judged against the renderer's truth and hand-made expectations:
    HTTP Basic with the token as the password lets it in; /?token= is
    answered 303 to / with the cookie, so the address keeps no token and
    the page works on from the cookie;
+ - the page's snapshot link gives the frame shown as a PNG whose pixels
+   are the rendered frame's, byte for byte, and its JSON link the status
+   of that frame; `ringloc detect` reads the PNG to the same landmarks as
+   that JSON (ids, and centres within 0.01 px);
+ - recording stops and starts from the page's button (the drive's frames
+   stop growing, then grow again); a POST without the token gets 401,
+   one without X-Ringloc-Action 405;
 Screenshots go to TMPDIR (view-*.png; docs/ holds copies).
 
 usage: test_view_install.py RINGLOC PATHS_DIR TMPDIR"""
 import json
 import os
+import shutil
 import signal
 import subprocess
 import base64
@@ -175,6 +183,91 @@ def check_faults(ck, port, fw, mon, tmp):
     print("serial closed: %s" % st["text"])
 
 
+def fetch_link(drv, port, elem):
+    href = drv.execute_script("return document.getElementById('%s').getAttribute('href')" % elem)
+    if not href:
+        raise vl.Fail("the page has no %s link" % elem)
+    code, _, body = get(port, href, {"X-Ringloc-Token": TOKEN})
+    if code != 200:
+        raise vl.Fail("%s: %d" % (href, code))
+    return href, body
+
+
+def check_snapshot(ck, ringloc, port, paths_dir, names, tmp):
+    drv = vl.chromium(1280, 900)
+    try:
+        page(drv, port)
+        ck.check(wait_updates(drv), "snapshot: the page never showed a frame")
+        href, png = fetch_link(drv, port, "snap-png")
+        jhref, js = fetch_link(drv, port, "snap-json")
+    finally:
+        drv.quit()
+    st = json.loads(js)
+    ck.check(href.endswith("seq=%d" % st["seq"]), "the PNG (%s) and the JSON (seq %d) are not one frame's"
+             % (href, st["seq"]))
+    w, h, rows = vl.png_gray(png)
+    ow, oh, orows = vl.png_gray(open(os.path.join(paths_dir, names[st["frame"] % len(names)]), "rb").read())
+    ck.check((w, h) == (ow, oh) and rows == orows, "snapshot of frame %d: not the rendered frame's pixels"
+             % st["frame"])
+    out = os.path.join(tmp, "snapshot.png")
+    with open(out, "wb") as f:
+        f.write(png)
+    det = subprocess.run([ringloc, "detect", "--map", os.path.join(paths_dir, "map.yaml"), "--local", "auto", out],
+                         capture_output=True, text=True)
+    got = json.loads(det.stdout.splitlines()[0]) if det.returncode == 0 and det.stdout else {"landmarks": []}
+    a = {d["id"]: d for d in st["landmarks"]}
+    b = {d["id"]: d for d in got["landmarks"]}
+    worst = max([abs(a[i]["u"] - b[i]["u"]) + abs(a[i]["v"] - b[i]["v"]) for i in a if i in b] or [1e9])
+    ck.check(a and sorted(a) == sorted(b) and worst <= 0.01,
+             "detect on the snapshot: ids %s vs the page's %s, centres %.4f px apart" % (sorted(b), sorted(a), worst))
+    print("snapshot: frame %d, %d bytes, pixels = the rendered frame's; detect: %d landmarks, centres within %.4f px"
+          % (st["frame"], len(png), len(b), worst))
+
+
+def drive_frames(rec):
+    drives = sorted(d for d in os.listdir(rec) if d.startswith("drive_"))
+    return len([n for n in os.listdir(os.path.join(rec, drives[-1])) if n.endswith(".png")]) if drives else 0
+
+
+def click_record(drv, want):
+    end = time.time() + 5
+    while time.time() < end:
+        b = drv.execute_script("const b = document.getElementById('rec'); return [b.hidden, b.innerText];")
+        if not b[0] and b[1].startswith(want):
+            drv.execute_script("document.getElementById('rec').click()")
+            return True
+        time.sleep(0.2)
+    return False
+
+
+def check_recording(ck, port, rec, tmp):
+    ck.check(get(port, "/record?on=0", {"X-Ringloc-Action": "1"})[0] == 401, "POST /record without the token")
+    c = http.client.HTTPConnection("127.0.0.1", port, timeout=5)
+    c.request("POST", "/record?on=0", headers={"X-Ringloc-Token": TOKEN})
+    code = c.getresponse().status
+    c.close()
+    ck.check(code == 405, "POST /record without X-Ringloc-Action: %d" % code)
+    drv = vl.chromium(390, 1100, phone=True)
+    try:
+        page(drv, port)
+        ck.check(wait_updates(drv), "recording: the page never showed a frame")
+        ck.check(click_record(drv, "stop recording"), "no 'stop recording' button while recording")
+        time.sleep(1.5)  # the writer's queue drained
+        js, n0 = status(port), drive_frames(rec)
+        time.sleep(1.5)
+        n1 = drive_frames(rec)
+        ck.check(not js["recording"]["on"] and "stopped from the web view" in js["recording"]["note"] and n1 == n0,
+                 "stopped from the page: %s, frames %d then %d" % (js["recording"], n0, n1))
+        ck.check(click_record(drv, "start recording"), "no 'start recording' button once stopped")
+        time.sleep(1.5)
+        n2 = drive_frames(rec)
+        ck.check(status(port)["recording"]["on"] and n2 > n1, "started from the page: frames %d then %d" % (n1, n2))
+        drv.save_screenshot(os.path.join(tmp, "view-recording.png"))
+    finally:
+        drv.quit()
+    print("recording: stopped at %d frames (%d after 1.5 s), started again: %d" % (n0, n1, n2))
+
+
 def main():
     ringloc, paths_dir, tmp = sys.argv[1:4]
     vl.browser_or_skip()
@@ -185,8 +278,13 @@ def main():
         os.remove(tty)
     cfg = vl.write_config(tmp, paths_dir, names, tty)
     port = vl.free_port()
+    rec = os.path.join(tmp, "rec")
+    if os.path.isdir(rec):
+        shutil.rmtree(rec)
+    os.makedirs(rec)
     with open(cfg, "a") as f:
         f.write("http: {listen: 127.0.0.1:%d, token: %s}\n" % (port, TOKEN))
+        f.write("record: {dir: %s, every: 3}\n" % rec)
     mon = subprocess.Popen([ringloc, "monitor", "--pty", tty], stdout=open(os.path.join(tmp, "poses.jsonl"), "w"),
                            stderr=open(os.path.join(tmp, "monitor.err"), "w"))
     for _ in range(50):
@@ -199,6 +297,8 @@ def main():
         vl.wait_http(port, fw)
         check_way_in(ck, port)
         check_layout(ck, port, tmp)
+        check_snapshot(ck, ringloc, port, paths_dir, names, tmp)
+        check_recording(ck, port, rec, tmp)
         check_faults(ck, port, fw, mon, tmp)
     finally:
         fw.terminate()

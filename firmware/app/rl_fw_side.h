@@ -50,6 +50,7 @@ typedef struct {
     rl_record rec;
     uint64_t rec_retry_at;
     char rec_note[512];         /* why recording is off though asked for, or "" */
+    int rec_paused;             /* 1: stopped from the web view's page (frames not offered) */
     rl_fw_http web;
     uint64_t web_retry_at;
     char web_note[512];         /* why the web view is not up, or "" */

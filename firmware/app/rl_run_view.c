@@ -30,6 +30,7 @@ static void counts(const rl_runner *r, const rl_record *rec, rl_view_counts *c)
     /* off once the loop was told it stopped (a full disk, max_mb): the
      * counts then stay as they were */
     c->recording = rec != NULL && rec->running && !rec->told;
+    c->rec_can = rec != NULL;
     if (rec != NULL) {
         c->rec_kept = rec->kept;
         c->rec_skipped = rec->skipped;
@@ -54,6 +55,7 @@ void rl_run_view_report(void *ctx, const rl_run_report *rep)
     o.serial = rv->serial;
     o.rec_note = rv->rec_note;
     counts(r, rv->rec, &o.counts);
+    o.counts.recording &= !rv->rec_paused;
     /* up: this report reached the line (a write that succeeded; a
      * descriptor held open proves nothing) */
     o.counts.serial_up = r->sink_ok_us != 0 && r->sink_ok_us == rep->sent_us;

@@ -28,6 +28,7 @@ typedef struct {
     const char *serial;       /* the serial device's name */
     const rl_record *rec;     /* NULL: not recording; else on while running and not stopped */
     const char *rec_note;     /* why recording is off though asked for, or ""; NULL: none (set after init) */
+    int rec_paused;           /* 1: stopped from the page (set by the firmware's side features) */
 } rl_run_view;
 
 void rl_run_view_init(rl_run_view *rv, rl_view *view, const rl_runner *runner, const char *serial,
