@@ -375,9 +375,7 @@ static rl_err make_buffers(rl_http *h, const rl_map *map)
 {
     rl_view_config vc;
     int i;
-    rl_view_defaults(&vc);
-    vc.width = h->view->cfg.width;
-    vc.height = h->view->cfg.height;
+    vc = h->view->cfg;
     for (i = 0; i < RING; i++) {
         if ((h->ring_mem[i] = malloc(rl_view_size(&vc))) == NULL)
             return RL_ENOMEM;

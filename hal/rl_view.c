@@ -9,9 +9,14 @@
 
 void rl_view_defaults(rl_view_config *c)
 {
+    rl_recog_config rc;
+    rl_recog_defaults(&rc);
     memset(c, 0, sizeof *c);
     c->max_rate = 5;
     c->track_period = 0.5;
+    c->min_score = rc.min_score;
+    c->local_min_score = rc.local_min_score;
+    c->size_tolerance = rc.size_tolerance;
 }
 
 size_t rl_view_size(const rl_view_config *c)
@@ -20,6 +25,14 @@ size_t rl_view_size(const rl_view_config *c)
         return 0;
     /* the result first: its alignment is the block's (malloc's) */
     return sizeof(rl_result) + (size_t)c->width * (size_t)c->height;
+}
+
+/* What the recognizer accepts, for the JSON's unread candidates. */
+static void thresholds(rl_view_snap *s, const rl_view_config *c)
+{
+    s->min_score = c->min_score;
+    s->local_min_score = c->local_min_score;
+    s->size_tolerance = c->size_tolerance;
 }
 
 rl_err rl_view_snap_init(rl_view_snap *s, const rl_view_config *c, void *mem, size_t size)
@@ -32,6 +45,7 @@ rl_err rl_view_snap_init(rl_view_snap *s, const rl_view_config *c, void *mem, si
         return RL_ENOMEM;
     s->width = c->width;
     s->height = c->height;
+    thresholds(s, c);
     s->res = (rl_result *)mem;
     s->image = (uint8_t *)mem + sizeof(rl_result);
     s->place = -1;
@@ -48,6 +62,7 @@ rl_err rl_view_init(rl_view *v, const rl_view_config *c, void *mem, size_t size)
     v->loop.width = c->width;
     v->loop.height = c->height;
     v->loop.place = -1;
+    thresholds(&v->loop, c);
     v->rec_ask = -1;
     if (pthread_mutex_init(&v->lock, NULL) != 0)
         return RL_EIO;

@@ -50,6 +50,9 @@ typedef struct {
     int width, height;     /* the frames' size (the calibration's) */
     double max_rate;       /* snapshots per second at most (default 5) */
     double track_period;   /* seconds between track points (default 0.5) */
+    /* the recognizer's acceptance (rl_recog_config), to say what an unread
+     * candidate lacked (defaults: rl_recog_defaults') */
+    double min_score, local_min_score, size_tolerance;
 } rl_view_config;
 
 /* What the loop counted since start (the runner's counters, copied). */
@@ -98,6 +101,7 @@ typedef struct {
 typedef struct {
     long seq;                  /* snapshots since start; 0: none yet */
     int width, height;
+    double min_score, local_min_score, size_tolerance; /* the configuration's */
     uint8_t *image;            /* width x height grey, packed (caller's memory) */
     int have_image;
     long frame_index;

@@ -94,8 +94,65 @@ static void detection(jbuf *b, const rl_detection *d)
     put(b, "}");
 }
 
-static void result(jbuf *b, const rl_result *r)
+/* Visible fraction below which the global pass does not read a
+ * candidate (rl_global.c's). */
+#define READ_MIN_VISIBLE 0.95
+
+/* What an unread candidate lacked, from what the recognizer recorded:
+ * too little of it in the image, a ring the border cuts, a size unlike
+ * the frame's landmarks, a score under the pass's threshold; past those,
+ * the best id did not lead clearly (a zone twin, a code one zone away,
+ * read nearly as well) or its contrast was too low. */
+static const char *lacked(const rl_detection *d, double threshold, double median, double tol)
 {
+    if (d->visible < READ_MIN_VISIBLE)
+        return "too little visible";
+    if (!d->complete)
+        return "ring not closed";
+    if (median > 0 && d->radius < median * (1 - tol))
+        return "too small";
+    if (median > 0 && d->radius > median * (1 + tol))
+        return "too large";
+    if (!(d->score >= threshold))
+        return "score under the threshold";
+    return "zone twin too close or too little contrast";
+}
+
+static void unread(jbuf *b, const rl_view_snap *s, const rl_detection *d, double median)
+{
+    double threshold = d->pass == RL_PASS_LOCAL ? s->local_min_score : s->min_score;
+    put(b, "{\"id\": -1, \"best_id\": %d, ", d->best_id);
+    num_sep(b, "u", d->u, 2);
+    num_sep(b, "v", d->v, 2);
+    num_sep(b, "radius", d->radius, 2);
+    num_sep(b, "score", d->score, 3);
+    num(b, "threshold", threshold, 3);
+    put(b, ", \"pass\": \"%s\", \"complete\": %s, ", d->pass == RL_PASS_LOCAL ? "local" : "global",
+        d->complete ? "true" : "false");
+    num(b, "visible", d->visible, 3);
+    put(b, ", \"lacked\": \"%s\"}", lacked(d, threshold, median, s->size_tolerance));
+}
+
+/* The identified landmarks' median radius (0 with fewer than 3: the
+ * recognizer's size check needs 3). */
+static double median_radius(const rl_result *r)
+{
+    double a[RL_MAX_LANDMARKS], t;
+    int n = r->n_landmarks < RL_MAX_LANDMARKS ? r->n_landmarks : RL_MAX_LANDMARKS, i, j;
+    if (n < 3)
+        return 0;
+    for (i = 0; i < n; i++) {
+        for (t = r->landmarks[i].radius, j = i; j > 0 && a[j - 1] > t; j--)
+            a[j] = a[j - 1];
+        a[j] = t;
+    }
+    return n % 2 ? a[n / 2] : 0.5 * (a[n / 2 - 1] + a[n / 2]);
+}
+
+static void result(jbuf *b, const rl_view_snap *s)
+{
+    const rl_result *r = s->res;
+    double median = median_radius(r);
     const rl_levels *l = &r->levels;
     int i;
     put(b, "\"levels\": {\"light\": %d, \"threshold\": %d, ", l->light, l->threshold);
@@ -111,7 +168,7 @@ static void result(jbuf *b, const rl_result *r)
     put(b, "], \"unidentified\": [");
     for (i = 0; i < r->n_unidentified && i < RL_MAX_CANDIDATES; i++) {
         put(b, i ? ", " : "");
-        detection(b, &r->unidentified[i]);
+        unread(b, s, &r->unidentified[i], median);
     }
     put(b, "], \"lights\": [");
     for (i = 0; i < r->n_lights && i < RL_MAX_LIGHTS; i++)
@@ -216,7 +273,7 @@ size_t rl_view_json_status(const rl_view_snap *s, char *buf, size_t cap)
     str(&b, "camera", s->cam_info);
     put(&b, ", ");
     if (s->have_result)
-        result(&b, s->res);
+        result(&b, s);
     pose(&b, s);
     counters(&b, s);
     rl_view_json_hist(s, hist);

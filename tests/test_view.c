@@ -359,6 +359,61 @@ static void test_faults_and_track(void **st)
     teardown_view();
 }
 
+/* Each unread candidate says its nearest id, its score against its
+ * pass's threshold and what it lacked (issue 41), judged by hand: three
+ * landmarks of radius 20 (the median), then candidates cut to 60%, cut
+ * but 97% inside, of radius 12, scoring 0.5 globally, and scoring 0.85
+ * in the local pass (above its 0.75: the lead or contrast failed). */
+static void test_unread_json(void **st)
+{
+    static char buf[RL_VIEW_JSON_STATUS_MAX];
+    static const struct {
+        double radius, score, visible;
+        int complete, best, local;
+        const char *lacked;
+    } c[] = {{20, 0.9, 0.6, 0, -1, 0, "too little visible"},
+             {20, 0.9, 0.97, 0, 4, 0, "ring not closed"},
+             {12, 0.9, 1, 1, 4, 0, "too small"},
+             {20, 0.5, 1, 1, 17, 0, "score under the threshold"},
+             {20, 0.85, 1, 1, 18, 1, "zone twin too close or too little contrast"}};
+    rl_cam_frame f;
+    rl_view_obs o;
+    json_object *j, *v, *d, *k;
+    size_t i;
+    (void)st;
+    setup_view();
+    res.n_landmarks = 3;
+    for (i = 0; i < 3; i++)
+        res.landmarks[i].radius = 19.5 + 0.5 * (double)i, res.landmarks[i].complete = 1, res.landmarks[i].visible = 1;
+    res.n_unidentified = (int)(sizeof c / sizeof c[0]);
+    for (i = 0; i < sizeof c / sizeof c[0]; i++) {
+        rl_detection *u = &res.unidentified[i];
+        memset(u, 0, sizeof *u);
+        u->id = -1, u->best_id = c[i].best, u->radius = c[i].radius, u->score = c[i].score;
+        u->visible = c[i].visible, u->complete = c[i].complete, u->pass = c[i].local ? RL_PASS_LOCAL : RL_PASS_GLOBAL;
+    }
+    frame_at(&f, 1, 1000000u);
+    o = obs_of(&f, NULL, 1010000u);
+    assert_int_equal(rl_view_offer(&view, &o), 1);
+    assert_int_equal(rl_view_take(&view, &snap), 1);
+    assert_true(rl_view_json_status(&snap, buf, sizeof buf) > 0);
+    j = json_tokener_parse(buf);
+    assert_non_null(j);
+    assert_true(json_object_object_get_ex(j, "unidentified", &v));
+    assert_int_equal(json_object_array_length(v), sizeof c / sizeof c[0]);
+    for (i = 0; i < sizeof c / sizeof c[0]; i++) {
+        d = json_object_array_get_idx(v, i);
+        assert_true(json_object_object_get_ex(d, "lacked", &k));
+        assert_string_equal(json_object_get_string(k), c[i].lacked);
+        assert_true(json_object_object_get_ex(d, "best_id", &k));
+        assert_int_equal(json_object_get_int(k), c[i].best);
+        assert_true(json_object_object_get_ex(d, "threshold", &k)); /* rl_recog_defaults': 0.80, 0.75 */
+        assert_true(fabs(json_object_get_double(k) - (c[i].local ? 0.75 : 0.80)) < 1e-9);
+    }
+    json_object_put(j);
+    teardown_view();
+}
+
 static void test_map_json(void **st)
 {
     static rl_map map;
@@ -466,6 +521,7 @@ int main(void)
         cmocka_unit_test(test_request_order_host),
         cmocka_unit_test(test_request_judge),
         cmocka_unit_test(test_status_json),         cmocka_unit_test(test_faults_and_track),
+        cmocka_unit_test(test_unread_json),
         cmocka_unit_test(test_map_json),            cmocka_unit_test(test_jpeg),
         cmocka_unit_test(test_listen),              cmocka_unit_test(test_runcfg_http),
     };

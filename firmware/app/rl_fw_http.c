@@ -16,6 +16,11 @@ rl_err rl_fw_http_start(rl_fw_http *web, const char *listen, const char *token, 
     rl_view_defaults(&vc);
     vc.width = w;
     vc.height = h;
+    if (runner != NULL && runner->site != NULL) { /* what the recognizer accepts */
+        vc.min_score = runner->site->recog.cfg.min_score;
+        vc.local_min_score = runner->site->recog.cfg.local_min_score;
+        vc.size_tolerance = runner->site->recog.cfg.size_tolerance;
+    }
     if ((size = rl_view_size(&vc)) == 0 || (web->mem = malloc(size)) == NULL) {
         snprintf(err, errlen, "http: no memory for the web view of %dx%d frames", w, h);
         return RL_ENOMEM;
