@@ -53,6 +53,7 @@ struct rl_http {
     size_t png_cap, png_len;
     long png_seq;             /* ... of this snapshot */
     char self[256];           /* this computer's name, for the Host check */
+    rl_view_geom geom;        /* the map into the image */
     char cookie[RL_HTTP_MAX_TOKEN + 64]; /* Set-Cookie with the token */
     int set_cookie;           /* the request being answered gave the token in its URL */
     /* the deadline's watch: a thread that shuts a connection whose request
@@ -202,6 +203,7 @@ static enum MHD_Result respond(rl_http *h, struct MHD_Connection *c, const rl_ht
     case RL_ROUTE_STATUS:
         s = q->seq > 0 ? by_seq(h, q->seq) : latest(h);
         s->served_us = rl_clock_now_us();
+        s->geom = &h->geom;
         if ((n = rl_view_json_status(s, h->status, RL_VIEW_JSON_STATUS_MAX)) == 0)
             return refuse(h, c, MHD_HTTP_INTERNAL_SERVER_ERROR, "status too large");
         h->counts.served++;
@@ -446,6 +448,9 @@ rl_err rl_http_start(rl_http **hp, const rl_http_config *c, rl_view *view, const
     if ((h = (rl_http *)calloc(1, sizeof *h)) == NULL)
         return RL_ENOMEM;
     h->view = view;
+    h->geom.calib = c->calib;
+    h->geom.map = c->calib != NULL && c->mount != NULL ? map : NULL;
+    h->geom.mount = c->mount;
     snprintf(h->token, sizeof h->token, "%s", c->token ? c->token : "");
     snprintf(h->cookie, sizeof h->cookie, "ringloc_token=%s; Path=/; HttpOnly; SameSite=Strict", h->token);
     if (gethostname(h->self, sizeof h->self - 1) != 0)

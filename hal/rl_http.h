@@ -44,6 +44,11 @@ typedef struct {
     int timeout_s;           /* a request not whole this long after the connection opened or its
                                 last answer, or a connection idle this long, is closed (default 10) */
     size_t max_request;      /* bytes of one request's line and headers (default 8192) */
+    /* the camera's geometry, to draw the map's landmarks and the robot's
+     * forward direction into the image (NULL: not drawn; kept while the
+     * server runs) */
+    const rl_calib *calib;
+    const rl_mount *mount;
 } rl_http_config;
 
 typedef struct rl_http rl_http;

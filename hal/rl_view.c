@@ -162,7 +162,9 @@ static void copy_fields(rl_view_snap *dst, const rl_view_snap *src)
     int have_image = dst->have_image, have_result = dst->have_result;
     long index = dst->frame_index;
     uint64_t t_us = dst->t_us;
+    const rl_view_geom *geom = dst->geom;
     memcpy(dst, src, sizeof *dst);
+    dst->geom = geom;
     dst->image = image;
     dst->res = res;
     dst->have_image = have_image;

@@ -97,6 +97,14 @@ typedef struct {
 #define RL_VIEW_JUMP 1.0
 #endif
 
+/* The camera's geometry, for drawing the map into the image (the
+ * reader's; every pointer NULL: not drawn). */
+typedef struct {
+    const rl_calib *calib;     /* NULL: none, or an offset map instead of a pinhole model */
+    const rl_map *map;
+    const rl_mount *mount;
+} rl_view_geom;
+
 /* A copy of the loop's state, as a reader sees it. */
 typedef struct {
     long seq;                  /* snapshots since start; 0: none yet */
@@ -124,6 +132,7 @@ typedef struct {
     char cam_error[256];       /* the camera's last error (the driver's message), or "" */
     uint64_t cam_error_us;     /* when it came (0: never) */
     uint64_t served_us;        /* the reader's: when it wrote this copy out (rl_http) */
+    const rl_view_geom *geom;  /* the reader's: the map into the image (NULL: not drawn) */
     int lost;                  /* the loop's: a report without a pose since the last track point */
     int n_track;               /* oldest first */
     rl_view_point track[RL_VIEW_TRACK];

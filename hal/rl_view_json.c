@@ -180,6 +180,62 @@ static void result(jbuf *b, const rl_view_snap *s)
         r->dropped.regions, r->dropped.lights, r->dropped.candidates, r->dropped.landmarks);
 }
 
+/* The robot's axes in the image: where its forward (0.5 m) and left
+ * lead from the point above it, for a level robot (the pose does not
+ * matter: robot-frame points). */
+static void axes(jbuf *b, const rl_view_geom *g)
+{
+    rl_pose zero;
+    double u0, v0, uf, vf, ul, vl;
+    memset(&zero, 0, sizeof zero);
+    if (!rl_pose_project(g->calib, g->map, g->mount, &zero, 0, 0, &u0, &v0) ||
+        !rl_pose_project(g->calib, g->map, g->mount, &zero, 0.5, 0, &uf, &vf) ||
+        !rl_pose_project(g->calib, g->map, g->mount, &zero, 0, 0.5, &ul, &vl)) {
+        put(b, "\"axes\": null, ");
+        return;
+    }
+    /* forward's angle clockwise from the image's up; mirrored: left is
+     * clockwise of forward on the image, as it is not on a map seen from
+     * above */
+    put(b, "\"axes\": {\"origin\": [%.2f, %.2f], \"forward\": [%.2f, %.2f], \"left\": [%.2f, %.2f], "
+           "\"forward_deg\": %.1f, \"mirrored\": %s}, ",
+        u0, v0, uf, vf, ul, vl, atan2(uf - u0, -(vf - v0)) * 180.0 / M_PI,
+        (uf - u0) * (vl - v0) - (vf - v0) * (ul - u0) > 0 ? "true" : "false");
+}
+
+/* The map's landmarks where the pose says they are in the image, each
+ * with how far the one detected with its id is from there (px; null
+ * when it was not detected). */
+static void projected(jbuf *b, const rl_view_snap *s)
+{
+    const rl_view_geom *g = s->geom;
+    int i, j, n = 0;
+    if (g == NULL || g->calib == NULL || g->map == NULL || g->mount == NULL)
+        return;
+    axes(b, g);
+    put(b, "\"projected\": [");
+    for (i = 0; s->have_pose && i < g->map->count && i < RL_MAX_MAP_LANDMARKS; i++) {
+        double u, v, off = -1;
+        if (!rl_pose_project(g->calib, g->map, g->mount, &s->pose, g->map->lm[i].x, g->map->lm[i].y, &u, &v) ||
+            u < -s->width || u > 2 * s->width || v < -s->height || v > 2 * s->height)
+            continue;
+        for (j = 0; s->have_result && j < s->res->n_landmarks && j < RL_MAX_LANDMARKS; j++) {
+            const rl_detection *d = &s->res->landmarks[j];
+            double e = hypot(d->u - u, d->v - v);
+            if (d->id == g->map->lm[i].id && (off < 0 || e < off))
+                off = e;
+        }
+        put(b, "%s{\"id\": %d, ", n++ ? ", " : "", g->map->lm[i].id);
+        num_sep(b, "u", u, 2);
+        num(b, "v", v, 2);
+        if (off >= 0)
+            put(b, ", \"off_px\": %.2f}", off);
+        else
+            put(b, ", \"off_px\": null}");
+    }
+    put(b, "], ");
+}
+
 static void pose(jbuf *b, const rl_view_snap *s)
 {
     const rl_pose *p = &s->pose;
@@ -275,6 +331,7 @@ size_t rl_view_json_status(const rl_view_snap *s, char *buf, size_t cap)
     if (s->have_result)
         result(&b, s);
     pose(&b, s);
+    projected(&b, s);
     counters(&b, s);
     rl_view_json_hist(s, hist);
     put(&b, "\"hist\": [");

@@ -23,7 +23,8 @@
 #include "rl_view.h"
 
 /* Enough for any status document (every list at its compile-time limit). */
-#define RL_VIEW_JSON_STATUS_MAX (96 * 1024 + RL_MAX_CANDIDATES * 128 + RL_MAX_LANDMARKS * 192 + \
+#define RL_VIEW_JSON_STATUS_MAX (96 * 1024 + RL_MAX_CANDIDATES * 320 + RL_MAX_LANDMARKS * 192 + \
+                                 RL_MAX_MAP_LANDMARKS * 96 + \
                                  RL_VIEW_TRACK * 40)
 
 /* The status of snapshot s (see the README's web view section for the

@@ -24,6 +24,11 @@ Judged against the renderer's truth and hand-made expectations:
    score against the threshold and what it lacked; one over a landmark the
    renderer shows less than 90% of lacked "too little visible" or "ring
    not closed", one over a landmark wholly in view neither;
+ - the map's landmarks drawn where the pose puts them sit on their rings
+   (within 2 px of where the renderer put them, median) with the true
+   mount, and off them (at least 6 px, median) with a mount 0.10 m too
+   low, as the page's own off_px says too; the robot's forward arrow and
+   the image's orientation are stated (forward up, mirrored);
  - recording stops and starts from the page's button (the drive's frames
    stop growing, then grow again); a POST without the token gets 401,
    one without X-Ringloc-Action 405;
@@ -272,6 +277,64 @@ def check_unread(ck, port, paths_dir, names, tmp):
           % (len(seen), checked, cut))
 
 
+def projected_off(paths_dir, names, st):
+    """Pixels between each landmark the page draws from the map and the
+    renderer's position of it in that frame."""
+    t = {lm["id"]: lm for lm in vl.truth(paths_dir, names[st["frame"] % len(names)])["landmarks"]}
+    return sorted(((p["u"] - t[p["id"]]["u"]) ** 2 + (p["v"] - t[p["id"]]["v"]) ** 2) ** 0.5
+                  for p in st["projected"] if p["id"] in t and 0 <= p["u"] < 640 and 0 <= p["v"] < 480)
+
+
+PROJ_JS = """
+return {projected: window.rlView.projected || [], orient: document.getElementById("orient").innerText,
+        frame: window.rlView.frame};
+"""
+
+
+def check_mount(ck, ringloc, port, paths_dir, names, tmp, cfg):
+    right = projected_off(paths_dir, names, status(port))
+    ck.check(right and right[len(right) // 2] <= 2.0, "true mount: map landmarks %s px from their rings" % right)
+    # the same drive with the camera's height on the robot 0.10 m too low
+    robot = open(os.path.join(paths_dir, "robot.yaml")).read()
+    z = float(robot.split("z: ")[1].split(",")[0])
+    wrong_robot = os.path.join(tmp, "robot-wrong.yaml")
+    with open(wrong_robot, "w") as f:
+        f.write(robot.replace("z: %s" % robot.split("z: ")[1].split(",")[0], "z: %.4f" % (z - 0.10)))
+    wport = vl.free_port()
+    wcfg = os.path.join(tmp, "wrong.yaml")
+    text = open(cfg).read().replace(os.path.join(paths_dir, "robot.yaml"), wrong_robot)
+    text = "\n".join(ln for ln in text.splitlines() if not ln.startswith(("http:", "record:", "serial:")))
+    with open(wcfg, "w") as f:
+        f.write(text + "\nserial: {device: %s, baud: 115200}\nhttp: {listen: 127.0.0.1:%d, token: %s}\n"
+                % (os.path.join(tmp, "wrong.bin"), wport, TOKEN))
+    if os.path.exists(os.path.join(tmp, "wrong.bin")):  # an existing file is never written over
+        os.remove(os.path.join(tmp, "wrong.bin"))
+    fw = vl.start_firmware(ringloc, wcfg, tmp, 60 * vl.RATE, tag="wrong")
+    drv = None
+    try:
+        vl.wait_http(wport, fw)
+        drv = vl.chromium(1280, 900)
+        page(drv, wport)
+        ck.check(wait_updates(drv, 3), "wrong mount: the page never showed a frame")
+        time.sleep(0.5)
+        shown = drv.execute_script(PROJ_JS)
+        drv.save_screenshot(os.path.join(tmp, "view-wrong-mount.png"))
+        wrong = projected_off(paths_dir, names, status(wport))
+    finally:
+        if drv:
+            drv.quit()
+        fw.terminate()
+        fw.wait(10)
+    ck.check(wrong and wrong[len(wrong) // 2] >= 6.0, "mount 0.10 m low: map landmarks only %s px off" % wrong)
+    offs = sorted(p["off"] for p in shown["projected"] if p["off"] is not None)
+    ck.check(offs and offs[len(offs) // 2] >= 6.0, "mount 0.10 m low: the page says they are %s px off" % offs)
+    ck.check("forward" in shown["orient"] and "mirrored" in shown["orient"], "orientation: %r" % shown["orient"])
+    if right and wrong and offs:
+        print("mount: the map's landmarks %.2f px (median) from their rings with the true mount, %.1f px with it "
+              "0.10 m low (the page says %.1f px); %s" % (right[len(right) // 2], wrong[len(wrong) // 2],
+                                                          offs[len(offs) // 2], shown["orient"]))
+
+
 def drive_frames(rec):
     drives = sorted(d for d in os.listdir(rec) if d.startswith("drive_"))
     return len([n for n in os.listdir(os.path.join(rec, drives[-1])) if n.endswith(".png")]) if drives else 0
@@ -345,6 +408,7 @@ def main():
         vl.wait_http(port, fw)
         check_way_in(ck, port)
         check_layout(ck, port, tmp)
+        check_mount(ck, ringloc, port, paths_dir, names, tmp, cfg)
         check_unread(ck, port, paths_dir, names, tmp)
         check_snapshot(ck, ringloc, port, paths_dir, names, tmp)
         check_recording(ck, port, rec, tmp)

@@ -287,6 +287,7 @@ static void start_side(fw_setup *s, const char *record, const char *http, rl_fw_
     side->listen = s->cfg.http_listen;
     side->token = s->cfg.http_token;
     side->map = &s->site.map;
+    side->site = &s->site;
     side->serial = s->cfg.serial;
     rl_fw_side_start(side, rl_clock_now_us());
 }

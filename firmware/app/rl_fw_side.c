@@ -96,7 +96,7 @@ static void try_web(rl_fw_side *s, uint64_t now)
         return;
     if (!loopback_only(s->listen))
         make_token(s);
-    if (rl_fw_http_start(&s->web, s->listen, s->token, s->width, s->height, s->map, s->runner, s->serial,
+    if (rl_fw_http_start(&s->web, s->listen, s->token, s->width, s->height, s->site, s->map, s->runner, s->serial,
                          rec_wanted(s) ? &s->rec : NULL, err, sizeof err) != RL_OK) {
         failed(s, s->web_note, sizeof s->web_note, "the web view", err, &s->web_retry_at, now);
         return;

@@ -41,6 +41,7 @@ typedef struct {
     const char *listen;         /* "" or NULL: no web view */
     const char *token;          /* the web view's token, "" for none */
     const rl_map *map;          /* shown on the page */
+    const rl_site *site;        /* its camera, mount and recognizer's thresholds, for the page (may be NULL) */
     const char *serial;         /* the serial device's name, for the page */
     uint64_t retry_us;          /* RL_FW_SIDE_RETRY_US */
     /* the features' state (the loop's thread) */
