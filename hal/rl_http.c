@@ -15,6 +15,7 @@
 #include "rl_http_req.h"
 #include "rl_listen.h"
 #include "rl_png.h"
+#include "rl_view_focus.h"
 #include "rl_view_jpeg.h"
 #include "rl_view_json.h"
 
@@ -54,6 +55,9 @@ struct rl_http {
     long png_seq;             /* ... of this snapshot */
     char self[256];           /* this computer's name, for the Host check */
     rl_view_geom geom;        /* the map into the image */
+    long focus_seq;           /* the snapshot last measured for ... */
+    double focus_best;        /* ... the sharpest frame's focus since start */
+    long focus_best_frame;
     char cookie[RL_HTTP_MAX_TOKEN + 64]; /* Set-Cookie with the token */
     int set_cookie;           /* the request being answered gave the token in its URL */
     /* the deadline's watch: a thread that shuts a connection whose request
@@ -154,6 +158,21 @@ static enum MHD_Result frame(rl_http *h, struct MHD_Connection *c, const rl_http
                  s->seq);
 }
 
+/* The sharpest frame's focus since start, counted once per snapshot. */
+static void best_focus(rl_http *h, rl_view_snap *s)
+{
+    if (s->seq != h->focus_seq && s->have_image && s->have_result) {
+        double f = rl_view_focus_frame(s->image, s->width, s->height, s->res, NULL);
+        h->focus_seq = s->seq;
+        if (f > h->focus_best) {
+            h->focus_best = f;
+            h->focus_best_frame = s->frame_index;
+        }
+    }
+    s->focus_best = h->focus_best;
+    s->focus_best_frame = h->focus_best_frame;
+}
+
 /* The frame as recognized, lossless (its status: /status.json?seq=). */
 static enum MHD_Result snapshot(rl_http *h, struct MHD_Connection *c, const rl_http_req *q)
 {
@@ -161,6 +180,22 @@ static enum MHD_Result snapshot(rl_http *h, struct MHD_Connection *c, const rl_h
     rl_image img;
     if (!s->have_image)
         return refuse(h, c, MHD_HTTP_SERVICE_UNAVAILABLE, "no frame yet");
+    if (q->crop_size > 0) {
+        /* a crop at 1:1, kept inside the frame (never cached) */
+        int n = q->crop_size < s->width && q->crop_size < s->height ? q->crop_size
+                : s->width < s->height ? s->width : s->height;
+        int x0 = q->crop_x - n / 2, y0 = q->crop_y - n / 2;
+        x0 = x0 < 0 ? 0 : x0 > s->width - n ? s->width - n : x0;
+        y0 = y0 < 0 ? 0 : y0 > s->height - n ? s->height - n : y0;
+        img.width = img.height = n;
+        img.stride = s->width;
+        img.data = s->image + (size_t)y0 * (size_t)s->width + (size_t)x0;
+        h->png_seq = 0;
+        if (rl_png_encode_gray(&img, h->png, h->png_cap, &h->png_len) != RL_OK)
+            return refuse(h, c, MHD_HTTP_INTERNAL_SERVER_ERROR, "PNG encoding failed");
+        h->counts.served++;
+        return reply(h, c, MHD_HTTP_OK, "image/png", h->png, h->png_len, MHD_RESPMEM_MUST_COPY, s->seq);
+    }
     if (s->seq != h->png_seq) {
         h->png_seq = 0;
         img.width = s->width;
@@ -204,6 +239,7 @@ static enum MHD_Result respond(rl_http *h, struct MHD_Connection *c, const rl_ht
         s = q->seq > 0 ? by_seq(h, q->seq) : latest(h);
         s->served_us = rl_clock_now_us();
         s->geom = &h->geom;
+        best_focus(h, s);
         if ((n = rl_view_json_status(s, h->status, RL_VIEW_JSON_STATUS_MAX)) == 0)
             return refuse(h, c, MHD_HTTP_INTERNAL_SERVER_ERROR, "status too large");
         h->counts.served++;
@@ -354,6 +390,9 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const cha
     in.self = h->self;
     in.on = arg(c, "on");
     in.action = MHD_lookup_connection_value(c, MHD_HEADER_KIND, "X-Ringloc-Action");
+    in.x = arg(c, "x");
+    in.y = arg(c, "y");
+    in.size = arg(c, "size");
     answered(h, c);
     h->set_cookie = 0;
     if (rl_http_req_judge(&in, h->token, &q) != 200)

@@ -212,6 +212,7 @@ int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *
     r->set_cookie = 0;
     r->redirect = 0;
     r->on = 0;
+    r->crop_x = r->crop_y = r->crop_size = 0;
     /* the token first: without it nothing is said, not even what exists */
     if (!token_ok(in, token, r))
         return fail(r, 401, "access token missing or wrong");
@@ -238,6 +239,13 @@ int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *
         if (!number(in->seq, 9, 0, 999999999L, &v))
             return fail(r, 400, "seq is not a snapshot number");
         r->seq = v;
+    }
+    if (in->size != NULL || in->x != NULL || in->y != NULL) {
+        long x, y, s;
+        if (in->size == NULL || in->x == NULL || in->y == NULL || !number(in->x, 5, 0, 8191, &x) ||
+            !number(in->y, 5, 0, 8191, &y) || !number(in->size, 3, 16, 512, &s))
+            return fail(r, 400, "a crop is x, y (0 .. 8191) and size (16 .. 512) together");
+        r->crop_x = (int)x, r->crop_y = (int)y, r->crop_size = (int)s;
     }
     r->route = route;
     /* the page asked with ?token=: a cookie and a redirect to the same

@@ -15,7 +15,7 @@
  * no I/O, no allocation, any bytes in (the fuzz target's contract).
  *
  *   rl_http_req_in in = {"GET", "/frame.jpg", "320", NULL, NULL, NULL, NULL, "127.0.0.1:8080", NULL,
- *                         NULL, NULL};
+ *                         NULL, NULL, NULL, NULL, NULL};
  *   rl_http_req r;
  *   if (rl_http_req_judge(&in, "", &r) == 200)
  *       use(r.route, r.width);          // RL_ROUTE_FRAME, 320
@@ -49,6 +49,7 @@ typedef struct {
     const char *self;             /* this computer's name (gethostname), or NULL */
     const char *on;               /* query argument of /record */
     const char *action;           /* the X-Ringloc-Action header (a page of another site cannot send it) */
+    const char *x, *y, *size;     /* /snapshot.png's crop: its centre and side, px */
 } rl_http_req_in;
 
 typedef struct {
@@ -60,6 +61,7 @@ typedef struct {
     int set_cookie;   /* 1: the token came in the URL; answer with the cookie (then the page drops it) */
     int redirect;     /* 1: the page with ?token=: answer 303 to the page without it, with the cookie */
     int on;           /* /record: 1 start, 0 stop */
+    int crop_x, crop_y, crop_size; /* /snapshot.png: a crop of size px (16 .. 512) about x, y; size 0: whole */
 } rl_http_req;
 
 /* Judge in against the configured token ("" or NULL: none needed).

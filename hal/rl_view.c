@@ -163,8 +163,12 @@ static void copy_fields(rl_view_snap *dst, const rl_view_snap *src)
     long index = dst->frame_index;
     uint64_t t_us = dst->t_us;
     const rl_view_geom *geom = dst->geom;
+    double best = dst->focus_best;
+    long best_frame = dst->focus_best_frame;
     memcpy(dst, src, sizeof *dst);
     dst->geom = geom;
+    dst->focus_best = best;
+    dst->focus_best_frame = best_frame;
     dst->image = image;
     dst->res = res;
     dst->have_image = have_image;

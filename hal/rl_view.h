@@ -133,6 +133,8 @@ typedef struct {
     uint64_t cam_error_us;     /* when it came (0: never) */
     uint64_t served_us;        /* the reader's: when it wrote this copy out (rl_http) */
     const rl_view_geom *geom;  /* the reader's: the map into the image (NULL: not drawn) */
+    double focus_best;         /* the reader's: the sharpest frame's focus since start (0: none) */
+    long focus_best_frame;     /* ... and its frame */
     int lost;                  /* the loop's: a report without a pose since the last track point */
     int n_track;               /* oldest first */
     rl_view_point track[RL_VIEW_TRACK];

@@ -1,4 +1,5 @@
 #include "rl_view_json.h"
+#include "rl_view_focus.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -81,7 +82,7 @@ void rl_view_json_hist(const rl_view_snap *s, unsigned long hist[256])
         hist[s->image[i]]++;
 }
 
-static void detection(jbuf *b, const rl_detection *d)
+static void detection(jbuf *b, const rl_detection *d, double sharp)
 {
     put(b, "{\"id\": %d, ", d->id);
     num_sep(b, "u", d->u, 2);
@@ -91,6 +92,8 @@ static void detection(jbuf *b, const rl_detection *d)
     put(b, ", \"pass\": \"%s\", \"complete\": %s, ", d->pass == RL_PASS_LOCAL ? "local" : "global",
         d->complete ? "true" : "false");
     num(b, "visible", d->visible, 3);
+    put(b, ", ");
+    num(b, "focus", sharp, 4);
     put(b, "}");
 }
 
@@ -149,10 +152,22 @@ static double median_radius(const rl_result *r)
     return n % 2 ? a[n / 2] : 0.5 * (a[n / 2 - 1] + a[n / 2]);
 }
 
+/* How sharp the frame is (rl_view_focus.h), the best since start, and
+ * each landmark's into per. */
+static void focus(jbuf *b, const rl_view_snap *s, double *per)
+{
+    double f = s->have_image ? rl_view_focus_frame(s->image, s->width, s->height, s->res, per) : NAN;
+    put(b, "\"focus\": {");
+    num_sep(b, "frame", f, 4);
+    num_sep(b, "blur_px", rl_view_focus_blur_px(f), 2);
+    num(b, "best", s->focus_best > 0 ? s->focus_best : NAN, 4);
+    put(b, ", \"best_frame\": %ld}, ", s->focus_best_frame);
+}
+
 static void result(jbuf *b, const rl_view_snap *s)
 {
     const rl_result *r = s->res;
-    double median = median_radius(r);
+    double median = median_radius(r), per[RL_MAX_LANDMARKS];
     const rl_levels *l = &r->levels;
     int i;
     put(b, "\"levels\": {\"light\": %d, \"threshold\": %d, ", l->light, l->threshold);
@@ -160,10 +175,14 @@ static void result(jbuf *b, const rl_view_snap *s)
     num(b, "bg", l->bg, 1);
     put(b, ", \"k\": %d}, ", l->k);
     num(b, "gamma", r->gamma, 3);
-    put(b, ", \"landmarks\": [");
+    put(b, ", ");
+    for (i = 0; i < RL_MAX_LANDMARKS; i++)
+        per[i] = NAN;
+    focus(b, s, per);
+    put(b, "\"landmarks\": [");
     for (i = 0; i < r->n_landmarks && i < RL_MAX_LANDMARKS; i++) {
         put(b, i ? ", " : "");
-        detection(b, &r->landmarks[i]);
+        detection(b, &r->landmarks[i], per[i]);
     }
     put(b, "], \"unidentified\": [");
     for (i = 0; i < r->n_unidentified && i < RL_MAX_CANDIDATES; i++) {

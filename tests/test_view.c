@@ -13,6 +13,7 @@
 #include "rl_listen.h"
 #include "rl_runcfg.h"
 #include "rl_view.h"
+#include "rl_view_focus.h"
 #include "rl_view_jpeg.h"
 #include "rl_view_json.h"
 
@@ -149,14 +150,14 @@ static void test_offer_skips_when_held(void **st)
 static int judge(const char *method, const char *url, const char *w, const char *token, const char *auth,
                  rl_http_req *r)
 {
-    rl_http_req_in in = {method, url, w, NULL, token, auth, NULL, "127.0.0.1:8080", "ringbot", NULL, NULL};
+    rl_http_req_in in = {method, url, w, NULL, token, auth, NULL, "127.0.0.1:8080", "ringbot", NULL, NULL, NULL, NULL, NULL};
     return rl_http_req_judge(&in, "s3cret", r);
 }
 
 /* The token before anything else, the Host header after it (issue 39). */
 static int judge_host(const char *host, const char *token, const char *cookie, const char *url, rl_http_req *r)
 {
-    rl_http_req_in in = {"GET", url, NULL, NULL, token, NULL, cookie, host, "ringbot", NULL, NULL};
+    rl_http_req_in in = {"GET", url, NULL, NULL, token, NULL, cookie, host, "ringbot", NULL, NULL, NULL, NULL, NULL};
     return rl_http_req_judge(&in, "s3cret", r);
 }
 
@@ -229,13 +230,13 @@ static void test_request_judge(void **st)
     longurl[sizeof longurl - 1] = 0;
     assert_int_equal(judge("GET", longurl, NULL, "s3cret", NULL, &r), 414);
     {
-        rl_http_req_in in = {"GET", "/", NULL, NULL, NULL, NULL, NULL, "localhost", NULL, NULL, NULL};
+        rl_http_req_in in = {"GET", "/", NULL, NULL, NULL, NULL, NULL, "localhost", NULL, NULL, NULL, NULL, NULL, NULL};
         assert_int_equal(rl_http_req_judge(&in, "", &r), 200); /* no token configured */
     }
     assert_int_equal(judge("GET", "/snapshot.png", NULL, "s3cret", NULL, &r), 200);
     assert_int_equal(r.route, RL_ROUTE_SNAPSHOT);
     { /* recording from the page: POST, the action header, on=1|0, the token first */
-        rl_http_req_in in = {"POST", "/record", NULL, NULL, "s3cret", NULL, NULL, "localhost", NULL, "1", "1"};
+        rl_http_req_in in = {"POST", "/record", NULL, NULL, "s3cret", NULL, NULL, "localhost", NULL, "1", "1", NULL, NULL, NULL};
         assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 200);
         assert_true(r.route == RL_ROUTE_RECORD && r.on == 1);
         in.on = "0";
@@ -414,6 +415,40 @@ static void test_unread_json(void **st)
     teardown_view();
 }
 
+/* The focus figure against an edge of known blur, by hand: a dark disc of
+ * radius 30 on paper, its edge a Gaussian of sigma px (the grey level
+ * from erf), gives about 1 / (sigma sqrt(2 pi)); halved blur, higher
+ * focus; the same in dim light (the contrast is divided out); a disc the
+ * border cuts is not measured. */
+static double focus_of(double sigma, double ink, double paper, double u)
+{
+    static uint8_t img[120][160];
+    rl_detection d;
+    int x, y;
+    for (y = 0; y < 120; y++)
+        for (x = 0; x < 160; x++) {
+            double r = hypot(x - u, y - 60.0);
+            img[y][x] = (uint8_t)lround(ink + (paper - ink) * 0.5 * (1 + erf((r - 30) / (sigma * sqrt(2.0)))));
+        }
+    memset(&d, 0, sizeof d);
+    d.u = u, d.v = 60, d.radius = 30, d.complete = 1;
+    return rl_view_focus_landmark(&img[0][0], 160, 120, &d);
+}
+
+static void test_focus(void **st)
+{
+    double f1, f2, f1dim;
+    (void)st;
+    f1 = focus_of(1.0, 40, 220, 80);
+    f2 = focus_of(2.0, 40, 220, 80);
+    f1dim = focus_of(1.0, 20, 90, 80);
+    assert_true(fabs(f1 - 1 / sqrt(2 * M_PI)) < 0.15 / sqrt(2 * M_PI));
+    assert_true(fabs(f2 - 0.5 / sqrt(2 * M_PI)) < 0.08 / sqrt(2 * M_PI));
+    assert_true(fabs(rl_view_focus_blur_px(f2) - 2.0) < 0.3);
+    assert_true(fabs(f1dim - f1) < 0.1 * f1);
+    assert_true(isnan(focus_of(1.0, 40, 220, 20))); /* cut by the border */
+}
+
 static void test_map_json(void **st)
 {
     static rl_map map;
@@ -521,7 +556,7 @@ int main(void)
         cmocka_unit_test(test_request_order_host),
         cmocka_unit_test(test_request_judge),
         cmocka_unit_test(test_status_json),         cmocka_unit_test(test_faults_and_track),
-        cmocka_unit_test(test_unread_json),
+        cmocka_unit_test(test_unread_json),         cmocka_unit_test(test_focus),
         cmocka_unit_test(test_map_json),            cmocka_unit_test(test_jpeg),
         cmocka_unit_test(test_listen),              cmocka_unit_test(test_runcfg_http),
     };

@@ -29,12 +29,17 @@ Judged against the renderer's truth and hand-made expectations:
    mount, and off them (at least 6 px, median) with a mount 0.10 m too
    low, as the page's own off_px says too; the robot's forward arrow and
    the image's orientation are stated (forward up, mirrored);
+ - the focus figure follows a rendered defocus sequence (the same poses
+   rendered clean, with more light blur and blurred: 0.5 .. 1.6 px, up
+   and down again): of every two frames whose blur differs by 0.3 px or
+   more, the sharper has the higher focus, and the best so far is the
+   highest seen; the chosen landmark's crop is shown at 1:1;
  - recording stops and starts from the page's button (the drive's frames
    stop growing, then grow again); a POST without the token gets 401,
    one without X-Ringloc-Action 405;
 Screenshots go to TMPDIR (view-*.png; docs/ holds copies).
 
-usage: test_view_install.py RINGLOC PATHS_DIR TMPDIR"""
+usage: test_view_install.py RINGLOC PATHS_DIR TMPDIR RINGLOC_RENDER"""
 import json
 import os
 import shutil
@@ -335,6 +340,83 @@ def check_mount(ck, ringloc, port, paths_dir, names, tmp, cfg):
                                                           offs[len(offs) // 2], shown["orient"]))
 
 
+FOCUS_JS = """
+const c = document.getElementById("crop");
+return {crop: window.rlView.crop || null, width: c.width, shown: c.getBoundingClientRect().width,
+        fig: document.getElementById("focusfig").innerText};
+"""
+
+
+def focus_sequence(render, tmp):
+    """The straight drive's 4 poses rendered clean, with illum's light blur
+    and with the blur set's; played sharp to blurred and back. Returns the
+    folder and the frames' truth blur (px), in order."""
+    out = os.path.join(tmp, "focus")
+    if os.path.isdir(out):
+        shutil.rmtree(out)
+    looks = ("clean", "illum", "blur")
+    for look in looks:
+        subprocess.run([render, "--out", os.path.join(out, look), "--path", "straight", "--frames", "4", "--look", look,
+                        "--mount", "0.12,-0.03,0.02", "--write-map", os.path.join(out, "map.yaml"), "--write-camera",
+                        os.path.join(out, "camera.yaml"), "--write-robot", os.path.join(out, "robot.yaml")],
+                       check=True, stdout=subprocess.DEVNULL)
+    seq = []
+    for i in range(4):
+        for look in (looks if i % 2 == 0 else looks[::-1]):
+            png = os.path.join(out, look, "straight_%03d.png" % i)
+            blur = float(open(png[:-4] + ".yaml").read().split("blur: ")[1].split(",")[0])
+            seq.append((png, blur))
+    return out, seq
+
+
+def check_focus(ck, ringloc, render, tmp):
+    out, seq = focus_sequence(render, tmp)
+    with open(os.path.join(out, "frames.txt"), "w") as f:
+        f.write("".join(png + "\n" for png, _ in seq))
+    port = vl.free_port()
+    cfg = os.path.join(out, "ringloc.yaml")
+    with open(cfg, "w") as f:  # 3 frames a second: each one snapshotted (at most 5 a second); twice
+        f.write("camera: {backend: png, device: frames.txt, width: 640, height: 480, rate: 3, loop: true}\n"
+                "calibration: camera.yaml\nmap: map.yaml\nrobot: robot.yaml\n"
+                "serial: {device: %s, baud: 115200}\nhttp: {listen: 127.0.0.1:%d, token: %s}\n"
+                % (os.path.join(out, "poses.bin"), port, TOKEN))
+    got, page_seen = {}, None
+    drv = vl.chromium(1280, 1000)
+    fw = vl.start_firmware(ringloc, cfg, out, 2 * len(seq), tag="focus")
+    try:
+        vl.wait_http(port, fw)
+        page(drv, port)
+        end = time.time() + 20
+        while time.time() < end and len(got) < len(seq) and fw.poll() is None:
+            try:
+                st = status(port)
+            except (vl.Fail, OSError):
+                break
+            if st.get("focus") and st["focus"]["frame"] is not None:
+                got[st["frame"] % len(seq)] = st["focus"]
+            p = drv.execute_script(FOCUS_JS)
+            if p["crop"] and page_seen is None:
+                page_seen = p
+                drv.save_screenshot(os.path.join(tmp, "view-focus.png"))
+            time.sleep(0.1)
+    finally:
+        drv.quit()
+        fw.terminate()
+        fw.wait(10)
+    ck.check(len(got) >= len(seq) - 1, "focus: %d of %d frames measured" % (len(got), len(seq)))
+    wrong = [(a, b) for a in got for b in got if seq[a][1] + 0.3 <= seq[b][1] and got[a]["frame"] <= got[b]["frame"]]
+    ck.check(not wrong, "focus against blur out of order: %s" % [(seq[a][1], got[a]["frame"], seq[b][1], got[b]["frame"])
+                                                                 for a, b in wrong])
+    last = got[max(got)] if got else {}
+    ck.check(got and abs(last["best"] - max(g["frame"] for g in got.values())) < 1e-3,
+             "best so far %s, highest seen %s" % (last.get("best"), max((g["frame"] for g in got.values()), default=0)))
+    ck.check(page_seen and page_seen["crop"]["size"] == page_seen["width"] and abs(page_seen["shown"] -
+                                                                                  page_seen["width"]) < 0.5,
+             "the crop is not shown at 1:1: %s" % page_seen)
+    print("focus: " + ", ".join("blur %.2f px -> %.3f /px (est. %.2f px)" % (seq[i][1], got[i]["frame"],
+                                got[i]["blur_px"]) for i in sorted(got)))
+
+
 def drive_frames(rec):
     drives = sorted(d for d in os.listdir(rec) if d.startswith("drive_"))
     return len([n for n in os.listdir(os.path.join(rec, drives[-1])) if n.endswith(".png")]) if drives else 0
@@ -380,7 +462,7 @@ def check_recording(ck, port, rec, tmp):
 
 
 def main():
-    ringloc, paths_dir, tmp = sys.argv[1:4]
+    ringloc, paths_dir, tmp, render = sys.argv[1:5]
     vl.browser_or_skip()
     os.makedirs(tmp, exist_ok=True)
     names = vl.frames_of(paths_dir)
@@ -410,6 +492,7 @@ def main():
         check_layout(ck, port, tmp)
         check_mount(ck, ringloc, port, paths_dir, names, tmp, cfg)
         check_unread(ck, port, paths_dir, names, tmp)
+        check_focus(ck, ringloc, render, tmp)
         check_snapshot(ck, ringloc, port, paths_dir, names, tmp)
         check_recording(ck, port, rec, tmp)
         check_faults(ck, port, fw, mon, tmp)
