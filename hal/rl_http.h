@@ -1,7 +1,10 @@
 /* rl_http: the live web view's server (GNU libmicrohttpd): one page
  * (rl_view_page.html, built into the program), /frame.jpg (the latest
- * frame, ?w= to scale it down), /status.json (rl_view_json.h) and
- * /map.json, read-only, from snapshots of the loop (rl_view.h). The server
+ * frame, ?w= to scale it down), /snapshot.png (a frame lossless, or a 1:1
+ * crop of it: ?x=&y=&size=), /status.json (rl_view_json.h; ?seq= for a
+ * snapshot's) and /map.json, from snapshots of the loop (rl_view.h); the
+ * one thing that changes anything is POST /record?on=1|0, which asks the
+ * loop to start or stop recording (rl_view_ask_record). The server
  * runs in one thread of its own that polls every client without blocking
  * (a slow or vanished browser holds nothing; at most max_clients at once,
  * max_per_client from one address, more are refused); a request that is
@@ -13,8 +16,8 @@
  * browser asks for it, and Bearer; the page asked with ?token= is
  * answered 303 to itself with the token in an HttpOnly cookie, so no
  * address or request of the page carries it), then the Host header: bad ones get a 4xx and a one-line
- * reason. Nothing is read from disk, nothing is changed: the loop never
- * waits for the server.
+ * reason. Nothing is read from disk: the loop never waits for the
+ * server.
  *
  *   static rl_view view;               // rl_view_init'ed, offered by the loop
  *   static rl_map map;
