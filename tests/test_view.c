@@ -150,7 +150,8 @@ static void test_offer_skips_when_held(void **st)
 static int judge(const char *method, const char *url, const char *w, const char *token, const char *auth,
                  rl_http_req *r)
 {
-    rl_http_req_in in = {method, url, w, NULL, token, auth, NULL, "127.0.0.1:8080", "ringbot", NULL, NULL, NULL, NULL, NULL};
+    rl_http_req_in in = {method, url, w,    NULL, token, auth, NULL,
+                         "127.0.0.1:8080", "ringbot", NULL, NULL, NULL, NULL, NULL};
     return rl_http_req_judge(&in, "s3cret", r);
 }
 
@@ -235,8 +236,21 @@ static void test_request_judge(void **st)
     }
     assert_int_equal(judge("GET", "/snapshot.png", NULL, "s3cret", NULL, &r), 200);
     assert_int_equal(r.route, RL_ROUTE_SNAPSHOT);
+    { /* a 1:1 crop: its centre and side together, each in range */
+        rl_http_req_in in = {"GET", "/snapshot.png", NULL, "7", "s3cret", NULL, NULL,
+                             "localhost", NULL, NULL, NULL, "320", "240", "72"};
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 200);
+        assert_true(r.crop_x == 320 && r.crop_y == 240 && r.crop_size == 72 && r.seq == 7);
+        in.size = "8"; /* under 16 */
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 400);
+        in.size = "600";
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 400);
+        in.size = NULL; /* x and y without a size */
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 400);
+    }
     { /* recording from the page: POST, the action header, on=1|0, the token first */
-        rl_http_req_in in = {"POST", "/record", NULL, NULL, "s3cret", NULL, NULL, "localhost", NULL, "1", "1", NULL, NULL, NULL};
+        rl_http_req_in in = {"POST", "/record", NULL, NULL, "s3cret", NULL, NULL,
+                             "localhost", NULL, "1", "1", NULL, NULL, NULL};
         assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 200);
         assert_true(r.route == RL_ROUTE_RECORD && r.on == 1);
         in.on = "0";

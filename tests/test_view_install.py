@@ -466,9 +466,7 @@ def main():
     vl.browser_or_skip()
     os.makedirs(tmp, exist_ok=True)
     names = vl.frames_of(paths_dir)
-    tty = os.path.join(tmp, "tty")
-    if os.path.lexists(tty):
-        os.remove(tty)
+    mon, tty = vl.start_monitor(ringloc, tmp)
     cfg = vl.write_config(tmp, paths_dir, names, tty)
     port = vl.free_port()
     rec = os.path.join(tmp, "rec")
@@ -478,12 +476,6 @@ def main():
     with open(cfg, "a") as f:
         f.write("http: {listen: 127.0.0.1:%d, token: %s}\n" % (port, TOKEN))
         f.write("record: {dir: %s, every: 3}\n" % rec)
-    mon = subprocess.Popen([ringloc, "monitor", "--pty", tty], stdout=open(os.path.join(tmp, "poses.jsonl"), "w"),
-                           stderr=open(os.path.join(tmp, "monitor.err"), "w"))
-    for _ in range(50):
-        if os.path.islink(tty):
-            break
-        time.sleep(0.1)
     fw = vl.start_firmware(ringloc, cfg, tmp, 120 * vl.RATE)
     ck = vl.Checks()
     try:

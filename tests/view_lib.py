@@ -119,6 +119,21 @@ def wait_http(port, proc, seconds=10):
     raise Fail("nothing listening on port %d after %d s" % (port, seconds))
 
 
+def start_monitor(ringloc, tmp):
+    """`ringloc monitor --pty` decoding the pose frames into
+    tmp/poses.jsonl: returns it and the pty's link (tmp/tty), once there."""
+    tty = os.path.join(tmp, "tty")
+    if os.path.lexists(tty):
+        os.remove(tty)
+    mon = subprocess.Popen([ringloc, "monitor", "--pty", tty], stdout=open(os.path.join(tmp, "poses.jsonl"), "w"),
+                           stderr=open(os.path.join(tmp, "monitor.err"), "w"))
+    for _ in range(50):
+        if os.path.islink(tty):
+            break
+        time.sleep(0.1)
+    return mon, tty
+
+
 def decode(ringloc, serial_file):
     out = subprocess.run([ringloc, "monitor", serial_file], capture_output=True, text=True, check=True).stdout
     return [json.loads(line) for line in out.splitlines() if line.strip()]

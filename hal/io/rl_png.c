@@ -383,6 +383,21 @@ static void write_rows(png_structp png, png_infop info, int w, int h, int color_
     png_write_end(png, info);
 }
 
+/* libpng's write and info structs with ctx for errors; 0 (nothing left
+ * made) when out of memory. */
+static int new_writer(png_ctx *ctx, png_structp *png, png_infop *info)
+{
+    *info = NULL;
+    *png = png_create_write_struct(PNG_LIBPNG_VER_STRING, ctx, on_error, on_warning);
+    if (*png != NULL)
+        *info = png_create_info_struct(*png);
+    if (*png == NULL || *info == NULL) {
+        png_destroy_write_struct(png, NULL);
+        return 0;
+    }
+    return 1;
+}
+
 static rl_err write_png(const char *path, int w, int h, int color_type, const uint8_t *data,
                         size_t stride, char *err, size_t errlen)
 {
@@ -395,11 +410,7 @@ static rl_err write_png(const char *path, int w, int h, int color_type, const ui
         return fail(err, errlen, RL_EINVAL, path ? path : "(null)", "nothing to write");
     if ((e = rl_outfile_open(&pw.out, path, err, errlen)) != RL_OK)
         return e;
-    png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &pw.ctx, on_error, on_warning);
-    if (png != NULL)
-        info = png_create_info_struct(png);
-    if (png == NULL || info == NULL) {
-        png_destroy_write_struct(&png, NULL);
+    if (!new_writer(&pw.ctx, &png, &info)) {
         rl_outfile_abort(&pw.out);
         return fail(err, errlen, RL_ENOMEM, path, "out of memory");
     }
@@ -460,13 +471,8 @@ rl_err rl_png_encode_gray(const rl_image *img, uint8_t *buf, size_t cap, size_t 
     *n = 0;
     if (!rl_image_valid(img) || buf == NULL)
         return RL_EINVAL;
-    png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &mw.ctx, on_error, on_warning);
-    if (png != NULL)
-        info = png_create_info_struct(png);
-    if (png == NULL || info == NULL) {
-        png_destroy_write_struct(&png, NULL);
+    if (!new_writer(&mw.ctx, &png, &info))
         return RL_ENOMEM;
-    }
     mw.ctx.msg[0] = '\0';
     mw.buf = buf;
     mw.cap = cap;
