@@ -6,7 +6,8 @@
  * logged in one line and tried again every retry_us from the loop's
  * observer (a new line only when the reason changes, and one when it
  * starts); recording that stops later (a full disk, max_mb) stays off,
- * and the page says why. A web view that listens beyond this computer
+ * and the page says why. The page may stop and start recording
+ * (rl_view_record_asked): a stop only stops offering frames. A web view that listens beyond this computer
  * (not 127.0.0.0/8 or ::1) without http.token gets a random token for the
  * run, printed once. Each report of the loop is offered to the recorder
  * and the view (rl_run_io.observe).
