@@ -41,8 +41,9 @@ double rl_view_focus_landmark(const uint8_t *img, int w, int h, const rl_detecti
 {
     double sum = 0, reach = d->radius + REACH + 2;
     int i, n = 0;
-    if (!d->complete || !(d->radius >= 6) || d->u - reach < 0 || d->v - reach < 0 || d->u + reach > w - 2 ||
-        d->v + reach > h - 2)
+    /* wholly inside, the edge's samples too (NaN fails every test) */
+    if (!d->complete || !(d->radius >= 6) || !(d->u - reach >= 0 && d->v - reach >= 0 && d->u + reach <= w - 2 &&
+                                               d->v + reach <= h - 2))
         return NAN;
     for (i = 0; i < RAYS; i++) {
         double f = ray(img, w, d, 2 * M_PI * i / RAYS);

@@ -441,7 +441,7 @@ static double focus_of(double sigma, double ink, double paper, double u)
     int x, y;
     for (y = 0; y < 120; y++)
         for (x = 0; x < 160; x++) {
-            double r = hypot(x - u, y - 60.0);
+            double r = hypot(x - (isnan(u) ? 80 : u), y - 60.0);
             img[y][x] = (uint8_t)lround(ink + (paper - ink) * 0.5 * (1 + erf((r - 30) / (sigma * sqrt(2.0)))));
         }
     memset(&d, 0, sizeof d);
@@ -461,6 +461,7 @@ static void test_focus(void **st)
     assert_true(fabs(rl_view_focus_blur_px(f2) - 2.0) < 0.3);
     assert_true(fabs(f1dim - f1) < 0.1 * f1);
     assert_true(isnan(focus_of(1.0, 40, 220, 20))); /* cut by the border */
+    assert_true(isnan(focus_of(1.0, 40, 220, NAN))); /* a centre that is no number: nothing read */
 }
 
 static void test_map_json(void **st)
