@@ -14,6 +14,8 @@
 #include "rl_clock.h"
 #include "rl_http_req.h"
 #include "rl_listen.h"
+#include "rl_png.h"
+#include "rl_view_focus.h"
 #include "rl_view_jpeg.h"
 #include "rl_view_json.h"
 
@@ -48,7 +50,14 @@ struct rl_http {
     long jpeg_seq;            /* the JPEG last encoded: of this snapshot ... */
     int jpeg_width;           /* ... at this width (two pages ask for the same) */
     size_t jpeg_len;
+    uint8_t *png;             /* the last /snapshot.png ... */
+    size_t png_cap, png_len;
+    long png_seq;             /* ... of this snapshot */
     char self[256];           /* this computer's name, for the Host check */
+    rl_view_geom geom;        /* the map into the image */
+    long focus_seq;           /* the snapshot last measured for ... */
+    double focus_best;        /* ... the sharpest frame's focus since start */
+    long focus_best_frame;
     char cookie[RL_HTTP_MAX_TOKEN + 64]; /* Set-Cookie with the token */
     int set_cookie;           /* the request being answered gave the token in its URL */
     /* the deadline's watch: a thread that shuts a connection whose request
@@ -64,7 +73,7 @@ struct rl_http {
 };
 
 /* The newest snapshot, taken from the view when it has a newer one. */
-static const rl_view_snap *latest(rl_http *h)
+static rl_view_snap *latest(rl_http *h)
 {
     int next = (h->newest + 1) % RING;
     if (rl_view_seq(h->view) != h->ring[h->newest].seq) {
@@ -75,7 +84,7 @@ static const rl_view_snap *latest(rl_http *h)
     return &h->ring[h->newest];
 }
 
-static const rl_view_snap *by_seq(rl_http *h, long seq)
+static rl_view_snap *by_seq(rl_http *h, long seq)
 {
     int i;
     for (i = 0; seq > 0 && i < RING; i++)
@@ -103,10 +112,18 @@ static enum MHD_Result reply(rl_http *h, struct MHD_Connection *c, unsigned stat
         snprintf(s, sizeof s, "%ld", seq);
         MHD_add_response_header(r, "X-Ringloc-Seq", s);
     }
-    if (status == MHD_HTTP_OK && cookie != NULL)
+    if ((status == MHD_HTTP_OK || status == MHD_HTTP_SEE_OTHER) && cookie != NULL)
         MHD_add_response_header(r, "Set-Cookie", cookie);
-    if (status == MHD_HTTP_UNAUTHORIZED)
+    if (status == MHD_HTTP_SEE_OTHER)
+        MHD_add_response_header(r, "Location", "/");
+    if (status == MHD_HTTP_UNAUTHORIZED) {
+        /* Basic first: a browser asks for it in its own prompt (any user
+         * name, the token as the password); scripts send a Bearer */
+        MHD_add_response_header(r, "WWW-Authenticate",
+                                "Basic realm=\"ringloc: any user name, the access token as the password\", "
+                                "charset=\"UTF-8\"");
         MHD_add_response_header(r, "WWW-Authenticate", "Bearer realm=\"ringloc\"");
+    }
     ok = MHD_queue_response(c, status, r);
     MHD_destroy_response(r);
     return ok;
@@ -141,11 +158,76 @@ static enum MHD_Result frame(rl_http *h, struct MHD_Connection *c, const rl_http
                  s->seq);
 }
 
+/* The sharpest frame's focus since start, counted once per snapshot. */
+static void best_focus(rl_http *h, rl_view_snap *s)
+{
+    if (s->seq != h->focus_seq && s->have_image && s->have_result) {
+        double f = rl_view_focus_frame(s->image, s->width, s->height, s->res, NULL);
+        h->focus_seq = s->seq;
+        if (f > h->focus_best) {
+            h->focus_best = f;
+            h->focus_best_frame = s->frame_index;
+        }
+    }
+    s->focus_best = h->focus_best;
+    s->focus_best_frame = h->focus_best_frame;
+}
+
+/* The frame as recognized, lossless (its status: /status.json?seq=). */
+static enum MHD_Result snapshot(rl_http *h, struct MHD_Connection *c, const rl_http_req *q)
+{
+    const rl_view_snap *s = q->seq > 0 ? by_seq(h, q->seq) : latest(h);
+    rl_image img;
+    if (!s->have_image)
+        return refuse(h, c, MHD_HTTP_SERVICE_UNAVAILABLE, "no frame yet");
+    if (q->crop_size > 0) {
+        /* a crop at 1:1, kept inside the frame (never cached) */
+        int n = q->crop_size < s->width && q->crop_size < s->height ? q->crop_size
+                : s->width < s->height ? s->width : s->height;
+        int x0 = q->crop_x - n / 2, y0 = q->crop_y - n / 2;
+        x0 = x0 < 0 ? 0 : x0 > s->width - n ? s->width - n : x0;
+        y0 = y0 < 0 ? 0 : y0 > s->height - n ? s->height - n : y0;
+        img.width = img.height = n;
+        img.stride = s->width;
+        img.data = s->image + (size_t)y0 * (size_t)s->width + (size_t)x0;
+        h->png_seq = 0;
+        if (rl_png_encode_gray(&img, h->png, h->png_cap, &h->png_len) != RL_OK)
+            return refuse(h, c, MHD_HTTP_INTERNAL_SERVER_ERROR, "PNG encoding failed");
+        h->counts.served++;
+        return reply(h, c, MHD_HTTP_OK, "image/png", h->png, h->png_len, MHD_RESPMEM_MUST_COPY, s->seq);
+    }
+    if (s->seq != h->png_seq) {
+        h->png_seq = 0;
+        img.width = s->width;
+        img.height = s->height;
+        img.stride = s->width;
+        img.data = s->image;
+        if (rl_png_encode_gray(&img, h->png, h->png_cap, &h->png_len) != RL_OK)
+            return refuse(h, c, MHD_HTTP_INTERNAL_SERVER_ERROR, "PNG encoding failed");
+        h->png_seq = s->seq;
+    }
+    h->counts.served++;
+    return reply(h, c, MHD_HTTP_OK, "image/png", h->png, h->png_len, MHD_RESPMEM_MUST_COPY, s->seq);
+}
+
 static enum MHD_Result respond(rl_http *h, struct MHD_Connection *c, const rl_http_req *q)
 {
     size_t n;
-    const rl_view_snap *s;
+    rl_view_snap *s;
+    if (q->redirect) {
+        static const char moved[] = "303 the token is kept in a cookie: /\n";
+        h->counts.served++;
+        return reply(h, c, MHD_HTTP_SEE_OTHER, "text/plain; charset=utf-8", moved, sizeof moved - 1,
+                     MHD_RESPMEM_PERSISTENT, 0);
+    }
     switch (q->route) {
+    case RL_ROUTE_RECORD:
+        rl_view_ask_record(h->view, q->on);
+        h->counts.served++;
+        return reply(h, c, MHD_HTTP_OK, "text/plain; charset=utf-8", q->on ? "recording asked to start\n"
+                     : "recording asked to stop\n", q->on ? 25 : 24, MHD_RESPMEM_PERSISTENT, 0);
+    case RL_ROUTE_SNAPSHOT:
+        return snapshot(h, c, q);
     case RL_ROUTE_PAGE:
         h->counts.served++;
         return reply(h, c, MHD_HTTP_OK, "text/html; charset=utf-8", rl_view_page, rl_view_page_len,
@@ -154,7 +236,10 @@ static enum MHD_Result respond(rl_http *h, struct MHD_Connection *c, const rl_ht
         h->counts.served++;
         return reply(h, c, MHD_HTTP_OK, "application/json", h->map, h->map_len, MHD_RESPMEM_PERSISTENT, 0);
     case RL_ROUTE_STATUS:
-        s = latest(h);
+        s = q->seq > 0 ? by_seq(h, q->seq) : latest(h);
+        s->served_us = rl_clock_now_us();
+        s->geom = &h->geom;
+        best_focus(h, s);
         if ((n = rl_view_json_status(s, h->status, RL_VIEW_JSON_STATUS_MAX)) == 0)
             return refuse(h, c, MHD_HTTP_INTERNAL_SERVER_ERROR, "status too large");
         h->counts.served++;
@@ -280,7 +365,12 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const cha
     rl_http_req q;
     (void)version;
     (void)upload;
-    (void)state;
+    if (*state != NULL) {
+        /* answered at its first call: a body sent with it is dropped */
+        *upload_size = 0;
+        return MHD_YES;
+    }
+    *state = h;
     if (!h->niced) {
         /* the loop first: where cores are short, the server waits (Linux
          * sets a nice value per thread) */
@@ -295,10 +385,14 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *c, const cha
     in.auth = MHD_lookup_connection_value(c, MHD_HEADER_KIND, "X-Ringloc-Token");
     if (in.auth == NULL)
         in.auth = MHD_lookup_connection_value(c, MHD_HEADER_KIND, "Authorization");
-    (void)upload_size;
     in.cookie = MHD_lookup_connection_value(c, MHD_COOKIE_KIND, "ringloc_token");
     in.host = MHD_lookup_connection_value(c, MHD_HEADER_KIND, "Host");
     in.self = h->self;
+    in.on = arg(c, "on");
+    in.action = MHD_lookup_connection_value(c, MHD_HEADER_KIND, "X-Ringloc-Action");
+    in.x = arg(c, "x");
+    in.y = arg(c, "y");
+    in.size = arg(c, "size");
     answered(h, c);
     h->set_cookie = 0;
     if (rl_http_req_judge(&in, h->token, &q) != 200)
@@ -322,9 +416,7 @@ static rl_err make_buffers(rl_http *h, const rl_map *map)
 {
     rl_view_config vc;
     int i;
-    rl_view_defaults(&vc);
-    vc.width = h->view->cfg.width;
-    vc.height = h->view->cfg.height;
+    vc = h->view->cfg;
     for (i = 0; i < RING; i++) {
         if ((h->ring_mem[i] = malloc(rl_view_size(&vc))) == NULL)
             return RL_ENOMEM;
@@ -334,7 +426,9 @@ static rl_err make_buffers(rl_http *h, const rl_map *map)
     h->status = (char *)malloc(RL_VIEW_JSON_STATUS_MAX);
     h->map = (char *)malloc(rl_view_json_map_size(map));
     h->jpeg = rl_view_jpeg_new(vc.width, vc.height);
-    if (h->status == NULL || h->map == NULL || h->jpeg == NULL)
+    h->png_cap = rl_png_gray_max(vc.width, vc.height);
+    h->png = (uint8_t *)malloc(h->png_cap);
+    if (h->status == NULL || h->map == NULL || h->jpeg == NULL || h->png == NULL)
         return RL_ENOMEM;
     h->map_len = rl_view_json_map(map, h->map, rl_view_json_map_size(map));
     return h->map_len ? RL_OK : RL_ENOMEM;
@@ -393,6 +487,9 @@ rl_err rl_http_start(rl_http **hp, const rl_http_config *c, rl_view *view, const
     if ((h = (rl_http *)calloc(1, sizeof *h)) == NULL)
         return RL_ENOMEM;
     h->view = view;
+    h->geom.calib = c->calib;
+    h->geom.map = c->calib != NULL && c->mount != NULL ? map : NULL;
+    h->geom.mount = c->mount;
     snprintf(h->token, sizeof h->token, "%s", c->token ? c->token : "");
     snprintf(h->cookie, sizeof h->cookie, "ringloc_token=%s; Path=/; HttpOnly; SameSite=Strict", h->token);
     if (gethostname(h->self, sizeof h->self - 1) != 0)
@@ -429,6 +526,7 @@ void rl_http_stop(rl_http *h, rl_http_counts *counts)
     for (i = 0; i < RING; i++)
         free(h->ring_mem[i]);
     rl_view_jpeg_free(h->jpeg);
+    free(h->png);
     free(h->status);
     free(h->map);
     free(h);

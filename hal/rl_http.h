@@ -1,7 +1,10 @@
 /* rl_http: the live web view's server (GNU libmicrohttpd): one page
  * (rl_view_page.html, built into the program), /frame.jpg (the latest
- * frame, ?w= to scale it down), /status.json (rl_view_json.h) and
- * /map.json, read-only, from snapshots of the loop (rl_view.h). The server
+ * frame, ?w= to scale it down), /snapshot.png (a frame lossless, or a 1:1
+ * crop of it: ?x=&y=&size=), /status.json (rl_view_json.h; ?seq= for a
+ * snapshot's) and /map.json, from snapshots of the loop (rl_view.h); the
+ * one thing that changes anything is POST /record?on=1|0, which asks the
+ * loop to start or stop recording (rl_view_ask_record). The server
  * runs in one thread of its own that polls every client without blocking
  * (a slow or vanished browser holds nothing; at most max_clients at once,
  * max_per_client from one address, more are refused); a request that is
@@ -9,11 +12,12 @@
  * is closed however slowly it trickles in (a second thread watches the
  * deadline), a request larger than max_request bytes gets 431 or is
  * closed. Every request is judged by rl_http_req before anything is
- * served, the token first (a 401 carries WWW-Authenticate; a token given
- * in the URL comes back as an HttpOnly cookie, so the page's own requests
- * carry none), then the Host header: bad ones get a 4xx and a one-line
- * reason. Nothing is read from disk, nothing is changed: the loop never
- * waits for the server.
+ * served, the token first (a 401 carries WWW-Authenticate: Basic, so a
+ * browser asks for it, and Bearer; the page asked with ?token= is
+ * answered 303 to itself with the token in an HttpOnly cookie, so no
+ * address or request of the page carries it), then the Host header: bad ones get a 4xx and a one-line
+ * reason. Nothing is read from disk: the loop never waits for the
+ * server.
  *
  *   static rl_view view;               // rl_view_init'ed, offered by the loop
  *   static rl_map map;
@@ -43,6 +47,11 @@ typedef struct {
     int timeout_s;           /* a request not whole this long after the connection opened or its
                                 last answer, or a connection idle this long, is closed (default 10) */
     size_t max_request;      /* bytes of one request's line and headers (default 8192) */
+    /* the camera's geometry, to draw the map's landmarks and the robot's
+     * forward direction into the image (NULL: not drawn; kept while the
+     * server runs) */
+    const rl_calib *calib;
+    const rl_mount *mount;
 } rl_http_config;
 
 typedef struct rl_http rl_http;

@@ -29,10 +29,56 @@ static int same_token(const char *given, const char *want)
     return diff == 0;
 }
 
+/* The value of a base64 digit, or -1. */
+static int b64(char c)
+{
+    if (c >= 'A' && c <= 'Z')
+        return c - 'A';
+    if (c >= 'a' && c <= 'z')
+        return c - 'a' + 26;
+    if (c >= '0' && c <= '9')
+        return c - '0' + 52;
+    return c == '+' ? 62 : c == '/' ? 63 : -1;
+}
+
+/* HTTP Basic's "user:password" decoded into out[0..cap) (NUL-ended);
+ * 0 when it is not base64 or does not fit. */
+static int basic_decode(const char *s, char *out, size_t cap)
+{
+    size_t n = 0;
+    unsigned acc = 0;
+    int bits = 0, d;
+    for (; *s && *s != '='; s++) {
+        if ((d = b64(*s)) < 0)
+            return 0;
+        acc = (acc << 6) | (unsigned)d;
+        bits += 6;
+        if (bits >= 8) {
+            bits -= 8;
+            if (n + 1 >= cap)
+                return 0;
+            out[n++] = (char)((acc >> bits) & 0xff);
+        }
+    }
+    out[n] = 0;
+    return 1;
+}
+
+/* The password of an "Authorization: Basic" value (the browser's own
+ * prompt: any user name, the token as the password), or NULL. */
+static const char *basic_password(const char *a, char *buf, size_t cap)
+{
+    const char *colon;
+    if (!basic_decode(a, buf, cap) || (colon = strchr(buf, ':')) == NULL)
+        return NULL;
+    return colon + 1;
+}
+
 /* 1 when the request carries the token (r->set_cookie when in its URL). */
 static int token_ok(const rl_http_req_in *in, const char *token, rl_http_req *r)
 {
     const char *a = in->auth;
+    char basic[RL_HTTP_MAX_TOKEN + 192];
     if (token == NULL || token[0] == 0)
         return 1;
     if (in->token != NULL && same_token(in->token, token))
@@ -43,6 +89,8 @@ static int token_ok(const rl_http_req_in *in, const char *token, rl_http_req *r)
         return 0;
     if (strncmp(a, "Bearer ", 7) == 0)
         a += 7;
+    else if (strncmp(a, "Basic ", 6) == 0 && (a = basic_password(a + 6, basic, sizeof basic)) == NULL)
+        return 0;
     return same_token(a, token);
 }
 
@@ -131,7 +179,28 @@ static rl_http_route route_of(const char *url)
         return RL_ROUTE_STATUS;
     if (strcmp(url, "/map.json") == 0)
         return RL_ROUTE_MAP;
+    if (strcmp(url, "/snapshot.png") == 0)
+        return RL_ROUTE_SNAPSHOT;
+    if (strcmp(url, "/record") == 0)
+        return RL_ROUTE_RECORD;
     return RL_ROUTE_NONE;
+}
+
+/* POST /record?on=1|0 with X-Ringloc-Action (the token and Host already
+ * judged). */
+static int judge_record(const rl_http_req_in *in, rl_http_req *r)
+{
+    if (in->method == NULL || strcmp(in->method, "POST") != 0)
+        return fail(r, 405, "POST /record?on=1 or ?on=0 starts or stops recording");
+    if (in->action == NULL || in->action[0] == 0)
+        return fail(r, 405, "POST /record needs the X-Ringloc-Action header (the page sends it)");
+    if (in->on == NULL || (strcmp(in->on, "1") != 0 && strcmp(in->on, "0") != 0))
+        return fail(r, 400, "on is not 1 (start) or 0 (stop)");
+    r->on = in->on[0] == '1';
+    r->route = RL_ROUTE_RECORD;
+    r->status = 200;
+    r->why = "";
+    return 200;
 }
 
 int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *r)
@@ -141,6 +210,9 @@ int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *
     r->width = 0;
     r->seq = -1;
     r->set_cookie = 0;
+    r->redirect = 0;
+    r->on = 0;
+    r->crop_x = r->crop_y = r->crop_size = 0;
     /* the token first: without it nothing is said, not even what exists */
     if (!token_ok(in, token, r))
         return fail(r, 401, "access token missing or wrong");
@@ -148,8 +220,10 @@ int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *
         return fail(r, 400, "no Host header");
     if (!host_ok(in->host, in->self))
         return fail(r, 421, "Host is not this robot (an IP address, localhost or its own name)");
+    if (in->url != NULL && strcmp(in->url, "/record") == 0)
+        return judge_record(in, r);
     if (in->method == NULL || (strcmp(in->method, "GET") != 0 && strcmp(in->method, "HEAD") != 0))
-        return fail(r, 405, "only GET and HEAD: the view is read-only");
+        return fail(r, 405, "only GET and HEAD: the view is read-only but for POST /record");
     if (in->url == NULL || in->url[0] != '/')
         return fail(r, 404, "no such page");
     if (bounded_len(in->url, RL_HTTP_MAX_URL) > RL_HTTP_MAX_URL)
@@ -166,7 +240,17 @@ int rl_http_req_judge(const rl_http_req_in *in, const char *token, rl_http_req *
             return fail(r, 400, "seq is not a snapshot number");
         r->seq = v;
     }
+    if (in->size != NULL || in->x != NULL || in->y != NULL) {
+        long x, y, s;
+        if (in->size == NULL || in->x == NULL || in->y == NULL || !number(in->x, 5, 0, 8191, &x) ||
+            !number(in->y, 5, 0, 8191, &y) || !number(in->size, 3, 16, 512, &s))
+            return fail(r, 400, "a crop is x, y (0 .. 8191) and size (16 .. 512) together");
+        r->crop_x = (int)x, r->crop_y = (int)y, r->crop_size = (int)s;
+    }
     r->route = route;
+    /* the page asked with ?token=: a cookie and a redirect to the same
+     * page without it (the token leaves the address bar and the history) */
+    r->redirect = r->set_cookie && route == RL_ROUTE_PAGE;
     r->status = 200;
     r->why = "";
     return 200;

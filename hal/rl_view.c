@@ -1,5 +1,6 @@
 #include "rl_view.h"
 
+#include <math.h>
 #include <string.h>
 #include "rl_config.h"
 
@@ -8,9 +9,14 @@
 
 void rl_view_defaults(rl_view_config *c)
 {
+    rl_recog_config rc;
+    rl_recog_defaults(&rc);
     memset(c, 0, sizeof *c);
     c->max_rate = 5;
     c->track_period = 0.5;
+    c->min_score = rc.min_score;
+    c->local_min_score = rc.local_min_score;
+    c->size_tolerance = rc.size_tolerance;
 }
 
 size_t rl_view_size(const rl_view_config *c)
@@ -19,6 +25,14 @@ size_t rl_view_size(const rl_view_config *c)
         return 0;
     /* the result first: its alignment is the block's (malloc's) */
     return sizeof(rl_result) + (size_t)c->width * (size_t)c->height;
+}
+
+/* What the recognizer accepts, for the JSON's unread candidates. */
+static void thresholds(rl_view_snap *s, const rl_view_config *c)
+{
+    s->min_score = c->min_score;
+    s->local_min_score = c->local_min_score;
+    s->size_tolerance = c->size_tolerance;
 }
 
 rl_err rl_view_snap_init(rl_view_snap *s, const rl_view_config *c, void *mem, size_t size)
@@ -31,6 +45,7 @@ rl_err rl_view_snap_init(rl_view_snap *s, const rl_view_config *c, void *mem, si
         return RL_ENOMEM;
     s->width = c->width;
     s->height = c->height;
+    thresholds(s, c);
     s->res = (rl_result *)mem;
     s->image = (uint8_t *)mem + sizeof(rl_result);
     s->place = -1;
@@ -47,6 +62,8 @@ rl_err rl_view_init(rl_view *v, const rl_view_config *c, void *mem, size_t size)
     v->loop.width = c->width;
     v->loop.height = c->height;
     v->loop.place = -1;
+    thresholds(&v->loop, c);
+    v->rec_ask = -1;
     if (pthread_mutex_init(&v->lock, NULL) != 0)
         return RL_EIO;
     return RL_OK;
@@ -67,6 +84,23 @@ static void copy_str(char *dst, size_t cap, const char *src)
     dst[n] = 0;
 }
 
+/* A track point, the oldest dropped when full; marked as a gap after
+ * frames without a pose or a jump. */
+static void track_add(rl_view_snap *l, const rl_pose *p)
+{
+    rl_view_point *t;
+    if (l->n_track == RL_VIEW_TRACK) {
+        memmove(l->track, l->track + 1, (RL_VIEW_TRACK - 1) * sizeof l->track[0]);
+        l->n_track--;
+    }
+    t = &l->track[l->n_track];
+    t->x = p->x;
+    t->y = p->y;
+    t->gap = l->n_track > 0 && (l->lost || hypot(p->x - t[-1].x, p->y - t[-1].y) > RL_VIEW_JUMP);
+    l->lost = 0;
+    l->n_track++;
+}
+
 /* The loop's own bookkeeping: every observation, copied or not. */
 static void count(rl_view *v, const rl_view_obs *o)
 {
@@ -82,6 +116,12 @@ static void count(rl_view *v, const rl_view_obs *o)
         l->pose = *o->pose; /* the last pose stays shown; have_pose says whose */
     if (o->reason >= 0 && o->reason < RL_VIEW_REASONS)
         l->reasons[o->reason]++;
+    if (o->cam_error != NULL) {
+        copy_str(l->cam_error, sizeof l->cam_error, o->cam_error);
+        l->cam_error_us = o->now_us;
+    }
+    if (o->pose == NULL)
+        l->lost = 1;
     if (o->frame == NULL)
         return;
     if (v->last_t_us != 0 && o->frame->t_us > v->last_t_us) {
@@ -96,13 +136,7 @@ static void count(rl_view *v, const rl_view_obs *o)
         l->latency_ms = l->latency_ms > 0 ? l->latency_ms + SMOOTH * (ms - l->latency_ms) : ms;
     }
     if (o->pose != NULL && o->now_us >= v->next_track_us) {
-        if (l->n_track == RL_VIEW_TRACK) {
-            memmove(l->track, l->track + 1, (RL_VIEW_TRACK - 1) * sizeof l->track[0]);
-            l->n_track--;
-        }
-        l->track[l->n_track].x = o->pose->x;
-        l->track[l->n_track].y = o->pose->y;
-        l->n_track++;
+        track_add(l, o->pose);
         v->next_track_us = o->now_us + (uint64_t)(v->cfg.track_period * 1e6);
     }
 }
@@ -128,7 +162,13 @@ static void copy_fields(rl_view_snap *dst, const rl_view_snap *src)
     int have_image = dst->have_image, have_result = dst->have_result;
     long index = dst->frame_index;
     uint64_t t_us = dst->t_us;
+    const rl_view_geom *geom = dst->geom;
+    double best = dst->focus_best;
+    long best_frame = dst->focus_best_frame;
     memcpy(dst, src, sizeof *dst);
+    dst->geom = geom;
+    dst->focus_best = best;
+    dst->focus_best_frame = best_frame;
     dst->image = image;
     dst->res = res;
     dst->have_image = have_image;
@@ -153,6 +193,8 @@ int rl_view_offer(rl_view *v, const rl_view_obs *o)
     copy_str(s->cam_info, sizeof s->cam_info, o->cam_info);
     copy_str(s->serial, sizeof s->serial, o->serial);
     copy_str(s->rec_note, sizeof s->rec_note, o->rec_note);
+    copy_str(s->serial_error, sizeof s->serial_error, o->serial_error);
+    s->serial_ok_us = o->serial_ok_us;
     s->have_pose = o->pose != NULL;
     if (o->frame != NULL) {
         copy_image(s, &o->frame->img);
@@ -185,6 +227,16 @@ int rl_view_take(rl_view *v, rl_view_snap *s)
     }
     pthread_mutex_unlock(&v->lock);
     return newer;
+}
+
+void rl_view_ask_record(rl_view *v, int on)
+{
+    __atomic_store_n(&v->rec_ask, on ? 1 : 0, __ATOMIC_RELEASE);
+}
+
+int rl_view_record_asked(rl_view *v)
+{
+    return __atomic_exchange_n(&v->rec_ask, -1, __ATOMIC_ACQ_REL);
 }
 
 long rl_view_seq(rl_view *v)

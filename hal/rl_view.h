@@ -50,14 +50,19 @@ typedef struct {
     int width, height;     /* the frames' size (the calibration's) */
     double max_rate;       /* snapshots per second at most (default 5) */
     double track_period;   /* seconds between track points (default 0.5) */
+    /* the recognizer's acceptance (rl_recog_config), to say what an unread
+     * candidate lacked (defaults: rl_recog_defaults') */
+    double min_score, local_min_score, size_tolerance;
 } rl_view_config;
 
 /* What the loop counted since start (the runner's counters, copied). */
 typedef struct {
     long frames, poses, statuses, camera_errors, camera_timeouts, bad_frames;
     long serial_errors, dropped, ambiguous, tracked, local_used;
-    int serial_up;          /* 1 while the serial line is open */
+    int serial_up;          /* 1 when the last report reached the serial line (a write that
+                               succeeded, not a descriptor held open) */
     int recording;          /* 1 while frames are recorded */
+    int rec_can;            /* 1: a recording folder is configured (the page may start and stop it) */
     long rec_kept, rec_skipped; /* frames handed to the writer, and skipped */
 } rl_view_counts;
 
@@ -73,17 +78,38 @@ typedef struct {
     const char *cam_info;      /* the camera's format, exposure, gain; may be NULL */
     const char *serial;        /* the serial device; may be NULL */
     const char *rec_note;      /* why recording is off though asked for (cannot start, stopped); may be NULL */
+    const char *serial_error;  /* why the serial line last failed (its open or a write), or ""; may be NULL */
+    uint64_t serial_ok_us;     /* when a report last reached the serial line (0: never) */
+    const char *cam_error;     /* this report's camera error (the driver's message); NULL: none */
     rl_view_counts counts;
 } rl_view_obs;
 
+/* A track point; gap: the track broke before it (frames without a pose
+ * between, or a jump of more than RL_VIEW_JUMP metres). */
 typedef struct {
     double x, y;
+    int gap;
 } rl_view_point;
+
+/* Metres between two track points past which the robot cannot have
+ * driven in one track period: the pose jumped. */
+#ifndef RL_VIEW_JUMP
+#define RL_VIEW_JUMP 1.0
+#endif
+
+/* The camera's geometry, for drawing the map into the image (the
+ * reader's; every pointer NULL: not drawn). */
+typedef struct {
+    const rl_calib *calib;     /* NULL: none, or an offset map instead of a pinhole model */
+    const rl_map *map;
+    const rl_mount *mount;
+} rl_view_geom;
 
 /* A copy of the loop's state, as a reader sees it. */
 typedef struct {
     long seq;                  /* snapshots since start; 0: none yet */
     int width, height;
+    double min_score, local_min_score, size_tolerance; /* the configuration's */
     uint8_t *image;            /* width x height grey, packed (caller's memory) */
     int have_image;
     long frame_index;
@@ -101,6 +127,15 @@ typedef struct {
     long skipped;              /* copies skipped: a reader held the snapshot */
     uint64_t start_us, now_us;
     char cam_info[256], serial[128], rec_note[256];
+    char serial_error[256];    /* why the serial line last failed, or "" */
+    uint64_t serial_ok_us;     /* when a report last reached it (0: never) */
+    char cam_error[256];       /* the camera's last error (the driver's message), or "" */
+    uint64_t cam_error_us;     /* when it came (0: never) */
+    uint64_t served_us;        /* the reader's: when it wrote this copy out (rl_http) */
+    const rl_view_geom *geom;  /* the reader's: the map into the image (NULL: not drawn) */
+    double focus_best;         /* the reader's: the sharpest frame's focus since start (0: none) */
+    long focus_best_frame;     /* ... and its frame */
+    int lost;                  /* the loop's: a report without a pose since the last track point */
     int n_track;               /* oldest first */
     rl_view_point track[RL_VIEW_TRACK];
 } rl_view_snap;
@@ -111,6 +146,7 @@ typedef struct {
     rl_view_snap shared;       /* under lock */
     rl_view_snap loop;         /* the loop's own: counters, track, without the image */
     uint64_t next_us, next_track_us, last_t_us;
+    int rec_ask;               /* the reader's request to the loop (atomic): -1 none, 0 stop, 1 start */
 } rl_view;
 
 void rl_view_defaults(rl_view_config *c);
@@ -139,6 +175,14 @@ int rl_view_take(rl_view *v, rl_view_snap *s);
 
 /* Reader: the seq of the latest snapshot (0: none yet), without a copy. */
 long rl_view_seq(rl_view *v);
+
+/* Reader: ask the loop to start (on 1) or stop (0) recording; the loop
+ * takes it with rl_view_record_asked. Atomic: neither side waits. */
+void rl_view_ask_record(rl_view *v, int on);
+
+/* Loop thread: what a reader asked since the last call (-1 nothing, 0
+ * stop, 1 start), taken. */
+int rl_view_record_asked(rl_view *v);
 
 /* Destroy the mutex (the memory stays the caller's). */
 void rl_view_destroy(rl_view *v);

@@ -1,4 +1,5 @@
 #include "rl_view_json.h"
+#include "rl_view_focus.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -81,7 +82,7 @@ void rl_view_json_hist(const rl_view_snap *s, unsigned long hist[256])
         hist[s->image[i]]++;
 }
 
-static void detection(jbuf *b, const rl_detection *d)
+static void detection(jbuf *b, const rl_detection *d, double sharp)
 {
     put(b, "{\"id\": %d, ", d->id);
     num_sep(b, "u", d->u, 2);
@@ -91,11 +92,82 @@ static void detection(jbuf *b, const rl_detection *d)
     put(b, ", \"pass\": \"%s\", \"complete\": %s, ", d->pass == RL_PASS_LOCAL ? "local" : "global",
         d->complete ? "true" : "false");
     num(b, "visible", d->visible, 3);
+    put(b, ", ");
+    num(b, "focus", sharp, 4);
     put(b, "}");
 }
 
-static void result(jbuf *b, const rl_result *r)
+/* Visible fraction below which the global pass does not read a
+ * candidate (rl_global.c's). */
+#define READ_MIN_VISIBLE 0.95
+
+/* What an unread candidate lacked, from what the recognizer recorded:
+ * too little of it in the image, a ring the border cuts, a size unlike
+ * the frame's landmarks, a score under the pass's threshold; past those,
+ * the best id did not lead clearly (a zone twin, a code one zone away,
+ * read nearly as well) or its contrast was too low. */
+static const char *lacked(const rl_detection *d, double threshold, double median, double tol)
 {
+    if (d->visible < READ_MIN_VISIBLE)
+        return "too little visible";
+    if (!d->complete)
+        return "ring not closed";
+    if (median > 0 && d->radius < median * (1 - tol))
+        return "too small";
+    if (median > 0 && d->radius > median * (1 + tol))
+        return "too large";
+    if (!(d->score >= threshold))
+        return "score under the threshold";
+    return "zone twin too close or too little contrast";
+}
+
+static void unread(jbuf *b, const rl_view_snap *s, const rl_detection *d, double median)
+{
+    double threshold = d->pass == RL_PASS_LOCAL ? s->local_min_score : s->min_score;
+    put(b, "{\"id\": -1, \"best_id\": %d, ", d->best_id);
+    num_sep(b, "u", d->u, 2);
+    num_sep(b, "v", d->v, 2);
+    num_sep(b, "radius", d->radius, 2);
+    num_sep(b, "score", d->score, 3);
+    num(b, "threshold", threshold, 3);
+    put(b, ", \"pass\": \"%s\", \"complete\": %s, ", d->pass == RL_PASS_LOCAL ? "local" : "global",
+        d->complete ? "true" : "false");
+    num(b, "visible", d->visible, 3);
+    put(b, ", \"lacked\": \"%s\"}", lacked(d, threshold, median, s->size_tolerance));
+}
+
+/* The identified landmarks' median radius (0 with fewer than 3: the
+ * recognizer's size check needs 3). */
+static double median_radius(const rl_result *r)
+{
+    double a[RL_MAX_LANDMARKS], t;
+    int n = r->n_landmarks < RL_MAX_LANDMARKS ? r->n_landmarks : RL_MAX_LANDMARKS, i, j;
+    if (n < 3)
+        return 0;
+    for (i = 0; i < n; i++) {
+        for (t = r->landmarks[i].radius, j = i; j > 0 && a[j - 1] > t; j--)
+            a[j] = a[j - 1];
+        a[j] = t;
+    }
+    return n % 2 ? a[n / 2] : 0.5 * (a[n / 2 - 1] + a[n / 2]);
+}
+
+/* How sharp the frame is (rl_view_focus.h), the best since start, and
+ * each landmark's into per. */
+static void focus(jbuf *b, const rl_view_snap *s, double *per)
+{
+    double f = s->have_image ? rl_view_focus_frame(s->image, s->width, s->height, s->res, per) : NAN;
+    put(b, "\"focus\": {");
+    num_sep(b, "frame", f, 4);
+    num_sep(b, "blur_px", rl_view_focus_blur_px(f), 2);
+    num(b, "best", s->focus_best > 0 ? s->focus_best : NAN, 4);
+    put(b, ", \"best_frame\": %ld}, ", s->focus_best_frame);
+}
+
+static void result(jbuf *b, const rl_view_snap *s)
+{
+    const rl_result *r = s->res;
+    double median = median_radius(r), per[RL_MAX_LANDMARKS];
     const rl_levels *l = &r->levels;
     int i;
     put(b, "\"levels\": {\"light\": %d, \"threshold\": %d, ", l->light, l->threshold);
@@ -103,15 +175,19 @@ static void result(jbuf *b, const rl_result *r)
     num(b, "bg", l->bg, 1);
     put(b, ", \"k\": %d}, ", l->k);
     num(b, "gamma", r->gamma, 3);
-    put(b, ", \"landmarks\": [");
+    put(b, ", ");
+    for (i = 0; i < RL_MAX_LANDMARKS; i++)
+        per[i] = NAN;
+    focus(b, s, per);
+    put(b, "\"landmarks\": [");
     for (i = 0; i < r->n_landmarks && i < RL_MAX_LANDMARKS; i++) {
         put(b, i ? ", " : "");
-        detection(b, &r->landmarks[i]);
+        detection(b, &r->landmarks[i], per[i]);
     }
     put(b, "], \"unidentified\": [");
     for (i = 0; i < r->n_unidentified && i < RL_MAX_CANDIDATES; i++) {
         put(b, i ? ", " : "");
-        detection(b, &r->unidentified[i]);
+        unread(b, s, &r->unidentified[i], median);
     }
     put(b, "], \"lights\": [");
     for (i = 0; i < r->n_lights && i < RL_MAX_LIGHTS; i++)
@@ -121,6 +197,62 @@ static void result(jbuf *b, const rl_result *r)
         r->n_candidates, r->n_regions, r->local_tried, r->local_found);
     put(b, "\"dropped\": {\"regions\": %d, \"lights\": %d, \"candidates\": %d, \"landmarks\": %d}, ",
         r->dropped.regions, r->dropped.lights, r->dropped.candidates, r->dropped.landmarks);
+}
+
+/* The robot's axes in the image: where its forward (0.5 m) and left
+ * lead from the point above it, for a level robot (the pose does not
+ * matter: robot-frame points). */
+static void axes(jbuf *b, const rl_view_geom *g)
+{
+    rl_pose zero;
+    double u0, v0, uf, vf, ul, vl;
+    memset(&zero, 0, sizeof zero);
+    if (!rl_pose_project(g->calib, g->map, g->mount, &zero, 0, 0, &u0, &v0) ||
+        !rl_pose_project(g->calib, g->map, g->mount, &zero, 0.5, 0, &uf, &vf) ||
+        !rl_pose_project(g->calib, g->map, g->mount, &zero, 0, 0.5, &ul, &vl)) {
+        put(b, "\"axes\": null, ");
+        return;
+    }
+    /* forward's angle clockwise from the image's up; mirrored: left is
+     * clockwise of forward on the image, as it is not on a map seen from
+     * above */
+    put(b, "\"axes\": {\"origin\": [%.2f, %.2f], \"forward\": [%.2f, %.2f], \"left\": [%.2f, %.2f], "
+           "\"forward_deg\": %.1f, \"mirrored\": %s}, ",
+        u0, v0, uf, vf, ul, vl, atan2(uf - u0, -(vf - v0)) * 180.0 / M_PI,
+        (uf - u0) * (vl - v0) - (vf - v0) * (ul - u0) > 0 ? "true" : "false");
+}
+
+/* The map's landmarks where the pose says they are in the image, each
+ * with how far the one detected with its id is from there (px; null
+ * when it was not detected). */
+static void projected(jbuf *b, const rl_view_snap *s)
+{
+    const rl_view_geom *g = s->geom;
+    int i, j, n = 0;
+    if (g == NULL || g->calib == NULL || g->map == NULL || g->mount == NULL)
+        return;
+    axes(b, g);
+    put(b, "\"projected\": [");
+    for (i = 0; s->have_pose && i < g->map->count && i < RL_MAX_MAP_LANDMARKS; i++) {
+        double u, v, off = -1;
+        if (!rl_pose_project(g->calib, g->map, g->mount, &s->pose, g->map->lm[i].x, g->map->lm[i].y, &u, &v) ||
+            u < -s->width || u > 2 * s->width || v < -s->height || v > 2 * s->height)
+            continue;
+        for (j = 0; s->have_result && j < s->res->n_landmarks && j < RL_MAX_LANDMARKS; j++) {
+            const rl_detection *d = &s->res->landmarks[j];
+            double e = hypot(d->u - u, d->v - v);
+            if (d->id == g->map->lm[i].id && (off < 0 || e < off))
+                off = e;
+        }
+        put(b, "%s{\"id\": %d, ", n++ ? ", " : "", g->map->lm[i].id);
+        num_sep(b, "u", u, 2);
+        num(b, "v", v, 2);
+        if (off >= 0)
+            put(b, ", \"off_px\": %.2f}", off);
+        else
+            put(b, ", \"off_px\": null}");
+    }
+    put(b, "], ");
 }
 
 static void pose(jbuf *b, const rl_view_snap *s)
@@ -139,6 +271,23 @@ static void pose(jbuf *b, const rl_view_snap *s)
     num(b, "residual", p->residual, 4);
     put(b, ", \"used\": %d, \"place\": \"%s\"}, ", p->used,
         s->place >= 0 && s->place < 4 ? places[s->place] : "unique ids");
+}
+
+/* When the reader wrote the snapshot out (the loop's last report when
+ * it did not say). */
+static uint64_t served(const rl_view_snap *s)
+{
+    return s->served_us > s->now_us ? s->served_us : s->now_us;
+}
+
+/* Milliseconds from t_us to when the snapshot was served; null for never. */
+static void ago(jbuf *b, const char *key, const rl_view_snap *s, uint64_t t_us)
+{
+    uint64_t now = served(s);
+    if (t_us == 0)
+        put(b, "\"%s\": null", key);
+    else
+        put(b, "\"%s\": %.1f", key, now > t_us ? (double)(now - t_us) / 1e3 : 0.0);
 }
 
 static void counters(jbuf *b, const rl_view_snap *s)
@@ -162,8 +311,16 @@ static void counters(jbuf *b, const rl_view_snap *s)
     put(b, "}}, ");
     put(b, "\"serial\": {\"up\": %s, ", c->serial_up ? "true" : "false");
     str(b, "device", s->serial);
-    put(b, "}, \"recording\": {\"on\": %s, \"kept\": %ld, \"skipped\": %ld, ", c->recording ? "true" : "false",
-        c->rec_kept, c->rec_skipped);
+    put(b, ", ");
+    str(b, "error", s->serial_error);
+    put(b, ", ");
+    ago(b, "last_ok_ago_ms", s, s->serial_ok_us);
+    put(b, "}, \"camera_error\": {");
+    str(b, "text", s->cam_error);
+    put(b, ", ");
+    ago(b, "ago_ms", s, s->cam_error_us);
+    put(b, "}, \"recording\": {\"on\": %s, \"can\": %s, \"kept\": %ld, \"skipped\": %ld, ",
+        c->recording ? "true" : "false", c->rec_can ? "true" : "false", c->rec_kept, c->rec_skipped);
     str(b, "note", s->rec_note);
     put(b, "}, ");
 }
@@ -182,11 +339,18 @@ size_t rl_view_json_status(const rl_view_snap *s, char *buf, size_t cap)
      * down: status frames go on, the image stays the last one) */
     put(&b, "\"frame_age_ms\": %.1f, \"reason\": %d, ",
         s->have_image && s->now_us > s->t_us ? (double)(s->now_us - s->t_us) / 1e3 : 0.0, s->reason);
+    /* the same when it was served (the page adds its own wait), and how
+     * long the loop has been silent (a stalled firmware whose server lives) */
+    ago(&b, "image_age_ms", s, s->have_image ? s->t_us : 0);
+    put(&b, ", ");
+    ago(&b, "loop_age_ms", s, s->now_us);
+    put(&b, ", ");
     str(&b, "camera", s->cam_info);
     put(&b, ", ");
     if (s->have_result)
-        result(&b, s->res);
+        result(&b, s);
     pose(&b, s);
+    projected(&b, s);
     counters(&b, s);
     rl_view_json_hist(s, hist);
     put(&b, "\"hist\": [");
@@ -194,8 +358,8 @@ size_t rl_view_json_status(const rl_view_snap *s, char *buf, size_t cap)
         put(&b, "%s%lu", i ? "," : "", hist[i]);
     put(&b, "], \"track\": [");
     for (i = 0; i < s->n_track && i < RL_VIEW_TRACK; i++)
-        put(&b, "%s[%.3f, %.3f]", i ? ", " : "", isfinite(s->track[i].x) ? s->track[i].x : 0.0,
-            isfinite(s->track[i].y) ? s->track[i].y : 0.0);
+        put(&b, "%s[%.3f, %.3f, %d]", i ? ", " : "", isfinite(s->track[i].x) ? s->track[i].x : 0.0,
+            isfinite(s->track[i].y) ? s->track[i].y : 0.0, s->track[i].gap);
     put(&b, "]}\n");
     return done(&b);
 }

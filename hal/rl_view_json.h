@@ -23,11 +23,13 @@
 #include "rl_view.h"
 
 /* Enough for any status document (every list at its compile-time limit). */
-#define RL_VIEW_JSON_STATUS_MAX (96 * 1024 + RL_MAX_CANDIDATES * 128 + RL_MAX_LANDMARKS * 192 + \
+#define RL_VIEW_JSON_STATUS_MAX (96 * 1024 + RL_MAX_CANDIDATES * 320 + RL_MAX_LANDMARKS * 192 + \
+                                 RL_MAX_MAP_LANDMARKS * 96 + \
                                  RL_VIEW_TRACK * 40)
 
-/* The status of snapshot s (see the README's web view section for the
- * fields). Returns the length written (no NUL counted; one is written),
+/* The status of snapshot s (docs/view.md lists the fields; with s->geom
+ * the map's landmarks where the pose puts them in the image, with
+ * s->focus_best the best focus). Returns the length written (no NUL counted; one is written),
  * or 0 when it does not fit in cap. */
 size_t rl_view_json_status(const rl_view_snap *s, char *buf, size_t cap);
 

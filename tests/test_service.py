@@ -354,7 +354,7 @@ def web_security(ringloc, paths_dir, tmp, ck):
         ck.check(code == 401 and "www-authenticate" in h, "no token: %d %s (401 with WWW-Authenticate)" % (code, h))
         code, h = raw_http(port, (get % ("/?token=" + token, "127.0.0.1", "")).encode())
         cookie = (h.get("set-cookie") or [""])[0]
-        ck.check(code == 200 and cookie.startswith("ringloc_token=" + token + ";") and "HttpOnly" in cookie,
+        ck.check(code == 303 and cookie.startswith("ringloc_token=" + token + ";") and "HttpOnly" in cookie,
                  "token in the URL: %d, cookie %r" % (code, cookie))
         code, _ = raw_http(port, (get % ("/status.json", "127.0.0.1", "Cookie: ringloc_token=%s\r\n" % token)).encode())
         ck.check(code == 200, "the cookie alone: %d" % code)

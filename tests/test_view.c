@@ -13,6 +13,7 @@
 #include "rl_listen.h"
 #include "rl_runcfg.h"
 #include "rl_view.h"
+#include "rl_view_focus.h"
 #include "rl_view_jpeg.h"
 #include "rl_view_json.h"
 
@@ -149,14 +150,15 @@ static void test_offer_skips_when_held(void **st)
 static int judge(const char *method, const char *url, const char *w, const char *token, const char *auth,
                  rl_http_req *r)
 {
-    rl_http_req_in in = {method, url, w, NULL, token, auth, NULL, "127.0.0.1:8080", "ringbot"};
+    rl_http_req_in in = {method, url, w,    NULL, token, auth, NULL,
+                         "127.0.0.1:8080", "ringbot", NULL, NULL, NULL, NULL, NULL};
     return rl_http_req_judge(&in, "s3cret", r);
 }
 
 /* The token before anything else, the Host header after it (issue 39). */
 static int judge_host(const char *host, const char *token, const char *cookie, const char *url, rl_http_req *r)
 {
-    rl_http_req_in in = {"GET", url, NULL, NULL, token, NULL, cookie, host, "ringbot"};
+    rl_http_req_in in = {"GET", url, NULL, NULL, token, NULL, cookie, host, "ringbot", NULL, NULL, NULL, NULL, NULL};
     return rl_http_req_judge(&in, "s3cret", r);
 }
 
@@ -171,6 +173,9 @@ static void test_request_order_host(void **st)
     /* the token in the URL asks for the cookie; the cookie alone is enough */
     assert_int_equal(judge_host("127.0.0.1:8080", "s3cret", NULL, "/", &r), 200);
     assert_int_equal(r.set_cookie, 1);
+    assert_int_equal(r.redirect, 1); /* the page: 303 to itself without the token (issue 41) */
+    assert_int_equal(judge_host("127.0.0.1:8080", "s3cret", NULL, "/status.json", &r), 200);
+    assert_int_equal(r.redirect, 0); /* a script's request is answered */
     assert_int_equal(judge_host("127.0.0.1:8080", NULL, "s3cret", "/status.json", &r), 200);
     assert_int_equal(r.set_cookie, 0);
     assert_int_equal(judge_host("127.0.0.1:8080", NULL, "s3cre", "/status.json", &r), 401);
@@ -201,6 +206,15 @@ static void test_request_judge(void **st)
     assert_int_equal(judge("HEAD", "/", NULL, NULL, "Bearer s3cret", &r), 200);
     assert_int_equal(r.route, RL_ROUTE_PAGE);
     assert_int_equal(judge("GET", "/map.json", NULL, NULL, "s3cret", &r), 200);
+    /* HTTP Basic, a browser's own prompt: any user, the token as the
+     * password (base64 of "installer:s3cret", ":s3cret", "installer:s3creT") */
+    assert_int_equal(judge("GET", "/", NULL, NULL, "Basic aW5zdGFsbGVyOnMzY3JldA==", &r), 200);
+    assert_int_equal(r.redirect, 0);
+    assert_int_equal(judge("GET", "/", NULL, NULL, "Basic OnMzY3JldA==", &r), 200);
+    assert_int_equal(judge("GET", "/", NULL, NULL, "Basic aW5zdGFsbGVyOnMzY3JlVA==", &r), 401);
+    assert_int_equal(judge("GET", "/", NULL, NULL, "Basic czNjcmV0", &r), 401);    /* "s3cret": no colon */
+    assert_int_equal(judge("GET", "/", NULL, NULL, "Basic !!!!", &r), 401);       /* not base64 */
+    assert_int_equal(judge("GET", "/", NULL, NULL, "Basic ", &r), 401);
     assert_int_equal(judge("POST", "/status.json", NULL, "s3cret", NULL, &r), 405);
     assert_int_equal(judge("GET", "/status.json", NULL, NULL, NULL, &r), 401);
     assert_int_equal(judge("GET", "/status.json", NULL, "s3cre", NULL, &r), 401);
@@ -217,8 +231,45 @@ static void test_request_judge(void **st)
     longurl[sizeof longurl - 1] = 0;
     assert_int_equal(judge("GET", longurl, NULL, "s3cret", NULL, &r), 414);
     {
-        rl_http_req_in in = {"GET", "/", NULL, NULL, NULL, NULL, NULL, "localhost", NULL};
+        rl_http_req_in in = {"GET", "/", NULL, NULL, NULL, NULL, NULL, "localhost", NULL, NULL, NULL, NULL, NULL, NULL};
         assert_int_equal(rl_http_req_judge(&in, "", &r), 200); /* no token configured */
+    }
+    assert_int_equal(judge("GET", "/snapshot.png", NULL, "s3cret", NULL, &r), 200);
+    assert_int_equal(r.route, RL_ROUTE_SNAPSHOT);
+    { /* a 1:1 crop: its centre and side together, each in range */
+        rl_http_req_in in = {"GET", "/snapshot.png", NULL, "7", "s3cret", NULL, NULL,
+                             "localhost", NULL, NULL, NULL, "320", "240", "72"};
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 200);
+        assert_true(r.crop_x == 320 && r.crop_y == 240 && r.crop_size == 72 && r.seq == 7);
+        in.size = "8"; /* under 16 */
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 400);
+        in.size = "600";
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 400);
+        in.size = NULL; /* x and y without a size */
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 400);
+    }
+    { /* recording from the page: POST, the action header, on=1|0, the token first */
+        rl_http_req_in in = {"POST", "/record", NULL, NULL, "s3cret", NULL, NULL,
+                             "localhost", NULL, "1", "1", NULL, NULL, NULL};
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 200);
+        assert_true(r.route == RL_ROUTE_RECORD && r.on == 1);
+        in.on = "0";
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 200);
+        assert_int_equal(r.on, 0);
+        in.on = "2";
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 400);
+        in.on = "1";
+        in.action = NULL; /* a form of another site cannot set the header */
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 405);
+        in.action = "1";
+        in.method = "GET";
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 405);
+        in.method = "POST";
+        in.token = NULL;
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 401);
+        in.url = "/status.json";
+        in.token = "s3cret";
+        assert_int_equal(rl_http_req_judge(&in, "s3cret", &r), 405); /* POST nowhere else */
     }
 }
 
@@ -262,6 +313,155 @@ static void test_status_json(void **st)
     assert_true(json_object_object_get_ex(v, "fps", &lm));
     json_object_put(j);
     teardown_view();
+}
+
+/* Faults as the JSON says them (issue 41): the serial line's error and
+ * the age of its last good write, the camera's last message kept past
+ * the frames after it, the image's age at serving; the track broken
+ * after frames without a pose and at a jump, not along a drive. */
+static void test_faults_and_track(void **st)
+{
+    static char buf[RL_VIEW_JSON_STATUS_MAX];
+    rl_cam_frame f;
+    rl_pose pose;
+    rl_view_obs o;
+    json_object *j, *v, *k;
+    int i;
+    (void)st;
+    setup_view();
+    memset(&pose, 0, sizeof pose);
+    /* 1 s apart (past the track period): 0.3 m steps, a lost frame before
+     * the 4th, a 2 m jump at the 6th */
+    for (i = 0; i < 7; i++) {
+        uint64_t t = 1000000u * (uint64_t)(i + 1);
+        pose.x = 0.3 * i + (i >= 5 ? 2.0 : 0.0);
+        frame_at(&f, i, t);
+        if (i == 3) {
+            o = obs_of(&f, NULL, t - 500000u);
+            o.cam_error = "/dev/video0: VIDIOC_DQBUF: No such device";
+            (void)rl_view_offer(&view, &o);
+        }
+        o = obs_of(&f, &pose, t + 10000u);
+        o.serial_error = "write failed: Input/output error";
+        o.serial_ok_us = 4000000u;
+        (void)rl_view_offer(&view, &o);
+    }
+    assert_int_equal(rl_view_take(&view, &snap), 1);
+    snap.served_us = 7500000u;
+    assert_true(rl_view_json_status(&snap, buf, sizeof buf) > 0);
+    j = json_tokener_parse(buf);
+    assert_non_null(j);
+    assert_true(json_object_object_get_ex(j, "track", &v));
+    assert_int_equal(json_object_array_length(v), 7);
+    for (i = 0; i < 7; i++) /* breaks before the 4th (lost) and the 6th (jumped) only */
+        assert_int_equal(json_object_get_int(json_object_array_get_idx(json_object_array_get_idx(v, i), 2)),
+                         i == 3 || i == 5);
+    assert_true(json_object_object_get_ex(j, "serial", &v));
+    assert_true(json_object_object_get_ex(v, "error", &k));
+    assert_string_equal(json_object_get_string(k), "write failed: Input/output error");
+    assert_true(json_object_object_get_ex(v, "last_ok_ago_ms", &k));
+    assert_true(fabs(json_object_get_double(k) - 3500.0) < 1e-6);
+    assert_true(json_object_object_get_ex(j, "camera_error", &v));
+    assert_true(json_object_object_get_ex(v, "text", &k));
+    assert_string_equal(json_object_get_string(k), "/dev/video0: VIDIOC_DQBUF: No such device");
+    assert_true(json_object_object_get_ex(v, "ago_ms", &k));
+    assert_true(fabs(json_object_get_double(k) - 4000.0) < 1e-6); /* 7.5 s - 3.5 s */
+    assert_true(json_object_object_get_ex(j, "image_age_ms", &k)); /* captured at 7 s */
+    assert_true(fabs(json_object_get_double(k) - 500.0) < 1e-6);
+    assert_true(json_object_object_get_ex(j, "loop_age_ms", &k)); /* last report at 7.01 s */
+    assert_true(fabs(json_object_get_double(k) - 490.0) < 1e-6);
+    json_object_put(j);
+    teardown_view();
+}
+
+/* Each unread candidate says its nearest id, its score against its
+ * pass's threshold and what it lacked (issue 41), judged by hand: three
+ * landmarks of radius 20 (the median), then candidates cut to 60%, cut
+ * but 97% inside, of radius 12, scoring 0.5 globally, and scoring 0.85
+ * in the local pass (above its 0.75: the lead or contrast failed). */
+static void test_unread_json(void **st)
+{
+    static char buf[RL_VIEW_JSON_STATUS_MAX];
+    static const struct {
+        double radius, score, visible;
+        int complete, best, local;
+        const char *lacked;
+    } c[] = {{20, 0.9, 0.6, 0, -1, 0, "too little visible"},
+             {20, 0.9, 0.97, 0, 4, 0, "ring not closed"},
+             {12, 0.9, 1, 1, 4, 0, "too small"},
+             {20, 0.5, 1, 1, 17, 0, "score under the threshold"},
+             {20, 0.85, 1, 1, 18, 1, "zone twin too close or too little contrast"}};
+    rl_cam_frame f;
+    rl_view_obs o;
+    json_object *j, *v, *d, *k;
+    size_t i;
+    (void)st;
+    setup_view();
+    res.n_landmarks = 3;
+    for (i = 0; i < 3; i++)
+        res.landmarks[i].radius = 19.5 + 0.5 * (double)i, res.landmarks[i].complete = 1, res.landmarks[i].visible = 1;
+    res.n_unidentified = (int)(sizeof c / sizeof c[0]);
+    for (i = 0; i < sizeof c / sizeof c[0]; i++) {
+        rl_detection *u = &res.unidentified[i];
+        memset(u, 0, sizeof *u);
+        u->id = -1, u->best_id = c[i].best, u->radius = c[i].radius, u->score = c[i].score;
+        u->visible = c[i].visible, u->complete = c[i].complete, u->pass = c[i].local ? RL_PASS_LOCAL : RL_PASS_GLOBAL;
+    }
+    frame_at(&f, 1, 1000000u);
+    o = obs_of(&f, NULL, 1010000u);
+    assert_int_equal(rl_view_offer(&view, &o), 1);
+    assert_int_equal(rl_view_take(&view, &snap), 1);
+    assert_true(rl_view_json_status(&snap, buf, sizeof buf) > 0);
+    j = json_tokener_parse(buf);
+    assert_non_null(j);
+    assert_true(json_object_object_get_ex(j, "unidentified", &v));
+    assert_int_equal(json_object_array_length(v), sizeof c / sizeof c[0]);
+    for (i = 0; i < sizeof c / sizeof c[0]; i++) {
+        d = json_object_array_get_idx(v, i);
+        assert_true(json_object_object_get_ex(d, "lacked", &k));
+        assert_string_equal(json_object_get_string(k), c[i].lacked);
+        assert_true(json_object_object_get_ex(d, "best_id", &k));
+        assert_int_equal(json_object_get_int(k), c[i].best);
+        assert_true(json_object_object_get_ex(d, "threshold", &k)); /* rl_recog_defaults': 0.80, 0.75 */
+        assert_true(fabs(json_object_get_double(k) - (c[i].local ? 0.75 : 0.80)) < 1e-9);
+    }
+    json_object_put(j);
+    teardown_view();
+}
+
+/* The focus figure against an edge of known blur, by hand: a dark disc of
+ * radius 30 on paper, its edge a Gaussian of sigma px (the grey level
+ * from erf), gives about 1 / (sigma sqrt(2 pi)); halved blur, higher
+ * focus; the same in dim light (the contrast is divided out); a disc the
+ * border cuts is not measured. */
+static double focus_of(double sigma, double ink, double paper, double u)
+{
+    static uint8_t img[120][160];
+    rl_detection d;
+    int x, y;
+    for (y = 0; y < 120; y++)
+        for (x = 0; x < 160; x++) {
+            double r = hypot(x - (isnan(u) ? 80 : u), y - 60.0);
+            img[y][x] = (uint8_t)lround(ink + (paper - ink) * 0.5 * (1 + erf((r - 30) / (sigma * sqrt(2.0)))));
+        }
+    memset(&d, 0, sizeof d);
+    d.u = u, d.v = 60, d.radius = 30, d.complete = 1;
+    return rl_view_focus_landmark(&img[0][0], 160, 120, &d);
+}
+
+static void test_focus(void **st)
+{
+    double f1, f2, f1dim;
+    (void)st;
+    f1 = focus_of(1.0, 40, 220, 80);
+    f2 = focus_of(2.0, 40, 220, 80);
+    f1dim = focus_of(1.0, 20, 90, 80);
+    assert_true(fabs(f1 - 1 / sqrt(2 * M_PI)) < 0.15 / sqrt(2 * M_PI));
+    assert_true(fabs(f2 - 0.5 / sqrt(2 * M_PI)) < 0.08 / sqrt(2 * M_PI));
+    assert_true(fabs(rl_view_focus_blur_px(f2) - 2.0) < 0.3);
+    assert_true(fabs(f1dim - f1) < 0.1 * f1);
+    assert_true(isnan(focus_of(1.0, 40, 220, 20))); /* cut by the border */
+    assert_true(isnan(focus_of(1.0, 40, 220, NAN))); /* a centre that is no number: nothing read */
 }
 
 static void test_map_json(void **st)
@@ -370,7 +570,8 @@ int main(void)
         cmocka_unit_test(test_offer_rate_and_copy), cmocka_unit_test(test_offer_skips_when_held),
         cmocka_unit_test(test_request_order_host),
         cmocka_unit_test(test_request_judge),
-        cmocka_unit_test(test_status_json),
+        cmocka_unit_test(test_status_json),         cmocka_unit_test(test_faults_and_track),
+        cmocka_unit_test(test_unread_json),         cmocka_unit_test(test_focus),
         cmocka_unit_test(test_map_json),            cmocka_unit_test(test_jpeg),
         cmocka_unit_test(test_listen),              cmocka_unit_test(test_runcfg_http),
     };

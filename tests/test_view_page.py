@@ -97,19 +97,11 @@ def main():
     vl.browser_or_skip()
     os.makedirs(tmp, exist_ok=True)
     names = vl.frames_of(paths_dir)
-    tty = os.path.join(tmp, "tty")
-    if os.path.lexists(tty):
-        os.remove(tty)
+    mon, tty = vl.start_monitor(ringloc, tmp)
     cfg = vl.write_config(tmp, paths_dir, names, tty)
     port = vl.free_port()
     with open(cfg, "a") as f:  # with a token: given once in the address, then a cookie (issue 39)
         f.write("http: {listen: 127.0.0.1:%d, token: %s}\n" % (port, TOKEN))
-    mon = subprocess.Popen([ringloc, "monitor", "--pty", tty], stdout=open(os.path.join(tmp, "poses.jsonl"), "w"),
-                           stderr=open(os.path.join(tmp, "monitor.err"), "w"))
-    for _ in range(50):
-        if os.path.islink(tty):
-            break
-        time.sleep(0.1)
     fw = vl.start_firmware(ringloc, cfg, tmp, 30 * vl.RATE)  # ended once sampled
     drv = None
     ck = vl.Checks()

@@ -32,8 +32,9 @@ def browser_or_skip():
             sys.exit(SKIP)
 
 
-def chromium(width=1280, height=900, tmp=None):
-    """Headless Chromium; with tmp, at the lowest priority (through a
+def chromium(width=1280, height=900, tmp=None, phone=False):
+    """Headless Chromium; phone: as a phone of width x height (mobile
+    emulation: a window is never narrower than 500 px); with tmp, at the lowest priority (through a
     wrapper there), as if it ran on another computer: on CI's shared cores
     a browser would otherwise take the loop's time, not the server."""
     from selenium import webdriver
@@ -48,8 +49,11 @@ def chromium(width=1280, height=900, tmp=None):
         binary = wrapper
     opts.binary_location = binary
     for a in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-              "--force-device-scale-factor=1", "--window-size=%d,%d" % (width, height)):
+              "--force-device-scale-factor=1", "--window-size=%d,%d" % (max(width, 500), height)):
         opts.add_argument(a)
+    if phone:
+        opts.add_experimental_option("mobileEmulation", {"deviceMetrics": {"width": width, "height": height,
+                                                                           "pixelRatio": 1.0}})
     drv = shutil.which("chromedriver") or "/usr/bin/chromedriver"
     return webdriver.Chrome(service=Service(drv), options=opts)
 
@@ -115,6 +119,21 @@ def wait_http(port, proc, seconds=10):
     raise Fail("nothing listening on port %d after %d s" % (port, seconds))
 
 
+def start_monitor(ringloc, tmp):
+    """`ringloc monitor --pty` decoding the pose frames into
+    tmp/poses.jsonl: returns it and the pty's link (tmp/tty), once there."""
+    tty = os.path.join(tmp, "tty")
+    if os.path.lexists(tty):
+        os.remove(tty)
+    mon = subprocess.Popen([ringloc, "monitor", "--pty", tty], stdout=open(os.path.join(tmp, "poses.jsonl"), "w"),
+                           stderr=open(os.path.join(tmp, "monitor.err"), "w"))
+    for _ in range(50):
+        if os.path.islink(tty):
+            break
+        time.sleep(0.1)
+    return mon, tty
+
+
 def decode(ringloc, serial_file):
     out = subprocess.run([ringloc, "monitor", serial_file], capture_output=True, text=True, check=True).stdout
     return [json.loads(line) for line in out.splitlines() if line.strip()]
@@ -150,3 +169,42 @@ def run(main):
     except Fail as e:
         print("FAIL: %s" % e)
         sys.exit(1)
+
+
+def png_gray(data):
+    """An 8-bit grey, non-interlaced PNG's (width, height, rows): an
+    oracle of its own (zlib and the five row filters), not libpng."""
+    import struct
+    import zlib
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        raise Fail("not a PNG")
+    pos, idat, w = 8, b"", None
+    while pos < len(data):
+        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + n]
+        if kind == b"IHDR":
+            w, h, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
+            if depth != 8 or colour != 0 or interlace:
+                raise Fail("not an 8-bit grey PNG (depth %d, colour type %d)" % (depth, colour))
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + n
+    raw, rows, prev = zlib.decompress(idat), [], bytearray(w)
+    for y in range(h):
+        f, line = raw[y * (w + 1)], bytearray(raw[y * (w + 1) + 1:(y + 1) * (w + 1)])
+        for x in range(w):
+            a = line[x - 1] if x else 0
+            b, c = prev[x], (prev[x - 1] if x else 0)
+            if f == 1:
+                line[x] = (line[x] + a) & 255
+            elif f == 2:
+                line[x] = (line[x] + b) & 255
+            elif f == 3:
+                line[x] = (line[x] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(bytes(line))
+        prev = line
+    return w, h, rows

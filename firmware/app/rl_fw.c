@@ -31,10 +31,13 @@ static const char *run_help =
     "  --record DIR save one frame in record.every (default 10) as PNG into DIR,\n"
     "               with DIR/frames.txt (name, capture time ms) for 'ringloc survey'\n"
     "               or playing back; at most record.max_mb (1000) on disk\n"
-    "  --http ADDR:PORT  a live web view: the camera image with the landmarks found,\n"
-    "               the map, the pose and the counters (read-only; http.token in\n"
-    "               the file asks for a token; on an address beyond 127.0.0.1 and\n"
-    "               ::1 without one, a token is made for the run and printed)\n"
+    "  --http ADDR:PORT  a live web view: the camera image with the landmarks found\n"
+    "               and why others were not, the map drawn into it, focus, the map,\n"
+    "               the pose, faults with their causes, lossless snapshots (read-only\n"
+    "               but for starting and stopping recording; http.token in the\n"
+    "               file asks for a token; on an address beyond 127.0.0.1 and ::1\n"
+    "               without one, a token is made for the run and printed; a browser\n"
+    "               asks for it as a password: docs/view.md)\n"
     "  --probe      list what the configured camera offers (formats, sizes,\n"
     "               controls) and exit\n\n"
     "Recording and the web view never stop the pose frames: one that cannot start\n"
@@ -287,6 +290,7 @@ static void start_side(fw_setup *s, const char *record, const char *http, rl_fw_
     side->listen = s->cfg.http_listen;
     side->token = s->cfg.http_token;
     side->map = &s->site.map;
+    side->site = &s->site;
     side->serial = s->cfg.serial;
     rl_fw_side_start(side, rl_clock_now_us());
 }

@@ -5,7 +5,7 @@
 #include <string.h>
 
 rl_err rl_fw_http_start(rl_fw_http *web, const char *listen, const char *token, int w, int h,
-                        const rl_map *map, const rl_runner *runner, const char *serial,
+                        const rl_site *site, const rl_map *map, const rl_runner *runner, const char *serial,
                         const rl_record *rec, char *err, size_t errlen)
 {
     rl_view_config vc;
@@ -16,6 +16,11 @@ rl_err rl_fw_http_start(rl_fw_http *web, const char *listen, const char *token, 
     rl_view_defaults(&vc);
     vc.width = w;
     vc.height = h;
+    if (site != NULL) { /* what the recognizer accepts */
+        vc.min_score = site->recog.cfg.min_score;
+        vc.local_min_score = site->recog.cfg.local_min_score;
+        vc.size_tolerance = site->recog.cfg.size_tolerance;
+    }
     if ((size = rl_view_size(&vc)) == 0 || (web->mem = malloc(size)) == NULL) {
         snprintf(err, errlen, "http: no memory for the web view of %dx%d frames", w, h);
         return RL_ENOMEM;
@@ -28,6 +33,10 @@ rl_err rl_fw_http_start(rl_fw_http *web, const char *listen, const char *token, 
     rl_http_defaults(&hc);
     hc.listen = listen;
     hc.token = token;
+    if (site != NULL && site->has_calib && site->has_mount && !site->has_offsets) {
+        hc.calib = &site->calib; /* the pinhole model: the map drawn into the image */
+        hc.mount = &site->mount;
+    }
     if ((e = rl_http_start(&web->http, &hc, &web->view, map, err, errlen)) != RL_OK) {
         char why[256];
         snprintf(why, sizeof why, "%s", err);

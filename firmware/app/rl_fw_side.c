@@ -96,7 +96,7 @@ static void try_web(rl_fw_side *s, uint64_t now)
         return;
     if (!loopback_only(s->listen))
         make_token(s);
-    if (rl_fw_http_start(&s->web, s->listen, s->token, s->width, s->height, s->map, s->runner, s->serial,
+    if (rl_fw_http_start(&s->web, s->listen, s->token, s->width, s->height, s->site, s->map, s->runner, s->serial,
                          rec_wanted(s) ? &s->rec : NULL, err, sizeof err) != RL_OK) {
         failed(s, s->web_note, sizeof s->web_note, "the web view", err, &s->web_retry_at, now);
         return;
@@ -113,11 +113,29 @@ void rl_fw_side_start(rl_fw_side *s, uint64_t now_us)
     try_web(s, now_us);
 }
 
+/* Recording started or stopped from the page: a stop only stops
+ * offering frames (nothing in the loop waits for the writer), a start
+ * offers them again, or tries a recorder that could not start at once. */
+static void page_asked(rl_fw_side *s)
+{
+    int on = rl_view_record_asked(&s->web.view);
+    if (on < 0 || !rec_wanted(s))
+        return;
+    s->rec_paused = !on;
+    if (on)
+        s->rec_retry_at = 0;
+    snprintf(s->rec_note, sizeof s->rec_note, "%s", on ? "" : "stopped from the web view");
+    fprintf(stderr, "%s: recording %s from the web view\n", s->prefix, on ? "started" : "stopped");
+    s->web.rv.rec_paused = s->rec_paused;
+}
+
 void rl_fw_side_observe(void *ctx, const rl_run_report *rep)
 {
     rl_fw_side *s = (rl_fw_side *)ctx;
     const char *news;
-    if (s->rec.running && rep->frame != NULL) {
+    if (s->web.on)
+        page_asked(s);
+    if (s->rec.running && !s->rec_paused && rep->frame != NULL) {
         rl_record_offer(&s->rec, &rep->frame->img, rep->frame->index, rep->frame->t_us);
         /* stopped by the writer (a full disk, the folder gone, max_mb):
          * said once, shown on the page, not restarted */

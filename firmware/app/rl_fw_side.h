@@ -6,7 +6,8 @@
  * logged in one line and tried again every retry_us from the loop's
  * observer (a new line only when the reason changes, and one when it
  * starts); recording that stops later (a full disk, max_mb) stays off,
- * and the page says why. A web view that listens beyond this computer
+ * and the page says why. The page may stop and start recording
+ * (rl_view_record_asked): a stop only stops offering frames. A web view that listens beyond this computer
  * (not 127.0.0.0/8 or ::1) without http.token gets a random token for the
  * run, printed once. Each report of the loop is offered to the recorder
  * and the view (rl_run_io.observe).
@@ -41,6 +42,7 @@ typedef struct {
     const char *listen;         /* "" or NULL: no web view */
     const char *token;          /* the web view's token, "" for none */
     const rl_map *map;          /* shown on the page */
+    const rl_site *site;        /* its camera, mount and recognizer's thresholds, for the page (may be NULL) */
     const char *serial;         /* the serial device's name, for the page */
     uint64_t retry_us;          /* RL_FW_SIDE_RETRY_US */
     /* the features' state (the loop's thread) */
@@ -50,6 +52,7 @@ typedef struct {
     rl_record rec;
     uint64_t rec_retry_at;
     char rec_note[512];         /* why recording is off though asked for, or "" */
+    int rec_paused;             /* 1: stopped from the web view's page (frames not offered) */
     rl_fw_http web;
     uint64_t web_retry_at;
     char web_note[512];         /* why the web view is not up, or "" */

@@ -116,6 +116,7 @@ static int sink_ready(rl_runner *r, uint64_t now)
         return 0;
     if (r->io.sink.open != NULL && (e = r->io.sink.open(r->io.sink.ctx, err, sizeof err)) != RL_OK) {
         logf_(r, RL_LOG_SERIAL, "%s: %s; retrying", sink_name(r), err);
+        snprintf(r->sink_error, sizeof r->sink_error, "%s", err);
         r->sink_retry_at = now + r->sink_backoff;
         r->sink_backoff = next_backoff(r, r->sink_backoff);
         r->counts.sink_errors++;
@@ -139,6 +140,7 @@ static void to_sink(rl_runner *r, rl_run_report *rep, uint64_t now)
     if ((e = r->io.sink.put(r->io.sink.ctx, rep)) != RL_OK) {
         const char *why = r->io.sink.why ? r->io.sink.why(r->io.sink.ctx) : NULL;
         logf_(r, RL_LOG_SERIAL, "%s: write failed (%s); reopening", sink_name(r), why ? why : rl_strerror(e));
+        snprintf(r->sink_error, sizeof r->sink_error, "write failed: %s", why ? why : rl_strerror(e));
         if (r->io.sink.close != NULL)
             r->io.sink.close(r->io.sink.ctx);
         r->sink_up = 0;
@@ -149,6 +151,7 @@ static void to_sink(rl_runner *r, rl_run_report *rep, uint64_t now)
         return;
     }
     /* taken: the summary counts what reached the sink */
+    r->sink_ok_us = now;
     if (rep->event == RL_RUN_FRAME && rep->pose_err == RL_OK)
         r->counts.poses++;
     else

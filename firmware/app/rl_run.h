@@ -145,6 +145,8 @@ typedef struct {
     rl_site *site;
     rl_result *res;
     int src_up, sink_up, timeouts;
+    uint64_t sink_ok_us;        /* when the sink last took a report (0: never) */
+    char sink_error[256];       /* why it last failed (open or put), or "" */
     uint64_t src_retry_at, src_backoff, sink_retry_at, sink_backoff;
     long seq, reads;
     uint64_t last_log[RL_LOG_KINDS];

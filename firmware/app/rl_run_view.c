@@ -26,11 +26,11 @@ static void counts(const rl_runner *r, const rl_record *rec, rl_view_counts *c)
     c->ambiguous = n->ambiguous;
     c->tracked = n->tracked;
     c->local_used = n->local_used;
-    c->serial_up = r->sink_up;
     /* the recorder's loop-side counts only (its writer's are its own) */
     /* off once the loop was told it stopped (a full disk, max_mb): the
      * counts then stay as they were */
     c->recording = rec != NULL && rec->running && !rec->told;
+    c->rec_can = rec != NULL;
     if (rec != NULL) {
         c->rec_kept = rec->kept;
         c->rec_skipped = rec->skipped;
@@ -55,5 +55,14 @@ void rl_run_view_report(void *ctx, const rl_run_report *rep)
     o.serial = rv->serial;
     o.rec_note = rv->rec_note;
     counts(r, rv->rec, &o.counts);
+    o.counts.recording &= !rv->rec_paused;
+    /* up: this report reached the line (a write that succeeded; a
+     * descriptor held open proves nothing) */
+    o.counts.serial_up = r->sink_ok_us != 0 && r->sink_ok_us == rep->sent_us;
+    o.serial_ok_us = r->sink_ok_us;
+    o.serial_error = r->sink_error;
+    /* the driver's message; "camera down" only says a retry is not due */
+    if (rep->event != RL_RUN_FRAME && rep->error != NULL && strcmp(rep->error, "camera down") != 0)
+        o.cam_error = rep->error;
     (void)rl_view_offer(rv->view, &o);
 }

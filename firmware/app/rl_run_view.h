@@ -1,8 +1,9 @@
 /* rl_run_view: the loop's observer that feeds the live web view: each
  * report of the loop (rl_run.h: a frame recognized with its result and
  * pose, or the status sent instead; the sink up or not) becomes an
- * rl_view_obs with the loop's counters, the camera's description and the
- * serial line's state, offered to the view (rl_view.h: a copy a few times
+ * rl_view_obs with the loop's counters, the camera's description and its
+ * last error, and the serial line's state (up when the report was
+ * written; its last error and last good write), offered to the view (rl_view.h: a copy a few times
  * a second, never a wait). Runs in the loop thread and allocates nothing
  * (app_no_alloc; test_run counts heap calls with it on).
  *
@@ -28,6 +29,7 @@ typedef struct {
     const char *serial;       /* the serial device's name */
     const rl_record *rec;     /* NULL: not recording; else on while running and not stopped */
     const char *rec_note;     /* why recording is off though asked for, or ""; NULL: none (set after init) */
+    int rec_paused;           /* 1: stopped from the page (set by the firmware's side features) */
 } rl_run_view;
 
 void rl_run_view_init(rl_run_view *rv, rl_view *view, const rl_runner *runner, const char *serial,

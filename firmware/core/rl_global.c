@@ -70,6 +70,7 @@ void rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, c
     rl_match m;
     memset(d, 0, sizeof *d);
     d->id = -1;
+    d->best_id = -1;
     d->pass = RL_PASS_GLOBAL;
     rl_clr_geometry(&c->box, rec->width, rec->height, d);
     /* the frame's levels as the light falls here */
@@ -88,5 +89,6 @@ void rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, c
         if (rec->cfg.band_radius && d->complete && rl_shape_is_circle(&c->shape))
             rl_refine_radius_band(img, tone, &rec->cfg.family, d->id, d->u, d->v, &d->radius);
     }
+    d->best_id = m.id; /* taken or not: an unread candidate's nearest id */
     d->score = m.score;
 }

@@ -300,3 +300,21 @@ rl_err rl_pose_solve_matched(const rl_calib *cam, const rl_map *map, const rl_mo
     }
     return finish(&md, q, offsets != NULL, out);
 }
+
+int rl_pose_project(const rl_calib *cam, const rl_map *map, const rl_mount *mount, const rl_pose *p, double X,
+                    double Y, double *u, double *v)
+{
+    rl_pose_model md;
+    double q[RL_POSE_NQ], Rc[9], C[3], xn, yn;
+    rl_pose_fit_model(&md, mount, map->ceiling_height, 0.5 * map->diameter);
+    q[0] = p->x;
+    q[1] = p->y;
+    q[2] = p->yaw;
+    q[3] = p->tilt_solved ? p->fit_roll : 0.0;
+    q[4] = p->tilt_solved ? p->fit_pitch : 0.0;
+    rl_pose_fit_camera(&md, q, Rc, C);
+    if (!rl_pose_fit_predict(&md, Rc, C, X, Y, &xn, &yn))
+        return 0;
+    rl_calib_project(cam, xn, yn, u, v);
+    return 1;
+}

@@ -37,6 +37,8 @@ int rl_result_add_unidentified(rl_result *res, const rl_detection *d)
     if (!room(res->n_unidentified, RL_MAX_CANDIDATES, &res->dropped.candidates))
         return 0;
     res->unidentified[res->n_unidentified] = *d;
+    if (d->id >= 0) /* taken, then dropped by a later check: it was read */
+        res->unidentified[res->n_unidentified].best_id = d->id;
     res->unidentified[res->n_unidentified++].id = -1;
     return 1;
 }

@@ -101,6 +101,8 @@ typedef struct {
     int complete;       /* 0 if the image border cuts it */
     rl_box box;         /* outer ring's bounding box */
     double visible;     /* fraction of the disk inside the image */
+    int best_id;        /* the id that read best, taken or not (-1: none read); an
+                           unidentified candidate's says what it nearly was */
 } rl_detection;
 
 /* What a compile-time limit (rl_config.h) left out of one frame's result. */

@@ -383,6 +383,21 @@ static void write_rows(png_structp png, png_infop info, int w, int h, int color_
     png_write_end(png, info);
 }
 
+/* libpng's write and info structs with ctx for errors; 0 (nothing left
+ * made) when out of memory. */
+static int new_writer(png_ctx *ctx, png_structp *png, png_infop *info)
+{
+    *info = NULL;
+    *png = png_create_write_struct(PNG_LIBPNG_VER_STRING, ctx, on_error, on_warning);
+    if (*png != NULL)
+        *info = png_create_info_struct(*png);
+    if (*png == NULL || *info == NULL) {
+        png_destroy_write_struct(png, NULL);
+        return 0;
+    }
+    return 1;
+}
+
 static rl_err write_png(const char *path, int w, int h, int color_type, const uint8_t *data,
                         size_t stride, char *err, size_t errlen)
 {
@@ -395,11 +410,7 @@ static rl_err write_png(const char *path, int w, int h, int color_type, const ui
         return fail(err, errlen, RL_EINVAL, path ? path : "(null)", "nothing to write");
     if ((e = rl_outfile_open(&pw.out, path, err, errlen)) != RL_OK)
         return e;
-    png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &pw.ctx, on_error, on_warning);
-    if (png != NULL)
-        info = png_create_info_struct(png);
-    if (png == NULL || info == NULL) {
-        png_destroy_write_struct(&png, NULL);
+    if (!new_writer(&pw.ctx, &png, &info)) {
         rl_outfile_abort(&pw.out);
         return fail(err, errlen, RL_ENOMEM, path, "out of memory");
     }
@@ -425,6 +436,57 @@ rl_err rl_png_write_gray(const char *path, const rl_image *img, char *err, size_
         return fail(err, errlen, RL_EINVAL, path ? path : "(null)", "invalid image");
     return write_png(path, img->width, img->height, PNG_COLOR_TYPE_GRAY, img->data,
                      (size_t)img->stride, err, errlen);
+}
+
+/* libpng's write callback into a caller's buffer; past its end, libpng's
+ * error path. */
+typedef struct {
+    png_ctx ctx; /* first: libpng's error pointer */
+    uint8_t *buf;
+    size_t cap, n;
+} png_memwriter;
+
+static void on_mem_write(png_structp png, png_bytep data, png_size_t n)
+{
+    png_memwriter *mw = (png_memwriter *)png_get_io_ptr(png);
+    if (n > mw->cap - mw->n)
+        png_error(png, "larger than the buffer");
+    memcpy(mw->buf + mw->n, data, n);
+    mw->n += n;
+}
+
+size_t rl_png_gray_max(int w, int h)
+{
+    /* zlib's stored blocks at worst: 5 bytes per 16 KB, a filter byte per
+     * row, the chunks' headers and the IEND */
+    size_t raw = (size_t)w * (size_t)h + (size_t)h;
+    return w > 0 && h > 0 ? raw + raw / 16384 * 5 + 1024 : 0;
+}
+
+rl_err rl_png_encode_gray(const rl_image *img, uint8_t *buf, size_t cap, size_t *n)
+{
+    png_structp png;
+    png_infop info = NULL;
+    png_memwriter mw;
+    *n = 0;
+    if (!rl_image_valid(img) || buf == NULL)
+        return RL_EINVAL;
+    if (!new_writer(&mw.ctx, &png, &info))
+        return RL_ENOMEM;
+    mw.ctx.msg[0] = '\0';
+    mw.buf = buf;
+    mw.cap = cap;
+    mw.n = 0;
+    if (setjmp(mw.ctx.jmp)) {
+        png_destroy_write_struct(&png, &info);
+        return RL_ELIMIT;
+    }
+    png_set_write_fn(png, &mw, on_mem_write, on_flush);
+    png_set_compression_level(png, 1); /* fast: it is served while the robot runs */
+    write_rows(png, info, img->width, img->height, PNG_COLOR_TYPE_GRAY, img->data, (size_t)img->stride);
+    png_destroy_write_struct(&png, &info);
+    *n = mw.n;
+    return RL_OK;
 }
 
 rl_err rl_png_write_rgb(const char *path, int w, int h, const uint8_t *rgb, char *err,

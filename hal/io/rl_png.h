@@ -56,6 +56,16 @@ void rl_png_free(rl_image *img);
 RL_CHECK rl_err rl_png_write_gray(const char *path, const rl_image *img, char *err,
                                   size_t errlen);
 
+/* Bytes always enough for rl_png_encode_gray of a w x h image (0 for a
+ * bad size). */
+size_t rl_png_gray_max(int w, int h);
+
+/* An 8-bit gray image as a PNG file's bytes into buf[0..cap) (the
+ * caller's; rl_png_gray_max is enough), *n of them; lossless, fast
+ * compression. RL_EINVAL for a bad image, RL_ELIMIT when it does not
+ * fit, RL_ENOMEM. */
+RL_CHECK rl_err rl_png_encode_gray(const rl_image *img, uint8_t *buf, size_t cap, size_t *n);
+
 /* Write a packed 8-bit RGB image (3*w bytes per row). */
 RL_CHECK rl_err rl_png_write_rgb(const char *path, int w, int h, const uint8_t *rgb,
                                  char *err, size_t errlen);

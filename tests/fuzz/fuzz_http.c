@@ -33,7 +33,7 @@ static int split(const uint8_t **p, size_t *n, char fields[FIELDS][96], const ch
 
 static void judge(const char *f[FIELDS])
 {
-    rl_http_req_in in = {f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], "ringbot"};
+    rl_http_req_in in = {f[0], f[1], f[2], f[3], f[4], f[5], f[6], f[7], "ringbot", f[2], f[3], f[2], f[3], f[2]};
     rl_http_req r;
     int s = rl_http_req_judge(&in, "secret", &r);
     if (s != r.status || r.why == NULL)
