@@ -89,4 +89,5 @@ void rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, c
             rl_refine_radius_band(img, tone, &rec->cfg.family, d->id, d->u, d->v, &d->radius);
     }
     d->score = m.score;
+    d->runner_up = m.second;
 }

@@ -154,3 +154,19 @@ void rl_profile_gather_shaped(const rl_image *img, const rl_tone *tone, double c
     rl_shape circle = rl_shape_circle();
     gather(img, tone, cx, cy, r, sh ? sh : &circle, p);
 }
+
+void rl_profile_rescale(const rl_profile *src, double s, rl_profile *dst)
+{
+    int k;
+    dst->sxx = src->sxx;
+    dst->plane = src->plane;
+    dst->total = src->total;
+    memset(dst->n, 0, sizeof dst->n);
+    memset(dst->sx, 0, sizeof dst->sx);
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        int j = (int)((k + 0.5) / s);
+        j = j < RL_PROFILE_BINS - 1 ? j : RL_PROFILE_BINS - 1;
+        dst->n[j] += src->n[k];
+        dst->sx[j] += src->sx[k];
+    }
+}

@@ -97,6 +97,11 @@ typedef struct {
     double u, v;        /* centre in the image, px */
     double radius;      /* outer radius, px */
     double score;       /* Pearson correlation of the best id */
+    double runner_up;   /* how close the nearest other reading came: score less the
+                           least lead the id held, over any other id through the frame's
+                           curve and over its zone twins through the other image
+                           formation (rl_recog_config.gamma); below score for every
+                           reported id */
     rl_pass pass;       /* which pass identified it */
     int complete;       /* 0 if the image border cuts it */
     rl_box box;         /* outer ring's bounding box */
