@@ -23,12 +23,17 @@ static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone 
         rl_profile p;
         rl_match m;
         rl_profile_rescale(&wide, scales[k], &p);
+        int b, blur;
         rl_match_ids(&rec->templates, &p, &d->id, 1, -1, &m);
-        if (m.id >= 0 && m.score > own)
-            own = m.score;
-        rl_match_ids(&rec->templates, &p, twins, n, -1, &m);
-        if (m.id >= 0 && m.score > twin)
-            twin = m.score;
+        if (m.id < 0)
+            continue;
+        own = m.score > own ? m.score : own;
+        /* the twins at the blur the id fits (one level either side) */
+        for (blur = m.blur, b = blur > 0 ? blur - 1 : 0; b <= blur + 1 && b < RL_BLUR_LEVELS; b++) {
+            rl_match_ids(&rec->templates, &p, twins, n, b, &m);
+            if (m.id >= 0 && m.score > twin)
+                twin = m.score;
+        }
     }
     return own - twin;
 }
@@ -45,16 +50,14 @@ static int neighbours(const rl_recog *rec, int id, int *out)
 }
 
 /* Whether d keeps its id, from its lead over its best zone twin through
- * the other formation (other) and through the frame's curve (own): a
- * global read (the whole ring at the frame's levels) while their sum is
- * positive; a local one (sector by sector, a cut or lit landmark, whose
- * own lead says less) while the sum is over RL_TWINS_LOCAL_MARGIN and the
- * twin leads by less than that through the other formation. */
+ * the other formation (other) and through the frame's curve (own): while
+ * the twin leads by less than RL_TWINS_TOLERANCE through the other, and
+ * the sum is positive (a global read: the whole ring at the frame's
+ * levels) or over RL_TWINS_LOCAL_MARGIN (a local one, read sector by
+ * sector, whose own lead says less). */
 static int keeps(const rl_detection *d, double other, double own)
 {
-    if (d->pass != RL_PASS_LOCAL)
-        return other + own > 0;
-    return other > -RL_TWINS_LOCAL_MARGIN && other + own > RL_TWINS_LOCAL_MARGIN;
+    return other > -RL_TWINS_TOLERANCE && other + own > (d->pass == RL_PASS_LOCAL ? RL_TWINS_LOCAL_MARGIN : 0.0);
 }
 
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res)

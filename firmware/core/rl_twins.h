@@ -30,12 +30,18 @@
 /* A local read's lead over its twins, both formations summed, at least;
  * and its twin's lead through the other formation, at most. */
 #define RL_TWINS_LOCAL_MARGIN 0.01
+/* A twin's lead through the other formation past which no lead through
+ * the frame's curve keeps the id: the formations disagree (right reads
+ * let a twin come within 0.001-0.014 there, wrong ones gave it 0.009 to
+ * 0.048; ISP pipelines and composites, docs/design.md). */
+#define RL_TWINS_TOLERANCE 0.006
 
 /* Each landmark of res that is not clear checked against its zone twins
- * through `other`: its lead over the best of them there, plus, where that
- * is slight, its lead through the frame's own curve; one whose summed lead
- * is not positive (local reads: as above) becomes unidentified, the
- * others' runner_up raised to what the twins came to. */
+ * through `other` (each at the blur the id fits there, a level either
+ * side): its lead over the best of them there, plus, where that is
+ * slight, its lead through the frame's own curve; one that fails the
+ * rules above becomes unidentified, the others' runner_up raised to what
+ * the twins came to. */
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res);
 
 #endif
