@@ -23,17 +23,14 @@ static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone 
         rl_profile p;
         rl_match m;
         rl_profile_rescale(&wide, scales[k], &p);
-        int b, blur;
         rl_match_ids(&rec->templates, &p, &d->id, 1, -1, &m);
-        if (m.id < 0)
-            continue;
-        own = m.score > own ? m.score : own;
-        /* the twins at the blur the id fits (one level either side) */
-        for (blur = m.blur, b = blur > 0 ? blur - 1 : 0; b <= blur + 1 && b < RL_BLUR_LEVELS; b++) {
-            rl_match_ids(&rec->templates, &p, twins, n, b, &m);
-            if (m.id >= 0 && m.score > twin)
-                twin = m.score;
-        }
+        if (m.id >= 0 && m.score > own)
+            own = m.score;
+        /* the twins at every blur: through the other formation a twin
+         * may fit another than the id does */
+        rl_match_ids(&rec->templates, &p, twins, n, -1, &m);
+        if (m.id >= 0 && m.score > twin)
+            twin = m.score;
     }
     return own - twin;
 }

@@ -37,8 +37,7 @@
 #define RL_TWINS_TOLERANCE 0.006
 
 /* Each landmark of res that is not clear checked against its zone twins
- * through `other` (each at the blur the id fits there, a level either
- * side): its lead over the best of them there, plus, where that is
+ * through `other` (at every blur): its lead over the best of them there, plus, where that is
  * slight, its lead through the frame's own curve; one that fails the
  * rules above becomes unidentified, the others' runner_up raised to what
  * the twins came to. */
