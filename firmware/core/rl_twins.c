@@ -10,9 +10,9 @@
 #define SCALE_STEP 0.03
 
 /* How far d's id leads its best zone twin through tone: its best score
- * over the three radii less the twin's; 2 when it has none. */
+ * over the three radii (into *fit) less the twin's. */
 static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
-                        const int *twins, int n)
+                        const int *twins, int n, double *fit)
 {
     static const double scales[3] = {1.0, 1.0 / (1.0 + SCALE_STEP), (1.0 - SCALE_STEP) / (1.0 + SCALE_STEP)};
     double own = -1, twin = -1;
@@ -32,6 +32,7 @@ static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone 
         if (m.id >= 0 && m.score > twin)
             twin = m.score;
     }
+    *fit = own;
     return own - twin;
 }
 
@@ -62,7 +63,7 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
     int i, kept = 0, twins[RL_MAX_BITS], n;
     for (i = 0; i < res->n_landmarks; i++) {
         rl_detection d = res->landmarks[i];
-        double lead, own = 0;
+        double lead, own = 0, fit;
         /* a global read clear of every other id through its curve is
          * clear of its twins; a local read's runner-up (sector-normalized)
          * does not say so */
@@ -71,13 +72,19 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
             res->landmarks[kept++] = d;
             continue;
         }
-        lead = twin_lead(rec, img, other, &d, twins, n);
+        lead = twin_lead(rec, img, other, &d, twins, n, &fit);
+        /* a circle far from what was read (an ellipse the local pass read
+         * in its own shape, at a wide-angle lens's border) says nothing */
+        if (fit < d.score - RL_TWINS_UNFIT) {
+            res->landmarks[kept++] = d;
+            continue;
+        }
         if (d.score - lead > d.runner_up)
             d.runner_up = d.score - lead;
         /* through the frame's own curve only where the other's lead
          * alone does not keep it (own: 0, the id's lead where it was read) */
         if (!keeps(&d, lead, 0.0))
-            own = twin_lead(rec, img, rec->tone, &d, twins, n);
+            own = twin_lead(rec, img, rec->tone, &d, twins, n, &fit);
         if (keeps(&d, lead, own))
             res->landmarks[kept++] = d;
         else

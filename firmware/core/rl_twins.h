@@ -35,6 +35,11 @@
  * let a twin come within 0.001-0.014 there, wrong ones gave it 0.009 to
  * 0.048; ISP pipelines and composites, docs/design.md). */
 #define RL_TWINS_TOLERANCE 0.006
+/* A landmark whose circle, read through the other formation, fits this
+ * much worse than its read is not judged there (an ellipse the local pass
+ * read in its shape fits a circle at 0.4-0.6; the misreads the rule is for
+ * fitted within 0.04). */
+#define RL_TWINS_UNFIT 0.2
 
 /* Each landmark of res that is not clear checked against its zone twins
  * through `other` (at every blur): its lead over the best of them there, plus, where that is
