@@ -83,7 +83,9 @@ typedef struct {
                              (machine-vision cameras with gamma off); 1 .. 3, or 0
                              (default): learned from the landmarks, between 2.2 and 1.
                              Blur and motion mix light, so identification reads light
-                             (the curve undone), never grey levels */
+                             (the curve undone); an id whose zone twin reads as well
+                             with grey levels mixed after the curve (scaling, JPEG,
+                             sharpening) is not reported, whatever the curve */
     rl_stage_hook stage_hook; /* called as each stage of a frame begins (rl_stage.h);
                                  none by default */
 } rl_recog_config;
