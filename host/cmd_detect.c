@@ -17,11 +17,16 @@ static const char *detect_help =
     "print one JSON object per image per line:\n"
     "  {\"image\": \"a.png\", \"width\": 640, \"height\": 480, \"elapsed_us\": 412.0,\n"
     "   \"landmarks\": [{\"id\": 25, \"code\": \"11001\", \"u\": 301.42, \"v\": 122.07,\n"
-    "   \"radius\": 25.83, \"score\": 0.93, \"pass\": \"global\", \"complete\": true}],\n"
+    "   \"radius\": 25.83, \"score\": 0.93, \"runner_up\": 0.71, \"pass\": \"global\",\n"
+    "   \"complete\": true}],\n"
     "   \"unidentified\": 1, \"dropped\": {\"regions\": 0, \"lights\": 0,\n"
     "   \"candidates\": 0, \"landmarks\": 0}}\n"
     "radius: measured across both edges of the outer black band where the code\n"
-    "leaves one clear (unbiased by blur). elapsed_us is the recognition time\n"
+    "leaves one clear (unbiased by blur). runner_up: how close the nearest other\n"
+    "reading came (another id through the curve, or a zone twin read as if the\n"
+    "camera had mixed grey levels after its curve, or light before it); an id\n"
+    "two formations read differently is not reported (docs/design.md).\n"
+    "elapsed_us is the recognition time\n"
     "in-process, file I/O excluded; dropped\n"
     "counts what the compile-time limits left out (0 on ordinary frames). An\n"
     "unreadable image gives an error line on stderr and the run goes on.\n\n"
@@ -37,7 +42,9 @@ static const char *detect_help =
     "                    outputs linear light (machine-vision cameras with gamma off);\n"
     "                    auto (default) learns which of the two the landmarks read\n"
     "                    best through (\"gamma\" in the JSON). Identification undoes the\n"
-    "                    curve: blur and motion mix light, not grey levels\n";
+    "                    curve (blur and motion mix light); an id is reported only\n"
+    "                    if its zone twins do not read as well with grey levels\n"
+    "                    mixed after the curve (scaling, JPEG, sharpening)\n";
 
 
 typedef struct {

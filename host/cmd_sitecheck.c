@@ -57,6 +57,10 @@ static const char *help =
     "                    sRGB-like cameras, 1 for one that outputs linear light; the\n"
     "                    marks are laid in light through it (2.2 for auto, the\n"
     "                    default) and recognized as detect --gamma says\n"
+    "  --mix light|grey  how the sheets' blur mixes: light (default), as optics and\n"
+    "                    motion do, or grey levels, after the curve, as a camera that\n"
+    "                    scales, bins, compresses or sharpens after its curve does\n"
+    "                    (ringloc reads both without a wrong id: docs/results.md)\n"
     "  --out DIR         write the composited frames with their truth (YAML) and an\n"
     "                    annotated image of every photo with a false landmark\n"
     "  --json            one JSON object instead of the table\n";
@@ -396,6 +400,7 @@ typedef struct {
     const char *sheet_name;            /* --sheet (NULL: the paper gen prints on) */
     const char *out;                   /* --out DIR */
     int rounds, seed, json;
+    int mix_grey;                      /* --mix grey */
     rl_recog_config rc;                /* --local, --gamma (rl_recog_defaults) */
 } sitecheck_opts;
 
@@ -420,7 +425,7 @@ static int sitecheck_args(const char *C, int argc, char **argv, sitecheck_opts *
         {"rounds", required_argument, 0, 'n'}, {"seed", required_argument, 0, 'S'},
         {"local", required_argument, 0, 'L'}, {"out", required_argument, 0, 'o'},
         {"json", no_argument, 0, 'j'}, {"sheet", required_argument, 0, 'P'},
-        {"gamma", required_argument, 0, 'Y'},
+        {"gamma", required_argument, 0, 'Y'}, {"mix", required_argument, 0, 'X'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     int c, ok;
     sitecheck_opts_defaults(o);
@@ -434,6 +439,11 @@ static int sitecheck_args(const char *C, int argc, char **argv, sitecheck_opts *
         case 'o': o->out = optarg; break;
         case 'j': o->json = 1; break;
         case 'P': o->sheet_name = optarg; break;
+        case 'X':
+            if (strcmp(optarg, "light") != 0 && strcmp(optarg, "grey") != 0)
+                ok = rl_cli_fail(C, RL_EXIT_USAGE, "--mix: '%s' is not light or grey", optarg) == 0;
+            o->mix_grey = strcmp(optarg, "grey") == 0;
+            break;
         case 'r': ok = rl_cli_double(C, "--radius-px", optarg, 4, 1000, &o->radius_px); break;
         case 'D': ok = rl_cli_double(C, "--diameter", optarg, 0.001, 5, &o->diameter); break;
         case 'Z': ok = rl_cli_double(C, "--distance", optarg, 0.05, 100, &o->distance); break;
@@ -517,6 +527,7 @@ static void sitecheck_composite(const sitecheck_opts *o, const rl_paper *sheet, 
     rl_composite_defaults(cc);
     cc->radius_px = o->radius_px;
     cc->gamma = o->rc.gamma > 0 ? o->rc.gamma : 2.2; /* the photos' camera: sRGB unless told */
+    cc->mix_grey = o->mix_grey;
     cc->sheet_w = sheet->w_mm / 500.0 / o->diameter; /* in radii */
     cc->sheet_h = sheet->h_mm / 500.0 / o->diameter;
     cc->seed = (uint64_t)o->seed;

@@ -344,6 +344,15 @@ static void develop(rl_image *img, rl_composite_config *cc, const rl_site_mark *
         }
 }
 
+/* The patch's values v raised to power e: light to grey levels (over
+ * 255) with 1 / gamma, back with gamma. */
+static void patch_curve(patch *p, double e)
+{
+    size_t k, n = (size_t)p->w * (size_t)p->h;
+    for (k = 0; k < n; k++)
+        p->val[k] = (float)pow(p->val[k] > 0 ? p->val[k] : 0.0f, e);
+}
+
 static void draw_one(rl_image *img, rl_composite_config *cc, const rl_site_mark *m,
                      rl_composite_pattern pattern, const void *ctx)
 {
@@ -364,7 +373,11 @@ static void draw_one(rl_image *img, rl_composite_config *cc, const rl_site_mark 
     p.cov = calloc((size_t)p.w * (size_t)p.h, sizeof(float));
     if (p.val != NULL && p.cov != NULL) {
         lay_sheet(img, cc, m, pattern, ctx, &p);
+        if (cc->mix_grey)
+            patch_curve(&p, 1.0 / cc->gamma);
         blur_patch(p.val, p.w, p.h, m->blur);
+        if (cc->mix_grey)
+            patch_curve(&p, cc->gamma);
         blur_patch(p.cov, p.w, p.h, m->blur);
         develop(img, cc, m, &p);
     }

@@ -11,7 +11,10 @@
  * forms it: the photo's grey levels are turned into light through its
  * tone curve (gamma), the sheet is laid and blurred there, and the result
  * goes back through the curve with the sensor's noise (photon noise, and
- * read noise that the curve stretches in the dark). Each id once in a
+ * read noise that the curve stretches in the dark). With mix_grey the
+ * blur mixes the sheet's grey levels instead (through the curve first),
+ * as a camera that scales, bins, compresses or sharpens after its curve
+ * does. Each id once in a
  * frame, as a map holds it. Marks are placed in three kinds of
  * places: wholly inside and away from lights, within one radius of a
  * light, and cut by the image border (up to half outside).
@@ -54,6 +57,9 @@ typedef struct {
     double radius_px;       /* landmark radius in the image (default 25) */
     double sheet_w, sheet_h;/* the sheet's sides, in landmark radii (default 2.6 x 2.6) */
     double gamma;           /* the photos' tone curve (default 2.2, sRGB-like) */
+    int mix_grey;           /* 1: the blur mixes grey levels, after the curve (a camera
+                               that scales, bins, compresses or sharpens after it);
+                               0 (default): light, as optics do */
     int complete, near_light, cut; /* marks per photo of each kind (4, 2, 2) */
     double blur_min, blur_max;     /* px (0.4, 1.1) */
     double ink_min, ink_max;       /* ink's light over paper's (0.02, 0.08) */

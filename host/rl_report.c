@@ -48,8 +48,8 @@ void rl_report_json_open(FILE *f, const char *image, const rl_result *res, const
             code[0] = '\0';
         fprintf(f,
                 "%s{\"id\": %d, \"code\": \"%s\", \"u\": %.2f, \"v\": %.2f, \"radius\": %.2f, "
-                "\"score\": %.3f, \"pass\": \"%s\", \"complete\": %s}",
-                i ? ", " : "", d->id, code, d->u, d->v, d->radius, d->score,
+                "\"score\": %.3f, \"runner_up\": %.3f, \"pass\": \"%s\", \"complete\": %s}",
+                i ? ", " : "", d->id, code, d->u, d->v, d->radius, d->score, d->runner_up,
                 d->pass == RL_PASS_LOCAL ? "local" : "global", d->complete ? "true" : "false");
     }
     fprintf(f, "], \"unidentified\": %d", res->n_unidentified);

@@ -112,10 +112,36 @@ static void test_scores_match_a_direct_correlation(void **state)
     }
 }
 
+/* A profile rescaled to a smaller radius: each bin's pixels move to the
+ * bin its middle falls in at the new scale, those past the end to the
+ * last; by hand: at s = 0.5 bin 3 (middle 3.5) goes to 7, bin 40 (40.5)
+ * past 63 to the last; the other sums as they were. */
+static void test_rescaled_profile_moves_bins(void **state)
+{
+    rl_profile p, q;
+    (void)state;
+    memset(&p, 0, sizeof p);
+    p.n[3] = 10;
+    p.sx[3] = 500;
+    p.n[40] = 4;
+    p.sx[40] = 100;
+    p.sxx = 123;
+    p.plane = 7;
+    p.total = 14;
+    rl_profile_rescale(&p, 0.5, &q);
+    assert_true(q.n[7] == 10 && q.sx[7] == 500);
+    assert_true(q.n[RL_PROFILE_BINS - 1] == 4 && q.sx[RL_PROFILE_BINS - 1] == 100);
+    assert_true(q.n[3] == 0 && q.n[40] == 0);
+    assert_true(q.sxx == 123 && q.plane == 7 && q.total == 14);
+    rl_profile_rescale(&p, 1.0, &q); /* unchanged */
+    assert_true(q.n[3] == 10 && q.n[40] == 4);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_kernels_agree_bit_for_bit),
+        cmocka_unit_test(test_rescaled_profile_moves_bins),
         cmocka_unit_test(test_scores_match_a_direct_correlation),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

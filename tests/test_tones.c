@@ -5,6 +5,7 @@
  * votes for the current curve; a frame with none votes for neither and
  * leaves the votes as they were. */
 #include "rl_test.h"
+#include <math.h>
 #include "rl_tones.h"
 
 /* One frame read through what rl_tones_to_try asks, the current curve
@@ -118,6 +119,27 @@ static void test_a_configured_curve_is_the_only_one(void **state)
     assert_null(rl_tones_doubt(&ts, rl_tones_current(&ts)));
 }
 
+/* Issue 44: the other image formation is at hand whatever the
+ * configuration: for a curve, grey levels mixed (read linearly: light of
+ * grey 128 is 128/255 of the top); for a linear camera, the sRGB-like 2.2
+ * ((128/255)^2.2 = 0.2195 of the top). Worked out by hand. */
+static void test_the_other_formation_is_always_at_hand(void **state)
+{
+    rl_tones ts;
+    const rl_tone *o;
+    (void)state;
+    rl_tones_init(&ts, 2.2);
+    o = rl_tones_other(&ts, rl_tones_current(&ts));
+    assert_true(o != rl_tones_current(&ts));
+    assert_true(fabs(o->light[128] - RL_TONE_MAX * 128.0 / 255.0) < 0.01);
+    rl_tones_init(&ts, 1.0);
+    o = rl_tones_other(&ts, rl_tones_current(&ts));
+    assert_true(fabs(o->light[128] - RL_TONE_MAX * 0.21952) < 0.05);
+    rl_tones_init(&ts, 0.0); /* auto: 2.2 first, the other linear */
+    o = rl_tones_other(&ts, rl_tones_current(&ts));
+    assert_true(fabs(o->light[128] - RL_TONE_MAX * 128.0 / 255.0) < 0.01);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -127,6 +149,7 @@ int main(void)
         cmocka_unit_test(test_the_better_curve_takes_over),
         cmocka_unit_test(test_a_tie_between_holds_the_current_curve),
         cmocka_unit_test(test_a_configured_curve_is_the_only_one),
+        cmocka_unit_test(test_the_other_formation_is_always_at_hand),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

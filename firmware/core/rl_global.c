@@ -91,4 +91,5 @@ void rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, c
     }
     d->best_id = m.id; /* taken or not: an unread candidate's nearest id */
     d->score = m.score;
+    d->runner_up = m.second;
 }

@@ -318,6 +318,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
         return 0;
     out->id = rd.m.id;
     out->score = rd.m.score;
+    out->runner_up = rd.m.second;
     return 1;
 }
 

@@ -76,7 +76,7 @@ static double plane_explained(const plane_sums *ps)
 
 /* Pixels binned by the shape's normalized radius, a circle's included. */
 static void gather(const rl_image *img, const rl_tone *tone, double cx, double cy, double r,
-                   const rl_shape *sh, rl_profile *p)
+                   const rl_shape *sh, int ystep, rl_profile *p)
 {
     double ext = RL_PROFILE_EXTENT * r, scale = RL_PROFILE_BINS / ext;
     /* the ellipse's extent along y */
@@ -94,7 +94,7 @@ static void gather(const rl_image *img, const rl_tone *tone, double cx, double c
      * templates */
     if (y0 < 0) y0 = 0;
     if (y1 > img->height - 1) y1 = img->height - 1;
-    for (y = y0; y <= y1; y++) {
+    for (y = y0; y <= y1; y += ystep) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
         double dy = y - cy;
         float b2dy = (float)(2 * sh->b * dy), cdy2 = (float)(sh->c * dy * dy);
@@ -145,12 +145,35 @@ void rl_profile_gather(const rl_image *img, const rl_tone *tone, double cx, doub
                        rl_profile *p)
 {
     rl_shape circle = rl_shape_circle();
-    gather(img, tone, cx, cy, r, &circle, p);
+    gather(img, tone, cx, cy, r, &circle, 1, p);
 }
 
 void rl_profile_gather_shaped(const rl_image *img, const rl_tone *tone, double cx, double cy,
                               double r, const rl_shape *sh, rl_profile *p)
 {
     rl_shape circle = rl_shape_circle();
-    gather(img, tone, cx, cy, r, sh ? sh : &circle, p);
+    gather(img, tone, cx, cy, r, sh ? sh : &circle, 1, p);
+}
+
+void rl_profile_gather_rows(const rl_image *img, const rl_tone *tone, double cx, double cy, double r,
+                            int step, rl_profile *p)
+{
+    rl_shape circle = rl_shape_circle();
+    gather(img, tone, cx, cy, r, &circle, step < 1 ? 1 : step, p);
+}
+
+void rl_profile_rescale(const rl_profile *src, double s, rl_profile *dst)
+{
+    int k;
+    dst->sxx = src->sxx;
+    dst->plane = src->plane;
+    dst->total = src->total;
+    memset(dst->n, 0, sizeof dst->n);
+    memset(dst->sx, 0, sizeof dst->sx);
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        int j = (int)((k + 0.5) / s);
+        j = j < RL_PROFILE_BINS - 1 ? j : RL_PROFILE_BINS - 1;
+        dst->n[j] += src->n[k];
+        dst->sx[j] += src->sx[k];
+    }
 }

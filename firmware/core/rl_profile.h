@@ -46,4 +46,15 @@ void rl_profile_gather(const rl_image *img, const rl_tone *tone, double cx, doub
 void rl_profile_gather_shaped(const rl_image *img, const rl_tone *tone, double cx, double cy,
                               double r, const rl_shape *sh, rl_profile *p);
 
+/* rl_profile_gather from every step-th row only (step 2: half the
+ * pixels, for a second opinion on a read). */
+void rl_profile_gather_rows(const rl_image *img, const rl_tone *tone, double cx, double cy, double r,
+                            int step, rl_profile *p);
+
+/* Profile src, gathered at radius r, as one gathered at s * r would be
+ * (s <= 1): each bin's pixels moved to the bin its middle falls in, those
+ * past the extent into the last bin (as gathering puts the rim's). Three
+ * radii read from one gather, for 64 additions each. */
+void rl_profile_rescale(const rl_profile *src, double s, rl_profile *dst);
+
 #endif

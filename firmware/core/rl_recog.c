@@ -329,11 +329,11 @@ static rl_err run_stages(rl_recog *rec, const rl_image *img, rl_result *res)
         rl_local_pass(rec, img, res);
         rl_filter_duplicates(res);
     }
-    /* while the camera's tone curve is being learned, no landmark whose
-     * zone twin reads better through the other curve */
-    if (rl_tones_doubt(&rec->tones, rec->tone) != NULL) {
-        rl_stage_enter(hook, RL_STAGE_TONES);
-        rl_twins_check(rec, img, rl_tones_doubt(&rec->tones, rec->tone), res);
+    /* no landmark whose zone twin reads as well through the other image
+     * formation (grey levels mixed, or light), learned curve or not */
+    if (res->n_landmarks > 0) {
+        rl_stage_enter(hook, RL_STAGE_TWINS);
+        rl_twins_check(rec, img, rl_tones_other(&rec->tones, rec->tone), res);
     }
     /* 6. the frame's landmarks: consistent sizes, in order */
     rl_filter_size(res, rec->cfg.size_tolerance);

@@ -19,8 +19,10 @@ void rl_tones_init(rl_tones *ts, double gamma)
     int k;
     ts->n = gamma > 0 ? 1 : 2;
     ts->gamma[0] = gamma > 0 ? gamma : 2.2; /* cameras for robots mostly speak sRGB */
-    ts->gamma[1] = 1.0;
-    for (k = 0; k < ts->n; k++) {
+    /* the other image formation: grey levels mixed (read linearly), or,
+     * for a camera said to be linear, light under the sRGB-like curve */
+    ts->gamma[1] = ts->gamma[0] == 1.0 ? 2.2 : 1.0;
+    for (k = 0; k < RL_TONES_MAX; k++) {
         rl_tone_init(&ts->tone[k], ts->gamma[k]);
         ts->votes[k] = 0;
     }
@@ -81,6 +83,11 @@ const rl_tone *rl_tones_doubt(const rl_tones *ts, const rl_tone *used)
 {
     if (settled(ts))
         return NULL;
+    return used == &ts->tone[0] ? &ts->tone[1] : &ts->tone[0];
+}
+
+const rl_tone *rl_tones_other(const rl_tones *ts, const rl_tone *used)
+{
     return used == &ts->tone[0] ? &ts->tone[1] : &ts->tone[0];
 }
 

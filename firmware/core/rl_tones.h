@@ -35,7 +35,7 @@
 #define RL_TONES_RECHECK 16
 
 typedef struct {
-    rl_tone tone[RL_TONES_MAX];
+    rl_tone tone[RL_TONES_MAX];   /* both made, whether configured or not */
     double gamma[RL_TONES_MAX];
     double votes[RL_TONES_MAX];
     int n;        /* curves to choose from: 1 when configured */
@@ -43,7 +43,8 @@ typedef struct {
     unsigned frames;
 } rl_tones;
 
-/* gamma 1 .. 3: that curve only; 0: choose between 1 and 2.2. */
+/* gamma 1 .. 3: that curve only (and the other formation's for doubt,
+ * rl_tones_other); 0: choose between 1 and 2.2. */
 void rl_tones_init(rl_tones *ts, double gamma);
 
 /* The curves to read this frame through (indices into ts->tone, the
@@ -60,6 +61,12 @@ const rl_tone *rl_tones_current(const rl_tones *ts);
 /* The other curve while the choice is open (auto, not settled), else NULL:
  * what a frame read through `used` is to be doubted against. */
 const rl_tone *rl_tones_doubt(const rl_tones *ts, const rl_tone *used);
+/* The other image formation, always (configured or not): grey levels
+ * mixed after the curve (gamma 1) for a frame read through a curve, the
+ * sRGB-like curve (2.2) for one read as linear light. A landmark's id is
+ * taken only if its zone twins do not read better there (rl_twins.h). */
+const rl_tone *rl_tones_other(const rl_tones *ts, const rl_tone *used);
+
 double rl_tones_gamma(const rl_tones *ts);
 
 #endif

@@ -1,22 +1,51 @@
-/* rl_twins: while the camera's tone curve is still being learned
- * (rl_tones.h), a landmark of the local pass (cut by the border or next to
- * a light, read from sector-normalized levels, where a wrong curve does
- * most harm) keeps its id only if none of its zone twins
- * (the codes one zone next to the outer ring away, which a wrong curve
- * turns it into) reads better through the other curve (internal).
+/* rl_twins: no id that hangs on how the image was formed (internal).
  *
- *   const rl_tone *other = rl_tones_doubt(&rec->tones, rec->tone);
- *   if (other != NULL)
- *       rl_twins_check(rec, &img, other, &res);   // after both passes
+ * Blur, scaling and compression mix either light (optics, motion: before
+ * the camera's tone curve) or grey levels (an ISP's scaler, binning after
+ * the curve, JPEG, sharpening: after it). A blurred edge falls elsewhere
+ * under the two, so code zone 1, the narrowest, next to the outer ring,
+ * can swell or shrink by a zone's width and a landmark pass for its zone
+ * twin (the codes one zone next to the outer ring away) with a high
+ * score. The recognizer cannot tell the formation from one frame, so
+ * every landmark that is not clear, of either pass and from the first
+ * frame of a stream, is scored with its zone twins (every valid code one
+ * zone away) through the other formation (rl_tones_other) at its centre
+ * and radius (and 3% either side): one whose twin leads it there by more
+ * than it leads the twin through the frame's curve is reported
+ * unidentified, not as either id (a local read needs a margin more).
+ * What the twins came to is in the landmark's runner_up.
+ *
+ *   rl_twins_check(rec, &img, rl_tones_other(&rec->tones, rec->tone), &res);
  */
 #ifndef RL_TWINS_H
 #define RL_TWINS_H
 
 #include "rl_recog_state.h"
 
-/* Each landmark of res the local pass identified scored, with its zone twins, through
- * `other` at its centre and radius (and 3% either side); one a twin beats
- * there becomes unidentified. */
+/* A global read whose id leads every other id through its curve by this
+ * much correlation is clear (no global read the formations turned into
+ * a twin led by more than 0.036: composites and moving frames,
+ * docs/design.md). */
+#define RL_TWINS_CLEAR 0.05
+/* A local read's lead over its twins, both formations summed, at least;
+ * and its twin's lead through the other formation, at most. */
+#define RL_TWINS_LOCAL_MARGIN 0.01
+/* A twin's lead through the other formation past which no lead through
+ * the frame's curve keeps the id: the formations disagree (right reads
+ * let a twin come within 0.001-0.014 there, wrong ones gave it 0.009 to
+ * 0.048; ISP pipelines and composites, docs/design.md). */
+#define RL_TWINS_TOLERANCE 0.006
+/* A landmark whose circle, read through the other formation, fits this
+ * much worse than its read is not judged there (an ellipse the local pass
+ * read in its shape fits a circle at 0.4-0.6; the misreads the rule is for
+ * fitted within 0.04). */
+#define RL_TWINS_UNFIT 0.2
+
+/* Each landmark of res that is not clear checked against its zone twins
+ * through `other` (at every blur): its lead over the best of them there, plus, where that is
+ * slight, its lead through the frame's own curve; one that fails the
+ * rules above becomes unidentified, the others' runner_up raised to what
+ * the twins came to. */
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res);
 
 #endif

@@ -83,7 +83,9 @@ typedef struct {
                              (machine-vision cameras with gamma off); 1 .. 3, or 0
                              (default): learned from the landmarks, between 2.2 and 1.
                              Blur and motion mix light, so identification reads light
-                             (the curve undone), never grey levels */
+                             (the curve undone); an id whose zone twin reads as well
+                             with grey levels mixed after the curve (scaling, JPEG,
+                             sharpening) is not reported, whatever the curve */
     rl_stage_hook stage_hook; /* called as each stage of a frame begins (rl_stage.h);
                                  none by default */
 } rl_recog_config;
@@ -97,6 +99,11 @@ typedef struct {
     double u, v;        /* centre in the image, px */
     double radius;      /* outer radius, px */
     double score;       /* Pearson correlation of the best id */
+    double runner_up;   /* how close the nearest other reading came: score less the
+                           least lead the id held, over any other id through the frame's
+                           curve and over its zone twins through the other image
+                           formation (rl_recog_config.gamma); below score for every
+                           reported id */
     rl_pass pass;       /* which pass identified it */
     int complete;       /* 0 if the image border cuts it */
     rl_box box;         /* outer ring's bounding box */

@@ -27,10 +27,12 @@ typedef enum {
     RL_STAGE_CLR,      /* candidate landmark regions; regions marked for second labellings */
     RL_STAGE_GLOBAL,   /* global pass: the candidates read through the frame's tone curve */
     RL_STAGE_TONES,    /* while the curve is open: the candidates read through the other
-                          curve, and (after the local pass) the zone twins' check */
+                          curve */
     RL_STAGE_SECOND,   /* second labellings of the marked tiles, their new candidates read */
     RL_STAGE_LOCAL,    /* local pass: candidates near lights or cut by the border */
     RL_STAGE_ACROSS,   /* reads across the motion (within the local pass) */
+    RL_STAGE_TWINS,    /* landmarks not clear of their zone twins read through the other
+                          image formation (rl_twins.h) */
     RL_STAGE_POSE,     /* the pose from the frame's landmarks (the caller's) */
     RL_STAGE_PLACE,    /* the place on a map that repeats ids (the caller's) */
     RL_STAGE_DONE      /* not a stage: the count, and the call that ends a frame */

@@ -31,6 +31,7 @@
 #include <sys/stat.h>
 #include "render_camera.h"
 #include "render_ceiling.h"
+#include "render_isp.h"
 #include "render_look.h"
 #include "render_path.h"
 #include "render_random.h"
@@ -51,7 +52,7 @@ static const char *help =
     "                      [--seed S] [--size 640x480] [--camera CAM.yaml] [--twin]\n"
     "                      [--mount X,Y,YAW] [--write-map FILE] [--write-camera FILE]\n"
     "                      [--write-robot FILE] [--rock SIGMA] [--site grid|irregular]\n"
-    "                      [--move ID,DX,DY] [--look SET] [--sheet PAPER]\n"
+    "                      [--move ID,DX,DY] [--look SET] [--sheet PAPER] [--isp STAGES]\n"
     "       ringloc-render --out DIR --path stream --site-map FILE [--newest] [...]\n\n"
     "Render ceiling fixtures with ground truth (NAME_NNN.png + NAME_NNN.yaml).\n"
     "  --set NAME      clean, cluttered, glare, border, clutter_only, dim, blur, motion,\n"
@@ -85,6 +86,15 @@ static const char *help =
     "  --sheet PAPER   the landmarks' sheets: letter, a4, a3, tabloid or WxH in mm\n"
     "                  (default: as wide as the landmark, A4's proportions; the\n"
     "                  moving set draws letter, A4, A3 or that, heldout letter)\n"
+    "  --isp STAGES    a camera's processing after its tone curve, on grey levels, in\n"
+    "                  the order given (comma-separated): blur:S (Gaussian, px),\n"
+    "                  scale:F (down by F and back up), sharpen:A (unsharp mask),\n"
+    "                  jpeg:Q (quality), scurve:K (S-curve, 0..1), ae:STOPS (auto\n"
+    "                  exposure, another each frame); e.g. scale:2,sharpen:0.8,jpeg:75\n"
+    "                  (the truth is the frame's geometry: unchanged)\n"
+    ;
+/* the rest (a C99 string literal holds 4095 characters) */
+static const char *help_sites =
     "  --site-map FILE a large site's map (ringloc plan --area; any size, ids repeated):\n"
     "                  frames under it with --path random (poses uniform over the\n"
     "                  landmarks' extent, any heading) or --path tour (a drive over the\n"
@@ -120,6 +130,7 @@ typedef struct {
     const char *site_map;           /* --site-map FILE */
     rl_paper sheet;                 /* --sheet (name NULL: the set's) */
     int newest;                     /* --newest: a stream's latest pose only */
+    render_isp isp;                 /* --isp (n 0: none) */
 } render_opts;
 
 static void render_opts_defaults(render_opts *o)
@@ -202,6 +213,12 @@ static int render_option(int c, const char *arg, render_opts *o)
             return !rl_cli_fail(NULL, 2, "--sheet: '%s' is not %s or WxH in mm", arg, rl_paper_names());
         return 1;
     case 'W': o->newest = 1; return 1;
+    case 'I': {
+        char err[256];
+        if (render_isp_parse(arg, &o->isp, err, sizeof err) != 0)
+            return !rl_cli_fail(NULL, 2, "%s", err);
+        return 1;
+    }
     case 'M': o->map_out = arg; return 1;
     case 'C': o->cam_out = arg; return 1;
     case 'R': o->robot_out = arg; return 1;
@@ -223,12 +240,14 @@ static int render_args(int argc, char **argv, render_opts *o)
         {"look", required_argument, 0, 'l'}, {"site", required_argument, 0, 'G'},
         {"move", required_argument, 0, 'V'}, {"site-map", required_argument, 0, 'E'},
         {"sheet", required_argument, 0, 'P'}, {"newest", no_argument, 0, 'W'},
+        {"isp", required_argument, 0, 'I'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     int c;
     render_opts_defaults(o);
     while ((c = rl_cli_getopt(NULL, argc, argv, opts)) != -1) {
         if (c == 'h') {
             fputs(help, stdout);
+            fputs(help_sites, stdout);
             return 0;
         }
         if (!render_option(c, optarg, o))
@@ -459,8 +478,9 @@ static int render_frame(const render_opts *o, const render_plan *p, render_scene
             for (i = 0; i < s->n; i++)
                 if (s->obj[i].kind == RENDER_OBJ_PAPER)
                     s->obj[i].a *= 1.25, s->obj[i].b *= 1.25;
-        if (render_camera_frame(s, px) != 0)
-            return rl_cli_fail(NULL, 1, "out of memory");
+        if (render_camera_frame(s, px) != 0 ||
+            render_isp_apply(&o->isp, px, s->cam.width, s->cam.height, k) != 0)
+            return rl_cli_fail(NULL, 1, "out of memory, or JPEG failed (--isp)");
         snprintf(file, sizeof file, "%s/%s%s.png", o->out, name, pass ? "_tag" : "");
         if (rl_png_write_gray(file, &img, err, sizeof err) != RL_OK)
             return rl_cli_fail(NULL, 1, "%s", err);
