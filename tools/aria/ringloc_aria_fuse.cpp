@@ -29,6 +29,8 @@
 #include <Aria/Aria.h>
 #include <cstdio>
 #include <ctime>
+#include "aria_route.h"
+#include "aria_sim.h"
 #include "rl_fuse.h"
 extern "C" {
 #include "rl_outfile.h"
@@ -54,7 +56,8 @@ static double clock_offset()
 class RinglocFuser
 {
 public:
-    RinglocFuser(ArRobot *robot, FILE *log) : myRobot(robot), myLog(log), myTask(this, &RinglocFuser::cycle)
+    RinglocFuser(ArRobot *robot, FILE *log, AriaSim *sim, double floorXY)
+        : myRobot(robot), myLog(log), mySim(sim), myTask(this, &RinglocFuser::cycle)
     {
         myOffset = clock_offset();
         rl_fuse_config cfg;
@@ -62,9 +65,12 @@ public:
         cfg.track = 0.33;            /* a Pioneer 3-DX's wheel base; the filter learns the rest */
         cfg.wheel_noise = 0.0005;
         cfg.time_sigma = 0.002;      /* ArTime counts milliseconds */
+        if (floorXY > 0)             /* what the frames' sigmas leave out (the robot rocking) */
+            cfg.floor_xy = floorXY;
         /* 2.5 s of ARIA's 10 server information packets a second */
         myOk = rl_fuse_init(&myFuse, &cfg, myHist, rl_fuse_history_count(2.5, 10)) == RL_OK;
         myFused = 0;
+        myWaypoint = -1;
         robot->addSensorInterpTask("ringloc fuse", 10, &myTask);
     }
 
@@ -73,10 +79,12 @@ public:
     /* the robot's thread, the robot locked: a new odometry pose */
     void cycle()
     {
-        ArPose e = myRobot->getEncoderPose();
+        ArPose e = myRobot->getEncoderPose(), truth;
         double t = secs(myRobot->getLastOdometryTime());
         rl_fuse_pose p;
-        bool have;
+        bool have, simulated = mySim && mySim->truth(&truth);
+        if (simulated) /* the truth at this packet: the renderer draws it */
+            mySim->stream(t - myOffset, truth);
         myMutex.lock();
         have = rl_fuse_odometry(&myFuse, t, e.getX() / 1000, e.getY() / 1000, ArMath::degToRad(e.getTh())) == RL_OK &&
                rl_fuse_pose_at(&myFuse, t, &p) == RL_OK;
@@ -87,9 +95,17 @@ public:
         myRobot->moveTo(ArPose(p.x * 1000, p.y * 1000, ArMath::radToDeg(p.yaw)), myRobot->getPose());
         myFused++;
         if (myLog)
-            fprintf(myLog, "%.4f %.5f %.5f %.5f %.5f %.5f %.5f %.6f\n", t - myOffset, p.x, p.y, p.yaw, myRobot->getX() / 1000,
+            fprintf(myLog, "%.4f %.5f %.5f %.5f %.5f %.5f %.5f %.6f", t - myOffset, p.x, p.y, p.yaw, myRobot->getX() / 1000,
                     myRobot->getY() / 1000, ArMath::degToRad(myRobot->getTh()), sqrt(p.cov[0][0] + p.cov[1][1]));
+        if (myLog && simulated)
+            fprintf(myLog, " %.3f %.3f %.6f %d\n", truth.getX() / 1000, truth.getY() / 1000,
+                    ArMath::degToRad(truth.getTh()), myWaypoint);
+        else if (myLog)
+            fputc('\n', myLog);
     }
+
+    /* the waypoint being driven to, for the log (-1: none) */
+    void setWaypoint(int i) { myWaypoint = i; }
 
     /* the reader's thread: one ARCOS packet from ringloc's line, arrived
      * at `arrival` (ArTime s); its sequence and arrival into `arrivals` */
@@ -139,6 +155,8 @@ public:
 private:
     ArRobot *myRobot;
     FILE *myLog;
+    AriaSim *mySim;
+    int myWaypoint;
     ArFunctorC<RinglocFuser> myTask;
     ArMutex myMutex;
     rl_fuse myFuse;
@@ -148,6 +166,36 @@ private:
     double myOffset;
 };
 
+/* -push DX,DY,DTH (mm, mm, degrees) */
+static bool parsePush(const char *s, ArPose *d)
+{
+    double x, y, th;
+    char extra;
+    if (!s)
+        return true;
+    if (sscanf(s, "%lf,%lf,%lf %c", &x, &y, &th, &extra) != 3) {
+        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: -push %s: not DX,DY,DTH (mm, mm, degrees)", s);
+        return false;
+    }
+    *d = ArPose(x, y, th);
+    return true;
+}
+
+/* a waypoint reached: "i goal_x goal_y t ariaX ariaY trueX trueY" (m, s) */
+static void logReached(FILE *f, const AriaRoute &route, size_t i, double t, const ArPose &aria, AriaSim *sim)
+{
+    ArPose truth, g = route.goal(i);
+    bool have = sim && sim->truth(&truth);
+    ArLog::log(ArLog::Normal, "ringloc-aria-fuse: waypoint %zu (%.3f m, %.3f m) reached: ARIA's pose %.1f mm off%s",
+               i, g.getX() / 1000, g.getY() / 1000, aria.findDistanceTo(g), have ? ", the truth " : "");
+    if (have)
+        ArLog::log(ArLog::Normal, "ringloc-aria-fuse:   the truth %.0f mm off (whole mm)", truth.findDistanceTo(g));
+    if (f)
+        fprintf(f, "%zu %.4f %.4f %.4f %.5f %.5f %.3f %.3f\n", i, g.getX() / 1000, g.getY() / 1000, t,
+                aria.getX() / 1000, aria.getY() / 1000, have ? truth.getX() / 1000 : NAN,
+                have ? truth.getY() / 1000 : NAN);
+}
+
 int main(int argc, char **argv)
 {
     Aria::init();
@@ -155,27 +203,59 @@ int main(int argc, char **argv)
     parser.loadDefaultArguments();
     ArRobot robot;
     ArRobotConnector connector(&parser, &robot);
-    const char *port = "/dev/ttyUSB1", *logPath = NULL, *arrivalsPath = NULL;
+    const char *port = "/dev/ttyUSB1", *logPath = NULL, *arrivalsPath = NULL, *simPoses = NULL, *routePath = NULL,
+               *routeLogPath = NULL, *pushArg = NULL;
     int baud = 115200;
-    double drive = 0, vel = 0, rotVel = 0;
+    double drive = 0, vel = 0, rotVel = 0, frameFloor = 0, closeDist = 20, routeVel = 400, cutAt = -1, cutFor = 3, pushAt = -1;
+    ArPose pushBy;
     if (!parser.checkParameterArgumentString("-ringlocPort", &port) ||
         !parser.checkParameterArgumentInteger("-ringlocBaud", &baud) ||
         !parser.checkParameterArgumentDouble("-drive", &drive) ||
         !parser.checkParameterArgumentDouble("-vel", &vel) ||
         !parser.checkParameterArgumentDouble("-rotVel", &rotVel) ||
         !parser.checkParameterArgumentString("-poseLog", &logPath) ||
-        !parser.checkParameterArgumentString("-arrivalsLog", &arrivalsPath) || !Aria::parseArgs() ||
-        !parser.checkHelpAndWarnUnparsed()) {
-        ArLog::log(ArLog::Terse, "usage: ringloc-aria-fuse [ARIA's robot options] [-ringlocPort /dev/ttyUSB1] "
-                                 "[-ringlocBaud 115200] [-drive SECONDS -vel MM/S -rotVel DEG/S] [-poseLog FILE] "
-                                 "[-arrivalsLog FILE]");
+        !parser.checkParameterArgumentString("-arrivalsLog", &arrivalsPath) ||
+        !parser.checkParameterArgumentDouble("-frameFloor", &frameFloor) ||
+        !parser.checkParameterArgumentString("-simPoses", &simPoses) ||
+        !parser.checkParameterArgumentString("-route", &routePath) ||
+        !parser.checkParameterArgumentString("-routeLog", &routeLogPath) ||
+        !parser.checkParameterArgumentDouble("-closeDist", &closeDist) ||
+        !parser.checkParameterArgumentDouble("-routeVel", &routeVel) ||
+        !parser.checkParameterArgumentDouble("-cutAt", &cutAt) ||
+        !parser.checkParameterArgumentDouble("-cutFor", &cutFor) ||
+        !parser.checkParameterArgumentDouble("-pushAt", &pushAt) ||
+        !parser.checkParameterArgumentString("-push", &pushArg) || !parsePush(pushArg, &pushBy) ||
+        !Aria::parseArgs() || !parser.checkHelpAndWarnUnparsed()) {
+        ArLog::log(ArLog::Terse,
+                   "usage: ringloc-aria-fuse [ARIA's robot options] [-ringlocPort /dev/ttyUSB1] [-ringlocBaud 115200]\n"
+                   "         [-drive SECONDS -vel MM/S -rotVel DEG/S] [-poseLog FILE] [-arrivalsLog FILE]\n"
+                   "         [-frameFloor MM] [-route FILE [-routeLog FILE] [-closeDist 20] [-routeVel 400]]\n"
+                   "         [-simPoses FIFO] [-cutAt S [-cutFor 3]] [-pushAt S -push DX,DY,DTH]\n"
+                   "  -frameFloor MM  added in quadrature to every frame's position sigma (rl_fuse's\n"
+                   "                  floor_xy, default 0.5): what the frames' own sigmas leave out\n"
+                   "  -route FILE     drive to each waypoint ('X Y' a line, m) with ArActionGoto on the\n"
+                   "                  fused pose (close enough: -closeDist mm; at most -routeVel mm/s), once\n"
+                   "                  ten frames are applied; -drive is then the time limit\n"
+                   "  -routeLog FILE  per waypoint reached: 'i goal_x goal_y t ariaX ariaY trueX trueY'\n"
+                   "  a simulator (AMRISim, MobileSim): its true pose (SIM_STAT) ends each -poseLog line\n"
+                   "                  ('trueX trueY trueYaw waypoint'; whole mm and degrees)\n"
+                   "  -simPoses FIFO  and goes to ringloc-render --path stream as 'T_US X Y YAW' lines\n"
+                   "  -cutAt S        ringloc's frames dropped from S s after the route's start, -cutFor s\n"
+                   "  -pushAt S       the simulated robot set aside by -push mm,mm,degrees at S s (SIM_SET_POSE)");
         Aria::logOptions();
         Aria::exit(2);
     }
+    AriaRoute route(&robot, closeDist, routeVel);
+    if (routePath && !route.load(routePath))
+        Aria::exit(1);
+    /* a simulator's truth asked for only where it is wanted (a Pioneer ignores SIM_STAT) */
+    AriaSim *sim = simPoses || pushAt >= 0 ? new AriaSim(&robot) : NULL;
     if (!connector.connectRobot()) {
         ArLog::log(ArLog::Terse, "ringloc-aria-fuse: could not connect to the robot");
         Aria::exit(1);
     }
+    if (simPoses && !sim->openStream(simPoses))
+        Aria::exit(1);
     ArSerialConnection line;
     line.setPort(port);
     line.setBaud(baud);
@@ -185,34 +265,67 @@ int main(int argc, char **argv)
     }
     ArRobotPacketReceiver rx(&line);
     /* the logs: temporaries beside their targets, renamed over them at the end */
-    rl_outfile logFile, arrivalsFile;
+    const char *paths[3] = {logPath, arrivalsPath, routeLogPath};
+    rl_outfile files[3];
+    FILE *fs[3] = {NULL, NULL, NULL};
     char err[1200];
-    if (logPath && rl_outfile_open(&logFile, logPath, err, sizeof err) != RL_OK) {
-        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
-        Aria::exit(1);
+    for (int i = 0; i < 3; i++) {
+        if (paths[i] && rl_outfile_open(&files[i], paths[i], err, sizeof err) != RL_OK) {
+            ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
+            while (i-- > 0)
+                if (paths[i])
+                    rl_outfile_abort(&files[i]);
+            Aria::exit(1);
+        }
+        fs[i] = paths[i] ? files[i].f : NULL;
     }
-    if (arrivalsPath && rl_outfile_open(&arrivalsFile, arrivalsPath, err, sizeof err) != RL_OK) {
-        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
-        if (logPath)
-            rl_outfile_abort(&logFile);
-        Aria::exit(1);
-    }
-    FILE *log = logPath ? logFile.f : NULL, *arrivals = arrivalsPath ? arrivalsFile.f : NULL;
-    RinglocFuser fuser(&robot, log);
+    FILE *log = fs[0], *arrivals = fs[1], *routeLog = fs[2];
+    RinglocFuser fuser(&robot, log, sim, frameFloor / 1000);
     if (!fuser.ok())
         Aria::exit(1);
     robot.runAsync(true);
     robot.lock();
     robot.enableMotors();
-    robot.setVel(vel);
-    robot.setRotVel(rotVel);
+    if (!routePath) {
+        robot.setVel(vel);
+        robot.setRotVel(rotVel);
+    }
     robot.unlock();
-    ArTime start;
-    while (robot.isRunning() && (drive <= 0 || start.secSince() < drive)) {
+    ArTime start, routeStart;
+    bool driving = !routePath, pushed = false;
+    unsigned long cut = 0;
+    while (robot.isRunning() && (drive <= 0 || start.secSince() < drive) && !(routePath && route.done())) {
         ArRobotPacket *p = rx.receivePacket(200);
+        double since = driving ? routeStart.mSecSince() / 1000.0 : -1;
         if (p != NULL && p->getID() == RL_PACKET_POSE) {
             ArTime now;
-            fuser.frame(p, secs(now), baud, arrivals);
+            if (cutAt >= 0 && since >= cutAt && since < cutAt + cutFor)
+                cut++; /* the cable cut: the frame never arrives */
+            else
+                fuser.frame(p, secs(now), baud, arrivals);
+        }
+        if (!driving && fuser.stats().applied >= 10) {
+            robot.lock();
+            route.start();
+            fuser.setWaypoint(0);
+            robot.unlock();
+            routeStart.setToNow();
+            driving = true;
+            ArLog::log(ArLog::Normal, "ringloc-aria-fuse: the route's %zu waypoints, on the fused pose", route.count());
+        }
+        if (routePath && driving) {
+            robot.lock();
+            if (route.step()) {
+                logReached(routeLog, route, route.reached(), secs(robot.getLastOdometryTime()) - clock_offset(),
+                           robot.getPose(), sim);
+                fuser.setWaypoint(route.done() ? -1 : (int)route.current());
+            }
+            robot.unlock();
+        }
+        if (sim && pushAt >= 0 && !pushed && since >= pushAt) {
+            pushed = true;
+            ArLog::log(ArLog::Normal, "ringloc-aria-fuse: pushing the robot by (%.0f mm, %.0f mm, %.0f deg)%s",
+                       pushBy.getX(), pushBy.getY(), pushBy.getTh(), sim->push(pushBy) ? "" : ": failed");
         }
     }
     robot.lock();
@@ -228,20 +341,24 @@ int main(int argc, char **argv)
                    p.x, p.y, p.yaw, 1000 * sqrt(p.cov[0][0] + p.cov[1][1]), aria.getX(), aria.getY(),
                    aria.getTh(), p.scale, p.turn);
     ArLog::log(ArLog::Normal, "ringloc-aria-fuse: %lu packets fused; frames: %lu applied, %lu rejected, "
-                              "%lu restarts, %lu too old, %lu out of order, %lu clock resets, %lu untimed",
+                              "%lu restarts, %lu too old, %lu out of order, %lu clock resets, %lu untimed, %lu cut",
                fuser.fused(), s.applied, s.rejected, s.recoveries, s.too_old, s.out_of_order, s.clock_resets,
-               s.untimed);
+               s.untimed, cut);
+    if (routePath)
+        ArLog::log(ArLog::Normal, "ringloc-aria-fuse: route: %zu of %zu waypoints reached", route.done() ? route.count()
+                   : route.current(), route.count());
+    if (simPoses)
+        ArLog::log(ArLog::Normal, "ringloc-aria-fuse: true poses streamed: %lu, dropped (the reader busy): %lu",
+                   sim->sent(), sim->dropped());
     robot.stopRunning();
     robot.waitForRunExit();
-    int rc = 0; /* a log that cannot be written whole leaves the old file as it was */
-    if (logPath && rl_outfile_commit(&logFile, err, sizeof err) != RL_OK) {
-        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
-        rc = 1;
-    }
-    if (arrivalsPath && rl_outfile_commit(&arrivalsFile, err, sizeof err) != RL_OK) {
-        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
-        rc = 1;
-    }
+    delete sim;
+    int rc = routePath && !route.done() ? 3 : 0; /* a log that cannot be written whole leaves the old file as it was */
+    for (int i = 0; i < 3; i++)
+        if (paths[i] && rl_outfile_commit(&files[i], err, sizeof err) != RL_OK) {
+            ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
+            rc = 1;
+        }
     Aria::exit(rc);
     return 0;
 }
