@@ -17,6 +17,12 @@
  * clock, the odometry's, for `ringloc fuse --arrivals`. Both are written
  * whole or not at all (rl_outfile: a temporary renamed over the target).
  *
+ * `make sim` (docs/sim.md) adds: a route of waypoints driven with
+ * ArActionGoto on the fused pose (-route, aria_route.cpp); with a simulator
+ * (AMRISim), its true pose at each packet ending the pose log's lines and
+ * streamed to ringloc-render (-simPoses, aria_sim.cpp), the frames cut for
+ * a while (-cutAt, -cutFor) and the robot pushed aside (-pushAt, -push).
+ *
  *   ringloc-aria-fuse -remoteHost localhost -remoteRobotTcpPort 8101 \
  *       -ringlocPort /dev/ttyUSB1 -drive 20 -vel 500 -rotVel 20 -poseLog poses.txt \
  *       -arrivalsLog arrivals.txt
@@ -56,7 +62,7 @@ static double clock_offset()
 class RinglocFuser
 {
 public:
-    RinglocFuser(ArRobot *robot, FILE *log, AriaSim *sim, double floorXY)
+    RinglocFuser(ArRobot *robot, FILE *log, AriaSim *sim, double floorXY, double floorYaw)
         : myRobot(robot), myLog(log), mySim(sim), myTask(this, &RinglocFuser::cycle)
     {
         myOffset = clock_offset();
@@ -65,8 +71,10 @@ public:
         cfg.track = 0.33;            /* a Pioneer 3-DX's wheel base; the filter learns the rest */
         cfg.wheel_noise = 0.0005;
         cfg.time_sigma = 0.002;      /* ArTime counts milliseconds */
-        if (floorXY > 0)             /* what the frames' sigmas leave out (the robot rocking) */
-            cfg.floor_xy = floorXY;
+        if (floorXY > 0)             /* what the frames' sigmas leave out (the robot rocking, */
+            cfg.floor_xy = floorXY;  /* a simulator's truth in whole mm and degrees) */
+        if (floorYaw > 0)
+            cfg.floor_yaw = floorYaw;
         /* 2.5 s of ARIA's 10 server information packets a second */
         myOk = rl_fuse_init(&myFuse, &cfg, myHist, rl_fuse_history_count(2.5, 10)) == RL_OK;
         myFused = 0;
@@ -206,7 +214,7 @@ int main(int argc, char **argv)
     const char *port = "/dev/ttyUSB1", *logPath = NULL, *arrivalsPath = NULL, *simPoses = NULL, *routePath = NULL,
                *routeLogPath = NULL, *pushArg = NULL;
     int baud = 115200;
-    double drive = 0, vel = 0, rotVel = 0, frameFloor = 0, closeDist = 20, routeVel = 400, cutAt = -1, cutFor = 3, pushAt = -1;
+    double drive = 0, vel = 0, rotVel = 0, frameFloor = 0, frameFloorYaw = 0, closeDist = 20, routeVel = 400, cutAt = -1, cutFor = 3, pushAt = -1;
     ArPose pushBy;
     if (!parser.checkParameterArgumentString("-ringlocPort", &port) ||
         !parser.checkParameterArgumentInteger("-ringlocBaud", &baud) ||
@@ -216,6 +224,7 @@ int main(int argc, char **argv)
         !parser.checkParameterArgumentString("-poseLog", &logPath) ||
         !parser.checkParameterArgumentString("-arrivalsLog", &arrivalsPath) ||
         !parser.checkParameterArgumentDouble("-frameFloor", &frameFloor) ||
+        !parser.checkParameterArgumentDouble("-frameFloorYaw", &frameFloorYaw) ||
         !parser.checkParameterArgumentString("-simPoses", &simPoses) ||
         !parser.checkParameterArgumentString("-route", &routePath) ||
         !parser.checkParameterArgumentString("-routeLog", &routeLogPath) ||
@@ -229,10 +238,11 @@ int main(int argc, char **argv)
         ArLog::log(ArLog::Terse,
                    "usage: ringloc-aria-fuse [ARIA's robot options] [-ringlocPort /dev/ttyUSB1] [-ringlocBaud 115200]\n"
                    "         [-drive SECONDS -vel MM/S -rotVel DEG/S] [-poseLog FILE] [-arrivalsLog FILE]\n"
-                   "         [-frameFloor MM] [-route FILE [-routeLog FILE] [-closeDist 20] [-routeVel 400]]\n"
+                   "         [-frameFloor MM] [-frameFloorYaw DEG] [-route FILE [-routeLog FILE] [-closeDist 20] [-routeVel 400]]\n"
                    "         [-simPoses FIFO] [-cutAt S [-cutFor 3]] [-pushAt S -push DX,DY,DTH]\n"
                    "  -frameFloor MM  added in quadrature to every frame's position sigma (rl_fuse's\n"
                    "                  floor_xy, default 0.5): what the frames' own sigmas leave out\n"
+                   "  -frameFloorYaw DEG  the same for the heading (floor_yaw, default 0.03)\n"
                    "  -route FILE     drive to each waypoint ('X Y' a line, m) with ArActionGoto on the\n"
                    "                  fused pose (close enough: -closeDist mm; at most -routeVel mm/s), once\n"
                    "                  ten frames are applied; -drive is then the time limit\n"
@@ -280,7 +290,7 @@ int main(int argc, char **argv)
         fs[i] = paths[i] ? files[i].f : NULL;
     }
     FILE *log = fs[0], *arrivals = fs[1], *routeLog = fs[2];
-    RinglocFuser fuser(&robot, log, sim, frameFloor / 1000);
+    RinglocFuser fuser(&robot, log, sim, frameFloor / 1000, ArMath::degToRad(frameFloorYaw));
     if (!fuser.ok())
         Aria::exit(1);
     robot.runAsync(true);

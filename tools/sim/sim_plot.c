@@ -40,6 +40,7 @@ static void draw_map(cairo_t *cr, const sim_run *r)
     s.y0 = MAP_H / 2.0 + 20 + k * (y0 + y1) / 2;
     cairo_set_line_width(cr, 6);
     cairo_set_source_rgb(cr, 0.78, 0.78, 0.78);
+    cairo_new_path(cr); /* show_text leaves a current point */
     for (i = 0; i < r->n; i++)
         cairo_line_to(cr, s.x0 + s.sx * r->tick[i].tx, s.y0 + s.sy * r->tick[i].ty);
     cairo_stroke(cr);
@@ -51,6 +52,7 @@ static void draw_map(cairo_t *cr, const sim_run *r)
     cairo_set_source_rgb(cr, 0.85, 0.3, 0.1);
     for (i = 0; i < r->nreached; i++) {
         char n[16];
+        cairo_new_path(cr);
         cairo_arc(cr, s.x0 + s.sx * r->reached[i].gx, s.y0 + s.sy * r->reached[i].gy, 5, 0, 2 * M_PI);
         cairo_stroke(cr);
         snprintf(n, sizeof n, "%d", r->reached[i].i);
@@ -85,10 +87,12 @@ static void draw_errors(cairo_t *cr, const sim_run *r, double top)
         cairo_stroke(cr);
     }
     cairo_set_source_rgb(cr, 0.6, 0.6, 0.6); /* 5 mm */
+    cairo_new_path(cr);
     cairo_move_to(cr, M, s.y0 + s.sy * 5);
     cairo_line_to(cr, W - M, s.y0 + s.sy * 5);
     cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0.1, 0.2, 0.75);
+    cairo_new_path(cr);
     for (i = 0; i < r->n; i++)
         if (r->tick[i].t >= r->start)
             cairo_line_to(cr, s.x0 + s.sx * (r->tick[i].t - r->start),
@@ -98,7 +102,7 @@ static void draw_errors(cairo_t *cr, const sim_run *r, double top)
     cairo_rectangle(cr, M, top, W - 2 * M, ERR_H);
     cairo_stroke(cr);
     snprintf(l, sizeof l, "fused pose's error at each control tick, 0 .. %.0f mm (grey line: 5 mm), "
-             "0 .. %.0f s of the route", lim, t1);
+             "0 .. %.0f s of the route (simulated)", lim, t1 / r->slow);
     text(cr, M + 4, top + 14, l, 0.2);
 }
 

@@ -14,6 +14,7 @@ void sim_report_defaults(sim_run *r)
     r->cut_for = 3;
     r->recovered_mm = 10;
     r->recovery_s = -1;
+    r->slow = 1;
 }
 
 /* grow *buf (n elements of size sz, capacity *cap) by one; NULL if out of memory */
@@ -29,71 +30,61 @@ static void *grow(void *buf, size_t n, size_t *cap, size_t sz)
     return b;
 }
 
-static int load_ticks(sim_run *r, const char *path, char *err, size_t errlen)
+/* one line into r; 0 if it is not one */
+typedef int (*take_line)(sim_run *r, const char *line, size_t *cap);
+
+static int take_tick(sim_run *r, const char *line, size_t *cap)
 {
-    FILE *f = fopen(path, "r");
-    char line[512];
-    size_t cap = 0;
-    int no = 0;
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot read", path);
+    sim_tick k;
+    if (sscanf(line, "%lf %lf %lf %lf %lf %lf %lf %lf %lf %lf %lf %d", &k.t, &k.fx, &k.fy, &k.fyaw, &k.ax, &k.ay,
+               &k.ayaw, &k.sigma, &k.tx, &k.ty, &k.tyaw, &k.wp) != 12)
+        return 0;
+    if (!(r->tick = grow(r->tick, r->n, cap, sizeof *r->tick)))
         return -1;
-    }
-    while (fgets(line, sizeof line, f)) {
-        sim_tick k;
-        no++;
-        if (sscanf(line, "%lf %lf %lf %lf %lf %lf %lf %lf %lf %lf %lf %d", &k.t, &k.fx, &k.fy, &k.fyaw, &k.ax, &k.ay,
-                   &k.ayaw, &k.sigma, &k.tx, &k.ty, &k.tyaw, &k.wp) != 12) {
-            snprintf(err, errlen, "%s:%d: not 't fx fy fyaw ax ay ayaw sigma tx ty tyaw wp' (a simulator's pose log)",
-                     path, no);
-            fclose(f);
-            return -1;
-        }
-        if (!(r->tick = grow(r->tick, r->n, &cap, sizeof *r->tick))) {
-            snprintf(err, errlen, "%s: out of memory", path);
-            fclose(f);
-            return -1;
-        }
-        r->tick[r->n++] = k;
-    }
-    fclose(f);
-    return 0;
+    r->tick[r->n++] = k;
+    return 1;
 }
 
-static int load_reached(sim_run *r, const char *path, char *err, size_t errlen)
+static int take_reached(sim_run *r, const char *line, size_t *cap)
+{
+    sim_reached w;
+    if (sscanf(line, "%d %lf %lf %lf %lf %lf %lf %lf", &w.i, &w.gx, &w.gy, &w.t, &w.ax, &w.ay, &w.tx, &w.ty) != 8)
+        return 0;
+    if (!(r->reached = grow(r->reached, r->nreached, cap, sizeof *r->reached)))
+        return -1;
+    r->reached[r->nreached++] = w;
+    return 1;
+}
+
+/* every line of path through take; `what` names the expected line */
+static int load(sim_run *r, const char *path, take_line take, const char *what, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "r");
     char line[512];
     size_t cap = 0;
-    int no = 0;
+    int no = 0, got = 1;
     if (!f) {
         snprintf(err, errlen, "%s: cannot read", path);
         return -1;
     }
-    while (fgets(line, sizeof line, f)) {
-        sim_reached w;
+    while (got > 0 && fgets(line, sizeof line, f)) {
         no++;
-        if (sscanf(line, "%d %lf %lf %lf %lf %lf %lf %lf", &w.i, &w.gx, &w.gy, &w.t, &w.ax, &w.ay, &w.tx, &w.ty) != 8) {
-            snprintf(err, errlen, "%s:%d: not 'i gx gy t ax ay tx ty' (a route log)", path, no);
-            fclose(f);
-            return -1;
-        }
-        if (!(r->reached = grow(r->reached, r->nreached, &cap, sizeof *r->reached))) {
-            snprintf(err, errlen, "%s: out of memory", path);
-            fclose(f);
-            return -1;
-        }
-        r->reached[r->nreached++] = w;
+        got = take(r, line, &cap);
     }
     fclose(f);
-    return 0;
+    if (got == 0)
+        snprintf(err, errlen, "%s:%d: not %s", path, no, what);
+    else if (got < 0)
+        snprintf(err, errlen, "%s: out of memory", path);
+    return got > 0 ? 0 : -1;
 }
 
 int sim_report_load(sim_run *r, const char *poses, const char *route, char *err, size_t errlen)
 {
-    if (load_ticks(r, poses, err, errlen) || (route && load_reached(r, route, err, errlen)))
+    if (load(r, poses, take_tick, "'t fx fy fyaw ax ay ayaw sigma tx ty tyaw wp' (a simulator's pose log)", err,
+             errlen))
         return -1;
-    return 0;
+    return route ? load(r, route, take_reached, "'i gx gy t ax ay tx ty' (a route log)", err, errlen) : 0;
 }
 
 double sim_report_error_mm(const sim_tick *k)
@@ -155,7 +146,7 @@ void sim_report_judge(sim_run *r)
         double since = k->t - r->start, d = sim_report_error_mm(k), dy = sim_report_yaw_error_deg(k);
         if (!started || since < 0 || k->t > end)
             continue;
-        if (r->cut_at >= 0 && since >= r->cut_at && since < r->cut_at + r->cut_for + 2)
+        if (r->cut_at >= 0 && since >= r->cut_at && since < r->cut_at + r->cut_for + 2 * r->slow)
             r->cut_max_mm = fmax(r->cut_max_mm, d);
         if (r->push_at >= 0 && since >= r->push_at &&
             (r->recovery_s < 0 || since < r->push_at + r->recovery_s)) {

@@ -33,8 +33,9 @@ typedef struct {
 } sim_reached;
 
 typedef struct {
-    /* in: the disturbances, in s after the route's start (< 0: none) */
+    /* in: the disturbances, in s of the log's clock after the route's start (< 0: none) */
     double cut_at, cut_for, push_at;
+    double slow;           /* the simulation ran this many times slower than the log's clock (1) */
     double recovered_mm;   /* the error under which the pose counts as recovered (10 mm) */
     /* loaded */
     sim_tick *tick;
@@ -46,7 +47,7 @@ typedef struct {
     size_t judged;         /* ticks judged */
     double rms_mm, p95_mm, max_mm, yaw_rms_deg, max_yaw_deg;
     double worst_waypoint_mm;  /* the truth's distance to its waypoint, the worst */
-    double cut_max_mm;     /* during the cut and 2 s after it */
+    double cut_max_mm;     /* during the cut and 2 simulated s after it */
     double recovery_s;     /* after the push: until the error stays under recovered_mm (-1: never) */
     size_t excluded;       /* ticks left out of the RMS: the push to its recovery */
 } sim_run;
