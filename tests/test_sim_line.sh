@@ -23,12 +23,13 @@ cat aria.tty > got.bin &
 CP=$!
 sleep 0.2
 # packet 1 (payload 01 02 03 04), stray bytes, a bad checksum, packet 2 (05 06 07 08)
-printf '\372\373\006\001\002\003\004\004\006\000\021\372\373\006\001\001\001\001\000\000\372\373\006\005\006\007\010\014\016' \
-    > fw.tty || fail "write to fw.tty"
-printf '\372\373\006\001\002\003\004\004\006\372\373\006\005\006\007\010\014\016' > want.bin
+P1='\372\373\006\001\002\003\004\004\006' P2='\372\373\006\005\006\007\010\014\016'
+printf "$P1"'\000\021\372\373\006\001\001\001\001\000\000'"$P2" > fw.tty || fail "write to fw.tty"
+printf "$P1$P2" > want.bin
 i=0
 until cmp -s got.bin want.bin; do
-    i=$((i + 1)); [ $i -lt 100 ] || { od -An -tx1 got.bin; kill "$CP"; fail "the controller's side did not get the two packets"; }
+    i=$((i + 1))
+    [ $i -lt 100 ] || { od -An -tx1 got.bin; kill "$CP"; fail "the controller's side did not get the two packets"; }
     sleep 0.05
 done
 kill "$LP" && wait "$LP" || fail "ringloc-sim-line did not end on SIGTERM"

@@ -103,8 +103,9 @@ public:
         myRobot->moveTo(ArPose(p.x * 1000, p.y * 1000, ArMath::radToDeg(p.yaw)), myRobot->getPose());
         myFused++;
         if (myLog)
-            fprintf(myLog, "%.4f %.5f %.5f %.5f %.5f %.5f %.5f %.6f", t - myOffset, p.x, p.y, p.yaw, myRobot->getX() / 1000,
-                    myRobot->getY() / 1000, ArMath::degToRad(myRobot->getTh()), sqrt(p.cov[0][0] + p.cov[1][1]));
+            fprintf(myLog, "%.4f %.5f %.5f %.5f %.5f %.5f %.5f %.6f", t - myOffset, p.x, p.y, p.yaw,
+                    myRobot->getX() / 1000, myRobot->getY() / 1000, ArMath::degToRad(myRobot->getTh()),
+                    sqrt(p.cov[0][0] + p.cov[1][1]));
         if (myLog && simulated)
             fprintf(myLog, " %.3f %.3f %.6f %d\n", truth.getX() / 1000, truth.getY() / 1000,
                     ArMath::degToRad(truth.getTh()), myWaypoint);
@@ -214,7 +215,8 @@ int main(int argc, char **argv)
     const char *port = "/dev/ttyUSB1", *logPath = NULL, *arrivalsPath = NULL, *simPoses = NULL, *routePath = NULL,
                *routeLogPath = NULL, *pushArg = NULL;
     int baud = 115200;
-    double drive = 0, vel = 0, rotVel = 0, frameFloor = 0, frameFloorYaw = 0, closeDist = 20, routeVel = 400, cutAt = -1, cutFor = 3, pushAt = -1;
+    double drive = 0, vel = 0, rotVel = 0, frameFloor = 0, frameFloorYaw = 0;
+    double closeDist = 20, routeVel = 400, cutAt = -1, cutFor = 3, pushAt = -1;
     ArPose pushBy;
     if (!parser.checkParameterArgumentString("-ringlocPort", &port) ||
         !parser.checkParameterArgumentInteger("-ringlocBaud", &baud) ||
@@ -238,7 +240,8 @@ int main(int argc, char **argv)
         ArLog::log(ArLog::Terse,
                    "usage: ringloc-aria-fuse [ARIA's robot options] [-ringlocPort /dev/ttyUSB1] [-ringlocBaud 115200]\n"
                    "         [-drive SECONDS -vel MM/S -rotVel DEG/S] [-poseLog FILE] [-arrivalsLog FILE]\n"
-                   "         [-frameFloor MM] [-frameFloorYaw DEG] [-route FILE [-routeLog FILE] [-closeDist 20] [-routeVel 400]]\n"
+                   "         [-frameFloor MM] [-frameFloorYaw DEG]\n"
+                   "         [-route FILE [-routeLog FILE] [-closeDist 20] [-routeVel 400]]\n"
                    "         [-simPoses FIFO] [-cutAt S [-cutFor 3]] [-pushAt S -push DX,DY,DTH]\n"
                    "  -frameFloor MM  added in quadrature to every frame's position sigma (rl_fuse's\n"
                    "                  floor_xy, default 0.5): what the frames' own sigmas leave out\n"

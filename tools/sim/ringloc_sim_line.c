@@ -141,8 +141,8 @@ int main(int argc, char **argv)
     run(&l);
     rl_ptylink_close(&l.from);
     rl_ptylink_close(&l.to);
-    fprintf(stderr, P ": %lu frames in, %lu passed, %lu dropped, %lu with a bad count or checksum skipped\n", l.frames, l.q.sent,
-            l.q.dropped, l.rd.bad);
+    fprintf(stderr, P ": %lu frames in, %lu passed, %lu dropped, %lu with a bad count or checksum skipped\n",
+            l.frames, l.q.sent, l.q.dropped, l.rd.bad);
     if (record && rl_outfile_commit(&rec, err, sizeof err) != RL_OK)
         return rl_cli_fail(NULL, RL_EXIT_FAIL, "%s", err);
     return 0;

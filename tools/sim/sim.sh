@@ -22,7 +22,7 @@ BUILD=$(cd "$1" && pwd) || exit 2
 OUT=$2
 shift 2
 CUT= PUSH= SLOW=4 SECONDS_MAX=900 PORT=${SIM_PORT:-8141}
-CUT_AT=30 PUSH_AT=60 PUSH_BY=200,-150,8
+CUT_AT=30 PUSH_AT=52 PUSH_BY=200,-150,8
 while [ $# -gt 0 ]; do
     case $1 in
     --cut) CUT=1 ;;
@@ -151,9 +151,10 @@ mkfifo poses.fifo st/frames || { stop_all; exit 1; }
 "$RENDER" --out st --path stream --site-map site.yaml --mount $MOUNT --rock $ROCK --newest \
     < poses.fifo > st/frames 2> render.log &
 PIDS="$! $PIDS"
-# the serial line: 115200 baud and up to 50 simulated ms (50 K real ms) more,
+# the serial line: 115200 baud and up to 50 ms more of the wall clock (the
+# clock every program runs on; 12.5 simulated ms of the robot's motion),
 # outside the frames' latency field (a USB adapter, a loaded controller)
-"$LINE" --from fw.tty --to aria.tty --baud 115200 --transport "$(awk "BEGIN { print 0.05 * $SLOW }")" \
+"$LINE" --from fw.tty --to aria.tty --baud 115200 --transport "${SIM_TRANSPORT:-0.05}" \
     --record line.bin 2> line.log &
 PIDS="$! $PIDS"
 i=0

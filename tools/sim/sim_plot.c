@@ -68,9 +68,7 @@ static void draw_errors(cairo_t *cr, const sim_run *r, double top)
     scale s;
     size_t i;
     char l[128];
-    for (i = 0; i < r->n; i++)
-        if (r->tick[i].t >= r->start)
-            lim = fmax(lim, fmin(60, sim_report_error_mm(&r->tick[i]) * 1.1));
+    lim = fmax(lim, 1.3 * r->max_mm); /* the push's errors above it are clipped */
     s.x0 = M;
     s.sx = (W - 2 * M) / fmax(t1, 1);
     s.y0 = bottom;
