@@ -48,11 +48,13 @@ sim: deps
 	cmake --build $(BUILD) -j $(JOBS) --target ringloc ringloc-render ringloc-fw ringloc-sim-line ringloc-sim-report
 	@if grep -q '^ARIA_LIBRARY:FILEPATH=.*Aria' $(BUILD)/CMakeCache.txt; then \
 	  cmake --build $(BUILD) -j $(JOBS) --target ringloc-aria-fuse; fi
-	@for run in $(SIM_RUNS); do \
+	@rc=0; for run in $(SIM_RUNS); do \
 	  case $$run in clean) a= ;; disturbed) a="--cut --push" ;; \
 	  *) echo "make sim: SIM_RUNS: '$$run' is neither clean nor disturbed" >&2; exit 2 ;; esac; \
-	  AMRISIM=$(if $(AMRISIM),$(abspath $(AMRISIM))) sh tools/sim/sim.sh $(BUILD) $(SIM_DIR)/$$run $$a || exit $$?; \
-	done
+	  echo "make sim: the $$run run, into $(SIM_DIR)/$$run"; \
+	  AMRISIM=$(if $(AMRISIM),$(abspath $(AMRISIM))) sh tools/sim/sim.sh $(BUILD) $(SIM_DIR)/$$run $$a; \
+	  r=$$?; [ $$r = 2 ] && exit 2; [ $$r = 0 ] || rc=$$r; \
+	done; exit $$rc
 
 SOAK_FRAMES ?= 200000
 SOAK_DIR    ?= $(BUILD)/soak

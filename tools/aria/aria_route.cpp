@@ -4,7 +4,8 @@
 #include <cstring>
 
 AriaRoute::AriaRoute(ArRobot *robot, double closeDist, double speed)
-    : myRobot(robot), myGoto("ringloc route", ArPose(0, 0, 0), closeDist, speed), myCur(0)
+    : myRobot(robot), myGoto("ringloc route", ArPose(0, 0, 0), closeDist, speed), myTask(this, &AriaRoute::step),
+      myCur(0), myTaken(0)
 {
 }
 
@@ -47,14 +48,40 @@ void AriaRoute::start()
     myRobot->clearDirectMotion();
     myRobot->addAction(&myGoto, 50);
     myGoto.setGoal(myGoals[0]);
+    myRobot->addUserTask("ringloc route", 50, &myTask);
 }
 
-bool AriaRoute::step()
+void AriaRoute::step()
 {
-    if (done() || !myGoto.haveAchievedGoal())
-        return false;
+    ArScopedLock l(myMutex);
+    if (myCur >= myGoals.size() || !myGoto.haveAchievedGoal())
+        return;
+    Reached r = {myCur, (double)myRobot->getLastOdometryTime().getSecLL() +
+                            (double)myRobot->getLastOdometryTime().getMSecLL() / 1000.0,
+                 myRobot->getPose()};
+    myReached.push_back(r);
     myCur++;
-    if (!done())
+    if (myCur < myGoals.size())
         myGoto.setGoal(myGoals[myCur]);
+}
+
+bool AriaRoute::takeReached(Reached *r)
+{
+    ArScopedLock l(myMutex);
+    if (myTaken >= myReached.size())
+        return false;
+    *r = myReached[myTaken++];
     return true;
+}
+
+bool AriaRoute::done()
+{
+    ArScopedLock l(myMutex);
+    return myCur >= myGoals.size() && myTaken >= myReached.size();
+}
+
+size_t AriaRoute::current()
+{
+    ArScopedLock l(myMutex);
+    return myCur;
 }

@@ -5,9 +5,14 @@
  *
  *   AriaRoute route(&robot, 20, 400);   // close enough at 20 mm, at most 400 mm/s
  *   if (!route.load("route.txt")) ...    // one line logged naming file and line
- *   route.start();                       // robot locked
+ *   route.start();                       // robot locked: goto, and a task that steps the route
+ *   AriaRoute::Reached r;
  *   while (!route.done())
- *       if (route.step()) use(route.reached()); // robot locked: the waypoint just reached */
+ *       if (route.takeReached(&r)) use(r.index, r.t, r.pose); // the robot not locked
+ *
+ * The route is stepped in the robot's thread (a user task), so that the
+ * caller's thread never waits for the robot's lock (a reader that stamps
+ * arrivals must not). */
 #ifndef ARIA_ROUTE_H
 #define ARIA_ROUTE_H
 
@@ -21,20 +26,30 @@ public:
     bool load(const char *path);
     size_t count() const { return myGoals.size(); }
     void start();
-    /* robot locked: true when the current waypoint has just been reached
-     * (the next one is set); reached() is its index */
-    bool step();
-    size_t reached() const { return myCur - 1; }
-    bool done() const { return myCur >= myGoals.size(); }
-    /* the waypoint being driven to (the last one when done) */
-    size_t current() const { return myCur; }
+
+    /* a waypoint reached: its index, the odometry's time then (ArTime s)
+     * and ARIA's pose */
+    struct Reached {
+        size_t index;
+        double t;
+        ArPose pose;
+    };
+    /* the oldest waypoint reached not yet taken; false if none */
+    bool takeReached(Reached *r);
+    bool done();
+    /* the waypoint being driven to (count() when done) */
+    size_t current();
     ArPose goal(size_t i) const { return myGoals[i]; }
 
 private:
+    void step(); /* the robot's thread, robot locked */
     ArRobot *myRobot;
     ArActionGoto myGoto;
+    ArFunctorC<AriaRoute> myTask;
     std::vector<ArPose> myGoals;
-    size_t myCur;
+    std::vector<Reached> myReached;
+    size_t myCur, myTaken;
+    ArMutex myMutex;
 };
 
 #endif

@@ -63,7 +63,7 @@ class RinglocFuser
 {
 public:
     RinglocFuser(ArRobot *robot, FILE *log, AriaSim *sim, double floorXY, double floorYaw)
-        : myRobot(robot), myLog(log), mySim(sim), myTask(this, &RinglocFuser::cycle)
+        : myRobot(robot), myLog(log), mySim(sim), myShared(false), myTask(this, &RinglocFuser::cycle)
     {
         myOffset = clock_offset();
         rl_fuse_config cfg;
@@ -113,6 +113,11 @@ public:
             fputc('\n', myLog);
     }
 
+    /* the camera board's time_ms is this machine's CLOCK_MONOTONIC (ringloc-fw
+     * beside this program, as in make sim): each capture time is known, the
+     * board's clock is not learned from the arrivals */
+    void setSharedClock(bool shared) { myShared = shared; }
+
     /* the waypoint being driven to, for the log (-1: none) */
     void setWaypoint(int i) { myWaypoint = i; }
 
@@ -131,8 +136,14 @@ public:
             return;
         if (arrivals)
             fprintf(arrivals, "%u %.6f\n", (unsigned)m.seq, arrival);
+        rl_fuse_frame fr;
+        if (myShared) {
+            rl_fuse_frame_from_msg(&m, 0, 0, &fr);
+            fr.t = m.time_ms / 1000.0 + myOffset; /* on ArTime's clock */
+            fr.st = 0.0005;                        /* time_ms counts milliseconds */
+        }
         myMutex.lock();
-        if (rl_fuse_msg_add(&myFuse, &m, arrival, baud) != RL_OK) {
+        if ((myShared ? rl_fuse_frame_add(&myFuse, &fr) : rl_fuse_msg_add(&myFuse, &m, arrival, baud)) != RL_OK) {
             rl_fuse_event ev; /* rejected, too old, waiting for the board's clock: */
             rl_fuse_last_event(&myFuse, &ev);  /* counted in the stats */
             if (ev.fate == RL_FUSE_REJECTED)
@@ -165,6 +176,7 @@ private:
     ArRobot *myRobot;
     FILE *myLog;
     AriaSim *mySim;
+    bool myShared;
     int myWaypoint;
     ArFunctorC<RinglocFuser> myTask;
     ArMutex myMutex;
@@ -217,6 +229,7 @@ int main(int argc, char **argv)
     int baud = 115200;
     double drive = 0, vel = 0, rotVel = 0, frameFloor = 0, frameFloorYaw = 0;
     double closeDist = 20, routeVel = 400, cutAt = -1, cutFor = 3, pushAt = -1;
+    bool sharedClock = false;
     ArPose pushBy;
     if (!parser.checkParameterArgumentString("-ringlocPort", &port) ||
         !parser.checkParameterArgumentInteger("-ringlocBaud", &baud) ||
@@ -228,6 +241,7 @@ int main(int argc, char **argv)
         !parser.checkParameterArgumentDouble("-frameFloor", &frameFloor) ||
         !parser.checkParameterArgumentDouble("-frameFloorYaw", &frameFloorYaw) ||
         !parser.checkParameterArgumentString("-simPoses", &simPoses) ||
+        !parser.checkParameterArgumentBool("-sharedClock", &sharedClock) ||
         !parser.checkParameterArgumentString("-route", &routePath) ||
         !parser.checkParameterArgumentString("-routeLog", &routeLogPath) ||
         !parser.checkParameterArgumentDouble("-closeDist", &closeDist) ||
@@ -243,6 +257,7 @@ int main(int argc, char **argv)
                    "         [-frameFloor MM] [-frameFloorYaw DEG]\n"
                    "         [-route FILE [-routeLog FILE] [-closeDist 20] [-routeVel 400]]\n"
                    "         [-simPoses FIFO] [-cutAt S [-cutFor 3]] [-pushAt S -push DX,DY,DTH]\n"
+                   "         [-sharedClock true]\n"
                    "  -frameFloor MM  added in quadrature to every frame's position sigma (rl_fuse's\n"
                    "                  floor_xy, default 0.5): what the frames' own sigmas leave out\n"
                    "  -frameFloorYaw DEG  the same for the heading (floor_yaw, default 0.03)\n"
@@ -250,11 +265,13 @@ int main(int argc, char **argv)
                    "                  fused pose (close enough: -closeDist mm; at most -routeVel mm/s), once\n"
                    "                  ten frames are applied; -drive is then the time limit\n"
                    "  -routeLog FILE  per waypoint reached: 'i goal_x goal_y t ariaX ariaY trueX trueY'\n"
-                   "  a simulator (AMRISim, MobileSim): its true pose (SIM_STAT) ends each -poseLog line\n"
-                   "                  ('trueX trueY trueYaw waypoint'; whole mm and degrees)\n"
-                   "  -simPoses FIFO  and goes to ringloc-render --path stream as 'T_US X Y YAW' lines\n"
+                   "  -simPoses FIFO  a simulator's (AMRISim's) true pose at each packet (SIM_STAT) as\n"
+                   "                  'T_US X Y YAW' lines for ringloc-render --path stream; each -poseLog\n"
+                   "                  line then ends with 'trueX trueY trueYaw waypoint' (whole mm, degrees)\n"
                    "  -cutAt S        ringloc's frames dropped from S s after the route's start, -cutFor s\n"
-                   "  -pushAt S       the simulated robot set aside by -push mm,mm,degrees at S s (SIM_SET_POSE)");
+                   "  -pushAt S       the simulated robot set aside by -push mm,mm,degrees at S s (SIM_SET_POSE)\n"
+                   "  -sharedClock true  the frames' time_ms is this machine's CLOCK_MONOTONIC (ringloc-fw\n"
+                   "                  on it): capture times taken as they are, not learned from arrivals");
         Aria::logOptions();
         Aria::exit(2);
     }
@@ -296,6 +313,7 @@ int main(int argc, char **argv)
     RinglocFuser fuser(&robot, log, sim, frameFloor / 1000, ArMath::degToRad(frameFloorYaw));
     if (!fuser.ok())
         Aria::exit(1);
+    fuser.setSharedClock(sharedClock);
     robot.runAsync(true);
     robot.lock();
     robot.enableMotors();
@@ -326,14 +344,10 @@ int main(int argc, char **argv)
             driving = true;
             ArLog::log(ArLog::Normal, "ringloc-aria-fuse: the route's %zu waypoints, on the fused pose", route.count());
         }
-        if (routePath && driving) {
-            robot.lock();
-            if (route.step()) {
-                logReached(routeLog, route, route.reached(), secs(robot.getLastOdometryTime()) - clock_offset(),
-                           robot.getPose(), sim);
-                fuser.setWaypoint(route.done() ? -1 : (int)route.current());
-            }
-            robot.unlock();
+        AriaRoute::Reached reached; /* the route steps in the robot's thread: no wait for its lock here */
+        while (routePath && driving && route.takeReached(&reached)) {
+            logReached(routeLog, route, reached.index, reached.t - clock_offset(), reached.pose, sim);
+            fuser.setWaypoint(route.current() < route.count() ? (int)route.current() : -1);
         }
         if (sim && pushAt >= 0 && !pushed && since >= pushAt) {
             pushed = true;
@@ -358,8 +372,8 @@ int main(int argc, char **argv)
                fuser.fused(), s.applied, s.rejected, s.recoveries, s.too_old, s.out_of_order, s.clock_resets,
                s.untimed, cut);
     if (routePath)
-        ArLog::log(ArLog::Normal, "ringloc-aria-fuse: route: %zu of %zu waypoints reached", route.done() ? route.count()
-                   : route.current(), route.count());
+        ArLog::log(ArLog::Normal, "ringloc-aria-fuse: route: %zu of %zu waypoints reached", route.current(),
+                   route.count());
     if (simPoses)
         ArLog::log(ArLog::Normal, "ringloc-aria-fuse: true poses streamed: %lu, dropped (the reader busy): %lu",
                    sim->sent(), sim->dropped());

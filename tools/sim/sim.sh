@@ -167,6 +167,9 @@ PIDS="$! $PIDS"
 # the disturbances, in simulated seconds after the route's start (the ARIA
 # example counts in its own, K times as many)
 OPTS= JUDGE=
+# SIM_SHARED_CLOCK=1: the ARIA example takes each frame's capture time as it
+# is (ringloc-fw runs on the same clock) instead of learning the board's clock
+[ -n "${SIM_SHARED_CLOCK:-}" ] && OPTS="-sharedClock true"
 [ -n "$CUT" ] && OPTS="$OPTS -cutAt $((CUT_AT * SLOW)) -cutFor $((3 * SLOW))" JUDGE="$JUDGE --cut-at $CUT_AT --cut-for 3"
 [ -n "$PUSH" ] && OPTS="$OPTS -pushAt $((PUSH_AT * SLOW)) -push $PUSH_BY" JUDGE="$JUDGE --push-at $PUSH_AT"
 "$ARIA" -remoteHost 127.0.0.1 -remoteRobotTcpPort $PORT -ringlocPort aria.tty -simPoses poses.fifo \
@@ -175,7 +178,10 @@ OPTS= JUDGE=
 RC=$?
 stop_all
 grep "ringloc-aria-fuse:" aria.log
+[ $RC = 0 ] || { tail -n 20 aria.log; echo "make sim: ringloc-aria-fuse failed ($RC; aria.log)" >&2; exit $RC; }
 "$REPORT" --poses poses.log --route route.log --plot sim.png --slow $SLOW $JUDGE \
-    --title "make sim: AMRISim's Pioneer 3-DX driven on ringloc's fused pose${CUT:+, frames cut 3 s}${PUSH:+, pushed}" |
-    tee report.txt
+    --title "make sim: AMRISim's Pioneer 3-DX driven on ringloc's fused pose${CUT:+, frames cut 3 s}${PUSH:+, pushed}" \
+    > report.txt
+RC=$?
+cat report.txt
 exit $RC
