@@ -16,6 +16,10 @@
 #                        MSan on those without libpng and libyaml
 #   make soak [SOAK_FRAMES=200000]  the firmware's loop for a long run, its serial line
 #                        vanishing every few seconds: heap calls, RSS, frames after reopening
+#   make sim ARIA_DIR=DIR AMRISIM=DIR [SIM_RUNS="clean disturbed"]  ringloc steering AMRISim's
+#                        simulated Pioneer 3-DX round a route on its fused pose, judged against
+#                        the simulator's truth (docs/sim.md; not in CI: AriaCoda and AMRISim are
+#                        built outside this tree, and it says how when they are missing)
 #   make cross BOARD=rpi4                 cross build for a board, tests under qemu
 #   make package BOARD=rpi4               the board's .deb (build-rpi4/package/)
 #   make flash BOARD=rpi4 TARGET=pi@robot [DRY_RUN=1]  install it over ssh
@@ -26,7 +30,31 @@ BUILD_ASAN ?= build-asan
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 
-.PHONY: all deps host host-test host-test-asan bench bench-real demo fuzz soak clean
+.PHONY: all deps host host-test host-test-asan bench bench-real demo fuzz soak sim clean
+
+# `make sim` (issue 42, tools/sim/sim.sh): one run per word of SIM_RUNS, into
+# SIM_DIR/WORD: clean (the route as it is), disturbed (ringloc's frames cut
+# for 3 s in the middle, the robot pushed aside). The ARIA example is built
+# where the build folder is configured with ARIA_DIR.
+SIM_DIR  ?= $(BUILD)/sim
+SIM_RUNS ?= clean disturbed
+AMRISIM  ?=
+ARIA_DIR ?=
+
+sim: deps
+	@if [ -n "$(ARIA_DIR)" ]; then cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DARIA_DIR=$(abspath $(ARIA_DIR)) $(CMAKE_ARGS) > /dev/null; \
+	  else $(MAKE) --no-print-directory $(BUILD)/CMakeCache.txt; fi
+	cmake --build $(BUILD) -j $(JOBS) --target ringloc ringloc-render ringloc-fw ringloc-sim-line ringloc-sim-report
+	@if grep -q '^ARIA_LIBRARY:FILEPATH=.*Aria' $(BUILD)/CMakeCache.txt; then \
+	  cmake --build $(BUILD) -j $(JOBS) --target ringloc-aria-fuse; fi
+	@rc=0; for run in $(SIM_RUNS); do \
+	  case $$run in clean) a= ;; disturbed) a="--cut --push" ;; \
+	  *) echo "make sim: SIM_RUNS: '$$run' is neither clean nor disturbed" >&2; exit 2 ;; esac; \
+	  echo "make sim: the $$run run, into $(SIM_DIR)/$$run"; \
+	  AMRISIM=$(if $(AMRISIM),$(abspath $(AMRISIM))) sh tools/sim/sim.sh $(BUILD) $(SIM_DIR)/$$run $$a; \
+	  r=$$?; [ $$r = 2 ] && exit 2; [ $$r = 0 ] || rc=$$r; \
+	done; exit $$rc
 
 SOAK_FRAMES ?= 200000
 SOAK_DIR    ?= $(BUILD)/soak

@@ -20,6 +20,12 @@
  * clock, the odometry's, for `ringloc fuse --arrivals`. Both are written
  * whole or not at all (rl_outfile: a temporary renamed over the target).
  *
+ * `make sim` (docs/sim.md) adds: a route of waypoints driven with
+ * ArActionGoto on the fused pose (-route, aria_route.cpp); with a simulator
+ * (AMRISim), its true pose at each packet ending the pose log's lines and
+ * streamed to ringloc-render (-simPoses, aria_sim.cpp), the frames cut for
+ * a while (-cutAt, -cutFor) and the robot pushed aside (-pushAt, -push).
+ *
  *   ringloc-aria-fuse -remoteHost localhost -remoteRobotTcpPort 8101 \
  *       -ringlocPort /dev/ttyUSB1 -drive 20 -vel 500 -rotVel 20 -poseLog poses.txt \
  *       -arrivalsLog arrivals.txt
@@ -32,6 +38,8 @@
 #include <Aria/Aria.h>
 #include <cstdio>
 #include <ctime>
+#include "aria_route.h"
+#include "aria_sim.h"
 #include "rl_fuse.h"
 extern "C" {
 #include "rl_outfile.h"
@@ -57,7 +65,8 @@ static double clock_offset()
 class RinglocFuser
 {
 public:
-    RinglocFuser(ArRobot *robot, FILE *log, double cycle) : myRobot(robot), myLog(log), myTask(this, &RinglocFuser::cycle)
+    RinglocFuser(ArRobot *robot, FILE *log, AriaSim *sim, double floorXY, double floorYaw, double cycle)
+        : myRobot(robot), myLog(log), mySim(sim), myShared(false), myTask(this, &RinglocFuser::cycle)
     {
         myOffset = clock_offset();
         rl_fuse_config cfg;
@@ -65,11 +74,16 @@ public:
         cfg.track = 0.33;            /* a Pioneer 3-DX's wheel base; the filter learns the rest */
         cfg.wheel_noise = 0.0005;
         cfg.time_sigma = 0.002;      /* ArTime counts milliseconds */
+        if (floorXY > 0)             /* what the frames' sigmas leave out (the robot rocking, */
+            cfg.floor_xy = floorXY;  /* a simulator's truth in whole mm and degrees) */
+        if (floorYaw > 0)
+            cfg.floor_yaw = floorYaw;
         /* 2.5 s of ARIA's 10 server information packets a second */
         myOk = rl_fuse_init(&myFuse, &cfg, myHist, rl_fuse_history_count(2.5, 10)) == RL_OK &&
                rl_fuse_cycle_init(&myCycle, cycle) == RL_OK;
         myLastRead = -1;
         myFused = 0;
+        myWaypoint = -1;
         robot->addSensorInterpTask("ringloc fuse", 10, &myTask);
     }
 
@@ -78,14 +92,17 @@ public:
     /* the robot's thread, the robot locked: a new odometry pose */
     void cycle()
     {
-        ArPose e = myRobot->getEncoderPose();
+        ArPose e = myRobot->getEncoderPose(), truth;
         double read = secs(myRobot->getLastOdometryTime()), t;
         rl_fuse_pose p;
-        bool have;
+        bool have, simulated;
         if (read == myLastRead)
             return; /* no new packet this cycle */
         myLastRead = read;
         t = rl_fuse_cycle_stamp(&myCycle, read);
+        simulated = mySim && mySim->truth(&truth);
+        if (simulated) /* the truth at this packet: the renderer draws it */
+            mySim->stream(t - myOffset, truth);
         myMutex.lock();
         have = rl_fuse_odometry(&myFuse, t, e.getX() / 1000, e.getY() / 1000, ArMath::degToRad(e.getTh())) == RL_OK &&
                rl_fuse_pose_at(&myFuse, t, &p) == RL_OK;
@@ -96,9 +113,23 @@ public:
         myRobot->moveTo(ArPose(p.x * 1000, p.y * 1000, ArMath::radToDeg(p.yaw)), myRobot->getPose());
         myFused++;
         if (myLog)
-            fprintf(myLog, "%.4f %.5f %.5f %.5f %.5f %.5f %.5f %.6f\n", t - myOffset, p.x, p.y, p.yaw, myRobot->getX() / 1000,
-                    myRobot->getY() / 1000, ArMath::degToRad(myRobot->getTh()), sqrt(p.cov[0][0] + p.cov[1][1]));
+            fprintf(myLog, "%.4f %.5f %.5f %.5f %.5f %.5f %.5f %.6f", t - myOffset, p.x, p.y, p.yaw,
+                    myRobot->getX() / 1000, myRobot->getY() / 1000, ArMath::degToRad(myRobot->getTh()),
+                    sqrt(p.cov[0][0] + p.cov[1][1]));
+        if (myLog && simulated)
+            fprintf(myLog, " %.3f %.3f %.6f %d\n", truth.getX() / 1000, truth.getY() / 1000,
+                    ArMath::degToRad(truth.getTh()), myWaypoint);
+        else if (myLog)
+            fputc('\n', myLog);
     }
+
+    /* the camera board's time_ms is this machine's CLOCK_MONOTONIC (ringloc-fw
+     * beside this program, as in make sim): each capture time is known, the
+     * board's clock is not learned from the arrivals */
+    void setSharedClock(bool shared) { myShared = shared; }
+
+    /* the waypoint being driven to, for the log (-1: none) */
+    void setWaypoint(int i) { myWaypoint = i; }
 
     /* the reader's thread: one ARCOS packet from ringloc's line, arrived
      * at `arrival` (ArTime s); its sequence and arrival into `arrivals` */
@@ -115,8 +146,14 @@ public:
             return;
         if (arrivals)
             fprintf(arrivals, "%u %.6f\n", (unsigned)m.seq, arrival);
+        rl_fuse_frame fr;
+        if (myShared) {
+            rl_fuse_frame_from_msg(&m, 0, 0, &fr);
+            fr.t = m.time_ms / 1000.0 + myOffset; /* on ArTime's clock */
+            fr.st = 0.0005;                        /* time_ms counts milliseconds */
+        }
         myMutex.lock();
-        if (rl_fuse_msg_add(&myFuse, &m, arrival, baud) != RL_OK) {
+        if ((myShared ? rl_fuse_frame_add(&myFuse, &fr) : rl_fuse_msg_add(&myFuse, &m, arrival, baud)) != RL_OK) {
             rl_fuse_event ev; /* rejected, too old, waiting for the board's clock: */
             rl_fuse_last_event(&myFuse, &ev);  /* counted in the stats */
             if (ev.fate == RL_FUSE_REJECTED)
@@ -148,6 +185,9 @@ public:
 private:
     ArRobot *myRobot;
     FILE *myLog;
+    AriaSim *mySim;
+    bool myShared;
+    int myWaypoint;
     ArFunctorC<RinglocFuser> myTask;
     ArMutex myMutex;
     rl_fuse myFuse;
@@ -159,8 +199,38 @@ private:
     double myOffset;
 };
 
+/* -push DX,DY,DTH (mm, mm, degrees) */
+static bool parsePush(const char *s, ArPose *d)
+{
+    double x, y, th;
+    char extra;
+    if (!s)
+        return true;
+    if (sscanf(s, "%lf,%lf,%lf %c", &x, &y, &th, &extra) != 3) {
+        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: -push %s: not DX,DY,DTH (mm, mm, degrees)", s);
+        return false;
+    }
+    *d = ArPose(x, y, th);
+    return true;
+}
+
+/* a waypoint reached: "i goal_x goal_y t ariaX ariaY trueX trueY" (m, s) */
+static void logReached(FILE *f, const AriaRoute &route, size_t i, double t, const ArPose &aria, AriaSim *sim)
+{
+    ArPose truth, g = route.goal(i);
+    bool have = sim && sim->truth(&truth);
+    ArLog::log(ArLog::Normal, "ringloc-aria-fuse: waypoint %zu (%.3f m, %.3f m) reached: ARIA's pose %.1f mm off%s",
+               i, g.getX() / 1000, g.getY() / 1000, aria.findDistanceTo(g), have ? ", the truth " : "");
+    if (have)
+        ArLog::log(ArLog::Normal, "ringloc-aria-fuse:   the truth %.0f mm off (whole mm)", truth.findDistanceTo(g));
+    if (f)
+        fprintf(f, "%zu %.4f %.4f %.4f %.5f %.5f %.3f %.3f\n", i, g.getX() / 1000, g.getY() / 1000, t,
+                aria.getX() / 1000, aria.getY() / 1000, have ? truth.getX() / 1000 : NAN,
+                have ? truth.getY() / 1000 : NAN);
+}
+
 /* the robot stopped; the fused pose, ARIA's and the frames' fates logged */
-static void report(ArRobot *robot, RinglocFuser *fuser)
+static void report(ArRobot *robot, RinglocFuser *fuser, unsigned long cut)
 {
     robot->lock();
     robot->stop();
@@ -175,9 +245,9 @@ static void report(ArRobot *robot, RinglocFuser *fuser)
                    p.x, p.y, p.yaw, 1000 * sqrt(p.cov[0][0] + p.cov[1][1]), aria.getX(), aria.getY(),
                    aria.getTh(), p.scale, p.turn);
     ArLog::log(ArLog::Normal, "ringloc-aria-fuse: %lu packets fused; frames: %lu applied, %lu rejected, "
-                              "%lu restarts, %lu too old, %lu out of order, %lu clock resets, %lu untimed",
+                              "%lu restarts, %lu too old, %lu out of order, %lu clock resets, %lu untimed, %lu cut",
                fuser->fused(), s.applied, s.rejected, s.recoveries, s.too_old, s.out_of_order, s.clock_resets,
-               s.untimed);
+               s.untimed, cut);
 }
 
 int main(int argc, char **argv)
@@ -187,10 +257,14 @@ int main(int argc, char **argv)
     parser.loadDefaultArguments();
     ArRobot robot;
     ArRobotConnector connector(&parser, &robot);
-    const char *port = "/dev/ttyUSB1", *logPath = NULL, *arrivalsPath = NULL;
+    const char *port = "/dev/ttyUSB1", *logPath = NULL, *arrivalsPath = NULL, *simPoses = NULL, *routePath = NULL,
+               *routeLogPath = NULL, *pushArg = NULL;
     int baud = 115200;
-    double drive = 0, vel = 0, rotVel = 0;
+    double drive = 0, vel = 0, rotVel = 0, frameFloor = 0, frameFloorYaw = 0;
+    double closeDist = 20, routeVel = 400, cutAt = -1, cutFor = 3, pushAt = -1;
     int cycleMs = 100;
+    bool sharedClock = false;
+    ArPose pushBy;
     if (!parser.checkParameterArgumentString("-ringlocPort", &port) ||
         !parser.checkParameterArgumentInteger("-ringlocBaud", &baud) ||
         !parser.checkParameterArgumentDouble("-drive", &drive) ||
@@ -198,18 +272,57 @@ int main(int argc, char **argv)
         !parser.checkParameterArgumentDouble("-rotVel", &rotVel) ||
         !parser.checkParameterArgumentString("-poseLog", &logPath) ||
         !parser.checkParameterArgumentString("-arrivalsLog", &arrivalsPath) ||
-        !parser.checkParameterArgumentInteger("-odometryCycle", &cycleMs) || !Aria::parseArgs() ||
-        !parser.checkHelpAndWarnUnparsed()) {
-        ArLog::log(ArLog::Terse, "usage: ringloc-aria-fuse [ARIA's robot options] [-ringlocPort /dev/ttyUSB1] "
-                                 "[-ringlocBaud 115200] [-drive SECONDS -vel MM/S -rotVel DEG/S] [-poseLog FILE] "
-                                 "[-arrivalsLog FILE] [-odometryCycle MS (the robot's packet cycle, 100)]");
+        !parser.checkParameterArgumentInteger("-odometryCycle", &cycleMs) ||
+        !parser.checkParameterArgumentDouble("-frameFloor", &frameFloor) ||
+        !parser.checkParameterArgumentDouble("-frameFloorYaw", &frameFloorYaw) ||
+        !parser.checkParameterArgumentString("-simPoses", &simPoses) ||
+        !parser.checkParameterArgumentBool("-sharedClock", &sharedClock) ||
+        !parser.checkParameterArgumentString("-route", &routePath) ||
+        !parser.checkParameterArgumentString("-routeLog", &routeLogPath) ||
+        !parser.checkParameterArgumentDouble("-closeDist", &closeDist) ||
+        !parser.checkParameterArgumentDouble("-routeVel", &routeVel) ||
+        !parser.checkParameterArgumentDouble("-cutAt", &cutAt) ||
+        !parser.checkParameterArgumentDouble("-cutFor", &cutFor) ||
+        !parser.checkParameterArgumentDouble("-pushAt", &pushAt) ||
+        !parser.checkParameterArgumentString("-push", &pushArg) || !parsePush(pushArg, &pushBy) ||
+        !Aria::parseArgs() || !parser.checkHelpAndWarnUnparsed()) {
+        ArLog::log(ArLog::Terse,
+                   "usage: ringloc-aria-fuse [ARIA's robot options] [-ringlocPort /dev/ttyUSB1] [-ringlocBaud 115200]\n"
+                   "         [-drive SECONDS -vel MM/S -rotVel DEG/S] [-poseLog FILE] [-arrivalsLog FILE]\n"
+                   "         [-odometryCycle MS] [-frameFloor MM] [-frameFloorYaw DEG]\n"
+                   "         [-route FILE [-routeLog FILE] [-closeDist 20] [-routeVel 400]]\n"
+                   "         [-simPoses FIFO] [-cutAt S [-cutFor 3]] [-pushAt S -push DX,DY,DTH]\n"
+                   "         [-sharedClock true]\n"
+                   "  -odometryCycle MS  the robot's packet cycle (100): each packet's read time moved to it\n"
+                   "                  (rl_fuse_cycle: a loaded machine reads some packets late)\n"
+                   "  -frameFloor MM  added in quadrature to every frame's position sigma (rl_fuse's\n"
+                   "                  floor_xy, default 0.5): what the frames' own sigmas leave out\n"
+                   "  -frameFloorYaw DEG  the same for the heading (floor_yaw, default 0.03)\n"
+                   "  -route FILE     drive to each waypoint ('X Y' a line, m) with ArActionGoto on the\n"
+                   "                  fused pose (close enough: -closeDist mm; at most -routeVel mm/s), once\n"
+                   "                  ten frames are applied; -drive is then the time limit\n"
+                   "  -routeLog FILE  per waypoint reached: 'i goal_x goal_y t ariaX ariaY trueX trueY'\n"
+                   "  -simPoses FIFO  a simulator's (AMRISim's) true pose at each packet (SIM_STAT) as\n"
+                   "                  'T_US X Y YAW' lines for ringloc-render --path stream; each -poseLog\n"
+                   "                  line then ends with 'trueX trueY trueYaw waypoint' (whole mm, degrees)\n"
+                   "  -cutAt S        ringloc's frames dropped from S s after the route's start, -cutFor s\n"
+                   "  -pushAt S       the simulated robot set aside by -push mm,mm,degrees at S s (SIM_SET_POSE)\n"
+                   "  -sharedClock true  the frames' time_ms is this machine's CLOCK_MONOTONIC (ringloc-fw\n"
+                   "                  on it): capture times taken as they are, not learned from arrivals");
         Aria::logOptions();
         Aria::exit(2);
     }
+    AriaRoute route(&robot, closeDist, routeVel);
+    if (routePath && !route.load(routePath))
+        Aria::exit(1);
+    /* a simulator's truth asked for only where it is wanted (a Pioneer ignores SIM_STAT) */
+    AriaSim *sim = simPoses || pushAt >= 0 ? new AriaSim(&robot) : NULL;
     if (!connector.connectRobot()) {
         ArLog::log(ArLog::Terse, "ringloc-aria-fuse: could not connect to the robot");
         Aria::exit(1);
     }
+    if (simPoses && !sim->openStream(simPoses))
+        Aria::exit(1);
     ArSerialConnection line;
     line.setPort(port);
     line.setBaud(baud);
@@ -219,50 +332,84 @@ int main(int argc, char **argv)
     }
     ArRobotPacketReceiver rx(&line);
     /* the logs: temporaries beside their targets, renamed over them at the end */
-    rl_outfile logFile, arrivalsFile;
+    const char *paths[3] = {logPath, arrivalsPath, routeLogPath};
+    rl_outfile files[3];
+    FILE *fs[3] = {NULL, NULL, NULL};
     char err[1200];
-    if (logPath && rl_outfile_open(&logFile, logPath, err, sizeof err) != RL_OK) {
-        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
-        Aria::exit(1);
+    for (int i = 0; i < 3; i++) {
+        if (paths[i] && rl_outfile_open(&files[i], paths[i], err, sizeof err) != RL_OK) {
+            ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
+            while (i-- > 0)
+                if (paths[i])
+                    rl_outfile_abort(&files[i]);
+            Aria::exit(1);
+        }
+        fs[i] = paths[i] ? files[i].f : NULL;
     }
-    if (arrivalsPath && rl_outfile_open(&arrivalsFile, arrivalsPath, err, sizeof err) != RL_OK) {
-        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
-        if (logPath)
-            rl_outfile_abort(&logFile);
-        Aria::exit(1);
-    }
-    FILE *log = logPath ? logFile.f : NULL, *arrivals = arrivalsPath ? arrivalsFile.f : NULL;
-    RinglocFuser fuser(&robot, log, cycleMs / 1000.0);
+    FILE *log = fs[0], *arrivals = fs[1], *routeLog = fs[2];
+    RinglocFuser fuser(&robot, log, sim, frameFloor / 1000, ArMath::degToRad(frameFloorYaw), cycleMs / 1000.0);
     if (!fuser.ok()) {
         ArLog::log(ArLog::Terse, "ringloc-aria-fuse: -odometryCycle %d: not a cycle of 1 .. 10000 ms", cycleMs);
         Aria::exit(2);
     }
+    fuser.setSharedClock(sharedClock);
     robot.runAsync(true);
     robot.lock();
     robot.enableMotors();
-    robot.setVel(vel);
-    robot.setRotVel(rotVel);
+    if (!routePath) {
+        robot.setVel(vel);
+        robot.setRotVel(rotVel);
+    }
     robot.unlock();
-    ArTime start;
-    while (robot.isRunning() && (drive <= 0 || start.secSince() < drive)) {
+    ArTime start, routeStart;
+    bool driving = !routePath, pushed = false;
+    unsigned long cut = 0;
+    while (robot.isRunning() && (drive <= 0 || start.secSince() < drive) && !(routePath && route.done())) {
         ArRobotPacket *p = rx.receivePacket(200);
+        double since = driving ? routeStart.mSecSince() / 1000.0 : -1;
         if (p != NULL && p->getID() == RL_PACKET_POSE) {
             ArTime now;
-            fuser.frame(p, secs(now), baud, arrivals);
+            if (cutAt >= 0 && since >= cutAt && since < cutAt + cutFor)
+                cut++; /* the cable cut: the frame never arrives */
+            else
+                fuser.frame(p, secs(now), baud, arrivals);
+        }
+        if (!driving && fuser.stats().applied >= 10) {
+            robot.lock();
+            route.start();
+            fuser.setWaypoint(0);
+            robot.unlock();
+            routeStart.setToNow();
+            driving = true;
+            ArLog::log(ArLog::Normal, "ringloc-aria-fuse: the route's %zu waypoints, on the fused pose", route.count());
+        }
+        AriaRoute::Reached reached; /* the route steps in the robot's thread: no wait for its lock here */
+        while (routePath && driving && route.takeReached(&reached)) {
+            logReached(routeLog, route, reached.index, reached.t - clock_offset(), reached.pose, sim);
+            fuser.setWaypoint(route.current() < route.count() ? (int)route.current() : -1);
+        }
+        if (sim && pushAt >= 0 && !pushed && since >= pushAt) {
+            pushed = true;
+            ArLog::log(ArLog::Normal, "ringloc-aria-fuse: pushing the robot by (%.0f mm, %.0f mm, %.0f deg)%s",
+                       pushBy.getX(), pushBy.getY(), pushBy.getTh(), sim->push(pushBy) ? "" : ": failed");
         }
     }
-    report(&robot, &fuser);
+    report(&robot, &fuser, cut);
+    if (routePath)
+        ArLog::log(ArLog::Normal, "ringloc-aria-fuse: route: %zu of %zu waypoints reached", route.current(),
+                   route.count());
+    if (simPoses)
+        ArLog::log(ArLog::Normal, "ringloc-aria-fuse: true poses streamed: %lu, dropped (the reader busy): %lu",
+                   sim->sent(), sim->dropped());
     robot.stopRunning();
     robot.waitForRunExit();
-    int rc = 0; /* a log that cannot be written whole leaves the old file as it was */
-    if (logPath && rl_outfile_commit(&logFile, err, sizeof err) != RL_OK) {
-        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
-        rc = 1;
-    }
-    if (arrivalsPath && rl_outfile_commit(&arrivalsFile, err, sizeof err) != RL_OK) {
-        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
-        rc = 1;
-    }
+    delete sim;
+    int rc = routePath && !route.done() ? 3 : 0; /* a log that cannot be written whole leaves the old file as it was */
+    for (int i = 0; i < 3; i++)
+        if (paths[i] && rl_outfile_commit(&files[i], err, sizeof err) != RL_OK) {
+            ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
+            rc = 1;
+        }
     Aria::exit(rc);
     return 0;
 }

@@ -24,6 +24,7 @@
 #include "rl_outfile.h"
 #include "rl_ptylink.h"
 #include "rl_stop.h"
+#include "line_delay.h"
 #include "standin_sim.h"
 
 #define SIP_PERIOD 0.1
@@ -33,7 +34,6 @@
 #define BOARD0 5000.0        /* s on the camera board's clock at the start */
 #define BOOT 0.5             /* s a restarted camera board sends nothing */
 #define LINE_TIME (39 * 10.0 / 115200)
-#define QUEUE 8
 #define P "ringloc-standin"
 
 static const char *help =
@@ -69,14 +69,11 @@ typedef struct {
     int open;              /* OPEN received: SIPs flow */
     int served;            /* a client has come and opened */
     rl_arcos_reader rd;
-    uint8_t q[QUEUE][RL_PACKET_MAX];
-    size_t qlen[QUEUE];
-    double qsend[QUEUE];
-    int qn;
+    line_delay q;          /* the frames on their way */
     double transport, drift, restart_at; /* --transport, --drift (ppm), --restart-at (s; < 0 none) */
-    double t0, last_send;  /* the start; when the last frame was queued to be read */
+    double t0;             /* the start */
     int restarted;
-    unsigned long frames_sent, frames_dropped, sips;
+    unsigned long sips;
 } standin;
 
 static void send_all(standin *s, const uint8_t *b, size_t n)
@@ -150,7 +147,8 @@ static int listen_on(int port)
 static void capture(standin *s, double t)
 {
     double since = t - s->t0, board, send;
-    int k;
+    uint8_t pkt[RL_ARCOS_MAX];
+    size_t n;
     if (s->restart_at >= 0 && since >= s->restart_at) {
         if (since < s->restart_at + BOOT)
             return;
@@ -160,34 +158,15 @@ static void capture(standin *s, double t)
         board = since - s->restart_at;
     } else
         board = BOARD0 + since;
-    if (s->qn >= QUEUE) {
-        s->frames_dropped++;
-        return;
-    }
-    k = s->qn++;
     board *= 1 + s->drift * 1e-6;
     if (s->transport > 0) {
-        s->qlen[k] = standin_frame(&s->robot, (uint32_t)(board * 1000), FIELD_DELAY, s->q[k]);
+        n = standin_frame(&s->robot, (uint32_t)(board * 1000), FIELD_DELAY, pkt);
         send = t + FIELD_DELAY + LINE_TIME + s->transport * standin_uniform(&s->robot);
     } else {
-        s->qlen[k] = standin_frame(&s->robot, (uint32_t)(board * 1000), FRAME_DELAY - LINE_TIME, s->q[k]);
+        n = standin_frame(&s->robot, (uint32_t)(board * 1000), FRAME_DELAY - LINE_TIME, pkt);
         send = t + FRAME_DELAY;
     }
-    s->qsend[k] = s->last_send = fmax(send, s->last_send + LINE_TIME);
-}
-
-static void send_due(standin *s, double t)
-{
-    while (s->qn > 0 && s->qsend[0] <= t) {
-        if (write(s->pty, s->q[0], s->qlen[0]) == (ssize_t)s->qlen[0])
-            s->frames_sent++;
-        else
-            s->frames_dropped++; /* no reader yet: the pty's buffer is full */
-        memmove(s->q[0], s->q[1], (QUEUE - 1) * sizeof s->q[0]);
-        memmove(s->qlen, s->qlen + 1, (QUEUE - 1) * sizeof s->qlen[0]);
-        memmove(s->qsend, s->qsend + 1, (QUEUE - 1) * sizeof s->qsend[0]);
-        s->qn--;
-    }
+    line_delay_push(&s->q, pkt, n, send, LINE_TIME);
 }
 
 /* the client's bytes, or a new client */
@@ -281,7 +260,7 @@ static void run(standin *s, double seconds, FILE *truth)
         }
         advance(s, &last, t);
         if (s->pty >= 0)
-            send_due(s, t);
+            line_delay_due(&s->q, s->pty, t);
         if ((seconds > 0 && t - t0 >= seconds) || (seconds <= 0 && s->served && s->cfd < 0))
             break;
     }
@@ -329,6 +308,7 @@ int main(int argc, char **argv)
     if (optind != argc)
         return rl_cli_fail(NULL, RL_EXIT_USAGE, "unexpected argument '%s' (see --help)", argv[optind]);
     standin_init(&s.robot, x, y, yaw, (unsigned)seed);
+    line_delay_init(&s.q);
     s.cfd = s.pty = -1;
     if ((s.lfd = listen_on(port)) < 0)
         return rl_cli_fail(NULL, RL_EXIT_FAIL, "127.0.0.1:%d: %s", port, strerror(errno));
@@ -347,7 +327,7 @@ int main(int argc, char **argv)
     if (pty_link)
         rl_ptylink_close(&s.link);
     fprintf(stderr, P ": %lu server information packets, %lu pose frames sent, %lu dropped; odometry "
-            "(%.3f, %.3f, %.4f), truth (%.4f, %.4f, %.4f)\n", s.sips, s.frames_sent, s.frames_dropped,
+            "(%.3f, %.3f, %.4f), truth (%.4f, %.4f, %.4f)\n", s.sips, s.q.sent, s.q.dropped,
             s.robot.ox, s.robot.oy, s.robot.oyaw, s.robot.tx, s.robot.ty, s.robot.tyaw);
     if (truth_path && rl_outfile_commit(&o, err, sizeof err) != RL_OK)
         return rl_cli_fail(NULL, RL_EXIT_FAIL, "%s", err);
