@@ -25,7 +25,7 @@ port=$((20000 + $$ % 20000))
 # RMS and largest error of columns 2-3 (fused) and 5-6 (ARIA's pose, if
 # any) against the truth, interpolated in time; from the 3rd second (or FROM)
 judge() { # LOG NAME LIMIT_MM [ARIA [FROM]]
-    awk -v name="$2" -v lim="$3" -v aria="${4:-}" -v from="${5:-3}" 'NR == FNR { t[n] = $1; x[n] = $2; y[n] = $3; n++; next }
+    awk -v name="$2" -v lim="$3" -v aria="${4:-}" -v from="${5:-3}" 'BEGIN { n = 0; i = 0 } NR == FNR { t[n] = $1; x[n] = $2; y[n] = $3; n++; next }
         { while (i < n - 2 && t[i + 1] < $1) i++
           if (n < 2 || $1 < t[0] + from || $1 > t[n - 1]) next
           f = ($1 - t[i]) / (t[i + 1] - t[i]); tx = x[i] + f * (x[i + 1] - x[i]); ty = y[i] + f * (y[i + 1] - y[i])

@@ -229,8 +229,9 @@ static void logReached(FILE *f, const AriaRoute &route, size_t i, double t, cons
                 have ? truth.getY() / 1000 : NAN);
 }
 
-/* the robot stopped; the fused pose, ARIA's and the frames' fates logged */
-static void report(ArRobot *robot, RinglocFuser *fuser, unsigned long cut)
+/* the robot stopped; the fused pose, ARIA's, the frames' fates, the route's
+ * waypoints and the true poses streamed logged */
+static void report(ArRobot *robot, RinglocFuser *fuser, unsigned long cut, AriaRoute *route, AriaSim *streamed)
 {
     robot->lock();
     robot->stop();
@@ -248,43 +249,48 @@ static void report(ArRobot *robot, RinglocFuser *fuser, unsigned long cut)
                               "%lu restarts, %lu too old, %lu out of order, %lu clock resets, %lu untimed, %lu cut",
                fuser->fused(), s.applied, s.rejected, s.recoveries, s.too_old, s.out_of_order, s.clock_resets,
                s.untimed, cut);
+    if (route)
+        ArLog::log(ArLog::Normal, "ringloc-aria-fuse: route: %zu of %zu waypoints reached", route->current(),
+                   route->count());
+    if (streamed)
+        ArLog::log(ArLog::Normal, "ringloc-aria-fuse: true poses streamed: %lu, dropped (the reader busy): %lu",
+                   streamed->sent(), streamed->dropped());
 }
 
-int main(int argc, char **argv)
-{
-    Aria::init();
-    ArArgumentParser parser(&argc, argv);
-    parser.loadDefaultArguments();
-    ArRobot robot;
-    ArRobotConnector connector(&parser, &robot);
+/* the command line's options, ARIA's own left to ARIA */
+struct Options {
     const char *port = "/dev/ttyUSB1", *logPath = NULL, *arrivalsPath = NULL, *simPoses = NULL, *routePath = NULL,
                *routeLogPath = NULL, *pushArg = NULL;
-    int baud = 115200;
+    int baud = 115200, cycleMs = 100;
     double drive = 0, vel = 0, rotVel = 0, frameFloor = 0, frameFloorYaw = 0;
     double closeDist = 20, routeVel = 400, cutAt = -1, cutFor = 3, pushAt = -1;
-    int cycleMs = 100;
     bool sharedClock = false;
     ArPose pushBy;
-    if (!parser.checkParameterArgumentString("-ringlocPort", &port) ||
-        !parser.checkParameterArgumentInteger("-ringlocBaud", &baud) ||
-        !parser.checkParameterArgumentDouble("-drive", &drive) ||
-        !parser.checkParameterArgumentDouble("-vel", &vel) ||
-        !parser.checkParameterArgumentDouble("-rotVel", &rotVel) ||
-        !parser.checkParameterArgumentString("-poseLog", &logPath) ||
-        !parser.checkParameterArgumentString("-arrivalsLog", &arrivalsPath) ||
-        !parser.checkParameterArgumentInteger("-odometryCycle", &cycleMs) ||
-        !parser.checkParameterArgumentDouble("-frameFloor", &frameFloor) ||
-        !parser.checkParameterArgumentDouble("-frameFloorYaw", &frameFloorYaw) ||
-        !parser.checkParameterArgumentString("-simPoses", &simPoses) ||
-        !parser.checkParameterArgumentBool("-sharedClock", &sharedClock) ||
-        !parser.checkParameterArgumentString("-route", &routePath) ||
-        !parser.checkParameterArgumentString("-routeLog", &routeLogPath) ||
-        !parser.checkParameterArgumentDouble("-closeDist", &closeDist) ||
-        !parser.checkParameterArgumentDouble("-routeVel", &routeVel) ||
-        !parser.checkParameterArgumentDouble("-cutAt", &cutAt) ||
-        !parser.checkParameterArgumentDouble("-cutFor", &cutFor) ||
-        !parser.checkParameterArgumentDouble("-pushAt", &pushAt) ||
-        !parser.checkParameterArgumentString("-push", &pushArg) || !parsePush(pushArg, &pushBy) ||
+};
+
+/* the options into *o; false (the usage logged) when one is wrong */
+static bool parseOptions(ArArgumentParser &parser, Options *o)
+{
+    if (!parser.checkParameterArgumentString("-ringlocPort", &o->port) ||
+        !parser.checkParameterArgumentInteger("-ringlocBaud", &o->baud) ||
+        !parser.checkParameterArgumentDouble("-drive", &o->drive) ||
+        !parser.checkParameterArgumentDouble("-vel", &o->vel) ||
+        !parser.checkParameterArgumentDouble("-rotVel", &o->rotVel) ||
+        !parser.checkParameterArgumentString("-poseLog", &o->logPath) ||
+        !parser.checkParameterArgumentString("-arrivalsLog", &o->arrivalsPath) ||
+        !parser.checkParameterArgumentInteger("-odometryCycle", &o->cycleMs) ||
+        !parser.checkParameterArgumentDouble("-frameFloor", &o->frameFloor) ||
+        !parser.checkParameterArgumentDouble("-frameFloorYaw", &o->frameFloorYaw) ||
+        !parser.checkParameterArgumentString("-simPoses", &o->simPoses) ||
+        !parser.checkParameterArgumentBool("-sharedClock", &o->sharedClock) ||
+        !parser.checkParameterArgumentString("-route", &o->routePath) ||
+        !parser.checkParameterArgumentString("-routeLog", &o->routeLogPath) ||
+        !parser.checkParameterArgumentDouble("-closeDist", &o->closeDist) ||
+        !parser.checkParameterArgumentDouble("-routeVel", &o->routeVel) ||
+        !parser.checkParameterArgumentDouble("-cutAt", &o->cutAt) ||
+        !parser.checkParameterArgumentDouble("-cutFor", &o->cutFor) ||
+        !parser.checkParameterArgumentDouble("-pushAt", &o->pushAt) ||
+        !parser.checkParameterArgumentString("-push", &o->pushArg) || !parsePush(o->pushArg, &o->pushBy) ||
         !Aria::parseArgs() || !parser.checkHelpAndWarnUnparsed()) {
         ArLog::log(ArLog::Terse,
                    "usage: ringloc-aria-fuse [ARIA's robot options] [-ringlocPort /dev/ttyUSB1] [-ringlocBaud 115200]\n"
@@ -310,69 +316,92 @@ int main(int argc, char **argv)
                    "  -sharedClock true  the frames' time_ms is this machine's CLOCK_MONOTONIC (ringloc-fw\n"
                    "                  on it): capture times taken as they are, not learned from arrivals");
         Aria::logOptions();
-        Aria::exit(2);
+        return false;
     }
-    AriaRoute route(&robot, closeDist, routeVel);
-    if (routePath && !route.load(routePath))
-        Aria::exit(1);
-    /* a simulator's truth asked for only where it is wanted (a Pioneer ignores SIM_STAT) */
-    AriaSim *sim = simPoses || pushAt >= 0 ? new AriaSim(&robot) : NULL;
-    if (!connector.connectRobot()) {
-        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: could not connect to the robot");
-        Aria::exit(1);
-    }
-    if (simPoses && !sim->openStream(simPoses))
-        Aria::exit(1);
-    ArSerialConnection line;
-    line.setPort(port);
-    line.setBaud(baud);
-    if (!line.openSimple()) {
-        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s: cannot open ringloc's serial line", port);
-        Aria::exit(1);
-    }
-    ArRobotPacketReceiver rx(&line);
-    /* the logs: temporaries beside their targets, renamed over them at the end */
-    const char *paths[3] = {logPath, arrivalsPath, routeLogPath};
-    rl_outfile files[3];
-    FILE *fs[3] = {NULL, NULL, NULL};
+    return true;
+}
+
+/* the logs: temporaries beside their targets, renamed over them at the end
+ * (a log that cannot be written whole leaves the old file as it was) */
+static bool openLogs(const char *const paths[3], rl_outfile files[3], FILE *fs[3])
+{
     char err[1200];
     for (int i = 0; i < 3; i++) {
+        fs[i] = NULL;
         if (paths[i] && rl_outfile_open(&files[i], paths[i], err, sizeof err) != RL_OK) {
             ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
             while (i-- > 0)
                 if (paths[i])
                     rl_outfile_abort(&files[i]);
-            Aria::exit(1);
+            return false;
         }
         fs[i] = paths[i] ? files[i].f : NULL;
     }
+    return true;
+}
+
+int main(int argc, char **argv)
+{
+    Aria::init();
+    ArArgumentParser parser(&argc, argv);
+    parser.loadDefaultArguments();
+    ArRobot robot;
+    ArRobotConnector connector(&parser, &robot);
+    Options o;
+    if (!parseOptions(parser, &o))
+        Aria::exit(2);
+    AriaRoute route(&robot, o.closeDist, o.routeVel);
+    if (o.routePath && !route.load(o.routePath))
+        Aria::exit(1);
+    /* a simulator's truth asked for only where it is wanted (a Pioneer ignores SIM_STAT) */
+    AriaSim *sim = o.simPoses || o.pushAt >= 0 ? new AriaSim(&robot) : NULL;
+    if (!connector.connectRobot()) {
+        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: could not connect to the robot");
+        Aria::exit(1);
+    }
+    if (o.simPoses && !sim->openStream(o.simPoses))
+        Aria::exit(1);
+    ArSerialConnection line;
+    line.setPort(o.port);
+    line.setBaud(o.baud);
+    if (!line.openSimple()) {
+        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s: cannot open ringloc's serial line", o.port);
+        Aria::exit(1);
+    }
+    ArRobotPacketReceiver rx(&line);
+    const char *paths[3] = {o.logPath, o.arrivalsPath, o.routeLogPath};
+    rl_outfile files[3];
+    FILE *fs[3];
+    char err[1200];
+    if (!openLogs(paths, files, fs))
+        Aria::exit(1);
     FILE *log = fs[0], *arrivals = fs[1], *routeLog = fs[2];
-    RinglocFuser fuser(&robot, log, sim, frameFloor / 1000, ArMath::degToRad(frameFloorYaw), cycleMs / 1000.0);
+    RinglocFuser fuser(&robot, log, sim, o.frameFloor / 1000, ArMath::degToRad(o.frameFloorYaw), o.cycleMs / 1000.0);
     if (!fuser.ok()) {
-        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: -odometryCycle %d: not a cycle of 1 .. 10000 ms", cycleMs);
+        ArLog::log(ArLog::Terse, "ringloc-aria-fuse: -odometryCycle %d: not a cycle of 1 .. 10000 ms", o.cycleMs);
         Aria::exit(2);
     }
-    fuser.setSharedClock(sharedClock);
+    fuser.setSharedClock(o.sharedClock);
     robot.runAsync(true);
     robot.lock();
     robot.enableMotors();
-    if (!routePath) {
-        robot.setVel(vel);
-        robot.setRotVel(rotVel);
+    if (!o.routePath) {
+        robot.setVel(o.vel);
+        robot.setRotVel(o.rotVel);
     }
     robot.unlock();
     ArTime start, routeStart;
-    bool driving = !routePath, pushed = false;
+    bool driving = !o.routePath, pushed = false;
     unsigned long cut = 0;
-    while (robot.isRunning() && (drive <= 0 || start.secSince() < drive) && !(routePath && route.done())) {
+    while (robot.isRunning() && (o.drive <= 0 || start.secSince() < o.drive) && !(o.routePath && route.done())) {
         ArRobotPacket *p = rx.receivePacket(200);
         double since = driving ? routeStart.mSecSince() / 1000.0 : -1;
         if (p != NULL && p->getID() == RL_PACKET_POSE) {
             ArTime now;
-            if (cutAt >= 0 && since >= cutAt && since < cutAt + cutFor)
+            if (o.cutAt >= 0 && since >= o.cutAt && since < o.cutAt + o.cutFor)
                 cut++; /* the cable cut: the frame never arrives */
             else
-                fuser.frame(p, secs(now), baud, arrivals);
+                fuser.frame(p, secs(now), o.baud, arrivals);
         }
         if (!driving && fuser.stats().applied >= 10) {
             robot.lock();
@@ -384,27 +413,21 @@ int main(int argc, char **argv)
             ArLog::log(ArLog::Normal, "ringloc-aria-fuse: the route's %zu waypoints, on the fused pose", route.count());
         }
         AriaRoute::Reached reached; /* the route steps in the robot's thread: no wait for its lock here */
-        while (routePath && driving && route.takeReached(&reached)) {
+        while (o.routePath && driving && route.takeReached(&reached)) {
             logReached(routeLog, route, reached.index, reached.t - clock_offset(), reached.pose, sim);
             fuser.setWaypoint(route.current() < route.count() ? (int)route.current() : -1);
         }
-        if (sim && pushAt >= 0 && !pushed && since >= pushAt) {
+        if (sim && o.pushAt >= 0 && !pushed && since >= o.pushAt) {
             pushed = true;
             ArLog::log(ArLog::Normal, "ringloc-aria-fuse: pushing the robot by (%.0f mm, %.0f mm, %.0f deg)%s",
-                       pushBy.getX(), pushBy.getY(), pushBy.getTh(), sim->push(pushBy) ? "" : ": failed");
+                       o.pushBy.getX(), o.pushBy.getY(), o.pushBy.getTh(), sim->push(o.pushBy) ? "" : ": failed");
         }
     }
-    report(&robot, &fuser, cut);
-    if (routePath)
-        ArLog::log(ArLog::Normal, "ringloc-aria-fuse: route: %zu of %zu waypoints reached", route.current(),
-                   route.count());
-    if (simPoses)
-        ArLog::log(ArLog::Normal, "ringloc-aria-fuse: true poses streamed: %lu, dropped (the reader busy): %lu",
-                   sim->sent(), sim->dropped());
+    report(&robot, &fuser, cut, o.routePath ? &route : NULL, o.simPoses ? sim : NULL);
     robot.stopRunning();
     robot.waitForRunExit();
     delete sim;
-    int rc = routePath && !route.done() ? 3 : 0; /* a log that cannot be written whole leaves the old file as it was */
+    int rc = o.routePath && !route.done() ? 3 : 0; /* a log that cannot be written whole leaves the old file as it was */
     for (int i = 0; i < 3; i++)
         if (paths[i] && rl_outfile_commit(&files[i], err, sizeof err) != RL_OK) {
             ArLog::log(ArLog::Terse, "ringloc-aria-fuse: %s", err);
