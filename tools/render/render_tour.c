@@ -53,6 +53,40 @@ void render_edge(const render_area *a, unsigned long seed, int n, double step, r
     }
 }
 
+void render_corner(const render_area *a, unsigned long seed, int n, double step, render_pose *out)
+{
+    uint64_t s = start(seed, 0x636F726Eull);
+    double side = a->x1 + 0.75, below = a->y0 - 0.75, phase = uniform(&s, 0, 2 * M_PI);
+    double x = a->x1 - 4.5 + uniform(&s, -0.5, 0.5), y = a->y0 + 1.0, yaw = -M_PI / 2;
+    int k;
+    for (k = 0; k < n; k++) {
+        if (k > 0) {
+            /* out past the lower edge, along it, then round the corner
+             * and up along the side edge, weaving */
+            double weave = 0.25 * sin(phase + 0.2 * k), want, d, turn = 0.25;
+            if (y > below && x < side)
+                want = -M_PI / 2;
+            else if (x < side)
+                want = weave + 0.6 * (below - y);
+            else {
+                /* the corner taken briskly: up to 0.8 rad a frame (8 rad/s
+                 * at 10 frames a second), more than the place's tracking
+                 * bound allows (rl_place_config.max_turn) */
+                want = M_PI / 2 + weave - 0.6 * (side - x);
+                turn = 0.8;
+            }
+            d = atan2(sin(want - yaw), cos(want - yaw));
+            yaw += fmax(-turn, fmin(turn, d));
+            x += step * cos(yaw);
+            y += step * sin(yaw);
+        }
+        out[k].x = x;
+        out[k].y = y;
+        out[k].yaw = atan2(sin(yaw), cos(yaw));
+        out[k].jumped = 0;
+    }
+}
+
 void render_tour(const render_area *a, unsigned long seed, int n, double step, render_pose *out)
 {
     uint64_t s = start(seed, 0x746F7572ull);
