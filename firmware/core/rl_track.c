@@ -5,6 +5,7 @@
 #include <string.h>
 #include "rl_filter.h"
 #include "rl_geom.h"
+#include "rl_global.h"
 #include "rl_local.h"
 #include "rl_pose_fit.h"
 #include "rl_recog_state.h"
@@ -22,6 +23,7 @@ void rl_track_defaults(rl_track_config *cfg)
     cfg->max_jump_yaw = 0.35;
     cfg->min_visible = 0.5;
     cfg->max_shift = 0.6;
+    cfg->window_visible = 1.0;
 }
 
 void rl_track_init(rl_track *t, const rl_track_config *cfg)
@@ -152,15 +154,46 @@ static void window_candidate(const rl_track_window *w, int W, int H, rl_detectio
     u->pass = RL_PASS_LOCAL;
 }
 
+/* A box read whose centre the refinement moved this far is read again
+ * from there (the prediction a few pixels off). */
+#define BOX_RETRY_PX 1.5
+
+/* The global pass's read of a candidate whose box is the disk of c
+ * (centre, radius): into *d; its id. */
+static int read_box(const rl_recog *rec, const rl_image *img, const rl_result *res, const rl_detection *c,
+                    rl_detection *d)
+{
+    rl_clr clr;
+    clr.box.x0 = (int)floor(c->u - c->radius);
+    clr.box.y0 = (int)floor(c->v - c->radius);
+    clr.box.x1 = (int)ceil(c->u + c->radius);
+    clr.box.y1 = (int)ceil(c->v + c->radius);
+    clr.shape = rl_shape_circle();
+    rl_global_read(rec, img, &clr, rec->tone, res, d);
+    return d->id;
+}
+
+/* 1 when read d names w's id near w's place. */
+static int verifies(const rl_track *t, const rl_track_window *w, const rl_detection *d)
+{
+    return d->id == w->id && hypot(d->u - w->u, d->v - w->v) <= t->cfg.max_shift * w->radius;
+}
+
 /* 1 when the window of w reads its predicted id near the prediction
- * (the read into res). */
+ * (the read into res): first as the global pass reads a candidate whose
+ * box is the predicted one (a whole landmark, in a few microseconds),
+ * else as the local pass reads one (its own window and threshold). */
 static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, const rl_track_window *w,
                        rl_result *res)
 {
     rl_detection u, d;
     window_candidate(w, img->width, img->height, &u);
-    if (!rl_local_read(rec, img, res, &u, w->radius, &d) || d.id != w->id ||
-        hypot(d.u - w->u, d.v - w->v) > t->cfg.max_shift * w->radius)
+    if (u.complete && (read_box(rec, img, res, &u, &d) == w->id ||
+                       (hypot(d.u - u.u, d.v - u.v) > BOX_RETRY_PX && read_box(rec, img, res, &d, &d) == w->id)) &&
+        verifies(t, w, &d))
+        return rl_result_add_landmark(res, &d);
+    if (!(w->visible >= t->cfg.window_visible) || !rl_local_read(rec, img, res, &u, w->radius, &d) ||
+        !verifies(t, w, &d))
         return 0;
     return rl_result_add_landmark(res, &d);
 }

@@ -53,6 +53,9 @@ typedef struct {
     double max_jump_yaw; /* the same for the heading, rad (0.35) */
     double min_visible;  /* landmarks predicted at least this much in the frame are read (0.5) */
     double max_shift;    /* a read this many radii from its prediction is not the landmark (0.6) */
+    double window_visible; /* a landmark at least this much in view that its box does not read
+                              is read in a window of its own (1: whole ones only; cut ones
+                              wait for the full frame, whose local pass reads them) */
 } rl_track_config;
 
 /* The robot's motion since the last pose, in that pose's robot frame
