@@ -23,6 +23,7 @@ void rl_track_defaults(rl_track_config *cfg)
     cfg->max_jump_yaw = 0.35;
     cfg->min_visible = 0.5;
     cfg->max_shift = 0.6;
+    cfg->max_first_shift = 1.5;
     cfg->window_visible = 1.0;
 }
 
@@ -173,34 +174,68 @@ static int read_box(const rl_recog *rec, const rl_image *img, const rl_result *r
     return d->id;
 }
 
-/* 1 when read d names w's id near w's place. */
-static int verifies(const rl_track *t, const rl_track_window *w, const rl_detection *d)
+/* 1 when read d names w's id within `shift` radii of w's place. */
+static int verifies(const rl_track_window *w, double shift, const rl_detection *d)
 {
-    return d->id == w->id && hypot(d->u - w->u, d->v - w->v) <= t->cfg.max_shift * w->radius;
+    return d->id == w->id && hypot(d->u - w->u, d->v - w->v) <= shift * w->radius;
 }
 
 /* 1 when the window of w reads its predicted id near the prediction
- * (the read into res): first as the global pass reads a candidate whose
- * box is the predicted one (a whole landmark, in a few microseconds),
+ * (within `shift` radii; the read into *d): first as the global pass
+ * reads a candidate whose box is the predicted one (a whole landmark),
  * else as the local pass reads one (its own window and threshold). */
 static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, const rl_track_window *w,
-                       rl_result *res)
+                       double shift, const rl_result *res, rl_detection *d)
 {
-    rl_detection u, d;
+    rl_detection u;
     window_candidate(w, img->width, img->height, &u);
-    if (u.complete && (read_box(rec, img, res, &u, &d) == w->id ||
-                       (hypot(d.u - u.u, d.v - u.v) > BOX_RETRY_PX && read_box(rec, img, res, &d, &d) == w->id)) &&
-        verifies(t, w, &d))
-        return rl_result_add_landmark(res, &d);
-    if (!(w->visible >= t->cfg.window_visible) || !rl_local_read(rec, img, res, &u, w->radius, &d) ||
-        !verifies(t, w, &d))
-        return 0;
-    return rl_result_add_landmark(res, &d);
+    if (u.complete && (read_box(rec, img, res, &u, d) == w->id ||
+                       (hypot(d->u - u.u, d->v - u.v) > BOX_RETRY_PX && read_box(rec, img, res, d, d) == w->id)) &&
+        verifies(w, shift, d))
+        return 1;
+    return w->visible >= t->cfg.window_visible && rl_local_read(rec, img, res, &u, w->radius, d) &&
+           verifies(w, shift, d);
+}
+
+/* The windows read, whole ones first: the first within max_first_shift
+ * radii of its prediction; the frame's shift from the predictions (the
+ * robot's rocking moves every landmark alike) is the mean of those read,
+ * and each next window is read where it puts it, within max_shift.
+ * Returns how many were read; *missed 1 (and no more read) as soon as a
+ * whole one is missed. */
+static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_result *res, int *missed)
+{
+    double su = 0, sv = 0;
+    int pass, i, read = 0;
+    *missed = 0;
+    for (pass = 0; pass < 2; pass++)
+        for (i = 0; i < t->n; i++) {
+            rl_track_window w = t->win[i];
+            rl_detection d;
+            int whole = is_whole(&w, img->width, img->height);
+            if (whole != (pass == 0))
+                continue;
+            w.u += su;
+            w.v += sv;
+            res->local_tried++;
+            if (!read_window(t, rec, img, &w, read ? t->cfg.max_shift : t->cfg.max_first_shift, res, &d) ||
+                !rl_result_add_landmark(res, &d)) {
+                if (whole) {
+                    *missed = 1; /* the prediction failed: the frame is read in full */
+                    return read;
+                }
+                continue;
+            }
+            su += (d.u - t->win[i].u - su) / (read + 1);
+            sv += (d.v - t->win[i].v - sv) / (read + 1);
+            read++;
+        }
+    return read;
 }
 
 rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result *res, int *ok)
 {
-    int i, read = 0, missed = 0;
+    int read, missed;
     if (t == NULL || rec == NULL || img == NULL || res == NULL || ok == NULL || !rl_image_valid(img) ||
         img->width != rec->width || img->height != rec->height)
         return RL_EINVAL;
@@ -208,12 +243,7 @@ rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result 
     rl_result_clear(res, rec->width, rec->height);
     res->levels = t->levels;
     res->gamma = rl_tones_gamma(&rec->tones);
-    for (i = 0; i < t->n; i++) {
-        int got = read_window(t, rec, img, &t->win[i], res);
-        read += got;
-        missed += !got && is_whole(&t->win[i], img->width, img->height);
-        res->local_tried++;
-    }
+    read = read_windows(t, rec, img, res, &missed);
     res->local_found = read;
     rl_filter_sort(res);
     *ok = missed == 0 && read >= 2;
