@@ -14,6 +14,9 @@
 /* A landmark is whole for the windows when its disk, this much enlarged
  * (the prediction's error), is in the frame. */
 #define WHOLE_MARGIN 1.2
+/* Landmarks predicted at least this much in view are kept: the frame's
+ * shift (read_windows) may bring them in. */
+#define PREDICT_MIN_VISIBLE 0.05
 
 void rl_track_defaults(rl_track_config *cfg)
 {
@@ -24,7 +27,7 @@ void rl_track_defaults(rl_track_config *cfg)
     cfg->min_visible = 0.5;
     cfg->max_shift = 0.6;
     cfg->max_first_shift = 1.5;
-    cfg->window_visible = 1.0;
+    cfg->window_visible = 0.9;
 }
 
 void rl_track_init(rl_track *t, const rl_track_config *cfg)
@@ -117,7 +120,7 @@ static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mou
     for (i = 0; i < map->count && t->n < RL_MAX_LANDMARKS; i++) {
         rl_track_window *w = &t->win[t->n];
         if (fabs(map->lm[i].x - C[0]) > reach || fabs(map->lm[i].y - C[1]) > reach ||
-            !project(cam, &md, Rc, C, map, i, w) || w->visible < t->cfg.min_visible)
+            !project(cam, &md, Rc, C, map, i, w) || w->visible < PREDICT_MIN_VISIBLE)
             continue;
         whole += is_whole(w, cam->width, cam->height);
         t->n++;
@@ -215,8 +218,13 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
             int whole = is_whole(&w, img->width, img->height);
             if (whole != (pass == 0))
                 continue;
+            /* where the shift puts it: whole, or enough in view, there */
             w.u += su;
             w.v += sv;
+            w.visible = rl_geom_visible_in(img->width, img->height, w.u, w.v, w.radius);
+            whole = is_whole(&w, img->width, img->height);
+            if (w.visible < t->cfg.min_visible)
+                continue;
             res->local_tried++;
             if (!read_window(t, rec, img, &w, read ? t->cfg.max_shift : t->cfg.max_first_shift, res, &d) ||
                 !rl_result_add_landmark(res, &d)) {

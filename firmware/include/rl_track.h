@@ -57,8 +57,8 @@ typedef struct {
     double max_shift;    /* the next ones, from their predictions moved as the reads so far
                             moved, radii (0.6) */
     double window_visible; /* a landmark at least this much in view that its box does not read
-                              is read in a window of its own (1: whole ones only; cut ones
-                              wait for the full frame, whose local pass reads them) */
+                              is read in a window of its own (0.9: about whole ones; ones cut
+                              more wait for the full frame, whose local pass reads them) */
 } rl_track_config;
 
 /* The robot's motion since the last pose, in that pose's robot frame
