@@ -4,7 +4,7 @@
 # drive's frames in order, tracked (the default) and with --no-track:
 # - tracked, no landmark is given a wrong id (each lies within half a
 #   radius of a truth landmark of its id);
-# - every whole landmark a full frame reads is read in the tracked run's
+# - every whole landmark (its disk in the frame) a full frame reads is read in the tracked run's
 #   frame too, and most frames are read by windows;
 # - every frame with two whole landmarks whose full pose is within 5 cm of
 #   the truth has a tracked pose within 5 cm;
@@ -28,12 +28,14 @@ n=$(wc -l <"$T/frames.txt")
 [ "$(wc -l <"$T/tracked.jsonl")" = "$n" ] && [ "$(wc -l <"$T/full.jsonl")" = "$n" ] && ok ||
     bad "locate gave $(wc -l <"$T/tracked.jsonl") tracked and $(wc -l <"$T/full.jsonl") full lines for $n frames"
 
-# one line per frame and thing: "T k x y" truth robot, "L k id u v r visible"
+# one line per frame and thing: "T k x y" truth robot, "S k W|H n" its size,
+# "L k id u v r visible"
 # truth landmark, "A k id u v" tracked detection, "B k id u v" full one,
 # "PA k x y" / "PB k x y" poses ("-" none), "W k windows|full"
 k=0
 while read -r f; do
     sed -n 's/^robot: {x: \([-0-9.]*\), y: \([-0-9.]*\),.*/T '$k' \1 \2/p' "${f%.png}.yaml"
+    sed -n 's/^width: \([0-9]*\)/S '$k' W \1/p; s/^height: \([0-9]*\)/S '$k' H \1/p' "${f%.png}.yaml"
     sed -n 's/.*{id: \([0-9]*\), x: [-0-9.]*, y: [-0-9.]*, u: \([-0-9.]*\), v: \([-0-9.]*\), radius: \([-0-9.]*\), visible: \([-0-9.]*\).*/L '$k' \1 \2 \3 \4 \5/p' "${f%.png}.yaml"
     k=$((k + 1))
 done <"$T/frames.txt" >"$T/facts.txt"
@@ -51,6 +53,7 @@ done >>"$T/facts.txt"
 
 awk -v jump="$J" '
     $1 == "T" { tx[$2] = $3; ty[$2] = $4 }
+    $1 == "S" { size[$2, $3] = $4 }
     $1 == "L" { n = nl[$2]++; lid[$2, n] = $3; lu[$2, n] = $4; lv[$2, n] = $5; lr[$2, n] = $6; lvis[$2, n] = $7 }
     $1 == "A" || $1 == "B" { n = nd[$1, $2]++; did[$1, $2, n] = $3; du[$1, $2, n] = $4; dv[$1, $2, n] = $5 }
     $1 == "PA" || $1 == "PB" { px[$1, $2] = $3; py[$1, $2] = $4 }
@@ -68,7 +71,9 @@ awk -v jump="$J" '
                 if (!hit) { wrong++; print "frame " k ": tracked id " did["A", k, i] " at " du["A", k, i] " " dv["A", k, i] " is wrong" }
             }
             for (j = 0; j < nl[k]; j++) {
-                if (lvis[k, j] < 1) continue
+                # whole: its disk in the frame (the truth says visible 1 a pixel or two beyond)
+                if (lvis[k, j] < 1 || lu[k, j] - lr[k, j] < 0 || lv[k, j] - lr[k, j] < 0 ||
+                    lu[k, j] + lr[k, j] > size[k, "W"] - 1 || lv[k, j] + lr[k, j] > size[k, "H"] - 1) continue
                 whole++
                 if (reads("B", k, j) && !reads("A", k, j)) { lost++; print "frame " k " (" w[k] "): whole id " lid[k, j] " read in full, not tracked" }
             }

@@ -25,8 +25,9 @@ void rl_track_defaults(rl_track_config *cfg)
     cfg->max_jump = 0.2;
     cfg->max_jump_yaw = 0.35;
     cfg->min_visible = 0.5;
-    cfg->max_shift = 0.6;
+    cfg->max_shift = 1.0;
     cfg->max_first_shift = 1.5;
+    cfg->max_reads = 0;
     cfg->window_visible = 0.9;
 }
 
@@ -128,6 +129,33 @@ static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mou
     return whole;
 }
 
+/* The predictions reordered so that each next one lies farthest from
+ * those before it, the one nearest the image centre first: the first
+ * few reads span the frame (the pose from them is well conditioned). */
+static void order_spread(rl_track *t, double cu, double cv)
+{
+    int i, j;
+    for (i = 0; i < t->n; i++) {
+        int best = i;
+        double best_d = -HUGE_VAL;
+        for (j = i; j < t->n; j++) {
+            double d = i == 0 ? -hypot(t->win[j].u - cu, t->win[j].v - cv) : HUGE_VAL;
+            int k;
+            for (k = 0; k < i; k++)
+                d = fmin(d, hypot(t->win[j].u - t->win[k].u, t->win[j].v - t->win[k].v));
+            if (d > best_d) {
+                best_d = d;
+                best = j;
+            }
+        }
+        if (best != i) {
+            rl_track_window w = t->win[i];
+            t->win[i] = t->win[best];
+            t->win[best] = w;
+        }
+    }
+}
+
 int rl_track_plan(rl_track *t, const rl_calib *cam, const rl_mount *mount, const rl_map *map, double t_s,
                   const rl_track_motion *odom)
 {
@@ -138,7 +166,10 @@ int rl_track_plan(rl_track *t, const rl_calib *cam, const rl_mount *mount, const
         cam == NULL || mount == NULL || map == NULL)
         return 0;
     predict_pose(t, t_s, odom);
-    return predict_windows(t, cam, mount, map) >= 2;
+    if (predict_windows(t, cam, mount, map) < 2)
+        return 0;
+    order_spread(t, cam->cx, cam->cy);
+    return 1;
 }
 
 /* A window around prediction w, as the local pass takes a candidate. */
@@ -200,16 +231,50 @@ static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, co
            verifies(w, shift, d);
 }
 
+/* How the reads so far moved from their predictions: a shift and a small
+ * turn about the image centre (the robot's rocking shifts every landmark
+ * alike, a heading error turns them), least squares over the reads. */
+typedef struct {
+    double cu, cv;               /* the turn's centre */
+    double n, x, y, q, du, dv, w; /* sums */
+} frame_shift;
+
+static void shift_add(frame_shift *f, const rl_track_window *w, const rl_detection *d)
+{
+    double x = w->u - f->cu, y = w->v - f->cv, du = d->u - w->u, dv = d->v - w->v;
+    f->n++;
+    f->x += x;
+    f->y += y;
+    f->q += x * x + y * y;
+    f->du += du;
+    f->dv += dv;
+    f->w += x * dv - y * du;
+}
+
+/* w moved as the reads so far say. */
+static void shift_apply(const frame_shift *f, rl_track_window *w)
+{
+    double x = w->u - f->cu, y = w->v - f->cv, spread, a = 0;
+    if (f->n == 0)
+        return;
+    spread = f->q - (f->x * f->x + f->y * f->y) / f->n;
+    if (f->n >= 2 && spread > 400.0) /* reads 20 px apart or more tell a turn */
+        a = (f->w + (f->y * f->du - f->x * f->dv) / f->n) / spread;
+    w->u += (f->du + a * f->y) / f->n - a * y;
+    w->v += (f->dv - a * f->x) / f->n + a * x;
+}
+
 /* The windows read, whole ones first: the first within max_first_shift
- * radii of its prediction; the frame's shift from the predictions (the
- * robot's rocking moves every landmark alike) is the mean of those read,
- * and each next window is read where it puts it, within max_shift.
- * Returns how many were read; *missed 1 (and no more read) as soon as a
- * whole one is missed. */
+ * radii of its prediction; each next one where the reads so far put it
+ * (frame_shift), within max_shift. Returns how many were read; *missed 1
+ * (and no more read) as soon as a whole one is missed. */
 static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_result *res, int *missed)
 {
-    double su = 0, sv = 0;
+    frame_shift fs;
     int pass, i, read = 0;
+    memset(&fs, 0, sizeof fs);
+    fs.cu = 0.5 * (img->width - 1);
+    fs.cv = 0.5 * (img->height - 1);
     *missed = 0;
     for (pass = 0; pass < 2; pass++)
         for (i = 0; i < t->n; i++) {
@@ -219,12 +284,13 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
             if (whole != (pass == 0))
                 continue;
             /* where the shift puts it: whole, or enough in view, there */
-            w.u += su;
-            w.v += sv;
+            shift_apply(&fs, &w);
             w.visible = rl_geom_visible_in(img->width, img->height, w.u, w.v, w.radius);
             whole = is_whole(&w, img->width, img->height);
             if (w.visible < t->cfg.min_visible)
                 continue;
+            if (t->cfg.max_reads > 0 && read >= t->cfg.max_reads)
+                return read; /* enough for the pose; the full frame reads the rest */
             res->local_tried++;
             if (!read_window(t, rec, img, &w, read ? t->cfg.max_shift : t->cfg.max_first_shift, res, &d) ||
                 !rl_result_add_landmark(res, &d)) {
@@ -234,8 +300,7 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
                 }
                 continue;
             }
-            su += (d.u - t->win[i].u - su) / (read + 1);
-            sv += (d.v - t->win[i].v - sv) / (read + 1);
+            shift_add(&fs, &t->win[i], &d);
             read++;
         }
     return read;

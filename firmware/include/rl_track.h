@@ -52,10 +52,13 @@ typedef struct {
     double max_jump;     /* a tracked frame's pose this far from its prediction is a jump, m (0.2) */
     double max_jump_yaw; /* the same for the heading, rad (0.35) */
     double min_visible;  /* landmarks predicted at least this much in the frame are read (0.5) */
+    int max_reads;       /* at most this many landmarks read per tracked frame, spread over
+                            the frame (the rest wait for the next full frame): a cap on a
+                            tracked frame's cost; 0 (default): every one in view */
     double max_first_shift; /* the frame's first read may lie this many radii from its
                                prediction (1.5: the robot's rocking moves the image) */
     double max_shift;    /* the next ones, from their predictions moved as the reads so far
-                            moved, radii (0.6) */
+                            moved, radii (1.0) */
     double window_visible; /* a landmark at least this much in view that its box does not read
                               is read in a window of its own (0.9: about whole ones; ones cut
                               more wait for the full frame, whose local pass reads them) */
