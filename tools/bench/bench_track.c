@@ -13,6 +13,7 @@
 #define FRAMES 512
 #define TRUTH_MAX 64
 #define POSE_TOLERANCE 0.05 /* m */
+#define CAPPED_READS 3      /* the third run: rl_track_config.max_reads */
 
 /* A frame's truth: the robot's place and the landmarks wholly in view. */
 typedef struct {
@@ -159,7 +160,7 @@ int rl_bench_track(const char *dir, const char *prefix)
 {
     static rl_site site;
     static rl_site_folder held;
-    static tally full, tracked;
+    static tally full, tracked, capped;
     sink sk;
     rl_site_files files;
     rl_recog_config cfg;
@@ -180,6 +181,7 @@ int rl_bench_track(const char *dir, const char *prefix)
     }
     memset(&full, 0, sizeof full);
     memset(&tracked, 0, sizeof tracked);
+    memset(&capped, 0, sizeof capped);
     memset(&sk, 0, sizeof sk);
     rl_pngrun_defaults(&pr, "bench");
     pr.run.frame_interval = 0.1; /* a drive at 10 frames a second, as `locate` takes it */
@@ -190,6 +192,10 @@ int rl_bench_track(const char *dir, const char *prefix)
     rl_track_defaults(&pr.run.track);
     sk.t = &tracked;
     (void)rl_pngrun_files(&pr, &site, names, n);
+    pr.run.track.max_reads = CAPPED_READS;
+    sk.t = &capped;
+    (void)rl_pngrun_files(&pr, &site, names, n);
+    pr.run.track.max_reads = 0;
     printf("track, %s/%s*.png (%d frames in order, 10 a second; a full frame every %d): median us per frame and\n"
            "in whole-frame histogram passes (%.1f us, the same frames); whole landmarks read right, wrong ids,\n"
            "poses within %.0f cm of the truth (frames with two whole landmarks), median pose error mm\n",
@@ -202,6 +208,9 @@ int rl_bench_track(const char *dir, const char *prefix)
     printf("  (their landmarks: %ld read as the global pass reads a box, %ld as the local pass a window)\n",
            tracked.by_box, tracked.by_window);
     print_row("  in full", tracked.fulls, tracked.us_full, &tracked, 0);
+    print_row("tracked, 3 reads", capped.frames, capped.us_all, &capped, 1);
+    print_row("  by windows", capped.windows, capped.us_win, &capped, 0);
+    print_row("  in full", capped.fulls, capped.us_full, &capped, 0);
     for (k = 0; k < n; k++)
         free(names[k]);
     free(names);
