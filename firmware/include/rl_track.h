@@ -4,37 +4,42 @@
  * A robot does not see a new world every frame. From the last pose, the
  * motion since (an odometry delta, or a constant velocity from the last
  * two poses), the map, the camera and its mount, rl_track_plan predicts
- * each landmark's image centre, radius and id in the next frame;
- * rl_track_read reads only a window around each prediction, with the
- * window's own threshold (the local pass's per-window reading, rl_local),
- * and keeps a read only when it names the predicted id near the predicted
- * place. A full frame (rl_recog_run) instead: every full_every-th frame,
- * with no recent pose, when a whole landmark's prediction is not read
- * back (it failed: the same frame is read in full), when the pose jumps
- * from its prediction (the robot carried), and while the landmarks
- * entering across the border can only be partly read (map landmarks
- * predicted partly in view, down to min_visible, are read by windows too;
- * those less in view wait for the next full frame, as a full frame's
- * local pass leaves them too). So no landmark a full frame would read is
- * lost for longer than full_every frames, and no id is taken that the
- * local pass's rule would not take.
+ * each map landmark's image centre, radius and id in the next frame
+ * (those entering across the border too). rl_track_read reads only there,
+ * the predictions in an order that spreads them over the frame: each as
+ * the global pass reads a candidate whose box is the prediction, else, for
+ * a landmark about whole, as the local pass reads one (a window with its
+ * own threshold, rl_local); a read is kept only when it names the
+ * predicted id within max_first_shift radii (the first) or max_shift
+ * radii (the next ones, their predictions moved by the shift and turn
+ * the reads so far show: a rocking robot). A full frame (rl_recog_run)
+ * instead: every full_every-th frame, with no recent pose, when a whole
+ * landmark's window is not read back (the same frame is then read in
+ * full), and when the pose jumps from its prediction (the robot carried).
+ * Landmarks cut by the border (less than window_visible in view), and
+ * those past max_reads, wait for the next full frame: no landmark a full
+ * frame reads is lost for longer than full_every frames, and no id is
+ * taken that the recognizer's own rules would not take.
  *
  * Allocation-free: the tracker is the caller's struct.
  *
  *   rl_track trk;
  *   rl_track_config tc;
- *   int ok;
- *   rl_track_defaults(&tc);                         // a full frame every 10th
+ *   rl_mount mount;
+ *   rl_pose pose = {0};                            // the frame's pose, once solved
+ *   double t = 0.1;                                // the frame's time, s
+ *   int ok = 0, pose_ok = 0;
+ *   rl_mount_defaults(&mount, 0.88);
+ *   rl_track_defaults(&tc);                        // a full frame every 10th
  *   rl_track_init(&trk, &tc);
- *   // per frame, t in seconds:
  *   if (rl_track_plan(&trk, &cam, &mount, &map, t, NULL) &&
  *       rl_track_read(&trk, rec, &img, &res, &ok) == RL_OK && ok)
- *       ;                                           // res holds the verified windows
+ *       use(res.n_landmarks);                      // the windows' landmarks
  *   else if (rl_recog_run(rec, &img, &res) == RL_OK)
  *       rl_track_full(&trk, &res);
- *   // then the pose; a tracked frame whose pose jumped is read again in full:
- *   if (rl_track_pose(&trk, pose_ok ? &pose : NULL, t))
- *       use(rl_recog_run(rec, &img, &res));
+ *   // ... the pose from res (pose_ok); a tracked frame whose pose jumped is read again:
+ *   if (rl_track_pose(&trk, pose_ok ? &pose : NULL, t) && rl_recog_run(rec, &img, &res) == RL_OK)
+ *       rl_track_full(&trk, &res);
  */
 #ifndef RL_TRACK_H
 #define RL_TRACK_H
