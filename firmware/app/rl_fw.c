@@ -312,10 +312,12 @@ static void run_config(const rl_runcfg *cfg, rl_run_config *rc)
 static void print_summary(const char *prefix, const rl_run_counts *n, const out_ctx *octx)
 {
     fprintf(stderr, "%s: %ld frames, %ld poses, %ld status frames, %ld camera errors, "
-                    "%ld bad frames, %ld timeouts, %ld serial errors, %ld frames dropped%s\n",
+                    "%ld bad frames, %ld timeouts, %ld serial errors, %ld frames dropped%s; %ld read by tracking "
+                    "windows\n",
             prefix, n->frames, n->poses, n->statuses, n->camera_errors, n->bad_frames, n->camera_timeouts,
             n->sink_errors, n->dropped,
-            rl_stop_requested() ? (octx->s.broken ? " (standard output closed)" : " (stopped by signal)") : "");
+            rl_stop_requested() ? (octx->s.broken ? " (standard output closed)" : " (stopped by signal)") : "",
+            n->windowed);
 }
 
 int rl_fw_main(const char *C, int argc, char **argv)
