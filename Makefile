@@ -7,7 +7,8 @@
 #                        with the plain-C matcher (RL_NO_VECTOR_EXT) instead of the vector one
 #   make demo            the firmware on a bundled drive: poses over a pty, report
 #   make bench           recognition, pose, place and survey benchmarks (figures, not pass/fail),
-#                        with the time of each stage of the recognizer (docs/design.md)
+#                        with the time of each stage of the recognizer (docs/design.md) and
+#                        tracked frames beside full ones (docs/tracking.md)
 #   make bench-real REAL=DIR  ringloc and AprilTag 3 on real photos with landmarks placed in them
 #   make fuzz [FUZZ_SECONDS=60]  libFuzzer (clang, ASan + UBSan) on the recognizer, the PNG
 #                        reader, the YAML loaders, the pose solver, the frame decoder,
@@ -162,9 +163,20 @@ bench: host
 	    --ceiling-height 2.75 --camera-height 0.88 --map-out $(BENCH_DIR)/site/map.yaml >$(BENCH_DIR)/site/plan.json && \
 	  $(BUILD)/tools/ringloc-render --site-map $(BENCH_DIR)/site/map.yaml --out $(BENCH_DIR)/site --path random \
 	    --frames 100 --seed 9 --mount 0.12,-0.03,0.02; }
+	@[ -f $(BENCH_DIR)/track/circle_059.png ] || { \
+	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/track --path rect --frames 60 --rock 0.03 \
+	    --mount 0.12,-0.03,0.02 --write-map $(BENCH_DIR)/track/map.yaml \
+	    --write-camera $(BENCH_DIR)/track/camera.yaml --write-robot $(BENCH_DIR)/track/robot.yaml && \
+	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/track --path circle --frames 60 --rock 0.03 \
+	    --mount 0.12,-0.03,0.02 --look moving; }
+	@[ -f $(BENCH_DIR)/site/corner_143.png ] || \
+	  $(BUILD)/tools/ringloc-render --site-map $(BENCH_DIR)/site/map.yaml --out $(BENCH_DIR)/site --path corner \
+	    --frames 144 --seed 4 --mount 0.12,-0.03,0.02
 	$(BUILD)/tools/ringloc-bench $(BENCH_DIR)/640x480 $(BENCH_DIR)/1280x960 $(BENCH_DIR)/moving \
 	  --local $(BENCH_DIR)/glare \
-	  --pose $(BENCH_DIR)/drive --site $(BENCH_DIR)/site
+	  --pose $(BENCH_DIR)/drive --site $(BENCH_DIR)/site \
+	  --track $(BENCH_DIR)/drive: --track $(BENCH_DIR)/track:rect_ --track $(BENCH_DIR)/track:circle_ \
+	  --track $(BENCH_DIR)/site:corner_
 	@[ -f $(BENCH_DIR)/survey/detect.jsonl ] || \
 	  $(BUILD)/tools/ringloc-survey-synth --camera $(BENCH_DIR)/drive/camera.yaml --out $(BENCH_DIR)/survey
 	@echo "survey: 2,000 landmarks (ring6, ids repeating) from 20,000 frames of detect JSON lines, one thread:"

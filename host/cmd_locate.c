@@ -14,7 +14,7 @@ static const char *locate_help =
     "usage: ringloc locate --camera CAM.yaml --map MAP.yaml --robot ROBOT.yaml\n"
     "                      [--offsets OFFSETS.yaml] [--annotate OUT.png] [--size WxH]\n"
     "                      [--local auto|always|never] [--min-score 0.8]\n"
-    "                      [--interval 0.1 | --alone] IMAGE...\n\n"
+    "                      [--interval 0.1 | --alone] [--no-track] IMAGE...\n\n"
     "Recognize landmarks and compute the robot's pose (REP-103, map frame) for\n"
     "each image. Prints the detect JSON line with one more field:\n"
     "  \"pose\": {\"x\": 1.2034, \"y\": 0.5021, \"yaw\": 0.0312, \"landmarks_used\": 4,\n"
@@ -45,7 +45,12 @@ static const char *locate_help =
     "                   recorded at 10 frames a second; 'every' of a recording\n"
     "                   multiplies it): how far the robot can have moved\n"
     "  --alone          each image alone, no previous pose (images of different\n"
-    "                   places or drives)\n";
+    "                   places or drives)\n"
+    "  --no-track       read every image in full; by default, once placed, an\n"
+    "                   image of the drive is read only in windows around where the\n"
+    "                   map's landmarks must be (\"track\": \"windows\"), every 10th\n"
+    "                   in full (\"full\"), and whenever a window misses or the pose\n"
+    "                   jumps (docs/tracking.md)\n";
 
 
 typedef struct {
@@ -75,6 +80,7 @@ static void print_pose(const rl_run_report *rep, const rl_site *site)
     if (site->place.pl != NULL)
         printf(", \"place\": {\"status\": \"%s\", \"verified\": %d, \"runner_up\": %d, \"candidates\": %d}",
                rl_place_status_name(found->status), found->verified, found->runner_up, found->candidates);
+    printf(", \"track\": \"%s\"", rep->windows ? "windows" : "full");
     if (rep->pose_err != RL_OK) {
         printf(", \"pose\": null, \"pose_error\": \"%s\"}\n", pose_error(rep));
         return;
@@ -125,6 +131,7 @@ int rl_cmd_locate(int argc, char **argv)
         {"min-score", required_argument, 0, 's'}, {"gamma", required_argument, 0, 'Y'},
         {"size", required_argument, 0, 'z'},
         {"interval", required_argument, 0, 'i'}, {"alone", no_argument, 0, 'A'},
+        {"no-track", no_argument, 0, 'T'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     const char *C = "locate", *family = NULL;
     static rl_site site;
@@ -142,6 +149,7 @@ int rl_cmd_locate(int argc, char **argv)
     rl_recog_defaults(&cfg);
     rl_pngrun_defaults(&pr, C);
     pr.run.frame_interval = 0.1;
+    rl_track_defaults(&pr.run.track); /* the images are a drive: tracked */
     optind = 1;
     while ((c = rl_cli_getopt_recog(C, argc, argv, opts, &cfg, &family)) != -1) {
         switch (c) {
@@ -159,6 +167,7 @@ int rl_cmd_locate(int argc, char **argv)
                 return RL_EXIT_USAGE;
             break;
         case 'A': pr.run.alone = 1; break;
+        case 'T': pr.run.track.full_every = 0; break;
         case 'h': fputs(locate_help, stdout); return 0;
         default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }

@@ -11,6 +11,7 @@ void rl_pngrun_defaults(rl_pngrun *pr, const char *cmd)
     pr->cmd = cmd;
     rl_run_defaults(&pr->run);
     pr->run.timeout_ms = -1; /* files: no rate, nothing to wait for */
+    pr->run.track.full_every = 0; /* every file in full; locate tracks a drive */
 }
 
 typedef struct {

@@ -18,7 +18,8 @@
 #include "rl_clock.h"
 
 static const char *run_help =
-    "usage: %s --config ringloc.yaml [--frames N] [--record DIR] [--http ADDR:PORT] [--probe]\n\n"
+    "usage: %s --config ringloc.yaml [--frames N] [--record DIR] [--http ADDR:PORT] [--probe]\n"
+    "       [--no-track]\n\n"
     "The firmware: grab frames from the camera, recognize landmarks, compute the\n"
     "robot's pose and send it as ARCOS-framed pose frames on the serial line (a\n"
     "status frame when there is no pose). Camera and serial faults are survived:\n"
@@ -39,7 +40,12 @@ static const char *run_help =
     "               without one, a token is made for the run and printed; a browser\n"
     "               asks for it as a password: docs/view.md)\n"
     "  --probe      list what the configured camera offers (formats, sizes,\n"
-    "               controls) and exit\n\n"
+    "               controls) and exit\n"
+    "  --no-track   read every frame in full (recognition.track_every: 0); by\n"
+    "               default, once placed, a frame is read only in windows around\n"
+    "               where the map's landmarks must be, a full frame every 10th,\n"
+    "               and whenever a window misses or the pose jumps\n"
+    "               (docs/tracking.md)\n\n"
     "Recording and the web view never stop the pose frames: one that cannot start\n"
     "(a port taken, an address not there yet, a read-only or full folder) is said\n"
     "in one line and tried again every 5 s. Under systemd (Type=notify) the\n"
@@ -213,13 +219,14 @@ static void run_loop(rl_runner *runner, long max_frames)
  * *done set). */
 static int parse_args(const char *C, const char *prefix, int argc, char **argv,
                       const char **config, long *max_frames, int *probe, const char **record,
-                      const char **http, int *done)
+                      const char **http, int *no_track, int *done)
 {
     static const struct option opts[] = {{"config", required_argument, 0, 'c'},
                                          {"frames", required_argument, 0, 'n'},
                                          {"probe", no_argument, 0, 'p'},
                                          {"record", required_argument, 0, 'R'},
                                          {"http", required_argument, 0, 'H'},
+                                         {"no-track", no_argument, 0, 'T'},
                                          {"help", no_argument, 0, 'h'},
                                          {0, 0, 0, 0}};
     char hint[160], why[160];
@@ -237,6 +244,7 @@ static int parse_args(const char *C, const char *prefix, int argc, char **argv,
             *max_frames = v;
             break;
         case 'p': *probe = 1; break;
+        case 'T': *no_track = 1; break;
         case 'R': *record = optarg; break;
         case 'H':
             if (rl_listen_parse(optarg, &l, why, sizeof why) != RL_OK)
@@ -302,15 +310,18 @@ static void run_config(const rl_runcfg *cfg, rl_run_config *rc)
     rc->log_interval_us = (uint64_t)(cfg->log_interval * 1e6);
     if (cfg->cam_rate > 0)
         rc->timeout_ms = (int)(3000.0 / cfg->cam_rate) > 200 ? (int)(3000.0 / cfg->cam_rate) : 200;
+    rc->track.full_every = cfg->track_every;
 }
 
 static void print_summary(const char *prefix, const rl_run_counts *n, const out_ctx *octx)
 {
     fprintf(stderr, "%s: %ld frames, %ld poses, %ld status frames, %ld camera errors, "
-                    "%ld bad frames, %ld timeouts, %ld serial errors, %ld frames dropped%s\n",
+                    "%ld bad frames, %ld timeouts, %ld serial errors, %ld frames dropped%s; %ld read by tracking "
+                    "windows\n",
             prefix, n->frames, n->poses, n->statuses, n->camera_errors, n->bad_frames, n->camera_timeouts,
             n->sink_errors, n->dropped,
-            rl_stop_requested() ? (octx->s.broken ? " (standard output closed)" : " (stopped by signal)") : "");
+            rl_stop_requested() ? (octx->s.broken ? " (standard output closed)" : " (stopped by signal)") : "",
+            n->windowed);
 }
 
 int rl_fw_main(const char *C, int argc, char **argv)
@@ -328,10 +339,11 @@ int rl_fw_main(const char *C, int argc, char **argv)
     rl_run_config rc;
     const char *config = NULL, *record = NULL, *http = NULL;
     long max_frames = 0;
-    int code, done, probe = 0;
+    int code, done, probe = 0, no_track = 0;
 
     rl_cli_prefix(C, prefix, sizeof prefix);
-    if ((code = parse_args(C, prefix, argc, argv, &config, &max_frames, &probe, &record, &http, &done)) != 0 || done)
+    if ((code = parse_args(C, prefix, argc, argv, &config, &max_frames, &probe, &record, &http, &no_track, &done)) != 0 ||
+        done)
         return code;
     if (probe)
         return probe_camera(C, config);
@@ -343,6 +355,8 @@ int rl_fw_main(const char *C, int argc, char **argv)
     wire_io(&s, &octx, &ps, &watch, &cam, prefix, &io);
     start_side(&s, record, http, &side);
     run_config(&s.cfg, &rc);
+    if (no_track)
+        rc.track.full_every = 0;
     rl_run_init(&runner, &rc, &io, &s.site, &res);
     /* a closed terminal or a service reload: stop with the summary; a
      * vanished reader of standard output is a write error */

@@ -15,6 +15,7 @@ void rl_run_defaults(rl_run_config *c)
     c->backoff_max_us = 2000000;
     c->status_period_us = 200000;
     c->log_interval_us = 5000000;
+    rl_track_defaults(&c->track);
 }
 
 void rl_run_init(rl_runner *r, const rl_run_config *cfg, const rl_run_io *io, rl_site *site, rl_result *res)
@@ -25,6 +26,9 @@ void rl_run_init(rl_runner *r, const rl_run_config *cfg, const rl_run_io *io, rl
     r->site = site;
     r->res = res;
     r->src_backoff = r->sink_backoff = cfg->backoff_min_us;
+    rl_track_init(&r->track, &cfg->track);
+    if (cfg->alone)
+        r->track.cfg.full_every = 0;
 }
 
 const rl_run_counts *rl_run_counts_of(const rl_runner *r)
@@ -327,6 +331,52 @@ static rl_err ready_for(rl_runner *r, const rl_cam_frame *f, char *why, size_t w
     return e;
 }
 
+/* The frame's landmarks into r->res: by tracking windows when the last
+ * poses predict them (rep->windows), else (or when they fail) in full;
+ * rep->recog_us is the time of both. */
+static rl_err recognize(rl_runner *r, const rl_cam_frame *f, double t_s, rl_run_report *rep)
+{
+    rl_site *s = r->site;
+    uint64_t t0 = rl_clock_now_us();
+    rl_err e = RL_OK;
+    int ok = 0;
+    if (can_localize(s) && rl_track_plan(&r->track, &s->calib, &s->mount, &s->map, t_s, NULL))
+        e = rl_track_read(&r->track, s->recog.rec, &f->img, r->res, &ok);
+    if (e == RL_OK && !ok) {
+        r->counts.window_fallbacks += r->track.n > 0;
+        e = rl_recog_run(s->recog.rec, &f->img, r->res);
+        if (e == RL_OK)
+            rl_track_full(&r->track, r->res);
+    }
+    rep->windows = ok;
+    rep->recog_us += (double)(rl_clock_now_us() - t0);
+    return e;
+}
+
+/* Localize the frame and tell the tracker; a frame read by windows whose
+ * pose jumped from the prediction (the robot carried) is read again in
+ * full, from the prior it had. */
+static rl_err localize_tracked(rl_runner *r, const rl_cam_frame *f, uint64_t t_us, rl_run_report *rep,
+                               rl_pose *pose, rl_place_found *found)
+{
+    int have = r->have_pose;
+    rl_pose last = r->last_pose;
+    uint64_t last_us = r->last_pose_us;
+    rl_err e;
+    localize(r, t_us, rep, pose, found);
+    if (!rl_track_pose(&r->track, rep->pose_err == RL_OK ? pose : NULL, (double)t_us / 1e6))
+        return RL_OK;
+    r->counts.window_fallbacks++;
+    r->have_pose = have;
+    r->last_pose = last;
+    r->last_pose_us = last_us;
+    if ((e = recognize(r, f, (double)t_us / 1e6, rep)) != RL_OK)
+        return e;
+    localize(r, t_us, rep, pose, found);
+    (void)rl_track_pose(&r->track, rep->pose_err == RL_OK ? pose : NULL, (double)t_us / 1e6);
+    return RL_OK;
+}
+
 /* Recognize and localize a frame, report it. */
 static void use_frame(rl_runner *r, const rl_cam_frame *f)
 {
@@ -334,7 +384,7 @@ static void use_frame(rl_runner *r, const rl_cam_frame *f)
     rl_pose pose;
     rl_place_found found;
     char why[512];
-    uint64_t t0;
+    uint64_t t_us;
     rl_err e;
     int i;
     r->counts.frames++;
@@ -347,9 +397,10 @@ static void use_frame(rl_runner *r, const rl_cam_frame *f)
     rep.event = RL_RUN_FRAME;
     rep.t_us = f->t_us;
     rep.frame = f;
-    t0 = rl_clock_now_us();
-    e = rl_recog_run(r->site->recog.rec, &f->img, r->res);
-    rep.recog_us = (double)(rl_clock_now_us() - t0);
+    t_us = r->cfg.frame_interval > 0 ? (uint64_t)(r->reads * r->cfg.frame_interval * 1e6) : f->t_us;
+    e = recognize(r, f, (double)t_us / 1e6, &rep);
+    if (e == RL_OK)
+        e = localize_tracked(r, f, t_us, &rep, &pose, &found);
     if (e != RL_OK) {
         /* a bad frame (noise beyond the workspace) never stops the loop */
         if (f->name)
@@ -361,11 +412,10 @@ static void use_frame(rl_runner *r, const rl_cam_frame *f)
         return;
     }
     rep.res = r->res;
-    for (i = 0; i < r->res->n_landmarks; i++)
+    for (i = 0; i < r->res->n_landmarks && !rep.windows; i++)
         rep.local_used |= r->res->landmarks[i].pass == RL_PASS_LOCAL;
     r->counts.local_used += rep.local_used;
-    localize(r, r->cfg.frame_interval > 0 ? (uint64_t)(r->reads * r->cfg.frame_interval * 1e6) : f->t_us, &rep,
-             &pose, &found);
+    r->counts.windowed += rep.windows;
     report(r, &rep);
 }
 

@@ -46,6 +46,7 @@
 #include "rl_pose.h"
 #include "rl_recog.h"
 #include "rl_site.h"
+#include "rl_track.h"
 
 /* Where frames come from. grab: RL_OK, RL_ETIMEOUT, RL_ENOTFOUND at the
  * end, RL_EFORMAT for a bad frame that was skipped, another error when
@@ -76,6 +77,7 @@ typedef struct {
     const rl_result *res;       /* FRAME: its landmarks; else NULL */
     double recog_us;            /* FRAME: recognition's time alone */
     int local_used;             /* FRAME: 1 when the local pass identified one of its landmarks */
+    int windows;                /* FRAME: 1 when read by tracking windows only (rl_track.h) */
     rl_err pose_err;            /* FRAME: RL_OK with a pose; RL_ETOOFEW, RL_EAMBIGUOUS, ...;
                                    RL_EUNSUPPORTED when the site cannot localize */
     const rl_pose *pose;        /* FRAME after a solve (the failed one too: n_dropped) */
@@ -117,7 +119,10 @@ typedef struct {
     uint64_t log_interval_us;   /* rate limit of repeated log lines (5 s) */
     double frame_interval;      /* > 0: frames this many seconds apart for the prior (files
                                    without capture times); 0: capture times (default) */
-    int alone;                  /* 1: each frame without the last pose as prior */
+    int alone;                  /* 1: each frame without the last pose as prior (and no
+                                   tracking windows) */
+    rl_track_config track;      /* tracking windows on a site that can localize: a full frame
+                                   every track.full_every (10); 0: every frame full */
 } rl_run_config;
 
 void rl_run_defaults(rl_run_config *c);
@@ -130,6 +135,8 @@ typedef struct {
     long local_used;            /* frames where the local pass identified a landmark */
     long ambiguous;             /* frames whose landmarks fit several places */
     long tracked;               /* poses found near the previous one */
+    long windowed;              /* frames read by tracking windows only */
+    long window_fallbacks;      /* frames whose windows failed or whose pose jumped: read in full */
 } rl_run_counts;
 
 /* Kinds of log line; each kind is printed at most once per log interval. */
@@ -156,6 +163,7 @@ typedef struct {
     int have_pose;
     rl_pose last_pose;
     uint64_t last_pose_us;
+    rl_track track;
     rl_run_counts counts;
 } rl_runner;
 

@@ -372,3 +372,9 @@ void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res)
     }
     res->n_unidentified = kept;
 }
+
+int rl_local_read(rl_recog *rec, const rl_image *img, const rl_result *res, const rl_detection *u, double R,
+                  rl_detection *out)
+{
+    return local_candidate(rec, img, res, u, R, ENCLOSER_REACH * R + ENCLOSER_SLACK_PX, out);
+}

@@ -23,4 +23,11 @@
  * to res->landmarks. */
 void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res);
 
+/* Read one window: the candidate u (its centre, radius, box, complete
+ * and visible; the landmark R px in radius) found again and identified
+ * as a DUCLR is (rl_locate, the search, the local rule); 1 with it in
+ * *out. The tracker's reads of predicted landmarks (rl_track.h). */
+int rl_local_read(rl_recog *rec, const rl_image *img, const rl_result *res, const rl_detection *u, double R,
+                  rl_detection *out);
+
 #endif

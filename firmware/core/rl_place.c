@@ -28,6 +28,8 @@ typedef struct {
     place best, second;
     int have_best, have_second, candidates;
     double gate;
+    /* when near_r > 0, only places within near_r of (near_x, near_y) count */
+    double near_x, near_y, near_r;
 } search;
 
 /* Detections on the ceiling, complete ones first, then nearest the image
@@ -135,6 +137,8 @@ static int same_place(const search *s, const place *a, const place *b)
 /* Keep the best place and the best of the other places. */
 static void consider(search *s, const place *p)
 {
+    if (s->near_r > 0 && hypot(p->x - s->near_x, p->y - s->near_y) > s->near_r)
+        return;
     if (!s->have_best || p->matched > s->best.matched) {
         if (s->have_best && !same_place(s, &s->best, p)) {
             s->second = s->best;
@@ -222,12 +226,18 @@ static void search_all(const rl_place *pl, const obs_set *o, search *s)
         }
 }
 
+/* How far the robot can have moved since the prior's pose, m. */
+static double prior_reach(const rl_place *pl, const rl_place_prior *pr)
+{
+    return pl->cfg.max_speed * pr->age + pl->cfg.gate;
+}
+
 /* Tracking: places within the prior's bound, from the map landmarks of
  * each id near where the prior puts the observations. */
 static void search_near(const rl_place *pl, const obs_set *o, const rl_place_prior *pr, search *s)
 {
     const rl_map *map = pl->map;
-    double R = pl->cfg.max_speed * pr->age + pl->cfg.gate, turn = pl->cfg.max_turn * pr->age + 0.02;
+    double R = prior_reach(pl, pr), turn = pl->cfg.max_turn * pr->age + 0.02;
     double c = cos(pr->yaw), sn = sin(pr->yaw);
     int near[TRACK_SEEDS][NEAR_MAX], cnt[TRACK_SEEDS], n = o->n < TRACK_SEEDS ? o->n : TRACK_SEEDS;
     int i, j, a, b, first = -1, far = -1;
@@ -304,6 +314,26 @@ static void report(const search *s, const obs_set *o, int status, rl_place_found
             f->match[o->det[k]] = s->best.match[k];
 }
 
+/* A place once found is kept: when neither the tracked search (a turn
+ * faster than max_turn, a brisk corner, leaves it no place) nor the
+ * whole map gives a clear place, the whole map's places are gated by
+ * the prior: one that lies within reach of the last pose (any heading)
+ * and leads every other place there, explaining the frame, is the only
+ * plausible one. 1 with it in *kept. */
+static int prior_kept(const rl_place *pl, const obs_set *o, const rl_place_prior *prior, const search *all,
+                      search *kept)
+{
+    if (prior == NULL || !prior->valid || prior->age < 0 || prior->age > pl->cfg.track_age || !all->have_best)
+        return 0;
+    memset(kept, 0, sizeof *kept);
+    kept->gate = pl->cfg.gate;
+    kept->near_x = prior->x;
+    kept->near_y = prior->y;
+    kept->near_r = prior_reach(pl, prior);
+    search_all(pl, o, kept);
+    return clear(kept, 2, 1) && explains(kept, o);
+}
+
 rl_err rl_place_find(const rl_place *pl, const rl_calib *cam, const rl_mount *mount, const rl_detection *lm, int n,
                      const rl_offsets *offsets, const rl_place_prior *prior, rl_place_found *found)
 {
@@ -343,6 +373,11 @@ rl_err rl_place_find(const rl_place *pl, const rl_calib *cam, const rl_mount *mo
     }
     if (have_tracked) {
         found->candidates = s.candidates; /* report adds the tracked search's */
+        report(&tracked, &o, RL_PLACE_TRACKED, found);
+        return RL_OK;
+    }
+    if (prior_kept(pl, &o, prior, &s, &tracked)) {
+        found->candidates += s.candidates;
         report(&tracked, &o, RL_PLACE_TRACKED, found);
         return RL_OK;
     }

@@ -26,7 +26,11 @@
  * near where the prior puts them, while the rest of the frame verifies
  * nowhere near, are a coincidence of a map whose ids repeat). Otherwise
  * (a robot carried elsewhere) the frame is searched as if there were no
- * prior.
+ * prior. A place once found is kept: when that search gives no clear
+ * place either (two landmarks verify at several places of the map) and
+ * the robot turned faster than max_turn (a corner taken briskly), the
+ * map's places are gated by the prior: the one within max_speed * age of
+ * it, at any heading, that leads every other there is taken (tracked).
  *
  *   static uint8_t mem[1 << 20];
  *   rl_place_config pc;

@@ -98,7 +98,8 @@ static rl_err http_section(rl_yaml *y, yaml_node_t *root, rl_runcfg *c, char *er
 }
 
 static const char *const serial_keys[] = {"device", "baud", NULL};
-static const char *const recognition_keys[] = {"local", "min_score", "local_min_score", "gamma", NULL};
+static const char *const recognition_keys[] = {"local", "min_score", "local_min_score", "gamma", "track_every",
+                                                NULL};
 
 /* What a file that leaves everything out says: the recognition's
  * settings from rl_recog_defaults, the PNG camera at 10 frames a second. */
@@ -113,6 +114,7 @@ static void runcfg_defaults(rl_runcfg *c)
     c->min_score = rd.min_score;
     c->local_min_score = rd.local_min_score;
     c->gamma = rd.gamma; /* auto */
+    c->track_every = 10;
     c->log_interval = 5.0;
     c->record_every = 10;
     c->record_max_mb = 1000;
@@ -132,7 +134,7 @@ static rl_err check_sections(rl_yaml *y, yaml_node_t *root, yaml_node_t *cam, ya
                             ser ? "expected {device, baud}" : "missing key");
     if (rec != NULL && rec->type != YAML_MAPPING_NODE)
         return rl_yaml_fail(y, rec, "recognition", RL_EFORMAT, err, errlen,
-                            "expected {local, min_score, local_min_score, gamma}");
+                            "expected {local, min_score, local_min_score, gamma, track_every}");
     if ((e = rl_yaml_only(y, root, NULL, top_keys, err, errlen)) != RL_OK ||
         (e = rl_yaml_only(y, cam, "camera", camera_keys, err, errlen)) != RL_OK ||
         (e = rl_yaml_only(y, ser, "serial", serial_keys, err, errlen)) != RL_OK ||
@@ -215,7 +217,7 @@ static rl_err record_section(rl_yaml *y, yaml_node_t *root, const char *path, rl
     return RL_OK;
 }
 
-/* recognition: {local, min_score, local_min_score, gamma}, optional */
+/* recognition: {local, min_score, local_min_score, gamma, track_every}, optional */
 static rl_err recognition_section(rl_yaml *y, yaml_node_t *rec, rl_runcfg *c, char *err, size_t errlen)
 {
     const char *s = NULL;
@@ -234,8 +236,12 @@ static rl_err recognition_section(rl_yaml *y, yaml_node_t *rec, rl_runcfg *c, ch
     }
     if ((e = score_key(y, rec, "min_score", "recognition.min_score", &c->min_score, err, errlen)) != RL_OK ||
         (e = score_key(y, rec, "local_min_score", "recognition.local_min_score", &c->local_min_score, err,
-                       errlen)) != RL_OK)
+                       errlen)) != RL_OK ||
+        (e = rl_yaml_int(y, rec, "track_every", "recognition.track_every", 0, &c->track_every, err, errlen)) != RL_OK)
         return e;
+    if (c->track_every < 0 || c->track_every > 1000)
+        return rl_yaml_fail(y, rl_yaml_get(y, rec, "track_every"), "recognition.track_every", RL_ERANGE, err,
+                            errlen, "must be 0 (every frame full) .. 1000");
     return gamma_key(y, rec, &c->gamma, err, errlen);
 }
 

@@ -29,6 +29,7 @@
 #include "bench_site.h"
 #include "bench_stages.h"
 #include "bench_stats.h"
+#include "bench_track.h"
 
 #define REPEAT 5
 #define MAX_FRAMES 256
@@ -284,12 +285,14 @@ int main(int argc, char **argv)
     if (argc < 2 || strcmp(argv[1], "--help") == 0) {
         fprintf(argc < 2 ? stderr : stdout,
                 "usage: ringloc-bench DIR... [--local GLARE_DIR] [--pose DRIVE_DIR] [--site SITE_DIR]\n"
-                "                     [--real PHOTO_DIR]\n"
+                "                     [--real PHOTO_DIR] [--track DIR:PREFIX]...\n"
                 "  DIR: twin frames from ringloc-render --twin; GLARE_DIR: its --set glare frames;\n"
                 "  DRIVE_DIR: a drive from ringloc-render --path (map, camera, robot files);\n"
                 "  SITE_DIR: a planned site (ringloc plan --area) and random_NNN.png frames under it\n"
                 "  (ringloc-render --site-map --path random);\n"
                 "  PHOTO_DIR: real ceiling photos (PNG) to place rings and AprilTag twins into\n"
+                "  DIR:PREFIX: an ordered drive, DIR/PREFIX*.png with map, camera and robot in DIR:\n"
+                "  tracked frames (rl_track.h) beside full ones, against the truth (docs/tracking.md)\n"
                 "Each set also gets a table of the recognizer's stages (histogram, labelling, CLRs,\n"
                 "global pass, tone reads, second labellings, local pass, reads across motion; pose\n"
                 "and place where there is a map): time per frame in us and in passes of one\n"
@@ -311,6 +314,18 @@ int main(int argc, char **argv)
         }
         if (strcmp(argv[i], "--site") == 0 && i + 1 < argc) {
             rc |= rl_bench_site(argv[++i]);
+            continue;
+        }
+        if (strcmp(argv[i], "--track") == 0 && i + 1 < argc) {
+            char dir[1024];
+            const char *colon = strrchr(argv[++i], ':');
+            if (colon == NULL || colon - argv[i] >= (long)sizeof dir) {
+                fprintf(stderr, "ringloc-bench: --track %s: expected DIR:PREFIX\n", argv[i]);
+                rc = 1;
+                continue;
+            }
+            snprintf(dir, sizeof dir, "%.*s", (int)(colon - argv[i]), argv[i]);
+            rc |= rl_bench_track(dir, colon + 1);
             continue;
         }
         if (strcmp(argv[i], "--pose") == 0 && i + 1 < argc) {

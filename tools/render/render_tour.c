@@ -32,6 +32,24 @@ void render_random_poses(const render_area *a, unsigned long seed, int n, render
     }
 }
 
+/* One frame of a drive: turn towards `want` by at most `turn`, then
+ * `step` ahead. */
+static void steer(double want, double turn, double step, double *x, double *y, double *yaw)
+{
+    double d = atan2(sin(want - *yaw), cos(want - *yaw));
+    *yaw += fmax(-turn, fmin(turn, d));
+    *x += step * cos(*yaw);
+    *y += step * sin(*yaw);
+}
+
+static void put_pose(double x, double y, double yaw, render_pose *p)
+{
+    p->x = x;
+    p->y = y;
+    p->yaw = atan2(sin(yaw), cos(yaw));
+    p->jumped = 0;
+}
+
 void render_edge(const render_area *a, unsigned long seed, int n, double step, render_pose *out)
 {
     uint64_t s = start(seed, 0x65646765ull);
@@ -41,15 +59,37 @@ void render_edge(const render_area *a, unsigned long seed, int n, double step, r
         if (k > 0) {
             /* head out of the site, then turn along its edge, weaving */
             double want = y > a->y0 - 0.75 ? -M_PI / 2 : 0.25 * sin(phase + 0.2 * k) + 0.6 * (a->y0 - 0.75 - y);
-            double d = atan2(sin(want - yaw), cos(want - yaw));
-            yaw += fmax(-0.25, fmin(0.25, d));
-            x += step * cos(yaw);
-            y += step * sin(yaw);
+            steer(want, 0.25, step, &x, &y, &yaw);
         }
-        out[k].x = x;
-        out[k].y = y;
-        out[k].yaw = atan2(sin(yaw), cos(yaw));
-        out[k].jumped = 0;
+        put_pose(x, y, yaw, &out[k]);
+    }
+}
+
+void render_corner(const render_area *a, unsigned long seed, int n, double step, render_pose *out)
+{
+    uint64_t s = start(seed, 0x636F726Eull);
+    double side = a->x1 + 0.75, below = a->y0 - 0.75, phase = uniform(&s, 0, 2 * M_PI);
+    double x = a->x1 - 4.5 + uniform(&s, -0.5, 0.5), y = a->y0 + 1.0, yaw = -M_PI / 2;
+    int k;
+    for (k = 0; k < n; k++) {
+        if (k > 0) {
+            /* out past the lower edge, along it, then round the corner
+             * and up along the side edge, weaving */
+            double weave = 0.25 * sin(phase + 0.2 * k), want, turn = 0.25;
+            if (y > below && x < side)
+                want = -M_PI / 2;
+            else if (x < side)
+                want = weave + 0.6 * (below - y);
+            else {
+                /* the corner taken briskly: up to 0.8 rad a frame (8 rad/s
+                 * at 10 frames a second), more than the place's tracking
+                 * bound allows (rl_place_config.max_turn) */
+                want = M_PI / 2 + weave - 0.6 * (side - x);
+                turn = 0.8;
+            }
+            steer(want, turn, step, &x, &y, &yaw);
+        }
+        put_pose(x, y, yaw, &out[k]);
     }
 }
 

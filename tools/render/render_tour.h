@@ -32,4 +32,10 @@ void render_tour(const render_area *a, unsigned long seed, int n, double step, r
  * weaving, so that frames show one row of two to four landmarks. */
 void render_edge(const render_area *a, unsigned long seed, int n, double step, render_pose *out);
 
+/* n poses of a drive round the site's lower right corner, step metres
+ * apart: from 1 m inside its lower edge out to 0.75 m beyond it, along it
+ * weaving, then round the corner and up 0.75 m beyond the right edge (x1):
+ * one row in view, then the corner taken briskly (up to 0.8 rad a frame). */
+void render_corner(const render_area *a, unsigned long seed, int n, double step, render_pose *out);
+
 #endif

@@ -97,9 +97,10 @@ static const char *help =
 static const char *help_sites =
     "  --site-map FILE a large site's map (ringloc plan --area; any size, ids repeated):\n"
     "                  frames under it with --path random (poses uniform over the\n"
-    "                  landmarks' extent, any heading) or --path tour (a drive over the\n"
-    "                  site, 0.1 m a frame, carried elsewhere halfway) or --path edge (a\n"
-    "                  drive out past the lower edge and along it: one row in view); its family,\n"
+    "                  landmarks' extent, any heading), --path tour (a drive over the\n"
+    "                  site, 0.1 m a frame, carried elsewhere halfway), --path edge (a\n"
+    "                  drive past the lower edge and along it) or --path corner (0.08 m\n"
+    "                  a frame, round the lower right corner); its family,\n"
     "                  diameter and ceiling height\n"
     "  --path stream   follow a simulated robot: poses in on standard input, one line\n"
     "                  each, 'T_US X Y YAW' (the pose's time in microseconds; m, m, rad\n"
@@ -411,8 +412,9 @@ static int plan_frames(const render_opts *o, const rl_site *site, render_plan *p
             return rl_cli_fail(NULL, 2, "--path: '%s' is not straight, rect, circle or survey", o->path);
         return 0;
     }
-    if (strcmp(o->path, "random") != 0 && strcmp(o->path, "tour") != 0 && strcmp(o->path, "edge") != 0)
-        return rl_cli_fail(NULL, 2, "--path: with --site-map, random, tour or edge ('%s')", o->path);
+    if (strcmp(o->path, "random") != 0 && strcmp(o->path, "tour") != 0 && strcmp(o->path, "edge") != 0 &&
+        strcmp(o->path, "corner") != 0)
+        return rl_cli_fail(NULL, 2, "--path: with --site-map, random, tour, edge or corner ('%s')", o->path);
     map_area(&site->map, &area);
     if ((p->poses = malloc(sizeof *p->poses * (size_t)(o->count > 0 ? o->count : 1))) == NULL)
         return rl_cli_fail(NULL, 1, "out of memory");
@@ -420,6 +422,8 @@ static int plan_frames(const render_opts *o, const rl_site *site, render_plan *p
         render_random_poses(&area, o->seed, o->count, p->poses);
     else if (strcmp(o->path, "edge") == 0)
         render_edge(&area, o->seed, o->count, 0.1, p->poses);
+    else if (strcmp(o->path, "corner") == 0)
+        render_corner(&area, o->seed, o->count, 0.08, p->poses);
     else
         render_tour(&area, o->seed, o->count, 0.1, p->poses);
     return 0;

@@ -1,0 +1,367 @@
+/* rl_track: tracking windows (rl_track.h). */
+#include "rl_track.h"
+
+#include <math.h>
+#include <string.h>
+#include "rl_filter.h"
+#include "rl_geom.h"
+#include "rl_global.h"
+#include "rl_local.h"
+#include "rl_pose_fit.h"
+#include "rl_recog_state.h"
+#include "rl_result.h"
+
+/* A landmark is whole for the windows when its disk, this much enlarged
+ * (the prediction's error), is in the frame. */
+#define WHOLE_MARGIN 1.2
+/* Landmarks predicted at least this much in view are kept: the frame's
+ * shift (read_windows) may bring them in. */
+#define PREDICT_MIN_VISIBLE 0.05
+
+void rl_track_defaults(rl_track_config *cfg)
+{
+    cfg->full_every = 10;
+    cfg->max_age = 0.5;
+    cfg->max_jump = 0.2;
+    cfg->max_jump_yaw = 0.35;
+    cfg->min_visible = 0.5;
+    cfg->max_shift = 1.0;
+    cfg->max_first_shift = 1.5;
+    cfg->max_reads = 0;
+    cfg->window_visible = 0.9;
+}
+
+void rl_track_init(rl_track *t, const rl_track_config *cfg)
+{
+    memset(t, 0, sizeof *t);
+    t->cfg = *cfg;
+}
+
+static double wrap(double a)
+{
+    return atan2(sin(a), cos(a));
+}
+
+/* The pose at t_s: the last one moved by the odometry, or by the last
+ * two poses' velocity. */
+static void predict_pose(rl_track *t, double t_s, const rl_track_motion *odom)
+{
+    double c = cos(t->yaw), s = sin(t->yaw), dt = t->t - t->pt;
+    t->ex = t->x;
+    t->ey = t->y;
+    t->eyaw = t->yaw;
+    if (odom != NULL) {
+        t->ex += c * odom->dx - s * odom->dy;
+        t->ey += s * odom->dx + c * odom->dy;
+        t->eyaw = wrap(t->yaw + odom->dyaw);
+    } else if (t->have_prev && dt > 0) {
+        double k = (t_s - t->t) / dt;
+        t->ex += k * (t->x - t->px);
+        t->ey += k * (t->y - t->py);
+        t->eyaw = wrap(t->yaw + k * wrap(t->yaw - t->pyaw));
+    }
+}
+
+/* How far from the camera's foot a landmark can be and still be in view:
+ * the farthest image corner's ray at the ceiling, and a landmark more. */
+static double view_reach(const rl_calib *cam, double Z, double diameter)
+{
+    double m = 0;
+    int k;
+    for (k = 0; k < 4; k++) {
+        double xn, yn;
+        rl_calib_unproject(cam, k & 1 ? cam->width - 1 : 0, k & 2 ? cam->height - 1 : 0, &xn, &yn);
+        if (hypot(xn, yn) > m)
+            m = hypot(xn, yn);
+    }
+    return 1.3 * m * Z + diameter;
+}
+
+/* Map landmark i's image centre and radius from the camera (Rc, C); 0
+ * when it is behind the camera. */
+static int project(const rl_calib *cam, const rl_pose_model *md, const double *Rc, const double *C,
+                   const rl_map *map, int i, rl_track_window *w)
+{
+    double X = map->lm[i].x, Y = map->lm[i].y, r = 0.5 * map->diameter, xn, yn, u1, v1, u2, v2;
+    if (!rl_pose_fit_predict(md, Rc, C, X, Y, &xn, &yn))
+        return 0;
+    rl_calib_project(cam, xn, yn, &w->u, &w->v);
+    if (!rl_pose_fit_predict(md, Rc, C, X + r, Y, &xn, &yn))
+        return 0;
+    rl_calib_project(cam, xn, yn, &u1, &v1);
+    if (!rl_pose_fit_predict(md, Rc, C, X, Y + r, &xn, &yn))
+        return 0;
+    rl_calib_project(cam, xn, yn, &u2, &v2);
+    w->radius = 0.5 * (hypot(u1 - w->u, v1 - w->v) + hypot(u2 - w->u, v2 - w->v));
+    w->visible = rl_geom_visible_in(cam->width, cam->height, w->u, w->v, w->radius);
+    w->index = i;
+    w->id = map->lm[i].id;
+    return 1;
+}
+
+static int is_whole(const rl_track_window *w, int W, int H)
+{
+    return rl_geom_disk_complete(W, H, w->u, w->v, WHOLE_MARGIN * w->radius);
+}
+
+/* The landmarks the predicted pose puts in view, into t->win; how many
+ * of them are whole. */
+static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mount, const rl_map *map)
+{
+    rl_pose_model md;
+    double q[RL_POSE_NQ] = {0}, Rc[9], C[3], reach;
+    int i, whole = 0;
+    rl_pose_fit_model(&md, mount, map->ceiling_height, 0.5 * map->diameter);
+    q[0] = t->ex;
+    q[1] = t->ey;
+    q[2] = t->eyaw;
+    rl_pose_fit_camera(&md, q, Rc, C);
+    reach = view_reach(cam, map->ceiling_height - C[2], map->diameter);
+    t->n = 0;
+    for (i = 0; i < map->count && t->n < RL_MAX_LANDMARKS; i++) {
+        rl_track_window *w = &t->win[t->n];
+        if (fabs(map->lm[i].x - C[0]) > reach || fabs(map->lm[i].y - C[1]) > reach ||
+            !project(cam, &md, Rc, C, map, i, w) || w->visible < PREDICT_MIN_VISIBLE)
+            continue;
+        whole += is_whole(w, cam->width, cam->height);
+        t->n++;
+    }
+    return whole;
+}
+
+/* The predictions reordered so that each next one lies farthest from
+ * those before it, the one nearest the image centre first: the first
+ * few reads span the frame (the pose from them is well conditioned). */
+static void order_spread(rl_track *t, double cu, double cv)
+{
+    int i, j;
+    for (i = 0; i < t->n; i++) {
+        int best = i;
+        double best_d = -HUGE_VAL;
+        for (j = i; j < t->n; j++) {
+            double d = i == 0 ? -hypot(t->win[j].u - cu, t->win[j].v - cv) : HUGE_VAL;
+            int k;
+            for (k = 0; k < i; k++)
+                d = fmin(d, hypot(t->win[j].u - t->win[k].u, t->win[j].v - t->win[k].v));
+            if (d > best_d) {
+                best_d = d;
+                best = j;
+            }
+        }
+        if (best != i) {
+            rl_track_window w = t->win[i];
+            t->win[i] = t->win[best];
+            t->win[best] = w;
+        }
+    }
+}
+
+int rl_track_plan(rl_track *t, const rl_calib *cam, const rl_mount *mount, const rl_map *map, double t_s,
+                  const rl_track_motion *odom)
+{
+    t->tracked = 0;
+    t->n = 0;
+    if (t->cfg.full_every <= 0 || t->full_next || !t->have || !t->have_levels ||
+        t->since_full + 1 >= t->cfg.full_every || !(t_s >= t->t) || t_s - t->t > t->cfg.max_age ||
+        cam == NULL || mount == NULL || map == NULL)
+        return 0;
+    predict_pose(t, t_s, odom);
+    if (predict_windows(t, cam, mount, map) < 2)
+        return 0;
+    order_spread(t, cam->cx, cam->cy);
+    return 1;
+}
+
+/* A window around prediction w, as the local pass takes a candidate. */
+static void window_candidate(const rl_track_window *w, int W, int H, rl_detection *u)
+{
+    memset(u, 0, sizeof *u);
+    u->id = -1;
+    u->u = w->u;
+    u->v = w->v;
+    u->radius = w->radius;
+    u->box.x0 = (int)floor(w->u - w->radius);
+    u->box.y0 = (int)floor(w->v - w->radius);
+    u->box.x1 = (int)ceil(w->u + w->radius);
+    u->box.y1 = (int)ceil(w->v + w->radius);
+    u->complete = rl_geom_disk_complete(W, H, w->u, w->v, w->radius);
+    u->visible = w->visible;
+    u->pass = RL_PASS_LOCAL;
+}
+
+/* A box read whose centre the refinement moved this far is read again
+ * from there (the prediction a few pixels off). */
+#define BOX_RETRY_PX 1.5
+
+/* The global pass's read of a candidate whose box is the disk of c
+ * (centre, radius): into *d; its id. */
+static int read_box(const rl_recog *rec, const rl_image *img, const rl_result *res, const rl_detection *c,
+                    rl_detection *d)
+{
+    rl_clr clr;
+    clr.box.x0 = (int)floor(c->u - c->radius);
+    clr.box.y0 = (int)floor(c->v - c->radius);
+    clr.box.x1 = (int)ceil(c->u + c->radius);
+    clr.box.y1 = (int)ceil(c->v + c->radius);
+    clr.shape = rl_shape_circle();
+    rl_global_read(rec, img, &clr, rec->tone, res, d);
+    return d->id;
+}
+
+/* 1 when read d names w's id within `shift` radii of w's place. */
+static int verifies(const rl_track_window *w, double shift, const rl_detection *d)
+{
+    return d->id == w->id && hypot(d->u - w->u, d->v - w->v) <= shift * w->radius;
+}
+
+/* 1 when the window of w reads its predicted id near the prediction
+ * (within `shift` radii; the read into *d): first as the global pass
+ * reads a candidate whose box is the predicted one (a whole landmark),
+ * else as the local pass reads one (its own window and threshold). */
+static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, const rl_track_window *w,
+                       double shift, const rl_result *res, rl_detection *d)
+{
+    rl_detection u;
+    window_candidate(w, img->width, img->height, &u);
+    if (u.complete && (read_box(rec, img, res, &u, d) == w->id ||
+                       (hypot(d->u - u.u, d->v - u.v) > BOX_RETRY_PX && read_box(rec, img, res, d, d) == w->id)) &&
+        verifies(w, shift, d))
+        return 1;
+    return w->visible >= t->cfg.window_visible && rl_local_read(rec, img, res, &u, w->radius, d) &&
+           verifies(w, shift, d);
+}
+
+/* How the reads so far moved from their predictions: a shift and a small
+ * turn about the image centre (the robot's rocking shifts every landmark
+ * alike, a heading error turns them), least squares over the reads. */
+typedef struct {
+    double cu, cv;               /* the turn's centre */
+    double n, x, y, q, du, dv, w; /* sums */
+} frame_shift;
+
+static void shift_add(frame_shift *f, const rl_track_window *w, const rl_detection *d)
+{
+    double x = w->u - f->cu, y = w->v - f->cv, du = d->u - w->u, dv = d->v - w->v;
+    f->n++;
+    f->x += x;
+    f->y += y;
+    f->q += x * x + y * y;
+    f->du += du;
+    f->dv += dv;
+    f->w += x * dv - y * du;
+}
+
+/* w moved as the reads so far say. */
+static void shift_apply(const frame_shift *f, rl_track_window *w)
+{
+    double x = w->u - f->cu, y = w->v - f->cv, spread, a = 0;
+    if (f->n == 0)
+        return;
+    spread = f->q - (f->x * f->x + f->y * f->y) / f->n;
+    if (f->n >= 2 && spread > 400.0) /* reads 20 px apart or more tell a turn */
+        a = (f->w + (f->y * f->du - f->x * f->dv) / f->n) / spread;
+    w->u += (f->du + a * f->y) / f->n - a * y;
+    w->v += (f->dv - a * f->x) / f->n + a * x;
+}
+
+/* The windows read, whole ones first: the first within max_first_shift
+ * radii of its prediction; each next one where the reads so far put it
+ * (frame_shift), within max_shift. Returns how many were read; *missed 1
+ * (and no more read) as soon as a whole one is missed. */
+static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_result *res, int *missed)
+{
+    frame_shift fs;
+    int pass, i, read = 0;
+    memset(&fs, 0, sizeof fs);
+    fs.cu = 0.5 * (img->width - 1);
+    fs.cv = 0.5 * (img->height - 1);
+    *missed = 0;
+    for (pass = 0; pass < 2; pass++)
+        for (i = 0; i < t->n; i++) {
+            rl_track_window w = t->win[i];
+            rl_detection d;
+            int whole = is_whole(&w, img->width, img->height);
+            if (whole != (pass == 0))
+                continue;
+            /* where the shift puts it: whole, or enough in view, there */
+            shift_apply(&fs, &w);
+            w.visible = rl_geom_visible_in(img->width, img->height, w.u, w.v, w.radius);
+            whole = is_whole(&w, img->width, img->height);
+            if (w.visible < t->cfg.min_visible)
+                continue;
+            if (t->cfg.max_reads > 0 && read >= t->cfg.max_reads)
+                return read; /* enough for the pose; the full frame reads the rest */
+            res->local_tried++;
+            if (!read_window(t, rec, img, &w, read ? t->cfg.max_shift : t->cfg.max_first_shift, res, &d) ||
+                !rl_result_add_landmark(res, &d)) {
+                if (whole) {
+                    *missed = 1; /* the prediction failed: the frame is read in full */
+                    return read;
+                }
+                continue;
+            }
+            shift_add(&fs, &t->win[i], &d);
+            read++;
+        }
+    return read;
+}
+
+rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result *res, int *ok)
+{
+    int read, missed;
+    if (t == NULL || rec == NULL || img == NULL || res == NULL || ok == NULL || !rl_image_valid(img) ||
+        img->width != rec->width || img->height != rec->height)
+        return RL_EINVAL;
+    *ok = 0;
+    rl_result_clear(res, rec->width, rec->height);
+    res->levels = t->levels;
+    res->gamma = rl_tones_gamma(&rec->tones);
+    read = read_windows(t, rec, img, res, &missed);
+    res->local_found = read;
+    rl_filter_sort(res);
+    *ok = missed == 0 && read >= 2;
+    if (*ok) {
+        t->tracked = 1;
+        t->since_full++;
+        t->frames_tracked++;
+    } else {
+        t->fallbacks++;
+    }
+    return RL_OK;
+}
+
+void rl_track_full(rl_track *t, const rl_result *res)
+{
+    t->tracked = 0;
+    t->since_full = 0;
+    t->full_next = 0;
+    t->levels = res->levels;
+    t->have_levels = res->levels.threshold > 0;
+    t->frames_full++;
+}
+
+int rl_track_pose(rl_track *t, const rl_pose *pose, double t_s)
+{
+    if (t->tracked && (pose == NULL || hypot(pose->x - t->ex, pose->y - t->ey) > t->cfg.max_jump ||
+                       fabs(wrap(pose->yaw - t->eyaw)) > t->cfg.max_jump_yaw)) {
+        t->tracked = 0;
+        t->fallbacks++;
+        return 1;
+    }
+    if (pose == NULL) {
+        t->full_next = 1;
+        t->have_prev = 0;
+        return 0;
+    }
+    t->px = t->x;
+    t->py = t->y;
+    t->pyaw = t->yaw;
+    t->pt = t->t;
+    t->have_prev = t->have;
+    t->x = pose->x;
+    t->y = pose->y;
+    t->yaw = pose->yaw;
+    t->t = t_s;
+    t->have = 1;
+    return 0;
+}

@@ -1,0 +1,132 @@
+/* rl_track: tracking windows, a frame read only where the map's landmarks
+ * must be.
+ *
+ * A robot does not see a new world every frame. From the last pose, the
+ * motion since (an odometry delta, or a constant velocity from the last
+ * two poses), the map, the camera and its mount, rl_track_plan predicts
+ * each map landmark's image centre, radius and id in the next frame
+ * (those entering across the border too). rl_track_read reads only there,
+ * the predictions in an order that spreads them over the frame: each as
+ * the global pass reads a candidate whose box is the prediction, else, for
+ * a landmark about whole, as the local pass reads one (a window with its
+ * own threshold, rl_local); a read is kept only when it names the
+ * predicted id within max_first_shift radii (the first) or max_shift
+ * radii (the next ones, their predictions moved by the shift and turn
+ * the reads so far show: a rocking robot). A full frame (rl_recog_run)
+ * instead: every full_every-th frame, with no recent pose, when a whole
+ * landmark's window is not read back (the same frame is then read in
+ * full), and when the pose jumps from its prediction (the robot carried).
+ * Landmarks cut by the border (less than window_visible in view), and
+ * those past max_reads, wait for the next full frame: no landmark a full
+ * frame reads is lost for longer than full_every frames, and no id is
+ * taken that the recognizer's own rules would not take.
+ *
+ * Allocation-free: the tracker is the caller's struct.
+ *
+ *   rl_track trk;
+ *   rl_track_config tc;
+ *   rl_mount mount;
+ *   rl_pose pose = {0};                            // the frame's pose, once solved
+ *   double t = 0.1;                                // the frame's time, s
+ *   int ok = 0, pose_ok = 0;
+ *   rl_mount_defaults(&mount, 0.88);
+ *   rl_track_defaults(&tc);                        // a full frame every 10th
+ *   rl_track_init(&trk, &tc);
+ *   if (rl_track_plan(&trk, &cam, &mount, &map, t, NULL) &&
+ *       rl_track_read(&trk, rec, &img, &res, &ok) == RL_OK && ok)
+ *       use(res.n_landmarks);                      // the windows' landmarks
+ *   else if (rl_recog_run(rec, &img, &res) == RL_OK)
+ *       rl_track_full(&trk, &res);
+ *   // ... the pose from res (pose_ok); a tracked frame whose pose jumped is read again:
+ *   if (rl_track_pose(&trk, pose_ok ? &pose : NULL, t) && rl_recog_run(rec, &img, &res) == RL_OK)
+ *       rl_track_full(&trk, &res);
+ */
+#ifndef RL_TRACK_H
+#define RL_TRACK_H
+
+#include "rl_calib.h"
+#include "rl_config.h"
+#include "rl_error.h"
+#include "rl_map.h"
+#include "rl_pose.h"
+#include "rl_recog.h"
+
+typedef struct {
+    int full_every;      /* a full frame at least every this many frames (10); 0: tracking off */
+    double max_age;      /* a last pose older than this is not tracked from, s (0.5) */
+    double max_jump;     /* a tracked frame's pose this far from its prediction is a jump, m (0.2) */
+    double max_jump_yaw; /* the same for the heading, rad (0.35) */
+    double min_visible;  /* landmarks predicted at least this much in the frame are read (0.5) */
+    int max_reads;       /* at most this many landmarks read per tracked frame, spread over
+                            the frame (the rest wait for the next full frame): a cap on a
+                            tracked frame's cost; 0 (default): every one in view */
+    double max_first_shift; /* the frame's first read may lie this many radii from its
+                               prediction (1.5: the robot's rocking moves the image) */
+    double max_shift;    /* the next ones, from their predictions moved as the reads so far
+                            moved, radii (1.0) */
+    double window_visible; /* a landmark at least this much in view that its box does not read
+                              is read in a window of its own (0.9: about whole ones; ones cut
+                              more wait for the full frame, whose local pass reads them) */
+} rl_track_config;
+
+/* The robot's motion since the last pose, in that pose's robot frame
+ * (odometry), m and rad. */
+typedef struct {
+    double dx, dy, dyaw;
+} rl_track_motion;
+
+/* One predicted landmark: its map entry, id, image centre and radius. */
+typedef struct {
+    int index, id;
+    double u, v, radius; /* px */
+    double visible;      /* fraction of its disk in the frame */
+} rl_track_window;
+
+typedef struct {
+    rl_track_config cfg;
+    int have, have_prev;          /* poses known */
+    double x, y, yaw, t;          /* the last pose and its time, s */
+    double px, py, pyaw, pt;      /* the one before */
+    double ex, ey, eyaw;          /* the pose predicted for this frame */
+    int since_full;               /* frames since the last full frame */
+    int full_next;                /* 1: the next frame is read in full */
+    int have_levels;
+    rl_levels levels;             /* the last full frame's levels */
+    int tracked;                  /* 1: this frame was read by windows */
+    int n;                        /* this frame's predictions */
+    rl_track_window win[RL_MAX_LANDMARKS];
+    long frames_tracked, frames_full, fallbacks; /* counts */
+} rl_track;
+
+/* Fill every field with its default. */
+void rl_track_defaults(rl_track_config *cfg);
+
+/* A tracker with no pose yet (its first frame is full). */
+void rl_track_init(rl_track *t, const rl_track_config *cfg);
+
+/* Whether the frame at time t_s (s) can be read by windows; if so its
+ * predictions are in t->win. odom: the motion since the last pose, or
+ * NULL for a constant velocity from the last two poses. 0 (read it in
+ * full) when tracking is off, a full frame is due, there is no recent
+ * pose, or fewer than two whole landmarks are predicted in view. */
+int rl_track_plan(rl_track *t, const rl_calib *cam, const rl_mount *mount, const rl_map *map, double t_s,
+                  const rl_track_motion *odom);
+
+/* Read the planned windows of img into res (cleared first; the last full
+ * frame's levels): the landmarks whose read names the predicted id within
+ * max_shift radii of the prediction. *ok = 1 when every whole landmark
+ * predicted was read back and at least two were; 0: the prediction failed,
+ * read the frame in full. RL_EINVAL for bad arguments or a frame of
+ * another size than rec's. */
+RL_CHECK rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result *res, int *ok);
+
+/* A full frame was read into res (the levels kept for the windows). */
+void rl_track_full(rl_track *t, const rl_result *res);
+
+/* The frame's pose (NULL: none) at time t_s: remembered for the next
+ * prediction. Returns 1 when the frame was read by windows and its pose
+ * jumped from the prediction (or it has none): the caller reads the same
+ * frame in full (and calls rl_track_full, then this again). */
+int rl_track_pose(rl_track *t, const rl_pose *pose, double t_s);
+
+#endif

@@ -1,0 +1,216 @@
+/* Issue 43: rl_track's predictions and decisions, judged by the renderer's
+ * truth and by hand.
+ *
+ *   test_track DIR     the site's corner_NNN frames (a level robot): from
+ *                      each frame's true pose, as the last pose of a robot
+ *                      standing still, every landmark the truth has at
+ *                      least half in view is predicted, with its id, within
+ *                      0.5 px of its true image centre (the renderer's own
+ *                      camera geometry) and 8% of its radius (the truth's
+ *                      is the pinhole one at the centre: the lens shrinks
+ *                      it off axis); a constant velocity from frames k-2,
+ *                      k-1 predicts frame k's centres within 3 px (median)
+ *                      and 10 px (90%): the brisk corner is the rest, where
+ *                      the windows miss and the frame is read in full
+ *   test_track         the decisions: a full frame every full_every-th, none
+ *                      tracked without a pose or after max_age, a pose
+ *                      that jumps sends the frame back to be read in full
+ */
+#include "rl_test.h"
+#include <math.h>
+#include "fixture_eval.h"
+#include "rl_site.h"
+#include "rl_track.h"
+
+static const char *dir;
+static rl_site site;
+
+static void load(void)
+{
+    static rl_site_folder held;
+    rl_site_files files;
+    char err[768];
+    rl_site_files_folder(&files, &held, dir);
+    if (rl_site_load(&site, &files, err, sizeof err) != RL_OK)
+        fail_msg("%s", err);
+}
+
+static int frame_truth(int k, truth *t)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/corner_%03d.yaml", dir, k);
+    return truth_load(path, t) == 0;
+}
+
+static rl_pose pose_of(const truth *t)
+{
+    rl_pose p;
+    memset(&p, 0, sizeof p);
+    p.x = t->robot_x;
+    p.y = t->robot_y;
+    p.yaw = t->robot_yaw;
+    return p;
+}
+
+/* The prediction of truth landmark j, or NULL. */
+static const rl_track_window *predicted(const rl_track *trk, const truth_landmark *l)
+{
+    int i;
+    for (i = 0; i < trk->n; i++)
+        if (trk->win[i].id == l->id && hypot(site.map.lm[trk->win[i].index].x - l->x,
+                                             site.map.lm[trk->win[i].index].y - l->y) < 1e-3)
+            return &trk->win[i];
+    return NULL;
+}
+
+/* The greatest error of the predictions of frame k's landmarks at least
+ * half in view, px (and radius, a fraction), each into err[*checked]: the
+ * tracker's last poses from frames a and b (a < 0: b twice, standing
+ * still), 0.1 s apart. */
+static void predict_errors(int a, int b, int k, double *centre, double *radius, int *checked, double *err)
+{
+    rl_track trk;
+    rl_track_config tc;
+    rl_result res;
+    truth ta, tb, tk;
+    rl_pose pa, pb;
+    int j;
+    if (!frame_truth(b, &tb) || !frame_truth(k, &tk) || (a >= 0 && !frame_truth(a, &ta)))
+        fail_msg("%s: frames %d, %d, %d: no truth", dir, a, b, k);
+    rl_track_defaults(&tc);
+    rl_track_init(&trk, &tc);
+    memset(&res, 0, sizeof res);
+    res.levels.threshold = 100; /* a full frame's levels, for the plan */
+    rl_track_full(&trk, &res);
+    pb = pose_of(&tb);
+    pa = a >= 0 ? pose_of(&ta) : pb;
+    assert_int_equal(rl_track_pose(&trk, &pa, 0.0), 0);
+    assert_int_equal(rl_track_pose(&trk, &pb, 0.1), 0);
+    if (!rl_track_plan(&trk, &site.calib, &site.mount, &site.map, a >= 0 ? 0.2 : 0.1, NULL))
+        return; /* fewer than two whole landmarks predicted */
+    for (j = 0; j < tk.n; j++) {
+        const truth_landmark *l = &tk.lm[j];
+        const rl_track_window *w = predicted(&trk, l);
+        if (l->visible < 0.5)
+            continue;
+        if (w == NULL)
+            fail_msg("frame %d: landmark %d at (%.1f, %.1f) not predicted", k, l->id, l->u, l->v);
+        *centre = fmax(*centre, hypot(w->u - l->u, w->v - l->v));
+        err[*checked] = hypot(w->u - l->u, w->v - l->v);
+        *radius = fmax(*radius, fabs(w->radius - l->radius) / l->radius);
+        (*checked)++;
+    }
+}
+
+static void predict_frame(int a, int b, int k, double *centre, double *radius, int *checked)
+{
+    static double unused[4096];
+    predict_errors(a, b, k, centre, radius, checked, unused);
+}
+
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static void predictions(void **state)
+{
+    static double err[4096];
+    double still = 0, still_r = 0, moving = 0, moving_r = 0;
+    int k, n_still = 0, n_moving = 0;
+    (void)state;
+    load();
+    for (k = 2; k < 144; k += 3) {
+        predict_frame(-1, k, k, &still, &still_r, &n_still);
+        predict_errors(k - 2, k - 1, k, &moving, &moving_r, &n_moving, err);
+    }
+    qsort(err, (size_t)n_moving, sizeof err[0], by_value);
+    printf("predicted %d landmarks from their frame's pose: centres within %.2f px, radii %.1f%%; "
+           "%d from the two frames before: median %.1f px, 90%% within %.1f px, all within %.1f px\n", n_still,
+           still, 100 * still_r, n_moving, err[n_moving / 2], err[n_moving * 9 / 10], moving);
+    assert_true(n_still >= 100);
+    assert_true(still <= 0.5);
+    assert_true(still_r <= 0.08);
+    assert_true(n_moving >= 100);
+    assert_true(err[n_moving / 2] <= 3.0);
+    assert_true(err[n_moving * 9 / 10] <= 10.0);
+}
+
+/* The decisions, by hand: frames 0.1 s apart on a robot standing still
+ * under a 3 x 3 grid of landmarks 0.5 m apart, right above the middle one. */
+static void decisions(void **state)
+{
+    static rl_map map;
+    rl_calib cam;
+    rl_mount mount;
+    rl_track trk;
+    rl_track_config tc;
+    rl_result res;
+    rl_pose p, jumped;
+    int i, planned = 0;
+    (void)state;
+    memset(&map, 0, sizeof map);
+    map.family.bits = 5;
+    map.diameter = 0.2;
+    map.ceiling_height = 2.75;
+    map.count = 9;
+    for (i = 0; i < 9; i++) {
+        map.lm[i].id = i + 1;
+        map.lm[i].x = 0.5 * (i % 3) - 0.5;
+        map.lm[i].y = 0.5 * (i / 3) - 0.5;
+    }
+    rl_calib_defaults(&cam, 640, 480, 70.0 * M_PI / 180.0);
+    rl_mount_defaults(&mount, 0.88);
+    rl_track_defaults(&tc);
+    rl_track_init(&trk, &tc);
+    memset(&res, 0, sizeof res);
+    memset(&p, 0, sizeof p);
+    /* no pose yet: no plan */
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.0, NULL), 0);
+    res.levels.threshold = 100;
+    rl_track_full(&trk, &res);
+    assert_int_equal(rl_track_pose(&trk, &p, 0.0), 0);
+    /* frames 1 .. 9 may be tracked, the 10th is full */
+    for (i = 1; i <= 9; i++) {
+        planned += rl_track_plan(&trk, &cam, &mount, &map, 0.1 * i, NULL);
+        assert_int_equal(trk.n, 9); /* the 3 x 3 grid, 0.5 m apart at 1.87 m: all in view */
+        trk.tracked = 1;             /* as rl_track_read does when the windows read back */
+        trk.since_full++;
+        assert_int_equal(rl_track_pose(&trk, &p, 0.1 * i), 0);
+    }
+    assert_int_equal(planned, 9);
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 1.0, NULL), 0);
+    rl_track_full(&trk, &res);
+    assert_int_equal(rl_track_pose(&trk, &p, 1.0), 0);
+    /* a pose 0.3 m from the prediction is a jump: the frame goes back */
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 1.1, NULL), 1);
+    trk.tracked = 1;
+    jumped = p;
+    jumped.x += 0.3;
+    assert_int_equal(rl_track_pose(&trk, &jumped, 1.1), 1);
+    /* ... and so does a frame read by windows with no pose */
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 1.1, NULL), 1);
+    trk.tracked = 1;
+    assert_int_equal(rl_track_pose(&trk, NULL, 1.1), 1);
+    /* a last pose older than max_age: no plan */
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 1.0 + tc.max_age + 0.05, NULL), 0);
+    /* tracking off */
+    tc.full_every = 0;
+    rl_track_init(&trk, &tc);
+    rl_track_full(&trk, &res);
+    assert_int_equal(rl_track_pose(&trk, &p, 0.0), 0);
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.1, NULL), 0);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc > 1) {
+        const struct CMUnitTest tests[] = {cmocka_unit_test(predictions)};
+        dir = argv[1];
+        return cmocka_run_group_tests(tests, NULL, NULL);
+    } else {
+        const struct CMUnitTest tests[] = {cmocka_unit_test(decisions)};
+        return cmocka_run_group_tests(tests, NULL, NULL);
+    }
+}

@@ -1,0 +1,219 @@
+#include "bench_track.h"
+#include "bench_stages.h"
+#include "bench_stats.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "rl_png.h"
+#include "rl_pngrun.h"
+#include "rl_site.h"
+
+#define FRAMES 512
+#define TRUTH_MAX 64
+#define POSE_TOLERANCE 0.05 /* m */
+#define CAPPED_READS 3      /* the third run: rl_track_config.max_reads */
+
+/* A frame's truth: the robot's place and the landmarks wholly in view. */
+typedef struct {
+    double x, y;
+    int n, id[TRUTH_MAX];
+    double u[TRUTH_MAX], v[TRUTH_MAX], r[TRUTH_MAX], visible[TRUTH_MAX];
+} truth;
+
+/* NAME.yaml of NAME.png; 0 when it cannot be read. */
+static int truth_read(const char *png, truth *t)
+{
+    char path[2100], line[512];
+    size_t len = strlen(png);
+    FILE *f;
+    int have = 0;
+    if (len < 4 || len > 2000)
+        return 0;
+    snprintf(path, sizeof path, "%.*s.yaml", (int)(len - 4), png);
+    if ((f = fopen(path, "r")) == NULL)
+        return 0;
+    t->n = 0;
+    while (fgets(line, sizeof line, f) != NULL) {
+        double X, Y;
+        int k = t->n;
+        have |= sscanf(line, "robot: {x: %lf, y: %lf", &t->x, &t->y) == 2;
+        if (k < TRUTH_MAX && sscanf(line, " - {id: %d, x: %lf, y: %lf, u: %lf, v: %lf, radius: %lf, visible: %lf",
+                                    &t->id[k], &X, &Y, &t->u[k], &t->v[k], &t->r[k], &t->visible[k]) == 7)
+            t->n++;
+    }
+    fclose(f);
+    return have;
+}
+
+/* One mode's figures over the drive. */
+typedef struct {
+    int frames, windows, fulls, whole, whole_read, ids, wrong_ids, posed, pose_right, pose_frames;
+    double us_all[FRAMES], us_win[FRAMES], us_full[FRAMES], unit[FRAMES], err[FRAMES];
+    int nerr;
+    long by_box, by_window; /* landmarks of windowed frames read as a box, as a window */
+} tally;
+
+typedef struct {
+    tally *t;
+    rl_bench_stages unit; /* the histogram pass, per frame */
+} sink;
+
+/* The truth landmark a detection lies on (within half its radius), or -1. */
+static int on_truth(const truth *t, const rl_detection *d)
+{
+    int k;
+    for (k = 0; k < t->n; k++)
+        if (hypot(t->u[k] - d->u, t->v[k] - d->v) < 0.5 * t->r[k])
+            return k;
+    return -1;
+}
+
+static void count_ids(tally *s, const truth *t, const rl_result *res)
+{
+    int i, k;
+    for (i = 0; i < res->n_landmarks; i++) {
+        k = on_truth(t, &res->landmarks[i]);
+        s->ids++;
+        s->wrong_ids += k < 0 || t->id[k] != res->landmarks[i].id;
+    }
+    for (k = 0; k < t->n; k++) {
+        if (t->visible[k] < 0.999)
+            continue;
+        s->whole++;
+        for (i = 0; i < res->n_landmarks; i++)
+            if (res->landmarks[i].id == t->id[k] && on_truth(t, &res->landmarks[i]) == k) {
+                s->whole_read++;
+                break;
+            }
+    }
+}
+
+static rl_err put(void *ctx, const rl_run_report *rep)
+{
+    sink *sk = (sink *)ctx;
+    tally *s = sk->t;
+    truth t;
+    int whole = 0, k;
+    if (s->frames >= FRAMES || !truth_read(rep->frame->name, &t))
+        return RL_OK;
+    rl_bench_stages_unit(&sk->unit, &rep->frame->img);
+    s->unit[s->frames] = sk->unit.unit_ns / sk->unit.units / 1000.0;
+    sk->unit.unit_ns = 0;
+    sk->unit.units = 0;
+    s->us_all[s->frames++] = rep->recog_us;
+    for (k = 0; k < rep->res->n_landmarks && rep->windows; k++)
+        s->by_box += rep->res->landmarks[k].pass == RL_PASS_GLOBAL;
+    for (k = 0; k < rep->res->n_landmarks && rep->windows; k++)
+        s->by_window += rep->res->landmarks[k].pass == RL_PASS_LOCAL;
+    if (rep->windows)
+        s->us_win[s->windows++] = rep->recog_us;
+    else
+        s->us_full[s->fulls++] = rep->recog_us;
+    count_ids(s, &t, rep->res);
+    for (k = 0; k < t.n; k++)
+        whole += t.visible[k] >= 0.999;
+    if (whole < 2)
+        return RL_OK;
+    s->pose_frames++;
+    if (rep->pose_err == RL_OK) {
+        double e = hypot(rep->pose->x - t.x, rep->pose->y - t.y);
+        s->posed++;
+        s->pose_right += e <= POSE_TOLERANCE;
+        s->err[s->nerr++] = e;
+    }
+    return RL_OK;
+}
+
+/* dir's frames named prefix*, in order (malloc'ed); their count. */
+static int drive_frames(const char *dir, const char *prefix, char ***out)
+{
+    char **paths, err[512];
+    int n = 0, k, i;
+    if (rl_png_list(dir, &paths, &k, err, sizeof err) != RL_OK) {
+        fprintf(stderr, "ringloc-bench: %s\n", err);
+        return -1;
+    }
+    *out = calloc((size_t)k + 1, sizeof **out);
+    for (i = 0; i < k && *out != NULL; i++) {
+        const char *base = strrchr(paths[i], '/');
+        base = base ? base + 1 : paths[i];
+        if (strncmp(base, prefix, strlen(prefix)) == 0 && n < FRAMES)
+            (*out)[n++] = strdup(paths[i]);
+    }
+    rl_png_list_free(paths, k);
+    return *out ? n : -1;
+}
+
+static void print_row(const char *what, int n, double *us, tally *s, int first)
+{
+    double u = rl_bench_median(s->unit, s->frames), m = n ? rl_bench_median(us, n) : 0;
+    printf("  %-16s %6d %10.1f %8.2f", what, n, m, u > 0 ? m / u : 0.0);
+    if (first)
+        printf("   %5d/%-5d %5d  %5d/%-5d %8.1f", s->whole_read, s->whole, s->wrong_ids, s->pose_right, s->pose_frames,
+               s->nerr ? 1000.0 * rl_bench_median(s->err, s->nerr) : 0.0);
+    printf("\n");
+}
+
+int rl_bench_track(const char *dir, const char *prefix)
+{
+    static rl_site site;
+    static rl_site_folder held;
+    static tally full, tracked, capped;
+    sink sk;
+    rl_site_files files;
+    rl_recog_config cfg;
+    rl_pngrun pr;
+    char **names = NULL, err[768];
+    int n, k;
+    rl_site_files_folder(&files, &held, dir);
+    rl_recog_defaults(&cfg);
+    if (rl_site_load(&site, &files, err, sizeof err) != RL_OK || rl_site_prepare(&site, &cfg, err, sizeof err) != RL_OK) {
+        fprintf(stderr, "ringloc-bench: %s\n", err);
+        return 1;
+    }
+    if ((n = drive_frames(dir, prefix, &names)) <= 0) {
+        fprintf(stderr, "ringloc-bench: %s: no %s*.png frames\n", dir, prefix);
+        rl_site_free(&site);
+        free(names);
+        return 1;
+    }
+    memset(&full, 0, sizeof full);
+    memset(&tracked, 0, sizeof tracked);
+    memset(&capped, 0, sizeof capped);
+    memset(&sk, 0, sizeof sk);
+    rl_pngrun_defaults(&pr, "bench");
+    pr.run.frame_interval = 0.1; /* a drive at 10 frames a second, as `locate` takes it */
+    pr.put = put;
+    pr.ctx = &sk;
+    sk.t = &full;
+    (void)rl_pngrun_files(&pr, &site, names, n);
+    rl_track_defaults(&pr.run.track);
+    sk.t = &tracked;
+    (void)rl_pngrun_files(&pr, &site, names, n);
+    pr.run.track.max_reads = CAPPED_READS;
+    sk.t = &capped;
+    (void)rl_pngrun_files(&pr, &site, names, n);
+    pr.run.track.max_reads = 0;
+    printf("track, %s/%s*.png (%d frames in order, 10 a second; a full frame every %d): median us per frame and\n"
+           "in whole-frame histogram passes (%.1f us, the same frames); whole landmarks read right, wrong ids,\n"
+           "poses within %.0f cm of the truth (frames with two whole landmarks), median pose error mm\n",
+           dir, prefix, n, pr.run.track.full_every, rl_bench_median(full.unit, full.frames), 100 * POSE_TOLERANCE);
+    printf("  %-16s %6s %10s %8s   %11s %5s  %11s %8s\n", "frames", "count", "us", "passes", "whole read", "wrong",
+           "poses", "err mm");
+    print_row("full (--no-track)", full.frames, full.us_all, &full, 1);
+    print_row("tracked: all", tracked.frames, tracked.us_all, &tracked, 1);
+    print_row("  by windows", tracked.windows, tracked.us_win, &tracked, 0);
+    printf("  (their landmarks: %ld read as the global pass reads a box, %ld as the local pass a window)\n",
+           tracked.by_box, tracked.by_window);
+    print_row("  in full", tracked.fulls, tracked.us_full, &tracked, 0);
+    print_row("tracked, 3 reads", capped.frames, capped.us_all, &capped, 1);
+    print_row("  by windows", capped.windows, capped.us_win, &capped, 0);
+    print_row("  in full", capped.fulls, capped.us_full, &capped, 0);
+    for (k = 0; k < n; k++)
+        free(names[k]);
+    free(names);
+    rl_site_free(&site);
+    return 0;
+}
