@@ -37,7 +37,7 @@ static void ellipse_twins(const rl_templates *tt, const rl_image *img, const rl_
 
 /* The candidate at (cx, cy, r) as an ellipse fitted to its outer edge
  * (perspective, the lens: a circle's profile smears its zones): its match
- * into *m, the span of light its contrast counts against into *span (not
+ * into *m (its zone twins not yet in m->second: ellipse_twins), the span of light its contrast counts against into *span (not
  * sector-normalized) and the ellipse into *e; 0 when the
  * edge is no such ellipse. */
 static int local_ellipse(const rl_recog *rec, const rl_image *img, const rl_result *res,
@@ -57,8 +57,6 @@ static int local_ellipse(const rl_recog *rec, const rl_image *img, const rl_resu
         return 0;
     rl_profile_gather_shaped(img, rec->tone, e->cx, e->cy, e->r, &e->shape, &p);
     rl_match_all(tt, &p, m);
-    if (m->id >= 0)
-        ellipse_twins(tt, img, rec->tone, e, m);
     rl_accept_levels_at(&rec->illum, &res->levels, e->cx, e->cy, &local);
     *span = rl_accept_span(&local, rec->tone, &p);
     return 1;
@@ -173,9 +171,22 @@ static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_resul
     rl_ellipse e;
     rl_match me;
     double span;
-    if (!local_ellipse(rec, img, res, rd->cx, rd->cy, rd->r, &e, &me, &span) ||
-        !local_accept(rule, &me, rec->width, rec->height, e.cx, e.cy, e.r, span))
+    int later;
+    if (!local_ellipse(rec, img, res, rd->cx, rd->cy, rd->r, &e, &me, &span))
         return 0;
+    /* a higher runner-up only lowers a lead whose runner-up is >= 0: a
+     * match the rule rejects without its twins' scores is rejected with
+     * them, and they are gathered only for one it takes */
+    later = me.second >= 0;
+    if (me.id >= 0 && !later)
+        ellipse_twins(&rec->templates, img, rec->tone, &e, &me);
+    if (!local_accept(rule, &me, rec->width, rec->height, e.cx, e.cy, e.r, span))
+        return 0;
+    if (me.id >= 0 && later) {
+        ellipse_twins(&rec->templates, img, rec->tone, &e, &me);
+        if (!local_accept(rule, &me, rec->width, rec->height, e.cx, e.cy, e.r, span))
+            return 0;
+    }
     rd->m = me;
     rd->cx = e.cx;
     rd->cy = e.cy;

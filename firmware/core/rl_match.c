@@ -100,12 +100,15 @@ void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m)
     }
 }
 
-/* Add column (id index i, blur b) of the table to a list. */
+/* Add column (id index i, blur b) of the table to a list (the table's
+ * layout as rl_match_all reads it: bin k of column c at k * stride + c). */
 static void list_add(const rl_templates *tt, int i, int b, rl_match_list *ls)
 {
+    const float *col = tt->table + (size_t)i * RL_BLUR_LEVELS + (size_t)b;
+    size_t stride = (size_t)tt->stride;
     int k;
     for (k = 0; k < RL_PROFILE_BINS; k++)
-        ls->table[k * RL_MATCH_BLOCK + ls->n] = rl_templates_bin(tt, i, b, k);
+        ls->table[k * RL_MATCH_BLOCK + ls->n] = col[(size_t)k * stride];
     ls->id[ls->n] = tt->ids[i];
     ls->blur[ls->n] = b;
     ls->n++;
@@ -137,6 +140,19 @@ void rl_match_list_score(const rl_match_list *ls, const rl_profile *p, rl_match 
         list_score(ls, &z, m);
 }
 
+/* 1 when every id of the table among ids has a whole block of columns
+ * from its first in the table (the kernel reads RL_MATCH_BLOCK of them). */
+static int ids_in_place(const rl_templates *tt, const int *ids, int n)
+{
+    int j;
+    for (j = 0; j < n; j++) {
+        int i = rl_templates_find(tt, ids[j]);
+        if (i >= 0 && i * RL_BLUR_LEVELS + RL_MATCH_BLOCK > tt->stride)
+            return 0;
+    }
+    return 1;
+}
+
 void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, int n, int blur,
                   rl_match *m)
 {
@@ -145,19 +161,22 @@ void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, i
     rl_match_list ls;
     if (!match_start(p, &z, m))
         return;
-    if (n == 1 && blur < 0) {
-        /* one id at every blur: its columns are side by side in the table,
-         * scored in place when a whole block fits there */
-        int i = rl_templates_find(tt, ids[0]), c0 = i * RL_BLUR_LEVELS;
-        if (i >= 0 && c0 + RL_MATCH_BLOCK <= tt->stride) {
-            int idv[RL_BLUR_LEVELS], bv[RL_BLUR_LEVELS];
-            for (b = 0; b < RL_BLUR_LEVELS; b++) {
-                idv[b] = ids[0];
-                bv[b] = b;
-            }
-            score_block(tt->table + c0, (size_t)tt->stride, RL_BLUR_LEVELS, idv, bv, &z, m);
-            return;
+    if (blur < 0 && ids_in_place(tt, ids, n)) {
+        /* each id at every blur: its columns are side by side in the
+         * table, scored there (the columns, and their order, as a list's) */
+        int bv[RL_BLUR_LEVELS];
+        for (b = 0; b < RL_BLUR_LEVELS; b++)
+            bv[b] = b;
+        for (j = 0; j < n; j++) {
+            int i = rl_templates_find(tt, ids[j]), idv[RL_BLUR_LEVELS];
+            if (i < 0)
+                continue;
+            for (b = 0; b < RL_BLUR_LEVELS; b++)
+                idv[b] = ids[j];
+            score_block(tt->table + (size_t)i * RL_BLUR_LEVELS, (size_t)tt->stride, RL_BLUR_LEVELS, idv, bv,
+                        &z, m);
         }
+        return;
     }
     ls.n = 0;
     for (j = 0; j < n; j++) {
