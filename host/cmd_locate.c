@@ -14,7 +14,7 @@ static const char *locate_help =
     "usage: ringloc locate --camera CAM.yaml --map MAP.yaml --robot ROBOT.yaml\n"
     "                      [--offsets OFFSETS.yaml] [--annotate OUT.png] [--size WxH]\n"
     "                      [--local auto|always|never] [--min-score 0.8]\n"
-    "                      [--interval 0.1 | --alone] [--no-track] IMAGE...\n\n"
+    "                      [--interval 0.1 | --alone] [--track] IMAGE...\n\n"
     "Recognize landmarks and compute the robot's pose (REP-103, map frame) for\n"
     "each image. Prints the detect JSON line with one more field:\n"
     "  \"pose\": {\"x\": 1.2034, \"y\": 0.5021, \"yaw\": 0.0312, \"landmarks_used\": 4,\n"
@@ -46,11 +46,11 @@ static const char *locate_help =
     "                   multiplies it): how far the robot can have moved\n"
     "  --alone          each image alone, no previous pose (images of different\n"
     "                   places or drives)\n"
-    "  --no-track       read every image in full; by default, once placed, an\n"
-    "                   image of the drive is read only in windows around where the\n"
-    "                   map's landmarks must be (\"track\": \"windows\"), every 10th\n"
-    "                   in full (\"full\"), and whenever a window misses or the pose\n"
-    "                   jumps (docs/tracking.md)\n";
+    "  --track          once placed, read an image of the drive only in windows\n"
+    "                   round where the map's landmarks must be (\"track\":\n"
+    "                   \"windows\"), every 10th in full (\"full\"), and whenever a\n"
+    "                   window misses or the pose jumps (docs/tracking.md); by\n"
+    "                   default (or --no-track) every image is read in full\n";
 
 
 typedef struct {
@@ -131,7 +131,7 @@ int rl_cmd_locate(int argc, char **argv)
         {"min-score", required_argument, 0, 's'}, {"gamma", required_argument, 0, 'Y'},
         {"size", required_argument, 0, 'z'},
         {"interval", required_argument, 0, 'i'}, {"alone", no_argument, 0, 'A'},
-        {"no-track", no_argument, 0, 'T'},
+        {"no-track", no_argument, 0, 'T'}, {"track", no_argument, 0, 'K'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     const char *C = "locate", *family = NULL;
     static rl_site site;
@@ -140,7 +140,7 @@ int rl_cmd_locate(int argc, char **argv)
     rl_pngrun pr;
     locate_sink l;
     long failed;
-    int c;
+    int c, track = 0;
     char err[768];
 
     memset(&l, 0, sizeof l);
@@ -149,7 +149,7 @@ int rl_cmd_locate(int argc, char **argv)
     rl_recog_defaults(&cfg);
     rl_pngrun_defaults(&pr, C);
     pr.run.frame_interval = 0.1;
-    rl_track_defaults(&pr.run.track); /* the images are a drive: tracked */
+    rl_track_defaults(&pr.run.track); /* used with --track */
     optind = 1;
     while ((c = rl_cli_getopt_recog(C, argc, argv, opts, &cfg, &family)) != -1) {
         switch (c) {
@@ -167,11 +167,14 @@ int rl_cmd_locate(int argc, char **argv)
                 return RL_EXIT_USAGE;
             break;
         case 'A': pr.run.alone = 1; break;
-        case 'T': pr.run.track.full_every = 0; break;
+        case 'T': track = 0; break;
+        case 'K': track = 1; break;
         case 'h': fputs(locate_help, stdout); return 0;
         default: return RL_EXIT_USAGE; /* rl_cli_getopt said why */
         }
     }
+    if (!track)
+        pr.run.track.full_every = 0; /* every image in full */
     if (!files.calibration || !files.map || !files.robot)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--camera, --map and --robot are required (see --help)");
     if (optind >= argc)

@@ -1,7 +1,7 @@
 #!/bin/sh
 # Issue 43: tracking windows against full frames on a rendered drive,
 # judged by the renderer's truth (NAME.yaml). `ringloc locate` over the
-# drive's frames in order, tracked (the default) and with --no-track:
+# drive's frames in order, tracked (--track) and with --no-track:
 # - tracked, no landmark is given a wrong id (each lies within half a
 #   radius of a truth landmark of its id);
 # - every whole landmark (its disk in the frame) a full frame reads is read in the tracked run's
@@ -20,7 +20,7 @@ n=$(wc -l <"$T/frames.txt")
 [ "$n" -ge 20 ] && ok || bad "only $n $P frames in $D"
 
 # shellcheck disable=SC2046 # one argument per frame
-"$R" locate --camera "$D/camera.yaml" --map "$D/map.yaml" --robot "$D/robot.yaml" \
+"$R" locate --track --camera "$D/camera.yaml" --map "$D/map.yaml" --robot "$D/robot.yaml" \
     $(cat "$T/frames.txt") >"$T/tracked.jsonl" 2>"$T/tracked.err"
 # shellcheck disable=SC2046
 "$R" locate --no-track --camera "$D/camera.yaml" --map "$D/map.yaml" --robot "$D/robot.yaml" \

@@ -114,7 +114,7 @@ static void runcfg_defaults(rl_runcfg *c)
     c->min_score = rd.min_score;
     c->local_min_score = rd.local_min_score;
     c->gamma = rd.gamma; /* auto */
-    c->track_every = 10;
+    c->track_every = 0; /* tracking windows are asked for (docs/tracking.md) */
     c->log_interval = 5.0;
     c->record_every = 10;
     c->record_max_mb = 1000;

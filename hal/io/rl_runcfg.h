@@ -23,8 +23,8 @@
  *     min_score: 0.80        # global pass
  *     local_min_score: 0.75  # local pass
  *     gamma: auto            # the camera's tone curve: auto, 2.2 (sRGB), 1 (linear)
- *     track_every: 10        # tracking windows between full frames: a full frame every
- *                            # this many (default 10); 0: every frame read in full
+ *     track_every: 0         # 0 (default): every frame read in full; N: tracking
+ *                            # windows between full frames, a full frame every N (10)
  *   log_interval: 5          # seconds between repeats of one kind of log line
  *   record:                  # optional: save frames while running
  *     dir: /var/lib/ringloc/drive
@@ -61,7 +61,7 @@ typedef struct {
     rl_local_policy local;
     double min_score, local_min_score;
     double gamma;          /* the camera's tone curve (rl_recog_config.gamma; 0: auto) */
-    int track_every;       /* tracking windows: a full frame every this many (10); 0: off */
+    int track_every;       /* tracking windows: a full frame every this many; 0 (default): off */
     double log_interval;
     char record_dir[512];       /* "" : no recording */
     int record_every;           /* default 10 */
