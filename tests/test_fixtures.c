@@ -31,8 +31,10 @@ static rl_heap_recog hr, hr_always;
  * and 94.3% for the worst id (300 frames, measured once: 99.4%, 99.0%, 88.8%, 93.4%); with
  * cut candidates tried down to 0.4 in the frame 94.3% cut (300: 91.0%; 30: 91.7%). A
  * sanitizer build renders other frames (30: 98.9%, 94.6%, 89.8%), so the guards stay under
- * both. */
-#define HELDOUT_COMPLETE 0.98
+ * both. Since zone twins that read as well under the other image formation are
+ * misses (issue 44): 150 frames 99.3%, 99.6%, 93.8%, worst id 91.4%; the sanitizer
+ * build's 30 frames 97.7% (170 of 174), 94.6%, 89.8%. */
+#define HELDOUT_COMPLETE 0.97
 #define HELDOUT_GLARE 0.90
 #define HELDOUT_BORDER 0.85
 #define HELDOUT_PER_ID 0.90
