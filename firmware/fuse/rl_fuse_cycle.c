@@ -8,6 +8,8 @@
 #include "rl_fuse_clock.h"
 
 #define KNOWN_SD_PERIODS 0.25 /* the envelope used once its time is known this well */
+#define KNOWN_SPAN 2.0        /* s of cycles seen first: a program's first reads come in a burst
+                                 (the packets queued while it connected), an envelope too late */
 #define LOST_RUN 2            /* reads in a row whole periods late, a cycle apart: lost */
 
 rl_err rl_fuse_cycle_init(rl_fuse_cycle *c, double period)
@@ -74,6 +76,6 @@ double rl_fuse_cycle_stamp(rl_fuse_cycle *c, double read)
     (void)rl_fuse_clock_stamp(&c->clock, (uint32_t)llround(fmod(c->k * c->period * 1e3, 4294967296.0)),
                               (uint16_t)c->k, 0, read, &t, &sd);
     c->k++;
-    c->known = sd <= KNOWN_SD_PERIODS * c->period;
+    c->known = sd <= KNOWN_SD_PERIODS * c->period && (c->clock.n - 1) * c->period >= KNOWN_SPAN - 1e-9;
     return given(c, c->known ? t : read, read);
 }

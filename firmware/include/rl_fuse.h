@@ -268,8 +268,9 @@ void rl_fuse_frame_from_msg(const rl_msg *m, double arrival, int baud, rl_fuse_f
  * number of cycles late, as closely as reads usually lie on the envelope
  * (a few ms), may be the packet after one lost on the line or a stall that
  * long: it is given its read time; when the next read is late too, the
- * cycles are counted in as lost. Until the envelope is known (a few
- * cycles) the read time is given as it is.
+ * cycles are counted in as lost. For the first 2 s of cycles (a program's
+ * first reads come in a burst) and until the envelope is known, the read
+ * time is given as it is.
  *
  *   static rl_fuse_cycle cy;
  *   rl_fuse_cycle_init(&cy, 0.1);         // ARCOS's 100 ms
