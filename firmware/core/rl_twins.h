@@ -35,6 +35,13 @@
  * let a twin come within 0.001-0.014 there, wrong ones gave it 0.009 to
  * 0.048; ISP pipelines and composites, docs/design.md). */
 #define RL_TWINS_TOLERANCE 0.006
+/* A landmark the formations disagree on keeps its id when its lead
+ * through the frame's curve passes the rule above with no twin through
+ * the other formation, and it leads its zone twins by this much read
+ * through any monotone curve (rl_rank: right reads the formations
+ * disagreed on led by 0.0046-0.0175 there, the wrong ids they caught by
+ * at most 0.0021, on the development sets: docs/results.md). */
+#define RL_TWINS_RANK_LEAD 0.005
 /* A landmark whose circle, read through the other formation, fits this
  * much worse than its read is not judged there (an ellipse the local pass
  * read in its shape fits a circle at 0.4-0.6; the misreads the rule is for
