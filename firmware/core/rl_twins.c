@@ -93,6 +93,19 @@ static int neighbours(const rl_recog *rec, int id, int *out)
     return n;
 }
 
+/* The ids d is judged against: its zone twins; for a local read (sector
+ * by sector, the centre searched) every other id of the table. */
+static int rivals(const rl_recog *rec, const rl_detection *d, int *out)
+{
+    int n = 0, i;
+    if (d->pass != RL_PASS_LOCAL)
+        return neighbours(rec, d->id, out);
+    for (i = 0; i < rec->templates.n; i++)
+        if (rec->templates.ids[i] != d->id)
+            out[n++] = rec->templates.ids[i];
+    return n;
+}
+
 /* Whether d keeps its id, from its lead over its best zone twin through
  * the other formation (other) and through the frame's curve (own): while
  * the twin leads by less than RL_TWINS_TOLERANCE through the other, and
@@ -106,7 +119,7 @@ static int keeps(const rl_detection *d, double other, double own)
 
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res)
 {
-    int i, kept = 0, twins[RL_MAX_BITS], n;
+    int i, kept = 0, twins[RL_MAX_IDS], n;
     for (i = 0; i < res->n_landmarks; i++) {
         rl_detection d = res->landmarks[i];
         double lead, own = 0, fit;
@@ -114,7 +127,7 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
          * clear of its twins; a local read's runner-up (sector-normalized)
          * does not say so */
         if ((d.pass == RL_PASS_GLOBAL && d.score - d.runner_up >= RL_TWINS_CLEAR) ||
-            (n = neighbours(rec, d.id, twins)) == 0) {
+            (n = rivals(rec, &d, twins)) == 0) {
             res->landmarks[kept++] = d;
             continue;
         }
