@@ -13,8 +13,8 @@
  * takes back: so the zone twins a formation makes cannot lead here.
  *
  *   rl_rank_order ord;
- *   rl_rank_sort(&p, &ord);                       // once per profile
- *   double s = rl_rank_score(&tt, &ord, i, blur); // per template
+ *   rl_rank_sort(&p, &ord);                    // once per profile
+ *   use(rl_rank_score(&tt, &ord, i, 0));       // per template: id tt.ids[i], blur 0
  */
 #ifndef RL_RANK_H
 #define RL_RANK_H
