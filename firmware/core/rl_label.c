@@ -159,32 +159,40 @@ static uint8_t band_span(int lo, int hi)
 }
 
 /* Each pixel's band width in span[0 .. width - 1] under its tile's
- * threshold (his, tiles of 1 << sh); 0 when every band is empty (the
- * tile row has nothing to label), else 1. */
-static int tile_spans(uint8_t *span, int width, int lo, const uint8_t *his, int sh)
+ * threshold (his, tiles of 1 << sh), and the pixels from the first tile
+ * with a band to the end of the last in [*xa, *xb) (a second labelling's
+ * few marked tiles: the rest of the row holds no run); 0 when every band
+ * is empty (the tile row has nothing to label), else 1. */
+static int tile_spans(uint8_t *span, int width, int lo, const uint8_t *his, int sh, int *xa, int *xb)
 {
-    int x, t, any = 0;
+    int x, t;
+    *xa = width;
+    *xb = 0;
     for (t = 0, x = 0; x < width; t++) {
         int end = (t + 1) << sh;
         uint8_t w = band_span(lo, his[t]);
         end = end < width ? end : width;
         memset(span + x, w, (size_t)(end - x));
-        any |= w;
+        if (w != 0) {
+            *xa = *xa < x ? *xa : x;
+            *xb = end;
+        }
         x = end;
     }
-    return any != 0;
+    return *xb > *xa;
 }
 
-/* Row y's runs appended from *n on, each joined with the previous row's
- * (prev_start .. prev_end - 1) it touches. RL_ELIMIT past cap_runs. */
-static rl_err row_runs(rl_label *lb, const uint8_t *row, int width, int lo, int all, int *n,
+/* Row y's runs in pixels xa .. width - 1 (none before xa) appended from
+ * *n on, each joined with the previous row's (prev_start .. prev_end - 1)
+ * it touches. RL_ELIMIT past cap_runs. */
+static rl_err row_runs(rl_label *lb, const uint8_t *row, int xa, int width, int lo, int all, int *n,
                        int prev_start, int prev_end)
 {
     int x, j = prev_start, open = -1;
     rl_err e;
     if (all)
         return add_run(lb, 0, width - 1, n, &j, prev_end);
-    for (x = 0; x < width; x += CHUNK) {
+    for (x = xa; x < width; x += CHUNK) {
         int len = width - x < CHUNK ? width - x : CHUNK, pos = 0;
         uint64_t bits = chunk_bits(row + x, lb->span + x, lo, len);
         while (pos < len) {
@@ -211,7 +219,7 @@ static rl_err row_runs(rl_label *lb, const uint8_t *row, int width, int lo, int 
  * counted, not labelled. */
 static void collect_runs(rl_label *lb, const rl_image *img, int lo, int hi, const rl_label_map *map)
 {
-    int y, n = 0, prev_start = 0, prev_end = 0, sh = 0, live = 1;
+    int y, n = 0, prev_start = 0, prev_end = 0, sh = 0, live = 1, xa = 0, xb = img->width;
     int all = map == NULL && lo == 0 && hi >= 256; /* every pixel in the band */
     while (map && (1 << sh) < map->tile)
         sh++;
@@ -222,13 +230,13 @@ static void collect_runs(rl_label *lb, const rl_image *img, int lo, int hi, cons
         int start = n;
         if (map && (y & ((1 << sh) - 1)) == 0)
             live = tile_spans(lb->span, img->width, lo,
-                              map->hi + (size_t)(y >> sh) * (size_t)map->nx, sh);
+                              map->hi + (size_t)(y >> sh) * (size_t)map->nx, sh, &xa, &xb);
         lb->row[y] = n;
         if (!live) { /* a tile row with every band empty: no runs */
             prev_start = prev_end = n;
             continue;
         }
-        if (row_runs(lb, row, img->width, lo, all, &n, prev_start, prev_end) != RL_OK) {
+        if (row_runs(lb, row, xa, xb, lo, all, &n, prev_start, prev_end) != RL_OK) {
             /* out of runs (a frame of noise or a fine pattern): the rows
              * before this one are labelled, this one and the rest are left
              * out and counted */
