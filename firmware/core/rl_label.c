@@ -46,6 +46,12 @@ rl_err rl_label_init(rl_label *lb, rl_ws *ws, int width, int height, int cap_run
 #if defined(__GNUC__) && !defined(RL_NO_VECTOR_EXT)
 #define LABEL_VECTORS 1
 typedef uint8_t label_v16 __attribute__((vector_size(16)));
+#if defined(__SSE2__)
+/* x86: a whole chunk's tests straight into its bits (the sign bits of 16
+ * bytes at a time), no bytes to pack */
+#include <emmintrin.h>
+#define LABEL_MOVEMASK 1
+#endif
 #endif
 
 /* Eight bytes, each 0 or with its low bit set, as eight bits (byte i:
@@ -77,12 +83,34 @@ static int trailing_zeros(uint64_t w) /* w != 0 */
 #endif
 }
 
+#ifdef LABEL_MOVEMASK
+/* chunk_bits of a whole chunk: (row[i] - lo) mod 256 < span[i] is
+ * not max(row[i] - lo, span[i]) == row[i] - lo, bytes unsigned. */
+static uint64_t whole_chunk_bits(const uint8_t *row, const uint8_t *span, int lo)
+{
+    const __m128i l = _mm_set1_epi8((char)lo);
+    uint64_t bits = 0;
+    int i;
+    for (i = 0; i < CHUNK; i += 16) {
+        __m128i d = _mm_sub_epi8(_mm_loadu_si128((const __m128i *)(const void *)(row + i)), l);
+        __m128i sp = _mm_loadu_si128((const __m128i *)(const void *)(span + i));
+        unsigned ge = (unsigned)_mm_movemask_epi8(_mm_cmpeq_epi8(_mm_max_epu8(d, sp), d));
+        bits |= (uint64_t)(ge ^ 0xffffu) << i;
+    }
+    return bits;
+}
+#endif
+
 /* Bit i set when lo <= row[i] < lo + span[i], for i < n <= CHUNK. */
 static uint64_t chunk_bits(const uint8_t *row, const uint8_t *span, int lo, int n)
 {
     uint8_t in[CHUNK];
     uint64_t bits = 0;
     int i = 0;
+#ifdef LABEL_MOVEMASK
+    if (n == CHUNK)
+        return whole_chunk_bits(row, span, lo);
+#endif
 #ifdef LABEL_VECTORS
     label_v16 any = {0};
     uint64_t half[2];
