@@ -104,7 +104,7 @@ static void board_clock(const fs_scenario *sc, double t, int order, int order_at
     double c = after ? (t - sc->restart_at) * rate : CLOCK0 + t * rate;
     if (sc->from_clock == 0 && !after)
         c = t; /* the capture on the controller's clock (ringloc fuse without --arrivals) */
-    m->time_ms = (uint32_t)lround(c * 1e3);
+    m->time_ms = (uint32_t)floor(c * 1e3); /* as the firmware does (rl_packet_sink) */
     m->seq = (uint16_t)(after ? order - order_at_restart : order);
 }
 

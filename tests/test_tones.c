@@ -140,6 +140,59 @@ static void test_the_other_formation_is_always_at_hand(void **state)
     assert_true(fabs(o->light[128] - RL_TONE_MAX * 128.0 / 255.0) < 0.01);
 }
 
+/* The vote of a frame (a copy of ts) whose curves identify cur and other:
+ * what it returns, the curve it leaves current and its votes. */
+static void vote_of(const rl_tones *ts, int cur, int other, int *ret, int *current, double *votes)
+{
+    rl_tones t = *ts;
+    int which[RL_TONES_MAX], found[RL_TONES_MAX], n = rl_tones_to_try(&t, which), k;
+    for (k = 0; k < n; k++)
+        found[k] = which[k] == t.current ? cur : other;
+    *ret = which[rl_tones_vote(&t, which, n, found)];
+    *current = t.current;
+    votes[0] = t.votes[0];
+    votes[1] = t.votes[1];
+}
+
+/* A read through the other curve stopped where rl_tones_decided says it
+ * may votes as every way the rest of it could have gone: checked against
+ * rl_tones_vote itself from a fresh state, one where the other curve is
+ * a vote short of taking over, and one settled on the current curve. */
+static void test_a_decided_read_votes_as_the_whole_read(void **state)
+{
+    rl_tones start[3];
+    int s, cur, other, left, rest, i;
+    (void)state;
+    for (s = 0; s < 3; s++)
+        rl_tones_init(&start[s], 0.0);
+    for (i = 0; i < 2; i++)
+        frame(&start[1], 3, 4); /* the other leads by 1.9 votes */
+    for (i = 0; i < 15; i++)
+        frame(&start[2], 7, 7);
+    /* by hand: five left after none of five through the other can at most
+     * tie; six left could lead; two more than the current is clear */
+    assert_true(rl_tones_decided(5, 0, 5));
+    assert_false(rl_tones_decided(5, 0, 6));
+    assert_true(rl_tones_decided(3, 5, 4));
+    assert_false(rl_tones_decided(3, 4, 4));
+    for (s = 0; s < 3; s++)
+        for (cur = 0; cur <= 6; cur++)
+            for (other = 0; other <= 8; other++)
+                for (left = 0; left <= 6; left++) {
+                    int r0, c0, r1, c1;
+                    double v0[2], v1[2];
+                    if (!rl_tones_decided(cur, other, left))
+                        continue;
+                    vote_of(&start[s], cur, other, &r0, &c0, v0);
+                    for (rest = 0; rest <= left; rest++) {
+                        vote_of(&start[s], cur, other + rest, &r1, &c1, v1);
+                        assert_int_equal(r0, r1);
+                        assert_int_equal(c0, c1);
+                        assert_true(v0[0] == v1[0] && v0[1] == v1[1]);
+                    }
+                }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -150,6 +203,7 @@ int main(void)
         cmocka_unit_test(test_a_tie_between_holds_the_current_curve),
         cmocka_unit_test(test_a_configured_curve_is_the_only_one),
         cmocka_unit_test(test_the_other_formation_is_always_at_hand),
+        cmocka_unit_test(test_a_decided_read_votes_as_the_whole_read),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

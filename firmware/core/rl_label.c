@@ -46,6 +46,12 @@ rl_err rl_label_init(rl_label *lb, rl_ws *ws, int width, int height, int cap_run
 #if defined(__GNUC__) && !defined(RL_NO_VECTOR_EXT)
 #define LABEL_VECTORS 1
 typedef uint8_t label_v16 __attribute__((vector_size(16)));
+#if defined(__SSE2__)
+/* x86: a whole chunk's tests straight into its bits (the sign bits of 16
+ * bytes at a time), no bytes to pack */
+#include <emmintrin.h>
+#define LABEL_MOVEMASK 1
+#endif
 #endif
 
 /* Eight bytes, each 0 or with its low bit set, as eight bits (byte i:
@@ -77,12 +83,34 @@ static int trailing_zeros(uint64_t w) /* w != 0 */
 #endif
 }
 
+#ifdef LABEL_MOVEMASK
+/* chunk_bits of a whole chunk: (row[i] - lo) mod 256 < span[i] is
+ * not max(row[i] - lo, span[i]) == row[i] - lo, bytes unsigned. */
+static uint64_t whole_chunk_bits(const uint8_t *row, const uint8_t *span, int lo)
+{
+    const __m128i l = _mm_set1_epi8((char)lo);
+    uint64_t bits = 0;
+    int i;
+    for (i = 0; i < CHUNK; i += 16) {
+        __m128i d = _mm_sub_epi8(_mm_loadu_si128((const __m128i *)(const void *)(row + i)), l);
+        __m128i sp = _mm_loadu_si128((const __m128i *)(const void *)(span + i));
+        unsigned ge = (unsigned)_mm_movemask_epi8(_mm_cmpeq_epi8(_mm_max_epu8(d, sp), d));
+        bits |= (uint64_t)(ge ^ 0xffffu) << i;
+    }
+    return bits;
+}
+#endif
+
 /* Bit i set when lo <= row[i] < lo + span[i], for i < n <= CHUNK. */
 static uint64_t chunk_bits(const uint8_t *row, const uint8_t *span, int lo, int n)
 {
     uint8_t in[CHUNK];
     uint64_t bits = 0;
     int i = 0;
+#ifdef LABEL_MOVEMASK
+    if (n == CHUNK)
+        return whole_chunk_bits(row, span, lo);
+#endif
 #ifdef LABEL_VECTORS
     label_v16 any = {0};
     uint64_t half[2];
@@ -159,32 +187,40 @@ static uint8_t band_span(int lo, int hi)
 }
 
 /* Each pixel's band width in span[0 .. width - 1] under its tile's
- * threshold (his, tiles of 1 << sh); 0 when every band is empty (the
- * tile row has nothing to label), else 1. */
-static int tile_spans(uint8_t *span, int width, int lo, const uint8_t *his, int sh)
+ * threshold (his, tiles of 1 << sh), and the pixels from the first tile
+ * with a band to the end of the last in [*xa, *xb) (a second labelling's
+ * few marked tiles: the rest of the row holds no run); 0 when every band
+ * is empty (the tile row has nothing to label), else 1. */
+static int tile_spans(uint8_t *span, int width, int lo, const uint8_t *his, int sh, int *xa, int *xb)
 {
-    int x, t, any = 0;
+    int x, t;
+    *xa = width;
+    *xb = 0;
     for (t = 0, x = 0; x < width; t++) {
         int end = (t + 1) << sh;
         uint8_t w = band_span(lo, his[t]);
         end = end < width ? end : width;
         memset(span + x, w, (size_t)(end - x));
-        any |= w;
+        if (w != 0) {
+            *xa = *xa < x ? *xa : x;
+            *xb = end;
+        }
         x = end;
     }
-    return any != 0;
+    return *xb > *xa;
 }
 
-/* Row y's runs appended from *n on, each joined with the previous row's
- * (prev_start .. prev_end - 1) it touches. RL_ELIMIT past cap_runs. */
-static rl_err row_runs(rl_label *lb, const uint8_t *row, int width, int lo, int all, int *n,
+/* Row y's runs in pixels xa .. width - 1 (none before xa) appended from
+ * *n on, each joined with the previous row's (prev_start .. prev_end - 1)
+ * it touches. RL_ELIMIT past cap_runs. */
+static rl_err row_runs(rl_label *lb, const uint8_t *row, int xa, int width, int lo, int all, int *n,
                        int prev_start, int prev_end)
 {
     int x, j = prev_start, open = -1;
     rl_err e;
     if (all)
         return add_run(lb, 0, width - 1, n, &j, prev_end);
-    for (x = 0; x < width; x += CHUNK) {
+    for (x = xa; x < width; x += CHUNK) {
         int len = width - x < CHUNK ? width - x : CHUNK, pos = 0;
         uint64_t bits = chunk_bits(row + x, lb->span + x, lo, len);
         while (pos < len) {
@@ -211,7 +247,7 @@ static rl_err row_runs(rl_label *lb, const uint8_t *row, int width, int lo, int 
  * counted, not labelled. */
 static void collect_runs(rl_label *lb, const rl_image *img, int lo, int hi, const rl_label_map *map)
 {
-    int y, n = 0, prev_start = 0, prev_end = 0, sh = 0, live = 1;
+    int y, n = 0, prev_start = 0, prev_end = 0, sh = 0, live = 1, xa = 0, xb = img->width;
     int all = map == NULL && lo == 0 && hi >= 256; /* every pixel in the band */
     while (map && (1 << sh) < map->tile)
         sh++;
@@ -222,13 +258,13 @@ static void collect_runs(rl_label *lb, const rl_image *img, int lo, int hi, cons
         int start = n;
         if (map && (y & ((1 << sh) - 1)) == 0)
             live = tile_spans(lb->span, img->width, lo,
-                              map->hi + (size_t)(y >> sh) * (size_t)map->nx, sh);
+                              map->hi + (size_t)(y >> sh) * (size_t)map->nx, sh, &xa, &xb);
         lb->row[y] = n;
         if (!live) { /* a tile row with every band empty: no runs */
             prev_start = prev_end = n;
             continue;
         }
-        if (row_runs(lb, row, img->width, lo, all, &n, prev_start, prev_end) != RL_OK) {
+        if (row_runs(lb, row, xa, xb, lo, all, &n, prev_start, prev_end) != RL_OK) {
             /* out of runs (a frame of noise or a fine pattern): the rows
              * before this one are labelled, this one and the rest are left
              * out and counted */

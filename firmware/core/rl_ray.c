@@ -22,8 +22,10 @@ int rl_ray_inside(const rl_image *img, double x0, double y0, double x1, double y
            x1 < img->width - 1 && y0 < img->height - 1 && y1 < img->height - 1;
 }
 
-int rl_ray_sample(const rl_image *img, const rl_tone *tone, double x, double y, double dx,
-                  double dy, int n, int light, float *out)
+/* rl_ray_sample's loop; inlined twice, once with light 256, where the
+ * compiler drops the four tests a sample (a byte is never 256). */
+static inline int sample_ray(const rl_image *img, const rl_tone *tone, double x, double y, double dx,
+                             double dy, int n, int light, float *out)
 {
     float fx0 = (float)x, fy0 = (float)y, fdx = (float)dx, fdy = (float)dy;
     int i, st = img->stride;
@@ -41,4 +43,12 @@ int rl_ray_sample(const rl_image *img, const rl_tone *tone, double x, double y, 
         out[i] = top + fy * (bot - top);
     }
     return 1;
+}
+
+int rl_ray_sample(const rl_image *img, const rl_tone *tone, double x, double y, double dx,
+                  double dy, int n, int light, float *out)
+{
+    if (light > 255)
+        return sample_ray(img, tone, x, y, dx, dy, n, 256, out);
+    return sample_ray(img, tone, x, y, dx, dy, n, light, out);
 }

@@ -187,25 +187,46 @@ static int analyse_histogram(const rl_image *img, const rl_tone *tone, rl_result
 
 /* Read the outer CLRs (a CLR inside another's box of the same batch is an
  * inner ring; rl_split leaves out the code rings of a batch read before)
- * through tone t: into res when `into` (landmarks and unidentified),
- * else only counted. Returns how many are identified. */
-static int read_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n, int t, int into,
-                     rl_result *res)
+ * through tone t into res (landmarks and unidentified). Returns how many
+ * are identified; the outer ones' count into *outer when outer is not
+ * NULL. */
+static int read_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n, int t, rl_result *res,
+                     int *outer)
 {
-    int i, found = 0;
+    int i, found = 0, seen = 0;
     for (i = 0; i < n; i++) {
         rl_detection d;
         if (rl_clr_is_inner(cand, n, i))
             continue;
+        seen++;
         rl_global_read(rec, img, &cand[i], &rec->tones.tone[t], res, &d);
         found += d.id >= 0;
-        if (!into)
-            continue;
         res->n_candidates++;
         if (d.id >= 0)
             rl_result_add_landmark(res, &d);
         else
             rl_result_add_unidentified(res, &d);
+    }
+    if (outer != NULL)
+        *outer = seen;
+    return found;
+}
+
+/* The tone reads: the n_outer outer CLRs counted through tone t, the
+ * current curve having identified `current` of them; the reads stop once
+ * the rest cannot change the vote (rl_tones_decided), and the count so far
+ * is returned. */
+static int count_other(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n, int t, int current,
+                       int n_outer, const rl_result *res)
+{
+    int i, found = 0, left = n_outer;
+    for (i = 0; i < n && !rl_tones_decided(current, found, left); i++) {
+        rl_detection d;
+        if (rl_clr_is_inner(cand, n, i))
+            continue;
+        left--;
+        rl_global_read(rec, img, &cand[i], &rec->tones.tone[t], res, &d);
+        found += d.id >= 0;
     }
     return found;
 }
@@ -237,7 +258,9 @@ static void undo_reads(rl_result *res, const reads_mark *m)
  * the configured one, or, while it is being learned, the one the frame's
  * landmarks read best through (rl_tones.h). The current curve is read
  * into res (the global pass); while the curve is open the other is read
- * too, counting only (the tone reads), and only when the vote takes the
+ * too, counting only (the tone reads) and only until the rest of its
+ * reads could not change the vote (rl_tones_decided: on most frames once
+ * it has missed as many as the current curve), and only when the vote takes the
  * other for this frame (seldom) are the current curve's reads taken back
  * and the other's read into res: two reads of a frame's candidates while
  * the curve is open (three at most), one after. */
@@ -245,18 +268,18 @@ static int identify_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand,
                           rl_result *res)
 {
     const rl_stage_hook *hook = &rec->cfg.stage_hook;
-    int which[RL_TONES_MAX], found[RL_TONES_MAX], nt = rl_tones_to_try(&rec->tones, which), t;
+    int which[RL_TONES_MAX], found[RL_TONES_MAX], nt = rl_tones_to_try(&rec->tones, which), t, outer;
     reads_mark before = mark_reads(res);
     rl_stage_enter(hook, RL_STAGE_GLOBAL);
-    found[0] = read_clrs(rec, img, cand, n, which[0], 1, res);
+    found[0] = read_clrs(rec, img, cand, n, which[0], res, &outer);
     if (nt > 1)
         rl_stage_enter(hook, RL_STAGE_TONES);
     for (t = 1; t < nt; t++)
-        found[t] = read_clrs(rec, img, cand, n, which[t], 0, res);
+        found[t] = count_other(rec, img, cand, n, which[t], found[0], outer, res);
     t = rl_tones_vote(&rec->tones, which, nt, found);
     if (t != 0) {
         undo_reads(res, &before);
-        read_clrs(rec, img, cand, n, which[t], 1, res);
+        read_clrs(rec, img, cand, n, which[t], res, NULL);
     }
     t = which[t];
     rec->tone = &rec->tones.tone[t];
@@ -271,7 +294,7 @@ static void read_second_labellings(rl_recog *rec, const rl_image *img, int speck
 {
     int n = rl_split_find(&rec->split, &rec->dark, img, &rec->cfg, speck, res, cand,
                           RL_MAX_CANDIDATES);
-    read_clrs(rec, img, cand, n, t, 1, res);
+    read_clrs(rec, img, cand, n, t, res, NULL);
 }
 
 static int local_wanted(const rl_recog_config *cfg, const rl_result *res)

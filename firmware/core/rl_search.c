@@ -18,11 +18,12 @@ static const double search_scale[SEARCH_ROUNDS] = {0.03, 0.015};
 
 const double rl_search_twin_scale[RL_SEARCH_TWIN_SCALES] = {0.95, 1.0, 1.05, 1.1};
 
-/* Where the search stands: the best centre shift and radius scale so far
- * and their score, over the likely ids at one blur. */
+/* Where the search stands: the best centre shift and radius scale so far,
+ * their score over the likely ids at one blur, and their profile. */
 typedef struct {
     rl_match_list likely;
     double x, y, s, score;
+    rl_profile best;
 } search_state;
 
 /* Score the likely ids with the centre moved by (x, y) and the radius
@@ -38,6 +39,7 @@ static double search_try(const rl_polar *pol, search_state *st, double x, double
         st->x = x;
         st->y = y;
         st->s = s;
+        st->best = p;
     }
     return mm.score;
 }
@@ -147,9 +149,9 @@ void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *i
     search_try(pol, &st, 0, 0, SWEEP_SCALE);
     search_crosses(pol, &st);
     if (st.x != 0 || st.y != 0 || st.s != 1.0) {
-        /* every id at every blur where the search ended */
-        rl_polar_profile(pol, st.x, st.y, st.s, &p);
-        rl_match_all(tt, &p, m);
+        /* every id at every blur where the search ended (its profile as
+         * the search made it) */
+        rl_match_all(tt, &st.best, m);
         *cx += st.x;
         *cy += st.y;
         *r *= st.s;

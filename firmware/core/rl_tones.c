@@ -79,6 +79,16 @@ int rl_tones_vote(rl_tones *ts, const int *which, int n, const int *identified)
     return cur;
 }
 
+int rl_tones_decided(int current, int other, int left)
+{
+    /* rl_tones_vote with which[0] current: identified[1] <= identified[0]
+     * leaves best at 0, a vote for the current curve (or none, with none
+     * identified) and the frame read through it; identified[1] >=
+     * identified[0] + CLEAR_LEAD votes for the other and reads the frame
+     * through it */
+    return other + left <= current || other >= current + CLEAR_LEAD;
+}
+
 const rl_tone *rl_tones_doubt(const rl_tones *ts, const rl_tone *used)
 {
     if (settled(ts))

@@ -56,6 +56,15 @@ int rl_tones_to_try(const rl_tones *ts, int *which);
  * which[] of the curve the frame is to be read through is returned. */
 int rl_tones_vote(rl_tones *ts, const int *which, int n, const int *identified);
 
+/* 1 when a frame's read through the other curve can stop: with `other`
+ * of its candidates identified through it so far and `left` still to
+ * read, and `current` identified through the current curve, no count the
+ * rest could add changes what rl_tones_vote does (the other cannot
+ * identify more than the current curve, whatever the rest: every such
+ * count votes alike; or it already identifies CLEAR_LEAD more: the frame
+ * is read through it). The count so far then stands for the whole read. */
+int rl_tones_decided(int current, int other, int left);
+
 const rl_tone *rl_tones_current(const rl_tones *ts);
 
 /* The other curve while the choice is open (auto, not settled), else NULL:
