@@ -2,7 +2,6 @@
 
 #include "rl_match.h"
 #include "rl_profile.h"
-#include "rl_rank.h"
 #include "rl_result.h"
 
 /* Radius scales a landmark and its twins are scored at (the radius was
@@ -39,47 +38,6 @@ static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone 
     }
     *fit = own;
     return own - twin;
-}
-
-/* Radii the rank read scores at: RANK_SCALES from RANK_FROM of the
- * landmark's, RANK_STEP apart (0.88 .. 1.12): through the wrong formation
- * the outer edge moves too, and a twin read there fits at a radius 5%
- * off the id's (the ISP frames: 22.7 px for a 7 at gamma 1, 23.9 px for
- * the 23 it is at 2.2), so every id must have every radius near to try. */
-#define RANK_SCALES 9
-#define RANK_FROM 0.88
-#define RANK_STEP 0.03
-
-/* How far d's id leads every other id read through any monotone curve
- * (rl_rank): the best rank score of each over the radii and blurs, from
- * one gather of every row through tone (the ranks do not depend on it;
- * every other row left wrong reads up to 0.008, every row 0.003). Every
- * id, not only the twins: through a wrong curve a 21 read as a 1 led the
- * 1's twins by 0.023 and trailed the 21 by 0.020. */
-static double rank_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d)
-{
-    const rl_templates *tt = &rec->templates;
-    double own = -1, other = -1, top = RANK_FROM + (RANK_SCALES - 1) * RANK_STEP;
-    int self = rl_templates_find(tt, d->id), k, b, i;
-    rl_profile wide;
-    if (self < 0 || tt->n < 2)
-        return 0.0;
-    rl_profile_gather_rows(img, tone, d->u, d->v, d->radius * top, 1, &wide);
-    for (k = 0; k < RANK_SCALES; k++) {
-        rl_profile p;
-        rl_rank_order o;
-        rl_profile_rescale(&wide, (RANK_FROM + k * RANK_STEP) / top, &p);
-        rl_rank_sort(&p, &o);
-        for (b = 0; b < RL_BLUR_LEVELS; b++)
-            for (i = 0; i < tt->n; i++) {
-                double sc = rl_rank_score(tt, &o, i, b);
-                if (i == self && sc > own)
-                    own = sc;
-                else if (i != self && sc > other)
-                    other = sc;
-            }
-    }
-    return own - other;
 }
 
 /* The valid codes one zone away from id (every zone: a wrong formation
@@ -144,9 +102,7 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
          * alone does not keep it (own: 0, the id's lead where it was read) */
         if (!keeps(&d, lead, 0.0))
             own = twin_lead(rec, img, rec->tone, &d, twins, n, &fit);
-        /* the formations disagree: the read through any monotone curve
-         * decides, where the frame's curve reads the id too */
-        if (keeps(&d, lead, own) || (keeps(&d, 0.0, own) && rank_lead(rec, img, rec->tone, &d) >= RL_TWINS_RANK_LEAD))
+        if (keeps(&d, lead, own))
             res->landmarks[kept++] = d;
         else
             rl_result_add_unidentified(res, &d);
