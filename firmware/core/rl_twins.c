@@ -13,10 +13,10 @@
  * decisions on every set measured (docs/design.md). */
 #define ROW_STEP 2
 
-/* How far d's id leads its best zone twin through tone: its best score
- * over the three radii (into *fit) less the twin's. */
+/* How far d's id leads its best rival (rivals()) through tone: its best score
+ * over the three radii (into *fit) less the rival's. */
 static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
-                        const int *twins, int n, double *fit)
+                        const int *rv, int n, double *fit)
 {
     static const double scales[3] = {1.0, 1.0 / (1.0 + SCALE_STEP), (1.0 - SCALE_STEP) / (1.0 + SCALE_STEP)};
     double own = -1, twin = -1;
@@ -30,9 +30,9 @@ static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone 
         rl_match_ids(&rec->templates, &p, &d->id, 1, -1, &m);
         if (m.id >= 0 && m.score > own)
             own = m.score;
-        /* the twins at every blur: through the other formation a twin
+        /* the rivals at every blur: through the other formation a rival
          * may fit another than the id does */
-        rl_match_ids(&rec->templates, &p, twins, n, -1, &m);
+        rl_match_ids(&rec->templates, &p, rv, n, -1, &m);
         if (m.id >= 0 && m.score > twin)
             twin = m.score;
     }
@@ -64,7 +64,7 @@ static int rivals(const rl_recog *rec, const rl_detection *d, int *out)
     return n;
 }
 
-/* Whether d keeps its id, from its lead over its best zone twin through
+/* Whether d keeps its id, from its lead over its best rival through
  * the other formation (other) and through the frame's curve (own): while
  * the twin leads by less than RL_TWINS_TOLERANCE through the other, and
  * the sum is positive (a global read: the whole ring at the frame's
@@ -77,7 +77,7 @@ static int keeps(const rl_detection *d, double other, double own)
 
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res)
 {
-    int i, kept = 0, twins[RL_MAX_IDS], n;
+    int i, kept = 0, rv[RL_MAX_IDS], n;
     for (i = 0; i < res->n_landmarks; i++) {
         rl_detection d = res->landmarks[i];
         double lead, own = 0, fit;
@@ -85,11 +85,11 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
          * clear of its twins; a local read's runner-up (sector-normalized)
          * does not say so */
         if ((d.pass == RL_PASS_GLOBAL && d.score - d.runner_up >= RL_TWINS_CLEAR) ||
-            (n = rivals(rec, &d, twins)) == 0) {
+            (n = rivals(rec, &d, rv)) == 0) {
             res->landmarks[kept++] = d;
             continue;
         }
-        lead = twin_lead(rec, img, other, &d, twins, n, &fit);
+        lead = twin_lead(rec, img, other, &d, rv, n, &fit);
         /* a circle far from what was read (an ellipse the local pass read
          * in its own shape, at a wide-angle lens's border) says nothing */
         if (fit < d.score - RL_TWINS_UNFIT) {
@@ -101,7 +101,7 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
         /* through the frame's own curve only where the other's lead
          * alone does not keep it (own: 0, the id's lead where it was read) */
         if (!keeps(&d, lead, 0.0))
-            own = twin_lead(rec, img, rec->tone, &d, twins, n, &fit);
+            own = twin_lead(rec, img, rec->tone, &d, rv, n, &fit);
         if (keeps(&d, lead, own))
             res->landmarks[kept++] = d;
         else
