@@ -10,6 +10,7 @@
 #include "rl_pose_fit.h"
 #include "rl_recog_state.h"
 #include "rl_result.h"
+#include "rl_verify.h"
 
 /* A landmark is whole for the windows when its disk, this much enlarged
  * (the prediction's error), is in the frame. */
@@ -134,24 +135,29 @@ static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mou
  * few reads span the frame (the pose from them is well conditioned). */
 static void order_spread(rl_track *t, double cu, double cv)
 {
+    double dmin[RL_MAX_LANDMARKS]; /* squared: from each one left to those placed (i > 0) */
     int i, j;
+    for (j = 0; j < t->n; j++) {
+        double du = t->win[j].u - cu, dv = t->win[j].v - cv;
+        dmin[j] = -(du * du + dv * dv);
+    }
     for (i = 0; i < t->n; i++) {
         int best = i;
-        double best_d = -HUGE_VAL;
-        for (j = i; j < t->n; j++) {
-            double d = i == 0 ? -hypot(t->win[j].u - cu, t->win[j].v - cv) : HUGE_VAL;
-            int k;
-            for (k = 0; k < i; k++)
-                d = fmin(d, hypot(t->win[j].u - t->win[k].u, t->win[j].v - t->win[k].v));
-            if (d > best_d) {
-                best_d = d;
+        for (j = i + 1; j < t->n; j++)
+            if (dmin[j] > dmin[best])
                 best = j;
-            }
-        }
         if (best != i) {
             rl_track_window w = t->win[i];
+            double d = dmin[i];
             t->win[i] = t->win[best];
             t->win[best] = w;
+            dmin[i] = dmin[best];
+            dmin[best] = d;
+        }
+        for (j = i + 1; j < t->n; j++) {
+            double du = t->win[j].u - t->win[i].u, dv = t->win[j].v - t->win[i].v, d2 = du * du + dv * dv;
+            if (i == 0 || d2 < dmin[j])
+                dmin[j] = d2;
         }
     }
 }
@@ -222,6 +228,8 @@ static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, co
                        double shift, const rl_result *res, rl_detection *d)
 {
     rl_detection u;
+    if (rl_verify_read(rec, img, res, w->id, w->u, w->v, w->radius, d) && verifies(w, shift, d))
+        return 1;
     window_candidate(w, img->width, img->height, &u);
     if (u.complete && (read_box(rec, img, res, &u, d) == w->id ||
                        (hypot(d->u - u.u, d->v - u.v) > BOX_RETRY_PX && read_box(rec, img, res, d, d) == w->id)) &&
