@@ -5,6 +5,12 @@
 
 void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r)
 {
+    rl_refine_centre_rows(img, lv, cx, cy, r, 1);
+}
+
+void rl_refine_centre_rows(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r,
+                           int ystep)
+{
     int x, y, x0, x1, y0, y1, v;
     double sw = 0, sx = 0, sy = 0, bg = lv->bg, span = lv->bg - lv->fg, rr = (r + 1) * (r + 1);
     double weight[256];
@@ -19,7 +25,9 @@ void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, doub
     /* a pixel's weight: how much darker than the background, at most the span */
     for (v = 0; v < 256; v++)
         weight[v] = bg - v <= 0 ? 0.0 : bg - v > span ? span : bg - v;
-    for (y = y0; y <= y1; y++) {
+    if (ystep < 1)
+        ystep = 1;
+    for (y = y0; y <= y1; y += ystep) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
         double dy = y - *cy, h2 = rr - dy * dy, h, rw = 0, rx = 0;
         int xa, xb;

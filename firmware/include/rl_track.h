@@ -44,6 +44,7 @@
 #ifndef RL_TRACK_H
 #define RL_TRACK_H
 
+#include <stdint.h>
 #include "rl_calib.h"
 #include "rl_config.h"
 #include "rl_error.h"
@@ -95,6 +96,10 @@ typedef struct {
     int tracked;                  /* 1: this frame was read by windows */
     int n;                        /* this frame's predictions */
     rl_track_window win[RL_MAX_LANDMARKS];
+    const void *rivals_of;        /* the recognizer's templates the rivals were found in */
+    unsigned char rivals_known[RL_MAX_IDS];
+    uint64_t rivals[RL_MAX_IDS][(RL_MAX_IDS + 63) / 64]; /* by id: the ids its read could be
+                                                            confused with, found once */
     long frames_tracked, frames_full, fallbacks; /* counts */
 } rl_track;
 
