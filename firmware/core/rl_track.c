@@ -238,16 +238,19 @@ static const uint64_t *rivals(rl_track *t, const rl_recog *rec, int id)
 }
 
 /* 1 when the window of w reads its predicted id near the prediction
- * (within `shift` radii; the read into *d): first as the global pass
+ * (within `shift` radii; the read into *d): first verified there
+ * (rl_verify); when that is not clear and `full` is 1, as the global pass
  * reads a candidate whose box is the predicted one (a whole landmark),
  * else as the local pass reads one (its own window and threshold). */
 static int read_window(rl_track *t, rl_recog *rec, const rl_image *img, const rl_track_window *w,
-                       double shift, const rl_result *res, rl_detection *d)
+                       double shift, int full, const rl_result *res, rl_detection *d)
 {
     rl_detection u;
     if (rl_verify_read(rec, img, res, w->id, w->u, w->v, w->radius, rivals(t, rec, w->id), d) &&
         verifies(w, shift, d))
         return 1;
+    if (!full)
+        return 0;
     window_candidate(w, img->width, img->height, &u);
     if (u.complete && (read_box(rec, img, res, &u, d) == w->id ||
                        (hypot(d->u - u.u, d->v - u.v) > BOX_RETRY_PX && read_box(rec, img, res, d, d) == w->id)) &&
@@ -290,12 +293,12 @@ static void shift_apply(const frame_shift *f, rl_track_window *w)
     w->v += (f->dv - a * f->x) / f->n + a * x;
 }
 
-/* A landmark the border cuts is read (as the local pass reads one, some
- * ten times a verification's cost) only while fewer than this many were
- * read: the pose has enough without it, and the next full frame reads it. */
+/* A landmark the border cuts, as predicted (less than CUT_VISIBLE of it
+ * in view: a whole one is read whatever the prediction's error), that is
+ * not verified is read as the local pass reads one (some ten times a
+ * verification's cost) only while fewer than CUT_READS were read: the
+ * pose has enough without it, and the next full frame reads it. */
 #define CUT_READS 3
-/* Cut, as the prediction puts it: more than a few pixels of the disk
- * out (a whole landmark is read whatever the prediction's error). */
 #define CUT_VISIBLE 0.97
 
 /* The windows read, whole ones first: the first within max_first_shift
@@ -325,10 +328,10 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
                 continue;
             if (t->cfg.max_reads > 0 && read >= t->cfg.max_reads)
                 return read; /* enough for the pose; the full frame reads the rest */
-            if (w.visible < CUT_VISIBLE && read >= CUT_READS)
-                continue; /* cut by the border: the full frame reads it */
             res->local_tried++;
-            if (!read_window(t, rec, img, &w, read ? t->cfg.max_shift : t->cfg.max_first_shift, res, &d) ||
+            if (!read_window(t, rec, img, &w, read ? t->cfg.max_shift : t->cfg.max_first_shift,
+                             read < CUT_READS || w.visible >= CUT_VISIBLE,
+                             res, &d) ||
                 !rl_result_add_landmark(res, &d)) {
                 if (whole) {
                     *missed = 1; /* the prediction failed: the frame is read in full */
