@@ -57,6 +57,8 @@ static int settle_centre(const rl_image *img, const rl_levels *local, double r, 
     int k, wide = 0, widened = 0;
     rl_levels ink = *local;
     ink.bg = 0.5 * (local->bg + local->fg);
+    if (!(ink.bg - ink.fg >= 1))
+        return 0; /* no ink to draw to (rl_refine_centre would not move) */
     for (k = 0; k < CENTRE_STEPS; k++) {
         double u = *cx, v = *cy, room = room_at(img, u, v), disk, moved;
         if (room < MIN_ROOM * r || hypot(u - u0, v - v0) > CENTRE_REACH * r)
