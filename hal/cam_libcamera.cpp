@@ -96,10 +96,16 @@ rl_err lc_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
     {
         const FrameBuffer *b = r->buffers().begin()->second;
         std::optional<int64_t> sensor = r->metadata().get(controls::SensorTimestamp);
-        if (sensor && *sensor > 0)
-            f->t_us = static_cast<uint64_t>(*sensor) / 1000u; // start of exposure, monotonic ns
-        else if (b->metadata().timestamp > 0)
-            f->t_us = b->metadata().timestamp / 1000u;
+        std::optional<int32_t> exposure = r->metadata().get(controls::ExposureTime);
+        if (sensor && *sensor > 0) {
+            f->t_us = static_cast<uint64_t>(*sensor) / 1000u; // the first row's start of exposure, monotonic ns
+            f->stamp = RL_CAM_STAMP_FIRST_ROW;
+        } else if (b->metadata().timestamp > 0) {
+            f->t_us = b->metadata().timestamp / 1000u; // the buffer's: taken as the frame's end
+            f->stamp = RL_CAM_STAMP_LAST_ROW;
+        }
+        if (exposure && *exposure > 0)
+            f->exposure_us = *exposure;
     }
     f->img = rl_image_view(s->width, s->height, s->stride, const_cast<uint8_t *>(s->maps[slot].y));
     return RL_OK;

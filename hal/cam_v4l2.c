@@ -143,6 +143,10 @@ static rl_err v4l2_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
     }
     f->slot = (int)b.index;
     f->t_us = capture_time(&b);
+    /* the driver's stamp: at the start of the exposure, or (the V4L2
+     * default) when the last row came in; now, as that, without one */
+    f->stamp = (b.flags & V4L2_BUF_FLAG_TSTAMP_SRC_MASK) == V4L2_BUF_FLAG_TSTAMP_SRC_SOE ? RL_CAM_STAMP_FIRST_ROW
+                                                                                       : RL_CAM_STAMP_LAST_ROW;
     if (s->fmt->kind == V4L2F_PLANE) {
         f->img = rl_image_view(s->width, s->height, (int)s->stride, (uint8_t *)s->map[b.index]);
         return RL_OK;

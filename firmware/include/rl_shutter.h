@@ -12,11 +12,16 @@
  * is then the middle row's, at the frame's capture time taken there
  * (rl_cam.h: the camera's readout moves the backends' stamps to it).
  *
+ *   static rl_pose prev, last, pose;       // the last two poses, 0.1 s apart
+ *   rl_mount mount;
  *   rl_motion m;
- *   if (rl_motion_between(&last, t_last, &prev, t_prev, &m))
+ *   rl_err e;
+ *   rl_mount_defaults(&mount, 0.88);
+ *   if (rl_motion_between(&prev, 12.3, &last, 12.4, 0.5, &m))
  *       rl_shutter_correct(&cam, &mount, map.ceiling_height - mount.z, 0.033, &m,
- *                          res.landmarks, res.n_landmarks);
+ *                          res.landmarks, res.n_landmarks);  // rows read in 33 ms
  *   e = rl_pose_solve(&cam, &map, &mount, res.landmarks, res.n_landmarks, NULL, &pose);
+ *   use(e);
  */
 #ifndef RL_SHUTTER_H
 #define RL_SHUTTER_H

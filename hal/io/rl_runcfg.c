@@ -42,7 +42,7 @@ static const char *const top_keys[] = {"camera", "calibration", "map", "robot", 
                                        "serial", "recognition", "log_interval", "record", "http", NULL};
 static const char *const record_keys[] = {"dir", "every", "max_mb", NULL};
 static const char *const camera_keys[] = {"backend", "device", "width", "height", "rate", "loop",
-                                          "exposure", "gain", NULL};
+                                          "exposure", "gain", "readout", NULL};
 
 /* "auto" (0) or a number within lo .. hi */
 static rl_err auto_or(rl_yaml *y, yaml_node_t *cam, const char *key, const char *label, double lo, double hi,
@@ -143,7 +143,7 @@ static rl_err check_sections(rl_yaml *y, yaml_node_t *root, yaml_node_t *cam, ya
     return RL_OK;
 }
 
-/* camera: {backend, device, width, height, rate, loop, exposure, gain} */
+/* camera: {backend, device, width, height, rate, loop, exposure, gain, readout} */
 static rl_err camera_section(rl_yaml *y, yaml_node_t *cam, const char *path, rl_runcfg *c, char *err,
                              size_t errlen)
 {
@@ -168,7 +168,9 @@ static rl_err camera_section(rl_yaml *y, yaml_node_t *cam, const char *path, rl_
         (e = rl_yaml_double(y, cam, "rate", "camera.rate", 0, &c->cam_rate, err, errlen)) != RL_OK ||
         (e = rl_yaml_bool(y, cam, "loop", "camera.loop", 0, &c->cam_loop, err, errlen)) != RL_OK ||
         (e = auto_or(y, cam, "exposure", "camera.exposure", 1, 10e6, &c->cam_exposure_us, err, errlen)) != RL_OK ||
-        (e = auto_or(y, cam, "gain", "camera.gain", 1e-3, 1e4, &c->cam_gain, err, errlen)) != RL_OK)
+        (e = auto_or(y, cam, "gain", "camera.gain", 1e-3, 1e4, &c->cam_gain, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double_in(y, cam, "readout", "camera.readout", 0, 0, 200, &c->cam_readout_ms, err, errlen)) !=
+            RL_OK)
         return e;
     if (c->cam_width < 0 || c->cam_height < 0 || c->cam_rate < 0 || c->cam_rate > 1000)
         return rl_yaml_fail(y, cam, "camera", RL_ERANGE, err, errlen,

@@ -11,6 +11,8 @@
  *     loop: false            # png: start again at the end of the frames
  *     exposure: auto         # auto, or the exposure time in microseconds
  *     gain: auto             # auto, or the analogue gain
+ *     readout: 0             # a rolling shutter's readout, first row to last, ms
+ *                            # (0: a global shutter): docs/results.md
  *   calibration: camera.yaml # ROS camera_info or OpenCV YAML
  *   map: map.yaml
  *   robot: robot.yaml
@@ -54,6 +56,7 @@ typedef struct {
     int cam_loop;               /* png: start again at the end (default false) */
     double cam_exposure_us;     /* 0: auto (default); else microseconds */
     double cam_gain;            /* 0: auto (default); else the analogue gain */
+    double cam_readout_ms;      /* a rolling shutter's readout, ms (0, default: global) */
     char calibration[512], map[512], robot[512], offsets[512];
     char serial[512];
     int baud;
