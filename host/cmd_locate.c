@@ -54,8 +54,9 @@ static const char *locate_help =
     "  --readout MS     the camera's rolling shutter: its rows read top to bottom in\n"
     "                   MS milliseconds (0, the default: a global shutter); each\n"
     "                   landmark is moved to the middle row's instant by the motion\n"
-    "                   of the last two poses, and the pose is the middle row's\n"
-    "                   (docs/results.md, \"A rolling shutter\")\n";
+    "                   of the last two poses (their times from --interval: give\n"
+    "                   the drive's own), and the pose is the middle row's\n"
+    "                   (docs/results.md, \"A rolling shutter\"); not with --alone\n";
 
 
 typedef struct {
@@ -186,6 +187,9 @@ int rl_cmd_locate(int argc, char **argv)
     }
     if (!track)
         pr.run.track.full_every = 0; /* every image in full */
+    if (pr.run.alone && pr.run.readout > 0)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--readout moves each frame by the motion of the ones before it: "
+                                             "not with --alone");
     if (!files.calibration || !files.map || !files.robot)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--camera, --map and --robot are required (see --help)");
     if (optind >= argc)

@@ -102,21 +102,60 @@ static void test_nothing_moved(void **state)
 
 static void test_motion_between(void **state)
 {
-    /* heading 90 degrees, moved 0.1 m along +y (its forward) and turned
-     * 0.05 rad in 0.1 s: 1 m/s forward, 0 left, 0.5 rad/s */
+    /* a steady arc of radius 1 m, turning left 0.2 rad in 0.2 s: from
+     * (0, 0) heading 0 to (sin 0.2, 1 - cos 0.2) heading 0.2; along the arc
+     * 1 m/s, nothing sideways, 1 rad/s. The same arc turned 90 degrees
+     * (heading from 90 degrees, 1 m north of (1, 2)): the same motion. */
     rl_pose a, b;
     rl_motion m;
     (void)state;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
-    a.x = 1.0, a.y = 2.0, a.yaw = 1.5707963267948966 - 0.05;
-    b.x = 1.0, b.y = 2.1, b.yaw = 1.5707963267948966;
-    assert_true(rl_motion_between(&a, 10.0, &b, 10.1, 0.5, &m));
-    assert_true(fabs(m.forward - 1.0) < 1e-9 && fabs(m.left) < 1e-9 && fabs(m.turn - 0.5) < 1e-9);
-    assert_false(rl_motion_between(&a, 10.0, &b, 11.0, 0.5, &m)); /* too far apart */
-    assert_false(rl_motion_between(&a, 10.1, &b, 10.1, 0.5, &m)); /* no time between */
+    b.x = sin(0.2), b.y = 1 - cos(0.2), b.yaw = 0.2;
+    assert_true(rl_motion_between(&a, 10.0, &b, 10.2, 10.3, 0.5, &m));
+    assert_true(fabs(m.forward - 1.0) < 1e-9 && fabs(m.left) < 1e-9 && fabs(m.turn - 1.0) < 1e-9);
+    a.x = 1.0, a.y = 2.0, a.yaw = 1.5707963267948966;
+    b.x = 1.0 - (1 - cos(0.2)), b.y = 2.0 + sin(0.2), b.yaw = 1.5707963267948966 + 0.2;
+    assert_true(rl_motion_between(&a, 10.0, &b, 10.2, 10.3, 0.5, &m));
+    assert_true(fabs(m.forward - 1.0) < 1e-9 && fabs(m.left) < 1e-9 && fabs(m.turn - 1.0) < 1e-9);
+    /* straight ahead 0.1 m in 0.1 s, heading 90 degrees: 1 m/s forward */
+    b = a;
+    b.y += 0.1;
+    assert_true(rl_motion_between(&a, 10.0, &b, 10.1, 10.2, 0.5, &m));
+    assert_true(fabs(m.forward - 1.0) < 1e-9 && fabs(m.left) < 1e-9 && fabs(m.turn) < 1e-9);
+    assert_false(rl_motion_between(&a, 10.0, &b, 11.0, 11.1, 0.5, &m)); /* the poses too far apart */
+    assert_false(rl_motion_between(&a, 10.0, &b, 10.1, 13.0, 0.5, &m)); /* the frame long after them */
+    assert_false(rl_motion_between(&a, 10.0, &b, 10.1, 10.0, 0.5, &m)); /* time went back */
+    assert_false(rl_motion_between(&a, 10.1, &b, 10.1, 10.2, 0.5, &m)); /* no time between */
     b.x = NAN;
-    assert_false(rl_motion_between(&a, 10.0, &b, 10.1, 0.5, &m));
+    assert_false(rl_motion_between(&a, 10.0, &b, 10.1, 10.2, 0.5, &m));
+}
+
+static void test_mount_turned(void **state)
+{
+    /* the camera's image top along the robot's left (mount yaw 90
+     * degrees): driving forward 1 m/s, row 359.5's landmark was seen from
+     * 10 mm further towards the camera's right, so from the middle row it
+     * lies 10 mm further right: 2.5 px less u, v unchanged */
+    rl_calib c = ideal();
+    rl_mount side = {0, 0, 0.9, 1.5707963267948966, 0, 0};
+    rl_motion fwd = {1.0, 0, 0};
+    rl_detection d = at(420, 359.5);
+    (void)state;
+    rl_shutter_correct(&c, &side, 2.0, 0.04, &fwd, &d, 1);
+    assert_true(fabs(d.u - (420 - 2.5)) < 1e-6 && fabs(d.v - 359.5) < 1e-6);
+    /* the camera 0.2 m left of the centre, turning 1 rad/s: it moves 0.2
+     * m/s backwards, 2 mm in 10 ms: the landmark at (320, 359.5) turns as
+     * in test_sideways_and_mount (u -1.1950, v -0.0060) and lies 2 mm
+     * further back: 0.5 px lower */
+    {
+        rl_mount left = {0, 0.2, 0.9, 0, 0, 0};
+        rl_motion turn = {0, 0, 1.0};
+        rl_detection e = at(320, 359.5);
+        rl_shutter_correct(&c, &left, 2.0, 0.04, &turn, &e, 1);
+        assert_true(fabs(e.u - (320 - 1.1950)) < 1e-3);
+        assert_true(fabs(e.v - (359.5 - 0.0060 + 0.5)) < 1e-3);
+    }
 }
 
 int main(void)
@@ -124,6 +163,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_forward), cmocka_unit_test(test_turn), cmocka_unit_test(test_sideways_and_mount),
         cmocka_unit_test(test_nothing_moved), cmocka_unit_test(test_motion_between),
+        cmocka_unit_test(test_mount_turned),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

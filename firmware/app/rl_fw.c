@@ -116,6 +116,10 @@ static void camera_config(const rl_runcfg *cfg, const rl_calib *calib, rl_cam_co
     cc->exposure_us = (int)(cfg->cam_exposure_us + 0.5);
     cc->gain = cfg->cam_gain;
     cc->readout_us = (int)(cfg->cam_readout_ms * 1000 + 0.5);
+    cc->stamp = strcmp(cfg->cam_stamp, "exposure_start") == 0 ? RL_CAM_STAMP_EXPOSURE_START
+                : strcmp(cfg->cam_stamp, "frame_start") == 0  ? RL_CAM_STAMP_FRAME_START
+                : strcmp(cfg->cam_stamp, "frame_end") == 0    ? RL_CAM_STAMP_FRAME_END
+                                                              : RL_CAM_STAMP_AUTO;
 }
 
 /* Load and check every file; one error line and 0 on failure. */

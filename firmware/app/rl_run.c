@@ -283,17 +283,18 @@ static int can_localize(const rl_site *s)
  * rolling shutter's centres are moved by. */
 #define SHUTTER_MAX_GAP 0.5
 
-/* The frame's centres into moved, each moved to the middle row's instant
- * (rl_shutter.h) by the motion of the last two poses: moved, or the
- * centres as they are when the shutter is global or the motion unknown. */
-static const rl_detection *shutter_moved(const rl_runner *r, rl_detection *moved)
+/* The centres of the frame at t_us into moved, each moved to the middle
+ * row's instant (rl_shutter.h) by the motion of the last two poses: moved,
+ * or the centres as they are when the shutter is global or the motion
+ * unknown (no two recent poses before the frame). */
+static const rl_detection *shutter_moved(const rl_runner *r, uint64_t t_us, rl_detection *moved)
 {
     const rl_site *s = r->site;
     const rl_result *res = r->res;
     rl_motion m;
     if (!(r->cfg.readout > 0) || r->cfg.alone || !r->have_pose || !r->have_prev ||
         !rl_motion_between(&r->prev_pose, (double)r->prev_pose_us / 1e6, &r->last_pose,
-                           (double)r->last_pose_us / 1e6, SHUTTER_MAX_GAP, &m))
+                           (double)r->last_pose_us / 1e6, (double)t_us / 1e6, SHUTTER_MAX_GAP, &m))
         return res->landmarks;
     memcpy(moved, res->landmarks, sizeof *moved * (size_t)res->n_landmarks);
     rl_shutter_correct(&s->calib, &s->mount, s->map.ceiling_height - s->mount.z, r->cfg.readout, &m, moved,
@@ -315,7 +316,7 @@ static void localize(rl_runner *r, uint64_t t_us, rl_run_report *rep, rl_pose *p
     }
     rep->pose = pose;
     rep->place = found;
-    rep->pose_err = rl_site_solve(r->site, shutter_moved(r, moved), res->n_landmarks, make_prior(r, t_us, &prior),
+    rep->pose_err = rl_site_solve(r->site, shutter_moved(r, t_us, moved), res->n_landmarks, make_prior(r, t_us, &prior),
                                   pose, found);
     if (rep->pose_err == RL_OK) {
         r->have_prev = r->have_pose && t_us > r->last_pose_us;

@@ -3,16 +3,22 @@
 
 #include <math.h>
 
-int rl_motion_between(const rl_pose *a, double ta, const rl_pose *b, double tb, double max_gap, rl_motion *m)
+int rl_motion_between(const rl_pose *a, double ta, const rl_pose *b, double tb, double t, double max_gap,
+                      rl_motion *m)
 {
-    double dt = tb - ta, dx, dy, c, s, dyaw;
-    if (!(dt > 0 && dt <= max_gap) || !isfinite(a->x + a->y + a->yaw + b->x + b->y + b->yaw))
+    double dt = tb - ta, dx, dy, c, s, dyaw, mid, arc;
+    if (!(dt > 0 && dt <= max_gap) || !(t - tb > 0 && t - tb <= max_gap) ||
+        !isfinite(a->x + a->y + a->yaw + b->x + b->y + b->yaw))
         return 0;
-    dx = (b->x - a->x) / dt;
-    dy = (b->y - a->y) / dt;
-    c = cos(b->yaw);
-    s = sin(b->yaw);
     dyaw = atan2(sin(b->yaw - a->yaw), cos(b->yaw - a->yaw));
+    /* on an arc the chord from a to b points along the mid-heading and is
+     * shorter than the arc by sin(h) / h, h half the turn */
+    mid = a->yaw + 0.5 * dyaw;
+    arc = fabs(dyaw) > 1e-9 ? (0.5 * dyaw) / sin(0.5 * dyaw) : 1.0;
+    dx = arc * (b->x - a->x) / dt;
+    dy = arc * (b->y - a->y) / dt;
+    c = cos(mid);
+    s = sin(mid);
     m->forward = c * dx + s * dy;
     m->left = -s * dx + c * dy;
     m->turn = dyaw / dt;

@@ -17,7 +17,7 @@
  *   rl_motion m;
  *   rl_err e;
  *   rl_mount_defaults(&mount, 0.88);
- *   if (rl_motion_between(&prev, 12.3, &last, 12.4, 0.5, &m))
+ *   if (rl_motion_between(&prev, 12.3, &last, 12.4, 12.5, 0.5, &m))
  *       rl_shutter_correct(&cam, &mount, map.ceiling_height - mount.z, 0.033, &m,
  *                          res.landmarks, res.n_landmarks);  // rows read in 33 ms
  *   e = rl_pose_solve(&cam, &map, &mount, res.landmarks, res.n_landmarks, NULL, &pose);
@@ -36,10 +36,14 @@ typedef struct {
     double forward, left, turn;
 } rl_motion;
 
-/* The motion between pose a at time ta and pose b at tb (s, tb > ta): the
- * mean velocity in b's frame. 0 (m untouched) when tb - ta is not in
- * (0, max_gap] or a pose is not finite. */
-int rl_motion_between(const rl_pose *a, double ta, const rl_pose *b, double tb, double max_gap, rl_motion *m);
+/* The motion of a frame at time t from the last two poses, a at ta and b
+ * at tb (s): the robot taken as on a steady arc from a to b, its velocity
+ * along the arc in the frame of the arc's mid-heading, and its turn rate. 0
+ * (m untouched) when tb - ta or t - tb is not in (0, max_gap] (old poses
+ * say nothing of the frame's motion; time going back, nothing at all) or
+ * a pose is not finite. */
+int rl_motion_between(const rl_pose *a, double ta, const rl_pose *b, double tb, double t, double max_gap,
+                      rl_motion *m);
 
 /* Move the centres of lm[0 .. n) (u, v, px) to where the middle row of a
  * frame read top to bottom in readout_s seconds would have seen them,
