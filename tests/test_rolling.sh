@@ -10,7 +10,8 @@
 # distance to the ceiling), and not sideways. Judged on `ringloc detect`'s
 # centres in the same frames rendered with and without the shutter. Also:
 # --rolling 0,0 draws exactly the global shutter's frame; bad values get
-# one error line.
+# one error line. Then the pose of a rolling-shutter drive round a circle,
+# `ringloc locate` with and without --readout, against the renderer's truth.
 # usage: test_rolling.sh RINGLOC RENDER TMPDIR
 set -u
 R=$1
