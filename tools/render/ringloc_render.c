@@ -52,6 +52,7 @@ static const char *help =
     "                      [--seed S] [--size 640x480] [--camera CAM.yaml] [--twin]\n"
     "                      [--mount X,Y,YAW] [--write-map FILE] [--write-camera FILE]\n"
     "                      [--write-robot FILE] [--rock SIGMA] [--site grid|irregular]\n"
+    "                      [--rolling MS,SPEED[,TURN]]\n"
     "                      [--move ID,DX,DY] [--look SET] [--sheet PAPER] [--isp STAGES]\n"
     "       ringloc-render --out DIR --path stream --site-map FILE [--newest] [...]\n\n"
     "Render ceiling fixtures with ground truth (NAME_NNN.png + NAME_NNN.yaml).\n"
@@ -82,6 +83,10 @@ static const char *help =
     "                  tilt (radians, roll about the robot's x, pitch about its y;\n"
     "                  default 0,0,0,0,0)\n"
     "  --rock SIGMA    the robot rocks: a random tilt per frame and axis (radians)\n"
+    "  --rolling MS,SPEED[,TURN]  a rolling shutter: the rows read top to bottom in\n"
+    "                  MS milliseconds while the robot drives forward at SPEED m/s and\n"
+    "                  turns at TURN rad/s (left positive); the truth is the middle row's\n"
+    "                  pose (as a camera's frame time at mid-readout)\n"
     "  --look SET      with --path: the frames look as that set's do (degraded, dim, ...)\n"
     "  --sheet PAPER   the landmarks' sheets: letter, a4, a3, tabloid or WxH in mm\n"
     "                  (default: as wide as the landmark, A4's proportions; the\n"
@@ -132,6 +137,7 @@ typedef struct {
     rl_paper sheet;                 /* --sheet (name NULL: the set's) */
     int newest;                     /* --newest: a stream's latest pose only */
     render_isp isp;                 /* --isp (n 0: none) */
+    double readout, speed, turn;    /* --rolling MS,SPEED[,TURN] (readout in s; 0: global shutter) */
 } render_opts;
 
 static void render_opts_defaults(render_opts *o)
@@ -186,6 +192,22 @@ static int parse_move(const char *arg, render_opts *o)
     return 1;
 }
 
+/* --rolling MS,SPEED[,TURN] */
+static int parse_rolling(const char *arg, render_opts *o)
+{
+    static const char *form = "MS,SPEED[,TURN] (readout 0..100 ms, up to 5 m/s and 10 rad/s)";
+    double v[3] = {0, 0, 0};
+    int n;
+    if (!rl_cli_doubles(NULL, "--rolling", arg, form, v, 3, &n))
+        return 0;
+    if (n < 2 || !(v[0] >= 0 && v[0] <= 100) || !(fabs(v[1]) <= 5) || !(fabs(v[2]) <= 10))
+        return !rl_cli_fail(NULL, 2, "--rolling: '%s' is not %s", arg, form);
+    o->readout = v[0] / 1000.0;
+    o->speed = v[1];
+    o->turn = v[2];
+    return 1;
+}
+
 /* One option into o: 1, or 0 with the error line printed. */
 static int render_option(int c, const char *arg, render_opts *o)
 {
@@ -207,6 +229,7 @@ static int render_option(int c, const char *arg, render_opts *o)
         o->irregular = strcmp(arg, "irregular") == 0;
         return 1;
     case 'V': return parse_move(arg, o);
+    case 'L': return parse_rolling(arg, o);
     case 'r': return rl_cli_double(NULL, "--rock", arg, 0, 0.3, &o->rock);
     case 'E': o->site_map = arg; return 1;
     case 'P':
@@ -241,7 +264,7 @@ static int render_args(int argc, char **argv, render_opts *o)
         {"look", required_argument, 0, 'l'}, {"site", required_argument, 0, 'G'},
         {"move", required_argument, 0, 'V'}, {"site-map", required_argument, 0, 'E'},
         {"sheet", required_argument, 0, 'P'}, {"newest", no_argument, 0, 'W'},
-        {"isp", required_argument, 0, 'I'},
+        {"isp", required_argument, 0, 'I'}, {"rolling", required_argument, 0, 'L'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     int c;
     render_opts_defaults(o);
@@ -475,6 +498,7 @@ static int render_frame(const render_opts *o, const render_plan *p, render_scene
     rr = o->rock > 0 ? o->rock * render_random_normal() : 0;
     rp = o->rock > 0 ? o->rock * render_random_normal() : 0;
     render_camera_pose(s, &o->mount, q[0], q[1], q[2], rr, rp);
+    render_camera_shutter(s, &o->mount, q[2], o->readout, o->speed, o->turn);
     render_set_fill(s, p->kind);
     for (pass = 0; pass <= o->twin; pass++) {
         s->twin = pass;
