@@ -30,6 +30,13 @@ SPEED=1.0
 for f in "$T"/global/*.png; do
     cmp -s "$f" "$T/zero/$(basename "$f")" && ok || bad "--rolling 0,0 changed $(basename "$f")"
 done
+# along the path: the straight drive's 4 frames are 0.8 m apart, so 0.8 s a
+# frame is the 1 m/s given above: the same frames
+"$RENDER" --out "$T/along" --path straight --frames 4 --rolling $READOUT_MS --interval 0.8 >/dev/null && ok ||
+    bad "ringloc-render --rolling MS --interval failed"
+for f in "$T"/rolling/*.png; do
+    cmp -s "$f" "$T/along/$(basename "$f")" && ok || bad "--rolling $READOUT_MS --interval 0.8 is not $SPEED m/s: $(basename "$f")"
+done
 
 fy=$(sed -n 's/^ *data: \[\([-0-9.]*\), 0, [-0-9.]*, 0, \([-0-9.]*\),.*/\2/p' "$T/camera.yaml" | head -1)
 D=$(sed -n 's/^distance: \([0-9.]*\)/\1/p' "$T/global/straight_000.yaml")
@@ -101,6 +108,7 @@ for ro in 0 $READOUT_MS; do
 done
 
 expect 2 "--rolling" -- "$RENDER" --out "$T/x" --path straight --frames 1 --rolling 200,1
-expect 2 "--rolling" -- "$RENDER" --out "$T/x" --path straight --frames 1 --rolling 30
 expect 2 "--rolling" -- "$RENDER" --out "$T/x" --path straight --frames 1 --rolling 30,nan
+expect 2 "--interval" -- "$RENDER" --out "$T/x" --path straight --frames 1 --rolling 30
+expect 2 "--path" -- "$RENDER" --out "$T/x" --set clean --count 1 --rolling 30
 sh_done

@@ -7,7 +7,7 @@ int rl_motion_between(const rl_pose *a, double ta, const rl_pose *b, double tb, 
                       rl_motion *m)
 {
     double dt = tb - ta, dx, dy, c, s, dyaw, mid, arc;
-    if (!(dt > 0 && dt <= max_gap) || !(t - tb > 0 && t - tb <= max_gap) ||
+    if (!(dt > 0 && dt <= max_gap) || !(t - tb >= 0 && t - tb <= max_gap) ||
         !isfinite(a->x + a->y + a->yaw + b->x + b->y + b->yaw))
         return 0;
     dyaw = atan2(sin(b->yaw - a->yaw), cos(b->yaw - a->yaw));
@@ -32,35 +32,34 @@ static void ceiling_to_pixel(const rl_calib *cam, double distance, double fwd, d
     rl_calib_project(cam, left / distance, -fwd / distance, u, v);
 }
 
+void rl_shutter_move(const rl_mount *mount, double dt, const rl_motion *m, double *fwd, double *left)
+{
+    /* the camera's velocity in its own frame (image top forward, left):
+     * the robot's, the turn carrying the mount's offset round, turned by
+     * the mount's yaw; the camera then was turned by turn dt and moved by
+     * v dt from where it is at the middle row: seen from there, the point
+     * lies turned back by that turn and moved by the travel */
+    double vf = m->forward - m->turn * mount->y, vl = m->left + m->turn * mount->x;
+    double cf = cos(mount->yaw), sf = sin(mount->yaw), a = m->turn * dt;
+    double cvf = cf * vf + sf * vl, cvl = -sf * vf + cf * vl, f = *fwd, l = *left;
+    *fwd = cos(a) * f - sin(a) * l + cvf * dt;
+    *left = sin(a) * f + cos(a) * l + cvl * dt;
+}
+
 void rl_shutter_correct(const rl_calib *cam, const rl_mount *mount, double distance, double readout_s,
                         const rl_motion *m, rl_detection *lm, int n)
 {
-    /* the camera's velocity in its own frame (image top forward, left):
-     * the robot's, the turn carrying the mount's offset round, turned
-     * by the mount's yaw */
-    double vf, vl, cf, sf;
     int i;
     if (!(readout_s > 0) || m == NULL || !(distance > 0) || cam->height <= 0)
         return;
-    vf = m->forward - m->turn * mount->y;
-    vl = m->left + m->turn * mount->x;
-    cf = cos(mount->yaw);
-    sf = sin(mount->yaw);
-    {
-        double f = cf * vf + sf * vl, l = -sf * vf + cf * vl;
-        vf = f;
-        vl = l;
-    }
     for (i = 0; i < n; i++) {
-        /* the row's time from the middle row's; the camera then was
-         * turned by turn dt and moved by v dt from where it is at the
-         * middle row: seen from there, the point lies turned back by
-         * that turn and moved by the travel (rl_shutter.h) */
-        double dt = ((lm[i].v + 0.5) / cam->height - 0.5) * readout_s, a = m->turn * dt;
+        /* the row's time from the middle row's */
+        double dt = ((lm[i].v + 0.5) / cam->height - 0.5) * readout_s;
         double fwd, left, f, l, u0, v0, u1, v1;
         rl_pose_ceiling_point(cam, NULL, distance, lm[i].u, lm[i].v, &fwd, &left);
-        f = cos(a) * fwd - sin(a) * left + vf * dt;
-        l = sin(a) * fwd + cos(a) * left + vl * dt;
+        f = fwd;
+        l = left;
+        rl_shutter_move(mount, dt, m, &f, &l);
         /* the shift between the two points' pixels (the round trip's own
          * error cancels) */
         ceiling_to_pixel(cam, distance, fwd, left, &u0, &v0);

@@ -39,11 +39,17 @@ typedef struct {
 /* The motion of a frame at time t from the last two poses, a at ta and b
  * at tb (s): the robot taken as on a steady arc from a to b, its velocity
  * along the arc in the frame of the arc's mid-heading, and its turn rate. 0
- * (m untouched) when tb - ta or t - tb is not in (0, max_gap] (old poses
- * say nothing of the frame's motion; time going back, nothing at all) or
- * a pose is not finite. */
+ * (m untouched) when tb - ta is not in (0, max_gap], t - tb not in
+ * [0, max_gap] (old poses say nothing of the frame's motion; time going
+ * back, nothing at all) or a pose is not finite. */
 int rl_motion_between(const rl_pose *a, double ta, const rl_pose *b, double tb, double t, double max_gap,
                       rl_motion *m);
+
+/* Move the ceiling point (fwd, left) (m, the camera's level frame: image
+ * top forward, +u left) seen dt seconds after the middle row to where the
+ * middle row sees it, the robot moving as m says and the camera mounted as
+ * `mount` says. */
+void rl_shutter_move(const rl_mount *mount, double dt, const rl_motion *m, double *fwd, double *left);
 
 /* Move the centres of lm[0 .. n) (u, v, px) to where the middle row of a
  * frame read top to bottom in readout_s seconds would have seen them,
