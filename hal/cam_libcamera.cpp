@@ -92,14 +92,23 @@ rl_err lc_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
     int slot = static_cast<int>(r->cookie());
     f->slot = slot;
     f->index = s->index++;
-    f->t_us = rl_clock_now_us();
+    f->t_us = rl_clock_now_us(); // without a stamp: now, the frame's end
+    f->stamp = RL_CAM_STAMP_FRAME_END;
     {
         const FrameBuffer *b = r->buffers().begin()->second;
         std::optional<int64_t> sensor = r->metadata().get(controls::SensorTimestamp);
-        if (sensor && *sensor > 0)
-            f->t_us = static_cast<uint64_t>(*sensor) / 1000u; // start of exposure, monotonic ns
-        else if (b->metadata().timestamp > 0)
+        std::optional<int32_t> exposure = r->metadata().get(controls::ExposureTime);
+        // monotonic ns; on a Raspberry Pi both are the frame-start interrupt's: the
+        // first row read, its exposure over
+        if (sensor && *sensor > 0) {
+            f->t_us = static_cast<uint64_t>(*sensor) / 1000u;
+            f->stamp = RL_CAM_STAMP_FRAME_START;
+        } else if (b->metadata().timestamp > 0) {
             f->t_us = b->metadata().timestamp / 1000u;
+            f->stamp = RL_CAM_STAMP_FRAME_START;
+        }
+        if (exposure && *exposure > 0)
+            f->exposure_us = *exposure;
     }
     f->img = rl_image_view(s->width, s->height, s->stride, const_cast<uint8_t *>(s->maps[slot].y));
     return RL_OK;

@@ -80,14 +80,21 @@ static rl_err drop(rl_cam *c, v4l2_state *s, unsigned index)
     return RL_EFORMAT;
 }
 
-static uint64_t capture_time(const struct v4l2_buffer *b)
+/* The buffer's time into f: the driver's when it is on the monotonic
+ * clock (rl_clock's), stamped at the start of the exposure or (V4L2's
+ * default) when the last row came in; else now, the frame's end. */
+static void capture_time(const struct v4l2_buffer *b, rl_cam_frame *f)
 {
     uint64_t t = (uint64_t)b->timestamp.tv_sec * 1000000u + (uint64_t)b->timestamp.tv_usec;
-    /* the driver's time when it is on the monotonic clock (rl_clock's),
-     * else now */
-    if ((b->flags & V4L2_BUF_FLAG_TIMESTAMP_MASK) == V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC && t != 0)
-        return t;
-    return rl_clock_now_us();
+    if ((b->flags & V4L2_BUF_FLAG_TIMESTAMP_MASK) == V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC && t != 0) {
+        f->t_us = t;
+        f->stamp = (b->flags & V4L2_BUF_FLAG_TSTAMP_SRC_MASK) == V4L2_BUF_FLAG_TSTAMP_SRC_SOE
+                       ? RL_CAM_STAMP_EXPOSURE_START
+                       : RL_CAM_STAMP_FRAME_END;
+        return;
+    }
+    f->t_us = rl_clock_now_us();
+    f->stamp = RL_CAM_STAMP_FRAME_END;
 }
 
 static rl_err v4l2_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
@@ -142,7 +149,7 @@ static rl_err v4l2_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
         return drop(c, s, b.index);
     }
     f->slot = (int)b.index;
-    f->t_us = capture_time(&b);
+    capture_time(&b, f);
     if (s->fmt->kind == V4L2F_PLANE) {
         f->img = rl_image_view(s->width, s->height, (int)s->stride, (uint8_t *)s->map[b.index]);
         return RL_OK;

@@ -56,12 +56,33 @@ typedef struct rl_cam_config {
     int loop;            /* png: start again at the end instead of RL_ENOTFOUND */
     int exposure_us;     /* 0: automatic exposure; else the exposure time, microseconds */
     double gain;         /* 0: automatic gain; else the (analogue) gain */
+    int readout_us;      /* a rolling shutter's readout, first row to last (0: a global
+                            shutter): with the exposure, where a backend's stamp lies in the
+                            frame (rl_cam_frame.stamp) moves it to the middle row's mid-exposure */
+    int stamp;           /* where a device's stamps lie (rl_cam_stamp), for a driver that says
+                            otherwise; RL_CAM_STAMP_AUTO (default): as the backend says */
     const struct rl_v4l2_sys *v4l2_sys; /* v4l2: its system calls (NULL: the real ones) */
 } rl_cam_config;
 
+/* Where a backend's stamp was taken in the frame's exposure. */
+typedef enum {
+    RL_CAM_STAMP_MIDDLE = 0,   /* the middle row's mid-exposure (png, sim: the time given) */
+    RL_CAM_STAMP_EXPOSURE_START, /* the first row's exposure began (a v4l2 driver's
+                                  start-of-exposure stamp: uvcvideo's) */
+    RL_CAM_STAMP_FRAME_START,  /* the first row was read, its exposure over (libcamera's
+                                  SensorTimestamp on a Raspberry Pi: the frame-start interrupt) */
+    RL_CAM_STAMP_FRAME_END     /* the last row was read (a v4l2 driver's end-of-frame stamp,
+                                  V4L2's default; the time of arrival where there is no stamp) */
+} rl_cam_stamp;
+#define RL_CAM_STAMP_AUTO (-1) /* rl_cam_config.stamp: where the backend says */
+
 typedef struct {
     rl_image img;        /* grey view, valid until released */
-    uint64_t t_us;       /* capture time, monotonic clock, microseconds */
+    uint64_t t_us;       /* capture time, monotonic clock, microseconds: the middle row's
+                            mid-exposure (rl_cam_grab moves the backend's stamp there by the
+                            readout and the exposure, as far as they are known) */
+    rl_cam_stamp stamp;  /* the backend's: where its stamp was taken */
+    int exposure_us;     /* the backend's: the frame's exposure (0: unknown, the configured one) */
     long index;          /* frame number since open */
     const char *name;    /* the frame's file (png), or NULL */
     int slot;            /* backend's buffer, for release */
@@ -75,6 +96,7 @@ typedef struct {
 
 typedef struct rl_cam {
     const rl_cam_ops *ops;
+    int readout_us, exposure_us, stamp; /* the configuration's (rl_cam_grab's stamps) */
     void *state;         /* backend's, allocated at open (never per frame) */
     char name[160];      /* device, for messages */
     char error[384];     /* why the last grab failed, naming the file or device ("" if unknown) */
@@ -95,6 +117,11 @@ RL_CHECK rl_err rl_cam_open(rl_cam *c, const rl_cam_config *cc, char *err, size_
 RL_CHECK rl_err rl_cam_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f);
 void rl_cam_release(rl_cam *c, rl_cam_frame *f);
 void rl_cam_close(rl_cam *c);
+
+/* A stamp taken where `stamp` says, moved to the middle row's
+ * mid-exposure of a frame read in readout_us with exposure_us (0:
+ * unknown, left out). */
+uint64_t rl_cam_middle_time(uint64_t t_us, rl_cam_stamp stamp, int readout_us, int exposure_us);
 
 /* Describe the device of cc (formats, sizes, controls) without
  * streaming, a line at a time through line(ctx, text). err names the

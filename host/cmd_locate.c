@@ -14,7 +14,7 @@ static const char *locate_help =
     "usage: ringloc locate --camera CAM.yaml --map MAP.yaml --robot ROBOT.yaml\n"
     "                      [--offsets OFFSETS.yaml] [--annotate OUT.png] [--size WxH]\n"
     "                      [--local auto|always|never] [--min-score 0.8]\n"
-    "                      [--interval 0.1 | --alone] [--track] IMAGE...\n\n"
+    "                      [--interval 0.1 | --alone] [--track] [--readout MS] IMAGE...\n\n"
     "Recognize landmarks and compute the robot's pose (REP-103, map frame) for\n"
     "each image. Prints the detect JSON line with one more field:\n"
     "  \"pose\": {\"x\": 1.2034, \"y\": 0.5021, \"yaw\": 0.0312, \"landmarks_used\": 4,\n"
@@ -50,7 +50,13 @@ static const char *locate_help =
     "                   round where the map's landmarks must be (\"track\":\n"
     "                   \"windows\"), every 10th in full (\"full\"), and whenever a\n"
     "                   window misses or the pose jumps (docs/tracking.md); by\n"
-    "                   default (or --no-track) every image is read in full\n";
+    "                   default (or --no-track) every image is read in full\n"
+    "  --readout MS     the camera's rolling shutter: its rows read top to bottom in\n"
+    "                   MS milliseconds (0, the default: a global shutter); each\n"
+    "                   landmark is moved to the middle row's instant by the motion\n"
+    "                   of the last two poses (their times from --interval: give\n"
+    "                   the drive's own), and the pose is the middle row's\n"
+    "                   (docs/results.md, \"A rolling shutter\"); not with --alone\n";
 
 
 typedef struct {
@@ -132,6 +138,7 @@ int rl_cmd_locate(int argc, char **argv)
         {"size", required_argument, 0, 'z'},
         {"interval", required_argument, 0, 'i'}, {"alone", no_argument, 0, 'A'},
         {"no-track", no_argument, 0, 'T'}, {"track", no_argument, 0, 'K'},
+        {"readout", required_argument, 0, 'R'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     const char *C = "locate", *family = NULL;
     static rl_site site;
@@ -167,6 +174,11 @@ int rl_cmd_locate(int argc, char **argv)
                 return RL_EXIT_USAGE;
             break;
         case 'A': pr.run.alone = 1; break;
+        case 'R':
+            if (!rl_cli_double(C, "--readout", optarg, 0, 200, &pr.run.readout))
+                return RL_EXIT_USAGE;
+            pr.run.readout /= 1000.0;
+            break;
         case 'T': track = 0; break;
         case 'K': track = 1; break;
         case 'h': fputs(locate_help, stdout); return 0;
@@ -175,6 +187,9 @@ int rl_cmd_locate(int argc, char **argv)
     }
     if (!track)
         pr.run.track.full_every = 0; /* every image in full */
+    if (pr.run.alone && pr.run.readout > 0)
+        return rl_cli_fail(C, RL_EXIT_USAGE, "--readout moves each frame by the motion of the ones before it: "
+                                             "not with --alone");
     if (!files.calibration || !files.map || !files.robot)
         return rl_cli_fail(C, RL_EXIT_USAGE, "--camera, --map and --robot are required (see --help)");
     if (optind >= argc)

@@ -74,6 +74,8 @@ opt site-check rounds "0 -1 2.5 100000000" "$frame"
 opt site-check seed "-1 2.5" --rounds 1 "$frame"
 opt detect min-score "-2 1.5" "$frame"
 opt locate min-score "-2 1.5" --camera "$cam" --map "$map" --robot "$robot" "$frame"
+opt locate readout "-1 201" --camera "$cam" --map "$map" --robot "$robot" "$frame"
+expect_case 2 "--alone" "$R" locate --alone --readout 30 --camera "$cam" --map "$map" --robot "$robot" "$frame"
 opt calibrate-offsets degree "0 4 2.5" --map "$map" --robot "$robot" --pose 1,1,0 --out "$T/o.yaml" "$frame"
 opt run frames "-1 2.5" --config "$D/none.yaml"
 sv="--camera $cam --robot $robot --origin 1 --axis 8 --out $T/s.yaml"
@@ -317,6 +319,8 @@ rkey "s|device: $T/frames.txt|device: $T/folder|" "folder: no PNG frames"
 for v in maybe 2 "[true]"; do rkey "s/rate: 20/rate: 20, loop: $v/" camera.loop; done
 for v in -5 0 abc 1e9 nan manual; do rkey "s/rate: 20/rate: 20, exposure: $v/" camera.exposure; done
 for v in -1 0 abc 1e9 .inf; do rkey "s/rate: 20/rate: 20, gain: $v/" camera.gain; done
+for v in -1 abc 500 nan .inf; do rkey "s/rate: 20/rate: 20, readout: $v/" camera.readout; done
+for v in sometimes 5 start; do rkey "s/rate: 20/rate: 20, stamp: $v/" camera.stamp; done
 rkey "/^map:/d"
 rkey "/^serial:/d"
 rkey "s/^camera: {backend: png/camera: {backend: png, rate: 5/"

@@ -38,6 +38,7 @@ typedef struct {
     int queued[NBUF], nqueued_total;
     int script[32], nscript, at;
     int has_exposure, has_gain;
+    int soe;                 /* stamps at the start of exposure (else the V4L2 default, end of frame) */
     int exp_auto, exposure, autogain, gain;
     uint64_t ts_us;
     const rl_image *src;
@@ -159,7 +160,8 @@ static int dqbuf(struct v4l2_buffer *b)
     b->bytesused = (uint32_t)fill(fk.buf[i]);
     if (what == SHORT)
         b->bytesused /= 3;
-    b->flags = V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC | (what == FLAGGED ? V4L2_BUF_FLAG_ERROR : 0);
+    b->flags = V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC | (what == FLAGGED ? V4L2_BUF_FLAG_ERROR : 0) |
+               (fk.soe ? V4L2_BUF_FLAG_TSTAMP_SRC_SOE : V4L2_BUF_FLAG_TSTAMP_SRC_EOF);
     fk.ts_us += 33333;
     b->timestamp.tv_sec = (time_t)(fk.ts_us / 1000000u);
     b->timestamp.tv_usec = (suseconds_t)(fk.ts_us % 1000000u);
@@ -382,6 +384,45 @@ static void test_each_raw_format_gives_the_luminance(void **state)
             assert_int_equal(fk.closed, 1);
             assert_int_equal(fk.streaming, 0);
         }
+}
+
+/* A rolling shutter read in 20 ms with a 10 ms exposure: the frame's
+ * time is the middle row's mid-exposure, 10 + 5 ms after the first row
+ * began its exposure (a start-of-exposure stamp), 10 + 5 ms before the
+ * last row was read (V4L2's default, end-of-frame stamp); told the driver
+ * stamps the first row's read (camera.stamp: frame_start), 10 - 5 ms after
+ * it. The driver's first stamp is 5.033333 s. */
+static void test_stamps_moved_to_the_middle_row(void **state)
+{
+    static const uint32_t grey = V4L2_PIX_FMT_GREY;
+    static const struct {
+        int soe, stamp;
+        long want;
+    } cases[] = {{0, RL_CAM_STAMP_AUTO, 5018333L}, {1, RL_CAM_STAMP_AUTO, 5048333L},
+                 {0, RL_CAM_STAMP_FRAME_START, 5038333L}};
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        rl_cam c;
+        rl_cam_config cc = config();
+        rl_cam_frame f;
+        cc.readout_us = 20000;
+        cc.exposure_us = 10000;
+        cc.stamp = cases[i].stamp;
+        device(&grey, 1);
+        fk.soe = cases[i].soe;
+        open_ok(&c, &cc);
+        assert_int_equal(rl_cam_grab(&c, 100, &f), RL_OK);
+        assert_int_equal((long)f.t_us, cases[i].want);
+        rl_cam_release(&c, &f);
+        rl_cam_close(&c);
+    }
+    /* each kind by hand (readout 20 ms, exposure 10 ms, stamp 1 s) */
+    assert_int_equal((long)rl_cam_middle_time(1000000, RL_CAM_STAMP_MIDDLE, 20000, 10000), 1000000L);
+    assert_int_equal((long)rl_cam_middle_time(1000000, RL_CAM_STAMP_EXPOSURE_START, 20000, 10000), 1015000L);
+    assert_int_equal((long)rl_cam_middle_time(1000000, RL_CAM_STAMP_FRAME_START, 20000, 10000), 1005000L);
+    assert_int_equal((long)rl_cam_middle_time(1000000, RL_CAM_STAMP_FRAME_END, 20000, 10000), 985000L);
+    assert_int_equal((long)rl_cam_middle_time(1000, RL_CAM_STAMP_FRAME_END, 20000, 10000), 0L); /* not before 0 */
 }
 
 /* MJPEG frames decode to the same landmarks as the grey original. */
@@ -622,6 +663,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_each_raw_format_gives_the_luminance),
+        cmocka_unit_test(test_stamps_moved_to_the_middle_row),
         cmocka_unit_test(test_mjpeg_gives_the_same_landmarks),
         cmocka_unit_test(test_best_format_at_the_size),
         cmocka_unit_test(test_open_failures_say_why),

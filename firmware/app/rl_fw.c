@@ -115,6 +115,11 @@ static void camera_config(const rl_runcfg *cfg, const rl_calib *calib, rl_cam_co
     cc->loop = cfg->cam_loop;
     cc->exposure_us = (int)(cfg->cam_exposure_us + 0.5);
     cc->gain = cfg->cam_gain;
+    cc->readout_us = (int)(cfg->cam_readout_ms * 1000 + 0.5);
+    cc->stamp = strcmp(cfg->cam_stamp, "exposure_start") == 0 ? RL_CAM_STAMP_EXPOSURE_START
+                : strcmp(cfg->cam_stamp, "frame_start") == 0  ? RL_CAM_STAMP_FRAME_START
+                : strcmp(cfg->cam_stamp, "frame_end") == 0    ? RL_CAM_STAMP_FRAME_END
+                                                              : RL_CAM_STAMP_AUTO;
 }
 
 /* Load and check every file; one error line and 0 on failure. */
@@ -311,6 +316,7 @@ static void run_config(const rl_runcfg *cfg, rl_run_config *rc)
     if (cfg->cam_rate > 0)
         rc->timeout_ms = (int)(3000.0 / cfg->cam_rate) > 200 ? (int)(3000.0 / cfg->cam_rate) : 200;
     rc->track.full_every = cfg->track_every;
+    rc->readout = cfg->cam_readout_ms / 1000.0;
 }
 
 static void print_summary(const char *prefix, const rl_run_counts *n, const out_ctx *octx)

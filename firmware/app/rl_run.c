@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "rl_packet.h"
+#include "rl_shutter.h"
 
 void rl_run_defaults(rl_run_config *c)
 {
@@ -38,6 +39,7 @@ const rl_run_counts *rl_run_counts_of(const rl_runner *r)
 
 void rl_run_start_at(rl_runner *r, const rl_pose *pose, uint64_t t_us)
 {
+    r->have_prev = 0;
     r->have_pose = 1;
     r->last_pose = *pose;
     r->last_pose_us = t_us;
@@ -277,10 +279,34 @@ static int can_localize(const rl_site *s)
     return s->has_calib && s->has_map && s->has_mount;
 }
 
+/* The last two poses at most this far apart (s) give the motion a
+ * rolling shutter's centres are moved by. */
+#define SHUTTER_MAX_GAP 0.5
+
+/* The centres of the frame at t_us into moved, each moved to the middle
+ * row's instant (rl_shutter.h) by the motion of the last two poses: moved,
+ * or the centres as they are when the shutter is global or the motion
+ * unknown (no two recent poses before the frame). */
+static const rl_detection *shutter_moved(const rl_runner *r, uint64_t t_us, rl_detection *moved)
+{
+    const rl_site *s = r->site;
+    const rl_result *res = r->res;
+    rl_motion m;
+    if (!(r->cfg.readout > 0) || r->cfg.alone || !r->have_pose || !r->have_prev ||
+        !rl_motion_between(&r->prev_pose, (double)r->prev_pose_us / 1e6, &r->last_pose,
+                           (double)r->last_pose_us / 1e6, (double)t_us / 1e6, SHUTTER_MAX_GAP, &m))
+        return res->landmarks;
+    memcpy(moved, res->landmarks, sizeof *moved * (size_t)res->n_landmarks);
+    rl_shutter_correct(&s->calib, &s->mount, s->map.ceiling_height - s->mount.z, r->cfg.readout, &m, moved,
+                       res->n_landmarks);
+    return moved;
+}
+
 /* The frame's pose into rep (rep->pose_err says whether there is one). */
 static void localize(rl_runner *r, uint64_t t_us, rl_run_report *rep, rl_pose *pose, rl_place_found *found)
 {
     rl_place_prior prior;
+    rl_detection moved[RL_MAX_LANDMARKS];
     const rl_result *res = r->res;
     memset(pose, 0, sizeof *pose);
     memset(found, 0, sizeof *found);
@@ -290,9 +316,12 @@ static void localize(rl_runner *r, uint64_t t_us, rl_run_report *rep, rl_pose *p
     }
     rep->pose = pose;
     rep->place = found;
-    rep->pose_err = rl_site_solve(r->site, res->landmarks, res->n_landmarks, make_prior(r, t_us, &prior), pose,
-                                  found);
+    rep->pose_err = rl_site_solve(r->site, shutter_moved(r, t_us, moved), res->n_landmarks, make_prior(r, t_us, &prior),
+                                  pose, found);
     if (rep->pose_err == RL_OK) {
+        r->have_prev = r->have_pose && t_us > r->last_pose_us;
+        r->prev_pose = r->last_pose;
+        r->prev_pose_us = r->last_pose_us;
         r->have_pose = 1;
         r->last_pose = *pose;
         r->last_pose_us = t_us;
@@ -359,9 +388,9 @@ static rl_err recognize(rl_runner *r, const rl_cam_frame *f, double t_s, rl_run_
 static rl_err localize_tracked(rl_runner *r, const rl_cam_frame *f, uint64_t t_us, rl_run_report *rep,
                                rl_pose *pose, rl_place_found *found)
 {
-    int have = r->have_pose;
-    rl_pose last = r->last_pose;
-    uint64_t last_us = r->last_pose_us;
+    int have = r->have_pose, have_prev = r->have_prev;
+    rl_pose last = r->last_pose, prev = r->prev_pose;
+    uint64_t last_us = r->last_pose_us, prev_us = r->prev_pose_us;
     rl_err e;
     localize(r, t_us, rep, pose, found);
     if (!rl_track_pose(&r->track, rep->pose_err == RL_OK ? pose : NULL, (double)t_us / 1e6))
@@ -370,6 +399,9 @@ static rl_err localize_tracked(rl_runner *r, const rl_cam_frame *f, uint64_t t_u
     r->have_pose = have;
     r->last_pose = last;
     r->last_pose_us = last_us;
+    r->have_prev = have_prev;
+    r->prev_pose = prev;
+    r->prev_pose_us = prev_us;
     if ((e = recognize(r, f, (double)t_us / 1e6, rep)) != RL_OK)
         return e;
     localize(r, t_us, rep, pose, found);

@@ -123,6 +123,10 @@ typedef struct {
                                    tracking windows) */
     rl_track_config track;      /* tracking windows on a site that can localize: a full frame
                                    every track.full_every (10); 0: every frame full */
+    double readout;             /* a rolling shutter's readout, top row to bottom, s: each
+                                   centre moved to the middle row's instant by the motion of
+                                   the last two poses (rl_shutter.h); 0 (default): a global
+                                   shutter */
 } rl_run_config;
 
 void rl_run_defaults(rl_run_config *c);
@@ -160,9 +164,9 @@ typedef struct {
     long suppressed[RL_LOG_KINDS];
     uint32_t frame_lines[RL_RUN_FRAME_LINES];
     int n_frame_lines;
-    int have_pose;
-    rl_pose last_pose;
-    uint64_t last_pose_us;
+    int have_pose, have_prev;
+    rl_pose last_pose, prev_pose; /* the last two poses (prev: the one before) */
+    uint64_t last_pose_us, prev_pose_us;
     rl_track track;
     rl_run_counts counts;
 } rl_runner;

@@ -12,7 +12,9 @@
  * zone away) through the other formation (rl_tones_other) at its centre
  * and radius (and 3% either side): one whose twin leads it there by more
  * than it leads the twin through the frame's curve is reported
- * unidentified, not as either id (a local read needs a margin more).
+ * unidentified, not as either id (a local read needs a margin more),
+ * unless read through any monotone curve (rl_rank, which no formation
+ * moves) it leads every id up to two zones away clearly.
  * What the twins came to is in the landmark's runner_up.
  *
  *   rl_twins_check(rec, &img, rl_tones_other(&rec->tones, rec->tone), &res);
@@ -35,6 +37,14 @@
  * let a twin come within 0.001-0.014 there, wrong ones gave it 0.009 to
  * 0.048; ISP pipelines and composites, docs/design.md). */
 #define RL_TWINS_TOLERANCE 0.006
+/* A landmark the formations disagree on keeps its id when its lead
+ * through the frame's curve passes the rule above with no twin through
+ * the other formation, and it leads every id up to two zones away by
+ * this much read through any monotone curve (rl_rank). On the
+ * development sets the right reads the formations disagreed on led by up
+ * to 0.012 there, the 68 wrong reads they caught by at most 0.003
+ * (docs/results.md). */
+#define RL_TWINS_RANK_LEAD 0.006
 /* A landmark whose circle, read through the other formation, fits this
  * much worse than its read is not judged there (an ellipse the local pass
  * read in its shape fits a circle at 0.4-0.6; the misreads the rule is for

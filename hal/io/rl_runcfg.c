@@ -42,7 +42,7 @@ static const char *const top_keys[] = {"camera", "calibration", "map", "robot", 
                                        "serial", "recognition", "log_interval", "record", "http", NULL};
 static const char *const record_keys[] = {"dir", "every", "max_mb", NULL};
 static const char *const camera_keys[] = {"backend", "device", "width", "height", "rate", "loop",
-                                          "exposure", "gain", NULL};
+                                          "exposure", "gain", "readout", "stamp", NULL};
 
 /* "auto" (0) or a number within lo .. hi */
 static rl_err auto_or(rl_yaml *y, yaml_node_t *cam, const char *key, const char *label, double lo, double hi,
@@ -115,6 +115,7 @@ static void runcfg_defaults(rl_runcfg *c)
     c->local_min_score = rd.local_min_score;
     c->gamma = rd.gamma; /* auto */
     c->track_every = 0; /* tracking windows are asked for (docs/tracking.md) */
+    snprintf(c->cam_stamp, sizeof c->cam_stamp, "auto");
     c->log_interval = 5.0;
     c->record_every = 10;
     c->record_max_mb = 1000;
@@ -143,7 +144,25 @@ static rl_err check_sections(rl_yaml *y, yaml_node_t *root, yaml_node_t *cam, ya
     return RL_OK;
 }
 
-/* camera: {backend, device, width, height, rate, loop, exposure, gain} */
+/* camera.stamp: auto, exposure_start, frame_start or frame_end */
+static rl_err stamp_key(rl_yaml *y, yaml_node_t *cam, rl_runcfg *c, char *err, size_t errlen)
+{
+    static const char *const names[] = {"auto", "exposure_start", "frame_start", "frame_end"};
+    const char *s = NULL;
+    int i;
+    rl_err e = rl_yaml_string(y, cam, "stamp", "camera.stamp", 0, &s, err, errlen);
+    if (e != RL_OK || s == NULL)
+        return e;
+    for (i = 0; i < 4; i++)
+        if (strcmp(s, names[i]) == 0) {
+            snprintf(c->cam_stamp, sizeof c->cam_stamp, "%s", s);
+            return RL_OK;
+        }
+    return rl_yaml_fail(y, rl_yaml_get(y, cam, "stamp"), "camera.stamp", RL_EFORMAT, err, errlen,
+                        "'%s' is not auto, exposure_start, frame_start or frame_end", s);
+}
+
+/* camera: {backend, device, width, height, rate, loop, exposure, gain, readout, stamp} */
 static rl_err camera_section(rl_yaml *y, yaml_node_t *cam, const char *path, rl_runcfg *c, char *err,
                              size_t errlen)
 {
@@ -168,7 +187,10 @@ static rl_err camera_section(rl_yaml *y, yaml_node_t *cam, const char *path, rl_
         (e = rl_yaml_double(y, cam, "rate", "camera.rate", 0, &c->cam_rate, err, errlen)) != RL_OK ||
         (e = rl_yaml_bool(y, cam, "loop", "camera.loop", 0, &c->cam_loop, err, errlen)) != RL_OK ||
         (e = auto_or(y, cam, "exposure", "camera.exposure", 1, 10e6, &c->cam_exposure_us, err, errlen)) != RL_OK ||
-        (e = auto_or(y, cam, "gain", "camera.gain", 1e-3, 1e4, &c->cam_gain, err, errlen)) != RL_OK)
+        (e = auto_or(y, cam, "gain", "camera.gain", 1e-3, 1e4, &c->cam_gain, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double_in(y, cam, "readout", "camera.readout", 0, 0, 200, &c->cam_readout_ms, err, errlen)) !=
+            RL_OK ||
+        (e = stamp_key(y, cam, c, err, errlen)) != RL_OK)
         return e;
     if (c->cam_width < 0 || c->cam_height < 0 || c->cam_rate < 0 || c->cam_rate > 1000)
         return rl_yaml_fail(y, cam, "camera", RL_ERANGE, err, errlen,

@@ -11,6 +11,10 @@
  *     loop: false            # png: start again at the end of the frames
  *     exposure: auto         # auto, or the exposure time in microseconds
  *     gain: auto             # auto, or the analogue gain
+ *     readout: 0             # a rolling shutter's readout, first row to last, ms
+ *                            # (0: a global shutter): docs/results.md
+ *     stamp: auto            # where the device's frame times lie: auto (as the backend
+ *                            # says), exposure_start, frame_start or frame_end
  *   calibration: camera.yaml # ROS camera_info or OpenCV YAML
  *   map: map.yaml
  *   robot: robot.yaml
@@ -54,6 +58,9 @@ typedef struct {
     int cam_loop;               /* png: start again at the end (default false) */
     double cam_exposure_us;     /* 0: auto (default); else microseconds */
     double cam_gain;            /* 0: auto (default); else the analogue gain */
+    double cam_readout_ms;      /* a rolling shutter's readout, ms (0, default: global) */
+    char cam_stamp[16];         /* where the device's times lie: auto (default), exposure_start,
+                                   frame_start or frame_end (rl_cam_stamp) */
     char calibration[512], map[512], robot[512], offsets[512];
     char serial[512];
     int baud;

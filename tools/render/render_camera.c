@@ -82,6 +82,16 @@ void render_camera_pose(render_scene *s, const render_mount *m, double rx, doubl
     s->roll = atan2(s->R[7], s->R[8]);
 }
 
+void render_camera_shutter(render_scene *s, const render_mount *m, double yaw, double readout_s, double speed,
+                           double turn)
+{
+    /* the camera's velocity: the robot's, and the turn carrying the mount's offset round */
+    double c = cos(yaw), sn = sin(yaw), ox = c * m->x - sn * m->y, oy = sn * m->x + c * m->y;
+    s->shutter_dx = readout_s * (speed * c - turn * oy);
+    s->shutter_dy = readout_s * (speed * sn + turn * ox);
+    s->shutter_turn = readout_s * turn;
+}
+
 /* Undistorted rays of every subsample, cached per camera. */
 static double *ray_table;
 static rl_calib ray_cam;
@@ -157,7 +167,10 @@ int render_camera_frame(const render_scene *s, uint8_t *out)
     }
     if (!lin || build_rays(&s->cam) != 0 || view_grid(s, &grid) != 0)
         return -1;
-    for (y = 0; y < H; y++)
+    for (y = 0; y < H; y++) {
+        /* a rolling shutter: this row exposed f of the readout from the middle row's */
+        double f = (y + 0.5) / H - 0.5, rc = cos(f * s->shutter_turn), rsn = sin(f * s->shutter_turn);
+        double rox = f * s->shutter_dx, roy = f * s->shutter_dy;
         for (x = 0; x < W; x++) {
             double acc = 0, du = x - s->cam.cx, dv = y - s->cam.cy;
             for (b = 0; b < SUB; b++)
@@ -165,7 +178,8 @@ int render_camera_frame(const render_scene *s, uint8_t *out)
                     const double *r = ray_table + 2 * ((((size_t)y * W + x) * SUB + b) * SUB + a);
                     int k = b * SUB + a;
                     double c = turn_c[k], sn = turn_s[k], X, Y;
-                    ray_to_map(s, c * r[0] - sn * r[1], sn * r[0] + c * r[1], move_x[k], move_y[k], &X, &Y);
+                    double xr = c * r[0] - sn * r[1], yr = sn * r[0] + c * r[1];
+                    ray_to_map(s, rc * xr - rsn * yr, rsn * xr + rc * yr, move_x[k] + rox, move_y[k] + roy, &X, &Y);
                     acc += render_ceiling_radiance(s, &grid, X, Y);
                 }
             acc /= SUB * SUB;
@@ -173,6 +187,7 @@ int render_camera_frame(const render_scene *s, uint8_t *out)
             acc *= illumination(s, du / rmax, dv / rmax);
             lin[(size_t)y * W + x] = acc * s->gain;
         }
+    }
     e = render_sensor_develop(&s->se, lin, W, H, &rng, out);
     free(lin);
     free(grid.idx);

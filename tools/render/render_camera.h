@@ -36,6 +36,13 @@ void render_camera_default(rl_calib *cam, int w, int h);
 void render_camera_pose(render_scene *s, const render_mount *m, double rx, double ry, double ryaw, double rr,
                         double rp);
 
+/* A rolling shutter's readout of readout_s seconds while the robot at
+ * heading yaw drives forward at speed (m/s) and turns at turn (rad/s): the
+ * camera's travel and turn from the first row to the last into s (the
+ * frame's pose is its middle row's). All 0: a global shutter. */
+void render_camera_shutter(render_scene *s, const render_mount *m, double yaw, double readout_s, double speed,
+                           double turn);
+
 /* Map point (X, Y) on the ceiling -> pixel (u, v). */
 void render_camera_to_pixel(const render_scene *s, double X, double Y, double *u, double *v);
 

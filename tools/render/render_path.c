@@ -4,9 +4,9 @@
 #include <math.h>
 #include <string.h>
 
-int render_path_pose(const char *kind, int k, int n, double *x, double *y, double *yaw)
+int render_path_pose(const char *kind, double k, int n, double *x, double *y, double *yaw)
 {
-    double t = n > 1 ? (double)k / (n - 1) : 0;
+    double t = n > 1 ? k / (n - 1) : 0;
     if (strcmp(kind, "straight") == 0) {
         *x = 0.6 + 2.4 * t;
         *y = 1.55;

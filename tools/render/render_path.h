@@ -13,6 +13,6 @@
 
 /* Pose k of n of drive kind (metres, radians in -pi .. pi); -1 for an
  * unknown kind. */
-int render_path_pose(const char *kind, int k, int n, double *x, double *y, double *yaw);
+int render_path_pose(const char *kind, double k, int n, double *x, double *y, double *yaw);
 
 #endif

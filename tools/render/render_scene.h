@@ -49,6 +49,9 @@ typedef struct {
     double roll, pitch;    /* the camera's tilt from vertical (its own x and y axes) */
     double motion, motion_dir; /* motion blur: camera travel during exposure, m */
     double motion_turn;        /* motion blur: the camera's turn during exposure, rad */
+    double shutter_dx, shutter_dy, shutter_turn; /* a rolling shutter: the camera's travel (m, map
+                                  frame) and turn (rad) from the first row's exposure to the
+                                  last's; the pose is the middle row's (0: a global shutter) */
     double halo_amp, halo_sigma;
     double gain, vignette;     /* exposure (1: the paper near the white point), vignetting */
     render_sensor se;          /* optics' blur, sensor, tone curve */

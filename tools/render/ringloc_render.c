@@ -52,6 +52,7 @@ static const char *help =
     "                      [--seed S] [--size 640x480] [--camera CAM.yaml] [--twin]\n"
     "                      [--mount X,Y,YAW] [--write-map FILE] [--write-camera FILE]\n"
     "                      [--write-robot FILE] [--rock SIGMA] [--site grid|irregular]\n"
+    "                      [--rolling MS[,SPEED[,TURN]] [--interval S]]\n"
     "                      [--move ID,DX,DY] [--look SET] [--sheet PAPER] [--isp STAGES]\n"
     "       ringloc-render --out DIR --path stream --site-map FILE [--newest] [...]\n\n"
     "Render ceiling fixtures with ground truth (NAME_NNN.png + NAME_NNN.yaml).\n"
@@ -82,6 +83,11 @@ static const char *help =
     "                  tilt (radians, roll about the robot's x, pitch about its y;\n"
     "                  default 0,0,0,0,0)\n"
     "  --rock SIGMA    the robot rocks: a random tilt per frame and axis (radians)\n"
+    "  --rolling MS[,SPEED[,TURN]]  a rolling shutter: the rows read top to bottom in\n"
+    "                  MS milliseconds while the robot drives forward at SPEED m/s and\n"
+    "                  turns at TURN rad/s (left positive), or, with MS alone, moves\n"
+    "                  along the --path as it does with frames --interval S seconds\n"
+    "                  apart; the truth is the middle row's pose\n"
     "  --look SET      with --path: the frames look as that set's do (degraded, dim, ...)\n"
     "  --sheet PAPER   the landmarks' sheets: letter, a4, a3, tabloid or WxH in mm\n"
     "                  (default: as wide as the landmark, A4's proportions; the\n"
@@ -132,6 +138,9 @@ typedef struct {
     rl_paper sheet;                 /* --sheet (name NULL: the set's) */
     int newest;                     /* --newest: a stream's latest pose only */
     render_isp isp;                 /* --isp (n 0: none) */
+    double readout, speed, turn;    /* --rolling MS[,SPEED[,TURN]] (readout in s; 0: global shutter) */
+    int rolling_path;               /* --rolling MS alone: the motion the path has */
+    double interval;                /* --interval S: the frames' spacing in time (--rolling MS) */
 } render_opts;
 
 static void render_opts_defaults(render_opts *o)
@@ -186,6 +195,23 @@ static int parse_move(const char *arg, render_opts *o)
     return 1;
 }
 
+/* --rolling MS[,SPEED[,TURN]] */
+static int parse_rolling(const char *arg, render_opts *o)
+{
+    static const char *form = "MS[,SPEED[,TURN]] (readout 0..100 ms, up to 5 m/s and 10 rad/s)";
+    double v[3] = {0, 0, 0};
+    int n;
+    if (!rl_cli_doubles(NULL, "--rolling", arg, form, v, 3, &n))
+        return 0;
+    if (n < 1 || !(v[0] >= 0 && v[0] <= 100) || !(fabs(v[1]) <= 5) || !(fabs(v[2]) <= 10))
+        return !rl_cli_fail(NULL, 2, "--rolling: '%s' is not %s", arg, form);
+    o->readout = v[0] / 1000.0;
+    o->speed = v[1];
+    o->turn = v[2];
+    o->rolling_path = n == 1;
+    return 1;
+}
+
 /* One option into o: 1, or 0 with the error line printed. */
 static int render_option(int c, const char *arg, render_opts *o)
 {
@@ -207,6 +233,8 @@ static int render_option(int c, const char *arg, render_opts *o)
         o->irregular = strcmp(arg, "irregular") == 0;
         return 1;
     case 'V': return parse_move(arg, o);
+    case 'L': return parse_rolling(arg, o);
+    case 'T': return rl_cli_double(NULL, "--interval", arg, 0.001, 3600, &o->interval);
     case 'r': return rl_cli_double(NULL, "--rock", arg, 0, 0.3, &o->rock);
     case 'E': o->site_map = arg; return 1;
     case 'P':
@@ -241,7 +269,8 @@ static int render_args(int argc, char **argv, render_opts *o)
         {"look", required_argument, 0, 'l'}, {"site", required_argument, 0, 'G'},
         {"move", required_argument, 0, 'V'}, {"site-map", required_argument, 0, 'E'},
         {"sheet", required_argument, 0, 'P'}, {"newest", no_argument, 0, 'W'},
-        {"isp", required_argument, 0, 'I'},
+        {"isp", required_argument, 0, 'I'}, {"rolling", required_argument, 0, 'L'},
+        {"interval", required_argument, 0, 'T'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     int c;
     render_opts_defaults(o);
@@ -392,7 +421,9 @@ static int plan_frames(const render_opts *o, const rl_site *site, render_plan *p
         if ((i = render_set_by_name(o->set)) < 0)
             return rl_cli_fail(NULL, 2, "--set: unknown set '%s'", o->set);
         p->kind = (render_set)i;
-        return 0;
+        return o->rolling_path ? rl_cli_fail(NULL, 2, "--rolling MS alone moves along a --path: with --set give "
+                                                      "MS,SPEED[,TURN]")
+                               : 0;
     }
     if (o->look != NULL) {
         /* a path drive with the looks of a set (not lens: that changes
@@ -405,13 +436,20 @@ static int plan_frames(const render_opts *o, const rl_site *site, render_plan *p
         if (!site->has_map)
             return rl_cli_fail(NULL, 2, "--path stream: give the site's map (--site-map FILE)");
         p->stream = 1;
-        return 0;
+        return o->rolling_path ? rl_cli_fail(NULL, 2, "--rolling MS alone moves along a --path: with a stream give "
+                                                      "MS,SPEED[,TURN]")
+                               : 0;
     }
     if (!site->has_map) {
         if (render_path_pose(o->path, 0, 2, &x, &y, &yaw) != 0)
             return rl_cli_fail(NULL, 2, "--path: '%s' is not straight, rect, circle or survey", o->path);
+        if (o->rolling_path && !(o->interval > 0))
+            return rl_cli_fail(NULL, 2, "--rolling MS alone moves along the path: give --interval S");
         return 0;
     }
+    if (o->rolling_path)
+        return rl_cli_fail(NULL, 2, "--rolling MS alone needs a path of the fixed site (straight, rect, circle, "
+                                    "survey): give MS,SPEED[,TURN]");
     if (strcmp(o->path, "random") != 0 && strcmp(o->path, "tour") != 0 && strcmp(o->path, "edge") != 0 &&
         strcmp(o->path, "corner") != 0)
         return rl_cli_fail(NULL, 2, "--path: with --site-map, random, tour, edge or corner ('%s')", o->path);
@@ -451,6 +489,26 @@ static void frame_pose(const render_opts *o, const render_plan *p, int k, double
         snprintf(name, len, "%s_%03d", p->kind == RENDER_SET_PATH ? o->path : o->set, k);
 }
 
+/* A rolling shutter along the path (--rolling MS --interval S): the
+ * camera's travel and turn between the first row's instant and the last's,
+ * from the path's poses half the readout before and after frame k. */
+static void path_shutter(const render_opts *o, render_scene *s, int k)
+{
+    double h = 0.5 * o->readout / o->interval, a[3], b[3], ca[2], cb[2];
+    int i;
+    render_path_pose(o->path, k - h, o->count, &a[0], &a[1], &a[2]);
+    render_path_pose(o->path, k + h, o->count, &b[0], &b[1], &b[2]);
+    for (i = 0; i < 2; i++) {
+        const double *p = i ? b : a;
+        double *c = i ? cb : ca;
+        c[0] = p[0] + cos(p[2]) * o->mount.x - sin(p[2]) * o->mount.y;
+        c[1] = p[1] + sin(p[2]) * o->mount.x + cos(p[2]) * o->mount.y;
+    }
+    s->shutter_dx = cb[0] - ca[0];
+    s->shutter_dy = cb[1] - ca[1];
+    s->shutter_turn = atan2(sin(b[2] - a[2]), cos(b[2] - a[2]));
+}
+
 /* Frame k: its scene, drawn (and its twin), and its truth. 0, or the
  * exit code. */
 static int render_frame(const render_opts *o, const render_plan *p, render_scene *s, int k, uint8_t *px)
@@ -475,6 +533,10 @@ static int render_frame(const render_opts *o, const render_plan *p, render_scene
     rr = o->rock > 0 ? o->rock * render_random_normal() : 0;
     rp = o->rock > 0 ? o->rock * render_random_normal() : 0;
     render_camera_pose(s, &o->mount, q[0], q[1], q[2], rr, rp);
+    if (o->rolling_path)
+        path_shutter(o, s, k);
+    else
+        render_camera_shutter(s, &o->mount, q[2], o->readout, o->speed, o->turn);
     render_set_fill(s, p->kind);
     for (pass = 0; pass <= o->twin; pass++) {
         s->twin = pass;
