@@ -5,6 +5,12 @@
 
 void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r)
 {
+    rl_refine_centre_rows(img, lv, cx, cy, r, 1);
+}
+
+void rl_refine_centre_rows(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r,
+                           int ystep)
+{
     int x, y, x0, x1, y0, y1, v;
     double sw = 0, sx = 0, sy = 0, bg = lv->bg, span = lv->bg - lv->fg, rr = (r + 1) * (r + 1);
     double weight[256];
@@ -19,7 +25,9 @@ void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, doub
     /* a pixel's weight: how much darker than the background, at most the span */
     for (v = 0; v < 256; v++)
         weight[v] = bg - v <= 0 ? 0.0 : bg - v > span ? span : bg - v;
-    for (y = y0; y <= y1; y++) {
+    if (ystep < 1)
+        ystep = 1;
+    for (y = y0; y <= y1; y += ystep) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
         double dy = y - *cy, h2 = rr - dy * dy, h, rw = 0, rx = 0;
         int xa, xb;
@@ -31,10 +39,27 @@ void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, doub
         xb = (int)floor(*cx + h);
         if (xa < x0) xa = x0;
         if (xb > x1) xb = x1;
-        for (x = xa; x <= xb; x++) {
-            double w = weight[row[x]];
-            rw += w;
-            rx += w * x;
+        {
+            /* four sums each: one would make every add wait on the one before */
+            double w0 = 0, w1 = 0, w2 = 0, w3 = 0, x0s = 0, x1s = 0, x2s = 0, x3s = 0;
+            for (x = xa; x + 3 <= xb; x += 4) {
+                double a = weight[row[x]], b = weight[row[x + 1]], c = weight[row[x + 2]], d = weight[row[x + 3]];
+                w0 += a;
+                w1 += b;
+                w2 += c;
+                w3 += d;
+                x0s += a * x;
+                x1s += b * (x + 1);
+                x2s += c * (x + 2);
+                x3s += d * (x + 3);
+            }
+            for (; x <= xb; x++) {
+                double a = weight[row[x]];
+                w0 += a;
+                x0s += a * x;
+            }
+            rw = (w0 + w1) + (w2 + w3);
+            rx = (x0s + x1s) + (x2s + x3s);
         }
         sw += rw;
         sx += rx;

@@ -19,6 +19,11 @@
  * image; unchanged otherwise. */
 void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r);
 
+/* The same from every ystep-th row of the disk only (a coarse step over a
+ * wide disk: ystep 3, a third of the pixels). */
+void rl_refine_centre_rows(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r,
+                           int ystep);
+
 /* Outer radius: the mean light (the tone curve undone, rl_tone.h) on
  * circles of growing radius drops to the outer ring's black and rises to
  * the paper's white; where it crosses halfway is the printed edge,

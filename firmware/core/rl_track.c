@@ -10,6 +10,7 @@
 #include "rl_pose_fit.h"
 #include "rl_recog_state.h"
 #include "rl_result.h"
+#include "rl_verify.h"
 
 /* A landmark is whole for the windows when its disk, this much enlarged
  * (the prediction's error), is in the frame. */
@@ -134,24 +135,29 @@ static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mou
  * few reads span the frame (the pose from them is well conditioned). */
 static void order_spread(rl_track *t, double cu, double cv)
 {
+    double dmin[RL_MAX_LANDMARKS]; /* squared: from each one left to those placed (i > 0) */
     int i, j;
+    for (j = 0; j < t->n; j++) {
+        double du = t->win[j].u - cu, dv = t->win[j].v - cv;
+        dmin[j] = -(du * du + dv * dv);
+    }
     for (i = 0; i < t->n; i++) {
         int best = i;
-        double best_d = -HUGE_VAL;
-        for (j = i; j < t->n; j++) {
-            double d = i == 0 ? -hypot(t->win[j].u - cu, t->win[j].v - cv) : HUGE_VAL;
-            int k;
-            for (k = 0; k < i; k++)
-                d = fmin(d, hypot(t->win[j].u - t->win[k].u, t->win[j].v - t->win[k].v));
-            if (d > best_d) {
-                best_d = d;
+        for (j = i + 1; j < t->n; j++)
+            if (dmin[j] > dmin[best])
                 best = j;
-            }
-        }
         if (best != i) {
             rl_track_window w = t->win[i];
+            double d = dmin[i];
             t->win[i] = t->win[best];
             t->win[best] = w;
+            dmin[i] = dmin[best];
+            dmin[best] = d;
+        }
+        for (j = i + 1; j < t->n; j++) {
+            double du = t->win[j].u - t->win[i].u, dv = t->win[j].v - t->win[i].v, d2 = du * du + dv * dv;
+            if (i == 0 || d2 < dmin[j])
+                dmin[j] = d2;
         }
     }
 }
@@ -214,14 +220,37 @@ static int verifies(const rl_track_window *w, double shift, const rl_detection *
     return d->id == w->id && hypot(d->u - w->u, d->v - w->v) <= shift * w->radius;
 }
 
+/* The rivals of id in rec's templates (found once per id), or NULL. */
+static const uint64_t *rivals(rl_track *t, const rl_recog *rec, int id)
+{
+    if (t->rivals_of != &rec->templates) {
+        memset(t->rivals_known, 0, sizeof t->rivals_known);
+        t->rivals_of = &rec->templates;
+    }
+    if (id < 0 || id >= RL_MAX_IDS)
+        return NULL;
+    if (!t->rivals_known[id]) {
+        if (!rl_verify_rivals(&rec->templates, id, t->rivals[id]))
+            return NULL;
+        t->rivals_known[id] = 1;
+    }
+    return t->rivals[id];
+}
+
 /* 1 when the window of w reads its predicted id near the prediction
- * (within `shift` radii; the read into *d): first as the global pass
+ * (within `shift` radii; the read into *d): first verified there
+ * (rl_verify); when that is not clear and `full` is 1, as the global pass
  * reads a candidate whose box is the predicted one (a whole landmark),
  * else as the local pass reads one (its own window and threshold). */
-static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, const rl_track_window *w,
-                       double shift, const rl_result *res, rl_detection *d)
+static int read_window(rl_track *t, rl_recog *rec, const rl_image *img, const rl_track_window *w,
+                       double shift, int full, const rl_result *res, rl_detection *d)
 {
     rl_detection u;
+    if (rl_verify_read(rec, img, res, w->id, w->u, w->v, w->radius, rivals(t, rec, w->id), d) &&
+        verifies(w, shift, d))
+        return 1;
+    if (!full)
+        return 0;
     window_candidate(w, img->width, img->height, &u);
     if (u.complete && (read_box(rec, img, res, &u, d) == w->id ||
                        (hypot(d->u - u.u, d->v - u.v) > BOX_RETRY_PX && read_box(rec, img, res, d, d) == w->id)) &&
@@ -264,6 +293,14 @@ static void shift_apply(const frame_shift *f, rl_track_window *w)
     w->v += (f->dv - a * f->x) / f->n + a * x;
 }
 
+/* A landmark the border cuts, as predicted (less than CUT_VISIBLE of it
+ * in view: a whole one is read whatever the prediction's error), that is
+ * not verified is read as the local pass reads one (some ten times a
+ * verification's cost) only while fewer than CUT_READS were read: the
+ * pose has enough without it, and the next full frame reads it. */
+#define CUT_READS 3
+#define CUT_VISIBLE 0.97
+
 /* The windows read, whole ones first: the first within max_first_shift
  * radii of its prediction; each next one where the reads so far put it
  * (frame_shift), within max_shift. Returns how many were read; *missed 1
@@ -292,7 +329,9 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
             if (t->cfg.max_reads > 0 && read >= t->cfg.max_reads)
                 return read; /* enough for the pose; the full frame reads the rest */
             res->local_tried++;
-            if (!read_window(t, rec, img, &w, read ? t->cfg.max_shift : t->cfg.max_first_shift, res, &d) ||
+            if (!read_window(t, rec, img, &w, read ? t->cfg.max_shift : t->cfg.max_first_shift,
+                             read < CUT_READS || w.visible >= CUT_VISIBLE,
+                             res, &d) ||
                 !rl_result_add_landmark(res, &d)) {
                 if (whole) {
                     *missed = 1; /* the prediction failed: the frame is read in full */

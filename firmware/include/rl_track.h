@@ -6,10 +6,13 @@
  * two poses), the map, the camera and its mount, rl_track_plan predicts
  * each map landmark's image centre, radius and id in the next frame
  * (those entering across the border too). rl_track_read reads only there,
- * the predictions in an order that spreads them over the frame: each as
- * the global pass reads a candidate whose box is the prediction, else, for
- * a landmark about whole, as the local pass reads one (a window with its
- * own threshold, rl_local); a read is kept only when it names the
+ * the predictions in an order that spreads them over the frame: each first
+ * verified where predicted (its centre drawn to its ink, its profile
+ * judged by the global pass's rule against its rivals, then every id:
+ * rl_verify), else as the global pass reads a candidate whose box is the
+ * prediction, else, for a landmark about whole, as the local pass reads
+ * one (a window with its own threshold, rl_local; for one the border cuts,
+ * only while fewer than 3 were read); a read is kept only when it names the
  * predicted id within max_first_shift radii (the first) or max_shift
  * radii (the next ones, their predictions moved by the shift and turn
  * the reads so far show: a rocking robot). A full frame (rl_recog_run)
@@ -44,6 +47,7 @@
 #ifndef RL_TRACK_H
 #define RL_TRACK_H
 
+#include <stdint.h>
 #include "rl_calib.h"
 #include "rl_config.h"
 #include "rl_error.h"
@@ -95,6 +99,10 @@ typedef struct {
     int tracked;                  /* 1: this frame was read by windows */
     int n;                        /* this frame's predictions */
     rl_track_window win[RL_MAX_LANDMARKS];
+    const void *rivals_of;        /* the recognizer's templates the rivals were found in */
+    unsigned char rivals_known[RL_MAX_IDS];
+    uint64_t rivals[RL_MAX_IDS][(RL_MAX_IDS + 63) / 64]; /* by id: the ids its read could be
+                                                            confused with, found once */
     long frames_tracked, frames_full, fallbacks; /* counts */
 } rl_track;
 

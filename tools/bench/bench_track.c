@@ -205,7 +205,7 @@ int rl_bench_track(const char *dir, const char *prefix)
     print_row("full (--no-track)", full.frames, full.us_all, &full, 1);
     print_row("tracked: all", tracked.frames, tracked.us_all, &tracked, 1);
     print_row("  by windows", tracked.windows, tracked.us_win, &tracked, 0);
-    printf("  (their landmarks: %ld read as the global pass reads a box, %ld as the local pass a window)\n",
+    printf("  (their landmarks: %ld verified or read as the global pass reads a box, %ld as the local pass reads a window)\n",
            tracked.by_box, tracked.by_window);
     print_row("  in full", tracked.fulls, tracked.us_full, &tracked, 0);
     print_row("tracked, 3 reads", capped.frames, capped.us_all, &capped, 1);

@@ -1,0 +1,254 @@
+/* rl_verify: a predicted landmark's id verified in its window (rl_verify.h). */
+#include "rl_verify.h"
+
+#include <math.h>
+#include <string.h>
+#include "rl_accept.h"
+#include "rl_geom.h"
+#include "rl_match.h"
+#include "rl_refine.h"
+#include "rl_result.h"
+
+/* The centre: at most CENTRE_STEPS steps (settle_centre), each over a
+ * disk of INK_DISK radii from every INK_ROWS-th row, or once over
+ * WIDE_DISK radii from every WIDE_ROWS-th row; settled when a step's disk
+ * held the whole landmark (HELD_MARGIN px for its blurred edge to spare)
+ * or it moved less than CENTRE_SETTLED px; no read when that is farther
+ * than CENTRE_REACH radii from the prediction. */
+#define CENTRE_STEPS 6
+#define INK_DISK 1.2
+#define INK_ROWS 2
+#define WIDE_DISK 2.5
+#define WIDE_ROWS 3
+#define HELD_MARGIN 1.0
+#define CENTRE_SETTLED 0.3
+#define CENTRE_REACH 1.5
+/* Next to the border, the centre is drawn over a disk down to this many
+ * radii (all of the landmark but its outer ring's rim). */
+#define MIN_ROOM 0.85
+/* rl_refine_centre's disk stays this far inside the frame (px): its
+ * pixels reach a pixel past the disk. The profile's quiet zone may be
+ * cut, as the global pass reads one. */
+#define WHOLE_MARGIN 1.5
+/* The profile from every GATHER_ROWS-th row: a landmark's 700 pixels and
+ * more tell its id (a doubtful one is read as before). */
+#define GATHER_ROWS 3
+
+/* The largest disk about (cx, cy) that rl_refine_centre reads (it stays
+ * a pixel and a half inside the frame), px. */
+static double room_at(const rl_image *img, double cx, double cy)
+{
+    return fmin(fmin(cx, cy), fmin(img->width - 1 - cx, img->height - 1 - cy)) - WHOLE_MARGIN;
+}
+
+/* The centre drawn from the prediction to the landmark's ink, a step at a
+ * time (rl_refine_centre, counting only what is darker than midway from
+ * the ceiling's light to the ink: the ceiling around the landmark, which
+ * would hold the centre back, counts nothing). A step over a disk that
+ * held all of the landmark (it moved the centre less than the disk's
+ * margin over the landmark) lands on its ink's centre: settled. A step
+ * that did not settle is followed by one over WIDE_DISK radii (a
+ * prediction a radius off sees part of the landmark), then by the usual
+ * ones. 0 when it does not settle within CENTRE_REACH radii of the
+ * prediction, or the border cuts the disk it needs. */
+static int settle_centre(const rl_image *img, const rl_levels *local, double r, double *cx, double *cy)
+{
+    double u0 = *cx, v0 = *cy;
+    int k, wide = 0, widened = 0;
+    rl_levels ink = *local;
+    ink.bg = 0.5 * (local->bg + local->fg);
+    if (!(ink.bg - ink.fg >= 1))
+        return 0; /* no ink to draw to (rl_refine_centre would not move) */
+    for (k = 0; k < CENTRE_STEPS; k++) {
+        double u = *cx, v = *cy, room = room_at(img, u, v), disk, moved;
+        if (room < MIN_ROOM * r || hypot(u - u0, v - v0) > CENTRE_REACH * r)
+            return 0; /* the border cuts it, or it is not where predicted */
+        wide = k > 0 && !widened && room >= WIDE_DISK * r;
+        widened |= wide;
+        disk = wide ? WIDE_DISK * r : fmin(INK_DISK * r, room);
+        rl_refine_centre_rows(img, &ink, cx, cy, disk, wide ? WIDE_ROWS : INK_ROWS);
+        moved = hypot(*cx - u, *cy - v);
+        if (!wide && (moved + r + HELD_MARGIN <= disk || moved < CENTRE_SETTLED))
+            return hypot(*cx - u0, *cy - v0) <= CENTRE_REACH * r && room_at(img, *cx, *cy) >= MIN_ROOM * r;
+    }
+    return 0;
+}
+
+/* The profile is gathered once, RADIUS_WIDEST times the predicted radius
+ * r, and read as gathered at smaller radii (rl_profile_rescale): at r
+ * first; when that is not clear, at the one of RADIUS_SCALES radii a few
+ * percent either side where id's templates match best. */
+#define RADIUS_WIDEST 1.05
+#define RADIUS_SCALES 5
+#define RADIUS_STEP 0.025
+
+/* The scale (of the gathered radius) where id matches best. */
+static double best_scale(const rl_templates *tt, const rl_profile *wide, int id)
+{
+    double best = -2, best_s = 1.0 / RADIUS_WIDEST;
+    int k;
+    for (k = 0; k < RADIUS_SCALES; k++) {
+        double s = (1.0 - (k - RADIUS_SCALES / 2) * RADIUS_STEP) / RADIUS_WIDEST;
+        rl_profile q;
+        rl_match m;
+        if (s > 1.0)
+            continue;
+        rl_profile_rescale(wide, s, &q);
+        rl_match_ids(tt, &q, &id, 1, -1, &m);
+        if (m.id >= 0 && m.score > best) {
+            best = m.score;
+            best_s = s;
+        }
+    }
+    return best_s;
+}
+
+/* A rival: an id one of whose templates (any blur) correlates with one of
+ * the verified id's at RIVAL_CORR or more, for a whole landmark (each bin
+ * weighted by its ring's area). Codes three zones apart still correlate
+ * at up to 0.97 (the inner zones are small), so rivals are found by their
+ * templates, not by their codes. Any other id's template lies at least
+ * acos(RIVAL_CORR + RIVAL_SLACK) from each of the id's (the slack for a
+ * real landmark's pixels per bin), so a profile at angle a from the id's
+ * best template correlates with it at most cos(acos(RIVAL_CORR +
+ * RIVAL_SLACK) - a): that bound stands for every id not scored. */
+#define RIVAL_CORR 0.70
+#define RIVAL_SLACK 0.03
+
+/* Column (i, b) of tt centred and scaled to unit spread, bin k weighted
+ * by sqrt(wk[k]) (its ring's share of the disk: a dot product of two is
+ * their correlation), into c; 0 for a flat one. */
+static int unit_column(const rl_templates *tt, int i, int b, const double *wk, double *c)
+{
+    const float *col = tt->table + (size_t)i * RL_BLUR_LEVELS + (size_t)b;
+    size_t stride = (size_t)tt->stride;
+    double s = 0, ss = 0, sd;
+    int k;
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        double t = col[(size_t)k * stride];
+        c[k] = t;
+        s += wk[k] * t;
+        ss += wk[k] * t * t;
+    }
+    sd = sqrt(fmax(ss - s * s, 0.0));
+    if (!(sd > 1e-9))
+        return 0;
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        c[k] = sqrt(wk[k]) * (c[k] - s) / sd;
+    return 1;
+}
+
+int rl_verify_rivals(const rl_templates *tt, int id, uint64_t *mask)
+{
+    double own[RL_BLUR_LEVELS][RL_PROFILE_BINS], other[RL_PROFILE_BINS], wk[RL_PROFILE_BINS];
+    int i = rl_templates_find(tt, id), j, b, bj, k, n = 0;
+    memset(mask, 0, RL_VERIFY_MASK_WORDS * sizeof *mask);
+    if (i < 0)
+        return 0;
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        wk[k] = (2.0 * k + 1) / ((double)RL_PROFILE_BINS * RL_PROFILE_BINS);
+    for (b = 0; b < RL_BLUR_LEVELS; b++)
+        n += unit_column(tt, i, b, wk, own[n]);
+    for (j = 0; j < tt->n && j < RL_MAX_IDS; j++) {
+        int rival = 0;
+        for (bj = 0; bj < RL_BLUR_LEVELS && j != i && !rival; bj++) {
+            if (!unit_column(tt, j, bj, wk, other))
+                continue;
+            for (b = 0; b < n && !rival; b++) {
+                double c0 = 0, c1 = 0;
+                for (k = 0; k < RL_PROFILE_BINS; k += 2) {
+                    c0 += own[b][k] * other[k];
+                    c1 += own[b][k + 1] * other[k + 1];
+                }
+                rival = c0 + c1 >= RIVAL_CORR;
+            }
+        }
+        if (rival)
+            mask[j / 64] |= (uint64_t)1 << (j % 64);
+    }
+    return 1;
+}
+
+/* m judged by the rule with its runner-up at least the bound for the ids
+ * not scored (RIVAL_CORR). */
+static int taken_over_rivals(const rl_accept_rule *rule, const rl_match *m, double span)
+{
+    rl_match b = *m;
+    double gap = acos(RIVAL_CORR + RIVAL_SLACK) - acos(fmin(1.0, m->score));
+    double bound = gap > 0 ? cos(gap) : 1.0;
+    if (bound > b.second)
+        b.second = bound;
+    return rl_accept(rule, &b, span);
+}
+
+/* The match against the profile read at scale s of the gathered one (into
+ * *m): first of id and its rivals (when given), taken when it names id
+ * and the rule takes it over every other id's bound; else of every id, as
+ * the global pass matches. 1 when the rule takes it as id. */
+static int judged(const rl_recog *rec, const rl_accept_rule *rule, const rl_levels *local,
+                  const rl_profile *wide, double s, int id, const uint64_t *rivals, rl_match *m)
+{
+    const rl_templates *tt = &rec->templates;
+    rl_profile q;
+    double span;
+    rl_profile_rescale(wide, s, &q);
+    span = rl_accept_span(local, rec->tone, &q);
+    if (rivals != NULL) {
+        int ids[RL_MAX_IDS], n = 0, j;
+        ids[n++] = id;
+        for (j = 0; j < tt->n && j < RL_MAX_IDS; j++)
+            if (rivals[j / 64] >> (j % 64) & 1)
+                ids[n++] = tt->ids[j];
+        rl_match_ids(tt, &q, ids, n, -1, m);
+        if (m->id != id)
+            return 0; /* a rival reads better: so it would in a full match */
+        if (taken_over_rivals(rule, m, span))
+            return 1;
+    }
+    rl_match_all(tt, &q, m);
+    return m->id == id && rl_accept(rule, m, span);
+}
+
+int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
+                   double v, double r, const uint64_t *rivals, rl_detection *d)
+{
+    rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_GLOBAL);
+    rl_levels local;
+    rl_profile wide;
+    rl_match m;
+    double s = 1.0 / RADIUS_WIDEST;
+    int taken;
+    memset(d, 0, sizeof *d);
+    d->id = d->best_id = -1;
+    if (!(r > 0))
+        return 0;
+    rl_accept_levels_at(&rec->illum, &res->levels, u, v, &local);
+    d->u = u;
+    d->v = v;
+    if (!settle_centre(img, &local, r, &d->u, &d->v))
+        return 0;
+    d->box.x0 = (int)floor(d->u - r);
+    d->box.y0 = (int)floor(d->v - r);
+    d->box.x1 = (int)ceil(d->u + r);
+    d->box.y1 = (int)ceil(d->v + r);
+    if (rl_result_light_gap(res, &d->box) <= rec->cfg.near_light * r)
+        rule.max_blur = RL_BLUR_LEVELS - 2; /* beside a lamp, as the global pass */
+    rl_profile_gather_rows(img, rec->tone, d->u, d->v, RADIUS_WIDEST * r, GATHER_ROWS, &wide);
+    taken = judged(rec, &rule, &local, &wide, s, id, rivals, &m);
+    if (!taken) {
+        double bs = best_scale(&rec->templates, &wide, id);
+        if (bs != s)
+            taken = judged(rec, &rule, &local, &wide, s = bs, id, rivals, &m);
+    }
+    d->radius = RADIUS_WIDEST * r * s;
+    d->best_id = m.id;
+    d->score = m.score;
+    d->runner_up = m.second;
+    if (!taken)
+        return 0;
+    d->id = id;
+    d->pass = RL_PASS_GLOBAL;
+    d->complete = 1;
+    d->visible = rl_geom_visible_in(img->width, img->height, d->u, d->v, d->radius);
+    return 1;
+}
