@@ -10,6 +10,8 @@
 #include "rl_pose_fit.h"
 #include "rl_recog_state.h"
 #include "rl_result.h"
+#include "rl_tones.h"
+#include "rl_twins.h"
 #include "rl_verify.h"
 
 /* A landmark is whole for the windows when its disk, this much enlarged
@@ -220,23 +222,6 @@ static int verifies(const rl_track_window *w, double shift, const rl_detection *
     return d->id == w->id && hypot(d->u - w->u, d->v - w->v) <= shift * w->radius;
 }
 
-/* The rivals of id in rec's templates (found once per id), or NULL. */
-static const uint64_t *rivals(rl_track *t, const rl_recog *rec, int id)
-{
-    if (t->rivals_of != &rec->templates) {
-        memset(t->rivals_known, 0, sizeof t->rivals_known);
-        t->rivals_of = &rec->templates;
-    }
-    if (id < 0 || id >= RL_MAX_IDS)
-        return NULL;
-    if (!t->rivals_known[id]) {
-        if (!rl_verify_rivals(&rec->templates, id, t->rivals[id]))
-            return NULL;
-        t->rivals_known[id] = 1;
-    }
-    return t->rivals[id];
-}
-
 /* 1 when the window of w reads its predicted id near the prediction
  * (within `shift` radii; the read into *d): first verified there
  * (rl_verify); when that is not clear and `full` is 1, as the global pass
@@ -246,7 +231,7 @@ static int read_window(rl_track *t, rl_recog *rec, const rl_image *img, const rl
                        double shift, int full, const rl_result *res, rl_detection *d)
 {
     rl_detection u;
-    if (rl_verify_read(rec, img, res, w->id, w->u, w->v, w->radius, rivals(t, rec, w->id), d) &&
+    if (rl_verify_read(rec, img, res, w->id, w->u, w->v, w->radius, d) &&
         verifies(w, shift, d))
         return 1;
     if (!full)
@@ -356,6 +341,14 @@ rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result 
     res->levels = t->levels;
     res->gamma = rl_tones_gamma(&rec->tones);
     read = read_windows(t, rec, img, res, &missed);
+    /* the zone twins' check of a full frame (rl_twins): a read it refuses
+     * is missed, and the frame read in full */
+    if (res->n_landmarks > 0) {
+        int before = res->n_landmarks;
+        rl_twins_check(rec, img, rl_tones_other(&rec->tones, rec->tone), res);
+        missed |= res->n_landmarks < before;
+        read -= before - res->n_landmarks;
+    }
     res->local_found = read;
     rl_filter_sort(res);
     *ok = missed == 0 && read >= 2;

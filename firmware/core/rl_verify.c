@@ -5,6 +5,7 @@
 #include <string.h>
 #include "rl_accept.h"
 #include "rl_geom.h"
+#include "rl_inner.h"
 #include "rl_match.h"
 #include "rl_refine.h"
 #include "rl_result.h"
@@ -103,114 +104,20 @@ static double best_scale(const rl_templates *tt, const rl_profile *wide, int id)
     return best_s;
 }
 
-/* A rival: an id one of whose templates (any blur) correlates with one of
- * the verified id's at RIVAL_CORR or more, for a whole landmark (each bin
- * weighted by its ring's area). Codes three zones apart still correlate
- * at up to 0.97 (the inner zones are small), so rivals are found by their
- * templates, not by their codes. Any other id's template lies at least
- * acos(RIVAL_CORR + RIVAL_SLACK) from each of the id's (the slack for a
- * real landmark's pixels per bin), so a profile at angle a from the id's
- * best template correlates with it at most cos(acos(RIVAL_CORR +
- * RIVAL_SLACK) - a): that bound stands for every id not scored. */
-#define RIVAL_CORR 0.70
-#define RIVAL_SLACK 0.03
-
-/* Column (i, b) of tt centred and scaled to unit spread, bin k weighted
- * by sqrt(wk[k]) (its ring's share of the disk: a dot product of two is
- * their correlation), into c; 0 for a flat one. */
-static int unit_column(const rl_templates *tt, int i, int b, const double *wk, double *c)
-{
-    const float *col = tt->table + (size_t)i * RL_BLUR_LEVELS + (size_t)b;
-    size_t stride = (size_t)tt->stride;
-    double s = 0, ss = 0, sd;
-    int k;
-    for (k = 0; k < RL_PROFILE_BINS; k++) {
-        double t = col[(size_t)k * stride];
-        c[k] = t;
-        s += wk[k] * t;
-        ss += wk[k] * t * t;
-    }
-    sd = sqrt(fmax(ss - s * s, 0.0));
-    if (!(sd > 1e-9))
-        return 0;
-    for (k = 0; k < RL_PROFILE_BINS; k++)
-        c[k] = sqrt(wk[k]) * (c[k] - s) / sd;
-    return 1;
-}
-
-int rl_verify_rivals(const rl_templates *tt, int id, uint64_t *mask)
-{
-    double own[RL_BLUR_LEVELS][RL_PROFILE_BINS], other[RL_PROFILE_BINS], wk[RL_PROFILE_BINS];
-    int i = rl_templates_find(tt, id), j, b, bj, k, n = 0;
-    memset(mask, 0, RL_VERIFY_MASK_WORDS * sizeof *mask);
-    if (i < 0)
-        return 0;
-    for (k = 0; k < RL_PROFILE_BINS; k++)
-        wk[k] = (2.0 * k + 1) / ((double)RL_PROFILE_BINS * RL_PROFILE_BINS);
-    for (b = 0; b < RL_BLUR_LEVELS; b++)
-        n += unit_column(tt, i, b, wk, own[n]);
-    for (j = 0; j < tt->n && j < RL_MAX_IDS; j++) {
-        int rival = 0;
-        for (bj = 0; bj < RL_BLUR_LEVELS && j != i && !rival; bj++) {
-            if (!unit_column(tt, j, bj, wk, other))
-                continue;
-            for (b = 0; b < n && !rival; b++) {
-                double c0 = 0, c1 = 0;
-                for (k = 0; k < RL_PROFILE_BINS; k += 2) {
-                    c0 += own[b][k] * other[k];
-                    c1 += own[b][k + 1] * other[k + 1];
-                }
-                rival = c0 + c1 >= RIVAL_CORR;
-            }
-        }
-        if (rival)
-            mask[j / 64] |= (uint64_t)1 << (j % 64);
-    }
-    return 1;
-}
-
-/* m judged by the rule with its runner-up at least the bound for the ids
- * not scored (RIVAL_CORR). */
-static int taken_over_rivals(const rl_accept_rule *rule, const rl_match *m, double span)
-{
-    rl_match b = *m;
-    double gap = acos(RIVAL_CORR + RIVAL_SLACK) - acos(fmin(1.0, m->score));
-    double bound = gap > 0 ? cos(gap) : 1.0;
-    if (bound > b.second)
-        b.second = bound;
-    return rl_accept(rule, &b, span);
-}
-
-/* The match against the profile read at scale s of the gathered one (into
- * *m): first of id and its rivals (when given), taken when it names id
- * and the rule takes it over every other id's bound; else of every id, as
- * the global pass matches. 1 when the rule takes it as id. */
+/* The match of every id at every blur against the profile read at scale
+ * s of the gathered one (into *m), as the global pass matches; 1 when the
+ * rule takes it as id. */
 static int judged(const rl_recog *rec, const rl_accept_rule *rule, const rl_levels *local,
-                  const rl_profile *wide, double s, int id, const uint64_t *rivals, rl_match *m)
+                  const rl_profile *wide, double s, int id, rl_match *m)
 {
-    const rl_templates *tt = &rec->templates;
     rl_profile q;
-    double span;
     rl_profile_rescale(wide, s, &q);
-    span = rl_accept_span(local, rec->tone, &q);
-    if (rivals != NULL) {
-        int ids[RL_MAX_IDS], n = 0, j;
-        ids[n++] = id;
-        for (j = 0; j < tt->n && j < RL_MAX_IDS; j++)
-            if (rivals[j / 64] >> (j % 64) & 1)
-                ids[n++] = tt->ids[j];
-        rl_match_ids(tt, &q, ids, n, -1, m);
-        if (m->id != id)
-            return 0; /* a rival reads better: so it would in a full match */
-        if (taken_over_rivals(rule, m, span))
-            return 1;
-    }
-    rl_match_all(tt, &q, m);
-    return m->id == id && rl_accept(rule, m, span);
+    rl_match_all(&rec->templates, &q, m);
+    return m->id == id && rl_accept(rule, m, rl_accept_span(local, rec->tone, &q));
 }
 
 int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
-                   double v, double r, const uint64_t *rivals, rl_detection *d)
+                   double v, double r, rl_detection *d)
 {
     rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_GLOBAL);
     rl_levels local;
@@ -234,21 +141,23 @@ int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *re
     if (rl_result_light_gap(res, &d->box) <= rec->cfg.near_light * r)
         rule.max_blur = RL_BLUR_LEVELS - 2; /* beside a lamp, as the global pass */
     rl_profile_gather_rows(img, rec->tone, d->u, d->v, RADIUS_WIDEST * r, GATHER_ROWS, &wide);
-    taken = judged(rec, &rule, &local, &wide, s, id, rivals, &m);
+    taken = judged(rec, &rule, &local, &wide, s, id, &m);
     if (!taken) {
         double bs = best_scale(&rec->templates, &wide, id);
         if (bs != s)
-            taken = judged(rec, &rule, &local, &wide, s = bs, id, rivals, &m);
+            taken = judged(rec, &rule, &local, &wide, s = bs, id, &m);
     }
     d->radius = RADIUS_WIDEST * r * s;
     d->best_id = m.id;
     d->score = m.score;
     d->runner_up = m.second;
-    if (!taken)
+    /* not a code ring of a larger landmark read as its own (as the global
+     * pass drops one) */
+    if (!taken || rl_inner_enclosed(img, res->levels.light, d->u, d->v, d->radius, 0.0))
         return 0;
     d->id = id;
     d->pass = RL_PASS_GLOBAL;
-    d->complete = 1;
+    d->complete = rl_geom_disk_complete(img->width, img->height, d->u, d->v, d->radius);
     d->visible = rl_geom_visible_in(img->width, img->height, d->u, d->v, d->radius);
     return 1;
 }

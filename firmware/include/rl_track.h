@@ -8,8 +8,7 @@
  * (those entering across the border too). rl_track_read reads only there,
  * the predictions in an order that spreads them over the frame: each first
  * verified where predicted (its centre drawn to its ink, its profile
- * judged by the global pass's rule against its rivals, then every id:
- * rl_verify), else as the global pass reads a candidate whose box is the
+ * judged by the global pass's rule against every id: rl_verify), else as the global pass reads a candidate whose box is the
  * prediction, else, for a landmark about whole, as the local pass reads
  * one (a window with its own threshold, rl_local; for one the border cuts,
  * only while fewer than 3 were read); a read is kept only when it names the
@@ -22,7 +21,9 @@
  * Landmarks cut by the border (less than window_visible in view), and
  * those past max_reads, wait for the next full frame: no landmark a full
  * frame reads is lost for longer than full_every frames, and no id is
- * taken that the recognizer's own rules would not take.
+ * taken that the recognizer's own rules would not take (the frame's reads
+ * go through the zone twins' check, rl_twins, as a full frame's: a read it
+ * refuses is missed).
  *
  * Allocation-free: the tracker is the caller's struct.
  *
@@ -99,10 +100,6 @@ typedef struct {
     int tracked;                  /* 1: this frame was read by windows */
     int n;                        /* this frame's predictions */
     rl_track_window win[RL_MAX_LANDMARKS];
-    const void *rivals_of;        /* the recognizer's templates the rivals were found in */
-    unsigned char rivals_known[RL_MAX_IDS];
-    uint64_t rivals[RL_MAX_IDS][(RL_MAX_IDS + 63) / 64]; /* by id: the ids its read could be
-                                                            confused with, found once */
     long frames_tracked, frames_full, fallbacks; /* counts */
 } rl_track;
 
