@@ -39,10 +39,10 @@ const rl_run_counts *rl_run_counts_of(const rl_runner *r)
 
 void rl_run_start_at(rl_runner *r, const rl_pose *pose, uint64_t t_us)
 {
-    r->have_prev = 0;
-    r->have_pose = 1;
-    r->last_pose = *pose;
-    r->last_pose_us = t_us;
+    r->prev.have = 0;
+    r->last.have = 1;
+    r->last.pose = *pose;
+    r->last.t_us = t_us;
 }
 
 static uint64_t now_us(const rl_runner *r)
@@ -266,11 +266,11 @@ static const rl_place_prior *make_prior(const rl_runner *r, uint64_t t_us, rl_pl
     memset(prior, 0, sizeof *prior);
     if (r->cfg.alone)
         return NULL;
-    prior->valid = r->have_pose && t_us >= r->last_pose_us;
-    prior->x = r->last_pose.x;
-    prior->y = r->last_pose.y;
-    prior->yaw = r->last_pose.yaw;
-    prior->age = prior->valid ? (double)(t_us - r->last_pose_us) / 1e6 : 0;
+    prior->valid = r->last.have && t_us >= r->last.t_us;
+    prior->x = r->last.pose.x;
+    prior->y = r->last.pose.y;
+    prior->yaw = r->last.pose.yaw;
+    prior->age = prior->valid ? (double)(t_us - r->last.t_us) / 1e6 : 0;
     return prior;
 }
 
@@ -292,9 +292,9 @@ static const rl_detection *shutter_moved(const rl_runner *r, uint64_t t_us, rl_d
     const rl_site *s = r->site;
     const rl_result *res = r->res;
     rl_motion m;
-    if (!(r->cfg.readout > 0) || r->cfg.alone || !r->have_pose || !r->have_prev ||
-        !rl_motion_between(&r->prev_pose, (double)r->prev_pose_us / 1e6, &r->last_pose,
-                           (double)r->last_pose_us / 1e6, (double)t_us / 1e6, SHUTTER_MAX_GAP, &m))
+    if (!(r->cfg.readout > 0) || r->cfg.alone || !r->last.have || !r->prev.have ||
+        !rl_motion_between(&r->prev.pose, (double)r->prev.t_us / 1e6, &r->last.pose, (double)r->last.t_us / 1e6,
+                           (double)t_us / 1e6, SHUTTER_MAX_GAP, &m))
         return res->landmarks;
     memcpy(moved, res->landmarks, sizeof *moved * (size_t)res->n_landmarks);
     rl_shutter_correct(&s->calib, &s->mount, s->map.ceiling_height - s->mount.z, r->cfg.readout, &m, moved,
@@ -316,15 +316,14 @@ static void localize(rl_runner *r, uint64_t t_us, rl_run_report *rep, rl_pose *p
     }
     rep->pose = pose;
     rep->place = found;
-    rep->pose_err = rl_site_solve(r->site, shutter_moved(r, t_us, moved), res->n_landmarks, make_prior(r, t_us, &prior),
-                                  pose, found);
+    rep->pose_err = rl_site_solve(r->site, shutter_moved(r, t_us, moved), res->n_landmarks,
+                                  make_prior(r, t_us, &prior), pose, found);
     if (rep->pose_err == RL_OK) {
-        r->have_prev = r->have_pose && t_us > r->last_pose_us;
-        r->prev_pose = r->last_pose;
-        r->prev_pose_us = r->last_pose_us;
-        r->have_pose = 1;
-        r->last_pose = *pose;
-        r->last_pose_us = t_us;
+        r->prev = r->last;
+        r->prev.have = r->last.have && t_us > r->last.t_us;
+        r->last.have = 1;
+        r->last.pose = *pose;
+        r->last.t_us = t_us;
         r->counts.tracked += found->status == RL_PLACE_TRACKED;
     } else if (rep->pose_err == RL_ETOOFEW) {
         rep->status = RL_STATUS_TOO_FEW;
@@ -388,20 +387,14 @@ static rl_err recognize(rl_runner *r, const rl_cam_frame *f, double t_s, rl_run_
 static rl_err localize_tracked(rl_runner *r, const rl_cam_frame *f, uint64_t t_us, rl_run_report *rep,
                                rl_pose *pose, rl_place_found *found)
 {
-    int have = r->have_pose, have_prev = r->have_prev;
-    rl_pose last = r->last_pose, prev = r->prev_pose;
-    uint64_t last_us = r->last_pose_us, prev_us = r->prev_pose_us;
+    rl_run_pose last = r->last, prev = r->prev;
     rl_err e;
     localize(r, t_us, rep, pose, found);
     if (!rl_track_pose(&r->track, rep->pose_err == RL_OK ? pose : NULL, (double)t_us / 1e6))
         return RL_OK;
     r->counts.window_fallbacks++;
-    r->have_pose = have;
-    r->last_pose = last;
-    r->last_pose_us = last_us;
-    r->have_prev = have_prev;
-    r->prev_pose = prev;
-    r->prev_pose_us = prev_us;
+    r->last = last;
+    r->prev = prev;
     if ((e = recognize(r, f, (double)t_us / 1e6, rep)) != RL_OK)
         return e;
     localize(r, t_us, rep, pose, found);

@@ -149,6 +149,13 @@ enum { RL_LOG_CAMERA, RL_LOG_TIMEOUT, RL_LOG_SERIAL, RL_LOG_FRAME, RL_LOG_INFO, 
  * (each bad file of a PNG camera named once); past these, the interval. */
 #define RL_RUN_FRAME_LINES 64
 
+/* A pose the loop found, and its frame's time (have 0: none). */
+typedef struct {
+    int have;
+    rl_pose pose;
+    uint64_t t_us;
+} rl_run_pose;
+
 /* The loop's state: read it through rl_run_counts. */
 typedef struct {
     rl_run_config cfg;
@@ -164,9 +171,7 @@ typedef struct {
     long suppressed[RL_LOG_KINDS];
     uint32_t frame_lines[RL_RUN_FRAME_LINES];
     int n_frame_lines;
-    int have_pose, have_prev;
-    rl_pose last_pose, prev_pose; /* the last two poses (prev: the one before) */
-    uint64_t last_pose_us, prev_pose_us;
+    rl_run_pose last, prev;     /* the last two poses (prev: the one before) */
     rl_track track;
     rl_run_counts counts;
 } rl_runner;

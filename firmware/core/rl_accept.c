@@ -13,6 +13,14 @@ rl_accept_rule rl_accept_rule_of(const rl_recog_config *cfg, rl_pass pass)
     return r;
 }
 
+rl_accept_rule rl_accept_rule_at(const rl_recog_config *cfg, rl_pass pass, int near_light)
+{
+    rl_accept_rule r = rl_accept_rule_of(cfg, pass);
+    if (near_light && r.max_blur > RL_BLUR_LEVELS - 2)
+        r.max_blur = RL_BLUR_LEVELS - 2;
+    return r;
+}
+
 double rl_accept_lead(const rl_match *m)
 {
     double d = 1.0 - m->score * m->score;

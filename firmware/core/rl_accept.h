@@ -41,6 +41,11 @@ typedef struct {
 /* The thresholds of one pass. */
 rl_accept_rule rl_accept_rule_of(const rl_recog_config *cfg, rl_pass pass);
 
+/* The same for a candidate beside a lamp (near_light 1): a soft blob there
+ * (a shade, a fixture's edge out of focus) matches the softest templates,
+ * so, as in the local pass, none is taken at them. */
+rl_accept_rule rl_accept_rule_at(const rl_recog_config *cfg, rl_pass pass, int near_light);
+
 /* 1 if match m passes the rule; span is the grey span its contrast is
  * measured against (the frame's background - foreground in the global
  * pass, 255 on sector-normalized levels in the local pass). */

@@ -44,13 +44,8 @@ static int identify_through(const rl_recog *rec, const rl_image *img, const rl_t
                             const rl_clr *c, const rl_levels *local, int near_light, rl_detection *d,
                             rl_match *m)
 {
-    rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_GLOBAL);
+    rl_accept_rule rule = rl_accept_rule_at(&rec->cfg, RL_PASS_GLOBAL, near_light);
     rl_profile p;
-    /* a soft blob beside a lamp (a shade, a fixture's edge out of focus)
-     * matches the softest templates: there, as in the local pass, none is
-     * taken at them */
-    if (near_light)
-        rule.max_blur = RL_BLUR_LEVELS - 2;
     double box_r = d->radius;
     int taken;
     rl_refine_radius(img, tone, d->u, d->v, &d->radius);

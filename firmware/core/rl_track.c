@@ -227,7 +227,7 @@ static int verifies(const rl_track_window *w, double shift, const rl_detection *
  * (rl_verify); when that is not clear and `full` is 1, as the global pass
  * reads a candidate whose box is the predicted one (a whole landmark),
  * else as the local pass reads one (its own window and threshold). */
-static int read_window(rl_track *t, rl_recog *rec, const rl_image *img, const rl_track_window *w,
+static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, const rl_track_window *w,
                        double shift, int full, const rl_result *res, rl_detection *d)
 {
     rl_detection u;

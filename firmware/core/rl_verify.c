@@ -119,7 +119,7 @@ static int judged(const rl_recog *rec, const rl_accept_rule *rule, const rl_leve
 int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
                    double v, double r, rl_detection *d)
 {
-    rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_GLOBAL);
+    rl_accept_rule rule;
     rl_levels local;
     rl_profile wide;
     rl_match m;
@@ -138,8 +138,8 @@ int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *re
     d->box.y0 = (int)floor(d->v - r);
     d->box.x1 = (int)ceil(d->u + r);
     d->box.y1 = (int)ceil(d->v + r);
-    if (rl_result_light_gap(res, &d->box) <= rec->cfg.near_light * r)
-        rule.max_blur = RL_BLUR_LEVELS - 2; /* beside a lamp, as the global pass */
+    rule = rl_accept_rule_at(&rec->cfg, RL_PASS_GLOBAL,
+                             rl_result_light_gap(res, &d->box) <= rec->cfg.near_light * r);
     rl_profile_gather_rows(img, rec->tone, d->u, d->v, RADIUS_WIDEST * r, GATHER_ROWS, &wide);
     taken = judged(rec, &rule, &local, &wide, s, id, &m);
     if (!taken) {

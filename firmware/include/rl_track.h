@@ -8,8 +8,9 @@
  * (those entering across the border too). rl_track_read reads only there,
  * the predictions in an order that spreads them over the frame: each first
  * verified where predicted (its centre drawn to its ink, its profile
- * judged by the global pass's rule against every id: rl_verify), else as the global pass reads a candidate whose box is the
- * prediction, else, for a landmark about whole, as the local pass reads
+ * judged by the global pass's rule against every id: rl_verify), else as
+ * the global pass reads a candidate whose box is the prediction, else,
+ * for a landmark about whole, as the local pass reads
  * one (a window with its own threshold, rl_local; for one the border cuts,
  * only while fewer than 3 were read); a read is kept only when it names the
  * predicted id within max_first_shift radii (the first) or max_shift
@@ -48,7 +49,6 @@
 #ifndef RL_TRACK_H
 #define RL_TRACK_H
 
-#include <stdint.h>
 #include "rl_calib.h"
 #include "rl_config.h"
 #include "rl_error.h"
