@@ -144,6 +144,7 @@ static rl_err write_map(const char *path, const rl_survey *sv, const rl_family *
         m.y = l->y;
         m.sigma_x = sqrt(fmax(0, l->cov[0]));
         m.sigma_y = sqrt(fmax(0, l->cov[2]));
+        m.z = 0; /* the survey fits one ceiling plane */
         rl_mapfile_put_landmark(f, &m);
     }
     return rl_outfile_commit(&o, err, errlen);

@@ -35,7 +35,7 @@ struct View {
         double Rc[9], C[3], xn, yn, R = md.radius;
         md.height = h[0];
         rl_pose_fit_camera(&md, q, Rc, C);
-        if (!rl_pose_fit_predict(&md, Rc, C, lm[0], lm[1], &xn, &yn))
+        if (!rl_pose_fit_predict(&md, Rc, C, lm[0], lm[1], h[0], &xn, &yn))
             return false;
         double s = cfg->pixel_scale / (cfg->pixel_sigma * obs->noise);
         r[0] = (xn - obs->xn) * s;

@@ -8,12 +8,17 @@
 #define TRACK_SEEDS 8 /* observations tracking looks near */
 #define NEAR_MAX 16   /* map landmarks of one id near a tracked prediction */
 
-/* One frame's identified landmarks on the ceiling of a level robot. */
+/* One frame's identified landmarks on the ceiling of a level robot. A
+ * landmark that hangs lower (or higher) than the ceiling lies on its ray
+ * nearer to (or further from) the mount's point (mx, my): its point
+ * scales about it with its height above the camera (obs_at). */
 typedef struct {
     int n;
     int det[RL_MAX_LANDMARKS]; /* the detection it came from */
     int id[RL_MAX_LANDMARKS];
-    double px[RL_MAX_LANDMARKS], py[RL_MAX_LANDMARKS]; /* robot frame, m */
+    double px[RL_MAX_LANDMARKS], py[RL_MAX_LANDMARKS]; /* robot frame, at the ceiling's height, m */
+    double mx, my, cz, Z;      /* the mount's point and height; the ceiling above it, m */
+    double spread;             /* the map's heights' largest scale off 1 (0: one plane) */
 } obs_set;
 
 /* A place: the rigid motion from the robot frame to the map, and what it
@@ -40,6 +45,11 @@ static void observe_all(const rl_place *pl, const rl_calib *cam, const rl_mount 
     double key[RL_MAX_LANDMARKS];
     int i, j;
     o->n = 0;
+    o->mx = mount->x;
+    o->my = mount->y;
+    o->cz = mount->z;
+    o->Z = pl->map->ceiling_height - mount->z;
+    o->spread = fmax(pl->z_hi - pl->map->ceiling_height, pl->map->ceiling_height - pl->z_lo) / o->Z;
     for (i = 0; i < n && i < RL_MAX_LANDMARKS; i++) {
         double x, y, du = lm[i].u - cam->cx, dv = lm[i].v - cam->cy, k;
         if (!(fabs(lm[i].u - 0.5 * cam->width) <= 1.5 * cam->width) ||
@@ -80,13 +90,49 @@ static double obs_distance(const obs_set *o, int i, int j)
     return hypot(o->px[i] - o->px[j], o->py[i] - o->py[j]);
 }
 
-/* The motion putting observations i and j on map landmarks a and b. */
-static void propose(const rl_map *map, const obs_set *o, int i, int j, int a, int b, place *p)
+/* Observation k's point were it map landmark m (at m's height). */
+static void obs_at(const rl_place *pl, const obs_set *o, int k, int m, double *x, double *y)
 {
-    double mx = map->lm[b].x - map->lm[a].x, my = map->lm[b].y - map->lm[a].y;
-    double ox = o->px[j] - o->px[i], oy = o->py[j] - o->py[i];
-    double yaw = atan2(my, mx) - atan2(oy, ox), c = cos(yaw), s = sin(yaw);
-    double cx = 0.5 * (o->px[i] + o->px[j]), cy = 0.5 * (o->py[i] + o->py[j]);
+    double z = pl->map->lm[m].z, r;
+    if (!(z > 0)) { /* on the ceiling */
+        *x = o->px[k];
+        *y = o->py[k];
+        return;
+    }
+    r = (z - o->cz) / o->Z;
+    *x = o->mx + r * (o->px[k] - o->mx);
+    *y = o->my + r * (o->py[k] - o->my);
+}
+
+/* How far observation k's point may move with the height of the map
+ * landmark it is (0 on a map of one plane). */
+static double obs_slack(const obs_set *o, int k)
+{
+    return o->spread > 0 ? o->spread * hypot(o->px[k] - o->mx, o->py[k] - o->my) : 0.0;
+}
+
+/* How far observations i and j's distance may be from their map
+ * landmarks': the level model's tolerance, and the heights' slack. */
+static double pair_tolerance(const obs_set *o, int i, int j)
+{
+    return tolerance(obs_distance(o, i, j)) + obs_slack(o, i) + obs_slack(o, j);
+}
+
+/* The motion putting observations i and j on map landmarks a and b. */
+static void propose(const rl_place *pl, const obs_set *o, int i, int j, int a, int b, place *p)
+{
+    const rl_map *map = pl->map;
+    double ix, iy, jx, jy, mx = map->lm[b].x - map->lm[a].x, my = map->lm[b].y - map->lm[a].y;
+    double ox, oy, yaw, c, s, cx, cy;
+    obs_at(pl, o, i, a, &ix, &iy);
+    obs_at(pl, o, j, b, &jx, &jy);
+    ox = jx - ix;
+    oy = jy - iy;
+    yaw = atan2(my, mx) - atan2(oy, ox);
+    c = cos(yaw);
+    s = sin(yaw);
+    cx = 0.5 * (ix + jx);
+    cy = 0.5 * (iy + jy);
     p->yaw = wrap(yaw);
     p->x = 0.5 * (map->lm[a].x + map->lm[b].x) - (c * cx - s * cy);
     p->y = 0.5 * (map->lm[a].y + map->lm[b].y) - (s * cx + c * cy);
@@ -100,7 +146,7 @@ static void propose(const rl_map *map, const obs_set *o, int i, int j, int a, in
 static int verify(const rl_place *pl, const obs_set *o, place *p, int need, int i, int j, int a, int b)
 {
     double c = cos(p->yaw), s = sin(p->yaw);
-    int k, known = i >= 0 && 0.5 * tolerance(obs_distance(o, i, j)) <= pl->cfg.gate;
+    int k, known = i >= 0 && 0.5 * pair_tolerance(o, i, j) <= pl->cfg.gate;
     p->matched = p->conflicts = 0;
     if (known) {
         p->match[i] = a;
@@ -114,7 +160,15 @@ static int verify(const rl_place *pl, const obs_set *o, place *p, int need, int 
             continue;
         X = p->x + c * o->px[k] - s * o->py[k];
         Y = p->y + s * o->px[k] + c * o->py[k];
-        m = rl_place_index_near(pl, X, Y, pl->cfg.gate, 0);
+        m = rl_place_index_near(pl, X, Y, pl->cfg.gate + obs_slack(o, k), 0);
+        if (m >= 0 && pl->map->lm[m].z > 0) { /* where it lies at that landmark's height */
+            double x, y;
+            obs_at(pl, o, k, m, &x, &y);
+            X = p->x + c * x - s * y;
+            Y = p->y + s * x + c * y;
+            if (hypot(X - pl->map->lm[m].x, Y - pl->map->lm[m].y) > pl->cfg.gate)
+                m = -1;
+        }
         p->match[k] = -1;
         if (m >= 0 && pl->map->lm[m].id == o->id[k]) {
             p->match[k] = m;
@@ -165,7 +219,7 @@ static int needed(const search *s, int margin)
 static void propose_pair(const rl_place *pl, const obs_set *o, int i, int j, int margin, search *s)
 {
     const rl_place_pair *p, *end;
-    double d = obs_distance(o, i, j), t = tolerance(d);
+    double d = obs_distance(o, i, j), t = pair_tolerance(o, i, j);
     if (d - t > pl->cfg.reach)
         return;
     rl_place_index_pairs(pl, o->id[i], o->id[j], d - t, d + t, &p, &end);
@@ -178,7 +232,7 @@ static void propose_pair(const rl_place *pl, const obs_set *o, int i, int j, int
             place c;
             if (pl->map->lm[a].id != o->id[i])
                 continue;
-            propose(pl->map, o, i, j, a, b, &c);
+            propose(pl, o, i, j, a, b, &c);
             s->candidates++;
             if (verify(pl, o, &c, needed(s, margin), i, j, a, b))
                 consider(s, &c);
@@ -194,9 +248,9 @@ static int seed_triangle(const rl_place *pl, const obs_set *o, int *t)
     for (k = 2; k < n; k++)
         for (j = 1; j < k; j++)
             for (i = 0; i < j; i++) {
-                double dij = obs_distance(o, i, j), dik = obs_distance(o, i, k), djk = obs_distance(o, j, k);
-                if (dij + tolerance(dij) <= pl->cfg.reach && dik + tolerance(dik) <= pl->cfg.reach &&
-                    djk + tolerance(djk) <= pl->cfg.reach) {
+                if (obs_distance(o, i, j) + pair_tolerance(o, i, j) <= pl->cfg.reach &&
+                    obs_distance(o, i, k) + pair_tolerance(o, i, k) <= pl->cfg.reach &&
+                    obs_distance(o, j, k) + pair_tolerance(o, j, k) <= pl->cfg.reach) {
                     t[0] = i;
                     t[1] = j;
                     t[2] = k;
@@ -244,7 +298,7 @@ static void search_near(const rl_place *pl, const obs_set *o, const rl_place_pri
     double far_d = 0;
     for (i = 0; i < n; i++) {
         double X = pr->x + c * o->px[i] - sn * o->py[i], Y = pr->y + sn * o->px[i] + c * o->py[i];
-        double r = R + turn * hypot(o->px[i], o->py[i]) + pl->cfg.gate;
+        double r = R + turn * hypot(o->px[i], o->py[i]) + pl->cfg.gate + obs_slack(o, i);
         cnt[i] = rl_place_index_within(pl, X, Y, r, o->id[i], near[i], NEAR_MAX);
         if (cnt[i] > NEAR_MAX)
             cnt[i] = NEAR_MAX; /* a bound too wide to tell: the global search decides */
@@ -265,9 +319,9 @@ static void search_near(const rl_place *pl, const obs_set *o, const rl_place_pri
             int ma = near[first][a], mb = near[far][b];
             double dm = hypot(map->lm[ma].x - map->lm[mb].x, map->lm[ma].y - map->lm[mb].y);
             place p;
-            if (ma == mb || fabs(dm - far_d) > tolerance(far_d))
+            if (ma == mb || fabs(dm - far_d) > pair_tolerance(o, first, far))
                 continue;
-            propose(map, o, first, far, ma, mb, &p);
+            propose(pl, o, first, far, ma, mb, &p);
             if (hypot(p.x - pr->x, p.y - pr->y) > R || fabs(wrap(p.yaw - pr->yaw)) > turn)
                 continue;
             s->candidates++;

@@ -25,22 +25,24 @@ void render_camera_default(rl_calib *cam, int w, int h)
 
 /* Map point on the ceiling -> pixel. Camera frame: x right (+u), y down
  * (+v), z up; image top is the robot's forward (+x_r), +u its left (+y_r). */
-void render_camera_to_pixel(const render_scene *s, double X, double Y, double *u, double *v)
+void render_camera_to_pixel(const render_scene *s, double X, double Y, double drop, double *u, double *v)
 {
     const double *R = s->R;
-    double dx = X - s->cx, dy = Y - s->cy, dz = s->ceiling_height - s->cz;
+    double dx = X - s->cx, dy = Y - s->cy, dz = s->ceiling_height - drop - s->cz;
     double f = R[0] * dx + R[3] * dy + R[6] * dz, l = R[1] * dx + R[4] * dy + R[7] * dz,
            up = R[2] * dx + R[5] * dy + R[8] * dz;
     rl_calib_project(&s->cam, l / up, -f / up, u, v);
 }
 
-static void ray_to_map(const render_scene *s, double xn, double yn, double ox, double oy, double *X,
+/* Where the ray of normalized image point (xn, yn), the camera moved by
+ * (ox, oy), meets the plane `drop` below the ceiling. */
+static void ray_to_map(const render_scene *s, double xn, double yn, double ox, double oy, double drop, double *X,
                        double *Y)
 {
     const double *R = s->R;
     double f = -yn, l = xn;
     double dx = R[0] * f + R[1] * l + R[2], dy = R[3] * f + R[4] * l + R[5], dz = R[6] * f + R[7] * l + R[8];
-    double t = (s->ceiling_height - s->cz) / dz;
+    double t = (s->ceiling_height - drop - s->cz) / dz;
     *X = s->cx + ox + t * dx;
     *Y = s->cy + oy + t * dy;
 }
@@ -139,10 +141,45 @@ static int view_grid(const render_scene *s, render_grid *g)
         for (x = 0; x < W; x += 4) {
             const double *r = ray_table + 2 * (((size_t)y * W + x) * SUB * SUB);
             double X, Y;
-            ray_to_map(s, r[0], r[1], 0, 0, &X, &Y);
+            ray_to_map(s, r[0], r[1], 0, 0, 0, &X, &Y);
             b[0] = fmin(b[0], X), b[1] = fmin(b[1], Y), b[2] = fmax(b[2], X), b[3] = fmax(b[3], Y);
         }
     return render_ceiling_grid(s, b, m, g);
+}
+
+/* The objects that hang below the ceiling, into low[]: how many. */
+static int hanging(const render_scene *s, int *low)
+{
+    int i, n = 0;
+    for (i = 0; i < s->n; i++)
+        if (s->obj[i].drop > 0)
+            low[n++] = i;
+    return n;
+}
+
+/* The radiance along a ray (normalized xn, yn; the camera moved by ox, oy):
+ * the nearest hanging object it meets (the later on one plane), else the
+ * ceiling. */
+static double ray_radiance(const render_scene *s, const render_grid *g, const int *low, int n_low, double xn,
+                           double yn, double ox, double oy)
+{
+    double X, Y, v = -1, best = 0;
+    int i;
+    for (i = 0; i < n_low; i++) {
+        const render_object *o = &s->obj[low[i]];
+        double r;
+        if (o->drop < best)
+            continue;
+        ray_to_map(s, xn, yn, ox, oy, o->drop, &X, &Y);
+        if ((r = render_ceiling_object(s, o, X, Y)) >= 0) {
+            v = r;
+            best = o->drop;
+        }
+    }
+    if (v >= 0)
+        return v;
+    ray_to_map(s, xn, yn, ox, oy, 0, &X, &Y);
+    return render_ceiling_radiance(s, g, X, Y);
 }
 
 static double rng_normal(void) { return render_random_normal(); }
@@ -150,8 +187,9 @@ static double rng_uniform(void) { return render_random_uniform(0, 1); }
 
 int render_camera_frame(const render_scene *s, uint8_t *out)
 {
-    int W = s->cam.width, H = s->cam.height, x, y, a, b, e;
+    int W = s->cam.width, H = s->cam.height, x, y, a, b, e, n_low;
     double *lin = malloc(sizeof(double) * (size_t)W * H);
+    static int low[RENDER_MAX_OBJ];
     double rmax = sqrt(s->cam.cx * s->cam.cx + s->cam.cy * s->cam.cy);
     static render_grid grid;
     render_rng rng = {rng_normal, rng_uniform};
@@ -167,6 +205,7 @@ int render_camera_frame(const render_scene *s, uint8_t *out)
     }
     if (!lin || build_rays(&s->cam) != 0 || view_grid(s, &grid) != 0)
         return -1;
+    n_low = hanging(s, low);
     for (y = 0; y < H; y++) {
         /* a rolling shutter: this row exposed f of the readout from the middle row's */
         double f = (y + 0.5) / H - 0.5, rc = cos(f * s->shutter_turn), rsn = sin(f * s->shutter_turn);
@@ -177,10 +216,10 @@ int render_camera_frame(const render_scene *s, uint8_t *out)
                 for (a = 0; a < SUB; a++) {
                     const double *r = ray_table + 2 * ((((size_t)y * W + x) * SUB + b) * SUB + a);
                     int k = b * SUB + a;
-                    double c = turn_c[k], sn = turn_s[k], X, Y;
+                    double c = turn_c[k], sn = turn_s[k];
                     double xr = c * r[0] - sn * r[1], yr = sn * r[0] + c * r[1];
-                    ray_to_map(s, rc * xr - rsn * yr, rsn * xr + rc * yr, move_x[k] + rox, move_y[k] + roy, &X, &Y);
-                    acc += render_ceiling_radiance(s, &grid, X, Y);
+                    acc += ray_radiance(s, &grid, low, n_low, rc * xr - rsn * yr, rsn * xr + rc * yr,
+                                        move_x[k] + rox, move_y[k] + roy);
                 }
             acc /= SUB * SUB;
             acc *= 1.0 - s->vignette * (du * du + dv * dv) / (rmax * rmax);

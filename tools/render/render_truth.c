@@ -32,9 +32,10 @@ static double visible_fraction(const render_scene *s, const render_object *o)
             if (lx * lx + ly * ly > o->a * o->a)
                 continue;
             n++;
-            render_camera_to_pixel(s, o->x + lx, o->y + ly, &u, &v);
+            render_camera_to_pixel(s, o->x + lx, o->y + ly, o->drop, &u, &v);
+            /* one that hangs below the ceiling hangs below its lights too */
             in += u >= -0.5 && v >= -0.5 && u <= s->cam.width - 0.5 && v <= s->cam.height - 0.5 &&
-                  !under_light(s, o->x + lx, o->y + ly);
+                  (o->drop > 0 || !under_light(s, o->x + lx, o->y + ly));
         }
     return (double)in / n;
 }
@@ -76,10 +77,10 @@ int render_truth_write(const char *path, const char *image, const render_scene *
     fprintf(f, "twin: %s\nlandmarks:\n", s->twin ? "apriltag36h11" : "none");
     for (i = 0; i < s->n; i++) {
         const render_object *o = &s->obj[i];
-        double u, v, vis, gap;
+        double u, v, vis, gap, dist = s->distance - o->drop; /* the camera's distance to it */
         if (o->kind != RENDER_OBJ_LANDMARK)
             continue;
-        render_camera_to_pixel(s, o->x, o->y, &u, &v);
+        render_camera_to_pixel(s, o->x, o->y, o->drop, &u, &v);
         if (u < -3 * o->a / s->distance * s->cam.fx || v < -3 * o->a / s->distance * s->cam.fx ||
             u > s->cam.width * 1.5 || v > s->cam.height * 1.5)
             continue;
@@ -87,8 +88,11 @@ int render_truth_write(const char *path, const char *image, const render_scene *
         if (vis <= 0)
             continue;
         gap = light_gap(s, o);
-        fprintf(f, "  - {id: %d, x: %.6f, y: %.6f, u: %.4f, v: %.4f, radius: %.3f, visible: %.4f, light_gap: %.4f, light_gap_radii: %.3f}\n",
-                o->id, o->x, o->y, u, v, o->a / s->distance * s->cam.fx, vis, gap, gap / o->a);
+        fprintf(f, "  - {id: %d, x: %.6f, y: %.6f, u: %.4f, v: %.4f, radius: %.3f, visible: %.4f, light_gap: %.4f, light_gap_radii: %.3f",
+                o->id, o->x, o->y, u, v, o->a / dist * s->cam.fx, vis, gap, gap / o->a);
+        if (o->drop > 0)
+            fprintf(f, ", drop: %.4f", o->drop);
+        fprintf(f, "}\n");
         n++;
     }
     if (n == 0)
