@@ -147,14 +147,45 @@ static int view_grid(const render_scene *s, render_grid *g)
     return render_ceiling_grid(s, b, m, g);
 }
 
-/* The objects that hang below the ceiling, into low[]: how many. */
-static int hanging(const render_scene *s, int *low)
+/* The objects that hang below the ceiling, into low[], and the pixels
+ * each may cover into box[] (x0, y0, x1, y1: its reach's corners in the
+ * image, widened by the motion's and the rolling shutter's travel and the
+ * lens's bend between them): how many. */
+static int hanging(const render_scene *s, int *low, int (*box)[4])
 {
-    int i, n = 0;
-    for (i = 0; i < s->n; i++)
-        if (s->obj[i].drop > 0)
-            low[n++] = i;
+    int i, k, n = 0;
+    double travel = s->motion + hypot(s->shutter_dx, s->shutter_dy);
+    for (i = 0; i < s->n; i++) {
+        const render_object *o = &s->obj[i];
+        double e = 1.5 * (o->a > o->b ? o->a : o->b), b[4] = {1e9, 1e9, -1e9, -1e9};
+        if (!(o->drop > 0))
+            continue;
+        for (k = 0; k < 9; k++) { /* the corners, the edges' middles and the centre */
+            double u, v;
+            render_camera_to_pixel(s, o->x + (k % 3 - 1) * e, o->y + (k / 3 - 1) * e, o->drop, &u, &v);
+            b[0] = fmin(b[0], u), b[1] = fmin(b[1], v), b[2] = fmax(b[2], u), b[3] = fmax(b[3], v);
+        }
+        /* the travel at the object's depth, in pixels, and the turn's at the image's edge */
+        e = 0.1 * (b[2] - b[0] + b[3] - b[1]) + travel / (s->distance - o->drop) * s->cam.fx + 3 +
+            (fabs(s->shutter_turn) + fabs(s->motion_turn)) * s->cam.fx;
+        box[n][0] = (int)floor(b[0] - e);
+        box[n][1] = (int)floor(b[1] - e);
+        box[n][2] = (int)ceil(b[2] + e);
+        box[n][3] = (int)ceil(b[3] + e);
+        low[n++] = i;
+    }
     return n;
+}
+
+/* Of the n hanging objects, those whose box holds pixel (x, y), into in[]:
+ * how many. */
+static int hanging_at(const int *low, const int (*box)[4], int n, int x, int y, int *in)
+{
+    int i, m = 0;
+    for (i = 0; i < n; i++)
+        if (x >= box[i][0] && x <= box[i][2] && y >= box[i][1] && y <= box[i][3])
+            in[m++] = low[i];
+    return m;
 }
 
 /* The radiance along a ray (normalized xn, yn; the camera moved by ox, oy):
@@ -189,7 +220,7 @@ int render_camera_frame(const render_scene *s, uint8_t *out)
 {
     int W = s->cam.width, H = s->cam.height, x, y, a, b, e, n_low;
     double *lin = malloc(sizeof(double) * (size_t)W * H);
-    static int low[RENDER_MAX_OBJ];
+    static int low[RENDER_MAX_OBJ], box[RENDER_MAX_OBJ][4], here[RENDER_MAX_OBJ];
     double rmax = sqrt(s->cam.cx * s->cam.cx + s->cam.cy * s->cam.cy);
     static render_grid grid;
     render_rng rng = {rng_normal, rng_uniform};
@@ -205,20 +236,21 @@ int render_camera_frame(const render_scene *s, uint8_t *out)
     }
     if (!lin || build_rays(&s->cam) != 0 || view_grid(s, &grid) != 0)
         return -1;
-    n_low = hanging(s, low);
+    n_low = hanging(s, low, box);
     for (y = 0; y < H; y++) {
         /* a rolling shutter: this row exposed f of the readout from the middle row's */
         double f = (y + 0.5) / H - 0.5, rc = cos(f * s->shutter_turn), rsn = sin(f * s->shutter_turn);
         double rox = f * s->shutter_dx, roy = f * s->shutter_dy;
         for (x = 0; x < W; x++) {
             double acc = 0, du = x - s->cam.cx, dv = y - s->cam.cy;
+            int n_here = n_low ? hanging_at(low, (const int(*)[4])box, n_low, x, y, here) : 0;
             for (b = 0; b < SUB; b++)
                 for (a = 0; a < SUB; a++) {
                     const double *r = ray_table + 2 * ((((size_t)y * W + x) * SUB + b) * SUB + a);
                     int k = b * SUB + a;
                     double c = turn_c[k], sn = turn_s[k];
                     double xr = c * r[0] - sn * r[1], yr = sn * r[0] + c * r[1];
-                    acc += ray_radiance(s, &grid, low, n_low, rc * xr - rsn * yr, rsn * xr + rc * yr,
+                    acc += ray_radiance(s, &grid, here, n_here, rc * xr - rsn * yr, rsn * xr + rc * yr,
                                         move_x[k] + rox, move_y[k] + roy);
                 }
             acc /= SUB * SUB;
