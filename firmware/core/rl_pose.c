@@ -260,8 +260,9 @@ rl_err rl_pose_solve_matched(const rl_calib *cam, const rl_map *map, const rl_mo
             out->dropped[out->n_dropped++] = lm[i].id;
         } else if (k < 0) {
             out->n_unknown++;
-        } else if (!observe(cam, map, &md, offsets, &lm[i], rl_map_height(map, k) - mount->z, &pt[m])) {
-            /* behind the camera, or a landmark hung below it */
+        } else if (!(rl_map_height(map, k) - mount->z >= RL_POSE_MIN_DEPTH) ||
+                   !observe(cam, map, &md, offsets, &lm[i], rl_map_height(map, k) - mount->z, &pt[m])) {
+            /* a landmark hung down to the camera, or a ray that misses it */
             out->dropped[out->n_dropped++] = lm[i].id;
         } else {
             pt[m].mx = map->lm[k].x;

@@ -108,6 +108,9 @@ void rl_offsets_eval(const rl_offsets *o, double u, double v, double *fwd, doubl
 void rl_pose_ceiling_point(const rl_calib *cam, const rl_offsets *offsets, double distance,
                            double u, double v, double *fwd, double *left);
 
+/* A landmark less than this far above the camera is not used, m. */
+#define RL_POSE_MIN_DEPTH 0.1
+
 /* Solve the pose from n identified landmarks. RL_ETOOFEW when fewer than
  * two usable (in the map, consistent) remain; RL_ERANGE when the camera is
  * not below the ceiling or the result is not finite (a calibration or map

@@ -85,11 +85,8 @@ static rl_err read_landmark(rl_yaml *y, yaml_node_t *item, int i, rl_map_landmar
     /* its own height: a landmark on a beam or a lower panel */
     snprintf(label, sizeof label, "landmarks[%d].z", i);
     lm->z = 0.0;
-    if ((e = rl_yaml_double_in(y, item, "z", label, 0, 0.0, RL_MAP_MAX_HEIGHT, &lm->z, err, errlen)) != RL_OK)
+    if ((e = rl_yaml_double_in(y, item, "z", label, 0, 0.001, RL_MAP_MAX_HEIGHT, &lm->z, err, errlen)) != RL_OK)
         return e;
-    if (rl_yaml_get(y, item, "z") != NULL && !(lm->z > 0.0))
-        return rl_yaml_fail(y, rl_yaml_get(y, item, "z"), label, RL_ERANGE, err, errlen,
-                            "a landmark's height above the floor must be positive");
     return read_sigmas(y, item, i, lm, err, errlen);
 }
 

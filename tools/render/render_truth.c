@@ -21,8 +21,28 @@ static int under_light(const render_scene *s, double X, double Y)
     return 0;
 }
 
+/* 1 if an object hanging below (X, Y, drop below the ceiling) covers it
+ * from the camera. */
+static int hidden(const render_scene *s, double X, double Y, double drop)
+{
+    int i;
+    for (i = 0; i < s->n; i++) {
+        const render_object *h = &s->obj[i];
+        double t, hx, hy;
+        if (!(h->drop > drop))
+            continue;
+        /* where the ray from the camera to the point crosses h's plane */
+        t = (s->ceiling_height - h->drop - s->cz) / (s->ceiling_height - drop - s->cz);
+        hx = s->cx + t * (X - s->cx);
+        hy = s->cy + t * (Y - s->cy);
+        if (render_ceiling_object(s, h, hx, hy) >= 0)
+            return 1;
+    }
+    return 0;
+}
+
 /* Fraction of the landmark's disk that the camera sees: inside the image
- * and not covered by a light fixture. */
+ * and not covered by a light fixture or by something hanging below it. */
 static double visible_fraction(const render_scene *s, const render_object *o)
 {
     int i, j, in = 0, n = 0;
@@ -35,7 +55,8 @@ static double visible_fraction(const render_scene *s, const render_object *o)
             render_camera_to_pixel(s, o->x + lx, o->y + ly, o->drop, &u, &v);
             /* one that hangs below the ceiling hangs below its lights too */
             in += u >= -0.5 && v >= -0.5 && u <= s->cam.width - 0.5 && v <= s->cam.height - 0.5 &&
-                  (o->drop > 0 || !under_light(s, o->x + lx, o->y + ly));
+                  (o->drop > 0 || !under_light(s, o->x + lx, o->y + ly)) &&
+                  !hidden(s, o->x + lx, o->y + ly, o->drop);
         }
     return (double)in / n;
 }

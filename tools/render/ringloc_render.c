@@ -76,8 +76,8 @@ static const char *help =
     "  --site LAYOUT   grid (default) or irregular: each landmark up to 15 cm off the\n"
     "                  grid, the layout turned 5 degrees (a site taped up by hand)\n"
     "  --move ID,DX,DY the site's landmark ID moved by (DX, DY) m\n"
-    "  --lower ID,M    the site's landmark ID hangs M m below the ceiling (a beam, a\n"
-    "                  lower panel; --write-map gives its z); repeat for more\n"
+    "  --lower ID,M    landmarks of id ID hang M m below the ceiling (a beam, a lower\n"
+    "                  panel; --write-map gives their z); repeat for more\n"
     "  --twin          also render each frame with AprilTag 36h11 tags of the same size\n"
     "                  at the same places (NAME_NNN_tag.png)\n"
     "  --camera FILE   calibration to render with (default: 640x480, 70 deg, mild\n"
@@ -375,9 +375,10 @@ static int scene_setup(const render_opts *o, const rl_site *site, const rl_calib
         return rl_cli_fail(NULL, 1, "%s: ceiling_height %.3f m is not above the camera (%.2f m)", o->site_map,
                            s->ceiling_height, s->cam_z);
     for (i = 0; i < site->map.count; i++)
-        if (site->map.lm[i].z > 0 && !(site->map.lm[i].z - s->cam_z > 0.3))
-            return rl_cli_fail(NULL, 1, "%s: landmark %d (id %d) at z %.3f m is not above the camera (%.2f m)",
-                               o->site_map, i, site->map.lm[i].id, site->map.lm[i].z, s->cam_z);
+        if (site->map.lm[i].z > 0 && !(site->map.lm[i].z - s->cam_z > 0.3 && site->map.lm[i].z <= s->ceiling_height))
+            return rl_cli_fail(NULL, 1, "%s: landmarks[%d].z %.3f m (id %d) is not between 0.3 m above the camera "
+                               "(%.2f m) and the ceiling (%.3f m): the renderer hangs landmarks below it only",
+                               o->site_map, i, site->map.lm[i].z, site->map.lm[i].id, s->cam_z, s->ceiling_height);
     render_set_use_map(&site->map);
     return 0;
 }
