@@ -112,6 +112,12 @@ static int judged(const rl_recog *rec, const rl_accept_rule *rule, const rl_leve
 {
     rl_profile q;
     rl_profile_rescale(wide, s, &q);
+    /* the id's own columns first: below the rule's score at its best blur
+     * it is not taken whatever the others score (the match of every id
+     * would find the same score for it) */
+    rl_match_ids(&rec->templates, &q, &id, 1, -1, m);
+    if (!(m->id == id && m->score >= rule->min_score))
+        return 0;
     rl_match_all(&rec->templates, &q, m);
     return m->id == id && rl_accept(rule, m, rl_accept_span(local, rec->tone, &q));
 }
