@@ -38,9 +38,11 @@
  * window in full. res: the frame's levels (the last full frame's).
  * *away (when not NULL) is 1 when the read failed because the centre,
  * drawn to the ink, left the prediction by more than 1.5 radii, or there
- * was no ink within 2.5 radii of it: the landmark is not near where it
- * was predicted (a read of the window about the prediction finds it no
- * nearer). */
+ * was nothing darker than midway grey within 2.5 radii of it. A hint, not
+ * a proof that the landmark is not near: a centre can settle just past
+ * 1.5 radii off a landmark that is within them, and a faint landmark can
+ * have nothing under midway grey (rl_track reads such a window the costly
+ * way); on failure d's id, score and runner-up are unspecified. */
 int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
                    double v, double r, rl_detection *d, int *away);
 
