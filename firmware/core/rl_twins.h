@@ -24,10 +24,11 @@
 
 #include "rl_recog_state.h"
 
-/* A global read whose id leads every other id through its curve by this
- * much correlation is clear (no global read the formations turned into
- * a twin led by more than 0.036: composites and moving frames,
- * docs/design.md). */
+/* A global read of a whole landmark whose id leads every other id through
+ * its curve by this much correlation is clear (no such read the
+ * formations turned into a twin led by more than 0.036: composites and
+ * moving frames, docs/design.md; a cut one led by 0.055, so a landmark
+ * the border cuts is always checked). */
 #define RL_TWINS_CLEAR 0.05
 /* A local read's lead over its twins, both formations summed, at least;
  * and its twin's lead through the other formation, at most. */
@@ -37,6 +38,13 @@
  * let a twin come within 0.001-0.014 there, wrong ones gave it 0.009 to
  * 0.048; ISP pipelines and composites, docs/design.md). */
 #define RL_TWINS_TOLERANCE 0.006
+/* The same for a landmark the border cuts (a twin leading by more is
+ * too much): none. Its reads rest on the
+ * part of the ring in the frame, where a twin leading at all through the
+ * other formation is the formations disagreeing (a cut 17 of a 16 px
+ * grey-mixed sheet read as 25 by the local pass, its twin 0.0013 ahead
+ * there); the rank read decides it, as any landmark they disagree on. */
+#define RL_TWINS_CUT_TOLERANCE 0.0
 /* A landmark the formations disagree on keeps its id when its lead
  * through the frame's curve passes the rule above with no twin through
  * the other formation, and it leads every id up to two zones away by
