@@ -150,16 +150,29 @@ static int rivals(const rl_recog *rec, const rl_detection *d, int *out)
     return n;
 }
 
+/* How far a twin may lead d through the other formation:
+ * RL_TWINS_TOLERANCE (a local read: RL_TWINS_LOCAL_TOLERANCE), or
+ * RL_TWINS_CUT_TOLERANCE for a landmark the border cuts in a frame read
+ * through a curve (the other formation then the grey levels as the camera
+ * gave them, mixed after its curve). Read as linear light, a cut one's
+ * right reads let the 2.2 curve's twin lead by up to 0.006 (the sheets of
+ * the development folders at gamma 1), its wrong ones gave it 0.009 or more. */
+static double tolerance(const rl_recog *rec, const rl_detection *d)
+{
+    if (!d->complete && rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0)
+        return RL_TWINS_CUT_TOLERANCE;
+    return d->pass == RL_PASS_LOCAL ? RL_TWINS_LOCAL_TOLERANCE : RL_TWINS_TOLERANCE;
+}
+
 /* Whether d keeps its id, from its lead over its best rival through
  * the other formation (other) and through the frame's curve (own): while
- * the twin leads by less than RL_TWINS_TOLERANCE through the other (a
- * landmark the border cuts: RL_TWINS_CUT_TOLERANCE), and
- * the sum is positive (a global read: the whole ring at the frame's
+ * the twin leads by less than tol through the other (none at all: tol 0),
+ * and the sum is positive (a global read: the whole ring at the frame's
  * levels) or over RL_TWINS_LOCAL_MARGIN (a local one, read sector by
  * sector, whose own lead says less). */
-static int keeps(const rl_detection *d, double other, double own)
+static int keeps(const rl_detection *d, double tol, double other, double own)
 {
-    int within = d->complete ? other > -RL_TWINS_TOLERANCE : other >= -RL_TWINS_CUT_TOLERANCE;
+    int within = tol > 0 ? other > -tol : other >= 0;
     return within && other + own > (d->pass == RL_PASS_LOCAL ? RL_TWINS_LOCAL_MARGIN : 0.0);
 }
 
@@ -168,7 +181,7 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
     int i, kept = 0, rv[RL_MAX_IDS], n;
     for (i = 0; i < res->n_landmarks; i++) {
         rl_detection d = res->landmarks[i];
-        double lead, own = 0, fit;
+        double lead, own = 0, fit, tol = tolerance(rec, &d);
         /* a global read of a whole landmark clear of every other id
          * through its curve is clear of its twins; a local read's
          * runner-up (sector-normalized) does not say so, nor a cut one's
@@ -190,11 +203,14 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
             d.runner_up = d.score - lead;
         /* through the frame's own curve only where the other's lead
          * alone does not keep it (own: 0, the id's lead where it was read) */
-        if (!keeps(&d, lead, 0.0))
+        if (!keeps(&d, tol, lead, 0.0))
             own = twin_lead(rec, img, rec->tone, &d, rv, n, &fit);
         /* the formations disagree: the read through any monotone curve
-         * decides, where the frame's curve reads the id too */
-        if (keeps(&d, lead, own) || (keeps(&d, 0.0, own) && rank_keeps(rec, img, rec->tone, &d)))
+         * decides, where the frame's curve reads the id too (not for a
+         * cut landmark read through a curve, tol 0: a cut 17 read as 25
+         * at 2.2, its twin 0.0035 ahead through the grey levels, led 17
+         * by more than RL_TWINS_RANK_LEAD there too) */
+        if (keeps(&d, tol, lead, own) || (tol > 0 && keeps(&d, tol, 0.0, own) && rank_keeps(rec, img, rec->tone, &d)))
             res->landmarks[kept++] = d;
         else
             rl_result_add_unidentified(res, &d);

@@ -38,12 +38,18 @@
  * let a twin come within 0.001-0.014 there, wrong ones gave it 0.009 to
  * 0.048; ISP pipelines and composites, docs/design.md). */
 #define RL_TWINS_TOLERANCE 0.006
-/* The same for a landmark the border cuts (a twin leading by more is
- * too much): none. Its reads rest on the
+/* The same for a local read (sector by sector, the centre searched), whose
+ * own lead says less: its right reads let a twin come within 0.004 there,
+ * a wrong one (a whole 19 of a 16 px grey-mixed sheet read as 27 at 2.2)
+ * gave it 0.0059. */
+#define RL_TWINS_LOCAL_TOLERANCE 0.005
+/* The same for a landmark the border cuts, in a frame read through a
+ * curve (a twin leading by more is too much): none. Its reads rest on the
  * part of the ring in the frame, where a twin leading at all through the
- * other formation is the formations disagreeing (a cut 17 of a 16 px
- * grey-mixed sheet read as 25 by the local pass, its twin 0.0013 ahead
- * there); the rank read decides it, as any landmark they disagree on. */
+ * grey levels is the formations disagreeing (a cut 17 of a 16 px
+ * grey-mixed sheet read as 25 by the local pass at gamma 2.2, its twin
+ * 0.0013 ahead there); the rank read decides it, as any landmark they
+ * disagree on. */
 #define RL_TWINS_CUT_TOLERANCE 0.0
 /* A landmark the formations disagree on keeps its id when its lead
  * through the frame's curve passes the rule above with no twin through
