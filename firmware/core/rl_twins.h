@@ -49,8 +49,12 @@
  * grey levels is the formations disagreeing (a cut 17 of a 16 px
  * grey-mixed sheet read as 25 by the local pass at gamma 2.2, its twin
  * 0.0013 ahead there); the rank read decides it, as any landmark they
- * disagree on. */
+ * disagree on, where its radius is the frame's (RL_TWINS_CUT_SIZE). */
 #define RL_TWINS_CUT_TOLERANCE 0.0
+/* A cut landmark read through a curve whose radius is this far (a share)
+ * from the frame's landmarks' is not decided by the rank read (rl_twins.c,
+ * rank_fits). */
+#define RL_TWINS_CUT_SIZE 0.05
 /* A landmark the formations disagree on keeps its id when its lead
  * through the frame's curve passes the rule above with no twin through
  * the other formation, and it leads every id up to two zones away by
