@@ -152,16 +152,19 @@ static int rivals(const rl_recog *rec, const rl_detection *d, int *out)
     return n;
 }
 
-/* How far a twin may lead d through the other formation:
- * RL_TWINS_TOLERANCE (a local read: RL_TWINS_LOCAL_TOLERANCE), or
- * RL_TWINS_CUT_TOLERANCE for a landmark the border cuts in a frame read
- * through a curve (the other formation then the grey levels as the camera
- * gave them, mixed after its curve). Read as linear light, a cut one's
- * right reads let the 2.2 curve's twin lead by up to 0.006 (the sheets of
- * the development folders at gamma 1), its wrong ones gave it 0.009 or more. */
-static double tolerance(const rl_recog *rec, const rl_detection *d)
+/* How far a twin may lead d through the other formation: read as linear
+ * light, RL_TWINS_TOLERANCE; read through a curve (the other formation
+ * then the grey levels as the camera gave them, mixed after its curve, the
+ * formation the near wrong reads came from), RL_TWINS_LOCAL_TOLERANCE for a
+ * local read and RL_TWINS_CUT_TOLERANCE for a landmark the border cuts.
+ * Read as linear, right reads let the 2.2 curve's twin lead by up to 0.006
+ * (the 16 px sheets of the development folders at gamma 1, cut ones among
+ * them), wrong ones gave it 0.009 or more. */
+static double tolerance(const rl_detection *d, int curved)
 {
-    if (!d->complete && rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0)
+    if (!curved)
+        return RL_TWINS_TOLERANCE;
+    if (!d->complete)
         return RL_TWINS_CUT_TOLERANCE;
     return d->pass == RL_PASS_LOCAL ? RL_TWINS_LOCAL_TOLERANCE : RL_TWINS_TOLERANCE;
 }
@@ -193,16 +196,20 @@ static int rank_fits(const rl_detection *d, double tol, double size)
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res)
 {
     double size = rl_result_median_radius(res);
+    /* read through a curve, not as linear light */
+    int curved = rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0;
     int i, kept = 0, rv[RL_MAX_IDS], n;
     for (i = 0; i < res->n_landmarks; i++) {
         rl_detection d = res->landmarks[i];
-        double lead, own = 0, fit, tol = tolerance(rec, &d);
+        double lead, own = 0, fit, tol = tolerance(&d, curved);
         /* a global read of a whole landmark clear of every other id
          * through its curve is clear of its twins; a local read's
          * runner-up (sector-normalized) does not say so, nor a cut one's
-         * (a circle partly out of the frame: a cut 2 of a 16 px grey-mixed
-         * sheet read as its twin 18 led every id by 0.055) */
-        if ((d.pass == RL_PASS_GLOBAL && d.complete && d.score - d.runner_up >= RL_TWINS_CLEAR) ||
+         * read through a curve (a circle partly out of the frame: a cut
+         * 2 of a 16 px grey-mixed sheet read as its twin 18 at 2.2 led
+         * every id by 0.055; read as linear, cut ones clear of every id
+         * were right on every set) */
+        if ((d.pass == RL_PASS_GLOBAL && (d.complete || !curved) && d.score - d.runner_up >= RL_TWINS_CLEAR) ||
             (n = rivals(rec, &d, rv)) == 0) {
             res->landmarks[kept++] = d;
             continue;

@@ -27,8 +27,9 @@
 /* A global read of a whole landmark whose id leads every other id through
  * its curve by this much correlation is clear (no such read the
  * formations turned into a twin led by more than 0.036: composites and
- * moving frames, docs/design.md; a cut one led by 0.055, so a landmark
- * the border cuts is always checked). */
+ * moving frames, docs/design.md; a cut one read through the 2.2 curve
+ * led by 0.055, so a landmark the border cuts is always checked in a frame
+ * read through a curve). */
 #define RL_TWINS_CLEAR 0.05
 /* A local read's lead over its twins, both formations summed, at least;
  * and its twin's lead through the other formation, at most. */
@@ -39,9 +40,9 @@
  * 0.048; ISP pipelines and composites, docs/design.md). */
 #define RL_TWINS_TOLERANCE 0.006
 /* The same for a local read (sector by sector, the centre searched), whose
- * own lead says less: its right reads let a twin come within 0.004 there,
- * a wrong one (a whole 19 of a 16 px grey-mixed sheet read as 27 at 2.2)
- * gave it 0.0059. */
+ * own lead says less, in a frame read through a curve: its right reads let
+ * a twin come within 0.004 there, a wrong one (a whole 19 of a 16 px
+ * grey-mixed sheet read as 27 at 2.2) gave it 0.0059. */
 #define RL_TWINS_LOCAL_TOLERANCE 0.005
 /* The same for a landmark the border cuts, in a frame read through a
  * curve (a twin leading by more is too much): none. Its reads rest on the
