@@ -207,9 +207,9 @@ static void axes(jbuf *b, const rl_view_geom *g)
     rl_pose zero;
     double u0, v0, uf, vf, ul, vl;
     memset(&zero, 0, sizeof zero);
-    if (!rl_pose_project(g->calib, g->map, g->mount, &zero, 0, 0, &u0, &v0) ||
-        !rl_pose_project(g->calib, g->map, g->mount, &zero, 0.5, 0, &uf, &vf) ||
-        !rl_pose_project(g->calib, g->map, g->mount, &zero, 0, 0.5, &ul, &vl)) {
+    if (!rl_pose_project(g->calib, g->map, g->mount, &zero, 0, 0, g->map->ceiling_height, &u0, &v0) ||
+        !rl_pose_project(g->calib, g->map, g->mount, &zero, 0.5, 0, g->map->ceiling_height, &uf, &vf) ||
+        !rl_pose_project(g->calib, g->map, g->mount, &zero, 0, 0.5, g->map->ceiling_height, &ul, &vl)) {
         put(b, "\"axes\": null, ");
         return;
     }
@@ -235,7 +235,8 @@ static void projected(jbuf *b, const rl_view_snap *s)
     put(b, "\"projected\": [");
     for (i = 0; s->have_pose && i < g->map->count && i < RL_MAX_MAP_LANDMARKS; i++) {
         double u, v, off = -1;
-        if (!rl_pose_project(g->calib, g->map, g->mount, &s->pose, g->map->lm[i].x, g->map->lm[i].y, &u, &v) ||
+        if (!rl_pose_project(g->calib, g->map, g->mount, &s->pose, g->map->lm[i].x, g->map->lm[i].y,
+                             rl_map_height(g->map, i), &u, &v) ||
             u < -s->width || u > 2 * s->width || v < -s->height || v > 2 * s->height)
             continue;
         for (j = 0; s->have_result && j < s->res->n_landmarks && j < RL_MAX_LANDMARKS; j++) {

@@ -89,8 +89,13 @@ static rl_err offsets_put(void *ctx, const rl_run_report *rep)
         double dx, dy;
         if (k < 0)
             continue;
-        dx = map->lm[k].x - f->cx;
-        dy = map->lm[k].y - f->cy;
+        /* its offset as it would be at the ceiling's distance (a landmark
+         * hung lower is seen as far out as one that much further out on
+         * the ceiling) */
+        dx = (map->lm[k].x - f->cx) * (map->ceiling_height - f->site->mount.z) /
+             (rl_map_height(map, k) - f->site->mount.z);
+        dy = (map->lm[k].y - f->cy) * (map->ceiling_height - f->site->mount.z) /
+             (rl_map_height(map, k) - f->site->mount.z);
         f->U[f->n] = rep->res->landmarks[j].u;
         f->V[f->n] = rep->res->landmarks[j].v;
         f->F[f->n] = cos(f->cyaw) * dx + sin(f->cyaw) * dy;

@@ -288,6 +288,7 @@ static int plan_grid(const char *C, const plan_opts *o, const rl_plan_result *ou
             lm->id = map.count + 1;
             lm->x = i * o->pitch;
             lm->y = j * o->pitch;
+            lm->sigma_x = lm->sigma_y = lm->z = 0;
             map.count++;
         }
     if (rl_mapfile_save(map_out, &map, err, sizeof err) != RL_OK)
@@ -357,6 +358,7 @@ static void to_map(const plan_area *a, const rl_site_plan_result *r, const int *
             lm->x = r->x0 + i * a->pitch;
             lm->y = r->y0 + j * a->pitch;
             lm->sigma_x = lm->sigma_y = 0;
+            lm->z = 0;
         }
 }
 

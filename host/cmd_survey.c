@@ -25,7 +25,8 @@ static const char *survey_help =
     "--record DIR), instead of measuring the ceiling by hand. Every frame is\n"
     "recognized, then every landmark's position, the ceiling's height and every\n"
     "frame's pose and tilt are estimated together by robust least squares over all\n"
-    "observations (Ceres Solver). FRAME: PNG files, folders of them, or JSON-lines\n"
+    "observations (Ceres Solver), and the height of each landmark off the\n"
+    "ceiling's plane (a beam, a lower panel). FRAME: PNG files, folders of them, or JSON-lines\n"
     "files of `ringloc detect` output (to redo a survey without recognizing again).\n"
     "The map frame: the origin landmark at (0, 0), the axis landmark on +x. The\n"
     "scale comes from the printed diameter (the landmarks' image radii), or from a\n"
@@ -35,10 +36,13 @@ static const char *survey_help =
     "  {\"landmarks\": 30, \"frames\": 300, \"frames_used\": 296, \"observations\": 3712,\n"
     "   \"ceiling_height\": 2.7503, \"sigma_ceiling_height\": 0.0004, \"rms_px\": 0.11,\n"
     "   \"scale\": \"diameter\", \"least_certain\": {\"id\": 6, \"sigma\": 0.0009},\n"
+    "   \"off_plane\": [{\"id\": 8, \"z\": 2.4503, \"sigma_z\": 0.0021}],\n"
     "   \"not_placed\": [], \"alone\": [],\n"
     "   \"left_out\": {\"few\": 3, \"lost\": 0, \"outlier\": 1, \"unreadable\": 0},\n"
     "   \"moved\": [{\"id\": 12, \"distance\": 0.0501, \"sigmas\": 61.2}], \"seconds\": 4.1,\n"
     "   \"cpu_seconds\": 4.0}\n"
+    "off_plane: landmarks off the ceiling's plane (a beam, a lower panel: 3 cm and\n"
+    "five of their sigmas or more), each with its own height z in MAP.yaml;\n"
     "not_placed: landmarks seen in fewer than two frames with another landmark;\n"
     "alone: ids seen only by themselves; few: frames with fewer than two landmarks;\n"
     "lost: frames that fit no place of the others; outlier: frames whose centres\n"
@@ -144,6 +148,7 @@ static rl_err write_map(const char *path, const rl_survey *sv, const rl_family *
         m.y = l->y;
         m.sigma_x = sqrt(fmax(0, l->cov[0]));
         m.sigma_y = sqrt(fmax(0, l->cov[2]));
+        m.z = l->z; /* off the ceiling's plane: its own height */
         rl_mapfile_put_landmark(f, &m);
     }
     return rl_outfile_commit(&o, err, errlen);
@@ -160,7 +165,7 @@ static void print_ids(const rl_survey *sv, int status)
 static void report(const rl_survey *sv, int frames, int unreadable, const rl_survey_move *mv, int n_mv,
                    double seconds)
 {
-    int i, placed = 0, worst = -1, left[4] = {0, 0, 0, 0};
+    int i, placed = 0, n_off = 0, worst = -1, left[4] = {0, 0, 0, 0};
     double ws = -1;
     for (i = 0; i < sv->n_lm; i++) {
         const rl_survey_landmark *l = &sv->lm[i];
@@ -181,7 +186,12 @@ static void report(const rl_survey *sv, int frames, int unreadable, const rl_sur
            sv->cfg.ceiling_height > 0 ? "ceiling-height" : sv->cfg.axis_distance > 0 ? "axis-distance" : "diameter");
     if (worst >= 0)
         printf("\"least_certain\": {\"id\": %d, \"sigma\": %.5f}, ", sv->lm[worst].id, ws);
-    printf("\"not_placed\": [");
+    printf("\"off_plane\": [");
+    for (i = 0; i < sv->n_lm; i++)
+        if (sv->lm[i].status == RL_SURVEY_PLACED && sv->lm[i].z > 0)
+            printf("%s{\"id\": %d, \"z\": %.4f, \"sigma_z\": %.4f}", n_off++ ? ", " : "", sv->lm[i].id, sv->lm[i].z,
+                   sv->lm[i].sigma_z);
+    printf("], \"not_placed\": [");
     print_ids(sv, RL_SURVEY_RARE);
     printf("], \"alone\": [");
     for (i = 0; i < sv->n_alone; i++)
@@ -218,6 +228,11 @@ static void tell(const rl_survey *sv)
                     sv->lm[i].id, sv->lm[i].views);
     for (i = 0; i < sv->n_alone; i++)
         fprintf(stderr, "ringloc survey: landmark %d was only ever seen alone: not placed\n", sv->alone[i]);
+    for (i = 0; i < sv->n_lm; i++)
+        if (sv->lm[i].status == RL_SURVEY_PLACED && sv->lm[i].z > 0)
+            fprintf(stderr, "ringloc survey: landmark %d is %.3f m %s the ceiling's plane (+-%.3f m): its own z in the map\n",
+                    sv->lm[i].id, fabs(sv->lm[i].z - sv->height), sv->lm[i].z < sv->height ? "below" : "above",
+                    sv->lm[i].sigma_z);
 }
 
 int rl_cmd_survey(int argc, char **argv)

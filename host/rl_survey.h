@@ -8,7 +8,9 @@
  * rl_survey_adjust (Ceres, rl_survey_adjust.cpp) then estimates every
  * landmark's position, the ceiling's height and every frame's pose and
  * tilt together by robust least squares over all observations, with the
- * landmarks' covariances. The map frame: the origin landmark at (0, 0),
+ * landmarks' covariances; a landmark off the ceiling's plane (its own
+ * height, estimated once with the plane held, 3 cm and five sigmas off
+ * it) gets its own height z in the fit. The map frame: the origin landmark at (0, 0),
  * the axis landmark on +x; the scale from the landmarks' printed
  * diameter (their image radii), or from a known ceiling height or
  * origin-axis distance.
@@ -83,6 +85,8 @@ typedef struct {
     int id;
     double x, y;   /* map frame, m */
     double cov[3]; /* covariance xx, xy, yy, m^2 */
+    double z, sigma_z; /* off the ceiling's plane: its own height above the floor and its
+                          standard deviation, m (0: on the plane) */
     int views;     /* frames used that saw it */
     int status;
 } rl_survey_landmark;

@@ -21,27 +21,28 @@ extern "C" {
 namespace {
 
 // A frame's view of one landmark: its centre (and radius) from the
-// robot's pose q (x, y, yaw, roll, pitch), the landmark's (x, y) and the
-// ceiling's height.
+// robot's pose q (x, y, yaw, roll, pitch), the landmark's (x, y), the
+// ceiling's height h and the landmark's own height off it dz (held at 0
+// for a landmark on the ceiling's plane).
 struct View {
     const rl_survey_config *cfg;
     const rl_pose_model *model; // the mount and the landmarks' radius, made once
     const rl_survey_obs *obs;
     bool radius;
 
-    bool operator()(const double *q, const double *lm, const double *h, double *r) const
+    bool operator()(const double *q, const double *lm, const double *h, const double *dz, double *r) const
     {
         rl_pose_model md = *model;
-        double Rc[9], C[3], xn, yn, R = md.radius;
+        double Rc[9], C[3], xn, yn, R = md.radius, Z = h[0] + dz[0];
         md.height = h[0];
         rl_pose_fit_camera(&md, q, Rc, C);
-        if (!rl_pose_fit_predict(&md, Rc, C, lm[0], lm[1], &xn, &yn))
+        if (!rl_pose_fit_predict(&md, Rc, C, lm[0], lm[1], Z, &xn, &yn))
             return false;
         double s = cfg->pixel_scale / (cfg->pixel_sigma * obs->noise);
         r[0] = (xn - obs->xn) * s;
         r[1] = (yn - obs->yn) * s;
         if (radius) {
-            double depth = Rc[2] * (lm[0] - C[0]) + Rc[5] * (lm[1] - C[1]) + Rc[8] * (h[0] - C[2]);
+            double depth = Rc[2] * (lm[0] - C[0]) + Rc[5] * (lm[1] - C[1]) + Rc[8] * (Z - C[2]);
             if (!(depth > 1e-6))
                 return false;
             r[2] = (R / depth - obs->rn) * cfg->pixel_scale / cfg->radius_sigma;
@@ -63,6 +64,8 @@ struct TiltPrior {
 struct Params {
     std::vector<double> q; // 5 per frame
     std::vector<double> lm; // 2 per landmark
+    std::vector<double> dz; // 1 per landmark: its height off the ceiling's plane
+    std::vector<char> zfree; // 1: dz estimated (a landmark off the plane), 0: held at 0
     double h;
     rl_pose_model model;   // the mount's rotation, the radius (the height is h)
 };
@@ -79,7 +82,7 @@ bool centre_px(const rl_survey *sv, const Params &p, int f, int i, double *px)
     View v{&sv->cfg, &p.model, &sv->obs[i], false};
     double r[2];
     int k = sv->obs_lm[i];
-    if (!v(&p.q[5 * f], &p.lm[2 * k], &p.h, r))
+    if (!v(&p.q[5 * f], &p.lm[2 * k], &p.h, &p.dz[k], r))
         return false;
     double s = sv->cfg.pixel_sigma * sv->obs[i].noise;
     *px = std::hypot(r[0] * s, r[1] * s);
@@ -102,8 +105,10 @@ int solve(rl_survey *sv, Params &p, ceres::Problem &problem)
         if (problem.HasParameterBlock(&p.q[5 * f]))
             order->AddElementToGroup(&p.q[5 * f], 0);
     for (int k = 0; k < sv->n_lm; k++)
-        if (problem.HasParameterBlock(&p.lm[2 * k]))
+        if (problem.HasParameterBlock(&p.lm[2 * k])) {
             order->AddElementToGroup(&p.lm[2 * k], 1);
+            order->AddElementToGroup(&p.dz[k], 1);
+        }
     order->AddElementToGroup(&p.h, 1);
     opt.linear_solver_ordering.reset(order);
     ceres::Solver::Summary sum;
@@ -133,17 +138,19 @@ void build_problem(rl_survey *sv, Params &p, ceres::Problem &problem, ceres::Los
             bool r = rad && sv->obs[i].rn > 0;
             ceres::CostFunction *cost;
             if (r)
-                cost = new ceres::NumericDiffCostFunction<View, ceres::CENTRAL, 3, 5, 2, 1>(
+                cost = new ceres::NumericDiffCostFunction<View, ceres::CENTRAL, 3, 5, 2, 1, 1>(
                     new View{c, &p.model, &sv->obs[i], true});
             else
-                cost = new ceres::NumericDiffCostFunction<View, ceres::CENTRAL, 2, 5, 2, 1>(
+                cost = new ceres::NumericDiffCostFunction<View, ceres::CENTRAL, 2, 5, 2, 1, 1>(
                     new View{c, &p.model, &sv->obs[i], false});
-            problem.AddResidualBlock(cost, loss, &p.q[5 * f], &p.lm[2 * k], &p.h);
+            problem.AddResidualBlock(cost, loss, &p.q[5 * f], &p.lm[2 * k], &p.h, &p.dz[k]);
         }
         problem.AddResidualBlock(new ceres::AutoDiffCostFunction<TiltPrior, 2, 5>(new TiltPrior{c->tilt_sigma}),
                                  nullptr, &p.q[5 * f]);
     }
     for (int k = 0; k < sv->n_lm; k++) {
+        if (problem.HasParameterBlock(&p.dz[k]) && !p.zfree[k])
+            problem.SetParameterBlockConstant(&p.dz[k]);
         if (sv->lm[k].status != RL_SURVEY_PLACED || !problem.HasParameterBlock(&p.lm[2 * k]))
             continue;
         if (sv->lm[k].id == c->origin_id)
@@ -224,7 +231,7 @@ double summarize(rl_survey *sv, const Params &p)
             if (k < 0)
                 continue;
             View v{c, &p.model, &sv->obs[i], r};
-            if (!v(&p.q[5 * f], &p.lm[2 * k], &p.h, res))
+            if (!v(&p.q[5 * f], &p.lm[2 * k], &p.h, &p.dz[k], res))
                 continue;
             double s = c->pixel_sigma * sv->obs[i].noise;
             double px2 = res[0] * res[0] * s * s + res[1] * res[1] * s * s;
@@ -239,7 +246,7 @@ double summarize(rl_survey *sv, const Params &p)
         }
     }
     sv->rms_px = n_px ? std::sqrt(ss_px / n_px) : 0;
-    long dof = n_res - 3L * sv->frames_used - 2L * placed;
+    long dof = n_res - 3L * sv->frames_used - 2L * placed - std::count(p.zfree.begin(), p.zfree.end(), 1);
     return dof > 0 ? std::max(ss_w / dof, 1.0) : 1.0;
 }
 
@@ -257,6 +264,9 @@ int covariances(rl_survey *sv, Params &p, ceres::Problem &problem, double factor
         if (sv->lm[k].status == RL_SURVEY_PLACED && problem.HasParameterBlock(&p.lm[2 * k]) &&
             !problem.IsParameterBlockConstant(&p.lm[2 * k]))
             blocks.emplace_back(&p.lm[2 * k], &p.lm[2 * k]);
+    for (int k = 0; k < sv->n_lm; k++)
+        if (p.zfree[k] && problem.HasParameterBlock(&p.dz[k]) && !problem.IsParameterBlockConstant(&p.dz[k]))
+            blocks.emplace_back(&p.dz[k], &p.dz[k]);
     bool h_free = !problem.IsParameterBlockConstant(&p.h);
     if (h_free)
         blocks.emplace_back(&p.h, &p.h);
@@ -274,6 +284,12 @@ int covariances(rl_survey *sv, Params &p, ceres::Problem &problem, double factor
         lm->cov[0] = m[0] * factor;
         lm->cov[1] = m[1] * factor;
         lm->cov[2] = m[3] * factor;
+        lm->sigma_z = 0;
+        if (p.zfree[k] && problem.HasParameterBlock(&p.dz[k]) && !problem.IsParameterBlockConstant(&p.dz[k])) {
+            double zz;
+            cov.GetCovarianceBlock(&p.dz[k], &p.dz[k], &zz);
+            lm->sigma_z = std::sqrt(std::max(0.0, zz * factor));
+        }
     }
     sv->sigma_height = 0;
     if (h_free) {
@@ -284,6 +300,56 @@ int covariances(rl_survey *sv, Params &p, ceres::Problem &problem, double factor
     return 1;
 }
 
+// A landmark is off the ceiling's plane when its own height, estimated
+// with every landmark's free and the plane held, is this far off it and
+// this many of its sigmas.
+const double OFF_PLANE_M = 0.03;
+const double OFF_PLANE_SIGMAS = 5.0;
+
+// The landmarks off the ceiling's plane: every landmark's own height
+// estimated from the one-plane fit p (the plane held: every height free
+// would leave it undetermined; the origin's held too where no radius
+// fixes the scale); those off it get zfree and their estimate in p.
+// How many; -1 when the check could not be made.
+int off_plane(rl_survey *sv, Params &p, ceres::LossFunction *loss)
+{
+    Params t = p;
+    ceres::Problem::Options po;
+    po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+    ceres::Problem problem(po);
+    for (int k = 0; k < sv->n_lm; k++)
+        t.zfree[k] = sv->lm[k].status == RL_SURVEY_PLACED &&
+                     (use_radius(&sv->cfg) || sv->lm[k].id != sv->cfg.origin_id);
+    build_problem(sv, t, problem, loss);
+    problem.SetParameterBlockConstant(&t.h);
+    if (problem.NumResidualBlocks() == 0 || !solve(sv, t, problem))
+        return -1;
+    ceres::Covariance::Options o;
+    o.algorithm_type = ceres::SPARSE_QR;
+    o.num_threads = 1;
+    o.apply_loss_function = true;
+    ceres::Covariance cov(o);
+    std::vector<std::pair<const double *, const double *>> blocks;
+    for (int k = 0; k < sv->n_lm; k++)
+        if (t.zfree[k] && problem.HasParameterBlock(&t.dz[k]))
+            blocks.emplace_back(&t.dz[k], &t.dz[k]);
+    if (blocks.empty() || !cov.Compute(blocks, &problem))
+        return -1;
+    int n = 0;
+    for (int k = 0; k < sv->n_lm; k++) {
+        double zz;
+        if (!t.zfree[k] || !problem.HasParameterBlock(&t.dz[k]))
+            continue;
+        cov.GetCovarianceBlock(&t.dz[k], &t.dz[k], &zz);
+        if (std::fabs(t.dz[k]) > std::max(OFF_PLANE_M, OFF_PLANE_SIGMAS * std::sqrt(std::max(0.0, zz)))) {
+            p.zfree[k] = 1;
+            p.dz[k] = t.dz[k];
+            n++;
+        }
+    }
+    return n;
+}
+
 } // namespace
 
 extern "C" rl_err rl_survey_adjust(rl_survey *sv)
@@ -291,6 +357,8 @@ extern "C" rl_err rl_survey_adjust(rl_survey *sv)
     Params p;
     p.q.assign(5 * (size_t)sv->n_fr, 0.0);
     p.lm.assign(2 * (size_t)sv->n_lm, 0.0);
+    p.dz.assign((size_t)sv->n_lm, 0.0);
+    p.zfree.assign((size_t)sv->n_lm, 0);
     p.h = sv->height;
     rl_pose_fit_model(&p.model, &sv->cfg.mount, sv->height, 0.5 * sv->cfg.diameter);
     for (int f = 0; f < sv->n_fr; f++) {
@@ -304,7 +372,8 @@ extern "C" rl_err rl_survey_adjust(rl_survey *sv)
     }
     ceres::HuberLoss loss(3.0);
     double factor = 1;
-    for (int round = 0; round < 3; round++) {
+    bool checked = false;
+    for (int round = 0; round < 4; round++) {
         ceres::Problem::Options po;
         po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
         ceres::Problem problem(po);
@@ -315,7 +384,14 @@ extern "C" rl_err rl_survey_adjust(rl_survey *sv)
         }
         if (!solve(sv, p, problem))
             return RL_ERANGE;
-        if (round < 2 && drop_outlier_frames(sv, p) > 0)
+        // once, before frames are judged by a fit of one plane: the
+        // landmarks off it, then the fit again with their own heights
+        if (!checked) {
+            checked = true;
+            if (off_plane(sv, p, &loss) > 0)
+                continue;
+        }
+        if (round < 3 && drop_outlier_frames(sv, p) > 0)
             continue;
         factor = summarize(sv, p);
         if (!covariances(sv, p, problem, factor))
@@ -339,6 +415,7 @@ extern "C" rl_err rl_survey_adjust(rl_survey *sv)
     for (int k = 0; k < sv->n_lm; k++) {
         sv->lm[k].x = p.lm[2 * k];
         sv->lm[k].y = p.lm[2 * k + 1];
+        sv->lm[k].z = p.zfree[k] ? p.h + p.dz[k] : 0.0;
     }
     return RL_OK;
 }

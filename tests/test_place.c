@@ -137,11 +137,10 @@ static void map_repeats_but_never_overlaps(void **state)
 static int view(const rl_calib *cam, const rl_mount *mount, double x, double y, double yaw, const int *which,
                 int n, rl_detection *d)
 {
-    double Z = map.ceiling_height - mount->z;
     int k;
     for (k = 0; k < n; k++) {
         const rl_map_landmark *lm = &map.lm[which[k]];
-        double dx = lm->x - x, dy = lm->y - y;
+        double dx = lm->x - x, dy = lm->y - y, Z = rl_map_height(&map, which[k]) - mount->z; /* its own height */
         double fwd = cos(yaw) * dx + sin(yaw) * dy, left = -sin(yaw) * dx + cos(yaw) * dy;
         memset(&d[k], 0, sizeof d[k]);
         d[k].id = lm->id;
@@ -229,6 +228,73 @@ static void copies_are_ambiguous(void **state)
     assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 2, NULL, &prior, &pose, &f), RL_EAMBIGUOUS);
     /* one detection: too few */
     assert_int_equal(rl_place_solve(pl, &cam, &mount, d, 1, NULL, &prior, &pose, &f), RL_ETOOFEW);
+}
+
+/* Landmarks with their own heights (z) on a 7 x 7 grid whose ids repeat,
+ * the robot at its middle, every landmark within 1 m in view (projected
+ * by hand at its height): hung ones in view are matched and the pose is
+ * exact; a map entry 0.2 m off where the landmark is (the gate is 0.15 m)
+ * stays unverified whatever hangs elsewhere on the map (a landmark 0.3 m
+ * lower, or 1.3 m lower, out of view: they widen the index's look-up, not
+ * the gate); a landmark the map hangs below the camera is left out by
+ * the pose. */
+static void heights_in_the_place_search(void **state)
+{
+    rl_place_config cfg;
+    rl_place *pl;
+    rl_calib cam;
+    rl_mount mount;
+    rl_detection d[RL_MAX_LANDMARKS];
+    rl_place_found f;
+    rl_pose pose;
+    int in[RL_MAX_LANDMARKS], n = 0, k, off = -1, far = -1;
+    const double x = 1.83, y = 1.83;
+    (void)state;
+    grid(7, 7, 0.61);
+    for (k = 0; k < map.count; k++) {
+        double r = hypot(map.lm[k].x - x, map.lm[k].y - y);
+        if (r < 1.0)
+            in[n++] = k;
+        else if (r > 2.5 && far < 0)
+            far = k;
+    }
+    assert_true(n >= 8 && far >= 0);
+    map.lm[in[1]].z = 2.45; /* two in view hung lower */
+    map.lm[in[4]].z = 2.60;
+    rl_place_defaults(&cfg);
+    rl_calib_defaults(&cam, 640, 480, 70 * M_PI / 180);
+    rl_mount_defaults(&mount, 0.88);
+    pl = build(&cfg);
+    view(&cam, &mount, x, y, 0.3, in, n, d);
+    assert_int_equal(rl_place_solve(pl, &cam, &mount, d, n, NULL, NULL, &pose, &f), RL_OK);
+    assert_int_equal(f.verified, n);
+    for (k = 0; k < n; k++)
+        assert_int_equal(f.match[k], in[k]);
+    if (hypot(pose.x - x, pose.y - y) > 1e-3 || fabs(pose.yaw - 0.3) > 1e-3)
+        fail_msg("pose (%g, %g, %g), truth (%g, %g, 0.3)", pose.x, pose.y, pose.yaw, x, y);
+    /* one plane in view; a map entry 0.2 m off its landmark */
+    map.lm[in[1]].z = map.lm[in[4]].z = 0;
+    view(&cam, &mount, x, y, 0.3, in, n, d);
+    off = in[2];
+    map.lm[off].x += 0.2;
+    for (k = 0; k < 3; k++) {
+        map.lm[far].z = k == 0 ? 0 : k == 1 ? 2.45 : 1.45;
+        pl = build(&cfg);
+        if (rl_place_solve(pl, &cam, &mount, d, n, NULL, NULL, &pose, &f) != RL_OK || f.match[2] != -1 ||
+            f.verified != n - 1)
+            fail_msg("a landmark hung out of view at z %g: status %d, %d verified (want %d), the entry 0.2 m off "
+                     "matched to %d (want -1)", map.lm[far].z, f.status, f.verified, n - 1, f.match[2]);
+    }
+    map.lm[off].x -= 0.2;
+    /* a map that hangs a landmark below the camera (0.5 m; the frame seen
+     * as if it were on the ceiling): the pose leaves it out */
+    map.lm[far].z = 0;
+    view(&cam, &mount, x, y, 0.3, in, n, d);
+    map.lm[in[0]].z = 0.5;
+    assert_int_equal(rl_pose_solve_matched(&cam, &map, &mount, d, n, in, NULL, &pose), RL_OK);
+    assert_int_equal(pose.used, n - 1);
+    if (hypot(pose.x - x, pose.y - y) > 1e-3)
+        fail_msg("pose (%g, %g), truth (%g, %g)", pose.x, pose.y, x, y);
 }
 
 /* The place finder with its defaults over the map, and the camera and
@@ -342,6 +408,7 @@ int main(void)
         cmocka_unit_test(copies_are_ambiguous),
         cmocka_unit_test(carried_robot_is_found_where_it_is),
         cmocka_unit_test(unmapped_landmarks_keep_tracking), cmocka_unit_test(ids_in_falling_order),
+        cmocka_unit_test(heights_in_the_place_search),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

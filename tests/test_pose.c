@@ -105,12 +105,61 @@ static void test_no_pose_from_impossible_detections(void **state)
     assert_int_not_equal(rl_pose_solve(&c, &m, &mount, d, 2, NULL, &p), RL_OK);
 }
 
+/* A landmark with its own height (z: on a beam, a lower panel): the
+ * detections of a level camera worked out by hand (image top forward, +u
+ * left; the pinhole of rl_calib_defaults), the pose from them exact; the
+ * map that puts it on the ceiling drops it or places the robot off. */
+static void test_landmark_heights(void **state)
+{
+    rl_calib c = camera();
+    rl_map m = map2(0.61);
+    rl_mount mount = {0, 0, 0.88, 0, 0, 0};
+    static const double X[3] = {0.0, 0.61, 0.0}, Y[3] = {0.0, 0.0, 0.61}, Z[3] = {2.45, 2.75, 2.75};
+    const double rx = 0.3, ry = 0.2;
+    rl_detection d[3];
+    rl_pose p;
+    int k, bad;
+    (void)state;
+    m.count = 3;
+    m.lm[2].id = 11;
+    m.lm[2].y = 0.61;
+    m.lm[0].z = 2.45; /* 0.3 m below the ceiling */
+    assert_int_equal(rl_map_check(&m, &bad), RL_OK);
+    assert_true(fabs(rl_map_height(&m, 0) - 2.45) < 1e-12 && fabs(rl_map_height(&m, 1) - 2.75) < 1e-12);
+    memset(d, 0, sizeof d);
+    for (k = 0; k < 3; k++) {
+        double up = Z[k] - 0.88, fwd = X[k] - rx, left = Y[k] - ry;
+        d[k].id = m.lm[k].id;
+        d[k].u = c.cx + c.fx * left / up;
+        d[k].v = c.cy - c.fy * fwd / up;
+        d[k].radius = c.fx * 0.105 / up;
+        d[k].complete = 1;
+    }
+    assert_int_equal(rl_pose_solve(&c, &m, &mount, d, 3, NULL, &p), RL_OK);
+    if (hypot(p.x - rx, p.y - ry) > 1e-6 || fabs(p.yaw) > 1e-6 || p.used != 3)
+        fail_msg("pose (%g, %g, %g) from %d landmarks, not (%g, %g, 0) from 3", p.x, p.y, p.yaw, p.used, rx, ry);
+    /* the same detections against a map of one plane: landmark 3 lies
+     * (2.75 - 0.88) / (2.45 - 0.88) times as far from the camera's point:
+     * dropped, or outvoted by the robust fit but not without moving it */
+    m.lm[0].z = 0;
+    assert_int_equal(rl_pose_solve(&c, &m, &mount, d, 3, NULL, &p), RL_OK);
+    if (!(p.used == 2 || hypot(p.x - rx, p.y - ry) > 1e-4))
+        fail_msg("the map of one plane gave (%g, %g) from %d landmarks: the height made no difference", p.x, p.y,
+                 p.used);
+    m.lm[0].z = -1;
+    assert_int_equal(rl_map_check(&m, &bad), RL_ERANGE);
+    assert_int_equal(bad, 0);
+    m.lm[0].z = NAN;
+    assert_int_equal(rl_map_check(&m, &bad), RL_ERANGE);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_camera_limits),
         cmocka_unit_test(test_map_limits),
         cmocka_unit_test(test_no_pose_from_impossible_detections),
+        cmocka_unit_test(test_landmark_heights),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -12,6 +12,16 @@
  *                      k-1 predicts frame k's centres within 3 px (median)
  *                      and 10 px (90%): the brisk corner is the rest, where
  *                      the windows miss and the frame is read in full
+ *                      verification (rl_verify) on the same frames, at
+ *                      each whole landmark clear of others: its id read
+ *                      from 0.3 radii off its truth centre, centred within
+ *                      1 px of it (75% at least: the rest is read the
+ *                      costly way), never *away there; no other id read
+ *                      there; from 2.2 radii off (past the reach) and from
+ *                      the middle of an empty stretch of ceiling, nothing,
+ *                      and *away set (the costly reads about the
+ *                      prediction skipped): 90% of the first, all of the
+ *                      second
  *   test_track         the decisions: a full frame every full_every-th, none
  *                      tracked without a pose or after max_age, a pose
  *                      that jumps sends the frame back to be read in full
@@ -20,7 +30,9 @@
 #include <math.h>
 #include "fixture_eval.h"
 #include "rl_site.h"
+#include "rl_png.h"
 #include "rl_track.h"
+#include "rl_verify.h"
 
 static const char *dir;
 static rl_site site;
@@ -137,6 +149,125 @@ static void predictions(void **state)
     assert_true(err[n_moving * 9 / 10] <= 10.0);
 }
 
+/* Nearest other truth landmark to (u, v), in px. */
+static double nearest_other(const truth *t, int self, double u, double v)
+{
+    double best = 1e9;
+    int j;
+    for (j = 0; j < t->n; j++)
+        if (j != self && hypot(t->lm[j].u - u, t->lm[j].v - v) < best)
+            best = hypot(t->lm[j].u - u, t->lm[j].v - v);
+    return best;
+}
+
+/* The verification counts of one frame's whole landmarks (see the top). */
+typedef struct {
+    int tried, read, centred, near_away, wrong, far, far_away, empty, empty_away, false_read;
+} verify_counts;
+
+static void verify_landmark(const rl_recog *rec, const rl_image *img, const rl_result *res, const truth *t, int j,
+                            double r, verify_counts *c)
+{
+    const truth_landmark *l = &t->lm[j];
+    double best = -1, fu = 0, fv = 0;
+    rl_detection d;
+    int away, k, other = l->id % rl_family_count(&rec->templates.fam) + 1;
+    c->tried++;
+    if (rl_verify_read(rec, img, res, l->id, l->u + 0.3 * r, l->v, r, &d, &away)) {
+        c->read++;
+        c->centred += hypot(d.u - l->u, d.v - l->v) <= 1.0;
+    }
+    c->near_away += away;
+    c->wrong += rl_verify_read(rec, img, res, other, l->u + 0.3 * r, l->v, r, &d, &away);
+    /* 2.2 radii off, on the side farthest from the others */
+    for (k = 0; k < 8; k++) {
+        double u = l->u + 2.2 * r * cos(k * M_PI / 4), v = l->v + 2.2 * r * sin(k * M_PI / 4), o;
+        if (u < 3 * r || v < 3 * r || u > img->width - 3 * r || v > img->height - 3 * r)
+            continue;
+        o = nearest_other(t, j, u, v);
+        if (o > best) {
+            best = o;
+            fu = u;
+            fv = v;
+        }
+    }
+    if (best >= 5.0 * r) {
+        c->far++;
+        c->false_read += rl_verify_read(rec, img, res, l->id, fu, fv, r, &d, &away);
+        c->far_away += away;
+    }
+    /* between it and its nearest neighbour, where 2.5 radii hold no ink */
+    for (k = 0; k < t->n; k++) {
+        double u = 0.5 * (l->u + t->lm[k].u), v = 0.5 * (l->v + t->lm[k].v);
+        if (k == j || u < 3 * r || v < 3 * r || u > img->width - 3 * r || v > img->height - 3 * r ||
+            hypot(u - l->u, v - l->v) < 3.6 * r || nearest_other(t, -1, u, v) < 3.6 * r)
+            continue;
+        c->empty++;
+        c->false_read += rl_verify_read(rec, img, res, l->id, u, v, r, &d, &away);
+        c->empty_away += away;
+        break;
+    }
+}
+
+static void verification(void **state)
+{
+    static rl_result res;
+    rl_recog_config cfg;
+    rl_track trk;
+    rl_track_config tc;
+    rl_pose p;
+    verify_counts c;
+    char err[768], path[1200];
+    int k, j;
+    (void)state;
+    load();
+    rl_recog_defaults(&cfg);
+    if (rl_site_prepare(&site, &cfg, err, sizeof err) != RL_OK)
+        fail_msg("%s", err);
+    memset(&c, 0, sizeof c);
+    rl_track_defaults(&tc);
+    for (k = 0; k < 144; k += 6) {
+        truth t;
+        rl_image img;
+        if (!frame_truth(k, &t))
+            fail_msg("no truth for frame %d", k);
+        snprintf(path, sizeof path, "%s/corner_%03d.png", dir, k);
+        if (rl_png_read_gray(path, &img, err, sizeof err) != RL_OK)
+            fail_msg("%s", err);
+        /* the levels of a full read of the frame, as the tracker keeps;
+         * the radii as the tracker predicts them from the frame's pose */
+        assert_int_equal(rl_recog_run(site.recog.rec, &img, &res), RL_OK);
+        p = pose_of(&t);
+        rl_track_init(&trk, &tc);
+        rl_track_full(&trk, &res);
+        assert_int_equal(rl_track_pose(&trk, &p, 0.0), 0);
+        assert_int_equal(rl_track_pose(&trk, &p, 0.1), 0);
+        (void)rl_track_plan(&trk, &site.calib, &site.mount, &site.map, 0.2, NULL);
+        for (j = 0; j < t.n; j++) {
+            const truth_landmark *l = &t.lm[j];
+            const rl_track_window *w = predicted(&trk, l);
+            if (w != NULL && l->visible >= 0.999 && l->u > 2 * l->radius && l->v > 2 * l->radius &&
+                l->u < img.width - 2 * l->radius && l->v < img.height - 2 * l->radius &&
+                nearest_other(&t, j, l->u, l->v) >= 4 * l->radius)
+                verify_landmark(site.recog.rec, &img, &res, &t, j, w->radius, &c);
+        }
+        free(img.data);
+    }
+    printf("verified %d of %d whole landmarks from 0.3 radii off (%d centred within 1 px, %d said away), "
+           "%d with another id; 2.2 radii off: %d of %d away; on empty ceiling: %d of %d away; "
+           "%d read off a landmark\n",
+           c.read, c.tried, c.centred, c.near_away, c.wrong, c.far_away, c.far, c.empty_away, c.empty, c.false_read);
+    assert_true(c.tried >= 40);
+    assert_true(c.read >= 0.75 * c.tried);
+    assert_true(c.centred >= 0.95 * c.read);
+    assert_int_equal(c.near_away, 0);
+    assert_int_equal(c.wrong, 0);
+    assert_int_equal(c.false_read, 0);
+    assert_true(c.far >= 10 && c.empty >= 10);
+    assert_true(c.far_away >= 0.9 * c.far);
+    assert_int_equal(c.empty_away, c.empty);
+}
+
 /* The decisions, by hand: frames 0.1 s apart on a robot standing still
  * under a 3 x 3 grid of landmarks 0.5 m apart, right above the middle one. */
 static void decisions(void **state)
@@ -206,7 +337,7 @@ static void decisions(void **state)
 int main(int argc, char **argv)
 {
     if (argc > 1) {
-        const struct CMUnitTest tests[] = {cmocka_unit_test(predictions)};
+        const struct CMUnitTest tests[] = {cmocka_unit_test(predictions), cmocka_unit_test(verification)};
         dir = argv[1];
         return cmocka_run_group_tests(tests, NULL, NULL);
     } else {

@@ -81,9 +81,13 @@ int rl_inner_enclosed(const rl_image *img, int light, double cx, double cy, doub
     int a, clear = 0, nhit = 0, agree = 0, i;
     rl_ray_dirs(ENCLOSE_RAYS, dc, ds);
     for (a = 0; a < ENCLOSE_RAYS; a++) {
-        int k = ray_meets(img, light, cx, cy, r, to, dc[a], ds[a], &hit[nhit]);
+        int k = ray_meets(img, light, cx, cy, r, to, dc[a], ds[a], &hit[nhit]), left = ENCLOSE_RAYS - 1 - a;
         nhit += k == RAY_HIT;
         clear += k == RAY_CLEAR;
+        /* the rays left cannot bring the hits to a quarter of the rays, nor
+         * past the clear ones: not enclosed, as all 16 would say */
+        if (nhit + left < ENCLOSE_RAYS / 4 || nhit + left < clear)
+            return 0;
     }
     if (nhit < ENCLOSE_RAYS / 4 || nhit < clear)
         return 0;

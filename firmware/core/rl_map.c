@@ -11,6 +11,11 @@ int rl_map_find(const rl_map *map, int id)
     return -1;
 }
 
+double rl_map_height(const rl_map *map, int i)
+{
+    return map->lm[i].z > 0.0 ? map->lm[i].z : map->ceiling_height;
+}
+
 /* Whether landmarks i and j overlap: centres closer than the diameter. */
 static int overlap(const rl_map *map, int i, int j)
 {
@@ -28,7 +33,8 @@ rl_err rl_map_check(const rl_map *map, int *bad)
     for (i = 0; i < map->count; i++) {
         *bad = i;
         if (!rl_family_valid(&map->family, map->lm[i].id) ||
-            !(fabs(map->lm[i].x) <= RL_MAP_MAX_COORD) || !(fabs(map->lm[i].y) <= RL_MAP_MAX_COORD))
+            !(fabs(map->lm[i].x) <= RL_MAP_MAX_COORD) || !(fabs(map->lm[i].y) <= RL_MAP_MAX_COORD) ||
+            !(map->lm[i].z >= 0.0 && map->lm[i].z <= RL_MAP_MAX_HEIGHT))
             return RL_ERANGE;
     }
     for (i = 0; i < map->count; i++)

@@ -3,18 +3,11 @@
 #include <math.h>
 #include <string.h>
 #include "rl_place_index.h"
+#include "rl_place_obs.h"
 
 #define SEEDS 12      /* observations that propose places (the most reliable first) */
 #define TRACK_SEEDS 8 /* observations tracking looks near */
 #define NEAR_MAX 16   /* map landmarks of one id near a tracked prediction */
-
-/* One frame's identified landmarks on the ceiling of a level robot. */
-typedef struct {
-    int n;
-    int det[RL_MAX_LANDMARKS]; /* the detection it came from */
-    int id[RL_MAX_LANDMARKS];
-    double px[RL_MAX_LANDMARKS], py[RL_MAX_LANDMARKS]; /* robot frame, m */
-} obs_set;
 
 /* A place: the rigid motion from the robot frame to the map, and what it
  * verified. */
@@ -32,37 +25,6 @@ typedef struct {
     double near_x, near_y, near_r;
 } search;
 
-/* Detections on the ceiling, complete ones first, then nearest the image
- * centre (the best measured propose first). */
-static void observe_all(const rl_place *pl, const rl_calib *cam, const rl_mount *mount, const rl_detection *lm,
-                        int n, const rl_offsets *offsets, obs_set *o)
-{
-    double key[RL_MAX_LANDMARKS];
-    int i, j;
-    o->n = 0;
-    for (i = 0; i < n && i < RL_MAX_LANDMARKS; i++) {
-        double x, y, du = lm[i].u - cam->cx, dv = lm[i].v - cam->cy, k;
-        if (!(fabs(lm[i].u - 0.5 * cam->width) <= 1.5 * cam->width) ||
-            !(fabs(lm[i].v - 0.5 * cam->height) <= 1.5 * cam->height) ||
-            !rl_family_valid(&pl->map->family, lm[i].id) ||
-            !rl_pose_level_point(cam, pl->map, mount, offsets, &lm[i], &x, &y))
-            continue;
-        k = (lm[i].complete ? 0 : 1e12) + du * du + dv * dv;
-        for (j = o->n++; j > 0 && key[j - 1] > k; j--) {
-            key[j] = key[j - 1];
-            o->det[j] = o->det[j - 1];
-            o->id[j] = o->id[j - 1];
-            o->px[j] = o->px[j - 1];
-            o->py[j] = o->py[j - 1];
-        }
-        key[j] = k;
-        o->det[j] = i;
-        o->id[j] = lm[i].id;
-        o->px[j] = x;
-        o->py[j] = y;
-    }
-}
-
 static double wrap(double a)
 {
     return atan2(sin(a), cos(a));
@@ -75,21 +37,85 @@ static double tolerance(double d)
     return 0.03 + 0.03 * d;
 }
 
-static double obs_distance(const obs_set *o, int i, int j)
+/* How far observations i and j's distance may be from their map
+ * landmarks': the level model's tolerance, and the heights' slack (the
+ * index's look-up; each pair found is then held to the tolerance at its
+ * landmarks' heights: pair_fits). */
+static double pair_tolerance(const rl_place_obs *o, int i, int j)
 {
-    return hypot(o->px[i] - o->px[j], o->py[i] - o->py[j]);
+    return tolerance(rl_place_obs_distance(o, i, j)) + rl_place_obs_slack(o, i) + rl_place_obs_slack(o, j);
+}
+
+/* 1 when observations i and j can be map landmarks a and b: both usable
+ * and, at their heights, as far apart as they are within the tolerance
+ * (on a map of one plane the index's look-up has held them to it). */
+static int pair_fits(const rl_place *pl, const rl_place_obs *o, int i, int j, int a, int b)
+{
+    double d;
+    if (o->spread <= 0)
+        return 1;
+    d = rl_place_obs_distance_at(pl, o, i, j, a, b);
+    return rl_place_obs_usable(pl, o, a) && rl_place_obs_usable(pl, o, b) &&
+           fabs(d - hypot(pl->map->lm[a].x - pl->map->lm[b].x, pl->map->lm[a].y - pl->map->lm[b].y)) <= tolerance(d);
 }
 
 /* The motion putting observations i and j on map landmarks a and b. */
-static void propose(const rl_map *map, const obs_set *o, int i, int j, int a, int b, place *p)
+static void propose(const rl_place *pl, const rl_place_obs *o, int i, int j, int a, int b, place *p)
 {
-    double mx = map->lm[b].x - map->lm[a].x, my = map->lm[b].y - map->lm[a].y;
-    double ox = o->px[j] - o->px[i], oy = o->py[j] - o->py[i];
-    double yaw = atan2(my, mx) - atan2(oy, ox), c = cos(yaw), s = sin(yaw);
-    double cx = 0.5 * (o->px[i] + o->px[j]), cy = 0.5 * (o->py[i] + o->py[j]);
+    const rl_map *map = pl->map;
+    double ix, iy, jx, jy, mx = map->lm[b].x - map->lm[a].x, my = map->lm[b].y - map->lm[a].y;
+    double ox, oy, yaw, c, s, cx, cy;
+    rl_place_obs_at(pl, o, i, a, &ix, &iy);
+    rl_place_obs_at(pl, o, j, b, &jx, &jy);
+    ox = jx - ix;
+    oy = jy - iy;
+    yaw = atan2(my, mx) - atan2(oy, ox);
+    c = cos(yaw);
+    s = sin(yaw);
+    cx = 0.5 * (ix + jx);
+    cy = 0.5 * (iy + jy);
     p->yaw = wrap(yaw);
     p->x = 0.5 * (map->lm[a].x + map->lm[b].x) - (c * cx - s * cy);
     p->y = 0.5 * (map->lm[a].y + map->lm[b].y) - (s * cx + c * cy);
+}
+
+/* How far observation k lies from map landmark m under place p (at m's
+ * height); HUGE_VAL for one that cannot be matched. */
+static double miss_at(const rl_place *pl, const rl_place_obs *o, const place *p, int k, int m)
+{
+    double x, y, c = cos(p->yaw), s = sin(p->yaw);
+    if (!rl_place_obs_usable(pl, o, m))
+        return HUGE_VAL;
+    rl_place_obs_at(pl, o, k, m, &x, &y);
+    return hypot(p->x + c * x - s * y - pl->map->lm[m].x, p->y + s * x + c * y - pl->map->lm[m].y);
+}
+
+/* The map landmark of its id observation k lies on under place p (within
+ * the gate, at that landmark's height), or -1; *other 1 when it lies on
+ * another id's instead. On a map of one plane: the nearest landmark
+ * within the gate. */
+static int lies_on(const rl_place *pl, const rl_place_obs *o, const place *p, int k, int *other)
+{
+    double c = cos(p->yaw), s = sin(p->yaw), best = pl->cfg.gate;
+    double X = p->x + c * o->px[k] - s * o->py[k], Y = p->y + s * o->px[k] + c * o->py[k];
+    int near[NEAR_MAX], n, q, m = -1;
+    *other = 0;
+    if (o->spread <= 0) {
+        m = rl_place_index_near(pl, X, Y, pl->cfg.gate, 0);
+        *other = m >= 0 && pl->map->lm[m].id != o->id[k];
+        return *other ? -1 : m;
+    }
+    n = rl_place_index_within(pl, X, Y, pl->cfg.gate + rl_place_obs_slack(o, k), o->id[k], near, NEAR_MAX);
+    for (q = 0; q < n && q < NEAR_MAX; q++)
+        if (miss_at(pl, o, p, k, near[q]) <= best) {
+            best = miss_at(pl, o, p, k, near[q]);
+            m = near[q];
+        }
+    if (m < 0) {
+        int any = rl_place_index_near(pl, X, Y, pl->cfg.gate + rl_place_obs_slack(o, k), 0);
+        *other = any >= 0 && pl->map->lm[any].id != o->id[k] && miss_at(pl, o, p, k, any) <= pl->cfg.gate;
+    }
+    return m;
 }
 
 /* Count the observations the place puts within the gate of a map landmark
@@ -97,10 +123,9 @@ static void propose(const rl_map *map, const obs_set *o, int i, int j, int a, in
  * reach `need`. The pair that proposed it (observations i, j on map
  * landmarks a, b; i < 0: none) counts without a look-up when the motion
  * cannot have moved them out of the gate (half the distance tolerance). */
-static int verify(const rl_place *pl, const obs_set *o, place *p, int need, int i, int j, int a, int b)
+static int verify(const rl_place *pl, const rl_place_obs *o, place *p, int need, int i, int j, int a, int b)
 {
-    double c = cos(p->yaw), s = sin(p->yaw);
-    int k, known = i >= 0 && 0.5 * tolerance(obs_distance(o, i, j)) <= pl->cfg.gate;
+    int k, known = i >= 0 && 0.5 * tolerance(rl_place_obs_distance_at(pl, o, i, j, a, b)) <= pl->cfg.gate;
     p->matched = p->conflicts = 0;
     if (known) {
         p->match[i] = a;
@@ -108,20 +133,12 @@ static int verify(const rl_place *pl, const obs_set *o, place *p, int need, int 
         p->matched = 2;
     }
     for (k = 0; k < o->n; k++) {
-        double X, Y;
-        int m;
+        int other;
         if (known && (k == i || k == j))
             continue;
-        X = p->x + c * o->px[k] - s * o->py[k];
-        Y = p->y + s * o->px[k] + c * o->py[k];
-        m = rl_place_index_near(pl, X, Y, pl->cfg.gate, 0);
-        p->match[k] = -1;
-        if (m >= 0 && pl->map->lm[m].id == o->id[k]) {
-            p->match[k] = m;
-            p->matched++;
-        } else if (m >= 0) {
-            p->conflicts++;
-        }
+        p->match[k] = lies_on(pl, o, p, k, &other);
+        p->matched += p->match[k] >= 0;
+        p->conflicts += other;
         /* what is left to look at: the rest, less the pair when counted already */
         if (p->matched + (o->n - k - 1) - (known ? (k < i) + (k < j) : 0) < need)
             return 0;
@@ -162,10 +179,10 @@ static int needed(const search *s, int margin)
 }
 
 /* Every place the index proposes for observations i and j. */
-static void propose_pair(const rl_place *pl, const obs_set *o, int i, int j, int margin, search *s)
+static void propose_pair(const rl_place *pl, const rl_place_obs *o, int i, int j, int margin, search *s)
 {
     const rl_place_pair *p, *end;
-    double d = obs_distance(o, i, j), t = tolerance(d);
+    double d = rl_place_obs_distance(o, i, j), t = pair_tolerance(o, i, j);
     if (d - t > pl->cfg.reach)
         return;
     rl_place_index_pairs(pl, o->id[i], o->id[j], d - t, d + t, &p, &end);
@@ -176,9 +193,9 @@ static void propose_pair(const rl_place *pl, const obs_set *o, int i, int j, int
              * passes), or, the same id twice, both ways */
             int a = turn ? p->b : p->a, b = turn ? p->a : p->b;
             place c;
-            if (pl->map->lm[a].id != o->id[i])
+            if (pl->map->lm[a].id != o->id[i] || !pair_fits(pl, o, i, j, a, b))
                 continue;
-            propose(pl->map, o, i, j, a, b, &c);
+            propose(pl, o, i, j, a, b, &c);
             s->candidates++;
             if (verify(pl, o, &c, needed(s, margin), i, j, a, b))
                 consider(s, &c);
@@ -188,15 +205,15 @@ static void propose_pair(const rl_place *pl, const obs_set *o, int i, int j, int
 
 /* Three observations close enough together that the index holds their
  * map pairs, the most reliable first; 0 if there are none. */
-static int seed_triangle(const rl_place *pl, const obs_set *o, int *t)
+static int seed_triangle(const rl_place *pl, const rl_place_obs *o, int *t)
 {
     int n = o->n < SEEDS ? o->n : SEEDS, i, j, k;
     for (k = 2; k < n; k++)
         for (j = 1; j < k; j++)
             for (i = 0; i < j; i++) {
-                double dij = obs_distance(o, i, j), dik = obs_distance(o, i, k), djk = obs_distance(o, j, k);
-                if (dij + tolerance(dij) <= pl->cfg.reach && dik + tolerance(dik) <= pl->cfg.reach &&
-                    djk + tolerance(djk) <= pl->cfg.reach) {
+                if (rl_place_obs_distance(o, i, j) + pair_tolerance(o, i, j) <= pl->cfg.reach &&
+                    rl_place_obs_distance(o, i, k) + pair_tolerance(o, i, k) <= pl->cfg.reach &&
+                    rl_place_obs_distance(o, j, k) + pair_tolerance(o, j, k) <= pl->cfg.reach) {
                     t[0] = i;
                     t[1] = j;
                     t[2] = k;
@@ -208,7 +225,7 @@ static int seed_triangle(const rl_place *pl, const obs_set *o, int *t)
 
 /* The search with no prior: a seed triangle's pairs, then (when the best
  * place leaves an observation unverified) every pair of seeds. */
-static void search_all(const rl_place *pl, const obs_set *o, search *s)
+static void search_all(const rl_place *pl, const rl_place_obs *o, search *s)
 {
     int t[3], n = o->n < SEEDS ? o->n : SEEDS, i, j, triangle = seed_triangle(pl, o, t);
     if (triangle) {
@@ -234,7 +251,7 @@ static double prior_reach(const rl_place *pl, const rl_place_prior *pr)
 
 /* Tracking: places within the prior's bound, from the map landmarks of
  * each id near where the prior puts the observations. */
-static void search_near(const rl_place *pl, const obs_set *o, const rl_place_prior *pr, search *s)
+static void search_near(const rl_place *pl, const rl_place_obs *o, const rl_place_prior *pr, search *s)
 {
     const rl_map *map = pl->map;
     double R = prior_reach(pl, pr), turn = pl->cfg.max_turn * pr->age + 0.02;
@@ -244,7 +261,7 @@ static void search_near(const rl_place *pl, const obs_set *o, const rl_place_pri
     double far_d = 0;
     for (i = 0; i < n; i++) {
         double X = pr->x + c * o->px[i] - sn * o->py[i], Y = pr->y + sn * o->px[i] + c * o->py[i];
-        double r = R + turn * hypot(o->px[i], o->py[i]) + pl->cfg.gate;
+        double r = R + turn * hypot(o->px[i], o->py[i]) + pl->cfg.gate + rl_place_obs_slack(o, i);
         cnt[i] = rl_place_index_within(pl, X, Y, r, o->id[i], near[i], NEAR_MAX);
         if (cnt[i] > NEAR_MAX)
             cnt[i] = NEAR_MAX; /* a bound too wide to tell: the global search decides */
@@ -254,8 +271,8 @@ static void search_near(const rl_place *pl, const obs_set *o, const rl_place_pri
     if (first < 0)
         return;
     for (j = 0; j < n; j++)
-        if (j != first && cnt[j] > 0 && obs_distance(o, first, j) > far_d) {
-            far_d = obs_distance(o, first, j);
+        if (j != first && cnt[j] > 0 && rl_place_obs_distance(o, first, j) > far_d) {
+            far_d = rl_place_obs_distance(o, first, j);
             far = j;
         }
     if (far < 0)
@@ -265,9 +282,9 @@ static void search_near(const rl_place *pl, const obs_set *o, const rl_place_pri
             int ma = near[first][a], mb = near[far][b];
             double dm = hypot(map->lm[ma].x - map->lm[mb].x, map->lm[ma].y - map->lm[mb].y);
             place p;
-            if (ma == mb || fabs(dm - far_d) > tolerance(far_d))
+            if (ma == mb || fabs(dm - far_d) > pair_tolerance(o, first, far) || !pair_fits(pl, o, first, far, ma, mb))
                 continue;
-            propose(map, o, first, far, ma, mb, &p);
+            propose(pl, o, first, far, ma, mb, &p);
             if (hypot(p.x - pr->x, p.y - pr->y) > R || fabs(wrap(p.yaw - pr->yaw)) > turn)
                 continue;
             s->candidates++;
@@ -292,12 +309,12 @@ static int clear(const search *s, int min_landmarks, int margin)
  * prior puts them are a coincidence of a map whose ids repeat. It is kept
  * when the whole map gives no clear place (the frame's other landmarks
  * may be ones the map does not hold). */
-static int explains(const search *s, const obs_set *o)
+static int explains(const search *s, const rl_place_obs *o)
 {
     return 2 * s->best.matched >= o->n;
 }
 
-static void report(const search *s, const obs_set *o, int status, rl_place_found *f)
+static void report(const search *s, const rl_place_obs *o, int status, rl_place_found *f)
 {
     int k;
     f->status = status;
@@ -320,7 +337,7 @@ static void report(const search *s, const obs_set *o, int status, rl_place_found
  * the prior: one that lies within reach of the last pose (any heading)
  * and leads every other place there, explaining the frame, is the only
  * plausible one. 1 with it in *kept. */
-static int prior_kept(const rl_place *pl, const obs_set *o, const rl_place_prior *prior, const search *all,
+static int prior_kept(const rl_place *pl, const rl_place_obs *o, const rl_place_prior *prior, const search *all,
                       search *kept)
 {
     if (prior == NULL || !prior->valid || prior->age < 0 || prior->age > pl->cfg.track_age || !all->have_best)
@@ -337,7 +354,7 @@ static int prior_kept(const rl_place *pl, const obs_set *o, const rl_place_prior
 rl_err rl_place_find(const rl_place *pl, const rl_calib *cam, const rl_mount *mount, const rl_detection *lm, int n,
                      const rl_offsets *offsets, const rl_place_prior *prior, rl_place_found *found)
 {
-    obs_set o;
+    rl_place_obs o;
     search s, tracked;
     int i, have_tracked = 0;
     if (pl == NULL || cam == NULL || mount == NULL || found == NULL || n < 0 || (n > 0 && lm == NULL) ||
@@ -346,7 +363,7 @@ rl_err rl_place_find(const rl_place *pl, const rl_calib *cam, const rl_mount *mo
     memset(found, 0, sizeof *found);
     for (i = 0; i < RL_MAX_LANDMARKS; i++)
         found->match[i] = -1;
-    observe_all(pl, cam, mount, lm, n, offsets, &o);
+    rl_place_obs_make(pl, cam, mount, lm, n, offsets, &o);
     if (o.n < 2)
         return RL_ETOOFEW;
     memset(&s, 0, sizeof s);

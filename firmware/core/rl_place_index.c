@@ -290,6 +290,7 @@ rl_err rl_place_init(rl_place **out, const rl_map *map, const rl_place_config *c
     rl_ws ws;
     rl_err e;
     size_t need;
+    int i;
     if (out == NULL || mem == NULL)
         return RL_EINVAL;
     *out = NULL;
@@ -306,6 +307,11 @@ rl_err rl_place_init(rl_place **out, const rl_map *map, const rl_place_config *c
     s.cell_lm = pl->cell_lm;
     s.bytes = need;
     *pl = s;
+    pl->z_lo = pl->z_hi = map->ceiling_height;
+    for (i = 0; i < map->count; i++) {
+        pl->z_lo = fmin(pl->z_lo, rl_map_height(map, i));
+        pl->z_hi = fmax(pl->z_hi, rl_map_height(map, i));
+    }
     fill_grid(pl);
     fill_pairs(pl);
     *out = pl;

@@ -34,6 +34,7 @@ struct rl_place {
     int gw, gh;
     uint16_t *cell_first; /* [gw gh + 1]: first of each cell's landmarks in cell_lm */
     uint16_t *cell_lm;    /* [map count]: map indexes by cell */
+    double z_lo, z_hi;    /* the landmarks' lowest and highest heights (rl_map_height), m */
 };
 
 /* The pairs of ids ia, ib (either order) with distance in [lo, hi] m. */

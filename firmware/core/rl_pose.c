@@ -260,11 +260,14 @@ rl_err rl_pose_solve_matched(const rl_calib *cam, const rl_map *map, const rl_mo
             out->dropped[out->n_dropped++] = lm[i].id;
         } else if (k < 0) {
             out->n_unknown++;
-        } else if (!observe(cam, map, &md, offsets, &lm[i], Z, &pt[m])) {
+        } else if (!(rl_map_height(map, k) - mount->z >= RL_POSE_MIN_DEPTH) ||
+                   !observe(cam, map, &md, offsets, &lm[i], rl_map_height(map, k) - mount->z, &pt[m])) {
+            /* a landmark hung down to the camera, or a ray that misses it */
             out->dropped[out->n_dropped++] = lm[i].id;
         } else {
             pt[m].mx = map->lm[k].x;
             pt[m].my = map->lm[k].y;
+            pt[m].mz = rl_map_height(map, k);
             m++;
         }
     }
@@ -302,7 +305,7 @@ rl_err rl_pose_solve_matched(const rl_calib *cam, const rl_map *map, const rl_mo
 }
 
 int rl_pose_project(const rl_calib *cam, const rl_map *map, const rl_mount *mount, const rl_pose *p, double X,
-                    double Y, double *u, double *v)
+                    double Y, double Z, double *u, double *v)
 {
     rl_pose_model md;
     double q[RL_POSE_NQ], Rc[9], C[3], xn, yn;
@@ -313,7 +316,7 @@ int rl_pose_project(const rl_calib *cam, const rl_map *map, const rl_mount *moun
     q[3] = p->tilt_solved ? p->fit_roll : 0.0;
     q[4] = p->tilt_solved ? p->fit_pitch : 0.0;
     rl_pose_fit_camera(&md, q, Rc, C);
-    if (!rl_pose_fit_predict(&md, Rc, C, X, Y, &xn, &yn))
+    if (!rl_pose_fit_predict(&md, Rc, C, X, Y, Z, &xn, &yn))
         return 0;
     rl_calib_project(cam, xn, yn, u, v);
     return 1;

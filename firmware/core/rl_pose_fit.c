@@ -97,10 +97,10 @@ void rl_pose_fit_camera(const rl_pose_model *md, const double *q, double *Rc, do
  * the image of its centre by (R^2 / 4) times the plane-to-image map's
  * Laplacian (R the landmark's radius; the mean of the map over the
  * circle, to second order), from the images of four points R away. */
-int rl_pose_fit_predict(const rl_pose_model *md, const double *Rc, const double *C, double X, double Y, double *xn,
-                   double *yn)
+int rl_pose_fit_predict(const rl_pose_model *md, const double *Rc, const double *C, double X, double Y, double Z,
+                        double *xn, double *yn)
 {
-    double dx = X - C[0], dy = Y - C[1], dz = md->height - C[2], r = md->radius, sx = 0, sy = 0;
+    double dx = X - C[0], dy = Y - C[1], dz = Z - C[2], r = md->radius, sx = 0, sy = 0;
     double f = Rc[0] * dx + Rc[3] * dy + Rc[6] * dz, l = Rc[1] * dx + Rc[4] * dy + Rc[7] * dz,
            u = Rc[2] * dx + Rc[5] * dy + Rc[8] * dz;
     int i;
@@ -132,7 +132,7 @@ static int residuals(const rl_pose_model *md, const rl_pose_pt *pt, int m, const
     rl_pose_fit_camera(md, q, Rc, C);
     for (i = 0; i < m; i++) {
         double xn, yn;
-        if (!rl_pose_fit_predict(md, Rc, C, pt[i].mx, pt[i].my, &xn, &yn))
+        if (!rl_pose_fit_predict(md, Rc, C, pt[i].mx, pt[i].my, pt[i].mz, &xn, &yn))
             return 0;
         r[2 * i] = (pt[i].xn - xn) / (md->sn * pt[i].noise) * pt[i].w;
         r[2 * i + 1] = (pt[i].yn - yn) / (md->sn * pt[i].noise) * pt[i].w;

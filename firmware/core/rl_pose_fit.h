@@ -23,6 +23,7 @@ typedef struct {
     double xn, yn; /* observed, normalized ideal image coordinates (pinhole) */
     double px, py; /* the ceiling point in the level robot frame */
     double mx, my; /* map */
+    double mz;     /* the landmark's height above the floor, m */
     double noise;  /* the centre's expected noise, in units of the model's */
     double w;      /* robust weight of the current fit (1: full) */
 } rl_pose_pt;
@@ -31,7 +32,7 @@ typedef struct {
 typedef struct {
     const rl_mount *mount;
     double Rm[9];  /* camera axes in the robot frame */
-    double height; /* ceiling above the floor */
+    double height; /* ceiling above the floor (the map's plane; a landmark may hang lower) */
     double sn;     /* centre noise in normalized units */
     double prior;  /* sigma of the tilt prior, rad */
     double radius; /* the landmarks' outer radius on the ceiling, m (0: centres as points) */
@@ -56,11 +57,11 @@ void rl_pose_fit_rigid(const rl_pose_pt *pt, int n, double *tx, double *ty, doub
 /* The camera's rotation (its axes in the map) and centre for robot pose q. */
 void rl_pose_fit_camera(const rl_pose_model *md, const double *q, double *Rc, double *C);
 
-/* Where the recognizer sees the centre of the landmark at map (X, Y)
- * from the camera Rc, C (normalized, the tilted view's edge-centre offset
- * included); 0 if behind the camera. */
-int rl_pose_fit_predict(const rl_pose_model *md, const double *Rc, const double *C, double X, double Y, double *xn,
-                        double *yn);
+/* Where the recognizer sees the centre of the landmark at map (X, Y),
+ * height Z above the floor, from the camera Rc, C (normalized, the tilted
+ * view's edge-centre offset included); 0 if behind the camera. */
+int rl_pose_fit_predict(const rl_pose_model *md, const double *Rc, const double *C, double X, double Y, double Z,
+                        double *xn, double *yn);
 
 /* Fit the first nf (3: a level robot, 5: tilted too) parameters of q from
  * its start; the covariance of all five into cov (the fixed ones through

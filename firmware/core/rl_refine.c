@@ -8,20 +8,20 @@ void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, doub
     rl_refine_centre_rows(img, lv, cx, cy, r, 1);
 }
 
-void rl_refine_centre_rows(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r,
-                           int ystep)
+double rl_refine_centre_rows(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r,
+                             int ystep)
 {
     int x, y, x0, x1, y0, y1, v;
     double sw = 0, sx = 0, sy = 0, bg = lv->bg, span = lv->bg - lv->fg, rr = (r + 1) * (r + 1);
     double weight[256];
     if (span < 1)
-        return;
+        return 0;
     x0 = (int)floor(*cx - r - 1);
     x1 = (int)ceil(*cx + r + 1);
     y0 = (int)floor(*cy - r - 1);
     y1 = (int)ceil(*cy + r + 1);
     if (x0 < 0 || y0 < 0 || x1 >= img->width || y1 >= img->height)
-        return; /* only for complete landmarks */
+        return 0; /* only for complete landmarks */
     /* a pixel's weight: how much darker than the background, at most the span */
     for (v = 0; v < 256; v++)
         weight[v] = bg - v <= 0 ? 0.0 : bg - v > span ? span : bg - v;
@@ -69,6 +69,7 @@ void rl_refine_centre_rows(const rl_image *img, const rl_levels *lv, double *cx,
         *cx = sx / sw;
         *cy = sy / sw;
     }
+    return sw;
 }
 
 #define EDGE_ANGLES 16

@@ -20,9 +20,11 @@
 void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r);
 
 /* The same from every ystep-th row of the disk only (a coarse step over a
- * wide disk: ystep 3, a third of the pixels). */
-void rl_refine_centre_rows(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r,
-                           int ystep);
+ * wide disk: ystep 3, a third of the pixels). Returns the weight it saw
+ * (the pixels' darkness past the background, summed): 0 when the disk
+ * held no ink (the centre is kept) or was not read. */
+double rl_refine_centre_rows(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r,
+                             int ystep);
 
 /* Outer radius: the mean light (the tone curve undone, rl_tone.h) on
  * circles of growing radius drops to the outer ring's black and rises to

@@ -50,9 +50,12 @@ static double room_at(const rl_image *img, double cx, double cy)
  * margin over the landmark) lands on its ink's centre: settled. A step
  * that did not settle is followed by one over WIDE_DISK radii (a
  * prediction a radius off sees part of the landmark), then by the usual
- * ones. 0 when it does not settle within CENTRE_REACH radii of the
- * prediction, or the border cuts the disk it needs. */
-static int settle_centre(const rl_image *img, const rl_levels *local, double r, double *cx, double *cy)
+ * ones; a step whose disk held no ink settles nothing (the wide one
+ * follows). 0 when it does not settle within CENTRE_REACH radii of the
+ * prediction, or the border cuts the disk it needs; *away 1 when the ink
+ * drew it farther than that, or the wide disk held no ink. */
+static int settle_centre(const rl_image *img, const rl_levels *local, double r, double *cx, double *cy,
+                         int *away)
 {
     double u0 = *cx, v0 = *cy;
     int k, wide = 0, widened = 0;
@@ -62,15 +65,25 @@ static int settle_centre(const rl_image *img, const rl_levels *local, double r, 
         return 0; /* no ink to draw to (rl_refine_centre would not move) */
     for (k = 0; k < CENTRE_STEPS; k++) {
         double u = *cx, v = *cy, room = room_at(img, u, v), disk, moved;
-        if (room < MIN_ROOM * r || hypot(u - u0, v - v0) > CENTRE_REACH * r)
+        *away = hypot(u - u0, v - v0) > CENTRE_REACH * r;
+        if (room < MIN_ROOM * r || *away)
             return 0; /* the border cuts it, or it is not where predicted */
         wide = k > 0 && !widened && room >= WIDE_DISK * r;
         widened |= wide;
         disk = wide ? WIDE_DISK * r : fmin(INK_DISK * r, room);
-        rl_refine_centre_rows(img, &ink, cx, cy, disk, wide ? WIDE_ROWS : INK_ROWS);
+        if (!(rl_refine_centre_rows(img, &ink, cx, cy, disk, wide ? WIDE_ROWS : INK_ROWS) > 0)) {
+            /* no ink in the disk: not a centre that did not move; looked
+             * for over the wide disk once, else not near */
+            *away = wide;
+            if (wide || widened || room < WIDE_DISK * r)
+                return 0;
+            continue;
+        }
         moved = hypot(*cx - u, *cy - v);
-        if (!wide && (moved + r + HELD_MARGIN <= disk || moved < CENTRE_SETTLED))
-            return hypot(*cx - u0, *cy - v0) <= CENTRE_REACH * r && room_at(img, *cx, *cy) >= MIN_ROOM * r;
+        if (!wide && (moved + r + HELD_MARGIN <= disk || moved < CENTRE_SETTLED)) {
+            *away = hypot(*cx - u0, *cy - v0) > CENTRE_REACH * r;
+            return !*away && room_at(img, *cx, *cy) >= MIN_ROOM * r;
+        }
     }
     return 0;
 }
@@ -112,12 +125,18 @@ static int judged(const rl_recog *rec, const rl_accept_rule *rule, const rl_leve
 {
     rl_profile q;
     rl_profile_rescale(wide, s, &q);
+    /* the id's own columns first: below the rule's score at its best blur
+     * it is not taken whatever the others score (the match of every id
+     * would find the same score for it) */
+    rl_match_ids(&rec->templates, &q, &id, 1, -1, m);
+    if (!(m->id == id && m->score >= rule->min_score))
+        return 0;
     rl_match_all(&rec->templates, &q, m);
     return m->id == id && rl_accept(rule, m, rl_accept_span(local, rec->tone, &q));
 }
 
 int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
-                   double v, double r, rl_detection *d)
+                   double v, double r, rl_detection *d, int *away)
 {
     rl_accept_rule rule;
     rl_levels local;
@@ -125,15 +144,21 @@ int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *re
     rl_match m;
     double s = 1.0 / RADIUS_WIDEST;
     int taken;
+    int far = 0;
     memset(d, 0, sizeof *d);
     d->id = d->best_id = -1;
+    if (away != NULL)
+        *away = 0;
     if (!(r > 0))
         return 0;
     rl_accept_levels_at(&rec->illum, &res->levels, u, v, &local);
     d->u = u;
     d->v = v;
-    if (!settle_centre(img, &local, r, &d->u, &d->v))
+    if (!settle_centre(img, &local, r, &d->u, &d->v, &far)) {
+        if (away != NULL)
+            *away = far;
         return 0;
+    }
     d->box.x0 = (int)floor(d->u - r);
     d->box.y0 = (int)floor(d->v - r);
     d->box.x1 = (int)ceil(d->u + r);

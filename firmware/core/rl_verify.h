@@ -20,8 +20,11 @@
  * window as before (rl_global_read, rl_local_read).
  *
  *   rl_detection d;
- *   if (rl_verify_read(rec, &img, &res, 17, 320.5, 240.2, 25.4, &d))
+ *   int away;
+ *   if (rl_verify_read(rec, &img, &res, 17, 320.5, 240.2, 25.4, &d, &away))
  *       use(d.u, d.v);   // id 17 there
+ *   else if (away)
+ *       use(0);          // its ink is not near the prediction
  */
 #ifndef RL_VERIFY_H
 #define RL_VERIFY_H
@@ -32,8 +35,13 @@
  * read there: into *d (centre refined, the radius within a few percent of
  * r). 0 when the read is not clear (cut by the border, not found near the
  * prediction, another id or a runner-up too close, a code ring): read the
- * window in full. res: the frame's levels (the last full frame's). */
+ * window in full. res: the frame's levels (the last full frame's).
+ * *away (when not NULL) is 1 when the read failed because the centre,
+ * drawn to the ink, left the prediction by more than 1.5 radii, or there
+ * was no ink within 2.5 radii of it: the landmark is not near where it
+ * was predicted (a read of the window about the prediction finds it no
+ * nearer). */
 int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
-                   double v, double r, rl_detection *d);
+                   double v, double r, rl_detection *d, int *away);
 
 #endif

@@ -17,6 +17,8 @@ typedef struct {
     int id;      /* landmark id in the map's family */
     double x, y; /* centre on the ceiling, map frame, metres */
     double sigma_x, sigma_y; /* their standard deviations from a survey, m; 0: not known */
+    double z;    /* its own height above the floor, m (a beam, a lower panel); 0: the map's
+                    ceiling_height */
 } rl_map_landmark;
 
 typedef struct {
@@ -30,10 +32,17 @@ typedef struct {
 /* Index of the first landmark with `id` in the map, or -1. */
 int rl_map_find(const rl_map *map, int id);
 
+/* Height above the floor of landmark i, metres: its own z, else the map's
+ * ceiling_height. */
+double rl_map_height(const rl_map *map, int i);
+
 /* Largest |x| or |y| of a landmark, metres. */
 #define RL_MAP_MAX_COORD 1e5
+/* Largest height of a landmark above the floor, metres. */
+#define RL_MAP_MAX_HEIGHT 100.0
 
 /* Validate: diameter and height > 0, coordinates within RL_MAP_MAX_COORD,
+ * a landmark's own z 0 (the ceiling's) or within 0 .. RL_MAP_MAX_HEIGHT,
  * ids valid in the family, no two landmarks overlapping (centres closer
  * than the diameter). Ids may repeat: a large site reuses a small
  * family's ids (rl_place finds which landmark a frame sees).

@@ -5,7 +5,9 @@
  * where the robot is. At start-up an index is built in the caller's
  * workspace over the map's landmark pairs closer than `reach` (their ids
  * and distance) and over the map's area (a grid of cells). Per frame each
- * identified landmark is put on the ceiling of a level robot; pairs of them
+ * identified landmark is put on the ceiling of a level robot (on a map whose
+ * landmarks have their own heights, z, each is scaled to the height of the
+ * map landmark it is tried as: rl_place_obs.h); pairs of them
  * look up the map pairs with the same ids and distance, each proposing a
  * place (a rigid motion), and each place is verified against every other
  * identified landmark: it counts the landmarks that land within `gate` of a

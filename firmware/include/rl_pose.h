@@ -108,6 +108,9 @@ void rl_offsets_eval(const rl_offsets *o, double u, double v, double *fwd, doubl
 void rl_pose_ceiling_point(const rl_calib *cam, const rl_offsets *offsets, double distance,
                            double u, double v, double *fwd, double *left);
 
+/* A landmark less than this far above the camera is not used, m. */
+#define RL_POSE_MIN_DEPTH 0.1
+
 /* Solve the pose from n identified landmarks. RL_ETOOFEW when fewer than
  * two usable (in the map, consistent) remain; RL_ERANGE when the camera is
  * not below the ceiling or the result is not finite (a calibration or map
@@ -128,13 +131,14 @@ RL_CHECK rl_err rl_pose_solve_matched(const rl_calib *cam, const rl_map *map, co
                                       const rl_detection *lm, int n, const int *match,
                                       const rl_offsets *offsets, rl_pose *out);
 
-/* Where the landmark at map point (X, Y) is seen in the image (pixels,
+/* Where the landmark at map point (X, Y), Z above the floor (the map's
+ * ceiling_height, or rl_map_height for a map landmark), is seen in the image (pixels,
  * the centre the recognizer measures, distortion applied) from pose p on
  * the mount: the robot level, or tilted as p's fit found when it solved
  * the tilt (the mount's own tilt always applied). 0 when it is behind
  * the camera. The live view draws the map this way over the image. */
 int rl_pose_project(const rl_calib *cam, const rl_map *map, const rl_mount *mount, const rl_pose *p, double X,
-                    double Y, double *u, double *v);
+                    double Y, double Z, double *u, double *v);
 
 /* Where detection d's centre meets the ceiling of a level robot, in the
  * robot frame (forward, left), m; 0 if its ray misses the ceiling. */

@@ -8,7 +8,7 @@
 #include "rl_yaml.h"
 
 static const char *const top_keys[] = {"family", "diameter", "ceiling_height", "landmarks", NULL};
-static const char *const landmark_keys[] = {"id", "x", "y", "sigma_x", "sigma_y", NULL};
+static const char *const landmark_keys[] = {"id", "x", "y", "z", "sigma_x", "sigma_y", NULL};
 
 /* A landmark's surveyed sigma_x and sigma_y: both or neither, each above 0
  * (a survey never writes 0: it would weigh the landmark infinitely). */
@@ -61,7 +61,7 @@ static rl_err read_header(rl_yaml *y, yaml_node_t *root, rl_map *map, const char
     return RL_OK;
 }
 
-/* landmarks[i]: {id, x, y[, sigma_x, sigma_y]} */
+/* landmarks[i]: {id, x, y[, z][, sigma_x, sigma_y]} */
 static rl_err read_landmark(rl_yaml *y, yaml_node_t *item, int i, rl_map_landmark *lm, char *err, size_t errlen)
 {
     char label[64];
@@ -81,6 +81,11 @@ static rl_err read_landmark(rl_yaml *y, yaml_node_t *item, int i, rl_map_landmar
     snprintf(label, sizeof label, "landmarks[%d].y", i);
     if ((e = rl_yaml_double_in(y, item, "y", label, 1, -RL_MAP_MAX_COORD, RL_MAP_MAX_COORD, &lm->y, err,
                                errlen)) != RL_OK)
+        return e;
+    /* its own height: a landmark on a beam or a lower panel */
+    snprintf(label, sizeof label, "landmarks[%d].z", i);
+    lm->z = 0.0;
+    if ((e = rl_yaml_double_in(y, item, "z", label, 0, 0.001, RL_MAP_MAX_HEIGHT, &lm->z, err, errlen)) != RL_OK)
         return e;
     return read_sigmas(y, item, i, lm, err, errlen);
 }
@@ -166,14 +171,19 @@ void rl_mapfile_put_header(FILE *f, const rl_family *fam, double diameter, doubl
 
 void rl_mapfile_put_landmark(FILE *f, const rl_map_landmark *lm)
 {
+    int surveyed = lm->sigma_x > 0 || lm->sigma_y > 0;
+    if (surveyed)
+        fprintf(f, "  - {id: %d, x: %.5f, y: %.5f", lm->id, lm->x, lm->y);
+    else
+        fprintf(f, "  - {id: %d, x: %.4f, y: %.4f", lm->id, lm->x, lm->y);
+    if (lm->z > 0) /* its own height (0: the map's ceiling_height) */
+        fprintf(f, ", z: %.4f", lm->z);
     /* a sigma is written at least at the file's resolution (0.01 mm): 0
      * (the survey's axis landmark across its axis) would claim a landmark
      * known exactly, which the loader refuses */
-    if (lm->sigma_x > 0 || lm->sigma_y > 0)
-        fprintf(f, "  - {id: %d, x: %.5f, y: %.5f, sigma_x: %.5f, sigma_y: %.5f}\n", lm->id, lm->x, lm->y,
-                fmax(lm->sigma_x, 1e-5), fmax(lm->sigma_y, 1e-5));
-    else
-        fprintf(f, "  - {id: %d, x: %.4f, y: %.4f}\n", lm->id, lm->x, lm->y);
+    if (surveyed)
+        fprintf(f, ", sigma_x: %.5f, sigma_y: %.5f", fmax(lm->sigma_x, 1e-5), fmax(lm->sigma_y, 1e-5));
+    fprintf(f, "}\n");
 }
 
 rl_err rl_mapfile_save(const char *path, const rl_map *map, char *err, size_t errlen)

@@ -53,6 +53,7 @@ static rl_err load_files(rl_site *s, const rl_site_files *f, char *err, size_t e
 static rl_err check_site(const rl_site *s, char *err, size_t errlen)
 {
     const rl_site_files *f = &s->files;
+    int i;
     if (s->has_calib && f->width > 0 && (f->width != s->calib.width || f->height != s->calib.height)) {
         snprintf(err, errlen, "%s: image is %dx%d but %s (image_width, image_height) is for %dx%d",
                  f->size_from ? f->size_from : "size", f->width, f->height, f->calibration, s->calib.width,
@@ -68,6 +69,12 @@ static rl_err check_site(const rl_site *s, char *err, size_t errlen)
                  f->robot, s->mount.z, f->map, s->map.ceiling_height);
         return RL_EINVAL;
     }
+    for (i = 0; s->has_map && s->has_mount && i < s->map.count; i++)
+        if (s->map.lm[i].z > 0 && !(s->map.lm[i].z - s->mount.z >= RL_POSE_MIN_DEPTH)) {
+            snprintf(err, errlen, "%s: landmarks[%d].z %.3f m is not %.2f m above the camera (%s: camera_mount.z "
+                     "%.3f m)", f->map, i, s->map.lm[i].z, RL_POSE_MIN_DEPTH, f->robot, s->mount.z);
+            return RL_EINVAL;
+        }
     return RL_OK;
 }
 

@@ -192,7 +192,7 @@ static int write_site(const char *out, const rl_calib *cam, const rl_mount *moun
         return rl_cli_fail(NULL, 1, "%s", err);
     rl_mapfile_put_header(o.f, &fam, 0.21, HEIGHT);
     for (i = 0; i < n; i++) {
-        rl_map_landmark lm = {site[i].id, site[i].x, site[i].y, 0, 0};
+        rl_map_landmark lm = {site[i].id, site[i].x, site[i].y, 0, 0, 0};
         rl_mapfile_put_landmark(o.f, &lm);
     }
     if (rl_outfile_commit(&o, err, sizeof err) != RL_OK)
@@ -260,7 +260,7 @@ static void write_frame(FILE *f, const synth_opts *o, const rl_calib *cam, const
     for (i = 0; i < n; i++) {
         double xn, yn, u, v, rad;
         if (fabs(site[i].x - C[0]) > 2.5 || fabs(site[i].y - C[1]) > 2.5 ||
-            !rl_pose_fit_predict(md, Rc, C, site[i].x, site[i].y, &xn, &yn) || fabs(xn) > 1 || fabs(yn) > 1)
+            !rl_pose_fit_predict(md, Rc, C, site[i].x, site[i].y, HEIGHT, &xn, &yn) || fabs(xn) > 1 || fabs(yn) > 1)
             continue;
         landmark_in_image(cam, Rc, C, &site[i], &u, &v, &rad);
         if (u < -rad * 0.5 || v < -rad * 0.5 || u > cam->width - 1 + rad * 0.5 || v > cam->height - 1 + rad * 0.5)

@@ -25,22 +25,24 @@ void render_camera_default(rl_calib *cam, int w, int h)
 
 /* Map point on the ceiling -> pixel. Camera frame: x right (+u), y down
  * (+v), z up; image top is the robot's forward (+x_r), +u its left (+y_r). */
-void render_camera_to_pixel(const render_scene *s, double X, double Y, double *u, double *v)
+void render_camera_to_pixel(const render_scene *s, double X, double Y, double drop, double *u, double *v)
 {
     const double *R = s->R;
-    double dx = X - s->cx, dy = Y - s->cy, dz = s->ceiling_height - s->cz;
+    double dx = X - s->cx, dy = Y - s->cy, dz = s->ceiling_height - drop - s->cz;
     double f = R[0] * dx + R[3] * dy + R[6] * dz, l = R[1] * dx + R[4] * dy + R[7] * dz,
            up = R[2] * dx + R[5] * dy + R[8] * dz;
     rl_calib_project(&s->cam, l / up, -f / up, u, v);
 }
 
-static void ray_to_map(const render_scene *s, double xn, double yn, double ox, double oy, double *X,
+/* Where the ray of normalized image point (xn, yn), the camera moved by
+ * (ox, oy), meets the plane `drop` below the ceiling. */
+static void ray_to_map(const render_scene *s, double xn, double yn, double ox, double oy, double drop, double *X,
                        double *Y)
 {
     const double *R = s->R;
     double f = -yn, l = xn;
     double dx = R[0] * f + R[1] * l + R[2], dy = R[3] * f + R[4] * l + R[5], dz = R[6] * f + R[7] * l + R[8];
-    double t = (s->ceiling_height - s->cz) / dz;
+    double t = (s->ceiling_height - drop - s->cz) / dz;
     *X = s->cx + ox + t * dx;
     *Y = s->cy + oy + t * dy;
 }
@@ -139,10 +141,76 @@ static int view_grid(const render_scene *s, render_grid *g)
         for (x = 0; x < W; x += 4) {
             const double *r = ray_table + 2 * (((size_t)y * W + x) * SUB * SUB);
             double X, Y;
-            ray_to_map(s, r[0], r[1], 0, 0, &X, &Y);
+            ray_to_map(s, r[0], r[1], 0, 0, 0, &X, &Y);
             b[0] = fmin(b[0], X), b[1] = fmin(b[1], Y), b[2] = fmax(b[2], X), b[3] = fmax(b[3], Y);
         }
     return render_ceiling_grid(s, b, m, g);
+}
+
+/* The objects that hang below the ceiling, into low[], and the pixels
+ * each may cover into box[] (x0, y0, x1, y1: its reach's corners in the
+ * image, widened by the motion's and the rolling shutter's travel and the
+ * lens's bend between them): how many. */
+static int hanging(const render_scene *s, int *low, int (*box)[4])
+{
+    int i, k, n = 0;
+    double travel = s->motion + hypot(s->shutter_dx, s->shutter_dy);
+    for (i = 0; i < s->n; i++) {
+        const render_object *o = &s->obj[i];
+        double e = 1.5 * (o->a > o->b ? o->a : o->b), b[4] = {1e9, 1e9, -1e9, -1e9};
+        if (!(o->drop > 0))
+            continue;
+        for (k = 0; k < 9; k++) { /* the corners, the edges' middles and the centre */
+            double u, v;
+            render_camera_to_pixel(s, o->x + (k % 3 - 1) * e, o->y + (k / 3 - 1) * e, o->drop, &u, &v);
+            b[0] = fmin(b[0], u), b[1] = fmin(b[1], v), b[2] = fmax(b[2], u), b[3] = fmax(b[3], v);
+        }
+        /* the travel at the object's depth, in pixels, and the turn's at the image's edge */
+        e = 0.1 * (b[2] - b[0] + b[3] - b[1]) + travel / (s->distance - o->drop) * s->cam.fx + 3 +
+            (fabs(s->shutter_turn) + fabs(s->motion_turn)) * s->cam.fx;
+        box[n][0] = (int)floor(b[0] - e);
+        box[n][1] = (int)floor(b[1] - e);
+        box[n][2] = (int)ceil(b[2] + e);
+        box[n][3] = (int)ceil(b[3] + e);
+        low[n++] = i;
+    }
+    return n;
+}
+
+/* Of the n hanging objects, those whose box holds pixel (x, y), into in[]:
+ * how many. */
+static int hanging_at(const int *low, const int (*box)[4], int n, int x, int y, int *in)
+{
+    int i, m = 0;
+    for (i = 0; i < n; i++)
+        if (x >= box[i][0] && x <= box[i][2] && y >= box[i][1] && y <= box[i][3])
+            in[m++] = low[i];
+    return m;
+}
+
+/* The radiance along a ray (normalized xn, yn; the camera moved by ox, oy):
+ * the nearest hanging object it meets (the later on one plane), else the
+ * ceiling. */
+static double ray_radiance(const render_scene *s, const render_grid *g, const int *low, int n_low, double xn,
+                           double yn, double ox, double oy)
+{
+    double X, Y, v = -1, best = 0;
+    int i;
+    for (i = 0; i < n_low; i++) {
+        const render_object *o = &s->obj[low[i]];
+        double r;
+        if (o->drop < best)
+            continue;
+        ray_to_map(s, xn, yn, ox, oy, o->drop, &X, &Y);
+        if ((r = render_ceiling_object(s, o, X, Y)) >= 0) {
+            v = r;
+            best = o->drop;
+        }
+    }
+    if (v >= 0)
+        return v;
+    ray_to_map(s, xn, yn, ox, oy, 0, &X, &Y);
+    return render_ceiling_radiance(s, g, X, Y);
 }
 
 static double rng_normal(void) { return render_random_normal(); }
@@ -150,8 +218,9 @@ static double rng_uniform(void) { return render_random_uniform(0, 1); }
 
 int render_camera_frame(const render_scene *s, uint8_t *out)
 {
-    int W = s->cam.width, H = s->cam.height, x, y, a, b, e;
+    int W = s->cam.width, H = s->cam.height, x, y, a, b, e, n_low;
     double *lin = malloc(sizeof(double) * (size_t)W * H);
+    static int low[RENDER_MAX_OBJ], box[RENDER_MAX_OBJ][4], here[RENDER_MAX_OBJ];
     double rmax = sqrt(s->cam.cx * s->cam.cx + s->cam.cy * s->cam.cy);
     static render_grid grid;
     render_rng rng = {rng_normal, rng_uniform};
@@ -167,20 +236,22 @@ int render_camera_frame(const render_scene *s, uint8_t *out)
     }
     if (!lin || build_rays(&s->cam) != 0 || view_grid(s, &grid) != 0)
         return -1;
+    n_low = hanging(s, low, box);
     for (y = 0; y < H; y++) {
         /* a rolling shutter: this row exposed f of the readout from the middle row's */
         double f = (y + 0.5) / H - 0.5, rc = cos(f * s->shutter_turn), rsn = sin(f * s->shutter_turn);
         double rox = f * s->shutter_dx, roy = f * s->shutter_dy;
         for (x = 0; x < W; x++) {
             double acc = 0, du = x - s->cam.cx, dv = y - s->cam.cy;
+            int n_here = n_low ? hanging_at(low, (const int(*)[4])box, n_low, x, y, here) : 0;
             for (b = 0; b < SUB; b++)
                 for (a = 0; a < SUB; a++) {
                     const double *r = ray_table + 2 * ((((size_t)y * W + x) * SUB + b) * SUB + a);
                     int k = b * SUB + a;
-                    double c = turn_c[k], sn = turn_s[k], X, Y;
+                    double c = turn_c[k], sn = turn_s[k];
                     double xr = c * r[0] - sn * r[1], yr = sn * r[0] + c * r[1];
-                    ray_to_map(s, rc * xr - rsn * yr, rsn * xr + rc * yr, move_x[k] + rox, move_y[k] + roy, &X, &Y);
-                    acc += render_ceiling_radiance(s, &grid, X, Y);
+                    acc += ray_radiance(s, &grid, here, n_here, rc * xr - rsn * yr, rsn * xr + rc * yr,
+                                        move_x[k] + rox, move_y[k] + roy);
                 }
             acc /= SUB * SUB;
             acc *= 1.0 - s->vignette * (du * du + dv * dv) / (rmax * rmax);

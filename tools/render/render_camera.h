@@ -43,8 +43,8 @@ void render_camera_pose(render_scene *s, const render_mount *m, double rx, doubl
 void render_camera_shutter(render_scene *s, const render_mount *m, double yaw, double readout_s, double speed,
                            double turn);
 
-/* Map point (X, Y) on the ceiling -> pixel (u, v). */
-void render_camera_to_pixel(const render_scene *s, double X, double Y, double *u, double *v);
+/* Map point (X, Y), drop below the ceiling (0: on it) -> pixel (u, v). */
+void render_camera_to_pixel(const render_scene *s, double X, double Y, double drop, double *u, double *v);
 
 /* The frame s shows into out (s->cam.width x s->cam.height bytes): 0, or
  * -1 out of memory. Uses the random stream (render_random) for the

@@ -135,6 +135,8 @@ double render_ceiling_radiance(const render_scene *s, const render_grid *g, doub
         const render_object *o = &s->obj[all ? k : g->idx[k]];
         double dx = X - o->x, dy = Y - o->y, reach = o->a > o->b ? o->a : o->b;
         double r;
+        if (o->drop > 0)
+            continue; /* hangs below the ceiling: render_ceiling_object */
         if ((o->kind == RENDER_OBJ_LIGHT || o->kind == RENDER_OBJ_DOWNLIGHT) &&
             fabs(dx) < reach + 8 * s->halo_sigma && fabs(dy) < reach + 8 * s->halo_sigma) {
             double gap = o->kind == RENDER_OBJ_LIGHT ? render_ceiling_light_gap(o, X, Y) : fmax(0, sqrt(dx * dx + dy * dy) - 0.8 * o->a);
@@ -148,6 +150,12 @@ double render_ceiling_radiance(const render_scene *s, const render_grid *g, doub
     }
     /* the tile only where no object covers it */
     return (v >= 0 ? v : tile_radiance(s, X, Y)) + halo;
+}
+
+double render_ceiling_object(const render_scene *s, const render_object *o, double X, double Y)
+{
+    double dx = X - o->x, dy = Y - o->y;
+    return object_radiance(s, o, o->cr * dx + o->sr * dy, -o->sr * dx + o->cr * dy);
 }
 
 /* The grid cells an object's reach (1.5 times its size, a light's halo)

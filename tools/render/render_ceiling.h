@@ -42,6 +42,10 @@ int render_ceiling_grid(const render_scene *s, const double *view, double margin
 /* The radiance at map point (X, Y): 1 is the paper near the white point. */
 double render_ceiling_radiance(const render_scene *s, const render_grid *g, double X, double Y);
 
+/* Radiance of object o (one that hangs below the ceiling) at (X, Y) on its
+ * own plane, or -1 where it is not. */
+double render_ceiling_object(const render_scene *s, const render_object *o, double X, double Y);
+
 /* Distance from (X, Y) to a light's rectangle (0 inside). */
 double render_ceiling_light_gap(const render_object *o, double X, double Y);
 

@@ -9,7 +9,7 @@ int render_scene_add(render_scene *s, render_obj_kind k, double x, double y, dou
     if (s->n == RENDER_MAX_OBJ)
         return -1;
     o = &s->obj[s->n++];
-    o->kind = k; o->x = x; o->y = y; o->rot = rot; o->a = a; o->b = b; o->id = id;
+    o->kind = k; o->x = x; o->y = y; o->rot = rot; o->a = a; o->b = b; o->id = id; o->drop = 0;
     o->cr = cos(rot);
     o->sr = sin(rot);
     return 0;

@@ -16,6 +16,7 @@
 #define RENDER_SCENE_H
 
 #include "rl_calib.h"
+#include "rl_config.h"
 #include "rl_family.h"
 #include "render_sensor.h"
 
@@ -33,6 +34,7 @@ typedef struct {
     double cr, sr;    /* cos and sin of rot (render_scene_add) */
     double a, b;      /* radius, or half extents */
     int id;           /* landmark id */
+    double drop;      /* how far it hangs below the ceiling, m (a beam, a lower panel); 0: on it */
 } render_object;
 
 typedef struct {
@@ -61,6 +63,7 @@ typedef struct {
     double ramp, ramp_dir;     /* light falling off across the frame: fraction, direction */
     double shadow, shadow_at, shadow_dir; /* a shadow (a wall beside the ceiling): depth, edge, side */
     int twin;                  /* 1: landmarks drawn as AprilTags (render_ceiling_tags_open) */
+    double lower[RL_MAX_IDS];  /* --lower: how far the landmarks of each id hang below the ceiling, m */
     int n;
     render_object obj[RENDER_MAX_OBJ];
 } render_scene;

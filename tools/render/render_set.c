@@ -18,8 +18,9 @@ int render_set_by_name(const char *name)
     return -1;
 }
 
-void render_set_add_landmark(render_scene *s, double x, double y, int id)
+void render_set_add_landmark(render_scene *s, double x, double y, int id, double drop)
 {
+    int n = s->n;
     double R = s->diameter / 2, rot = render_random_uniform(-0.15, 0.15) + (render_random_next() & 1 ? M_PI / 2 : 0);
     double a = R, b = R * 1.414;
     if (s->sheet_w > 0) { /* a paper size, the landmark in its middle */
@@ -29,6 +30,14 @@ void render_set_add_landmark(render_scene *s, double x, double y, int id)
     /* printed on a sheet, rotated as taped */
     render_scene_add(s, RENDER_OBJ_PAPER, x, y, rot, a, b, 0);
     render_scene_add(s, RENDER_OBJ_LANDMARK, x, y, s->twin ? rot : 0, R, R, id);
+    for (; n < s->n; n++) /* the sheet hangs with it */
+        s->obj[n].drop = drop;
+}
+
+/* How far the landmarks with this id hang below the ceiling (--lower). */
+static double lowered(const render_scene *s, int id)
+{
+    return id >= 0 && id < RL_MAX_IDS ? s->lower[id] : 0.0;
 }
 
 static void add_clutter(render_scene *s, double x, double y, int ring_like)
@@ -97,7 +106,8 @@ static void site_scene(render_scene *s, render_set kind)
             double x = (i + 0.5) * s->tile, y = (j + 0.5) * s->tile;
             int inside = i >= 0 && j >= 0 && i < SITE_COLS && j < SITE_ROWS;
             if (inside)
-                render_set_add_landmark(s, site_xy[j * SITE_COLS + i][0], site_xy[j * SITE_COLS + i][1], site_id(i, j));
+                render_set_add_landmark(s, site_xy[j * SITE_COLS + i][0], site_xy[j * SITE_COLS + i][1], site_id(i, j),
+                                        lowered(s, site_id(i, j)));
             else if ((i + j) % 3 == 0)
                 render_scene_add(s, RENDER_OBJ_LIGHT, x, y, 0, 0.29, 0.29, 0);
             else if ((i * 7 + j) % 5 == 0 && kind == RENDER_SET_PATH)
@@ -119,6 +129,7 @@ void render_set_site_map(const render_scene *s, rl_map *map)
             lm->x = site_xy[b * SITE_COLS + a][0];
             lm->y = site_xy[b * SITE_COLS + a][1];
             lm->sigma_x = lm->sigma_y = 0;
+            lm->z = lowered(s, lm->id) > 0 ? s->ceiling_height - lowered(s, lm->id) : 0.0;
         }
 }
 
@@ -137,7 +148,7 @@ static void map_scene(render_scene *s)
     for (i = 0; i < site_map->count; i++) {
         const rl_map_landmark *lm = &site_map->lm[i];
         if (hypot(lm->x - s->cx, lm->y - s->cy) < view + s->diameter)
-            render_set_add_landmark(s, lm->x, lm->y, lm->id);
+            render_set_add_landmark(s, lm->x, lm->y, lm->id, lm->z > 0 ? s->ceiling_height - lm->z : 0.0);
     }
     for (j = cj - r; j <= cj + r; j++)
         for (i = ci - r; i <= ci + r; i++) {
@@ -201,7 +212,8 @@ static void random_scene(render_scene *s, render_set kind)
                     pool[pick] = pool[--npool];
                 else if (npool > 4)
                     npool = 4; /* four ids: a frame holds each two or three times */
-                render_set_add_landmark(s, x + render_random_uniform(-0.04, 0.04), y + render_random_uniform(-0.04, 0.04), id);
+                render_set_add_landmark(s, x + render_random_uniform(-0.04, 0.04), y + render_random_uniform(-0.04, 0.04), id,
+                                        lowered(s, id));
                 if ((kind == RENDER_SET_GLARE && render_random_uniform(0, 1) < 0.6) ||
                     ((kind == RENDER_SET_MOVING || kind == RENDER_SET_HELDOUT) && render_random_uniform(0, 1) < 0.25)) {
                     /* a light 2 to 6 cm from the landmark's edge, on one side */

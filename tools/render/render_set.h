@@ -44,7 +44,8 @@ void render_set_use_map(const rl_map *map);
  * from the render_random stream). */
 void render_set_fill(render_scene *s, render_set kind);
 
-/* A landmark on its sheet at (x, y), rotated as taped. */
-void render_set_add_landmark(render_scene *s, double x, double y, int id);
+/* A landmark on its sheet at (x, y), rotated as taped, both hanging drop
+ * below the ceiling (0: on it). */
+void render_set_add_landmark(render_scene *s, double x, double y, int id, double drop);
 
 #endif

@@ -21,8 +21,28 @@ static int under_light(const render_scene *s, double X, double Y)
     return 0;
 }
 
+/* 1 if an object hanging below (X, Y, drop below the ceiling) covers it
+ * from the camera. */
+static int hidden(const render_scene *s, double X, double Y, double drop)
+{
+    int i;
+    for (i = 0; i < s->n; i++) {
+        const render_object *h = &s->obj[i];
+        double t, hx, hy;
+        if (!(h->drop > drop))
+            continue;
+        /* where the ray from the camera to the point crosses h's plane */
+        t = (s->ceiling_height - h->drop - s->cz) / (s->ceiling_height - drop - s->cz);
+        hx = s->cx + t * (X - s->cx);
+        hy = s->cy + t * (Y - s->cy);
+        if (render_ceiling_object(s, h, hx, hy) >= 0)
+            return 1;
+    }
+    return 0;
+}
+
 /* Fraction of the landmark's disk that the camera sees: inside the image
- * and not covered by a light fixture. */
+ * and not covered by a light fixture or by something hanging below it. */
 static double visible_fraction(const render_scene *s, const render_object *o)
 {
     int i, j, in = 0, n = 0;
@@ -32,9 +52,11 @@ static double visible_fraction(const render_scene *s, const render_object *o)
             if (lx * lx + ly * ly > o->a * o->a)
                 continue;
             n++;
-            render_camera_to_pixel(s, o->x + lx, o->y + ly, &u, &v);
+            render_camera_to_pixel(s, o->x + lx, o->y + ly, o->drop, &u, &v);
+            /* one that hangs below the ceiling hangs below its lights too */
             in += u >= -0.5 && v >= -0.5 && u <= s->cam.width - 0.5 && v <= s->cam.height - 0.5 &&
-                  !under_light(s, o->x + lx, o->y + ly);
+                  (o->drop > 0 || !under_light(s, o->x + lx, o->y + ly)) &&
+                  !hidden(s, o->x + lx, o->y + ly, o->drop);
         }
     return (double)in / n;
 }
@@ -76,10 +98,10 @@ int render_truth_write(const char *path, const char *image, const render_scene *
     fprintf(f, "twin: %s\nlandmarks:\n", s->twin ? "apriltag36h11" : "none");
     for (i = 0; i < s->n; i++) {
         const render_object *o = &s->obj[i];
-        double u, v, vis, gap;
+        double u, v, vis, gap, dist = s->distance - o->drop; /* the camera's distance to it */
         if (o->kind != RENDER_OBJ_LANDMARK)
             continue;
-        render_camera_to_pixel(s, o->x, o->y, &u, &v);
+        render_camera_to_pixel(s, o->x, o->y, o->drop, &u, &v);
         if (u < -3 * o->a / s->distance * s->cam.fx || v < -3 * o->a / s->distance * s->cam.fx ||
             u > s->cam.width * 1.5 || v > s->cam.height * 1.5)
             continue;
@@ -87,8 +109,11 @@ int render_truth_write(const char *path, const char *image, const render_scene *
         if (vis <= 0)
             continue;
         gap = light_gap(s, o);
-        fprintf(f, "  - {id: %d, x: %.6f, y: %.6f, u: %.4f, v: %.4f, radius: %.3f, visible: %.4f, light_gap: %.4f, light_gap_radii: %.3f}\n",
-                o->id, o->x, o->y, u, v, o->a / s->distance * s->cam.fx, vis, gap, gap / o->a);
+        fprintf(f, "  - {id: %d, x: %.6f, y: %.6f, u: %.4f, v: %.4f, radius: %.3f, visible: %.4f, light_gap: %.4f, light_gap_radii: %.3f",
+                o->id, o->x, o->y, u, v, o->a / dist * s->cam.fx, vis, gap, gap / o->a);
+        if (o->drop > 0)
+            fprintf(f, ", drop: %.4f", o->drop);
+        fprintf(f, "}\n");
         n++;
     }
     if (n == 0)

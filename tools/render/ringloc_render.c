@@ -53,7 +53,8 @@ static const char *help =
     "                      [--mount X,Y,YAW] [--write-map FILE] [--write-camera FILE]\n"
     "                      [--write-robot FILE] [--rock SIGMA] [--site grid|irregular]\n"
     "                      [--rolling MS[,SPEED[,TURN]] [--interval S]]\n"
-    "                      [--move ID,DX,DY] [--look SET] [--sheet PAPER] [--isp STAGES]\n"
+    "                      [--move ID,DX,DY] [--lower ID,M]... [--look SET] [--sheet PAPER]\n"
+    "                      [--isp STAGES]\n"
     "       ringloc-render --out DIR --path stream --site-map FILE [--newest] [...]\n\n"
     "Render ceiling fixtures with ground truth (NAME_NNN.png + NAME_NNN.yaml).\n"
     "  --set NAME      clean, cluttered, glare, border, clutter_only, dim, blur, motion,\n"
@@ -75,6 +76,8 @@ static const char *help =
     "  --site LAYOUT   grid (default) or irregular: each landmark up to 15 cm off the\n"
     "                  grid, the layout turned 5 degrees (a site taped up by hand)\n"
     "  --move ID,DX,DY the site's landmark ID moved by (DX, DY) m\n"
+    "  --lower ID,M    landmarks of id ID hang M m below the ceiling (a beam, a lower\n"
+    "                  panel; --write-map gives their z); repeat for more\n"
     "  --twin          also render each frame with AprilTag 36h11 tags of the same size\n"
     "                  at the same places (NAME_NNN_tag.png)\n"
     "  --camera FILE   calibration to render with (default: 640x480, 70 deg, mild\n"
@@ -141,6 +144,8 @@ typedef struct {
     double readout, speed, turn;    /* --rolling MS[,SPEED[,TURN]] (readout in s; 0: global shutter) */
     int rolling_path;               /* --rolling MS alone: the motion the path has */
     double interval;                /* --interval S: the frames' spacing in time (--rolling MS) */
+    double lower[RL_MAX_IDS];       /* --lower ID,M: the fixed site's id ID hangs M below the ceiling */
+    int lowered;                    /* how many --lower */
 } render_opts;
 
 static void render_opts_defaults(render_opts *o)
@@ -212,6 +217,22 @@ static int parse_rolling(const char *arg, render_opts *o)
     return 1;
 }
 
+/* --lower ID,M: an id 1..30, 0 < M <= 1.5 m (the camera 1.87 m below the
+ * ceiling) */
+static int parse_lower(const char *arg, render_opts *o)
+{
+    static const char *form = "ID,M (an id 1..30, hanging 0 .. 1.5 m below the ceiling)";
+    double v[2];
+    int n;
+    if (!rl_cli_doubles(NULL, "--lower", arg, form, v, 2, &n))
+        return 0;
+    if (n != 2 || v[0] != floor(v[0]) || v[0] < 1 || v[0] > 30 || !(v[1] > 0 && v[1] <= 1.5))
+        return !rl_cli_fail(NULL, 2, "--lower: '%s' is not %s", arg, form);
+    o->lower[(int)v[0]] = v[1];
+    o->lowered++;
+    return 1;
+}
+
 /* One option into o: 1, or 0 with the error line printed. */
 static int render_option(int c, const char *arg, render_opts *o)
 {
@@ -233,6 +254,7 @@ static int render_option(int c, const char *arg, render_opts *o)
         o->irregular = strcmp(arg, "irregular") == 0;
         return 1;
     case 'V': return parse_move(arg, o);
+    case 'D': return parse_lower(arg, o);
     case 'L': return parse_rolling(arg, o);
     case 'T': return rl_cli_double(NULL, "--interval", arg, 0.001, 3600, &o->interval);
     case 'r': return rl_cli_double(NULL, "--rock", arg, 0, 0.3, &o->rock);
@@ -270,7 +292,7 @@ static int render_args(int argc, char **argv, render_opts *o)
         {"move", required_argument, 0, 'V'}, {"site-map", required_argument, 0, 'E'},
         {"sheet", required_argument, 0, 'P'}, {"newest", no_argument, 0, 'W'},
         {"isp", required_argument, 0, 'I'}, {"rolling", required_argument, 0, 'L'},
-        {"interval", required_argument, 0, 'T'},
+        {"interval", required_argument, 0, 'T'}, {"lower", required_argument, 0, 'D'},
         {"help", no_argument, 0, 'h'}, {0, 0, 0, 0}};
     int c;
     render_opts_defaults(o);
@@ -328,6 +350,7 @@ static int load_site(const render_opts *o, rl_site *site, rl_calib *cam)
  * site's family, diameter and ceiling. 0, or the exit code. */
 static int scene_setup(const render_opts *o, const rl_site *site, const rl_calib *cam, render_scene *s)
 {
+    int i;
     memset(s, 0, sizeof *s);
     s->cam = *cam;
     s->fam.bits = 5;
@@ -337,8 +360,11 @@ static int scene_setup(const render_opts *o, const rl_site *site, const rl_calib
     s->cam_z = s->ceiling_height - s->distance;
     s->tile = 0.61;
     render_set_site_layout(s->tile, o->irregular, o->move_id, o->mdx, o->mdy);
+    memcpy(s->lower, o->lower, sizeof s->lower);
     if (!site->has_map)
         return 0;
+    if (o->lowered)
+        return rl_cli_fail(NULL, 2, "--lower is for the fixed site: a --site-map gives each landmark's own z");
     if (site->map.count < 2)
         return rl_cli_fail(NULL, 1, "%s: a site needs two landmarks or more", o->site_map);
     s->fam = site->map.family;
@@ -348,6 +374,11 @@ static int scene_setup(const render_opts *o, const rl_site *site, const rl_calib
     if (!(s->distance > 0.3))
         return rl_cli_fail(NULL, 1, "%s: ceiling_height %.3f m is not above the camera (%.2f m)", o->site_map,
                            s->ceiling_height, s->cam_z);
+    for (i = 0; i < site->map.count; i++)
+        if (site->map.lm[i].z > 0 && !(site->map.lm[i].z - s->cam_z > 0.3 && site->map.lm[i].z <= s->ceiling_height))
+            return rl_cli_fail(NULL, 1, "%s: landmarks[%d].z %.3f m (id %d) is not between 0.3 m above the camera "
+                               "(%.2f m) and the ceiling (%.3f m): the renderer hangs landmarks below it only",
+                               o->site_map, i, site->map.lm[i].z, site->map.lm[i].id, s->cam_z, s->ceiling_height);
     render_set_use_map(&site->map);
     return 0;
 }
