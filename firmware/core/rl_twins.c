@@ -1,5 +1,7 @@
 #include "rl_twins.h"
 
+#include <math.h>
+
 #include "rl_match.h"
 #include "rl_profile.h"
 #include "rl_rank.h"
@@ -150,27 +152,64 @@ static int rivals(const rl_recog *rec, const rl_detection *d, int *out)
     return n;
 }
 
+/* How far a twin may lead d through the other formation: read as linear
+ * light, RL_TWINS_TOLERANCE; read through a curve (the other formation
+ * then the grey levels as the camera gave them, mixed after its curve, the
+ * formation the near wrong reads came from), RL_TWINS_LOCAL_TOLERANCE for a
+ * local read and RL_TWINS_CUT_TOLERANCE for a landmark the border cuts.
+ * Read as linear, right reads let the 2.2 curve's twin lead by up to 0.006
+ * (the 16 px sheets of the development folders at gamma 1, cut ones among
+ * them), wrong ones gave it 0.009 or more. */
+static double tolerance(const rl_detection *d, int curved)
+{
+    if (!curved)
+        return RL_TWINS_TOLERANCE;
+    if (!d->complete)
+        return RL_TWINS_CUT_TOLERANCE;
+    return d->pass == RL_PASS_LOCAL ? RL_TWINS_LOCAL_TOLERANCE : RL_TWINS_TOLERANCE;
+}
+
 /* Whether d keeps its id, from its lead over its best rival through
  * the other formation (other) and through the frame's curve (own): while
- * the twin leads by less than RL_TWINS_TOLERANCE through the other, and
- * the sum is positive (a global read: the whole ring at the frame's
+ * the twin leads by less than tol through the other (none at all: tol 0),
+ * and the sum is positive (a global read: the whole ring at the frame's
  * levels) or over RL_TWINS_LOCAL_MARGIN (a local one, read sector by
  * sector, whose own lead says less). */
-static int keeps(const rl_detection *d, double other, double own)
+static int keeps(const rl_detection *d, double tol, double other, double own)
 {
-    return other > -RL_TWINS_TOLERANCE && other + own > (d->pass == RL_PASS_LOCAL ? RL_TWINS_LOCAL_MARGIN : 0.0);
+    int within = tol > 0 ? other > -tol : other >= 0;
+    return within && other + own > (d->pass == RL_PASS_LOCAL ? RL_TWINS_LOCAL_MARGIN : 0.0);
+}
+
+/* Whether the rank read may decide d (tol: tolerance()): not for a cut
+ * landmark read through a curve whose radius is RL_TWINS_CUT_SIZE or more
+ * off the frame's landmarks' (size; 0: none known), where the rank read,
+ * which leans on the radius, can take its twin: a cut 17 read as 25 at
+ * 2.2 with its radius 9% short led 17 by more than RL_TWINS_RANK_LEAD
+ * there too (the cut ones it kept right on the development sets were
+ * within 4.2%). */
+static int rank_fits(const rl_detection *d, double tol, double size)
+{
+    return tol > 0 || (size > 0 && fabs(d->radius - size) < RL_TWINS_CUT_SIZE * size);
 }
 
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res)
 {
+    double size = rl_result_median_radius(res);
+    /* read through a curve, not as linear light */
+    int curved = rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0;
     int i, kept = 0, rv[RL_MAX_IDS], n;
     for (i = 0; i < res->n_landmarks; i++) {
         rl_detection d = res->landmarks[i];
-        double lead, own = 0, fit;
-        /* a global read clear of every other id through its curve is
-         * clear of its twins; a local read's runner-up (sector-normalized)
-         * does not say so */
-        if ((d.pass == RL_PASS_GLOBAL && d.score - d.runner_up >= RL_TWINS_CLEAR) ||
+        double lead, own = 0, fit, tol = tolerance(&d, curved);
+        /* a global read of a whole landmark clear of every other id
+         * through its curve is clear of its twins; a local read's
+         * runner-up (sector-normalized) does not say so, nor a cut one's
+         * read through a curve (a circle partly out of the frame: a cut
+         * 2 of a 16 px grey-mixed sheet read as its twin 18 at 2.2 led
+         * every id by 0.055; read as linear, cut ones clear of every id
+         * were right on every set) */
+        if ((d.pass == RL_PASS_GLOBAL && (d.complete || !curved) && d.score - d.runner_up >= RL_TWINS_CLEAR) ||
             (n = rivals(rec, &d, rv)) == 0) {
             res->landmarks[kept++] = d;
             continue;
@@ -186,11 +225,12 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
             d.runner_up = d.score - lead;
         /* through the frame's own curve only where the other's lead
          * alone does not keep it (own: 0, the id's lead where it was read) */
-        if (!keeps(&d, lead, 0.0))
+        if (!keeps(&d, tol, lead, 0.0))
             own = twin_lead(rec, img, rec->tone, &d, rv, n, &fit);
         /* the formations disagree: the read through any monotone curve
          * decides, where the frame's curve reads the id too */
-        if (keeps(&d, lead, own) || (keeps(&d, 0.0, own) && rank_keeps(rec, img, rec->tone, &d)))
+        if (keeps(&d, tol, lead, own) ||
+            (rank_fits(&d, tol, size) && keeps(&d, tol, 0.0, own) && rank_keeps(rec, img, rec->tone, &d)))
             res->landmarks[kept++] = d;
         else
             rl_result_add_unidentified(res, &d);

@@ -24,10 +24,12 @@
 
 #include "rl_recog_state.h"
 
-/* A global read whose id leads every other id through its curve by this
- * much correlation is clear (no global read the formations turned into
- * a twin led by more than 0.036: composites and moving frames,
- * docs/design.md). */
+/* A global read of a whole landmark whose id leads every other id through
+ * its curve by this much correlation is clear (no such read the
+ * formations turned into a twin led by more than 0.036: composites and
+ * moving frames, docs/design.md; a cut one read through the 2.2 curve
+ * led by 0.055, so a landmark the border cuts is always checked in a frame
+ * read through a curve). */
 #define RL_TWINS_CLEAR 0.05
 /* A local read's lead over its twins, both formations summed, at least;
  * and its twin's lead through the other formation, at most. */
@@ -37,6 +39,23 @@
  * let a twin come within 0.001-0.014 there, wrong ones gave it 0.009 to
  * 0.048; ISP pipelines and composites, docs/design.md). */
 #define RL_TWINS_TOLERANCE 0.006
+/* The same for a local read (sector by sector, the centre searched), whose
+ * own lead says less, in a frame read through a curve: its right reads let
+ * a twin come within 0.004 there, a wrong one (a whole 19 of a 16 px
+ * grey-mixed sheet read as 27 at 2.2) gave it 0.0059. */
+#define RL_TWINS_LOCAL_TOLERANCE 0.005
+/* The same for a landmark the border cuts, in a frame read through a
+ * curve (a twin leading by more is too much): none. Its reads rest on the
+ * part of the ring in the frame, where a twin leading at all through the
+ * grey levels is the formations disagreeing (a cut 17 of a 16 px
+ * grey-mixed sheet read as 25 by the local pass at gamma 2.2, its twin
+ * 0.0013 ahead there); the rank read decides it, as any landmark they
+ * disagree on, where its radius is the frame's (RL_TWINS_CUT_SIZE). */
+#define RL_TWINS_CUT_TOLERANCE 0.0
+/* A cut landmark read through a curve whose radius is this far (a share)
+ * from the frame's landmarks' is not decided by the rank read (rl_twins.c,
+ * rank_fits). */
+#define RL_TWINS_CUT_SIZE 0.05
 /* A landmark the formations disagree on keeps its id when its lead
  * through the frame's curve passes the rule above with no twin through
  * the other formation, and it leads every id up to two zones away by
