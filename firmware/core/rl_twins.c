@@ -3,6 +3,7 @@
 #include <math.h>
 
 #include "rl_match.h"
+#include "rl_median.h"
 #include "rl_profile.h"
 #include "rl_rank.h"
 #include "rl_result.h"
@@ -181,25 +182,38 @@ static int keeps(const rl_detection *d, double tol, double other, double own)
     return within && other + own > (d->pass == RL_PASS_LOCAL ? RL_TWINS_LOCAL_MARGIN : 0.0);
 }
 
-/* Whether the rank read may decide d (tol: tolerance()): not for a cut
- * landmark read through a curve whose radius is RL_TWINS_CUT_SIZE or more
- * off the frame's landmarks' (size; 0: none known), where the rank read,
+/* Whether the rank read may decide d: not for a cut landmark read
+ * through a curve whose radius is RL_TWINS_CUT_SIZE or more off the
+ * frame's other landmarks' (size; 0: none known, not decided), where the rank read,
  * which leans on the radius, can take its twin: a cut 17 read as 25 at
  * 2.2 with its radius 9% short led 17 by more than RL_TWINS_RANK_LEAD
  * there too (the cut ones it kept right on the development sets were
  * within 4.2%). */
-static int rank_fits(const rl_detection *d, double tol, double size)
+static int rank_fits(const rl_detection *d, int curved, double size)
 {
-    return tol > 0 || (size > 0 && fabs(d->radius - size) < RL_TWINS_CUT_SIZE * size);
+    return !curved || d->complete || (size > 0 && fabs(d->radius - size) < RL_TWINS_CUT_SIZE * size);
+}
+
+/* The median of the n radii r but the i-th (0 when there is no other). */
+static double others_median(const double *r, int n, int i)
+{
+    double v[RL_MAX_LANDMARKS];
+    int j, m = 0;
+    for (j = 0; j < n; j++)
+        if (j != i)
+            v[m++] = r[j];
+    return rl_median(v, m);
 }
 
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res)
 {
-    double size = rl_result_median_radius(res);
+    double radii[RL_MAX_LANDMARKS];
     /* read through a curve, not as linear light */
     int curved = rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0;
-    int i, kept = 0, rv[RL_MAX_IDS], n;
-    for (i = 0; i < res->n_landmarks; i++) {
+    int i, kept = 0, rv[RL_MAX_IDS], n, all = res->n_landmarks;
+    for (i = 0; i < all; i++)
+        radii[i] = res->landmarks[i].radius;
+    for (i = 0; i < all; i++) {
         rl_detection d = res->landmarks[i];
         double lead, own = 0, fit, tol = tolerance(&d, curved);
         /* a global read of a whole landmark clear of every other id
@@ -230,7 +244,8 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
         /* the formations disagree: the read through any monotone curve
          * decides, where the frame's curve reads the id too */
         if (keeps(&d, tol, lead, own) ||
-            (rank_fits(&d, tol, size) && keeps(&d, tol, 0.0, own) && rank_keeps(rec, img, rec->tone, &d)))
+            (rank_fits(&d, curved, others_median(radii, all, i)) && keeps(&d, tol, 0.0, own) &&
+             rank_keeps(rec, img, rec->tone, &d)))
             res->landmarks[kept++] = d;
         else
             rl_result_add_unidentified(res, &d);
