@@ -250,15 +250,21 @@ double summarize(rl_survey *sv, const Params &p)
     return dof > 0 ? std::max(ss_w / dof, 1.0) : 1.0;
 }
 
-// Covariances of the landmarks and the ceiling, scaled by the variance
-// factor.
-int covariances(rl_survey *sv, Params &p, ceres::Problem &problem, double factor)
+// How the covariances are computed (sparse QR, the loss applied).
+ceres::Covariance::Options covariance_options()
 {
     ceres::Covariance::Options o;
     o.algorithm_type = ceres::SPARSE_QR;
     o.num_threads = 1;
     o.apply_loss_function = true;
-    ceres::Covariance cov(o);
+    return o;
+}
+
+// Covariances of the landmarks and the ceiling, scaled by the variance
+// factor.
+int covariances(rl_survey *sv, Params &p, ceres::Problem &problem, double factor)
+{
+    ceres::Covariance cov(covariance_options());
     std::vector<std::pair<const double *, const double *>> blocks;
     for (int k = 0; k < sv->n_lm; k++)
         if (sv->lm[k].status == RL_SURVEY_PLACED && problem.HasParameterBlock(&p.lm[2 * k]) &&
@@ -324,11 +330,7 @@ int off_plane(rl_survey *sv, Params &p, ceres::LossFunction *loss)
     problem.SetParameterBlockConstant(&t.h);
     if (problem.NumResidualBlocks() == 0 || !solve(sv, t, problem))
         return -1;
-    ceres::Covariance::Options o;
-    o.algorithm_type = ceres::SPARSE_QR;
-    o.num_threads = 1;
-    o.apply_loss_function = true;
-    ceres::Covariance cov(o);
+    ceres::Covariance cov(covariance_options());
     std::vector<std::pair<const double *, const double *>> blocks;
     for (int k = 0; k < sv->n_lm; k++)
         if (t.zfree[k] && problem.HasParameterBlock(&t.dz[k]))
