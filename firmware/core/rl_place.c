@@ -106,11 +106,13 @@ static int lies_on(const rl_place *pl, const rl_place_obs *o, const place *p, in
         return *other ? -1 : m;
     }
     n = rl_place_index_within(pl, X, Y, pl->cfg.gate + rl_place_obs_slack(o, k), o->id[k], near, NEAR_MAX);
-    for (q = 0; q < n && q < NEAR_MAX; q++)
-        if (miss_at(pl, o, p, k, near[q]) <= best) {
-            best = miss_at(pl, o, p, k, near[q]);
+    for (q = 0; q < n && q < NEAR_MAX; q++) {
+        double miss = miss_at(pl, o, p, k, near[q]);
+        if (miss <= best) {
+            best = miss;
             m = near[q];
         }
+    }
     if (m < 0) {
         int any = rl_place_index_near(pl, X, Y, pl->cfg.gate + rl_place_obs_slack(o, k), 0);
         *other = any >= 0 && pl->map->lm[any].id != o->id[k] && miss_at(pl, o, p, k, any) <= pl->cfg.gate;

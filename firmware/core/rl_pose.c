@@ -254,14 +254,14 @@ rl_err rl_pose_solve_matched(const rl_calib *cam, const rl_map *map, const rl_mo
     make_model(cam, map, mount, &md);
     for (i = 0; i < n && m < RL_MAX_LANDMARKS; i++) {
         int k = match[i] < map->count ? match[i] : -1;
+        double Zk = k >= 0 ? rl_map_height(map, k) - mount->z : 0; /* its own height above the camera */
         if (!(fabs(lm[i].u - 0.5 * cam->width) <= 1.5 * cam->width) ||
             !(fabs(lm[i].v - 0.5 * cam->height) <= 1.5 * cam->height)) {
             /* no camera of this size sees a landmark there */
             out->dropped[out->n_dropped++] = lm[i].id;
         } else if (k < 0) {
             out->n_unknown++;
-        } else if (!(rl_map_height(map, k) - mount->z >= RL_POSE_MIN_DEPTH) ||
-                   !observe(cam, map, &md, offsets, &lm[i], rl_map_height(map, k) - mount->z, &pt[m])) {
+        } else if (!(Zk >= RL_POSE_MIN_DEPTH) || !observe(cam, map, &md, offsets, &lm[i], Zk, &pt[m])) {
             /* a landmark hung down to the camera, or a ray that misses it */
             out->dropped[out->n_dropped++] = lm[i].id;
         } else {
