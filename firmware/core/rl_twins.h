@@ -70,6 +70,17 @@
  * fitted within 0.04). */
 #define RL_TWINS_UNFIT 0.2
 
+/* Code zone 1, the narrowest (next to the outer ring), narrower than this
+ * many pixels: no id, whatever the reads (a landmark of ring5 under 14.2 px).
+ * There a blurred edge, the pixel grid and the radius's error move a zone
+ * by its width, the twins' templates fit alike, and neither formation nor
+ * the rank read tells them apart: letter sheets of 10-17 px on the
+ * development photos (site-check --mix grey, seeds 1-10, gamma 2.2 / auto
+ * / 1) gave 53 wrong global reads, every one with zone 1 at most 1.14 px
+ * (the radius read 13.46 px or less), and none above; 1.2 leaves 5%
+ * (docs/results.md). */
+#define RL_TWINS_MIN_ZONE_PX 1.2
+
 /* Each landmark of res that is not clear checked against its zone twins
  * through `other` (at every blur): its lead over the best of them there, plus, where that is
  * slight, its lead through the frame's own curve; one that fails the
