@@ -20,6 +20,11 @@
 #   as 27 by the local pass, its twin 0.0059 ahead through the other
 #   formation, inside the 0.006 a global read may leave (a local read may
 #   now leave 0.005, RL_TWINS_LOCAL_TOLERANCE);
+# - seed 22, 3 rounds: a whole 1 (clutter_only_004, the third round) read
+#   as 17 by the global pass, its twin 0.015 ahead through the other
+#   formation, 17 ahead by 0.0004 through the curve and by 0.006 through
+#   the rank read, which decided (it now decides only past
+#   RL_TWINS_RANK_OWN through the curve);
 # - seed 1, 3 rounds, 12 px (code zone 1 a pixel wide): two wrong ids at
 #   2.2, two at auto, one at 1 (zone twins read with full confidence, the
 #   formations agreeing); no id under RL_TWINS_MIN_ZONE_PX now, so none

@@ -256,9 +256,10 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
         if (!keeps(&d, tol, lead, 0.0))
             own = twin_lead(rec, img, rec->tone, &d, rv, n, &fit);
         /* the formations disagree: the read through any monotone curve
-         * decides, where the frame's curve reads the id too */
+         * decides, where the frame's curve reads the id clearly too
+         * (RL_TWINS_RANK_OWN) */
         if (keeps(&d, tol, lead, own) ||
-            (rank_fits(&d, curved, others_median(radii, all, i)) && keeps(&d, tol, 0.0, own) &&
+            (rank_fits(&d, curved, others_median(radii, all, i)) && own > RL_TWINS_RANK_OWN &&
              rank_keeps(rec, img, rec->tone, &d)))
             res->landmarks[kept++] = d;
         else

@@ -64,6 +64,16 @@
  * to 0.012 there, the 68 wrong reads they caught by at most 0.003
  * (docs/results.md). */
 #define RL_TWINS_RANK_LEAD 0.006
+/* ... and only when its lead over them through the frame's curve is more
+ * than this (a global read as a local one, RL_TWINS_LOCAL_MARGIN): where
+ * the formations disagree, the rank read chooses between two clear reads,
+ * not for a tie. A whole 1 of a 16 px grey-mixed sheet read as 17 on the
+ * renderer's ceilings (its twin 0.015 ahead through the grey levels) led
+ * by 0.0004 through the curve and by 0.0060 through the rank read; the 90
+ * right reads the rank read kept on the development photos' 16 px sheets
+ * (seeds 1-10, gamma 2.2 / auto / 1) led through the curve by 0.0147 or
+ * more (global) and 0.0109 (local). */
+#define RL_TWINS_RANK_OWN RL_TWINS_LOCAL_MARGIN
 /* A landmark whose circle, read through the other formation, fits this
  * much worse than its read is not judged there (an ellipse the local pass
  * read in its shape fits a circle at 0.4-0.6; the misreads the rule is for
