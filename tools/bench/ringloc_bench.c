@@ -99,6 +99,7 @@ static int time_twin(const char *name, rl_heap_recog *hr, apriltag_detector_t *t
         apriltag_detections_destroy(dets);
     }
     rl_bench_stages_unit(st, &ring);
+    rl_bench_stages_count(st, &res);
     *t_rl = least(t, REPEAT);
     *t_at = least(ta, REPEAT);
     *found_rl += res.n_landmarks;
