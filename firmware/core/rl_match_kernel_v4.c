@@ -35,6 +35,7 @@ void rl_match_kernel_v4(const float *t, size_t stride, const float *fn, const fl
 }
 
 #ifdef RL_HAVE_MATCH_KERNEL_V8
+#include <immintrin.h>
 typedef float rl_v8 __attribute__((vector_size(32)));
 
 /* The same loop with each sum in one 8-lane vector (AVX): the same
@@ -45,10 +46,12 @@ __attribute__((target("avx"))) void rl_match_kernel_v8(const float *t, size_t st
     rl_v8 s = {0, 0, 0, 0, 0, 0, 0, 0}, ss = s, sx = s;
     int k;
     for (k = 0; k < RL_PROFILE_BINS; k++) {
-        float nk = fn[k], sk = fs[k];
-        rl_v8 tv, nv = {nk, nk, nk, nk, nk, nk, nk, nk}, sv = {sk, sk, sk, sk, sk, sk, sk, sk};
-        if (nk == 0)
+        rl_v8 tv, nv, sv;
+        if (fn[k] == 0)
             continue; /* bins outside the image or in light */
+        /* each bin's count and sum straight from memory into every lane */
+        nv = (rl_v8)_mm256_broadcast_ss(fn + k);
+        sv = (rl_v8)_mm256_broadcast_ss(fs + k);
         memcpy(&tv, t + (size_t)k * stride, sizeof tv);
         s += nv * tv;
         ss += nv * tv * tv;
