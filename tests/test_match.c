@@ -1,4 +1,4 @@
-/* The matcher: its two kernels (plain C, 4-lane vectors) give the same
+/* The matcher: its kernels (plain C, 4-lane vectors, 8 on x86 with AVX) give the same
  * bits on arbitrary data, and the block-wise Pearson scores agree with a
  * direct double-precision correlation over the bins (an oracle written
  * here from the formula, not from the matcher). */
@@ -34,6 +34,14 @@ static void test_kernels_agree_bit_for_bit(void **state)
         for (k = 0; k < 3; k++)
             for (c = 0; c < RL_MATCH_BLOCK; c++)
                 assert_memory_equal(&a[k][c], &b[k][c], sizeof(float));
+#ifdef RL_HAVE_MATCH_KERNEL_V8
+        if (__builtin_cpu_supports("avx")) {
+            rl_match_kernel_v8(t + 8, 24, fn, fs, b[0], b[1], b[2]);
+            for (k = 0; k < 3; k++)
+                for (c = 0; c < RL_MATCH_BLOCK; c++)
+                    assert_memory_equal(&a[k][c], &b[k][c], sizeof(float));
+        }
+#endif
     }
 #else
     (void)state;

@@ -52,6 +52,27 @@ static void test_forward(void **state)
     assert_true(fabs(d[2].v - 239.5) < 1e-6); /* the middle row: its own instant */
 }
 
+/* Each landmark at its own distance: forward at 1 m/s, row 359.5 (10 ms
+ * after the middle row) saw the ceiling from 10 mm further forward; a
+ * landmark 1.6 m above the camera (on a beam 0.4 m below the 2 m ceiling)
+ * moves 10 mm x 500 / 1.6 m = 3.125 px, one on the ceiling 2.5 px, one
+ * at a bad distance (hung at the camera) not at all. */
+static void test_each_distance(void **state)
+{
+    rl_calib c = ideal();
+    rl_mount mount = {0, 0, 0.9, 0, 0, 0};
+    rl_motion m = {1.0, 0, 0};
+    rl_detection d[3] = {at(420, 359.5), at(200, 359.5), at(300, 359.5)};
+    double distance[3] = {1.6, 2.0, 0.0};
+    (void)state;
+    rl_shutter_correct_each(&c, &mount, distance, 0.04, &m, d, 3);
+    assert_true(fabs(d[0].v - (359.5 - 3.125)) < 1e-6 && fabs(d[0].u - 420) < 1e-6);
+    assert_true(fabs(d[1].v - (359.5 - 2.5)) < 1e-6 && fabs(d[1].u - 200) < 1e-6);
+    assert_true(d[2].v == 359.5 && d[2].u == 300);
+    rl_shutter_correct_each(&c, &mount, NULL, 0.04, &m, d, 3); /* no distances: nothing */
+    assert_true(fabs(d[0].v - (359.5 - 3.125)) < 1e-6);
+}
+
 static void test_turn(void **state)
 {
     rl_calib c = ideal();
@@ -161,7 +182,7 @@ static void test_mount_turned(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_forward), cmocka_unit_test(test_turn), cmocka_unit_test(test_sideways_and_mount),
+        cmocka_unit_test(test_forward), cmocka_unit_test(test_each_distance), cmocka_unit_test(test_turn), cmocka_unit_test(test_sideways_and_mount),
         cmocka_unit_test(test_nothing_moved), cmocka_unit_test(test_motion_between),
         cmocka_unit_test(test_mount_turned),
     };

@@ -336,6 +336,60 @@ static void decisions(void **state)
     assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.1, NULL), 0);
 }
 
+/* A landmark above the ceiling (in a skylight's well, 5 m above the floor,
+ * 4.12 m above the camera at 0.88 m) seen near the image's top left
+ * corner, worked out by hand: robot at the origin heading +x, the landmark
+ * 1.854 m forward and 2.472 m left, 0.45 and 0.6 of its height: u = 319.5
+ * + 457.01 x 0.6 = 593.7, v = 239.5 - 457.01 x 0.45 = 33.8, radius 457.01
+ * x 0.1 / 4.12 = 11.09 px (fx = 320 / tan 35 degrees). It lies beyond what
+ * the ceiling's distance reaches (1.3 x 0.875 x 1.87 + 0.2 = 2.33 m). */
+static void above_the_ceiling(void **state)
+{
+    static rl_map map;
+    rl_calib cam;
+    rl_mount mount;
+    rl_track trk;
+    rl_track_config tc;
+    rl_result res;
+    rl_pose p;
+    int i, found = -1;
+    (void)state;
+    memset(&map, 0, sizeof map);
+    map.family.bits = 5;
+    map.diameter = 0.2;
+    map.ceiling_height = 2.75;
+    map.count = 10;
+    for (i = 0; i < 9; i++) {
+        map.lm[i].id = i + 1;
+        map.lm[i].x = 0.5 * (i % 3) - 0.5;
+        map.lm[i].y = 0.5 * (i / 3) - 0.5;
+    }
+    map.lm[9].id = 10;
+    map.lm[9].x = 0.45 * 4.12;
+    map.lm[9].y = 0.6 * 4.12;
+    map.lm[9].z = 5.0;
+    rl_calib_defaults(&cam, 640, 480, 70.0 * M_PI / 180.0);
+    rl_mount_defaults(&mount, 0.88);
+    rl_track_defaults(&tc);
+    rl_track_init(&trk, &tc);
+    memset(&res, 0, sizeof res);
+    memset(&p, 0, sizeof p);
+    res.levels.threshold = 100;
+    rl_track_full(&trk, &res);
+    assert_int_equal(rl_track_pose(&trk, &p, 0.0), 0);
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.1, NULL), 1);
+    for (i = 0; i < trk.n; i++)
+        if (trk.win[i].id == 10)
+            found = i;
+    if (found < 0)
+        fail_msg("the landmark above the ceiling is not predicted (%d windows)", trk.n);
+    assert_int_equal(trk.n, 10);
+    if (fabs(trk.win[found].u - 593.7) > 0.1 || fabs(trk.win[found].v - 33.8) > 0.1 ||
+        fabs(trk.win[found].radius - 11.09) > 0.05)
+        fail_msg("predicted at (%.2f, %.2f) r %.2f, not (593.7, 33.8) r 11.09", trk.win[found].u, trk.win[found].v,
+                 trk.win[found].radius);
+}
+
 int main(int argc, char **argv)
 {
     if (argc > 1) {
@@ -343,7 +397,7 @@ int main(int argc, char **argv)
         dir = argv[1];
         return cmocka_run_group_tests(tests, NULL, NULL);
     } else {
-        const struct CMUnitTest tests[] = {cmocka_unit_test(decisions)};
+        const struct CMUnitTest tests[] = {cmocka_unit_test(decisions), cmocka_unit_test(above_the_ceiling)};
         return cmocka_run_group_tests(tests, NULL, NULL);
     }
 }

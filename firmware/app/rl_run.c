@@ -284,21 +284,25 @@ static int can_localize(const rl_site *s)
 #define SHUTTER_MAX_GAP 0.5
 
 /* The centres of the frame at t_us into moved, each moved to the middle
- * row's instant (rl_shutter.h) by the motion of the last two poses: moved,
+ * row's instant (rl_shutter.h) by the motion of the last two poses, each
+ * at its landmark's height in the map (rl_map_id_height): moved,
  * or the centres as they are when the shutter is global or the motion
  * unknown (no two recent poses before the frame). */
 static const rl_detection *shutter_moved(const rl_runner *r, uint64_t t_us, rl_detection *moved)
 {
     const rl_site *s = r->site;
     const rl_result *res = r->res;
+    double distance[RL_MAX_LANDMARKS];
     rl_motion m;
+    int i;
     if (!(r->cfg.readout > 0) || r->cfg.alone || !r->last.have || !r->prev.have ||
         !rl_motion_between(&r->prev.pose, (double)r->prev.t_us / 1e6, &r->last.pose, (double)r->last.t_us / 1e6,
                            (double)t_us / 1e6, SHUTTER_MAX_GAP, &m))
         return res->landmarks;
     memcpy(moved, res->landmarks, sizeof *moved * (size_t)res->n_landmarks);
-    rl_shutter_correct(&s->calib, &s->mount, s->map.ceiling_height - s->mount.z, r->cfg.readout, &m, moved,
-                       res->n_landmarks);
+    for (i = 0; i < res->n_landmarks; i++) /* a landmark on a beam is nearer: it moves further */
+        distance[i] = rl_map_id_height(&s->map, moved[i].id) - s->mount.z;
+    rl_shutter_correct_each(&s->calib, &s->mount, distance, r->cfg.readout, &m, moved, res->n_landmarks);
     return moved;
 }
 

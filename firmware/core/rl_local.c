@@ -176,9 +176,10 @@ static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_resul
         return 0;
     /* a higher runner-up only lowers a lead whose runner-up is >= 0: a
      * match the rule rejects without its twins' scores is rejected with
-     * them, and they are gathered only for one it takes */
+     * them, and they are gathered only for one it takes; nor for one
+     * under the rule's score, which no runner-up makes taken */
     later = me.second >= 0;
-    if (me.id >= 0 && !later)
+    if (me.id >= 0 && !later && me.score >= rule->min_score)
         ellipse_twins(&rec->templates, img, rec->tone, &e, &me);
     if (!local_accept(rule, &me, rec->width, rec->height, e.cx, e.cy, e.r, span))
         return 0;
@@ -240,7 +241,8 @@ static int read_from(rl_recog *rec, const rl_image *img, int light, const rl_acc
     s.cx = cx;
     s.cy = cy;
     s.r = r;
-    rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &s.cx, &s.cy, &s.r, &s.m);
+    rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, rule->min_score, &s.cx, &s.cy,
+                       &s.r, &s.m);
     if (!local_accept(rule, &s.m, rec->width, rec->height, s.cx, s.cy, s.r, 255.0))
         return 0;
     *rd = s;
@@ -311,7 +313,8 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     out->pass = RL_PASS_LOCAL;
     if (rl_geom_visible_in(W, H, rd.cx, rd.cy, rd.r) < CUT_MIN_VISIBLE)
         return 0;
-    rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, &rd.cx, &rd.cy, &rd.r, &rd.m);
+    rl_search_identify(&rec->templates, rec->polar, img, rec->tone, light, rule.min_score, &rd.cx, &rd.cy,
+                       &rd.r, &rd.m);
     /* the circle; the ellipse (whose centre is the better one where both
      * read); across the motion (the circle's cells); a cut one at the
      * frame's size, and always where its box put it too */

@@ -16,6 +16,19 @@ double rl_map_height(const rl_map *map, int i)
     return map->lm[i].z > 0.0 ? map->lm[i].z : map->ceiling_height;
 }
 
+double rl_map_id_height(const rl_map *map, int id)
+{
+    int i = rl_map_find(map, id), j;
+    double h;
+    if (i < 0)
+        return map->ceiling_height;
+    h = rl_map_height(map, i);
+    for (j = i + 1; j < map->count; j++)
+        if (map->lm[j].id == id && rl_map_height(map, j) != h)
+            return map->ceiling_height;
+    return h;
+}
+
 /* Whether landmarks i and j overlap: centres closer than the diameter. */
 static int overlap(const rl_map *map, int i, int j)
 {

@@ -9,7 +9,7 @@
  * 1e-5 of a correlation). Two builds of the same loop: plain C, and 4-lane
  * vectors kept in registers (the GCC/Clang vector extension: SSE, NEON).
  * Both add the same products in the same order, so they give the same
- * bits; RL_NO_VECTOR_EXT selects the plain one, and CI runs the test
+ * bits (and so does an 8-lane build on x86 with AVX); RL_NO_VECTOR_EXT selects the plain one, and CI runs the test
  * suite with each.
  *
  *   float fn[RL_PROFILE_BINS] = {0}, fs[RL_PROFILE_BINS] = {0};
@@ -34,8 +34,20 @@ void rl_match_kernel_v4(const float *t, size_t stride, const float *fn, const fl
                         float *st, float *stt, float *sxt);
 #endif
 
+/* On x86, one 8-lane vector a sum where the processor has AVX (the same
+ * bits again), chosen at each call (rl_match_kernel_x86). */
+#if defined(RL_HAVE_MATCH_KERNEL_V4) && (defined(__x86_64__) || defined(__i386__))
+#define RL_HAVE_MATCH_KERNEL_V8 1
+void rl_match_kernel_v8(const float *t, size_t stride, const float *fn, const float *fs,
+                        float *st, float *stt, float *sxt);
+void rl_match_kernel_x86(const float *t, size_t stride, const float *fn, const float *fs,
+                         float *st, float *stt, float *sxt);
+#endif
+
 /* The kernel identification uses. */
-#if defined(RL_HAVE_MATCH_KERNEL_V4) && !defined(RL_NO_VECTOR_EXT)
+#if defined(RL_HAVE_MATCH_KERNEL_V8) && !defined(RL_NO_VECTOR_EXT)
+#define rl_match_kernel rl_match_kernel_x86
+#elif defined(RL_HAVE_MATCH_KERNEL_V4) && !defined(RL_NO_VECTOR_EXT)
 #define rl_match_kernel rl_match_kernel_v4
 #else
 #define rl_match_kernel rl_match_kernel_plain

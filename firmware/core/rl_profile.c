@@ -74,7 +74,13 @@ static double plane_explained(const plane_sums *ps)
     return (cyy * cxv * cxv - 2 * cxy * cxv * cyv + cxx * cyv * cyv) / det;
 }
 
-/* Pixels binned by the shape's normalized radius, a circle's included. */
+/* Pixels binned by the shape's normalized radius, a circle's included.
+ * On x86 also built for AVX2 and chosen at load time: the bins' 16-pixel
+ * blocks in 8-lane vectors, the same float operations pixel by pixel (no
+ * fused multiply-add: ISO C contracts none). */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(RL_NO_VECTOR_EXT) && defined(__x86_64__)
+__attribute__((target_clones("avx2", "default")))
+#endif
 static void gather(const rl_image *img, const rl_tone *tone, double cx, double cy, double r,
                    const rl_shape *sh, int ystep, rl_profile *p)
 {
@@ -119,9 +125,19 @@ static void gather(const rl_image *img, const rl_tone *tone, double cx, double c
                     kb[i] = kk < RL_PROFILE_BINS - 1 ? kk : RL_PROFILE_BINS - 1;
                 }
             }
-            for (i = 0; i < nx; i++) {
+            /* pixels in pairs, the even one's sums in acc[0], the odd
+             * one's in acc[1]; x v of the pair as x (v0 + v1) + v1 */
+            for (i = 0; i + 1 < nx; i += 2) {
+                uint32_t v0 = tone->dark[row[xs + i]], v1 = tone->dark[row[xs + i + 1]];
+                acc[0][bin[i]] += PACK_COUNT + v0;
+                acc[1][bin[i + 1]] += PACK_COUNT + v1;
+                rs += v0 * v0 + v1 * v1;
+                rv += v0 + v1;
+                rxv += (uint64_t)(xs + i) * (v0 + v1) + v1;
+            }
+            if (i < nx) {
                 uint32_t v = tone->dark[row[xs + i]];
-                acc[i & 1][bin[i]] += PACK_COUNT + v;
+                acc[0][bin[i]] += PACK_COUNT + v;
                 rs += v * v;
                 rv += v;
                 rxv += (uint64_t)(xs + i) * v;

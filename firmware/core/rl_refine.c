@@ -8,6 +8,11 @@ void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, doub
     rl_refine_centre_rows(img, lv, cx, cy, r, 1);
 }
 
+/* On x86 also built for AVX2 (target_clones, chosen at load time): the
+ * same operations on each of the four sums, no fused multiply-add. */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(RL_NO_VECTOR_EXT) && defined(__x86_64__)
+__attribute__((target_clones("avx2", "default")))
+#endif
 double rl_refine_centre_rows(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r,
                              int ystep)
 {

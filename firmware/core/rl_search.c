@@ -130,8 +130,8 @@ void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double
 }
 
 void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *img,
-                        const rl_tone *tone, int light, double *cx, double *cy, double *r,
-                        rl_match *m)
+                        const rl_tone *tone, int light, double min_score, double *cx, double *cy,
+                        double *r, rl_match *m)
 {
     rl_profile p;
     int ids[LIKELY_IDS], n;
@@ -156,6 +156,6 @@ void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *i
         *cy += st.y;
         *r *= st.s;
     }
-    if (m->id >= 0)
+    if (m->id >= 0 && m->score >= min_score)
         twin_check(tt, pol, st.x, st.y, st.s, RL_POLAR_ALL, m);
 }

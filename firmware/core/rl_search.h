@@ -16,7 +16,7 @@
  * runner-up.
  *
  *   rl_match m;
- *   rl_search_identify(&tt, pol, &img, &tone, light, &cx, &cy, &r, &m);
+ *   rl_search_identify(&tt, pol, &img, &tone, light, 0.75, &cx, &cy, &r, &m);
  *   use(m.id, cx, cy, r);
  */
 #ifndef RL_SEARCH_H
@@ -33,10 +33,13 @@ extern const double rl_search_twin_scale[RL_SEARCH_TWIN_SCALES];
 
 /* Identify the candidate at (*cx, *cy, *r) with pol as scratch; the
  * centre and radius are updated to the best fit, the match of every id
- * there is in *m (m->id < 0: nothing matched). */
+ * there is in *m (m->id < 0: nothing matched). The winner's zone twins
+ * are scored only when it scores at least min_score (the rule's): under
+ * it no rule takes the match whatever its runner-up, and m->second is the
+ * runner-up over every id alone (0: always scored). */
 void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *img,
-                        const rl_tone *tone, int light, double *cx, double *cy, double *r,
-                        rl_match *m);
+                        const rl_tone *tone, int light, double min_score, double *cx, double *cy,
+                        double *r, rl_match *m);
 
 /* The match of the candidate pol holds, at (cx, cy, r) after
  * rl_search_identify, read along one axis at a time: across a motion the

@@ -46,27 +46,46 @@ void rl_shutter_move(const rl_mount *mount, double dt, const rl_motion *m, doubl
     *left = sin(a) * f + cos(a) * l + cvl * dt;
 }
 
+/* Move the centre of d, seen `distance` below its landmark, to the middle
+ * row's instant. */
+static void correct_one(const rl_calib *cam, const rl_mount *mount, double distance, double readout_s,
+                        const rl_motion *m, rl_detection *d)
+{
+    /* the row's time from the middle row's */
+    double dt = ((d->v + 0.5) / cam->height - 0.5) * readout_s;
+    double fwd, left, f, l, u0, v0, u1, v1;
+    if (!(distance > 0))
+        return;
+    rl_pose_ceiling_point(cam, NULL, distance, d->u, d->v, &fwd, &left);
+    f = fwd;
+    l = left;
+    rl_shutter_move(mount, dt, m, &f, &l);
+    /* the shift between the two points' pixels (the round trip's own
+     * error cancels) */
+    ceiling_to_pixel(cam, distance, fwd, left, &u0, &v0);
+    ceiling_to_pixel(cam, distance, f, l, &u1, &v1);
+    if (isfinite(u1 - u0) && isfinite(v1 - v0)) {
+        d->u += u1 - u0;
+        d->v += v1 - v0;
+    }
+}
+
 void rl_shutter_correct(const rl_calib *cam, const rl_mount *mount, double distance, double readout_s,
                         const rl_motion *m, rl_detection *lm, int n)
 {
     int i;
-    if (!(readout_s > 0) || m == NULL || !(distance > 0) || cam->height <= 0)
+    if (!(readout_s > 0) || m == NULL || cam->height <= 0)
         return;
-    for (i = 0; i < n; i++) {
-        /* the row's time from the middle row's */
-        double dt = ((lm[i].v + 0.5) / cam->height - 0.5) * readout_s;
-        double fwd, left, f, l, u0, v0, u1, v1;
-        rl_pose_ceiling_point(cam, NULL, distance, lm[i].u, lm[i].v, &fwd, &left);
-        f = fwd;
-        l = left;
-        rl_shutter_move(mount, dt, m, &f, &l);
-        /* the shift between the two points' pixels (the round trip's own
-         * error cancels) */
-        ceiling_to_pixel(cam, distance, fwd, left, &u0, &v0);
-        ceiling_to_pixel(cam, distance, f, l, &u1, &v1);
-        if (isfinite(u1 - u0) && isfinite(v1 - v0)) {
-            lm[i].u += u1 - u0;
-            lm[i].v += v1 - v0;
-        }
-    }
+    for (i = 0; i < n; i++)
+        correct_one(cam, mount, distance, readout_s, m, &lm[i]);
+}
+
+void rl_shutter_correct_each(const rl_calib *cam, const rl_mount *mount, const double *distance, double readout_s,
+                             const rl_motion *m, rl_detection *lm, int n)
+{
+    int i;
+    if (!(readout_s > 0) || m == NULL || distance == NULL || cam->height <= 0)
+        return;
+    for (i = 0; i < n; i++)
+        correct_one(cam, mount, distance[i], readout_s, m, &lm[i]);
 }

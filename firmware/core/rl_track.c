@@ -65,9 +65,10 @@ static void predict_pose(rl_track *t, double t_s, const rl_track_motion *odom)
     }
 }
 
-/* How far from the camera's foot a landmark can be and still be in view:
- * the farthest image corner's ray at the ceiling, and a landmark more. */
-static double view_reach(const rl_calib *cam, double Z, double diameter)
+/* How far from the camera's foot, per metre of height above it, a
+ * landmark can be and still be in view: the farthest image corner's ray,
+ * and 30% more. */
+static double view_slope(const rl_calib *cam)
 {
     double m = 0;
     int k;
@@ -77,7 +78,16 @@ static double view_reach(const rl_calib *cam, double Z, double diameter)
         if (hypot(xn, yn) > m)
             m = hypot(xn, yn);
     }
-    return 1.3 * m * Z + diameter;
+    return 1.3 * m;
+}
+
+/* Whether map landmark i is too far from the camera's foot C to be in
+ * view, at its own height (one above the ceiling, in a skylight's well,
+ * is seen from farther). */
+static int out_of_reach(const rl_map *map, int i, const double *C, double slope)
+{
+    double reach = slope * (rl_map_height(map, i) - C[2]) + map->diameter;
+    return fabs(map->lm[i].x - C[0]) > reach || fabs(map->lm[i].y - C[1]) > reach;
 }
 
 /* Map landmark i's image centre and radius from the camera (Rc, C); 0
@@ -113,19 +123,17 @@ static int is_whole(const rl_track_window *w, int W, int H)
 static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mount, const rl_map *map)
 {
     rl_pose_model md;
-    double q[RL_POSE_NQ] = {0}, Rc[9], C[3], reach;
+    double q[RL_POSE_NQ] = {0}, Rc[9], C[3], slope = view_slope(cam);
     int i, whole = 0;
     rl_pose_fit_model(&md, mount, map->ceiling_height, 0.5 * map->diameter);
     q[0] = t->ex;
     q[1] = t->ey;
     q[2] = t->eyaw;
     rl_pose_fit_camera(&md, q, Rc, C);
-    reach = view_reach(cam, map->ceiling_height - C[2], map->diameter);
     t->n = 0;
     for (i = 0; i < map->count && t->n < RL_MAX_LANDMARKS; i++) {
         rl_track_window *w = &t->win[t->n];
-        if (fabs(map->lm[i].x - C[0]) > reach || fabs(map->lm[i].y - C[1]) > reach ||
-            !project(cam, &md, Rc, C, map, i, w) || w->visible < PREDICT_MIN_VISIBLE)
+        if (out_of_reach(map, i, C, slope) || !project(cam, &md, Rc, C, map, i, w) || w->visible < PREDICT_MIN_VISIBLE)
             continue;
         whole += is_whole(w, cam->width, cam->height);
         t->n++;

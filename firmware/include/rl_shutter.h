@@ -59,4 +59,12 @@ void rl_shutter_move(const rl_mount *mount, double dt, const rl_motion *m, doubl
 void rl_shutter_correct(const rl_calib *cam, const rl_mount *mount, double distance, double readout_s,
                         const rl_motion *m, rl_detection *lm, int n);
 
+/* The same, each landmark at its own distance: lm[i] `distance[i]` (m)
+ * above the camera (a landmark on a beam or a lower panel is nearer, and
+ * the travel moves it further in the image: D / (D - M) times a
+ * ceiling's landmark at D). Nothing is moved for readout_s <= 0, a NULL m
+ * or distance; lm[i] is not moved for a bad distance[i]. */
+void rl_shutter_correct_each(const rl_calib *cam, const rl_mount *mount, const double *distance, double readout_s,
+                             const rl_motion *m, rl_detection *lm, int n);
+
 #endif

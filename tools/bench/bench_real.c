@@ -90,6 +90,7 @@ static void one_frame(const rl_image *photo, rl_composite_config *cc, const int 
     if (rl_report_run(hr, &ia, &res, &us) == RL_OK) {
         ring->us += us;
         ring->frames++;
+        rl_bench_stages_count(st, &res);
         for (i = 0; i < res.n_landmarks; i++)
             judge(ring, marks, n, res.landmarks[i].id, res.landmarks[i].u, res.landmarks[i].v);
     }

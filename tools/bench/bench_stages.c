@@ -57,6 +57,15 @@ void rl_bench_stages_unit(rl_bench_stages *st, const rl_image *img)
     st->units++;
 }
 
+void rl_bench_stages_count(rl_bench_stages *st, const rl_result *res)
+{
+    st->reads += res->n_candidates;
+    st->tried += res->local_tried;
+    st->taken += res->local_found;
+    st->landmarks += res->n_landmarks;
+    st->counted++;
+}
+
 void rl_bench_stages_print(const rl_bench_stages *st, const char *what, double peer_us)
 {
     double unit = st->units ? st->unit_ns / st->units / 1000.0 : 0.0, total = 0, runs = st->runs ? (double)st->runs : 1;
@@ -74,4 +83,9 @@ void rl_bench_stages_print(const rl_bench_stages *st, const char *what, double p
     if (peer_us > 0)
         printf("  %-22s %10.1f %10.2f   (AprilTag / ringloc: %.1fx)\n", "AprilTag 3", peer_us,
                unit > 0 ? peer_us / unit : 0.0, total > 0 ? peer_us / total : 0.0);
+    if (st->counted > 0) {
+        double c = (double)st->counted;
+        printf("  candidates a frame: %.2f read (global pass, second labellings), %.2f local tries (%.2f taken), "
+               "%.2f landmarks\n", st->reads / c, st->tried / c, st->taken / c, st->landmarks / c);
+    }
 }

@@ -7,6 +7,7 @@
  *   rl_bench_stages st;
  *   rl_bench_stages_start(&st, &cfg);          // before the recognizer is made
  *   ... recognize frames; rl_bench_stages_unit(&st, &img) once per frame ...
+ *   ... rl_bench_stages_count(&st, &res) after a frame's run, for the candidate counts ...
  *   rl_bench_stages_print(&st, "640x480 twins", apriltag_us);
  */
 #ifndef BENCH_STAGES_H
@@ -21,6 +22,7 @@ typedef struct {
     long runs;                /* frames recognized (RL_STAGE_DONE calls) */
     double unit_ns;           /* summed whole-frame histogram passes */
     long units;
+    long reads, tried, taken, landmarks, counted; /* rl_bench_stages_count's sums */
     rl_stage cur;
     uint64_t t0;
     int open;
@@ -38,9 +40,14 @@ void rl_bench_stages_add(rl_bench_stages *st, rl_stage s, double ns);
 /* One whole-frame histogram pass over img, timed (the least of a few). */
 void rl_bench_stages_unit(rl_bench_stages *st, const rl_image *img);
 
+/* A frame's candidates, from its result: the CLRs read as the global pass
+ * and the second labellings read them, the local pass's tries and those
+ * it took, the landmarks reported. */
+void rl_bench_stages_count(rl_bench_stages *st, const rl_result *res);
+
 /* The table: each stage's mean time per frame (us) and in histogram
  * passes, the total, and a peer's time per frame (AprilTag 3; 0: none)
- * beside it. */
+ * beside it; then the candidates a frame, when counted. */
 void rl_bench_stages_print(const rl_bench_stages *st, const char *what, double peer_us);
 
 #endif
