@@ -205,9 +205,18 @@ static double others_median(const double *r, int n, int i)
     return rl_median(v, m);
 }
 
+/* Code zone 1's width, a share of R (the narrowest: the zones inside the
+ * outer ring have equal areas). */
+static double zone_one(const rl_family *fam)
+{
+    double r[RL_MAX_BITS + 2];
+    rl_family_radii(fam, r);
+    return r[1] - r[2];
+}
+
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res)
 {
-    double radii[RL_MAX_LANDMARKS];
+    double radii[RL_MAX_LANDMARKS], zone = zone_one(&rec->templates.fam);
     /* read through a curve, not as linear light */
     int curved = rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0;
     int i, kept = 0, rv[RL_MAX_IDS], n, all = res->n_landmarks;
@@ -216,6 +225,11 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
     for (i = 0; i < all; i++) {
         rl_detection d = res->landmarks[i];
         double lead, own = 0, fit, tol = tolerance(&d, curved);
+        /* too small to tell its twins apart (RL_TWINS_MIN_ZONE_PX) */
+        if (zone * d.radius < RL_TWINS_MIN_ZONE_PX) {
+            rl_result_add_unidentified(res, &d);
+            continue;
+        }
         /* a global read of a whole landmark clear of every other id
          * through its curve is clear of its twins; a local read's
          * runner-up (sector-normalized) does not say so, nor a cut one's
@@ -242,9 +256,10 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
         if (!keeps(&d, tol, lead, 0.0))
             own = twin_lead(rec, img, rec->tone, &d, rv, n, &fit);
         /* the formations disagree: the read through any monotone curve
-         * decides, where the frame's curve reads the id too */
+         * decides, where the frame's curve reads the id clearly too
+         * (RL_TWINS_RANK_OWN) */
         if (keeps(&d, tol, lead, own) ||
-            (rank_fits(&d, curved, others_median(radii, all, i)) && keeps(&d, tol, 0.0, own) &&
+            (rank_fits(&d, curved, others_median(radii, all, i)) && own > RL_TWINS_RANK_OWN &&
              rank_keeps(rec, img, rec->tone, &d)))
             res->landmarks[kept++] = d;
         else

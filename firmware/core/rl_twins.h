@@ -14,7 +14,9 @@
  * than it leads the twin through the frame's curve is reported
  * unidentified, not as either id (a local read needs a margin more),
  * unless read through any monotone curve (rl_rank, which no formation
- * moves) it leads every id up to two zones away clearly.
+ * moves) it leads every id up to two zones away clearly, its lead through
+ * the frame's curve clear too. A landmark too small for its twins to be
+ * told apart at all (code zone 1 under RL_TWINS_MIN_ZONE_PX) gets no id.
  * What the twins came to is in the landmark's runner_up.
  *
  *   rl_twins_check(rec, &img, rl_tones_other(&rec->tones, rec->tone), &res);
@@ -64,11 +66,32 @@
  * to 0.012 there, the 68 wrong reads they caught by at most 0.003
  * (docs/results.md). */
 #define RL_TWINS_RANK_LEAD 0.006
+/* ... and only when its lead over them through the frame's curve is more
+ * than this (a global read as a local one, RL_TWINS_LOCAL_MARGIN): where
+ * the formations disagree, the rank read chooses between two clear reads,
+ * not for a tie. A whole 1 of a 16 px grey-mixed sheet read as 17 on the
+ * renderer's ceilings (its twin 0.015 ahead through the grey levels) led
+ * by 0.0004 through the curve and by 0.0060 through the rank read; the 90
+ * right reads the rank read kept on the development photos' 16 px sheets
+ * (seeds 1-10, gamma 2.2 / auto / 1) led through the curve by 0.0147 or
+ * more (global) and 0.0109 (local). */
+#define RL_TWINS_RANK_OWN RL_TWINS_LOCAL_MARGIN
 /* A landmark whose circle, read through the other formation, fits this
  * much worse than its read is not judged there (an ellipse the local pass
  * read in its shape fits a circle at 0.4-0.6; the misreads the rule is for
  * fitted within 0.04). */
 #define RL_TWINS_UNFIT 0.2
+
+/* Code zone 1, the narrowest (next to the outer ring), narrower than this
+ * many pixels: no id, whatever the reads (a landmark of ring5 under 14.2 px).
+ * There a blurred edge, the pixel grid and the radius's error move a zone
+ * by its width, the twins' templates fit alike, and neither formation nor
+ * the rank read tells them apart: letter sheets of 10-17 px on the
+ * development photos (site-check --mix grey, seeds 1-10, gamma 2.2 / auto
+ * / 1) gave 53 wrong global reads, every one with zone 1 at most 1.14 px
+ * (the radius read 13.46 px or less), and none above; 1.2 leaves 5%
+ * (docs/results.md). */
+#define RL_TWINS_MIN_ZONE_PX 1.2
 
 /* Each landmark of res that is not clear checked against its zone twins
  * through `other` (at every blur): its lead over the best of them there, plus, where that is
