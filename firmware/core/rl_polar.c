@@ -2,21 +2,18 @@
 
 #include <math.h>
 #include <string.h>
+#include "rl_clones.h"
 
 
 /* Pixels of a row whose cells are found before they are summed. */
 #define GATHER_CHUNK 64
 #define GATHER_BLOCK 16
 
-/* On x86 the per-pixel and per-bin loops are also built for AVX2 (GCC
- * target_clones, chosen at load time): 8-lane vectors, the same float
- * operations element by element, no fused multiply-add (ISO C contracts
- * none) and no sum reordered (no fast-math): the same numbers. */
-#if defined(__GNUC__) && !defined(__clang__) && !defined(RL_NO_VECTOR_EXT) && defined(__x86_64__)
-#define POLAR_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define POLAR_CLONES
-#endif
+/* On x86 the per-pixel and per-bin loops are also built for AVX2
+ * (rl_clones.h): 8-lane vectors, the same float operations element by
+ * element, no fused multiply-add and no sum reordered (no fast-math): the
+ * same numbers. */
+#define POLAR_CLONES RL_CLONES_AVX2
 
 /* A cell's packed sums: from the top, the count in 12 bits, the sum of
  * grey levels in 20 and the sum of their squares in the low 32 (used up

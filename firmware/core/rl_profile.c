@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
+#include "rl_clones.h"
 
 /* Pixels of a row handled at a time: their bins first, in blocks of
  * GATHER_BLOCK (a fixed count the compiler vectorizes), then the sums. */
@@ -77,10 +78,8 @@ static double plane_explained(const plane_sums *ps)
 /* Pixels binned by the shape's normalized radius, a circle's included.
  * On x86 also built for AVX2 and chosen at load time: the bins' 16-pixel
  * blocks in 8-lane vectors, the same float operations pixel by pixel (no
- * fused multiply-add: ISO C contracts none). */
-#if defined(__GNUC__) && !defined(__clang__) && !defined(RL_NO_VECTOR_EXT) && defined(__x86_64__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+ * fused multiply-add: rl_clones.h). */
+RL_CLONES_AVX2
 static void gather(const rl_image *img, const rl_tone *tone, double cx, double cy, double r,
                    const rl_shape *sh, int ystep, rl_profile *p)
 {

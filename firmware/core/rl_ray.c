@@ -45,7 +45,12 @@ static inline int sample_ray(const rl_image *img, const rl_tone *tone, double x,
     return 1;
 }
 
-#if defined(__GNUC__) && !defined(RL_NO_VECTOR_EXT)
+/* GCC's vector extensions with __builtin_convertvector (GCC 9 on, clang) */
+#if defined(__GNUC__) && (defined(__clang__) || __GNUC__ >= 9) && !defined(RL_NO_VECTOR_EXT)
+#define RAY_VECTORS 1
+#endif
+
+#ifdef RAY_VECTORS
 #include <string.h>
 typedef float ray_v4 __attribute__((vector_size(16)));
 typedef int ray_i4 __attribute__((vector_size(16)));
@@ -93,7 +98,7 @@ static void sample_ray_v4(const rl_image *img, const rl_tone *tone, double x, do
 int rl_ray_sample(const rl_image *img, const rl_tone *tone, double x, double y, double dx,
                   double dy, int n, int light, float *out)
 {
-#if defined(__GNUC__) && !defined(RL_NO_VECTOR_EXT)
+#ifdef RAY_VECTORS
     if (light > 255) {
         sample_ray_v4(img, tone, x, y, dx, dy, n, out);
         return 1;

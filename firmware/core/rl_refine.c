@@ -1,6 +1,7 @@
 #include "rl_refine.h"
 
 #include <math.h>
+#include "rl_clones.h"
 #include "rl_ray.h"
 
 void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r)
@@ -8,11 +9,9 @@ void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, doub
     rl_refine_centre_rows(img, lv, cx, cy, r, 1);
 }
 
-/* On x86 also built for AVX2 (target_clones, chosen at load time): the
- * same operations on each of the four sums, no fused multiply-add. */
-#if defined(__GNUC__) && !defined(__clang__) && !defined(RL_NO_VECTOR_EXT) && defined(__x86_64__)
-__attribute__((target_clones("avx2", "default")))
-#endif
+/* On x86 also built for AVX2 (rl_clones.h): the same operations on each
+ * of the four sums, no fused multiply-add. */
+RL_CLONES_AVX2
 double rl_refine_centre_rows(const rl_image *img, const rl_levels *lv, double *cx, double *cy, double r,
                              int ystep)
 {

@@ -36,7 +36,7 @@ extern const double rl_search_twin_scale[RL_SEARCH_TWIN_SCALES];
  * there is in *m (m->id < 0: nothing matched). The winner's zone twins
  * are scored only when it scores at least min_score (the rule's): under
  * it no rule takes the match whatever its runner-up, and m->second is the
- * runner-up over every id alone (0: always scored). */
+ * runner-up over every id alone (-INFINITY: always scored). */
 void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *img,
                         const rl_tone *tone, int light, double min_score, double *cx, double *cy,
                         double *r, rl_match *m);

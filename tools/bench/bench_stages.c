@@ -70,8 +70,12 @@ void rl_bench_stages_print(const rl_bench_stages *st, const char *what, double p
 {
     double unit = st->units ? st->unit_ns / st->units / 1000.0 : 0.0, total = 0, runs = st->runs ? (double)st->runs : 1;
     int s;
-    printf("stages, %s: mean per frame over %ld runs; one whole-frame histogram pass %.1f us\n", what, st->runs,
-           unit);
+    if (st->fastest_of > 0)
+        printf("stages, %s: mean per frame of each frame's fastest of %d runs (%ld frames); one whole-frame "
+               "histogram pass %.1f us\n", what, st->fastest_of, st->runs, unit);
+    else
+        printf("stages, %s: mean per frame over %ld runs; one whole-frame histogram pass %.1f us\n", what, st->runs,
+               unit);
     printf("  %-22s %10s %10s\n", "stage", "us", "hist passes");
     for (s = 0; s < RL_STAGE_DONE; s++) {
         double us = st->ns[s] / runs / 1000.0;

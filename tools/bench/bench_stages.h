@@ -20,6 +20,7 @@
 typedef struct {
     double ns[RL_STAGE_DONE]; /* summed over every run */
     long runs;                /* frames recognized (RL_STAGE_DONE calls) */
+    int fastest_of;           /* 0: ns sums every run; n: each frame's fastest of n runs */
     double unit_ns;           /* summed whole-frame histogram passes */
     long units;
     long reads, tried, taken, landmarks, counted; /* rl_bench_stages_count's sums */
@@ -45,7 +46,8 @@ void rl_bench_stages_unit(rl_bench_stages *st, const rl_image *img);
  * it took, the landmarks reported. */
 void rl_bench_stages_count(rl_bench_stages *st, const rl_result *res);
 
-/* The table: each stage's mean time per frame (us) and in histogram
+/* The table: each stage's time per frame (us; the mean over runs, or of
+ * each frame's fastest run, as fastest_of says) and in histogram
  * passes, the total, and a peer's time per frame (AprilTag 3; 0: none)
  * beside it; then the candidates a frame, when counted. */
 void rl_bench_stages_print(const rl_bench_stages *st, const char *what, double peer_us);

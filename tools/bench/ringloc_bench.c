@@ -66,18 +66,22 @@ static int twin_names(const char *dir, char **names)
 
 /* The stages' times of the run since *before as least[] holds them, each
  * the least of its runs so far (run k; the first sets them). */
-static void least_stages(const rl_bench_stages *st, const rl_bench_stages *before, int k, double *least)
+/* Run k's stage times (st since before) into kept when it is the fastest
+ * run so far (t: the runs' whole times): the stages of the one fastest run,
+ * the statistic of the summary rows and of AprilTag's time beside them. */
+static void fastest_stages(const rl_bench_stages *st, const rl_bench_stages *before, int k, const double *t,
+                           double *kept)
 {
-    int s;
-    for (s = 0; s < RL_STAGE_DONE; s++) {
-        double d = st->ns[s] - before->ns[s];
-        if (k == 0 || d < least[s])
-            least[s] = d;
-    }
+    int s, j;
+    for (j = 0; j < k; j++)
+        if (t[j] <= t[k])
+            return;
+    for (s = 0; s < RL_STAGE_DONE; s++)
+        kept[s] = st->ns[s] - before->ns[s];
 }
 
 /* One twin frame, each image REPEAT times in a row (warm, as a detector
- * running frame after frame is), the least run of each: interference from
+ * running frame after frame is), the fastest run of each: interference from
  * the rest of the machine only ever adds time, to either. What each found
  * is added to *found_rl and *found_at, the ring frame's size put in *W, *H.
  * 0, or 1 with the line printed. */
@@ -89,7 +93,7 @@ static int time_twin(const char *name, rl_heap_recog *hr, apriltag_detector_t *t
     double t[REPEAT], ta[REPEAT];
     char path[2048], err[512];
     rl_bench_stages start = *st;
-    double fewest[RL_STAGE_DONE];
+    double kept[RL_STAGE_DONE];
     int k, s;
     snprintf(path, sizeof path, "%s.png", name);
     if (rl_png_read_gray(path, &ring, err, sizeof err) != RL_OK)
@@ -103,11 +107,12 @@ static int time_twin(const char *name, rl_heap_recog *hr, apriltag_detector_t *t
         rl_bench_stages before = *st;
         if (rl_report_run(hr, &ring, &res, &t[k]) != RL_OK)
             return fprintf(stderr, "ringloc-bench: %s: recognition failed\n", strrchr(name, '/') + 1), 1;
-        least_stages(st, &before, k, fewest);
+        fastest_stages(st, &before, k, t, kept);
     }
     for (s = 0; s < RL_STAGE_DONE; s++)
-        st->ns[s] = start.ns[s] + fewest[s];
-    st->runs = start.runs + 1; /* the frame once, each stage at its least */
+        st->ns[s] = start.ns[s] + kept[s];
+    st->runs = start.runs + 1; /* the frame once: its fastest run */
+    st->fastest_of = REPEAT;
     for (k = 0; k < REPEAT; k++) {
         image_u8_t im = {tag.width, tag.height, tag.stride, tag.data};
         double t0 = (double)rl_clock_now_us();
