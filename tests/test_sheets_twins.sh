@@ -52,14 +52,18 @@ EOF
     for g in 2.2 auto 1; do
         "$R" site-check --json --rounds "$rounds" --sheet letter --mix grey --seed "$seed" \
             --radius-px "$radius" --gamma "$g" "$@" >"$T/sc.json" 2>"$T/sc.err"
+        rc=$?
+        # sheets were laid: a run that placed none (or did not run) proves nothing
+        placed=$(grep -o '"placed": [0-9]*' "$T/sc.json" | awk '{s += $2} END {print s + 0}')
         wrong=$(grep -o '"wrong": [0-9]*' "$T/sc.json" | awk '{s += $2} END {print s + 0}')
         read_cut=$(grep -o '"cut": {"placed": [0-9]*, "identified": [0-9]*' "$T/sc.json" | awk '{print $NF}')
         # the backgrounds hold no landmark: nothing false either
         false=$(grep -oE '"false_(as_is|composited)": [0-9]+' "$T/sc.json" | awk '{s += $2} END {print s + 0}')
-        if [ "$wrong" = 0 ] && [ "$false" = 0 ] && [ "${read_cut:-0}" -gt "$min_cut" ]; then
+        if [ "$rc" = 0 ] && [ "$placed" -gt 0 ] && [ "$wrong" = 0 ] && [ "$false" = 0 ] &&
+            [ "${read_cut:-0}" -gt "$min_cut" ]; then
             ok
         else
-            bad "seed $seed, $rounds rounds, $radius px, gamma $g: $wrong wrong, $false false, ${read_cut:-no} cut read: $(cat "$T/sc.json" "$T/sc.err")"
+            bad "seed $seed, $rounds rounds, $radius px, gamma $g: exit $rc, $placed placed, $wrong wrong, $false false, ${read_cut:-no} cut read: $(cat "$T/sc.json" "$T/sc.err")"
         fi
     done
 done

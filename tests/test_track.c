@@ -338,11 +338,14 @@ static void decisions(void **state)
 
 /* A landmark above the ceiling (in a skylight's well, 5 m above the floor,
  * 4.12 m above the camera at 0.88 m) seen near the image's top left
- * corner, worked out by hand: robot at the origin heading +x, the landmark
- * 1.854 m forward and 2.472 m left, 0.45 and 0.6 of its height: u = 319.5
- * + 457.01 x 0.6 = 593.7, v = 239.5 - 457.01 x 0.45 = 33.8, radius 457.01
- * x 0.1 / 4.12 = 11.09 px (fx = 320 / tan 35 degrees). It lies beyond what
- * the ceiling's distance reaches (1.3 x 0.875 x 1.87 + 0.2 = 2.33 m). */
+ * corner, worked out by hand: robot at the origin heading +x, landmarks
+ * 0.3 m across, this one 1.854 m forward and 2.472 m left, 0.45 and 0.6 of
+ * its height: u = 319.5 + 457.01 x 0.6 = 593.7, v = 239.5 - 457.01 x 0.45
+ * = 33.8, radius 457.01 x 0.15 / 4.12 = 16.64 px (fx = 320 / tan 35
+ * degrees). It lies beyond what the ceiling's distance reaches (1.3 x
+ * 0.8737 x 1.87 + 0.3 = 2.42 m). A second one as high, 0.2 m across
+ * (11.09 px, under ring5's 14.2 px for an id), right above the robot: no
+ * window. */
 static void above_the_ceiling(void **state)
 {
     static rl_map map;
@@ -356,7 +359,7 @@ static void above_the_ceiling(void **state)
     (void)state;
     memset(&map, 0, sizeof map);
     map.family.bits = 5;
-    map.diameter = 0.2;
+    map.diameter = 0.3;
     map.ceiling_height = 2.75;
     map.count = 10;
     for (i = 0; i < 9; i++) {
@@ -385,9 +388,17 @@ static void above_the_ceiling(void **state)
         fail_msg("the landmark above the ceiling is not predicted (%d windows)", trk.n);
     assert_int_equal(trk.n, 10);
     if (fabs(trk.win[found].u - 593.7) > 0.1 || fabs(trk.win[found].v - 33.8) > 0.1 ||
-        fabs(trk.win[found].radius - 11.09) > 0.05)
-        fail_msg("predicted at (%.2f, %.2f) r %.2f, not (593.7, 33.8) r 11.09", trk.win[found].u, trk.win[found].v,
+        fabs(trk.win[found].radius - 16.64) > 0.05)
+        fail_msg("predicted at (%.2f, %.2f) r %.2f, not (593.7, 33.8) r 16.64", trk.win[found].u, trk.win[found].v,
                  trk.win[found].radius);
+    /* 0.2 m across: 11.09 px there, too small for an id */
+    map.diameter = 0.2;
+    map.lm[9].x = 0.25;
+    map.lm[9].y = 0.25;
+    (void)rl_track_plan(&trk, &cam, &mount, &map, 0.2, NULL);
+    assert_int_equal(trk.n, 9);
+    for (i = 0; i < trk.n; i++)
+        assert_int_not_equal(trk.win[i].id, 10);
 }
 
 int main(int argc, char **argv)

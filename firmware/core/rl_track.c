@@ -118,12 +118,13 @@ static int is_whole(const rl_track_window *w, int W, int H)
     return rl_geom_disk_complete(W, H, w->u, w->v, WHOLE_MARGIN * w->radius);
 }
 
-/* The landmarks the predicted pose puts in view, into t->win; how many
- * of them are whole. */
+/* The landmarks the predicted pose puts in view, into t->win, but those
+ * too small for an id (rl_twins_min_radius: no read would name them, and
+ * a window that reads none fails the frame); how many of them are whole. */
 static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mount, const rl_map *map)
 {
     rl_pose_model md;
-    double q[RL_POSE_NQ] = {0}, Rc[9], C[3], slope = view_slope(cam);
+    double q[RL_POSE_NQ] = {0}, Rc[9], C[3], slope = view_slope(cam), min_radius = rl_twins_min_radius(&map->family);
     int i, whole = 0;
     rl_pose_fit_model(&md, mount, map->ceiling_height, 0.5 * map->diameter);
     q[0] = t->ex;
@@ -133,7 +134,8 @@ static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mou
     t->n = 0;
     for (i = 0; i < map->count && t->n < RL_MAX_LANDMARKS; i++) {
         rl_track_window *w = &t->win[t->n];
-        if (out_of_reach(map, i, C, slope) || !project(cam, &md, Rc, C, map, i, w) || w->visible < PREDICT_MIN_VISIBLE)
+        if (out_of_reach(map, i, C, slope) || !project(cam, &md, Rc, C, map, i, w) ||
+            w->visible < PREDICT_MIN_VISIBLE || w->radius < min_radius)
             continue;
         whole += is_whole(w, cam->width, cam->height);
         t->n++;

@@ -205,18 +205,18 @@ static double others_median(const double *r, int n, int i)
     return rl_median(v, m);
 }
 
-/* Code zone 1's width, a share of R (the narrowest: the zones inside the
- * outer ring have equal areas). */
-static double zone_one(const rl_family *fam)
+double rl_twins_min_radius(const rl_family *fam)
 {
+    /* code zone 1's width, a share of R (the narrowest: the zones inside
+     * the outer ring have equal areas) */
     double r[RL_MAX_BITS + 2];
     rl_family_radii(fam, r);
-    return r[1] - r[2];
+    return RL_TWINS_MIN_ZONE_PX / (r[1] - r[2]);
 }
 
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res)
 {
-    double radii[RL_MAX_LANDMARKS], zone = zone_one(&rec->templates.fam);
+    double radii[RL_MAX_LANDMARKS], min_radius = rl_twins_min_radius(&rec->templates.fam);
     /* read through a curve, not as linear light */
     int curved = rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0;
     int i, kept = 0, rv[RL_MAX_IDS], n, all = res->n_landmarks;
@@ -226,7 +226,7 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
         rl_detection d = res->landmarks[i];
         double lead, own = 0, fit, tol = tolerance(&d, curved);
         /* too small to tell its twins apart (RL_TWINS_MIN_ZONE_PX) */
-        if (zone * d.radius < RL_TWINS_MIN_ZONE_PX) {
+        if (d.radius < min_radius) {
             rl_result_add_unidentified(res, &d);
             continue;
         }

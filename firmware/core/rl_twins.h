@@ -93,6 +93,10 @@
  * (docs/results.md). */
 #define RL_TWINS_MIN_ZONE_PX 1.2
 
+/* The radius (px) under which a landmark of fam gets no id: its code zone
+ * 1 under RL_TWINS_MIN_ZONE_PX (ring4 11.2, ring5 14.2, ring6 17.2 px). */
+double rl_twins_min_radius(const rl_family *fam);
+
 /* Each landmark of res that is not clear checked against its zone twins
  * through `other` (at every blur): its lead over the best of them there, plus, where that is
  * slight, its lead through the frame's own curve; one that fails the
