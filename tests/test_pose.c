@@ -127,19 +127,22 @@ static void test_landmark_heights(void **state)
     assert_int_equal(rl_map_check(&m, &bad), RL_OK);
     assert_true(fabs(rl_map_height(&m, 0) - 2.45) < 1e-12 && fabs(rl_map_height(&m, 1) - 2.75) < 1e-12);
     /* an id's height: its one landmark's; an id repeated at two heights, or
-     * absent: the ceiling's */
-    assert_true(rl_map_id_height(&m, m.lm[0].id) == 2.45 && rl_map_id_height(&m, m.lm[1].id) == 2.75);
-    assert_true(rl_map_id_height(&m, 29) == 2.75);
+     * absent: the ceiling's; repeated at one height: that one */
     {
         static rl_map twice;
+        double h[RL_MAX_IDS];
+        rl_map_id_heights(&m, h);
+        assert_true(h[m.lm[0].id] == 2.45 && h[m.lm[1].id] == 2.75 && h[29] == 2.75);
         twice = m;
         twice.lm[3] = twice.lm[0];
         twice.lm[3].y = 1.5;
         twice.lm[3].z = 2.5;
         twice.count = 4;
-        assert_true(rl_map_id_height(&twice, m.lm[0].id) == 2.75);
+        rl_map_id_heights(&twice, h);
+        assert_true(h[m.lm[0].id] == 2.75);
         twice.lm[3].z = 2.45;
-        assert_true(rl_map_id_height(&twice, m.lm[0].id) == 2.45);
+        rl_map_id_heights(&twice, h);
+        assert_true(h[m.lm[0].id] == 2.45);
     }
     memset(d, 0, sizeof d);
     for (k = 0; k < 3; k++) {

@@ -54,7 +54,8 @@ static void test_forward(void **state)
 
 /* Each landmark at its own distance: forward at 1 m/s, row 359.5 (10 ms
  * after the middle row) saw the ceiling from 10 mm further forward; a
- * landmark 1.6 m above the camera (on a beam 0.4 m below the 2 m ceiling)
+ * landmark 1.6 m above the camera (on a beam 0.4 m below a ceiling 2 m
+ * above the camera)
  * moves 10 mm x 500 / 1.6 m = 3.125 px, one on the ceiling 2.5 px, one
  * at a bad distance (hung at the camera) not at all. */
 static void test_each_distance(void **state)

@@ -272,6 +272,31 @@ static void verification(void **state)
 
 /* The decisions, by hand: frames 0.1 s apart on a robot standing still
  * under a 3 x 3 grid of landmarks 0.5 m apart, right above the middle one. */
+/* A robot standing under a 3 x 3 grid of ring5 landmarks 0.5 m apart
+ * (ids 1-9, `diameter` across, a 2.75 m ceiling), right above the middle
+ * one: the camera (640 x 480, 70 degrees, 0.88 m up), a tracker with the
+ * defaults, an empty result. */
+static void under_a_grid(rl_map *map, double diameter, rl_calib *cam, rl_mount *mount, rl_track_config *tc,
+                         rl_track *trk, rl_result *res)
+{
+    int i;
+    memset(map, 0, sizeof *map);
+    map->family.bits = 5;
+    map->diameter = diameter;
+    map->ceiling_height = 2.75;
+    map->count = 9;
+    for (i = 0; i < 9; i++) {
+        map->lm[i].id = i + 1;
+        map->lm[i].x = 0.5 * (i % 3) - 0.5;
+        map->lm[i].y = 0.5 * (i / 3) - 0.5;
+    }
+    rl_calib_defaults(cam, 640, 480, 70.0 * M_PI / 180.0);
+    rl_mount_defaults(mount, 0.88);
+    rl_track_defaults(tc);
+    rl_track_init(trk, tc);
+    memset(res, 0, sizeof *res);
+}
+
 static void decisions(void **state)
 {
     static rl_map map;
@@ -283,21 +308,7 @@ static void decisions(void **state)
     rl_pose p, jumped;
     int i, planned = 0;
     (void)state;
-    memset(&map, 0, sizeof map);
-    map.family.bits = 5;
-    map.diameter = 0.2;
-    map.ceiling_height = 2.75;
-    map.count = 9;
-    for (i = 0; i < 9; i++) {
-        map.lm[i].id = i + 1;
-        map.lm[i].x = 0.5 * (i % 3) - 0.5;
-        map.lm[i].y = 0.5 * (i / 3) - 0.5;
-    }
-    rl_calib_defaults(&cam, 640, 480, 70.0 * M_PI / 180.0);
-    rl_mount_defaults(&mount, 0.88);
-    rl_track_defaults(&tc);
-    rl_track_init(&trk, &tc);
-    memset(&res, 0, sizeof res);
+    under_a_grid(&map, 0.2, &cam, &mount, &tc, &trk, &res);
     memset(&p, 0, sizeof p);
     /* no pose yet: no plan */
     assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.0, NULL), 0);
@@ -357,25 +368,12 @@ static void above_the_ceiling(void **state)
     rl_pose p;
     int i, found = -1;
     (void)state;
-    memset(&map, 0, sizeof map);
-    map.family.bits = 5;
-    map.diameter = 0.3;
-    map.ceiling_height = 2.75;
+    under_a_grid(&map, 0.3, &cam, &mount, &tc, &trk, &res);
     map.count = 10;
-    for (i = 0; i < 9; i++) {
-        map.lm[i].id = i + 1;
-        map.lm[i].x = 0.5 * (i % 3) - 0.5;
-        map.lm[i].y = 0.5 * (i / 3) - 0.5;
-    }
     map.lm[9].id = 10;
     map.lm[9].x = 0.45 * 4.12;
     map.lm[9].y = 0.6 * 4.12;
     map.lm[9].z = 5.0;
-    rl_calib_defaults(&cam, 640, 480, 70.0 * M_PI / 180.0);
-    rl_mount_defaults(&mount, 0.88);
-    rl_track_defaults(&tc);
-    rl_track_init(&trk, &tc);
-    memset(&res, 0, sizeof res);
     memset(&p, 0, sizeof p);
     res.levels.threshold = 100;
     rl_track_full(&trk, &res);

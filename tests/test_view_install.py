@@ -236,14 +236,20 @@ def check_faults(ck, port, fw, mon, tmp):
     print("serial closed: %s" % st["text"])
 
 
-def fetch_link(drv, port, elem):
-    href = drv.execute_script("return document.getElementById('%s').getAttribute('href')" % elem)
-    if not href:
-        raise vl.Fail("the page has no %s link" % elem)
-    code, _, body = get(port, href, {"X-Ringloc-Token": TOKEN})
-    if code != 200:
-        raise vl.Fail("%s: %d" % (href, code))
-    return href, body
+def fetch_links(drv, port, elems):
+    """The links' targets read in one script (the page sets them together
+    each frame: read one by one, a frame may come between), then fetched."""
+    hrefs = drv.execute_script("return arguments[0].map(function (e) {"
+                               " return document.getElementById(e).getAttribute('href'); })", elems)
+    got = []
+    for elem, href in zip(elems, hrefs):
+        if not href:
+            raise vl.Fail("the page has no %s link" % elem)
+        code, _, body = get(port, href, {"X-Ringloc-Token": TOKEN})
+        if code != 200:
+            raise vl.Fail("%s: %d" % (href, code))
+        got.append((href, body))
+    return got
 
 
 def check_snapshot(ck, ringloc, port, paths_dir, names, tmp):
@@ -251,8 +257,7 @@ def check_snapshot(ck, ringloc, port, paths_dir, names, tmp):
     try:
         page(drv, port)
         ck.check(wait_updates(drv), "snapshot: the page never showed a frame")
-        href, png = fetch_link(drv, port, "snap-png")
-        jhref, js = fetch_link(drv, port, "snap-json")
+        (href, png), (jhref, js) = fetch_links(drv, port, ["snap-png", "snap-json"])
     finally:
         drv.quit()
     st = json.loads(js)

@@ -285,10 +285,10 @@ static int can_localize(const rl_site *s)
 
 /* The centres of the frame at t_us into moved, each moved to the middle
  * row's instant (rl_shutter.h) by the motion of the last two poses, each
- * at its landmark's height in the map (rl_map_id_height): moved,
+ * at its landmark's height in the map (rl_map_id_heights): moved,
  * or the centres as they are when the shutter is global or the motion
  * unknown (no two recent poses before the frame). */
-static const rl_detection *shutter_moved(const rl_runner *r, uint64_t t_us, rl_detection *moved)
+static const rl_detection *shutter_moved(rl_runner *r, uint64_t t_us, rl_detection *moved)
 {
     const rl_site *s = r->site;
     const rl_result *res = r->res;
@@ -300,8 +300,14 @@ static const rl_detection *shutter_moved(const rl_runner *r, uint64_t t_us, rl_d
                            (double)t_us / 1e6, SHUTTER_MAX_GAP, &m))
         return res->landmarks;
     memcpy(moved, res->landmarks, sizeof *moved * (size_t)res->n_landmarks);
+    if (r->id_height_map != &s->map || r->id_height_count != s->map.count) {
+        rl_map_id_heights(&s->map, r->id_height);
+        r->id_height_map = &s->map;
+        r->id_height_count = s->map.count;
+    }
     for (i = 0; i < res->n_landmarks; i++) /* a landmark on a beam is nearer: it moves further */
-        distance[i] = rl_map_id_height(&s->map, moved[i].id) - s->mount.z;
+        distance[i] = (moved[i].id >= 0 && moved[i].id < RL_MAX_IDS ? r->id_height[moved[i].id]
+                                                                    : s->map.ceiling_height) - s->mount.z;
     rl_shutter_correct_each(&s->calib, &s->mount, distance, r->cfg.readout, &m, moved, res->n_landmarks);
     return moved;
 }

@@ -174,6 +174,11 @@ typedef struct {
     rl_run_pose last, prev;     /* the last two poses (prev: the one before) */
     rl_track track;
     rl_run_counts counts;
+    /* each id's height in the site's map (rl_map_id_heights), made on the
+     * first frame that needs it, again when the map is another */
+    double id_height[RL_MAX_IDS];
+    const rl_map *id_height_map;
+    int id_height_count;
 } rl_runner;
 
 /* The loop over io for a loaded, prepared site (rl_site_prepare); res is

@@ -16,17 +16,25 @@ double rl_map_height(const rl_map *map, int i)
     return map->lm[i].z > 0.0 ? map->lm[i].z : map->ceiling_height;
 }
 
-double rl_map_id_height(const rl_map *map, int id)
+void rl_map_id_heights(const rl_map *map, double *h)
 {
-    int i = rl_map_find(map, id), j;
-    double h;
-    if (i < 0)
-        return map->ceiling_height;
-    h = rl_map_height(map, i);
-    for (j = i + 1; j < map->count; j++)
-        if (map->lm[j].id == id && rl_map_height(map, j) != h)
-            return map->ceiling_height;
-    return h;
+    unsigned char seen[RL_MAX_IDS] = {0}; /* 1: one height so far, 2: several */
+    int i;
+    for (i = 0; i < RL_MAX_IDS; i++)
+        h[i] = map->ceiling_height;
+    for (i = 0; i < map->count; i++) {
+        int id = map->lm[i].id;
+        double z = rl_map_height(map, i);
+        if (id < 0 || id >= RL_MAX_IDS || seen[id] == 2)
+            continue;
+        if (seen[id] == 0) {
+            seen[id] = 1;
+            h[id] = z;
+        } else if (h[id] != z) {
+            seen[id] = 2;
+            h[id] = map->ceiling_height;
+        }
+    }
 }
 
 /* Whether landmarks i and j overlap: centres closer than the diameter. */

@@ -65,6 +65,11 @@ static void predict_pose(rl_track *t, double t_s, const rl_track_motion *odom)
     }
 }
 
+/* A window's predicted radius at least this many times the least for an
+ * id (a prediction a few percent large must not give a window that reads
+ * none). */
+#define MIN_RADIUS_MARGIN 1.05
+
 /* How far from the camera's foot, per metre of height above it, a
  * landmark can be and still be in view: the farthest image corner's ray,
  * and 30% more. */
@@ -135,7 +140,7 @@ static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mou
     for (i = 0; i < map->count && t->n < RL_MAX_LANDMARKS; i++) {
         rl_track_window *w = &t->win[t->n];
         if (out_of_reach(map, i, C, slope) || !project(cam, &md, Rc, C, map, i, w) ||
-            w->visible < PREDICT_MIN_VISIBLE || w->radius < min_radius)
+            w->visible < PREDICT_MIN_VISIBLE || w->radius < MIN_RADIUS_MARGIN * min_radius)
             continue;
         whole += is_whole(w, cam->width, cam->height);
         t->n++;

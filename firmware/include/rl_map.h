@@ -36,11 +36,11 @@ int rl_map_find(const rl_map *map, int id);
  * ceiling_height. */
 double rl_map_height(const rl_map *map, int i);
 
-/* Height above the floor of the landmarks with `id`: theirs when they all
- * hang at one height, else (or no such landmark) the map's ceiling_height
- * (a site repeating an id at several heights: which one is seen is not
- * known from the id). */
-double rl_map_id_height(const rl_map *map, int id);
+/* Each id's height above the floor into h[0 .. RL_MAX_IDS): its
+ * landmarks' when they all hang at one height, else (or no such landmark)
+ * the map's ceiling_height (a site repeating an id at several heights:
+ * which one is seen is not known from the id). One pass over the map. */
+void rl_map_id_heights(const rl_map *map, double *h);
 
 /* Largest |x| or |y| of a landmark, metres. */
 #define RL_MAP_MAX_COORD 1e5

@@ -110,7 +110,8 @@ void rl_track_defaults(rl_track_config *cfg);
 void rl_track_init(rl_track *t, const rl_track_config *cfg);
 
 /* Whether the frame at time t_s (s) can be read by windows; if so its
- * predictions are in t->win. odom: the motion since the last pose, or
+ * predictions are in t->win (none for a landmark predicted too small for
+ * an id of the map's family: the recognizer must use the map's family). odom: the motion since the last pose, or
  * NULL for a constant velocity from the last two poses. 0 (read it in
  * full) when tracking is off, a full frame is due, there is no recent
  * pose, or fewer than two whole landmarks are predicted in view. */

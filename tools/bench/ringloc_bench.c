@@ -64,8 +64,6 @@ static int twin_names(const char *dir, char **names)
     return n;
 }
 
-/* The stages' times of the run since *before as least[] holds them, each
- * the least of its runs so far (run k; the first sets them). */
 /* Run k's stage times (st since before) into kept when it is the fastest
  * run so far (t: the runs' whole times): the stages of the one fastest run,
  * the statistic of the summary rows and of AprilTag's time beside them. */
