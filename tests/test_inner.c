@@ -5,7 +5,11 @@
  * (the rays of one side leave the image: the others decide), and with the
  * image in a buffer whose rows are longer than the image (its stride), so
  * that a ray sampled without bound checks must still read the pixels a
- * checked one reads. */
+ * checked one reads. And on random candidates near and across every
+ * border, in a view inside a larger buffer: the same answer whether the
+ * pixels outside the view are ink or too light to read (a ray that read
+ * one would see the difference), and the drawn truth where all of it is
+ * well inside. */
 #include "rl_test.h"
 #include <math.h>
 #include "rl_inner.h"
@@ -54,10 +58,62 @@ static void enclosed_or_not(void **state)
             }
 }
 
+/* The pixels of buf outside the W x H view of stride W + PAD set to v. */
+static void fill_outside(uint8_t v)
+{
+    int x, y;
+    for (y = 0; y < H; y++)
+        for (x = W; x < W + PAD; x++)
+            buf[y * (W + PAD) + x] = v;
+}
+
+static double uniform(uint32_t *seed)
+{
+    *seed = *seed * 1664525u + 1013904223u;
+    return (*seed >> 8) / 16777216.0;
+}
+
+static void never_outside_the_view(void **state)
+{
+    uint32_t seed = 99;
+    int t, inside = 0, near = 0;
+    (void)state;
+    for (t = 0; t < 3000; t++) {
+        double r = 4 + 12 * uniform(&seed), cx, cy;
+        int ring = t % 2, ink, light;
+        rl_image img;
+        /* the centre anywhere up to 2 radii past the borders, or within a
+         * radius or two of a side (t % 4 == 1: left or right, 2: top or
+         * bottom, 3: both, a corner) */
+        cx = -2 * r + (W + 4 * r) * uniform(&seed);
+        cy = -2 * r + (H + 4 * r) * uniform(&seed);
+        if (t % 4 == 1 || t % 4 == 3)
+            cx = uniform(&seed) < 0.5 ? 3 * r * uniform(&seed) - r : W + r - 3 * r * uniform(&seed);
+        if (t % 4 >= 2)
+            cy = uniform(&seed) < 0.5 ? 3 * r * uniform(&seed) - r : H + r - 3 * r * uniform(&seed);
+        img = draw(W + PAD, cx, cy, r, ring);
+        light = 240;
+        fill_outside(0); /* ink past the view's right side */
+        ink = rl_inner_enclosed(&img, light, cx, cy, r, 0.0);
+        fill_outside(255); /* too light to read */
+        if (ink != rl_inner_enclosed(&img, light, cx, cy, r, 0.0))
+            fail_msg("r %.2f at (%.3f, %.3f), ring %d: the pixels past the view changed the answer", r, cx, cy, ring);
+        /* wholly inside with room for every ray: the drawing says */
+        if (cx - 3.2 * r > 1 && cy - 3.2 * r > 1 && cx + 3.2 * r < W - 2 && cy + 3.2 * r < H - 2) {
+            inside++;
+            if (ink != ring)
+                fail_msg("r %.2f at (%.3f, %.3f), ring %d: read %d", r, cx, cy, ring, ink);
+        } else
+            near++;
+    }
+    assert_true(inside > 50 && near > 2000);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(enclosed_or_not),
+        cmocka_unit_test(never_outside_the_view),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -3,7 +3,10 @@
  * (256) the samples are bit for bit those with a light level none of them
  * reaches (255 on an image under 255); and on random rays, with and
  * without a light level, the answer and the bits of the formula written
- * here sample by sample. */
+ * here sample by sample (in a view whose rows are longer than it); a ray
+ * rl_ray_inside takes reads no pixel outside the image, its end a hair
+ * under the last column or row. */
+#include <math.h>
 #include "rl_test.h"
 #include "rl_ray.h"
 #include "rl_tone.h"
@@ -11,6 +14,21 @@
 #define W 96
 #define H 80
 static uint8_t px[W * H];
+
+/* A random ray over the W x H image: its start (x, y) 4 px and more from
+ * the top left, its step (dx, dy) up to a pixel; its sample count. */
+static int random_ray(uint32_t *seed, double *x, double *y, double *dx, double *dy)
+{
+    *seed = *seed * 1664525u + 1013904223u;
+    *x = 4 + (*seed >> 8) % 8800 / 100.0;
+    *seed = *seed * 1664525u + 1013904223u;
+    *y = 4 + (*seed >> 8) % 7200 / 100.0;
+    *seed = *seed * 1664525u + 1013904223u;
+    *dx = ((int)((*seed >> 8) % 2001) - 1000) / 1000.0;
+    *seed = *seed * 1664525u + 1013904223u;
+    *dy = ((int)((*seed >> 8) % 2001) - 1000) / 1000.0;
+    return 1 + (int)((*seed >> 4) % 64);
+}
 
 static void hand_bilinear(void **state)
 {
@@ -51,15 +69,7 @@ static void no_light_path_same(void **state)
         float a[64], b[64];
         double x, y, dx, dy;
         int n;
-        seed = seed * 1664525u + 1013904223u;
-        x = 4 + (seed >> 8) % 8800 / 100.0;
-        seed = seed * 1664525u + 1013904223u;
-        y = 4 + (seed >> 8) % 7200 / 100.0;
-        seed = seed * 1664525u + 1013904223u;
-        dx = ((int)((seed >> 8) % 2001) - 1000) / 1000.0;
-        seed = seed * 1664525u + 1013904223u;
-        dy = ((int)((seed >> 8) % 2001) - 1000) / 1000.0;
-        n = 1 + (int)((seed >> 4) % 64);
+        n = random_ray(&seed, &x, &y, &dx, &dy);
         if (!rl_ray_inside(&img, x, y, x + (n - 1) * dx, y + (n - 1) * dy))
             continue;
         assert_int_equal(rl_ray_sample(&img, &tone, x, y, dx, dy, n, 256, a), 1);
@@ -100,7 +110,9 @@ static int oracle(const rl_image *img, const rl_tone *tone, double x, double y, 
 static void rays_are_the_formula(void **state)
 {
     rl_tone tone;
-    rl_image img = rl_image_view(W, H, W, px);
+    /* a view narrower and shorter than its rows (stride W): the next row
+     * is a stride on, not a width */
+    rl_image img = rl_image_view(W - 13, H - 5, W, px);
     uint32_t seed = 777;
     int i, t, rays = 0, stopped = 0;
     (void)state;
@@ -113,15 +125,7 @@ static void rays_are_the_formula(void **state)
         float a[64], b[64];
         double x, y, dx, dy;
         int n, light, want;
-        seed = seed * 1664525u + 1013904223u;
-        x = 4 + (seed >> 8) % 8800 / 100.0;
-        seed = seed * 1664525u + 1013904223u;
-        y = 4 + (seed >> 8) % 7200 / 100.0;
-        seed = seed * 1664525u + 1013904223u;
-        dx = ((int)((seed >> 8) % 2001) - 1000) / 1000.0;
-        seed = seed * 1664525u + 1013904223u;
-        dy = ((int)((seed >> 8) % 2001) - 1000) / 1000.0;
-        n = 1 + (int)((seed >> 4) % 64);
+        n = random_ray(&seed, &x, &y, &dx, &dy);
         seed = seed * 1664525u + 1013904223u;
         light = t % 4 == 0 ? 256 : 240 + (int)((seed >> 8) % 17); /* 240 .. 256 */
         if (!rl_ray_inside(&img, x, y, x + (n - 1) * dx, y + (n - 1) * dy))
@@ -136,12 +140,57 @@ static void rays_are_the_formula(void **state)
     assert_true(rays > 10000 && stopped > 1000 && rays - stopped > 1000);
 }
 
+/* Ends within float rounding of the last column or row: the samples are
+ * placed in float, so an end rl_ray_inside takes a hair under width - 1
+ * in double could land on the last pixel and read the one past it. The
+ * view sits in a buffer whose pixels outside it are 255 and inside 100: a
+ * ray rl_ray_inside takes, sampled with light level 255, reads no pixel
+ * outside the view (a sample touching one stops the ray). */
+static void ends_at_the_last_pixel(void **state)
+{
+    static uint8_t buf[(2100 + 2) * (1600 + 2)];
+    static const int sizes[][2] = {{4, 3}, {2, 2}, {97, 61}, {640, 480}, {2000, 1500}};
+    rl_tone tone;
+    uint32_t seed = 4242;
+    int k, t, taken = 0;
+    (void)state;
+    rl_tone_init(&tone, 1.0);
+    for (k = 0; k < (int)(sizeof sizes / sizeof sizes[0]); k++) {
+        int w = sizes[k][0], h = sizes[k][1], st = w + 2;
+        rl_image img = rl_image_view(w, h, st, buf);
+        memset(buf, 255, sizeof buf);
+        for (t = 0; t < h; t++)
+            memset(buf + (size_t)t * st, 100, (size_t)w);
+        for (t = 0; t < 4000; t++) {
+            float g[64];
+            /* an end 1e-9 .. 1e-2 px under the last column or row (or both), a
+             * start anywhere inside */
+            double under = pow(10.0, -9.0 + 7.0 * ((seed = seed * 1664525u + 1013904223u) >> 8) / 16777216.0);
+            double x1 = w - 1 - under, y1 = h - 1 - under, x0, y0;
+            int n = 2 + (int)(((seed = seed * 1664525u + 1013904223u) >> 8) % 63);
+            x0 = (w - 1) * (((seed = seed * 1664525u + 1013904223u) >> 8) / 16777216.0);
+            y0 = (h - 1) * (((seed = seed * 1664525u + 1013904223u) >> 8) / 16777216.0);
+            if (t % 3 == 1)
+                y1 = y0; /* along a row to the last column */
+            else if (t % 3 == 2)
+                x1 = x0; /* down a column to the last row */
+            if (!rl_ray_inside(&img, x0, y0, x1, y1))
+                continue;
+            taken++;
+            assert_int_equal(rl_ray_sample(&img, &tone, x0, y0, (x1 - x0) / (n - 1), (y1 - y0) / (n - 1), n, 255, g),
+                             1);
+        }
+    }
+    assert_true(taken > 1000);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(hand_bilinear),
         cmocka_unit_test(no_light_path_same),
         cmocka_unit_test(rays_are_the_formula),
+        cmocka_unit_test(ends_at_the_last_pixel),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

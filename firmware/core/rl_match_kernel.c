@@ -19,8 +19,8 @@ void rl_match_kernel_plain(const float *t, size_t stride, const float *fn, const
     }
 }
 
-void rl_match_kernel_wide_plain(const float *t, size_t stride, const float *fn, const float *fs,
-                                float *st, float *stt, float *sxt)
+void rl_match_kernel_wide_blocks(const float *t, size_t stride, const float *fn, const float *fs,
+                                 float *st, float *stt, float *sxt)
 {
     int b;
     for (b = 0; b < RL_MATCH_WIDE; b++)

@@ -50,8 +50,8 @@ void rl_match_kernel_x86(const float *t, size_t stride, const float *fn, const f
  * all of them (each bin's count and sum loaded once), else a block at a
  * time. */
 #define RL_MATCH_WIDE 3
-void rl_match_kernel_wide_plain(const float *t, size_t stride, const float *fn, const float *fs,
-                                float *st, float *stt, float *sxt);
+void rl_match_kernel_wide_blocks(const float *t, size_t stride, const float *fn, const float *fs,
+                                 float *st, float *stt, float *sxt);
 #if defined(RL_HAVE_MATCH_KERNEL_V8)
 void rl_match_kernel_v8w(const float *t, size_t stride, const float *fn, const float *fs, float *st,
                          float *stt, float *sxt);
@@ -65,10 +65,10 @@ void rl_match_kernel_wide_x86(const float *t, size_t stride, const float *fn, co
 #define rl_match_kernel_wide rl_match_kernel_wide_x86
 #elif defined(RL_HAVE_MATCH_KERNEL_V4) && !defined(RL_NO_VECTOR_EXT)
 #define rl_match_kernel rl_match_kernel_v4
-#define rl_match_kernel_wide rl_match_kernel_wide_plain
+#define rl_match_kernel_wide rl_match_kernel_wide_blocks
 #else
 #define rl_match_kernel rl_match_kernel_plain
-#define rl_match_kernel_wide rl_match_kernel_wide_plain
+#define rl_match_kernel_wide rl_match_kernel_wide_blocks
 #endif
 
 #endif

@@ -105,14 +105,10 @@ __attribute__((target("avx"))) void rl_match_kernel_v8w(const float *t, size_t s
 void rl_match_kernel_wide_x86(const float *t, size_t stride, const float *fn, const float *fs, float *st,
                               float *stt, float *sxt)
 {
-    int b;
-    if (__builtin_cpu_supports("avx")) {
+    if (__builtin_cpu_supports("avx"))
         rl_match_kernel_v8w(t, stride, fn, fs, st, stt, sxt);
-        return;
-    }
-    for (b = 0; b < RL_MATCH_WIDE; b++)
-        rl_match_kernel_v4(t + b * RL_MATCH_BLOCK, stride, fn, fs, st + b * RL_MATCH_BLOCK,
-                           stt + b * RL_MATCH_BLOCK, sxt + b * RL_MATCH_BLOCK);
+    else
+        rl_match_kernel_wide_blocks(t, stride, fn, fs, st, stt, sxt); /* v4 a block */
 }
 
 void rl_match_kernel_x86(const float *t, size_t stride, const float *fn, const float *fs, float *st,

@@ -1,5 +1,6 @@
 #include "rl_ray.h"
 
+#include <float.h>
 #include <math.h>
 
 /* By rotation from the first direction: four trigonometric calls instead
@@ -16,10 +17,17 @@ void rl_ray_dirs(int n, double *c, double *s)
     }
 }
 
+/* The samples are placed in float (x + i dx, each term rounded): a
+ * position up to the image's size is off by at most some 6 float epsilons
+ * of that size, so an end closer than SLACK of them to the last column or
+ * row could land on it and read the pixel past it. */
+#define SLACK (8 * FLT_EPSILON)
+
 int rl_ray_inside(const rl_image *img, double x0, double y0, double x1, double y1)
 {
-    return x0 >= 0 && x1 >= 0 && y0 >= 0 && y1 >= 0 && x0 < img->width - 1 &&
-           x1 < img->width - 1 && y0 < img->height - 1 && y1 < img->height - 1;
+    double slack = SLACK * (img->width > img->height ? img->width : img->height);
+    double xm = img->width - 1 - slack, ym = img->height - 1 - slack;
+    return x0 >= 0 && x1 >= 0 && y0 >= 0 && y1 >= 0 && x0 < xm && x1 < xm && y0 < ym && y1 < ym;
 }
 
 /* rl_ray_sample's loop from sample i0 on; inlined with light 256 too,
