@@ -31,7 +31,10 @@
  * pass's 7 wrong ids above the size floor on the development sheets, each
  * its truth with one white zone read dark). Through the grey levels the
  * truth fits at its own radius, which the read's 0.97 .. 1.03 left out on
- * most of them. */
+ * most of them. Only for landmarks under RL_TWINS_FAR_ZONES times the
+ * size floor (rl_twins_check): the shift is the blur's, in pixels, and at
+ * the moving frames' 23-25 px (light mixed, read through the right curve)
+ * 9% let a twin fit through the grey levels on 5 of their 55 cut ones. */
 static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
                         const int *rv, int n, int far, double *fit)
 {
@@ -231,6 +234,7 @@ double rl_twins_min_radius(const rl_family *fam)
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res)
 {
     double radii[RL_MAX_LANDMARKS], min_radius = rl_twins_min_radius(&rec->templates.fam);
+    double far_radius = RL_TWINS_FAR_ZONES * min_radius;
     /* read through a curve, not as linear light */
     int curved = rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0;
     int i, kept = 0, rv[RL_MAX_IDS], n, all = res->n_landmarks;
@@ -256,9 +260,10 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
             res->landmarks[kept++] = d;
             continue;
         }
-        /* a local read through a curve: its rivals through the grey
-         * levels at the radius they fit (twin_lead) */
-        lead = twin_lead(rec, img, other, &d, rv, n, curved && d.pass == RL_PASS_LOCAL, &fit);
+        /* a small local read through a curve: its rivals through the
+         * grey levels at the radius they fit (twin_lead) */
+        lead = twin_lead(rec, img, other, &d, rv, n, curved && d.pass == RL_PASS_LOCAL && d.radius < far_radius,
+                         &fit);
         /* a circle far from what was read (an ellipse the local pass read
          * in its own shape, at a wide-angle lens's border) says nothing */
         if (fit < d.score - RL_TWINS_UNFIT) {
