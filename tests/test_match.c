@@ -145,12 +145,95 @@ static void test_rescaled_profile_moves_bins(void **state)
     assert_true(q.n[3] == 10 && q.n[40] == 4);
 }
 
+/* The wide kernel (RL_MATCH_WIDE blocks in one walk) gives each column the
+ * bits of one block at a time, with empty bins and on a table whose rows
+ * are longer than the blocks (the table's stride). */
+static void test_wide_kernel_is_blocks_bit_for_bit(void **state)
+{
+    enum { STRIDE = RL_MATCH_WIDE * RL_MATCH_BLOCK + 16 };
+    static float t[RL_PROFILE_BINS * STRIDE];
+    float fn[RL_PROFILE_BINS], fs[RL_PROFILE_BINS];
+    float a[3][RL_MATCH_WIDE * RL_MATCH_BLOCK], b[3][RL_MATCH_WIDE * RL_MATCH_BLOCK];
+    int trial, k, c, blk;
+    (void)state;
+    for (trial = 0; trial < 200; trial++) {
+        for (k = 0; k < RL_PROFILE_BINS * STRIDE; k++)
+            t[k] = (float)uniform();
+        for (k = 0; k < RL_PROFILE_BINS; k++) {
+            fn[k] = uniform() < 0.2 ? 0.0f : (float)(uniform() * 300);
+            fs[k] = fn[k] * (float)(uniform() * 255);
+        }
+        for (blk = 0; blk < RL_MATCH_WIDE; blk++)
+            rl_match_kernel_plain(t + 8 + blk * RL_MATCH_BLOCK, STRIDE, fn, fs, a[0] + blk * RL_MATCH_BLOCK,
+                                  a[1] + blk * RL_MATCH_BLOCK, a[2] + blk * RL_MATCH_BLOCK);
+        rl_match_kernel_wide(t + 8, STRIDE, fn, fs, b[0], b[1], b[2]);
+        assert_memory_equal(a, b, sizeof a);
+        rl_match_kernel_wide_plain(t + 8, STRIDE, fn, fs, b[0], b[1], b[2]);
+        assert_memory_equal(a, b, sizeof a);
+#ifdef RL_HAVE_MATCH_KERNEL_V8
+        if (__builtin_cpu_supports("avx")) {
+            rl_match_kernel_v8w(t + 8, STRIDE, fn, fs, b[0], b[1], b[2]);
+            for (k = 0; k < 3; k++)
+                for (c = 0; c < RL_MATCH_WIDE * RL_MATCH_BLOCK; c++)
+                    assert_memory_equal(&a[k][c], &b[k][c], sizeof(float));
+        }
+#endif
+    }
+}
+
+/* Every id matched (rl_match_all: wide blocks over the table) and every id
+ * listed (rl_match_ids: each id's own columns) give the same match, bit for
+ * bit, on noisy profiles of random ids and on profiles of noise, for
+ * families whose column count leaves the last wide block short. */
+static void test_match_all_is_every_id_listed(void **state)
+{
+    static unsigned char mem[1 << 18];
+    int bits, trial, k, j;
+    (void)state;
+    for (bits = 3; bits <= 6; bits++) {
+        rl_family fam;
+        rl_templates tt;
+        rl_ws ws;
+        int ids[64];
+        fam.bits = bits;
+        rl_ws_init(&ws, mem, sizeof mem);
+        assert_int_equal(rl_templates_init(&tt, &ws, &fam, NULL, 0), RL_OK);
+        for (j = 0; j < tt.n; j++)
+            ids[j] = tt.ids[j];
+        for (trial = 0; trial < 60; trial++) {
+            int i = (int)(uniform() * tt.n), b = (int)(uniform() * RL_BLUR_LEVELS), noise = trial % 3 == 0;
+            rl_profile p;
+            rl_match m, ml;
+            memset(&p, 0, sizeof p);
+            for (k = 0; k < RL_PROFILE_BINS; k++) {
+                double n = uniform() < 0.1 ? 0 : (double)(int)(uniform() * 40 * (k + 1) / 8);
+                double v = noise ? 255 * uniform() : 40 + 180 * rl_templates_bin(&tt, i, b, k) + 40 * (uniform() - 0.5);
+                p.n[k] = n;
+                p.sx[k] = (double)(int)(n * v);
+                p.sxx += n * v * v + n * 30.0;
+                p.total += n;
+            }
+            rl_match_all(&tt, &p, &m);
+            rl_match_ids(&tt, &p, ids, tt.n, -1, &ml);
+            assert_int_equal(m.id, ml.id);
+            assert_int_equal(m.blur, ml.blur);
+            assert_memory_equal(&m.score, &ml.score, sizeof m.score);
+            assert_memory_equal(&m.second, &ml.second, sizeof m.second);
+            assert_memory_equal(&m.contrast, &ml.contrast, sizeof m.contrast);
+            if (!noise)
+                assert_int_equal(m.id, tt.ids[i]);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_kernels_agree_bit_for_bit),
         cmocka_unit_test(test_rescaled_profile_moves_bins),
         cmocka_unit_test(test_scores_match_a_direct_correlation),
+        cmocka_unit_test(test_wide_kernel_is_blocks_bit_for_bit),
+        cmocka_unit_test(test_match_all_is_every_id_listed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

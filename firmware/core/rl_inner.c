@@ -26,6 +26,25 @@ static int grey_at(const rl_image *img, double x, double y)
     return img->data[(size_t)yi * (size_t)img->stride + xi];
 }
 
+/* grey_at where (x, y) is known to round into the image. */
+static int grey_in(const rl_image *img, double x, double y)
+{
+    return img->data[(size_t)(int)(y + 0.5) * (size_t)img->stride + (int)(x + 0.5)];
+}
+
+/* 1 when every point of the ray from rho0 to rho1 (px) rounds into the
+ * image (grey_at never -1 along it): both ends do, the image is convex. */
+static int ray_in(const rl_image *img, double cx, double cy, double c, double s, double rho0, double rho1)
+{
+    double xa = cx + rho0 * c, ya = cy + rho0 * s, xb = cx + rho1 * c, yb = cy + rho1 * s;
+    const double m = 1e-6; /* the points between are rounded too */
+    return xa >= m - 0.5 && ya >= m - 0.5 && xb >= m - 0.5 && yb >= m - 0.5 && xa + 0.5 + m < img->width &&
+           xb + 0.5 + m < img->width && ya + 0.5 + m < img->height && yb + 0.5 + m < img->height;
+}
+
+/* The pixel at rho along the ray: unchecked where the whole ray is in. */
+#define GREY(rho) (in ? grey_in(img, cx + (rho) * c, cy + (rho) * s) : grey_at(img, cx + (rho) * c, cy + (rho) * s))
+
 enum { RAY_UNKNOWN, RAY_CLEAR, RAY_HIT };
 
 /* What the ray in direction (c, s) meets beyond the candidate's quiet
@@ -37,9 +56,11 @@ static int ray_meets(const rl_image *img, int light, double cx, double cy, doubl
 {
     double rho;
     int ink = 256, paper = -1, mid, g = 0;
+    /* past every rho sampled below: the ring's end from the farthest start */
+    int in = ray_in(img, cx, cy, c, s, 0.8 * r, fmax(1.2 * r, RING_END * (to + 1.0) + 2.0));
     /* the candidate's own ink (outer ring) and paper (quiet zone) here */
     for (rho = 0.8 * r; rho <= 1.2 * r; rho += 1.0) {
-        if ((g = grey_at(img, cx + rho * c, cy + rho * s)) < 0)
+        if ((g = GREY(rho)) < 0)
             break;
         if (rho <= r && g < ink)
             ink = g;
@@ -50,14 +71,14 @@ static int ray_meets(const rl_image *img, int light, double cx, double cy, doubl
         return RAY_UNKNOWN;
     mid = (ink + paper) / 2;
     for (rho = ENCLOSE_FROM * r; rho <= to; rho += 1.0) {
-        g = grey_at(img, cx + rho * c, cy + rho * s);
+        g = GREY(rho);
         if (g < 0 || g >= light || g < mid)
             break;
     }
     if (g >= 0 && g < mid) {
         double start = rho;
         for (; rho <= RING_END * start + 1.0; rho += 1.0) {
-            g = grey_at(img, cx + rho * c, cy + rho * s);
+            g = GREY(rho);
             if (g < 0 || g >= light)
                 return RAY_UNKNOWN;
             if (g >= mid) {

@@ -83,20 +83,35 @@ static void score_block(const float *t, size_t stride, int nc, const int *ids, c
         keep_column(m, z, ids[c], blurs[c], st[c], stt[c], sxt[c]);
 }
 
+/* Columns the wide kernel scores at a time. */
+#define WIDE_COLUMNS (RL_MATCH_WIDE * RL_MATCH_BLOCK)
+
 void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m)
 {
     profile_terms z;
-    int ncol = tt->n * RL_BLUR_LEVELS, c0, c;
+    int ncol = tt->n * RL_BLUR_LEVELS, c0, c, i = 0, b = 0;
     if (!match_start(p, &z, m))
         return;
-    for (c0 = 0; c0 < ncol; c0 += RL_MATCH_BLOCK) {
-        int ids[RL_MATCH_BLOCK], blurs[RL_MATCH_BLOCK];
-        int nc = ncol - c0 < RL_MATCH_BLOCK ? ncol - c0 : RL_MATCH_BLOCK;
-        for (c = 0; c < nc; c++) {
-            ids[c] = tt->ids[(c0 + c) / RL_BLUR_LEVELS];
-            blurs[c] = (c0 + c) % RL_BLUR_LEVELS;
+    /* the columns in table order, as wide a block at a time as the table
+     * holds (each column's sums the same bits either way) */
+    for (c0 = 0; c0 < ncol;) {
+        float st[WIDE_COLUMNS], stt[WIDE_COLUMNS], sxt[WIDE_COLUMNS];
+        int nc;
+        if (c0 + WIDE_COLUMNS <= tt->stride && ncol - c0 > WIDE_COLUMNS - RL_MATCH_BLOCK) {
+            nc = ncol - c0 < WIDE_COLUMNS ? ncol - c0 : WIDE_COLUMNS;
+            rl_match_kernel_wide(tt->table + c0, (size_t)tt->stride, z.fn, z.fs, st, stt, sxt);
+        } else {
+            nc = ncol - c0 < RL_MATCH_BLOCK ? ncol - c0 : RL_MATCH_BLOCK;
+            rl_match_kernel(tt->table + c0, (size_t)tt->stride, z.fn, z.fs, st, stt, sxt);
         }
-        score_block(tt->table + c0, (size_t)tt->stride, nc, ids, blurs, &z, m);
+        for (c = 0; c < nc; c++) {
+            keep_column(m, &z, tt->ids[i], b, st[c], stt[c], sxt[c]);
+            if (++b == RL_BLUR_LEVELS) {
+                b = 0;
+                i++;
+            }
+        }
+        c0 += nc;
     }
 }
 

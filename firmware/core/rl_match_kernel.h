@@ -44,13 +44,31 @@ void rl_match_kernel_x86(const float *t, size_t stride, const float *fn, const f
                          float *st, float *stt, float *sxt);
 #endif
 
+/* RL_MATCH_WIDE blocks side by side (columns t .. t + RL_MATCH_WIDE *
+ * RL_MATCH_BLOCK - 1, their sums in that order): each column's sums the
+ * bits of rl_match_kernel's. On x86 with AVX one walk over the bins for
+ * all of them (each bin's count and sum loaded once), else a block at a
+ * time. */
+#define RL_MATCH_WIDE 3
+void rl_match_kernel_wide_plain(const float *t, size_t stride, const float *fn, const float *fs,
+                                float *st, float *stt, float *sxt);
+#if defined(RL_HAVE_MATCH_KERNEL_V8)
+void rl_match_kernel_v8w(const float *t, size_t stride, const float *fn, const float *fs, float *st,
+                         float *stt, float *sxt);
+void rl_match_kernel_wide_x86(const float *t, size_t stride, const float *fn, const float *fs, float *st,
+                              float *stt, float *sxt);
+#endif
+
 /* The kernel identification uses. */
 #if defined(RL_HAVE_MATCH_KERNEL_V8) && !defined(RL_NO_VECTOR_EXT)
 #define rl_match_kernel rl_match_kernel_x86
+#define rl_match_kernel_wide rl_match_kernel_wide_x86
 #elif defined(RL_HAVE_MATCH_KERNEL_V4) && !defined(RL_NO_VECTOR_EXT)
 #define rl_match_kernel rl_match_kernel_v4
+#define rl_match_kernel_wide rl_match_kernel_wide_plain
 #else
 #define rl_match_kernel rl_match_kernel_plain
+#define rl_match_kernel_wide rl_match_kernel_wide_plain
 #endif
 
 #endif

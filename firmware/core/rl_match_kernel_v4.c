@@ -62,6 +62,59 @@ __attribute__((target("avx"))) void rl_match_kernel_v8(const float *t, size_t st
     memcpy(sxt, &sx, sizeof sx);
 }
 
+/* Three blocks side by side (columns t .. t + 23) in one walk over the
+ * bins: each bin's count and sum broadcast once for the three; each lane
+ * the same products added in the same order as rl_match_kernel_v8's. */
+__attribute__((target("avx"))) void rl_match_kernel_v8w(const float *t, size_t stride, const float *fn,
+                                                        const float *fs, float *st, float *stt, float *sxt)
+{
+    rl_v8 s0 = {0, 0, 0, 0, 0, 0, 0, 0}, s1 = s0, s2 = s0, ss0 = s0, ss1 = s0, ss2 = s0, sx0 = s0, sx1 = s0,
+          sx2 = s0;
+    int k;
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        const float *tk = t + (size_t)k * stride;
+        rl_v8 t0, t1, t2, nv, sv;
+        if (fn[k] == 0)
+            continue; /* bins outside the image or in light */
+        nv = (rl_v8)_mm256_broadcast_ss(fn + k);
+        sv = (rl_v8)_mm256_broadcast_ss(fs + k);
+        memcpy(&t0, tk, sizeof t0);
+        memcpy(&t1, tk + 8, sizeof t1);
+        memcpy(&t2, tk + 16, sizeof t2);
+        s0 += nv * t0;
+        s1 += nv * t1;
+        s2 += nv * t2;
+        ss0 += nv * t0 * t0;
+        ss1 += nv * t1 * t1;
+        ss2 += nv * t2 * t2;
+        sx0 += sv * t0;
+        sx1 += sv * t1;
+        sx2 += sv * t2;
+    }
+    memcpy(st, &s0, sizeof s0);
+    memcpy(st + 8, &s1, sizeof s1);
+    memcpy(st + 16, &s2, sizeof s2);
+    memcpy(stt, &ss0, sizeof ss0);
+    memcpy(stt + 8, &ss1, sizeof ss1);
+    memcpy(stt + 16, &ss2, sizeof ss2);
+    memcpy(sxt, &sx0, sizeof sx0);
+    memcpy(sxt + 8, &sx1, sizeof sx1);
+    memcpy(sxt + 16, &sx2, sizeof sx2);
+}
+
+void rl_match_kernel_wide_x86(const float *t, size_t stride, const float *fn, const float *fs, float *st,
+                              float *stt, float *sxt)
+{
+    int b;
+    if (__builtin_cpu_supports("avx")) {
+        rl_match_kernel_v8w(t, stride, fn, fs, st, stt, sxt);
+        return;
+    }
+    for (b = 0; b < RL_MATCH_WIDE; b++)
+        rl_match_kernel_v4(t + b * RL_MATCH_BLOCK, stride, fn, fs, st + b * RL_MATCH_BLOCK,
+                           stt + b * RL_MATCH_BLOCK, sxt + b * RL_MATCH_BLOCK);
+}
+
 void rl_match_kernel_x86(const float *t, size_t stride, const float *fn, const float *fs, float *st,
                          float *stt, float *sxt)
 {

@@ -22,14 +22,13 @@ int rl_ray_inside(const rl_image *img, double x0, double y0, double x1, double y
            x1 < img->width - 1 && y0 < img->height - 1 && y1 < img->height - 1;
 }
 
-/* rl_ray_sample's loop; inlined twice, once with light 256, where the
- * compiler drops the four tests a sample (a byte is never 256). */
-static inline int sample_ray(const rl_image *img, const rl_tone *tone, double x, double y, double dx,
-                             double dy, int n, int light, float *out)
+/* rl_ray_sample's loop from sample i0 on; inlined with light 256 too,
+ * where the compiler drops the four tests a sample (a byte is never 256). */
+static inline int sample_from(const rl_image *img, const rl_tone *tone, float fx0, float fy0, float fdx,
+                              float fdy, int i0, int n, int light, float *out)
 {
-    float fx0 = (float)x, fy0 = (float)y, fdx = (float)dx, fdy = (float)dy;
     int i, st = img->stride;
-    for (i = 0; i < n; i++) {
+    for (i = i0; i < n; i++) {
         float px = fx0 + (float)i * fdx, py = fy0 + (float)i * fdy, fx, fy, top, bot;
         int x0 = (int)px, y0 = (int)py; /* px, py >= 0: truncation is floor */
         const uint8_t *p = img->data + (size_t)y0 * (size_t)st + x0;
@@ -45,6 +44,12 @@ static inline int sample_ray(const rl_image *img, const rl_tone *tone, double x,
     return 1;
 }
 
+static inline int sample_ray(const rl_image *img, const rl_tone *tone, double x, double y, double dx,
+                             double dy, int n, int light, float *out)
+{
+    return sample_from(img, tone, (float)x, (float)y, (float)dx, (float)dy, 0, n, light, out);
+}
+
 /* GCC's vector extensions with __builtin_convertvector (GCC 9 on, clang) */
 #if defined(__GNUC__) && (defined(__clang__) || __GNUC__ >= 9) && !defined(RL_NO_VECTOR_EXT)
 #define RAY_VECTORS 1
@@ -55,43 +60,53 @@ static inline int sample_ray(const rl_image *img, const rl_tone *tone, double x,
 typedef float ray_v4 __attribute__((vector_size(16)));
 typedef int ray_i4 __attribute__((vector_size(16)));
 
-/* sample_ray with no light, four samples at a time: the positions and the
- * interpolation in 4-lane vectors, the same operations lane by lane as
- * sample_ray's in turn (the same floats); the pixels and their light
- * fetched one by one. */
-static void sample_ray_v4(const rl_image *img, const rl_tone *tone, double x, double y, double dx,
-                          double dy, int n, float *out)
+/* sample_ray four samples at a time: the positions and the interpolation
+ * in 4-lane vectors, the same operations lane by lane as sample_ray's in
+ * turn (the same floats); the pixels and their light fetched one by one,
+ * the light level tested for the four together (the same answer: 0 when
+ * any sample touches light; out is then left part written). */
+static inline int sample_ray_v4(const rl_image *img, const rl_tone *tone, double x, double y, double dx,
+                                 double dy, int n, int light, float *out)
 {
     float fx0 = (float)x, fy0 = (float)y, fdx = (float)dx, fdy = (float)dy;
     int i, k, st = img->stride;
-    for (i = 0; i + 4 <= n; i += 4) {
-        ray_v4 fi = {(float)i, (float)(i + 1), (float)(i + 2), (float)(i + 3)};
+    /* the samples' indices as floats, counted up by 4 (exact) */
+    ray_v4 fi = {0.0f, 1.0f, 2.0f, 3.0f}, four = {4.0f, 4.0f, 4.0f, 4.0f};
+    ray_i4 vst = {st, st, st, st};
+    int lit = 0; /* a sample touched a pixel at or above light */
+    for (i = 0; i + 4 <= n; i += 4, fi += four) {
         ray_v4 px = fx0 + fi * fdx, py = fy0 + fi * fdy, fx, fy, l00, l01, l10, l11, top, bot, o;
         ray_i4 x0 = __builtin_convertvector(px, ray_i4), y0 = __builtin_convertvector(py, ray_i4);
+        /* each sample's pixel offset in the image (rl_ray_sample: under
+         * 2^31), the four pixels' light gathered into arrays */
+        ray_i4 off = y0 * vst + x0;
+        int offs[4];
+        float a00[4], a01[4], a10[4], a11[4];
+        memcpy(offs, &off, sizeof offs);
         fx = px - __builtin_convertvector(x0, ray_v4);
         fy = py - __builtin_convertvector(y0, ray_v4);
         for (k = 0; k < 4; k++) {
-            const uint8_t *p = img->data + (size_t)y0[k] * (size_t)st + x0[k];
-            l00[k] = tone->light[p[0]];
-            l01[k] = tone->light[p[1]];
-            l10[k] = tone->light[p[st]];
-            l11[k] = tone->light[p[st + 1]];
+            const uint8_t *p = img->data + offs[k];
+            int p00 = p[0], p01 = p[1], p10 = p[st], p11 = p[st + 1];
+            lit |= (p00 >= light) | (p01 >= light) | (p10 >= light) | (p11 >= light);
+            a00[k] = tone->light[p00];
+            a01[k] = tone->light[p01];
+            a10[k] = tone->light[p10];
+            a11[k] = tone->light[p11];
         }
+        if (lit)
+            return 0;
+        memcpy(&l00, a00, sizeof l00);
+        memcpy(&l01, a01, sizeof l01);
+        memcpy(&l10, a10, sizeof l10);
+        memcpy(&l11, a11, sizeof l11);
         top = l00 + fx * (l01 - l00);
         bot = l10 + fx * (l11 - l10);
         o = top + fy * (bot - top);
         memcpy(out + i, &o, sizeof o);
     }
-    for (; i < n; i++) {
-        float px = fx0 + (float)i * fdx, py = fy0 + (float)i * fdy, fx, fy, top, bot;
-        int x0 = (int)px, y0 = (int)py;
-        const uint8_t *p = img->data + (size_t)y0 * (size_t)st + x0;
-        fx = px - (float)x0;
-        fy = py - (float)y0;
-        top = tone->light[p[0]] + fx * (tone->light[p[1]] - tone->light[p[0]]);
-        bot = tone->light[p[st]] + fx * (tone->light[p[st + 1]] - tone->light[p[st]]);
-        out[i] = top + fy * (bot - top);
-    }
+    /* the last samples as sample_ray takes them */
+    return sample_from(img, tone, fx0, fy0, fdx, fdy, i, n, light, out);
 }
 #endif
 
@@ -99,13 +114,12 @@ int rl_ray_sample(const rl_image *img, const rl_tone *tone, double x, double y, 
                   double dy, int n, int light, float *out)
 {
 #ifdef RAY_VECTORS
-    if (light > 255) {
-        sample_ray_v4(img, tone, x, y, dx, dy, n, out);
-        return 1;
-    }
-#else
+    /* the vector path's pixel offsets are ints */
+    if ((double)img->height * img->stride < 2147483647.0)
+        return light > 255 ? sample_ray_v4(img, tone, x, y, dx, dy, n, 256, out)
+                           : sample_ray_v4(img, tone, x, y, dx, dy, n, light, out);
+#endif
     if (light > 255)
         return sample_ray(img, tone, x, y, dx, dy, n, 256, out);
-#endif
     return sample_ray(img, tone, x, y, dx, dy, n, light, out);
 }

@@ -9,6 +9,12 @@ void rl_refine_centre(const rl_image *img, const rl_levels *lv, double *cx, doub
     rl_refine_centre_rows(img, lv, cx, cy, r, 1);
 }
 
+#if defined(__GNUC__) && !defined(RL_NO_VECTOR_EXT)
+/* the four sums of a row in one vector (GCC's vector extension) */
+#define REFINE_VECTORS 1
+typedef double refine_v4 __attribute__((vector_size(32)));
+#endif
+
 /* On x86 also built for AVX2 (rl_clones.h): the same operations on each
  * of the four sums, no fused multiply-add. */
 RL_CLONES_AVX2
@@ -43,6 +49,27 @@ double rl_refine_centre_rows(const rl_image *img, const rl_levels *lv, double *c
         xb = (int)floor(*cx + h);
         if (xa < x0) xa = x0;
         if (xb > x1) xb = x1;
+#ifdef REFINE_VECTORS
+        {
+            /* four sums each, pixel x + k's in lane k: one would make every
+             * add wait on the one before (the plain loop's sums below, the
+             * same adds lane by lane) */
+            refine_v4 w = {0, 0, 0, 0}, xs = w, four = {4, 4, 4, 4};
+            refine_v4 xv = {(double)xa, (double)xa + 1, (double)xa + 2, (double)xa + 3};
+            for (x = xa; x + 3 <= xb; x += 4, xv += four) {
+                refine_v4 a = {weight[row[x]], weight[row[x + 1]], weight[row[x + 2]], weight[row[x + 3]]};
+                w += a;
+                xs += a * xv;
+            }
+            for (; x <= xb; x++) {
+                double a = weight[row[x]];
+                w[0] += a;
+                xs[0] += a * x;
+            }
+            rw = (w[0] + w[1]) + (w[2] + w[3]);
+            rx = (xs[0] + xs[1]) + (xs[2] + xs[3]);
+        }
+#else
         {
             /* four sums each: one would make every add wait on the one before */
             double w0 = 0, w1 = 0, w2 = 0, w3 = 0, x0s = 0, x1s = 0, x2s = 0, x3s = 0;
@@ -65,6 +92,7 @@ double rl_refine_centre_rows(const rl_image *img, const rl_levels *lv, double *c
             rw = (w0 + w1) + (w2 + w3);
             rx = (x0s + x1s) + (x2s + x3s);
         }
+#endif
         sw += rw;
         sx += rx;
         sy += rw * y;
