@@ -10,7 +10,8 @@
  * every landmark that is not clear, of either pass and from the first
  * frame of a stream, is scored with its zone twins (every valid code one
  * zone away) through the other formation (rl_tones_other) at its centre
- * and radius (and 3% either side): one whose twin leads it there by more
+ * and radius (and 3% either side; a small local read's rivals 9%,
+ * RL_TWINS_FAR_ZONES): one whose twin leads it there by more
  * than it leads the twin through the frame's curve is reported
  * unidentified, not as either id (a local read needs a margin more),
  * unless read through any monotone curve (rl_rank, which no formation
