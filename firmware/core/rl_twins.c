@@ -10,30 +10,47 @@
 
 /* Radius scales a landmark and its twins are scored at (the radius was
  * read through one formation and the edge falls elsewhere through the
- * other): 0.97, 1 and 1.03 of it, from one gather at the largest. */
+ * other): the id at 0.97, 1 and 1.03 of it; its rivals there too, or, for
+ * a local read through a curve, at 0.91 .. 1.09 (twin_lead's `far`), from
+ * one gather at the largest. */
 #define SCALE_STEP 0.03
+#define SCALES_NEAR 1 /* each side of the radius read: 0.97 .. 1.03 */
+#define SCALES_FAR 3  /* 0.91 .. 1.09 */
 /* Every other row: the leads compared are differences between templates
  * on the same pixels, and half of a landmark's pixels give the same
  * decisions on every set measured (docs/design.md). */
 #define ROW_STEP 2
 
-/* How far d's id leads its best rival (rivals()) through tone: its best score
- * over the three radii (into *fit) less the rival's. */
+/* How far d's id leads its best rival (rivals()) through tone: its best
+ * score over 0.97 .. 1.03 of its radius (into *fit) less the rival's best
+ * there, or with far over 0.91 .. 1.09. A grey-mixed sheet read through
+ * the 2.2 curve swells its dark zones by about 0.6 of the blur's sigma on
+ * each edge: its outer edge, and with it the radius read, moves out
+ * (3-5% at 15-17 px) and a white band between dark zones narrows by a
+ * zone's width, so its twin with that zone dark is read (the local
+ * pass's 7 wrong ids above the size floor on the development sheets, each
+ * its truth with one white zone read dark). Through the grey levels the
+ * truth fits at its own radius, which the read's 0.97 .. 1.03 left out on
+ * most of them. Only for landmarks under RL_TWINS_FAR_ZONES times the
+ * size floor (rl_twins_check): the shift is the blur's, in pixels, and at
+ * the moving frames' 23-25 px (light mixed, read through the right curve)
+ * 9% let a twin fit through the grey levels on 5 of their 55 cut ones. */
 static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
-                        const int *rv, int n, double *fit)
+                        const int *rv, int n, int far, double *fit)
 {
-    static const double scales[3] = {1.0, 1.0 / (1.0 + SCALE_STEP), (1.0 - SCALE_STEP) / (1.0 + SCALE_STEP)};
-    double own = -1, twin = -1;
+    int reach = far ? SCALES_FAR : SCALES_NEAR, k;
+    double own = -1, twin = -1, top = 1.0 + reach * SCALE_STEP;
     rl_profile wide;
-    int k;
-    rl_profile_gather_rows(img, tone, d->u, d->v, d->radius * (1.0 + SCALE_STEP), ROW_STEP, &wide);
-    for (k = 0; k < 3; k++) {
+    rl_profile_gather_rows(img, tone, d->u, d->v, d->radius * top, ROW_STEP, &wide);
+    for (k = -reach; k <= reach; k++) {
         rl_profile p;
         rl_match m;
-        rl_profile_rescale(&wide, scales[k], &p);
-        rl_match_ids(&rec->templates, &p, &d->id, 1, -1, &m);
-        if (m.id >= 0 && m.score > own)
-            own = m.score;
+        rl_profile_rescale(&wide, (1.0 + k * SCALE_STEP) / top, &p);
+        if (k >= -SCALES_NEAR && k <= SCALES_NEAR) {
+            rl_match_ids(&rec->templates, &p, &d->id, 1, -1, &m);
+            if (m.id >= 0 && m.score > own)
+                own = m.score;
+        }
         /* the rivals at every blur: through the other formation a rival
          * may fit another than the id does */
         rl_match_ids(&rec->templates, &p, rv, n, -1, &m);
@@ -217,6 +234,7 @@ double rl_twins_min_radius(const rl_family *fam)
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res)
 {
     double radii[RL_MAX_LANDMARKS], min_radius = rl_twins_min_radius(&rec->templates.fam);
+    double far_radius = RL_TWINS_FAR_ZONES * min_radius;
     /* read through a curve, not as linear light */
     int curved = rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0;
     int i, kept = 0, rv[RL_MAX_IDS], n, all = res->n_landmarks;
@@ -242,7 +260,10 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
             res->landmarks[kept++] = d;
             continue;
         }
-        lead = twin_lead(rec, img, other, &d, rv, n, &fit);
+        /* a small local read through a curve: its rivals through the
+         * grey levels at the radius they fit (twin_lead) */
+        lead = twin_lead(rec, img, other, &d, rv, n, curved && d.pass == RL_PASS_LOCAL && d.radius < far_radius,
+                         &fit);
         /* a circle far from what was read (an ellipse the local pass read
          * in its own shape, at a wide-angle lens's border) says nothing */
         if (fit < d.score - RL_TWINS_UNFIT) {
@@ -254,7 +275,7 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
         /* through the frame's own curve only where the other's lead
          * alone does not keep it (own: 0, the id's lead where it was read) */
         if (!keeps(&d, tol, lead, 0.0))
-            own = twin_lead(rec, img, rec->tone, &d, rv, n, &fit);
+            own = twin_lead(rec, img, rec->tone, &d, rv, n, 0, &fit);
         /* the formations disagree: the read through any monotone curve
          * decides, where the frame's curve reads the id clearly too
          * (RL_TWINS_RANK_OWN) */
