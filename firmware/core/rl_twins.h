@@ -106,7 +106,9 @@
 #define RL_TWINS_FAR_ZONES 1.5
 
 /* The radius (px) under which a landmark of fam gets no id: its code zone
- * 1 under RL_TWINS_MIN_ZONE_PX (ring4 11.2, ring5 14.2, ring6 17.2 px). */
+ * 1 under RL_TWINS_MIN_ZONE_PX (ring4 11.2, ring5 14.2, ring6 17.2 px).
+ * The global pass holds a slanted landmark's minor semi-axis to it too
+ * (rl_global.c, under_floor). */
 double rl_twins_min_radius(const rl_family *fam);
 
 /* Each landmark of res that is not clear checked against its zone twins
