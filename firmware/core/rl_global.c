@@ -1,15 +1,12 @@
 #include "rl_global.h"
 
-#include <math.h>
 #include <string.h>
 #include "rl_accept.h"
 #include "rl_clr.h"
-#include "rl_ellipse.h"
 #include "rl_inner.h"
 #include "rl_match.h"
 #include "rl_refine.h"
 #include "rl_result.h"
-#include "rl_twins.h"
 
 /* Border landmarks with at most this much missing are identified in the
  * global pass (their outer ring is closed but for a sliver); the rest wait
@@ -39,20 +36,6 @@ static int try_ellipse(const rl_image *img, const rl_tone *tone, const rl_templa
     *p = pe;
     *m = me;
     return 1;
-}
-
-/* Whether d, read as a circle or as c's ellipse, is under the size floor
- * (rl_twins_min_radius) along its narrowest extent: the ellipse's minor
- * semi-axis, its area's radius (d's) times the root of its aspect. The
- * floor is on code zone 1's width, and a landmark seen at a slant has it
- * narrowest along the minor axis, where the circle's radius read (or the
- * ellipse's, its area's) says it is wider: a whole 1 of a 15 px grey-mixed
- * sheet at aspect 0.88 read as its twin 17, its radius read 14.30 px over
- * the 14.2 px floor, its minor semi-axis 12.8 px (zone 1 1.08 px there,
- * under the 1.14 px every wrong read under the floor had; docs/results.md). */
-static int under_floor(const rl_recog *rec, const rl_clr *c, const rl_detection *d)
-{
-    return d->radius * sqrt(rl_ellipse_aspect(&c->shape)) < rl_twins_min_radius(&rec->templates.fam);
 }
 
 /* The circle (then the ellipse) at d's place through tone: d's radius and
@@ -96,7 +79,7 @@ void rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, c
     /* as a circle first; an ellipse only when the circle is not taken */
     if (identify_through(rec, img, tone, c, &local,
                          rl_result_light_gap(res, &c->box) <= rec->cfg.near_light * d->radius, d, &m) &&
-        !rl_inner_enclosed(img, frame->light, d->u, d->v, d->radius, 0.0) && !under_floor(rec, c, d)) {
+        !rl_inner_enclosed(img, frame->light, d->u, d->v, d->radius, 0.0)) {
         d->id = m.id;
         if (rec->cfg.band_radius && d->complete && rl_shape_is_circle(&c->shape))
             rl_refine_radius_band(img, tone, &rec->cfg.family, d->id, d->u, d->v, &d->radius);
