@@ -283,10 +283,13 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
             res->landmarks[kept++] = d;
             continue;
         }
-        /* over the floor by its radius, under it along its minor axis:
-         * zone 1 is too narrow there for the formations to disagree at
-         * all (as on a cut landmark, RL_TWINS_CUT_TOLERANCE) */
-        if (d.radius < far_radius && minor_radius(rec, img, res->levels.light, &d) < min_radius)
+        /* over the floor by its radius, under it along its minor axis, in
+         * a frame read through a curve: zone 1 is too narrow there for
+         * the formations to disagree at all (as on a cut landmark,
+         * RL_TWINS_CUT_TOLERANCE; read as linear, right reads let the 2.2
+         * curve's twin lead by up to 0.006: tolerance 0 there cost 15-25
+         * right reads a line at 15-16 px, docs/results.md) */
+        if (curved && d.radius < far_radius && minor_radius(rec, img, res->levels.light, &d) < min_radius)
             tol = RL_TWINS_CUT_TOLERANCE;
         /* a small local read through a curve: its rivals through the
          * grey levels at the radius they fit (twin_lead) */
