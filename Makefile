@@ -156,6 +156,18 @@ bench: host
 	    --write-camera $(BENCH_DIR)/drive/camera.yaml --write-robot $(BENCH_DIR)/drive/robot.yaml && \
 	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/drive --path rect --frames 8 --rock 0.03 --mount 0.12,-0.03,0.02 && \
 	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/drive --path circle --frames 8 --rock 0.03 --mount 0.12,-0.03,0.02; }
+	@# the demo's drive (tools/demo.sh: 15/20/20 frames a path, its mount and rocking), which a
+	@# robot's speeds can track; `drive` above (8 frames a path) moves 0.34-0.75 m a frame
+	@[ -f $(BENCH_DIR)/demodrive/circle_019.png ] || { mkdir -p $(BENCH_DIR)/demodrive && \
+	  $(BUILD)/tools/ringloc-render --write-map $(BENCH_DIR)/demodrive/map.yaml \
+	    --write-camera $(BENCH_DIR)/demodrive/camera.yaml --write-robot $(BENCH_DIR)/demodrive/robot.yaml \
+	    --mount 0.12,-0.03,0.02,0.02,-0.015 && \
+	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/demodrive --path straight --frames 15 --rock 0.01 \
+	    --mount 0.12,-0.03,0.02,0.02,-0.015 && \
+	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/demodrive --path rect --frames 20 --rock 0.01 \
+	    --mount 0.12,-0.03,0.02,0.02,-0.015 && \
+	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/demodrive --path circle --frames 20 --rock 0.01 \
+	    --mount 0.12,-0.03,0.02,0.02,-0.015; }
 	@[ -f $(BENCH_DIR)/site/random_099.png ] || { mkdir -p $(BENCH_DIR)/site && \
 	  $(BUILD)/tools/ringloc-render --write-camera $(BENCH_DIR)/site/camera.yaml \
 	    --write-robot $(BENCH_DIR)/site/robot.yaml --mount 0.12,-0.03,0.02 && \
@@ -175,7 +187,7 @@ bench: host
 	$(BUILD)/tools/ringloc-bench $(BENCH_DIR)/640x480 $(BENCH_DIR)/1280x960 $(BENCH_DIR)/moving \
 	  --local $(BENCH_DIR)/glare \
 	  --pose $(BENCH_DIR)/drive --site $(BENCH_DIR)/site \
-	  --track $(BENCH_DIR)/drive: --track $(BENCH_DIR)/track:rect_ --track $(BENCH_DIR)/track:circle_ \
+	  --track $(BENCH_DIR)/demodrive: --track $(BENCH_DIR)/drive: --track $(BENCH_DIR)/track:rect_ --track $(BENCH_DIR)/track:circle_ \
 	  --track $(BENCH_DIR)/site:corner_
 	@[ -f $(BENCH_DIR)/survey/detect.jsonl ] || \
 	  $(BUILD)/tools/ringloc-survey-synth --camera $(BENCH_DIR)/drive/camera.yaml --out $(BENCH_DIR)/survey

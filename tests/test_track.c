@@ -21,7 +21,12 @@
  *                      the middle of an empty stretch of ceiling, nothing,
  *                      and *away set (the costly reads about the
  *                      prediction skipped): 90% of the first, all of the
- *                      second
+ *                      second; next to the border (rl_verify_read_border,
+ *                      landmarks at least 0.6 in view, centre under 1.1
+ *                      radii from it): from 0.2 radii off, 75% read, those
+ *                      centred within 1 px; another id never, nothing from
+ *                      2.2 radii along the border, nothing from the edge
+ *                      of a landmark clear of the border
  *   test_track         the decisions: a full frame every full_every-th, none
  *                      tracked without a pose or after max_age, a pose
  *                      that jumps sends the frame back to be read in full
@@ -179,6 +184,8 @@ static void verify_landmark(const rl_recog *rec, const rl_image *img, const rl_r
     }
     c->near_away += away;
     c->wrong += rl_verify_read(rec, img, res, other, l->u + 0.3 * r, l->v, r, &d, &away);
+    /* 2 radii and more from the border: no read from its edge */
+    c->false_read += rl_verify_read_border(rec, img, res, l->id, l->u, l->v, r, &d);
     /* 2.2 radii off, on the side farthest from the others */
     for (k = 0; k < 8; k++) {
         double u = l->u + 2.2 * r * cos(k * M_PI / 4), v = l->v + 2.2 * r * sin(k * M_PI / 4), o;
@@ -209,6 +216,41 @@ static void verify_landmark(const rl_recog *rec, const rl_image *img, const rl_r
     }
 }
 
+/* A landmark next to the border (its centre under 1.1 radii from it, at
+ * least 0.6 in view), verified from its outer edge's visible part
+ * (rl_verify_read_border) from 0.2 radii off (its reach: from 0.3 it
+ * read 3 of 22); with another id; and at
+ * 2.2 radii along the border from it (nothing within 3 radii there). */
+
+
+
+#define VIS_MIN 0.9
+static void verify_at_border(const rl_recog *rec, const rl_image *img, const rl_result *res, const truth *t,
+                             int j, double r, verify_counts *c)
+{
+    const truth_landmark *l = &t->lm[j];
+    double room = fmin(fmin(l->u, l->v), fmin(img->width - 1 - l->u, img->height - 1 - l->v));
+    int other = l->id % rl_family_count(&rec->templates.fam) + 1, side = room == l->u || room == img->width - 1 - l->u;
+    int s;
+    rl_detection d;
+    if (room >= 1.1 * l->radius || l->visible < 0.6 || nearest_other(t, j, l->u, l->v) < 4 * l->radius)
+        return;
+    c->tried++;
+    if (rl_verify_read_border(rec, img, res, l->id, l->u + (side ? 0 : 0.2 * r), l->v + (side ? 0.2 * r : 0), r,
+                              &d)) {
+        c->read++;
+        c->centred += hypot(d.u - l->u, d.v - l->v) <= 1.0;
+    }
+    c->wrong += rl_verify_read_border(rec, img, res, other, l->u, l->v, r, &d);
+    for (s = -1; s <= 1; s += 2) { /* along the border */
+        double u = l->u + (side ? 0 : s * 2.2 * r), v = l->v + (side ? s * 2.2 * r : 0);
+        if (u < 0 || v < 0 || u > img->width - 1 || v > img->height - 1 || nearest_other(t, j, u, v) < 3 * r)
+            continue;
+        c->empty++;
+        c->false_read += rl_verify_read_border(rec, img, res, l->id, u, v, r, &d);
+    }
+}
+
 static void verification(void **state)
 {
     static rl_result res;
@@ -216,7 +258,7 @@ static void verification(void **state)
     rl_track trk;
     rl_track_config tc;
     rl_pose p;
-    verify_counts c;
+    verify_counts c, cb;
     char err[768], path[1200];
     int k, j;
     (void)state;
@@ -225,6 +267,7 @@ static void verification(void **state)
     if (rl_site_prepare(&site, &cfg, err, sizeof err) != RL_OK)
         fail_msg("%s", err);
     memset(&c, 0, sizeof c);
+    memset(&cb, 0, sizeof cb);
     rl_track_defaults(&tc);
     for (k = 0; k < 144; k += 6) {
         truth t;
@@ -250,6 +293,8 @@ static void verification(void **state)
                 l->u < img.width - 2 * l->radius && l->v < img.height - 2 * l->radius &&
                 nearest_other(&t, j, l->u, l->v) >= 4 * l->radius)
                 verify_landmark(site.recog.rec, &img, &res, &t, j, w->radius, &c);
+            else if (w != NULL)
+                verify_at_border(site.recog.rec, &img, &res, &t, j, w->radius, &cb);
         }
         free(img.data);
     }
@@ -268,6 +313,15 @@ static void verification(void **state)
     /* *away is a hint (rl_verify.h): the sanitizer build's arithmetic
      * says it on 27 of 32 empty places, the release build's on all */
     assert_true(c.empty_away >= 0.8 * c.empty);
+    printf("at the border: verified %d of %d from 0.2 radii off (%d centred within 1 px), %d with another id, "
+           "%d read of %d places 2.2 radii along the border\n",
+           cb.read, cb.tried, cb.centred, cb.wrong, cb.false_read, cb.empty);
+    assert_true(cb.tried >= 10);
+    assert_true(cb.read >= 0.75 * cb.tried);
+    assert_true(cb.centred >= 0.95 * cb.read);
+    assert_int_equal(cb.wrong, 0);
+    assert_int_equal(cb.false_read, 0);
+    assert_true(cb.empty >= 10);
 }
 
 /* The decisions, by hand: frames 0.1 s apart on a robot standing still

@@ -238,6 +238,14 @@ static int verifies(const rl_track_window *w, double shift, const rl_detection *
     return d->id == w->id && hypot(d->u - w->u, d->v - w->v) <= shift * w->radius;
 }
 
+/* A landmark the border cuts, as predicted (less than CUT_VISIBLE of it
+ * in view: a whole one is read whatever the prediction's error), that is
+ * not verified is read as the local pass reads one (some ten times a
+ * verification's cost) only while fewer than CUT_READS were read: the
+ * pose has enough without it, and the next full frame reads it. */
+#define CUT_READS 3
+#define CUT_VISIBLE 0.97
+
 /* 1 when the window of w reads its predicted id near the prediction
  * (within `shift` radii; the read into *d): first verified there
  * (rl_verify); when that is not clear and `full` is 1, as the global pass
@@ -255,6 +263,13 @@ static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, co
         return 1;
     if (!full)
         return 0;
+    /* next to the border and about whole: verified from the outer edge's
+     * visible part before the costly reads (one more cut: those read as
+     * before, as a read of one cut deeper would move the frame's shift
+     * and so which landmarks are about whole) */
+    if (w->visible >= CUT_VISIBLE &&
+        rl_verify_read_border(rec, img, res, w->id, w->u, w->v, w->radius, d) && verifies(w, shift, d))
+        return 1;
     window_candidate(w, img->width, img->height, &u);
     if (u.complete && (read_box(rec, img, res, &u, d) == w->id ||
                        (hypot(d->u - u.u, d->v - u.v) > BOX_RETRY_PX && read_box(rec, img, res, d, d) == w->id)) &&
@@ -296,14 +311,6 @@ static void shift_apply(const frame_shift *f, rl_track_window *w)
     w->u += (f->du + a * f->y) / f->n - a * y;
     w->v += (f->dv - a * f->x) / f->n + a * x;
 }
-
-/* A landmark the border cuts, as predicted (less than CUT_VISIBLE of it
- * in view: a whole one is read whatever the prediction's error), that is
- * not verified is read as the local pass reads one (some ten times a
- * verification's cost) only while fewer than CUT_READS were read: the
- * pose has enough without it, and the next full frame reads it. */
-#define CUT_READS 3
-#define CUT_VISIBLE 0.97
 
 /* The windows read, whole ones first: the first within max_first_shift
  * radii of its prediction; each next one where the reads so far put it

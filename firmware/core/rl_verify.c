@@ -4,6 +4,7 @@
 #include <math.h>
 #include <string.h>
 #include "rl_accept.h"
+#include "rl_edge.h"
 #include "rl_geom.h"
 #include "rl_inner.h"
 #include "rl_match.h"
@@ -88,6 +89,30 @@ static int settle_centre(const rl_image *img, const rl_levels *local, double r, 
     return 0;
 }
 
+/* Next to the border (the centre step's disk would leave the frame within
+ * EDGE_NEAR radii of the prediction) the centre is the circle through the
+ * outer edge's visible part (rl_edge_fit_rays, the local pass's fit: rays
+ * that leave the frame give no point), fitted twice (the second from the
+ * first's centre), taken when its radius is within EDGE_RADIUS of the
+ * predicted one and it is within CENTRE_REACH radii of the prediction. */
+#define EDGE_NEAR 1.2
+#define EDGE_FITS 2
+#define EDGE_RADIUS 0.1
+
+static int edge_centre(const rl_image *img, const rl_tone *tone, int light, double r, double *cx, double *cy)
+{
+    double u = *cx, v = *cy, fr = r;
+    int k;
+    for (k = 0; k < EDGE_FITS; k++)
+        if (!rl_edge_fit_rays(img, tone, light, &u, &v, &fr) || !(fabs(fr - r) <= EDGE_RADIUS * r))
+            return 0;
+    if (!(hypot(u - *cx, v - *cy) <= CENTRE_REACH * r))
+        return 0;
+    *cx = u;
+    *cy = v;
+    return 1;
+}
+
 /* The profile is gathered once, RADIUS_WIDEST times the predicted radius
  * r, and read as gathered at smaller radii (rl_profile_rescale): at r
  * first; when that is not clear, at the one of RADIUS_SCALES radii a few
@@ -135,15 +160,49 @@ static int judged(const rl_recog *rec, const rl_accept_rule *rule, const rl_leve
     return m->id == id && rl_accept(rule, m, rl_accept_span(local, rec->tone, &q));
 }
 
-int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
-                   double v, double r, rl_detection *d, int *away)
+/* The read at d's centre (settled): the profile gathered there, judged
+ * as id (judged, best_scale; local: the levels at the prediction), not a
+ * code ring; into *d. */
+static int read_at(const rl_recog *rec, const rl_image *img, const rl_result *res, const rl_levels *local,
+                   int id, double r, rl_detection *d)
 {
     rl_accept_rule rule;
-    rl_levels local;
     rl_profile wide;
     rl_match m;
     double s = 1.0 / RADIUS_WIDEST;
     int taken;
+    d->box.x0 = (int)floor(d->u - r);
+    d->box.y0 = (int)floor(d->v - r);
+    d->box.x1 = (int)ceil(d->u + r);
+    d->box.y1 = (int)ceil(d->v + r);
+    rule = rl_accept_rule_at(&rec->cfg, RL_PASS_GLOBAL,
+                             rl_result_light_gap(res, &d->box) <= rec->cfg.near_light * r);
+    rl_profile_gather_rows(img, rec->tone, d->u, d->v, RADIUS_WIDEST * r, GATHER_ROWS, &wide);
+    taken = judged(rec, &rule, local, &wide, s, id, &m);
+    if (!taken) {
+        double bs = best_scale(&rec->templates, &wide, id);
+        if (bs != s)
+            taken = judged(rec, &rule, local, &wide, s = bs, id, &m);
+    }
+    d->radius = RADIUS_WIDEST * r * s;
+    d->best_id = m.id;
+    d->score = m.score;
+    d->runner_up = m.second;
+    /* not a code ring of a larger landmark read as its own (as the global
+     * pass drops one) */
+    if (!taken || rl_inner_enclosed(img, res->levels.light, d->u, d->v, d->radius, 0.0))
+        return 0;
+    d->id = id;
+    d->pass = RL_PASS_GLOBAL;
+    d->complete = rl_geom_disk_complete(img->width, img->height, d->u, d->v, d->radius);
+    d->visible = rl_geom_visible_in(img->width, img->height, d->u, d->v, d->radius);
+    return 1;
+}
+
+int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
+                   double v, double r, rl_detection *d, int *away)
+{
+    rl_levels local;
     int far = 0;
     memset(d, 0, sizeof *d);
     d->id = d->best_id = -1;
@@ -159,30 +218,20 @@ int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *re
             *away = far;
         return 0;
     }
-    d->box.x0 = (int)floor(d->u - r);
-    d->box.y0 = (int)floor(d->v - r);
-    d->box.x1 = (int)ceil(d->u + r);
-    d->box.y1 = (int)ceil(d->v + r);
-    rule = rl_accept_rule_at(&rec->cfg, RL_PASS_GLOBAL,
-                             rl_result_light_gap(res, &d->box) <= rec->cfg.near_light * r);
-    rl_profile_gather_rows(img, rec->tone, d->u, d->v, RADIUS_WIDEST * r, GATHER_ROWS, &wide);
-    taken = judged(rec, &rule, &local, &wide, s, id, &m);
-    if (!taken) {
-        double bs = best_scale(&rec->templates, &wide, id);
-        if (bs != s)
-            taken = judged(rec, &rule, &local, &wide, s = bs, id, &m);
-    }
-    d->radius = RADIUS_WIDEST * r * s;
-    d->best_id = m.id;
-    d->score = m.score;
-    d->runner_up = m.second;
-    /* not a code ring of a larger landmark read as its own (as the global
-     * pass drops one) */
-    if (!taken || rl_inner_enclosed(img, res->levels.light, d->u, d->v, d->radius, 0.0))
+    return read_at(rec, img, res, &local, id, r, d);
+}
+
+int rl_verify_read_border(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
+                          double v, double r, rl_detection *d)
+{
+    rl_levels local;
+    memset(d, 0, sizeof *d);
+    d->id = d->best_id = -1;
+    d->u = u;
+    d->v = v;
+    if (!(r > 0) || room_at(img, u, v) >= EDGE_NEAR * r ||
+        !edge_centre(img, rec->tone, res->levels.light, r, &d->u, &d->v))
         return 0;
-    d->id = id;
-    d->pass = RL_PASS_GLOBAL;
-    d->complete = rl_geom_disk_complete(img->width, img->height, d->u, d->v, d->radius);
-    d->visible = rl_geom_visible_in(img->width, img->height, d->u, d->v, d->radius);
-    return 1;
+    rl_accept_levels_at(&rec->illum, &res->levels, u, v, &local);
+    return read_at(rec, img, res, &local, id, r, d);
 }

@@ -46,4 +46,15 @@
 int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
                    double v, double r, rl_detection *d, int *away);
 
+/* The same read of a landmark next to the border (the centre step's disk
+ * would leave the frame: rl_verify_read gives no read there), its centre
+ * the circle through its outer edge's visible part (rl_edge_fit_rays, from
+ * the prediction, fitted twice, its radius within 10% of r, within 1.5
+ * radii of the prediction); then gathered, judged and checked as
+ * rl_verify_read's. 0 at once for a prediction clear of the border (1.2
+ * radii of room). The caller uses it for a window the costly reads would
+ * otherwise take (rl_track). */
+int rl_verify_read_border(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
+                          double v, double r, rl_detection *d);
+
 #endif
