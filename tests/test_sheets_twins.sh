@@ -31,6 +31,12 @@
 #   zones (zone 3 read dark) and its outer edge, and through the grey levels
 #   the twin 25 fitted at a radius the check did not try (a local read's
 #   rivals through the grey levels are now scored at 0.91 .. 1.09 of it);
+# - seed 1, 3 rounds, 15 px: a whole 1 at aspect 0.88 (clutter_only_005,
+#   the second round) read as 17 by the global pass at 2.2, its
+#   radius read 14.30 px, over the size floor, its minor semi-axis 12.8 px
+#   (code zone 1 1.08 px there), its twin 0.0048 ahead through the grey
+#   levels, inside the 0.006 a global read may leave (a landmark under
+#   the floor along its minor axis now may leave none, rl_twins.c);
 # - seed 1, 3 rounds, 12 px (code zone 1 a pixel wide): two wrong ids at
 #   2.2, two at auto, one at 1 (zone twins read with full confidence, the
 #   formations agreeing); no id under RL_TWINS_MIN_ZONE_PX now, so none

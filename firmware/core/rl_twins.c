@@ -2,6 +2,8 @@
 
 #include <math.h>
 
+#include "rl_edge.h"
+#include "rl_ellipse.h"
 #include "rl_match.h"
 #include "rl_median.h"
 #include "rl_profile.h"
@@ -187,6 +189,27 @@ static double tolerance(const rl_detection *d, int curved)
     return d->pass == RL_PASS_LOCAL ? RL_TWINS_LOCAL_TOLERANCE : RL_TWINS_TOLERANCE;
 }
 
+/* d's minor semi-axis: the ellipse fitted to its outer edge (radius of
+ * its area times the root of its aspect); its radius where none fits or
+ * the border cuts it. Code zone 1 is narrowest along a slanted
+ * landmark's minor axis: a whole 1 of a 15 px grey-mixed sheet at aspect
+ * 0.88, its radius read 14.30 px over the size floor, its minor
+ * semi-axis 12.8 px (zone 1 1.08 px there, where every wrong read under
+ * the floor had 1.14 px or less), was read as its twin 17, the twin
+ * 0.0048 ahead through the grey levels (docs/results.md). */
+static double minor_radius(const rl_recog *rec, const rl_image *img, int light, const rl_detection *d)
+{
+    double ex[RL_EDGE_RAYS], ey[RL_EDGE_RAYS];
+    rl_ellipse e;
+    int n;
+    if (!d->complete)
+        return d->radius;
+    n = rl_edge_points(img, rec->tone, light, d->u, d->v, d->radius, ex, ey);
+    if (!rl_ellipse_fit(ex, ey, n, d->u, d->v, d->radius, &e))
+        return d->radius;
+    return e.r * sqrt(rl_ellipse_aspect(&e.shape));
+}
+
 /* Whether d keeps its id, from its lead over its best rival through
  * the other formation (other) and through the frame's curve (own): while
  * the twin leads by less than tol through the other (none at all: tol 0),
@@ -260,6 +283,14 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
             res->landmarks[kept++] = d;
             continue;
         }
+        /* over the floor by its radius, under it along its minor axis, in
+         * a frame read through a curve: zone 1 is too narrow there for
+         * the formations to disagree at all (as on a cut landmark,
+         * RL_TWINS_CUT_TOLERANCE; read as linear, right reads let the 2.2
+         * curve's twin lead by up to 0.006: tolerance 0 there cost 15-25
+         * right reads a line at 15-16 px, docs/results.md) */
+        if (curved && d.radius < far_radius && minor_radius(rec, img, res->levels.light, &d) < min_radius)
+            tol = RL_TWINS_CUT_TOLERANCE;
         /* a small local read through a curve: its rivals through the
          * grey levels at the radius they fit (twin_lead) */
         lead = twin_lead(rec, img, other, &d, rv, n, curved && d.pass == RL_PASS_LOCAL && d.radius < far_radius,

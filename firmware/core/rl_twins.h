@@ -106,7 +106,12 @@
 #define RL_TWINS_FAR_ZONES 1.5
 
 /* The radius (px) under which a landmark of fam gets no id: its code zone
- * 1 under RL_TWINS_MIN_ZONE_PX (ring4 11.2, ring5 14.2, ring6 17.2 px). */
+ * 1 under RL_TWINS_MIN_ZONE_PX (ring4 11.2, ring5 14.2, ring6 17.2 px).
+ * A landmark over it by its radius read but under it along its minor
+ * axis (a slanted one: the ellipse fitted to its outer edge), in a frame
+ * read through a curve, keeps its id only while no twin leads it at all
+ * through the other formation (RL_TWINS_CUT_TOLERANCE), or by the rank
+ * read. */
 double rl_twins_min_radius(const rl_family *fam);
 
 /* Each landmark of res that is not clear checked against its zone twins
