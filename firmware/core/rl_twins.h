@@ -10,8 +10,8 @@
  * every landmark that is not clear, of either pass and from the first
  * frame of a stream, is scored with its zone twins (every valid code one
  * zone away) through the other formation (rl_tones_other) at its centre
- * and radius (and 3% either side; a small local read's rivals 9%,
- * RL_TWINS_FAR_ZONES): one whose twin leads it there by more
+ * and radius (and 3% either side; a small local read's rivals in a frame
+ * read through a curve 9%, RL_TWINS_FAR_ZONE_PX): one whose twin leads it there by more
  * than it leads the twin through the frame's curve is reported
  * unidentified, not as either id (a local read needs a margin more),
  * unless read through any monotone curve (rl_rank, which no formation
@@ -94,8 +94,9 @@
  * (docs/results.md). */
 #define RL_TWINS_MIN_ZONE_PX 1.2
 
-/* A local read through a curve of a landmark under this many times the
- * size floor (ring5: 21.3 px, code zone 1 under 1.8 px) meets its rivals
+/* A local read through a curve of a landmark whose code zone 1 is under
+ * this many px (1.5 times the size floor's; ring5: a radius under 21.3 px)
+ * meets its rivals
  * through the other formation at 0.91 .. 1.09 of its radius, not 0.97 ..
  * 1.03: a grey-mixed sheet read through the 2.2 curve swells its dark
  * zones and its outer edge by about 0.6 of the blur's sigma, and a white
@@ -103,7 +104,7 @@
  * pass's wrong ids above the floor (docs/results.md); on larger ones the
  * swell is a smaller share of a zone, and at the moving frames' 23-25 px
  * the range let a twin fit 5 of 55 right cut reads. */
-#define RL_TWINS_FAR_ZONES 1.5
+#define RL_TWINS_FAR_ZONE_PX 1.8
 
 /* The radius (px) under which a landmark of fam gets no id: its code zone
  * 1 under RL_TWINS_MIN_ZONE_PX (ring4 11.2, ring5 14.2, ring6 17.2 px).
