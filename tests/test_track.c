@@ -220,11 +220,8 @@ static void verify_landmark(const rl_recog *rec, const rl_image *img, const rl_r
  * least 0.6 in view), verified from its outer edge's visible part
  * (rl_verify_read_border) from 0.2 radii off (its reach: from 0.3 it
  * read 3 of 22); with another id; and at
- * 2.2 radii along the border from it (nothing within 3 radii there). */
-
-
-
-#define VIS_MIN 0.9
+ * 2.2 radii along the border from it (nothing within 3 radii there).
+ * Zone twins predicted there: test_verify_twins. */
 static void verify_at_border(const rl_recog *rec, const rl_image *img, const rl_result *res, const truth *t,
                              int j, double r, verify_counts *c)
 {

@@ -263,10 +263,10 @@ static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, co
         return 1;
     if (!full)
         return 0;
-    /* next to the border and about whole: verified from the outer edge's
-     * visible part before the costly reads (one more cut: those read as
-     * before, as a read of one cut deeper would move the frame's shift
-     * and so which landmarks are about whole) */
+    /* next to the border and about whole (CUT_VISIBLE): verified from the
+     * outer edge's visible part before the costly reads; a landmark cut
+     * deeper is not read this way (among the first reads it moved the
+     * frame's shift: docs/tracking.md) */
     if (w->visible >= CUT_VISIBLE &&
         rl_verify_read_border(rec, img, res, w->id, w->u, w->v, w->radius, d) && verifies(w, shift, d))
         return 1;
