@@ -239,8 +239,9 @@ static int verifies(const rl_track_window *w, double shift, const rl_detection *
 }
 
 /* A landmark the border cuts, as predicted (less than CUT_VISIBLE of it
- * in view: a whole one is read whatever the prediction's error), that is
- * not verified is read as the local pass reads one (some ten times a
+ * in view: a whole one is read whatever the prediction's error; CUT_VISIBLE
+ * and more may also be verified from its edge, rl_verify_read_border), that
+ * is not verified is read as the local pass reads one (some ten times a
  * verification's cost) only while fewer than CUT_READS were read: the
  * pose has enough without it, and the next full frame reads it. */
 #define CUT_READS 3

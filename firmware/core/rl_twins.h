@@ -112,7 +112,9 @@
  * axis (a slanted one: the ellipse fitted to its outer edge), in a frame
  * read through a curve, keeps its id only while no twin leads it at all
  * through the other formation (RL_TWINS_CUT_TOLERANCE), or by the rank
- * read. */
+ * read; only under RL_TWINS_FAR_ZONE_PX's radius (ring5 21.3 px), and only
+ * for reads not already clear (a whole global read leading every id by
+ * RL_TWINS_CLEAR is kept as before). */
 double rl_twins_min_radius(const rl_family *fam);
 
 /* Each landmark of res that is not clear checked against its zone twins

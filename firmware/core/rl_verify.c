@@ -146,23 +146,41 @@ static double best_of(const rl_templates *tt, const rl_profile *wide, int id, do
 }
 
 /* A taken id that leads every other id at its scale by less than this is
- * held against its zone twins at every scale (twin_fits_better). */
+ * held against its zone twins at every scale (twin_fits_as_well). */
 #define TWIN_CLEAR 0.1
 
 /* Whether a code one zone from id (a zone twin) matches the profile at
  * its own best radius as well as id at id's: only the predicted id is
  * judged at the predicted radius, and a twin whose zone edge the blur or
  * the radius moved can lead there (a whole 2 of a degraded frame verified
- * as 18, 0.883 against 0.813, where a full frame reads 2). */
-static int twin_fits_better(const rl_recog *rec, const rl_profile *wide, int id)
+ * as 18, 0.883 against 0.813, where a full frame reads 2). The profile is
+ * rescaled once a radius, each code's own columns scored there. */
+static int twin_fits_as_well(const rl_recog *rec, const rl_profile *wide, int id)
 {
-    double at, own = best_of(&rec->templates, wide, id, &at);
-    int z;
-    for (z = 0; z < rec->templates.fam.bits; z++) {
-        int twin = id ^ (1 << z);
-        if (rl_family_valid(&rec->templates.fam, twin) && best_of(&rec->templates, wide, twin, &at) >= own)
-            return 1;
+    int codes[RL_MAX_BITS + 1], n = 0, z, k, i;
+    double best[RL_MAX_BITS + 1];
+    codes[n++] = id;
+    for (z = 0; z < rec->templates.fam.bits; z++)
+        if (rl_family_valid(&rec->templates.fam, id ^ (1 << z)))
+            codes[n++] = id ^ (1 << z);
+    for (i = 0; i < n; i++)
+        best[i] = -2;
+    for (k = 0; k < RADIUS_SCALES; k++) {
+        double s = (1.0 - (k - RADIUS_SCALES / 2) * RADIUS_STEP) / RADIUS_WIDEST;
+        rl_profile q;
+        if (s > 1.0)
+            continue;
+        rl_profile_rescale(wide, s, &q);
+        for (i = 0; i < n; i++) {
+            rl_match m;
+            rl_match_ids(&rec->templates, &q, &codes[i], 1, -1, &m);
+            if (m.id >= 0 && m.score > best[i])
+                best[i] = m.score;
+        }
     }
+    for (i = 1; i < n; i++)
+        if (best[i] >= best[0])
+            return 1;
     return 0;
 }
 
@@ -185,7 +203,7 @@ static int judged(const rl_recog *rec, const rl_accept_rule *rule, const rl_leve
 }
 
 /* The read at d's centre (settled): the profile gathered there, judged
- * as id (judged, best_scale; local: the levels at the prediction), not a
+ * as id (judged, best_of; local: the levels at the prediction), not a
  * code ring; into *d. */
 static int read_at(const rl_recog *rec, const rl_image *img, const rl_result *res, const rl_levels *local,
                    int id, double r, rl_detection *d)
@@ -209,7 +227,7 @@ static int read_at(const rl_recog *rec, const rl_image *img, const rl_result *re
         if (bs != s)
             taken = judged(rec, &rule, local, &wide, s = bs, id, &m);
     }
-    if (taken && m.score - m.second < TWIN_CLEAR && twin_fits_better(rec, &wide, id))
+    if (taken && m.score - m.second < TWIN_CLEAR && twin_fits_as_well(rec, &wide, id))
         taken = 0;
     d->radius = RADIUS_WIDEST * r * s;
     d->best_id = m.id;

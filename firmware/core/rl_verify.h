@@ -34,7 +34,8 @@
 /* 1 when the landmark of `id` predicted at (u, v) with radius r (px) is
  * read there: into *d (centre refined, the radius within a few percent of
  * r). 0 when the read is not clear (cut by the border, not found near the
- * prediction, another id or a runner-up too close, a code ring): read the
+ * prediction, another id or a runner-up too close, a zone twin that fits
+ * as well at its own best radius, a code ring): read the
  * window in full. res: the frame's levels (the last full frame's).
  * *away (when not NULL) is 1 when the read failed because the centre,
  * drawn to the ink, left the prediction by more than 1.5 radii, or there
