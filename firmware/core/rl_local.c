@@ -171,10 +171,13 @@ static int in_frame(int W, int H, double x, double y)
 
 /* Not as a circle: as the ellipse its edge may be (the cut rule with the
  * ellipse's own template); 1 when taken, into *rd. An ellipse whose centre
- * lies outside the frame was fitted to less than half its edge: taken only
- * when it names the circle's id (rd's), as the reads across the motion
- * must (a cut 7 of a 15 px grey-mixed sheet, its circle reading 23, read
- * as 15 from an ellipse 2.9 px out of the frame and 14% too large). */
+ * lies outside the frame was fitted to less than half its edge: where it
+ * names another id than the circle's (rd's), the landmark's id depends on
+ * the read, and it gets none (-1: no later read either). A cut 7 of a
+ * 15 px grey-mixed sheet, its circle reading 23, read as 15 from an
+ * ellipse 2.9 px out of the frame and 14% too large; a cut 1 whose
+ * ellipse out of the frame read 1 and its circle 17, where refusing only
+ * the ellipse let a later read take 17. */
 static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_result *res,
                         const rl_accept_rule *rule, local_read *rd)
 {
@@ -191,9 +194,10 @@ static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_resul
     later = me.second >= 0;
     if (me.id >= 0 && !later && me.score >= rule->min_score)
         ellipse_twins(&rec->templates, img, rec->tone, &e, &me);
-    if (!local_accept(rule, &me, rec->width, rec->height, e.cx, e.cy, e.r, span) ||
-        (!in_frame(rec->width, rec->height, e.cx, e.cy) && me.id != rd->m.id))
+    if (!local_accept(rule, &me, rec->width, rec->height, e.cx, e.cy, e.r, span))
         return 0;
+    if (!in_frame(rec->width, rec->height, e.cx, e.cy) && me.id != rd->m.id)
+        return -1;
     if (me.id >= 0 && later) {
         ellipse_twins(&rec->templates, img, rec->tone, &e, &me);
         if (!local_accept(rule, &me, rec->width, rec->height, e.cx, e.cy, e.r, span))
@@ -314,7 +318,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL);
     int W = rec->width, H = rec->height, light = res->levels.light;
     local_read rd;
-    int taken;
+    int taken, ellipse = 0;
     memset(out, 0, sizeof *out);
     if (!rl_locate_outer_ring(rec, img, res, u, R, &out->box, &rd.cx, &rd.cy, &rd.r))
         return 0;
@@ -328,9 +332,10 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     /* the circle; the ellipse (whose centre is the better one where both
      * read); across the motion (the circle's cells); a cut one at the
      * frame's size, and always where its box put it too */
-    taken = local_accept(&rule, &rd.m, W, H, rd.cx, rd.cy, rd.r, 255.0) ||
-            read_ellipse(rec, img, res, &rule, &rd) || read_across(rec, &rule, &rd) ||
-            read_cut_at_size(rec, img, light, R, &rule, &rd);
+    taken = local_accept(&rule, &rd.m, W, H, rd.cx, rd.cy, rd.r, 255.0);
+    if (!taken && (ellipse = read_ellipse(rec, img, res, &rule, &rd)) < 0)
+        return 0; /* the circle and the ellipse out of the frame disagree */
+    taken = taken || ellipse > 0 || read_across(rec, &rule, &rd) || read_cut_at_size(rec, img, light, R, &rule, &rd);
     if (!u->complete)
         taken = cut_agrees_with_box(rec, img, light, u, &rule, taken, &rd);
     out->u = rd.cx;
