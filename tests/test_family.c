@@ -137,6 +137,27 @@ static void band_inner_by_hand(void **state)
     assert_true(rl_family_band_inner(&f, 31) == 0.0); /* not an id */
 }
 
+/* Zone twins by hand, ring5 (ids 1 .. 30): 1 = 00001 -> 00011, 00101,
+ * 01001, 10001 (00000 is no id); 30 = 11110 -> 11100, 11010, 10110,
+ * 01110 (11111 is no id); 21 = 10101 -> all five flips valid. */
+static void zone_twins_by_hand(void **state)
+{
+    rl_family fam;
+    int out[RL_MAX_BITS], n;
+    const int want1[] = {3, 5, 9, 17}, want30[] = {28, 26, 22, 14}, want21[] = {20, 23, 17, 29, 5};
+    (void)state;
+    assert_int_equal(rl_family_init(&fam, 5), RL_OK);
+    n = rl_family_zone_twins(&fam, 1, out);
+    assert_int_equal(n, 4);
+    assert_memory_equal(out, want1, sizeof want1);
+    n = rl_family_zone_twins(&fam, 30, out);
+    assert_int_equal(n, 4);
+    assert_memory_equal(out, want30, sizeof want30);
+    n = rl_family_zone_twins(&fam, 21, out);
+    assert_int_equal(n, 5);
+    assert_memory_equal(out, want21, sizeof want21);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -146,6 +167,7 @@ int main(void)
         cmocka_unit_test(test_radii_equal_area),
         cmocka_unit_test(test_dark_at),
         cmocka_unit_test(band_inner_by_hand),
+        cmocka_unit_test(zone_twins_by_hand),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

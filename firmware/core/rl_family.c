@@ -37,6 +37,15 @@ int rl_family_valid(const rl_family *fam, int id)
     return id >= 1 && id <= rl_family_count(fam);
 }
 
+int rl_family_zone_twins(const rl_family *fam, int id, int *out)
+{
+    int n = 0, z;
+    for (z = 0; z < fam->bits; z++)
+        if (rl_family_valid(fam, id ^ (1 << z)))
+            out[n++] = id ^ (1 << z);
+    return n;
+}
+
 int rl_family_bit(const rl_family *fam, int id, int k)
 {
     return (id >> (fam->bits - k)) & 1;

@@ -153,24 +153,14 @@ static int rank_keeps(const rl_recog *rec, const rl_image *img, const rl_tone *t
     return 1;
 }
 
-/* The valid codes one zone away from id (every zone: a wrong formation
- * moves every edge, the outer ones most); their count. */
-static int neighbours(const rl_recog *rec, int id, int *out)
-{
-    int n = 0, z;
-    for (z = 0; z < rec->templates.fam.bits; z++)
-        if (rl_family_valid(&rec->templates.fam, id ^ (1 << z)))
-            out[n++] = id ^ (1 << z);
-    return n;
-}
-
 /* The ids d is judged against: its zone twins; for a local read (sector
  * by sector, the centre searched) every other id of the table. */
 static int rivals(const rl_recog *rec, const rl_detection *d, int *out)
 {
     int n = 0, i;
+    /* every zone: a wrong formation moves every edge, the outer ones most */
     if (d->pass != RL_PASS_LOCAL)
-        return neighbours(rec, d->id, out);
+        return rl_family_zone_twins(&rec->templates.fam, d->id, out);
     for (i = 0; i < rec->templates.n; i++)
         if (rec->templates.ids[i] != d->id)
             out[n++] = rec->templates.ids[i];

@@ -157,12 +157,10 @@ static double best_of(const rl_templates *tt, const rl_profile *wide, int id, do
  * rescaled once a radius, each code's own columns scored there. */
 static int twin_fits_as_well(const rl_recog *rec, const rl_profile *wide, int id)
 {
-    int codes[RL_MAX_BITS + 1], n = 0, z, k, i;
+    int codes[RL_MAX_BITS + 1], n, k, i;
     double best[RL_MAX_BITS + 1];
-    codes[n++] = id;
-    for (z = 0; z < rec->templates.fam.bits; z++)
-        if (rl_family_valid(&rec->templates.fam, id ^ (1 << z)))
-            codes[n++] = id ^ (1 << z);
+    codes[0] = id;
+    n = 1 + rl_family_zone_twins(&rec->templates.fam, id, codes + 1);
     for (i = 0; i < n; i++)
         best[i] = -2;
     for (k = 0; k < RADIUS_SCALES; k++) {

@@ -39,6 +39,10 @@ int rl_family_count(const rl_family *fam);
 /* 1 if id is valid in the family (1 .. 2^N - 2). */
 int rl_family_valid(const rl_family *fam, int id);
 
+/* The zone twins of id: the valid ids one code zone from it (any zone),
+ * into out (room for RL_MAX_BITS); their count. */
+int rl_family_zone_twins(const rl_family *fam, int id, int *out);
+
 /* Bit c_k (k = 1..N) of a code: 1 black, 0 white. */
 int rl_family_bit(const rl_family *fam, int id, int k);
 
