@@ -124,6 +124,23 @@ static void circle_box(int W, int H, double cx, double cy, double r, rl_box *box
  * into one region too large for a landmark. */
 #define LOCATE_STEPS 3
 
+/* The grey outer edge along rays from the candidate's own centre, at the
+ * frame's radius R; 1 when found (into *cx, *cy, *r). Where motion broke
+ * the outer ring into arcs, the region taken for the ring (or, under
+ * RING_MIN_SIZE, for the code ring) is an arc: the circle of its outline
+ * can sit a landmark's width away (30-40 px on a whole 12 and a whole 8 of
+ * the moving set, 4.9 and 5.3 px of motion, whose candidates' centres and
+ * the global pass's reads were right), and no ray from there finds the
+ * edge. */
+static int rays_from_candidate(const rl_recog *rec, const rl_image *img, int light, const rl_detection *u,
+                               double R, double *cx, double *cy, double *r)
+{
+    *cx = u->u;
+    *cy = u->v;
+    *r = R;
+    return rl_edge_fit_rays(img, rec->tone, light, cx, cy, r);
+}
+
 int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *res,
                          const rl_detection *u, double R, rl_box *box, double *cx, double *cy,
                          double *r)
@@ -166,7 +183,8 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
      * refines centre and radius once more) */
     tx = *cx;
     ty = *cy;
-    if (rl_edge_fit_rays(img, rec->tone, light, &tx, &ty, &tr)) {
+    if (rl_edge_fit_rays(img, rec->tone, light, &tx, &ty, &tr) ||
+        rays_from_candidate(rec, img, light, u, R, &tx, &ty, &tr)) {
         *cx = tx;
         *cy = ty;
         *r = tr;
