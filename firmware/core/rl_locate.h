@@ -24,8 +24,9 @@
  * the threshold, the ring or its edge is not found, or the circle is not
  * of about the frame's size. Where a code ring was taken for the centre
  * it surrounds, the circle is the outer edge found along rays from there,
- * or from the candidate's centre where none is found (the region was an
- * arc of a ring motion broke; 0 when neither finds one), and the box is
+ * or from the candidate's centre where none is found and the outline's
+ * circle lies over half a radius from it (the region was an arc of a ring
+ * motion broke; 0 when neither finds one), and the box is
  * the circle's, within the frame. */
 int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *res,
                          const rl_detection *u, double R, rl_box *box, double *cx, double *cy,
