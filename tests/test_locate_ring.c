@@ -11,7 +11,7 @@
  *       the moving set's borders). On the moving set, motion broke the outer ring of a whole
  *       12 and a whole 8 into arcs: the largest, under the size of an outer
  *       ring, was taken for the code ring, the circle of its outline sat
- *       30-40 px away, no ray from there found an edge, and the landmark,
+ *       45-50 px away, no ray from there found an edge, and the landmark,
  *       read right by the global pass but too close to its twin there,
  *       was lost (rl_locate.c). */
 #include "rl_test.h"

@@ -130,7 +130,7 @@ static void circle_box(int W, int H, double cx, double cy, double r, rl_box *box
  * *cx, *cy, *r). Where motion broke the outer ring into arcs, the region
  * taken for the ring (or, under RING_MIN_SIZE, for the code ring) is an
  * arc, and the circle of its outline can sit a landmark's width away
- * (30-45 px on a whole 12 and a whole 8 of the moving set, 4.9 and 5.3 px
+ * (45-50 px on a whole 12 and a whole 8 of the moving set, 4.9 and 5.3 px
  * of motion, whose candidates' centres and the global pass's reads were
  * right): no ray from there finds the edge. A circle nearer the
  * candidate is the ring's own; trying the candidate's centre there too
