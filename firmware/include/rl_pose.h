@@ -66,6 +66,8 @@ typedef struct {
     double roll, pitch;          /* the camera's tilt from vertical (its own x, y axes), rad */
     int tilt_solved;             /* 1: attitude solved from the landmarks (3 or more);
                                     0: the robot taken as level (the mount's tilt applied) */
+    double tilt_weight;          /* the tilted fit's share of the pose (rl_pose_tilt_weight):
+                                    tilt_solved when over one half */
     int fit_valid;               /* three or more landmarks: the tilted fit, taken or not: */
     double fit_roll, fit_pitch;  /* the robot's tilt it found (about its x and y), rad */
     double fit_sigma_roll, fit_sigma_pitch;
@@ -90,8 +92,13 @@ typedef struct {
 #define RL_POSE_TILT_WEAK 0.1
 #define RL_POSE_TILT_LEVEL 0.00002 /* left over when three or more show no tilt */
 /* How much better (chi-square, in units of the residual variance) the
- * tilted fit must explain the centres than the level one to be taken. */
+ * tilted fit must explain the centres than the level one to weigh as much
+ * as the level one in the pose. */
 #define RL_POSE_TILT_EVIDENCE 16.0
+
+/* The tilted fit's weight in the pose (0 .. 1) for its evidence: how much
+ * lower its misfit is, in units of its residual variance. */
+double rl_pose_tilt_weight(double evidence);
 
 /* Fill the mount of the spec's default mounting at height z. */
 void rl_mount_defaults(rl_mount *m, double z);
