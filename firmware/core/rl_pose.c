@@ -146,8 +146,19 @@ double rl_pose_tilt_weight(double evidence)
     return z > 40 ? 1.0 : z < -40 ? 0.0 : 1.0 / (1.0 + exp(-z));
 }
 
-/* Fit k (q_k, its variances on the diagonal of cov_k) averaged with weight
- * w into q, cov: the pose's uncertainty takes the spread between the fits. */
+/* 1 when the pose's variances in cov are numbers, not negative. */
+static int variances_ok(const double *cov)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        if (!(cov[i * RL_POSE_NQ + i] >= 0 && isfinite(cov[i * RL_POSE_NQ + i])))
+            return 0;
+    return 1;
+}
+
+/* The tilted fit (qt, its variances on covt's diagonal) averaged with
+ * weight w into the level one's q and cov: the pose's variances take the
+ * spread between the fits too. */
 static void average_fits(double w, const double *qt, const double *covt, double *q, double *cov)
 {
     double d[RL_POSE_NQ];
@@ -164,8 +175,9 @@ static void average_fits(double w, const double *qt, const double *covt, double 
 
 /* The pinhole fits from the level start q: with three or more landmarks
  * the tilted one and the level one, averaged by rl_pose_tilt_weight
- * (tilt_solved when the tilted one weighs more). q, the variances on the
- * diagonal of cov and chi2 of the average. */
+ * (tilt_solved when the tilted one weighs more). q and the variances on
+ * the diagonal of cov of the average, chi2 the fits' chi2 averaged by
+ * weight (an upper bound on the average pose's). */
 static int fit_pinhole(rl_pose_model *md, rl_pose_pt *pt, int m, double *q, double *cov, double *chi2,
                        rl_pose *out)
 {
@@ -193,7 +205,7 @@ static int fit_pinhole(rl_pose_model *md, rl_pose_pt *pt, int m, double *q, doub
         if (!solved)
             return 0;
         w = 1;
-    } else if (solved) {
+    } else if (solved && variances_ok(covt)) {
         double unit = fmax(1.0, chi2t / fmax(1.0, 2.0 * m - RL_POSE_NQ));
         w = rl_pose_tilt_weight((*chi2 - chi2t) / unit);
     }
