@@ -19,21 +19,12 @@ DRIVE=$OUT/drive
 R=$B/host/ringloc
 FW=$B/firmware/app/ringloc-fw
 REN=$B/tools/ringloc-render
-MOUNT=0.12,-0.03,0.02,0.02,-0.015
-ROCK=0.01
-
 mkdir -p "$OUT"
 # the drive: rendered once with its ground truth, then reused
 if [ ! -f "$DRIVE/circle_019.yaml" ] || [ ! -f "$DRIVE/robot_true.yaml" ]; then
     echo "demo: rendering the drive (55 frames with ground truth) ..."
     rm -rf "$DRIVE"
-    mkdir -p "$DRIVE"
-    "$REN" --write-map "$DRIVE/map.yaml" --write-camera "$DRIVE/camera.yaml" \
-        --write-robot "$DRIVE/robot_true.yaml" --mount $MOUNT
-    "$REN" --out "$DRIVE" --path straight --frames 15 --mount $MOUNT --rock $ROCK &
-    "$REN" --out "$DRIVE" --path rect --frames 20 --mount $MOUNT --rock $ROCK &
-    "$REN" --out "$DRIVE" --path circle --frames 20 --mount $MOUNT --rock $ROCK &
-    wait
+    sh tools/demo_drive.sh "$REN" "$DRIVE"
 fi
 DRIVE=$(cd "$DRIVE" && pwd)
 # the robot file as a user writes it (the tape measure's offsets, no tilt),

@@ -42,8 +42,20 @@ static int ray_in(const rl_image *img, double cx, double cy, double c, double s,
            xb + 0.5 + m < img->width && ya + 0.5 + m < img->height && yb + 0.5 + m < img->height;
 }
 
+/* A ray from (cx, cy) in direction (c, s); `in` when all of it that is
+ * read lies in the image (ray_in). */
+typedef struct {
+    const rl_image *img;
+    double cx, cy, c, s;
+    int in;
+} ray_t;
+
 /* The pixel at rho along the ray: unchecked where the whole ray is in. */
-#define GREY(rho) (in ? grey_in(img, cx + (rho) * c, cy + (rho) * s) : grey_at(img, cx + (rho) * c, cy + (rho) * s))
+static int ray_grey(const ray_t *ray, double rho)
+{
+    double x = ray->cx + rho * ray->c, y = ray->cy + rho * ray->s;
+    return ray->in ? grey_in(ray->img, x, y) : grey_at(ray->img, x, y);
+}
 
 enum { RAY_UNKNOWN, RAY_CLEAR, RAY_HIT };
 
@@ -57,10 +69,10 @@ static int ray_meets(const rl_image *img, int light, double cx, double cy, doubl
     double rho;
     int ink = 256, paper = -1, mid, g = 0;
     /* past every rho sampled below: the ring's end from the farthest start */
-    int in = ray_in(img, cx, cy, c, s, 0.8 * r, fmax(1.2 * r, RING_END * (to + 1.0) + 2.0));
+    const ray_t ray = {img, cx, cy, c, s, ray_in(img, cx, cy, c, s, 0.8 * r, fmax(1.2 * r, RING_END * (to + 1.0) + 2.0))};
     /* the candidate's own ink (outer ring) and paper (quiet zone) here */
     for (rho = 0.8 * r; rho <= 1.2 * r; rho += 1.0) {
-        if ((g = GREY(rho)) < 0)
+        if ((g = ray_grey(&ray, rho)) < 0)
             break;
         if (rho <= r && g < ink)
             ink = g;
@@ -71,14 +83,14 @@ static int ray_meets(const rl_image *img, int light, double cx, double cy, doubl
         return RAY_UNKNOWN;
     mid = (ink + paper) / 2;
     for (rho = ENCLOSE_FROM * r; rho <= to; rho += 1.0) {
-        g = GREY(rho);
+        g = ray_grey(&ray, rho);
         if (g < 0 || g >= light || g < mid)
             break;
     }
     if (g >= 0 && g < mid) {
         double start = rho;
         for (; rho <= RING_END * start + 1.0; rho += 1.0) {
-            g = GREY(rho);
+            g = ray_grey(&ray, rho);
             if (g < 0 || g >= light)
                 return RAY_UNKNOWN;
             if (g >= mid) {

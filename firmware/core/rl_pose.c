@@ -131,14 +131,57 @@ static int drop_inconsistent(rl_pose_pt *pt, int m, rl_pose *out)
     }
 }
 
+/* The weight of the tilted fit against the level one: the probability of
+ * the tilted model given the centres (Bayesian model averaging), from how
+ * much its two parameters lower the misfit in units of its own residuals
+ * (`evidence`): one half at RL_POSE_TILT_EVIDENCE, log-odds rising by one
+ * half per unit, so a frame near the line takes a little of both fits
+ * rather than all of one (a 0.03 px shift of one centre had moved a pose
+ * by 13 mm). */
+double rl_pose_tilt_weight(double evidence)
+{
+    double z = 0.5 * (evidence - RL_POSE_TILT_EVIDENCE);
+    if (isnan(z))
+        return 0.0;
+    return z > 40 ? 1.0 : z < -40 ? 0.0 : 1.0 / (1.0 + exp(-z));
+}
+
+/* 1 when the pose's variances in cov are numbers, not negative. */
+static int variances_ok(const double *cov)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        if (!(cov[i * RL_POSE_NQ + i] >= 0 && isfinite(cov[i * RL_POSE_NQ + i])))
+            return 0;
+    return 1;
+}
+
+/* The tilted fit (qt, its variances on covt's diagonal) averaged with
+ * weight w into the level one's q and cov: the pose's variances take the
+ * spread between the fits too. */
+static void average_fits(double w, const double *qt, const double *covt, double *q, double *cov)
+{
+    double d[RL_POSE_NQ];
+    int i;
+    for (i = 0; i < RL_POSE_NQ; i++)
+        d[i] = qt[i] - q[i];
+    d[2] = atan2(sin(d[2]), cos(d[2]));
+    for (i = 0; i < RL_POSE_NQ; i++) {
+        double *v = &cov[i * RL_POSE_NQ + i];
+        *v = w * covt[i * RL_POSE_NQ + i] + (1 - w) * *v + w * (1 - w) * d[i] * d[i];
+        q[i] += w * d[i];
+    }
+}
+
 /* The pinhole fits from the level start q: with three or more landmarks
- * the tilted one, taken when it explains what the level one cannot (its
- * two parameters lower the misfit, in units of its own residuals, by more
- * than RL_POSE_TILT_EVIDENCE). q, cov, chi2 of the one taken. */
+ * the tilted one and the level one, averaged by rl_pose_tilt_weight
+ * (tilt_solved when the tilted one weighs more). q and the variances on
+ * the diagonal of cov of the average, chi2 the fits' chi2 averaged by
+ * weight (an upper bound on the average pose's). */
 static int fit_pinhole(rl_pose_model *md, rl_pose_pt *pt, int m, double *q, double *cov, double *chi2,
                        rl_pose *out)
 {
-    double qt[RL_POSE_NQ], covt[RL_POSE_NQ * RL_POSE_NQ], chi2t = 0;
+    double qt[RL_POSE_NQ], covt[RL_POSE_NQ * RL_POSE_NQ], chi2t = 0, w = 0;
     int solved = 0, i;
     memcpy(qt, q, sizeof qt);
     if (m >= 3) {
@@ -161,18 +204,21 @@ static int fit_pinhole(rl_pose_model *md, rl_pose_pt *pt, int m, double *q, doub
     if (!rl_pose_fit_solve(md, pt, m, 3, q, cov, chi2)) {
         if (!solved)
             return 0;
-        *chi2 = 1e300;
-    }
-    if (solved) {
+        w = 1;
+    } else if (solved && variances_ok(covt)) {
         double unit = fmax(1.0, chi2t / fmax(1.0, 2.0 * m - RL_POSE_NQ));
-        solved = (*chi2 - chi2t) / unit > RL_POSE_TILT_EVIDENCE;
+        w = rl_pose_tilt_weight((*chi2 - chi2t) / unit);
     }
-    if (solved) {
+    if (w >= 1) {
         memcpy(q, qt, sizeof qt);
         memcpy(cov, covt, sizeof covt);
         *chi2 = chi2t;
+    } else if (w > 0) {
+        average_fits(w, qt, covt, q, cov);
+        *chi2 = w * chi2t + (1 - w) * *chi2;
     }
-    out->tilt_solved = solved;
+    out->tilt_weight = w;
+    out->tilt_solved = w > 0.5;
     return 1;
 }
 
@@ -313,8 +359,8 @@ int rl_pose_project(const rl_calib *cam, const rl_map *map, const rl_mount *moun
     q[0] = p->x;
     q[1] = p->y;
     q[2] = p->yaw;
-    q[3] = p->tilt_solved ? p->fit_roll : 0.0;
-    q[4] = p->tilt_solved ? p->fit_pitch : 0.0;
+    q[3] = p->fit_valid ? p->tilt_weight * p->fit_roll : 0.0;
+    q[4] = p->fit_valid ? p->tilt_weight * p->fit_pitch : 0.0;
     rl_pose_fit_camera(&md, q, Rc, C);
     if (!rl_pose_fit_predict(&md, Rc, C, X, Y, Z, &xn, &yn))
         return 0;

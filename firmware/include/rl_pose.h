@@ -64,14 +64,16 @@ typedef struct {
     double x, y, yaw;            /* robot base pose in the map frame, m and rad */
     double sigma_x, sigma_y, sigma_yaw; /* their standard deviations, m and rad */
     double roll, pitch;          /* the camera's tilt from vertical (its own x, y axes), rad */
-    int tilt_solved;             /* 1: attitude solved from the landmarks (3 or more);
-                                    0: the robot taken as level (the mount's tilt applied) */
-    int fit_valid;               /* three or more landmarks: the tilted fit, taken or not: */
+    int tilt_solved;             /* 1: the tilted fit weighs more in the pose (3 or more landmarks);
+                                    0: the level fit does (the mount's tilt applied), or two landmarks */
+    double tilt_weight;          /* the tilted fit's share of the pose (rl_pose_tilt_weight), 0 .. 1 */
+    int fit_valid;               /* three or more landmarks: the tilted fit, whatever its weight: */
     double fit_roll, fit_pitch;  /* the robot's tilt it found (about its x and y), rad */
     double fit_sigma_roll, fit_sigma_pitch;
     double cam_x, cam_y, cam_yaw;/* camera optical centre and heading */
     int used;                    /* landmarks in the fit */
-    double residual;             /* RMS distance between map and fitted positions, m */
+    double residual;             /* RMS distance between map and fitted positions, m (with three or
+                                    more landmarks, from the fits' chi-square averaged by weight) */
     int n_dropped;
     int dropped[RL_MAX_LANDMARKS]; /* ids left out as inconsistent */
     int n_unknown;               /* identified ids not in the map */
@@ -90,8 +92,13 @@ typedef struct {
 #define RL_POSE_TILT_WEAK 0.1
 #define RL_POSE_TILT_LEVEL 0.00002 /* left over when three or more show no tilt */
 /* How much better (chi-square, in units of the residual variance) the
- * tilted fit must explain the centres than the level one to be taken. */
+ * tilted fit must explain the centres than the level one to weigh as much
+ * as the level one in the pose. */
 #define RL_POSE_TILT_EVIDENCE 16.0
+
+/* The tilted fit's weight in the pose (0 .. 1) for its evidence: how much
+ * lower its misfit is, in units of its residual variance. */
+double rl_pose_tilt_weight(double evidence);
 
 /* Fill the mount of the spec's default mounting at height z. */
 void rl_mount_defaults(rl_mount *m, double z);
@@ -134,8 +141,8 @@ RL_CHECK rl_err rl_pose_solve_matched(const rl_calib *cam, const rl_map *map, co
 /* Where the landmark at map point (X, Y), Z above the floor (the map's
  * ceiling_height, or rl_map_height for a map landmark), is seen in the image (pixels,
  * the centre the recognizer measures, distortion applied) from pose p on
- * the mount: the robot level, or tilted as p's fit found when it solved
- * the tilt (the mount's own tilt always applied). 0 when it is behind
+ * the mount: the robot tilted by tilt_weight times the tilt p's fit found
+ * (level with two landmarks; the mount's own tilt always applied). 0 when it is behind
  * the camera. The live view draws the map this way over the image. */
 int rl_pose_project(const rl_calib *cam, const rl_map *map, const rl_mount *mount, const rl_pose *p, double X,
                     double Y, double Z, double *u, double *v);
