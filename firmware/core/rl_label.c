@@ -108,8 +108,16 @@ static uint64_t chunk_bits(const uint8_t *row, const uint8_t *span, int lo, int 
     uint64_t bits = 0;
     int i = 0;
 #ifdef LABEL_MOVEMASK
+    uint8_t rs[2][CHUNK];
     if (n == CHUNK)
         return whole_chunk_bits(row, span, lo);
+    /* a row's last, short chunk (a window's: 13 of a 77 px one) copied
+     * out, its pad's band empty (span 0: no bit) */
+    memcpy(rs[0], row, (size_t)n);
+    memcpy(rs[1], span, (size_t)n);
+    memset(rs[0] + n, 0, (size_t)(CHUNK - n));
+    memset(rs[1] + n, 0, (size_t)(CHUNK - n));
+    return whole_chunk_bits(rs[0], rs[1], lo);
 #endif
 #ifdef LABEL_VECTORS
     label_v16 any = {0};
