@@ -101,8 +101,10 @@ static uint64_t whole_chunk_bits(const uint8_t *row, const uint8_t *span, int lo
 }
 #endif
 
-/* Bit i set when lo <= row[i] < lo + span[i], for i < n <= CHUNK. */
-static uint64_t chunk_bits(const uint8_t *row, const uint8_t *span, int lo, int n)
+/* Bit i set when lo <= row[i] < lo + span[i], for i < n <= CHUNK; the
+ * `before` bytes before row and span are theirs too (a row's earlier
+ * chunks). */
+static uint64_t chunk_bits(const uint8_t *row, const uint8_t *span, int lo, int n, int before)
 {
     uint8_t in[CHUNK];
     uint64_t bits = 0;
@@ -111,14 +113,19 @@ static uint64_t chunk_bits(const uint8_t *row, const uint8_t *span, int lo, int 
     uint8_t rs[2][CHUNK];
     if (n == CHUNK)
         return whole_chunk_bits(row, span, lo);
-    /* a row's last, short chunk (a window's: 13 of a 77 px one) copied
-     * out, its pad's band empty (span 0: no bit) */
+    /* a row's last, short chunk (a window's: 13 of a 77 px one): the
+     * whole chunk that ends with it, its bits shifted down, where the row
+     * is that long; else copied out, its pad's band empty (span 0: no
+     * bit) */
+    if (before >= CHUNK - n)
+        return whole_chunk_bits(row - (CHUNK - n), span - (CHUNK - n), lo) >> (CHUNK - n);
     memcpy(rs[0], row, (size_t)n);
     memcpy(rs[1], span, (size_t)n);
     memset(rs[0] + n, 0, (size_t)(CHUNK - n));
     memset(rs[1] + n, 0, (size_t)(CHUNK - n));
     return whole_chunk_bits(rs[0], rs[1], lo);
 #endif
+    (void)before;
 #ifdef LABEL_VECTORS
     label_v16 any = {0};
     uint64_t half[2];
@@ -230,7 +237,7 @@ static rl_err row_runs(rl_label *lb, const uint8_t *row, int xa, int width, int 
         return add_run(lb, 0, width - 1, n, &j, prev_end);
     for (x = xa; x < width; x += CHUNK) {
         int len = width - x < CHUNK ? width - x : CHUNK, pos = 0;
-        uint64_t bits = chunk_bits(row + x, lb->span + x, lo, len);
+        uint64_t bits = chunk_bits(row + x, lb->span + x, lo, len, x);
         while (pos < len) {
             uint64_t rest = (open < 0 ? bits : ~bits) >> pos;
             if (rest == 0)
