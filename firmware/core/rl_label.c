@@ -159,16 +159,19 @@ static int32_t find(int32_t *p, int32_t a)
     return a;
 }
 
-static void unite(int32_t *p, int32_t a, int32_t b)
+/* Join the run whose root is `root` (the current run's, kept by the
+ * caller) with run b's set; the new root returned. The older root stays
+ * root: roots are then the first run of a region in raster order (the
+ * least index of its set), which keeps region order deterministic. */
+static int32_t unite(int32_t *p, int32_t root, int32_t b)
 {
-    a = find(p, a);
     b = find(p, b);
-    /* the older run stays root: roots are then the first run of a region
-     * in raster order, which keeps region order deterministic */
-    if (a < b)
-        p[b] = a;
-    else if (b < a)
-        p[a] = b;
+    if (root < b) {
+        p[b] = root;
+        return root;
+    }
+    p[root] = b; /* b == root leaves it as it is */
+    return b;
 }
 
 /* The runs of pixels in [lo, hi), row by row, joined with the previous
@@ -178,7 +181,7 @@ static void unite(int32_t *p, int32_t a, int32_t b)
  * pointer *j suffices. */
 static rl_err add_run(rl_label *lb, int a, int b, int *n, int *j, int prev_end)
 {
-    int32_t *p = lb->tag;
+    int32_t *p = lb->tag, root = *n;
     int jj;
     if (*n == lb->cap_runs)
         return RL_ELIMIT;
@@ -188,7 +191,7 @@ static rl_err add_run(rl_label *lb, int a, int b, int *n, int *j, int prev_end)
     while (*j < prev_end && (int)lb->x1[*j] + 1 < a)
         (*j)++;
     for (jj = *j; jj < prev_end && (int)lb->x0[jj] <= b + 1; jj++)
-        unite(p, *n, jj);
+        root = unite(p, root, jj);
     (*n)++;
     return RL_OK;
 }
