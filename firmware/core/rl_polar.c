@@ -24,6 +24,7 @@
 #define PACK_MAX 4095 /* 4095 * 255 < 2^20, 4095 * 255^2 < 2^31 */
 
 /* Add the packed sums to the raw float cells and clear them. */
+POLAR_CLONES
 static void unpack_cells(rl_polar *pol)
 {
     int sct, k;
@@ -228,6 +229,7 @@ static void sector_levels(rl_polar *pol, double min_contrast)
  * of a shift of at most 1.5 px. Half the cells, half the work of every
  * profile. A washed-out sector is left out. Octant o is written over
  * sector o, which octant o / 2 has already read. */
+POLAR_CLONES
 static void merge_octants(rl_polar *pol)
 {
     int sct, k;
