@@ -309,18 +309,10 @@ static int cut_agrees_with_box(rl_recog *rec, const rl_image *img, int light, co
  * too, under the cut rule. */
 #define CUT_MIN_VISIBLE 0.4
 
-/* A whole candidate (its box's circle in the frame) whose first match
- * (every id at every blur at the located circle) scores under this is
- * read no further in the local pass: no search, ellipse or read across
- * the motion. On the development folders' composites no whole candidate
- * whose first match scored under 0.66 was taken (1059 tried, 72 taken;
- * 612 under 0.5 failed, a fifth of the local pass's time); a cut one is
- * read at the frame's size and at its box too, and was taken from first
- * matches as low as 0.19. */
-#define LOCAL_MIN_FIRST 0.5
 
 /* The search from rd's circle (rl_search.h), into *rd; 0 when u is whole
- * and the first match scores under min_first (then read no further). */
+ * and the first match scores under min_first (then read no further:
+ * RL_LOCAL_MIN_FIRST). */
 static int first_read(rl_recog *rec, const rl_image *img, int light, const rl_detection *u, double min_first,
                       const rl_accept_rule *rule, local_read *rd)
 {
@@ -412,7 +404,7 @@ void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res)
         double R = rexp > 0 ? rexp : u.radius;
         if (is_duclr(&rec->cfg, res, &u, R)) {
             res->local_tried++;
-            if (local_candidate(rec, img, res, &u, R, reach, LOCAL_MIN_FIRST, &d)) {
+            if (local_candidate(rec, img, res, &u, R, reach, RL_LOCAL_MIN_FIRST, &d)) {
                 if (rl_result_add_landmark(res, &d))
                     res->local_found++;
                 continue;
