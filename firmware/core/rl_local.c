@@ -309,32 +309,16 @@ static int cut_agrees_with_box(rl_recog *rec, const rl_image *img, int light, co
  * too, under the cut rule. */
 #define CUT_MIN_VISIBLE 0.4
 
-/* The search from rd's circle (rl_search.h), into *rd: 0 when u is whole
- * and its first match scores under min_first (read no further), 2 when
- * u is cut and it does (read at the frame's size and its box only), else
- * 1 (RL_LOCAL_MIN_FIRST). */
+
+/* The search from rd's circle (rl_search.h), into *rd; 0 when u is whole
+ * and the first match scores under min_first (then read no further:
+ * RL_LOCAL_MIN_FIRST). */
 static int first_read(rl_recog *rec, const rl_image *img, int light, const rl_detection *u, double min_first,
                       const rl_accept_rule *rule, local_read *rd)
 {
-    double first = rl_search_identify_over(&rec->templates, rec->polar, img, rec->tone, light,
-                                           u->complete ? min_first : -INFINITY, rule->min_score, &rd->cx,
-                                           &rd->cy, &rd->r, &rd->m);
-    if (rd->m.id < 0 || first >= min_first)
-        return 1;
-    return u->complete ? 0 : 2;
-}
-
-/* The reads after the circle's that failed (rd's): the ellipse (whose
- * centre is the better one where both read), across the motion (the
- * circle's cells), a cut one at the frame's size R; 1 when one takes it
- * (into *rd), -1 when the circle and an ellipse out of the frame disagree. */
-static int read_again(rl_recog *rec, const rl_image *img, const rl_result *res, double R,
-                      const rl_accept_rule *rule, local_read *rd)
-{
-    int ellipse = read_ellipse(rec, img, res, rule, rd);
-    if (ellipse != 0)
-        return ellipse;
-    return read_across(rec, rule, rd) || read_cut_at_size(rec, img, res->levels.light, R, rule, rd);
+    return rl_search_identify_over(&rec->templates, rec->polar, img, rec->tone, light,
+                                   u->complete ? min_first : -INFINITY, rule->min_score, &rd->cx, &rd->cy,
+                                   &rd->r, &rd->m);
 }
 
 /* Retry one DUCLR u of expected radius R; 1 if identified (into *out).
@@ -347,7 +331,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL);
     int W = rec->width, H = rec->height, light = res->levels.light;
     local_read rd;
-    int taken, first;
+    int taken, ellipse = 0;
     memset(out, 0, sizeof *out);
     if (!rl_locate_outer_ring(rec, img, res, u, R, &out->box, &rd.cx, &rd.cy, &rd.r))
         return 0;
@@ -356,16 +340,15 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     out->pass = RL_PASS_LOCAL;
     if (rl_geom_visible_in(W, H, rd.cx, rd.cy, rd.r) < CUT_MIN_VISIBLE)
         return 0;
-    if (!(first = first_read(rec, img, light, u, min_first, &rule, &rd)))
+    if (!first_read(rec, img, light, u, min_first, &rule, &rd))
         return 0;
-    /* the circle, the reads after it (a cut one whose first match was
-     * weak at the frame's size only), and a cut one always where its box
-     * put it too */
+    /* the circle; the ellipse (whose centre is the better one where both
+     * read); across the motion (the circle's cells); a cut one at the
+     * frame's size, and always where its box put it too */
     taken = local_accept(&rule, &rd.m, W, H, rd.cx, rd.cy, rd.r, 255.0);
-    if (!taken && first == 1 && (taken = read_again(rec, img, res, R, &rule, &rd)) < 0)
+    if (!taken && (ellipse = read_ellipse(rec, img, res, &rule, &rd)) < 0)
         return 0; /* the circle and the ellipse out of the frame disagree */
-    if (!taken && first == 2)
-        taken = read_cut_at_size(rec, img, light, R, &rule, &rd);
+    taken = taken || ellipse > 0 || read_across(rec, &rule, &rd) || read_cut_at_size(rec, img, light, R, &rule, &rd);
     if (!u->complete)
         taken = cut_agrees_with_box(rec, img, light, u, &rule, taken, &rd);
     out->u = rd.cx;

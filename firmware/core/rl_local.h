@@ -19,16 +19,15 @@
 
 #include "rl_recog_state.h"
 
-/* A candidate whose first match (every id at every blur at the located
- * circle, before the search over centre and radius) scores under this is
- * read no further in the local pass when it is whole (its box's circle
- * in the frame): no search, ellipse or read across the motion; a cut one
- * is searched and read at the frame's size and at its box, but not as an
- * ellipse or across the motion. The tracker's rl_local_read reads on. On
- * the development folders' composites no whole candidate whose first
- * match scored under 0.66 was taken (1059 tried, 72 taken; 612 under 0.5
- * failed, each with the reads after it); cut ones were taken from first
- * matches as low as 0.19 (at their box, at the frame's size). */
+/* A whole candidate (its box's circle in the frame) whose first match
+ * (every id at every blur at the located circle, before the search over
+ * centre and radius) scores under this is read no further in the local
+ * pass: no search, ellipse or read across the motion (the tracker's
+ * rl_local_read reads on). On the development folders' composites no
+ * whole candidate whose first match scored under 0.66 was taken (1059
+ * tried, 72 taken; 612 under 0.5 failed, each with the reads after it);
+ * a cut one is read at the frame's size and at its box too, and was
+ * taken from first matches as low as 0.19, so it is read on. */
 #define RL_LOCAL_MIN_FIRST 0.5
 
 /* Retry every DUCLR of res; identified ones move from res->unidentified

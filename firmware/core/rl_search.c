@@ -137,20 +137,20 @@ void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *i
     rl_search_identify_over(tt, pol, img, tone, light, -INFINITY, min_score, cx, cy, r, m);
 }
 
-double rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_image *img,
+int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_image *img,
                             const rl_tone *tone, int light, double min_first, double min_score, double *cx,
                             double *cy, double *r, rl_match *m)
 {
     rl_profile p;
     int ids[LIKELY_IDS], n;
     search_state st;
-    double first;
     rl_polar_gather(img, tone, *cx, *cy, *r, light, SECTOR_MIN_CONTRAST, pol);
     rl_polar_profile(pol, 0, 0, 1.0, &p);
     rl_match_all(tt, &p, m);
-    first = m->score;
-    if (m->id < 0 || first < min_first)
-        return m->id < 0 ? 0.0 : first;
+    if (m->id < 0)
+        return 1;
+    if (m->score < min_first)
+        return 0;
     n = likely_ids(tt, &p, m, ids);
     rl_match_list_make(tt, ids, n, m->blur, &st.likely);
     st.x = st.y = 0;
@@ -168,5 +168,5 @@ double rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_i
     }
     if (m->id >= 0 && m->score >= min_score)
         twin_check(tt, pol, st.x, st.y, st.s, RL_POLAR_ALL, m);
-    return first;
+    return 1;
 }
