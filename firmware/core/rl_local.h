@@ -27,7 +27,9 @@
  * whole candidate whose first match scored under 0.66 was taken (1059
  * tried, 72 taken; 612 under 0.5 failed, each with the reads after it);
  * a cut one is read at the frame's size and at its box too, and was
- * taken from first matches as low as 0.19, so it is read on. */
+ * taken from first matches as low as 0.19, so it is read on. Not
+ * lossless: on a held-out folder one whole landmark next to a light was
+ * taken from a first match under it (docs/results.md). */
 #define RL_LOCAL_MIN_FIRST 0.5
 
 /* Retry every DUCLR of res; identified ones move from res->unidentified
