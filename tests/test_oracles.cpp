@@ -242,6 +242,36 @@ static void test_bands_and_tiles_match_opencv(void **)
     }
 }
 
+// Windows of a larger frame, as the local pass labels them: a row's last,
+// short chunk is read from the chunk that ends with it (or copied out when
+// the row is shorter than a chunk); the frame's pixels around the window,
+// all in the band, must stay out, against OpenCV on the window alone.
+static void test_window_chunks_match_opencv(void **)
+{
+    std::mt19937 rng(13);
+    std::uniform_int_distribution<int> grey(0, 255);
+    const int FW = 400, FH = 60;
+    cv::Mat frame(FH, FW, CV_8U, cv::Scalar(0)); // dark: in the band everywhere outside
+    for (int trial = 0; trial < 40; trial++) {
+        int W = 20 + trial * 5, H = 30, x0 = 1 + trial * 3 % 37, y0 = 5;
+        cv::Mat view = frame(cv::Rect(x0, y0, W, H));
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++)
+                view.at<uchar>(y, x) = (uchar)grey(rng);
+        rl_image full = rl_image_view(FW, FH, (int)frame.step, frame.data), win;
+        assert_int_equal(rl_image_sub(&full, x0, y0, W, H, &win), RL_OK);
+        std::vector<unsigned char> mem(rl_label_bytes(FW, FH, FW * FH, 1 << 16) + 64);
+        rl_ws ws;
+        rl_ws_init(&ws, mem.data(), mem.size());
+        rl_label lb;
+        assert_int_equal(rl_label_init(&lb, &ws, FW, FH, FW * FH, 1 << 16), RL_OK);
+        assert_int_equal(rl_label_band(&lb, &win, 0, 100, 1), RL_OK);
+        cv::Mat bin = view < 100;
+        expect_opencv_regions(lb, bin, 1, trial);
+        view.setTo(cv::Scalar(0));
+    }
+}
+
 static void test_labelling_limits(void **)
 {
     // a checkerboard has one run per dark pixel (20 a row): a budget of 100
@@ -367,6 +397,7 @@ int main(void)
         cmocka_unit_test(test_kmeans_edge_cases),
         cmocka_unit_test(test_labelling_matches_opencv),
         cmocka_unit_test(test_bands_and_tiles_match_opencv),
+        cmocka_unit_test(test_window_chunks_match_opencv),
         cmocka_unit_test(test_labelling_limits),
         cmocka_unit_test(test_ident_matches_direct_pearson),
         cmocka_unit_test(test_pearson_formula),

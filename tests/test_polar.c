@@ -161,6 +161,42 @@ static void test_octant_directions(void **state)
     assert_int_equal(seen, 0xFF);
 }
 
+/* Each sector's black and white, by hand: paper 215 with an ink disk (30)
+ * of half the radius, no light. Groups of four bins wholly in the ink or
+ * on the paper have those levels as their mean, in the table's 8 bits
+ * (the brightest level, 215, at 255; a linear camera): 30 -> 36. With the
+ * paper right of the centre at 150 (-> 178) the right-hand sectors'
+ * white is that; and a centre left of the frame has no pixel in the
+ * left-hand sectors (none usable, their levels as set). */
+static void test_sector_levels(void **state)
+{
+    const double cx = 300.37, cy = 300.61, r = 30.0;
+    int x, y, k, right;
+    (void)state;
+    rl_tone_init(&tone, 1.0);
+    for (right = 0; right < 2; right++) {
+        rl_image img = rl_image_view(S, S, S, px);
+        for (y = 0; y < S; y++)
+            for (x = 0; x < S; x++)
+                px[y * S + x] = hypot(x - cx, y - cy) < 0.5 * r ? 30 : right && x > cx ? 150 : 215;
+        rl_polar_gather(&img, &tone, cx, cy, r, 256, 20.0, &pol);
+        for (k = 0; k < RL_SECTORS; k++) {
+            double white = right && k < RL_SECTORS / 2 ? 178.0 : 255.0; /* sectors 8..15: x < 0 */
+            if (pol.lo[k] != 36.0 || pol.hi[k] != white || !pol.usable[k])
+                fail_msg("paper %s: sector %d black %.3f white %.3f (usable %d), by hand 36 and %.0f",
+                         right ? "150 on the right" : "215", k, pol.lo[k], pol.hi[k], pol.usable[k], white);
+        }
+    }
+    {
+        rl_image img = rl_image_view(S, S, S, px);
+        rl_polar_gather(&img, &tone, -0.5, 300.61, r, 256, 20.0, &pol);
+        for (k = RL_SECTORS / 2; k < RL_SECTORS; k++)
+            if (pol.usable[k] || pol.lo[k] != 1e9 || pol.hi[k] != -1e9)
+                fail_msg("sector %d left of the frame: black %g white %g usable %d", k, pol.lo[k], pol.hi[k],
+                         pol.usable[k]);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -168,6 +204,7 @@ int main(void)
         cmocka_unit_test(test_counts_large),
         cmocka_unit_test(test_moved_profiles),
         cmocka_unit_test(test_octant_directions),
+        cmocka_unit_test(test_sector_levels),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -101,16 +101,31 @@ static uint64_t whole_chunk_bits(const uint8_t *row, const uint8_t *span, int lo
 }
 #endif
 
-/* Bit i set when lo <= row[i] < lo + span[i], for i < n <= CHUNK. */
-static uint64_t chunk_bits(const uint8_t *row, const uint8_t *span, int lo, int n)
+/* Bit i set when lo <= row[i] < lo + span[i], for i < n <= CHUNK; the
+ * `before` bytes before row and span are theirs too (a row's earlier
+ * chunks). */
+static uint64_t chunk_bits(const uint8_t *row, const uint8_t *span, int lo, int n, int before)
 {
     uint8_t in[CHUNK];
     uint64_t bits = 0;
     int i = 0;
 #ifdef LABEL_MOVEMASK
+    uint8_t rs[2][CHUNK];
     if (n == CHUNK)
         return whole_chunk_bits(row, span, lo);
+    /* a row's last, short chunk (a window's: 13 of a 77 px one): the
+     * whole chunk that ends with it, its bits shifted down, where the row
+     * is that long; else copied out, its pad's band empty (span 0: no
+     * bit) */
+    if (before >= CHUNK - n)
+        return whole_chunk_bits(row - (CHUNK - n), span - (CHUNK - n), lo) >> (CHUNK - n);
+    memcpy(rs[0], row, (size_t)n);
+    memcpy(rs[1], span, (size_t)n);
+    memset(rs[0] + n, 0, (size_t)(CHUNK - n));
+    memset(rs[1] + n, 0, (size_t)(CHUNK - n));
+    return whole_chunk_bits(rs[0], rs[1], lo);
 #endif
+    (void)before;
 #ifdef LABEL_VECTORS
     label_v16 any = {0};
     uint64_t half[2];
@@ -144,16 +159,19 @@ static int32_t find(int32_t *p, int32_t a)
     return a;
 }
 
-static void unite(int32_t *p, int32_t a, int32_t b)
+/* Join the run whose root is `root` (the current run's, kept by the
+ * caller) with run b's set; the new root returned. The older root stays
+ * root: roots are then the first run of a region in raster order (the
+ * least index of its set), which keeps region order deterministic. */
+static int32_t unite(int32_t *p, int32_t root, int32_t b)
 {
-    a = find(p, a);
     b = find(p, b);
-    /* the older run stays root: roots are then the first run of a region
-     * in raster order, which keeps region order deterministic */
-    if (a < b)
-        p[b] = a;
-    else if (b < a)
-        p[a] = b;
+    if (root < b) {
+        p[b] = root;
+        return root;
+    }
+    p[root] = b; /* b == root leaves it as it is */
+    return b;
 }
 
 /* The runs of pixels in [lo, hi), row by row, joined with the previous
@@ -163,7 +181,7 @@ static void unite(int32_t *p, int32_t a, int32_t b)
  * pointer *j suffices. */
 static rl_err add_run(rl_label *lb, int a, int b, int *n, int *j, int prev_end)
 {
-    int32_t *p = lb->tag;
+    int32_t *p = lb->tag, root = *n;
     int jj;
     if (*n == lb->cap_runs)
         return RL_ELIMIT;
@@ -173,7 +191,7 @@ static rl_err add_run(rl_label *lb, int a, int b, int *n, int *j, int prev_end)
     while (*j < prev_end && (int)lb->x1[*j] + 1 < a)
         (*j)++;
     for (jj = *j; jj < prev_end && (int)lb->x0[jj] <= b + 1; jj++)
-        unite(p, *n, jj);
+        root = unite(p, root, jj);
     (*n)++;
     return RL_OK;
 }
@@ -222,7 +240,7 @@ static rl_err row_runs(rl_label *lb, const uint8_t *row, int xa, int width, int 
         return add_run(lb, 0, width - 1, n, &j, prev_end);
     for (x = xa; x < width; x += CHUNK) {
         int len = width - x < CHUNK ? width - x : CHUNK, pos = 0;
-        uint64_t bits = chunk_bits(row + x, lb->span + x, lo, len);
+        uint64_t bits = chunk_bits(row + x, lb->span + x, lo, len, x);
         while (pos < len) {
             uint64_t rest = (open < 0 ? bits : ~bits) >> pos;
             if (rest == 0)

@@ -24,6 +24,7 @@
 #define PACK_MAX 4095 /* 4095 * 255 < 2^20, 4095 * 255^2 < 2^31 */
 
 /* Add the packed sums to the raw float cells and clear them. */
+POLAR_CLONES
 static void unpack_cells(rl_polar *pol)
 {
     int sct, k;
@@ -181,23 +182,42 @@ static void gather_cells(rl_polar *pol, const rl_image *img)
 }
 
 /* Each sector's black and white (extreme means over groups of 4 bins of
- * the profile's extent); a sector with less contrast is not usable. */
+ * the profile's extent); a sector with less contrast is not usable. The
+ * extreme groups are found by comparing their sums crosswise (s1 n2 <
+ * s2 n1: floats' products, exact in double), and only their means
+ * divided out: the division rounds monotonically, so the extremes are
+ * the same doubles as the least and largest of every group's mean. */
 static void sector_levels(rl_polar *pol, double min_contrast)
 {
     int sct, k;
     for (sct = 0; sct < RL_SECTORS; sct++) {
         const float *cn = pol->n[sct] + RL_POLAR_PAD, *cs = pol->s[sct] + RL_POLAR_PAD;
-        pol->lo[sct] = 1e9;
-        pol->hi[sct] = -1e9;
+        double ls = 0, ln = 0, hs = 0, hn = 0; /* the darkest and brightest group's sum and count */
+        int any = 0;
         for (k = 0; k + 3 < RL_PROFILE_BINS; k += 4) {
             float n = cn[k] + cn[k + 1] + cn[k + 2] + cn[k + 3];
-            double m;
+            double sd, nd;
             if (n < 2)
                 continue;
-            m = (double)(cs[k] + cs[k + 1] + cs[k + 2] + cs[k + 3]) / n;
-            if (m < pol->lo[sct]) pol->lo[sct] = m;
-            if (m > pol->hi[sct]) pol->hi[sct] = m;
+            sd = (double)(cs[k] + cs[k + 1] + cs[k + 2] + cs[k + 3]);
+            nd = (double)n;
+            if (!any) {
+                ls = hs = sd;
+                ln = hn = nd;
+                any = 1;
+                continue;
+            }
+            if (sd * ln < ls * nd) {
+                ls = sd;
+                ln = nd;
+            }
+            if (sd * hn > hs * nd) {
+                hs = sd;
+                hn = nd;
+            }
         }
+        pol->lo[sct] = any ? ls / ln : 1e9;
+        pol->hi[sct] = any ? hs / hn : -1e9;
         pol->usable[sct] = pol->hi[sct] - pol->lo[sct] >= min_contrast;
     }
 }
@@ -209,6 +229,7 @@ static void sector_levels(rl_polar *pol, double min_contrast)
  * of a shift of at most 1.5 px. Half the cells, half the work of every
  * profile. A washed-out sector is left out. Octant o is written over
  * sector o, which octant o / 2 has already read. */
+POLAR_CLONES
 static void merge_octants(rl_polar *pol)
 {
     int sct, k;

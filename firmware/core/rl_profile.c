@@ -113,6 +113,7 @@ static void gather(const rl_image *img, const rl_tone *tone, double cx, double c
         for (xs = x0; xs <= x1; xs += GATHER_CHUNK) {
             int nx = x1 - xs + 1 < GATHER_CHUNK ? x1 - xs + 1 : GATHER_CHUNK, i, b;
             int bin[GATHER_CHUNK];
+            uint32_t v[GATHER_CHUNK], s1, s2, s3;
             float dx0 = (float)(xs - cx);
             for (b = 0; b < nx; b += GATHER_BLOCK) {
                 int *kb = bin + b;
@@ -124,23 +125,26 @@ static void gather(const rl_image *img, const rl_tone *tone, double cx, double c
                     kb[i] = kk < RL_PROFILE_BINS - 1 ? kk : RL_PROFILE_BINS - 1;
                 }
             }
-            /* pixels in pairs, the even one's sums in acc[0], the odd
-             * one's in acc[1]; x v of the pair as x (v0 + v1) + v1 */
+            /* the pixels' darkness first; then their bins' sums in pairs,
+             * the even one's in acc[0], the odd one's in acc[1] */
+            for (i = 0; i < nx; i++)
+                v[i] = tone->dark[row[xs + i]];
             for (i = 0; i + 1 < nx; i += 2) {
-                uint32_t v0 = tone->dark[row[xs + i]], v1 = tone->dark[row[xs + i + 1]];
-                acc[0][bin[i]] += PACK_COUNT + v0;
-                acc[1][bin[i + 1]] += PACK_COUNT + v1;
-                rs += v0 * v0 + v1 * v1;
-                rv += v0 + v1;
-                rxv += (uint64_t)(xs + i) * (v0 + v1) + v1;
+                acc[0][bin[i]] += PACK_COUNT + v[i];
+                acc[1][bin[i + 1]] += PACK_COUNT + v[i + 1];
             }
-            if (i < nx) {
-                uint32_t v = tone->dark[row[xs + i]];
-                acc[0][bin[i]] += PACK_COUNT + v;
-                rs += v * v;
-                rv += v;
-                rxv += (uint64_t)(xs + i) * v;
+            if (i < nx)
+                acc[0][bin[i]] += PACK_COUNT + v[i];
+            /* the row's sums, vectorized; in 32 bits: a chunk's squares
+             * are under 64 * 1023^2, its i v under 2016 * 1023 */
+            for (i = 0, s1 = s2 = s3 = 0; i < nx; i++) {
+                s1 += v[i];
+                s2 += v[i] * v[i];
+                s3 += (uint32_t)i * v[i];
             }
+            rv += s1;
+            rs += s2;
+            rxv += (uint64_t)xs * s1 + s3;
         }
         sxx += rs;
         plane_row(&ps, cx, dy, x0, x1, (double)rv, (double)rxv);

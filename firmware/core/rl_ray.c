@@ -2,6 +2,7 @@
 
 #include <float.h>
 #include <math.h>
+#include "rl_clones.h"
 
 /* By rotation from the first direction: four trigonometric calls instead
  * of 2 n. */
@@ -118,6 +119,7 @@ static inline int sample_ray_v4(const rl_image *img, const rl_tone *tone, double
 }
 #endif
 
+RL_CLONES_AVX2
 int rl_ray_sample(const rl_image *img, const rl_tone *tone, double x, double y, double dx,
                   double dy, int n, int light, float *out)
 {
