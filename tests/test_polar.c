@@ -187,6 +187,22 @@ static void test_sector_levels(void **state)
                          right ? "150 on the right" : "215", k, pol.lo[k], pol.hi[k], pol.usable[k], white);
         }
     }
+    /* the brightest groups the fewest pixels: a small bright centre
+     * (215) in dimmer paper (150) past the ink (30); the white is the
+     * centre's (its groups' sums are the smallest), the black the ink's */
+    {
+        rl_image img = rl_image_view(S, S, S, px);
+        for (y = 0; y < S; y++)
+            for (x = 0; x < S; x++) {
+                double d = hypot(x - cx, y - cy);
+                px[y * S + x] = d < 0.3 * r ? 215 : d < 0.5 * r ? 30 : 150;
+            }
+        rl_polar_gather(&img, &tone, cx, cy, r, 256, 20.0, &pol);
+        for (k = 0; k < RL_SECTORS; k++)
+            if (pol.lo[k] != 36.0 || pol.hi[k] != 255.0)
+                fail_msg("bright centre: sector %d black %.3f white %.3f, by hand 36 and 255", k, pol.lo[k],
+                         pol.hi[k]);
+    }
     {
         rl_image img = rl_image_view(S, S, S, px);
         rl_polar_gather(&img, &tone, -0.5, 300.61, r, 256, 20.0, &pol);

@@ -379,7 +379,8 @@ static rl_err label(rl_label *lb, const rl_image *img, int lo, int hi, const rl_
     lb->width = img->width;
     lb->height = img->height;
     lb->n_runs = lb->n_regions = lb->overflow = lb->rows_left = 0;
-    collect_runs(lb, img, lo < 0 ? 0 : lo, hi, map);
+    /* a band past 255 is one up to 255 (its width is kept in a byte) */
+    collect_runs(lb, img, lo < 0 ? 0 : lo, hi > 256 ? 256 : hi, map);
     resolve_regions(lb, min_area);
     region_stats(lb);
     return RL_OK;

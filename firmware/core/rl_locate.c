@@ -155,7 +155,7 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
     rl_image win;
     rl_box w;
     rl_edge_window ew;
-    int thr, reg = -1, step, light = res->levels.light, code_ring;
+    int thr, reg = -1, step, light = res->levels.light, code_ring, found, from_candidate = 0;
     double ink, tx, ty, tr = R;
     if (!local_window(res, u, R, &w) ||
         rl_image_sub(img, w.x0, w.y0, w.x1 - w.x0 + 1, w.y1 - w.y0 + 1, &win) != RL_OK ||
@@ -190,15 +190,18 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
      * refines centre and radius once more) */
     tx = *cx;
     ty = *cy;
-    if (rl_edge_fit_rays(img, rec->tone, light, &tx, &ty, &tr) ||
-        rays_from_candidate(rec, img, light, u, R, &tx, &ty, &tr)) {
+    found = rl_edge_fit_rays(img, rec->tone, light, &tx, &ty, &tr);
+    if (!found)
+        found = from_candidate = rays_from_candidate(rec, img, light, u, R, &tx, &ty, &tr);
+    if (found) {
         *cx = tx;
         *cy = ty;
         *r = tr;
     } else if (code_ring) {
         return 0; /* a code ring taken for its centre: its radius is not the landmark's */
     }
-    if (code_ring) /* the outer ring's box, not the code ring's */
+    /* the outer ring's box, not the code ring's or the arc's */
+    if (code_ring || from_candidate)
         circle_box(rec->width, rec->height, *cx, *cy, *r, box);
     /* the frame's landmarks are of one size but for the lens: a wide angle
      * shrinks them towards the corners, where a circle fitted to an

@@ -22,12 +22,14 @@
 /* The outer ring of candidate u, landmarks of the frame R px in radius:
  * its box and its circle (*cx, *cy, *r) in the frame; 0 when the window,
  * the threshold, the ring or its edge is not found, or the circle is not
- * of about the frame's size. Where a code ring was taken for the centre
- * it surrounds, the circle is the outer edge found along rays from there,
- * or from the candidate's centre where none is found and the outline's
- * circle lies over half a radius from it (the region was an arc of a ring
- * motion broke; 0 when neither finds one), and the box is
- * the circle's, within the frame. */
+ * of about the frame's size. The circle is the outer edge found along
+ * rays from the centre of the region's outline, or from the candidate's
+ * centre where none is found and the outline's circle lies over half a
+ * radius from it (the region was an arc of a ring motion broke). Where a
+ * code ring was taken for the centre it surrounds, 0 when neither finds
+ * the edge. The box is the region's, or the circle's within the frame
+ * where the region was a code ring or the circle came from the
+ * candidate's centre. */
 int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *res,
                          const rl_detection *u, double R, rl_box *box, double *cx, double *cy,
                          double *r);

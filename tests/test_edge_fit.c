@@ -1,0 +1,157 @@
+/* The circle through a ring's outer edge (rl_edge_fit_rays) where a few
+ * rays find the edge out in the paper. On the moving set a motion smear
+ * put the steepest rise of 2 of a dozen rays 4-6 px out (28.2 and 30.1 px
+ * where the rest lay at 22.4-24.8): the least-squares circle through
+ * every point leaned towards them, the points a pixel off that circle
+ * were the wrong ones, and the landmark was read a twentieth too large,
+ * its code zone 1 dark (a whole 2 read as its zone twin 18 there).
+ *
+ * Drawn here: a black band from 0.8 R to R on white paper (16 subsamples
+ * a pixel, R and the centre known: a hand's truth), its outer edge a 2 px
+ * ramp (a smear) with noise, optionally uneven (R + w cos 4t, whose
+ * least-squares circle over rays evenly spread is R's), dark streaks from
+ * R out to 1.18 and 1.25 R, each on the path of one ray, and light (a
+ * lamp's glare) on the path of every other ray, so that a dozen find an
+ * edge, as on the moving frame; from a start 1 px and 4% off, the fit
+ * must land within 0.3 px of the true radius and centre. Before the fit
+ * left a few outliers out, the dozen uneven points with two streaks gave
+ * no circle (too few within a pixel of the one through all of them). */
+#include "rl_test.h"
+#include <math.h>
+#include "rl_edge.h"
+#include "rl_ray.h"
+#include "rl_tone.h"
+
+#define W 120
+#define H 110
+#define CX 57.4
+#define CY 52.7
+#define R 24.0
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+static uint8_t px[W * H];
+
+/* The rays whose path is lit (rl_ray_dirs' order), and those with a
+ * streak, and how far out it reaches. */
+static const int lit[12] = {1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23};
+static const int streaked[2] = {2, 10};
+static const double reach[2] = {1.18, 1.25};
+#define LIGHT 250
+
+/* Within 1.5 px of the line from the centre along (c, s), at distances
+ * from a to b. */
+static int on_path(double u, double v, double c, double s, double a, double b)
+{
+    double along = u * c + v * s;
+    return along >= a && along < b && fabs(u * s - v * c) < 1.5;
+}
+
+/* How much ink at (u, v) (from the centre), 0 to 1: the band, its outer
+ * edge a ramp RAMP px wide centred on R (a smear), or one of the first n
+ * streaks. */
+#define RAMP 2.0
+static double wobble; /* px: the edge at R + wobble cos 4t */
+static double ink(double u, double v, const double *c, const double *s, int n)
+{
+    double d = hypot(u, v) - wobble * cos(4 * atan2(v, u)), a;
+    int k;
+    for (k = 0; k < n; k++)
+        if (on_path(u, v, c[streaked[k]], s[streaked[k]], R, reach[k] * R))
+            return 1;
+    if (d < 0.8 * R)
+        return 0;
+    a = (R + RAMP / 2 - d) / RAMP;
+    return a < 0 ? 0 : a > 1 ? 1 : a;
+}
+
+static void draw(const double *c, const double *s, int n, int n_lit)
+{
+    uint32_t seed = 2013;
+    int x, y, i, j, k;
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            double in = 0;
+            int glare = 0, grey;
+            for (i = 0; i < 4; i++)
+                for (j = 0; j < 4; j++)
+                    in += ink(x - 0.375 + 0.25 * i - CX, y - 0.375 + 0.25 * j - CY, c, s, n);
+            for (k = 0; k < n_lit; k++)
+                glare |= on_path(x - CX, y - CY, c[lit[k]], s[lit[k]], 1.15 * R, 1.22 * R);
+            seed = seed * 1664525u + 1013904223u;
+            grey = (int)lround(210 - 170 * in / 16) + (int)(seed >> 28) - 8; /* noise: -8 .. 7 */
+            px[y * W + x] = glare ? 255 : (uint8_t)grey;
+        }
+}
+
+static void fit_within(int n_streaks, int n_lit, double wob)
+{
+    rl_image img = rl_image_view(W, H, W, px);
+    rl_tone tone;
+    double c[RL_EDGE_RAYS], s[RL_EDGE_RAYS], cx = CX + 0.7, cy = CY - 0.7, r = 1.04 * R;
+    rl_ray_dirs(RL_EDGE_RAYS, c, s);
+    wobble = wob;
+    draw(c, s, n_streaks, n_lit);
+    rl_tone_init(&tone, 1.0);
+    assert_true(rl_edge_fit_rays(&img, &tone, LIGHT, &cx, &cy, &r));
+    printf("%d streaks, %d rays lit: centre (%.2f, %.2f) radius %.2f; drawn (%.2f, %.2f) %.2f\n", n_streaks, n_lit,
+           cx, cy, r, CX, CY, R);
+    assert_true(fabs(r - R) < 0.3);
+    assert_true(hypot(cx - CX, cy - CY) < 0.3);
+}
+
+static void a_whole_ring(void **state)
+{
+    (void)state;
+    fit_within(0, 0, 0.0);
+}
+
+static void half_the_rays_lit(void **state)
+{
+    (void)state;
+    fit_within(0, 12, 0.0);
+}
+
+static void streaks_on_two_rays(void **state)
+{
+    (void)state;
+    fit_within(2, 0, 0.0);
+}
+
+static void streaks_on_two_of_a_dozen(void **state)
+{
+    (void)state;
+    fit_within(2, 12, 0.0);
+}
+
+static void an_uneven_edge(void **state)
+{
+    (void)state;
+    fit_within(0, 0, 0.9);
+}
+
+static void streaks_on_an_uneven_edge(void **state)
+{
+    (void)state;
+    fit_within(2, 0, 0.9);
+}
+
+static void streaks_on_a_dozen_uneven(void **state)
+{
+    (void)state;
+    fit_within(2, 12, 1.2);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(a_whole_ring),
+        cmocka_unit_test(half_the_rays_lit),
+        cmocka_unit_test(streaks_on_two_rays),
+        cmocka_unit_test(streaks_on_two_of_a_dozen),
+        cmocka_unit_test(an_uneven_edge),
+        cmocka_unit_test(streaks_on_an_uneven_edge),
+        cmocka_unit_test(streaks_on_a_dozen_uneven),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
