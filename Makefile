@@ -158,7 +158,7 @@ bench: host
 	  $(BUILD)/tools/ringloc-render --out $(BENCH_DIR)/drive --path circle --frames 8 --rock 0.03 --mount 0.12,-0.03,0.02; }
 	@# the demo's drive (tools/demo.sh: 15/20/20 frames a path, its mount and rocking), which a
 	@# robot's speeds can track; `drive` above (8 frames a path) moves 0.34-0.75 m a frame
-	@[ -f $(BENCH_DIR)/demodrive/circle_019.png ] || { sh tools/demo_drive.sh $(BUILD)/tools/ringloc-render \
+	@[ -f $(BENCH_DIR)/demodrive/complete ] || { rm -rf $(BENCH_DIR)/demodrive && sh tools/demo_drive.sh $(BUILD)/tools/ringloc-render \
 	  $(BENCH_DIR)/demodrive && cp $(BENCH_DIR)/demodrive/robot_true.yaml $(BENCH_DIR)/demodrive/robot.yaml; }
 	@[ -f $(BENCH_DIR)/site/random_099.png ] || { mkdir -p $(BENCH_DIR)/site && \
 	  $(BUILD)/tools/ringloc-render --write-camera $(BENCH_DIR)/site/camera.yaml \

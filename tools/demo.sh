@@ -21,7 +21,7 @@ FW=$B/firmware/app/ringloc-fw
 REN=$B/tools/ringloc-render
 mkdir -p "$OUT"
 # the drive: rendered once with its ground truth, then reused
-if [ ! -f "$DRIVE/circle_019.yaml" ] || [ ! -f "$DRIVE/robot_true.yaml" ]; then
+if [ ! -f "$DRIVE/complete" ]; then
     echo "demo: rendering the drive (55 frames with ground truth) ..."
     rm -rf "$DRIVE"
     sh tools/demo_drive.sh "$REN" "$DRIVE"

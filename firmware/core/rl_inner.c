@@ -48,10 +48,10 @@ typedef struct {
     const rl_image *img;
     double cx, cy, c, s;
     int in;
-} ray_t;
+} inner_ray;
 
 /* The pixel at rho along the ray: unchecked where the whole ray is in. */
-static int ray_grey(const ray_t *ray, double rho)
+static int ray_grey(const inner_ray *ray, double rho)
 {
     double x = ray->cx + rho * ray->c, y = ray->cy + rho * ray->s;
     return ray->in ? grey_in(ray->img, x, y) : grey_at(ray->img, x, y);
@@ -69,7 +69,8 @@ static int ray_meets(const rl_image *img, int light, double cx, double cy, doubl
     double rho;
     int ink = 256, paper = -1, mid, g = 0;
     /* past every rho sampled below: the ring's end from the farthest start */
-    const ray_t ray = {img, cx, cy, c, s, ray_in(img, cx, cy, c, s, 0.8 * r, fmax(1.2 * r, RING_END * (to + 1.0) + 2.0))};
+    const double far = fmax(1.2 * r, RING_END * (to + 1.0) + 2.0);
+    const inner_ray ray = {img, cx, cy, c, s, ray_in(img, cx, cy, c, s, 0.8 * r, far)};
     /* the candidate's own ink (outer ring) and paper (quiet zone) here */
     for (rho = 0.8 * r; rho <= 1.2 * r; rho += 1.0) {
         if ((g = ray_grey(&ray, rho)) < 0)

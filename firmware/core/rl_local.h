@@ -19,19 +19,6 @@
 
 #include "rl_recog_state.h"
 
-/* A whole candidate (its box's circle in the frame) whose first match
- * (every id at every blur at the located circle, before the search over
- * centre and radius) scores under this is read no further in the local
- * pass: no search, ellipse or read across the motion (the tracker's
- * rl_local_read reads on). On the development folders' composites no
- * whole candidate whose first match scored under 0.66 was taken (1059
- * tried, 72 taken; 612 under 0.5 failed, each with the reads after it);
- * a cut one is read at the frame's size and at its box too, and was
- * taken from first matches as low as 0.19, so it is read on. Not
- * lossless: on a held-out folder one whole landmark next to a light was
- * taken from a first match under it (docs/results.md). */
-#define RL_LOCAL_MIN_FIRST 0.5
-
 /* Retry every DUCLR of res; identified ones move from res->unidentified
  * to res->landmarks. */
 void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res);

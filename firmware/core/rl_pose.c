@@ -146,11 +146,11 @@ double rl_pose_tilt_weight(double evidence)
     return z > 40 ? 1.0 : z < -40 ? 0.0 : 1.0 / (1.0 + exp(-z));
 }
 
-/* 1 when the pose's variances in cov are numbers, not negative. */
+/* 1 when the fit's variances in cov are numbers, not negative. */
 static int variances_ok(const double *cov)
 {
     int i;
-    for (i = 0; i < 3; i++)
+    for (i = 0; i < RL_POSE_NQ; i++)
         if (!(cov[i * RL_POSE_NQ + i] >= 0 && isfinite(cov[i * RL_POSE_NQ + i])))
             return 0;
     return 1;
@@ -186,7 +186,7 @@ static int fit_pinhole(rl_pose_model *md, rl_pose_pt *pt, int m, double *q, doub
     memcpy(qt, q, sizeof qt);
     if (m >= 3) {
         md->prior = RL_POSE_TILT_WEAK;
-        solved = rl_pose_fit_solve(md, pt, m, RL_POSE_NQ, qt, covt, &chi2t);
+        solved = rl_pose_fit_solve(md, pt, m, RL_POSE_NQ, qt, covt, &chi2t) && variances_ok(covt);
         if (solved) {
             out->fit_roll = qt[3];
             out->fit_pitch = qt[4];
@@ -205,7 +205,7 @@ static int fit_pinhole(rl_pose_model *md, rl_pose_pt *pt, int m, double *q, doub
         if (!solved)
             return 0;
         w = 1;
-    } else if (solved && variances_ok(covt)) {
+    } else if (solved) {
         double unit = fmax(1.0, chi2t / fmax(1.0, 2.0 * m - RL_POSE_NQ));
         w = rl_pose_tilt_weight((*chi2 - chi2t) / unit);
     }

@@ -1,6 +1,5 @@
 #include "rl_search.h"
 
-#include <math.h>
 #include "rl_accept.h"
 
 /* Search steps: centre (px) and radius (fraction) steps of each round,
@@ -134,13 +133,6 @@ void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *i
                         const rl_tone *tone, int light, double min_score, double *cx, double *cy,
                         double *r, rl_match *m)
 {
-    rl_search_identify_over(tt, pol, img, tone, light, -INFINITY, min_score, cx, cy, r, m);
-}
-
-int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_image *img,
-                            const rl_tone *tone, int light, double min_first, double min_score, double *cx,
-                            double *cy, double *r, rl_match *m)
-{
     rl_profile p;
     int ids[LIKELY_IDS], n;
     search_state st;
@@ -148,9 +140,7 @@ int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_imag
     rl_polar_profile(pol, 0, 0, 1.0, &p);
     rl_match_all(tt, &p, m);
     if (m->id < 0)
-        return 1;
-    if (m->score < min_first)
-        return 0;
+        return;
     n = likely_ids(tt, &p, m, ids);
     rl_match_list_make(tt, ids, n, m->blur, &st.likely);
     st.x = st.y = 0;
@@ -168,5 +158,4 @@ int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_imag
     }
     if (m->id >= 0 && m->score >= min_score)
         twin_check(tt, pol, st.x, st.y, st.s, RL_POLAR_ALL, m);
-    return 1;
 }
