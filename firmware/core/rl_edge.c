@@ -126,10 +126,10 @@ int rl_edge_points(const rl_image *img, const rl_tone *tone, int light, double c
     return n;
 }
 
-/* An edge point further than this (px) off the circle through the
- * others is no point of the edge: noise or a motion smear put the
- * steepest rise out in the paper (traced on the moving set: 28.2 and 30.1
- * px among a dozen at 22.4-24.8). */
+/* An edge point further than this (px) off the circle through the points
+ * kept, itself included, is no point of the edge: noise or a motion smear
+ * put the steepest rise out in the paper (traced on the moving set: 28.2
+ * and 30.1 px among a dozen at 22.4-24.8). */
 #define EDGE_OUTLIER_PX 3.0
 
 /* The least-squares circle through the points use[] keeps; 0 when none. */
@@ -146,8 +146,9 @@ static int fit_used(const double *ex, const double *ey, const unsigned char *use
 }
 
 /* The least-squares circle through the n points with at most n /
- * EDGE_FEW_OUTLIERS of them left out, the farthest off the circle through
- * the rest one at a time while it lies over EDGE_OUTLIER_PX off; through
+ * EDGE_FEW_OUTLIERS of them left out, one at a time the farthest off the
+ * circle through the points kept (itself included) while it lies over
+ * EDGE_OUTLIER_PX off; through
  * all of them when more would go (points that far apart are no circle
  * and a few outliers, and the gate after the fit decides as before). 0
  * when no circle. A least-squares circle through a gross outlier leans
@@ -189,25 +190,17 @@ static int fit_few_outliers(const double *ex, const double *ey, int n, double *c
     return 1;
 }
 
-int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy,
-                     double *r)
+int rl_edge_fit_points(const double *ex, const double *ey, int n, int few_outliers, double *cx, double *cy,
+                       double *r)
 {
-    double ex[RL_EDGE_RAYS], ey[RL_EDGE_RAYS], ncx = 0, ncy = 0, nr = 0;
+    double ncx = 0, ncy = 0, nr = 0;
     unsigned char use[RL_EDGE_RAYS];
-    int n = rl_edge_points(img, tone, light, *cx, *cy, *r, ex, ey), i;
-    if (n < RL_EDGE_RAYS / 4)
+    int i;
+    if (n < RL_EDGE_RAYS / 4 || n > RL_EDGE_RAYS)
         return 0;
     for (i = 0; i < n; i++)
         use[i] = 1;
-    /* a few outliers left out (a whole 2 of the moving set, two of its
-     * dozen points 4-6 px out, read a twentieth too large, its twin 18
-     * leading) only where the start's circle lies wholly in the frame: an
-     * arc the border cuts fixes the circle loosely, and leaving its
-     * farthest point out let the circle wander (2 cut landmarks of the
-     * held-out moving set lost) */
-    if (!(rl_geom_disk_complete(img->width, img->height, *cx, *cy, *r)
-              ? fit_few_outliers(ex, ey, n, &ncx, &ncy, &nr)
-              : fit_used(ex, ey, use, n, &ncx, &ncy, &nr)))
+    if (!(few_outliers ? fit_few_outliers(ex, ey, n, &ncx, &ncy, &nr) : fit_used(ex, ey, use, n, &ncx, &ncy, &nr)))
         return 0;
     for (i = 0; i < n; i++)
         use[i] = fabs(hypot(ex[i] - ncx, ey[i] - ncy) - nr) < 1.0;
@@ -218,4 +211,18 @@ int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double
     *cy = ncy;
     *r = nr;
     return 1;
+}
+
+int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy,
+                     double *r)
+{
+    double ex[RL_EDGE_RAYS], ey[RL_EDGE_RAYS];
+    int n = rl_edge_points(img, tone, light, *cx, *cy, *r, ex, ey);
+    /* a few outliers left out (a whole 2 of the moving set, two of its
+     * dozen points 4-6 px out, read a twentieth too large, its twin 18
+     * leading) only where the start's circle lies wholly in the frame: an
+     * arc the border cuts fixes the circle loosely, and leaving its
+     * farthest point out let the circle wander (2 cut landmarks of the
+     * held-out moving set lost) */
+    return rl_edge_fit_points(ex, ey, n, rl_geom_disk_complete(img->width, img->height, *cx, *cy, *r), cx, cy, r);
 }

@@ -53,10 +53,18 @@ int rl_edge_points(const rl_image *img, const rl_tone *tone, int light, double c
  * rays from (*cx, *cy): on each ray the edge is the steepest rise after
  * the ring's black (a smooth glare gradient adds a constant slope, which
  * moves a level crossing but hardly the gradient's peak). Rays that leave
- * the image or run into light are skipped; a circle is fitted to the edge
- * points, points far off it are dropped, it is fitted again and finished
- * geometrically. 1 on success (frame coordinates). */
+ * the image or run into light are skipped; then rl_edge_fit_points, with
+ * a few outliers left out where the circle (*cx, *cy, *r) lies wholly in
+ * the frame. 1 on success (frame coordinates). */
 int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy,
                      double *r);
+
+/* The circle through n edge points (RL_EDGE_RAYS / 4 .. RL_EDGE_RAYS): a
+ * least-squares circle (few_outliers: with up to a sixth of the points
+ * left out, one at a time the farthest while over 3 px off the circle
+ * through the points kept, itself included), the points over 1 px off it
+ * dropped, fitted again and finished geometrically. 1 on success. */
+int rl_edge_fit_points(const double *ex, const double *ey, int n, int few_outliers, double *cx, double *cy,
+                       double *r);
 
 #endif
