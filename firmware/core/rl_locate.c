@@ -126,7 +126,8 @@ static void circle_box(int W, int H, double cx, double cy, double r, rl_box *box
 
 /* The grey outer edge along rays from the candidate's own centre, at the
  * frame's radius R, where the circle of the region's outline (*cx, *cy
- * on entry) lies more than ARC_OFF radii from it; 1 when found (into
+ * on entry, its radius outline_r) lies more than ARC_OFF radii from it or
+ * is over ARC_LARGE times its size; 1 when found (into
  * *cx, *cy, *r). Where motion broke the outer ring into arcs, the region
  * taken for the ring (or, under RING_MIN_SIZE, for the code ring) is an
  * arc, and the circle of its outline can sit a landmark's width away
@@ -135,12 +136,16 @@ static void circle_box(int W, int H, double cx, double cy, double r, rl_box *box
  * right): no ray from there finds the edge. A circle nearer the
  * candidate is the ring's own; trying the candidate's centre there too
  * located a few more (5 of 27 on the bench's moving frames) that no read
- * then took, at 5-10% of the local pass's time. */
+ * then took, at 5-10% of the local pass's time. An outline's circle half
+ * again as large as the landmark is no ring's either, however near it
+ * lies (a whole 12 of the sanitizer build's moving set, 4.9 px of motion:
+ * 44 px about a point 10 px from the candidate). */
 #define ARC_OFF 0.5
+#define ARC_LARGE 1.5
 static int rays_from_candidate(const rl_recog *rec, const rl_image *img, int light, const rl_detection *u,
-                               double R, double *cx, double *cy, double *r)
+                               double R, double outline_r, double *cx, double *cy, double *r)
 {
-    if (hypot(*cx - u->u, *cy - u->v) <= ARC_OFF * R)
+    if (hypot(*cx - u->u, *cy - u->v) <= ARC_OFF * R && outline_r <= ARC_LARGE * R)
         return 0;
     *cx = u->u;
     *cy = u->v;
@@ -192,7 +197,7 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
     ty = *cy;
     found = rl_edge_fit_rays(img, rec->tone, light, &tx, &ty, &tr);
     if (!found)
-        found = from_candidate = rays_from_candidate(rec, img, light, u, R, &tx, &ty, &tr);
+        found = from_candidate = rays_from_candidate(rec, img, light, u, R, *r, &tx, &ty, &tr);
     if (found) {
         *cx = tx;
         *cy = ty;
