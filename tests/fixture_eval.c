@@ -5,6 +5,17 @@
 #include <string.h>
 #include "rl_yaml.h"
 
+int truth_load_frame(const char *dir, const char *set, int k, truth *t)
+{
+    char yaml[1200];
+    FILE *f;
+    snprintf(yaml, sizeof yaml, "%s/%s_%03d.yaml", dir, set, k);
+    if ((f = fopen(yaml, "r")) == NULL)
+        return 0;
+    fclose(f);
+    return truth_load(yaml, t) == 0 ? 1 : -1;
+}
+
 int truth_load(const char *yaml, truth *t)
 {
     rl_yaml y;

@@ -37,6 +37,10 @@ typedef struct {
 /* Load NAME.yaml next to NAME.png; 0 on success, else prints why. */
 int truth_load(const char *yaml, truth *t);
 
+/* Frame k of SET in DIR (DIR/SET_NNN.yaml): 1 loaded, 0 when there is no
+ * such frame (a set's end), -1 when its YAML does not load. */
+int truth_load_frame(const char *dir, const char *set, int k, truth *t);
+
 /* The complete landmarks of each id seen, and how many identified, as
  * one line ("  per id: 1 12/12, 2 9/10 ..."); the worst id's rate (1
  * when none was seen), its id in *worst. */

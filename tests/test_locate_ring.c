@@ -96,14 +96,11 @@ static void every_ring_located(void **state)
     rl_heap_recog_init(&hr, &cfg);
     for (s = 0; s < n_sets; s++)
         for (k = 0;; k++) {
-            char yaml[1200];
             truth t;
-            FILE *f;
-            snprintf(yaml, sizeof yaml, "%s/%s_%03d.yaml", dir, sets[s], k);
-            if ((f = fopen(yaml, "r")) == NULL)
+            int got = truth_load_frame(dir, sets[s], k, &t);
+            if (got == 0)
                 break;
-            fclose(f);
-            assert_int_equal(truth_load(yaml, &t), 0);
+            assert_int_equal(got, 1);
             frame_rings(&hr, &t, &c);
         }
     rl_heap_recog_free(&hr);
