@@ -5,7 +5,9 @@
 // nothing. Exposure and gain: automatic (AeEnable), or manual
 // (ExposureTime, AnalogueGain) as configured. The capture time is the
 // request's SensorTimestamp (CLOCK_MONOTONIC, as rl_clock). Built only
-// where libcamera is found (hal/CMakeLists.txt).
+// where libcamera is found, as the module ringloc-libcamera.so that
+// cam_libcamera_load.c loads on first use (hal/CMakeLists.txt); its two
+// entry points are all it exports.
 #include <libcamera/libcamera.h>
 #include <sys/mman.h>
 #include <chrono>
@@ -20,6 +22,7 @@
 #include <vector>
 
 extern "C" {
+#include "cam_libcamera.h"
 #include "rl_cam.h"
 }
 
@@ -140,7 +143,8 @@ rl_err fail(rl_cam *c, State *s, char *err, size_t errlen, rl_err e, const char 
 
 } // namespace
 
-extern "C" rl_err rl_cam_open_libcamera(rl_cam *c, const rl_cam_config *cc, char *err, size_t errlen)
+extern "C" RL_MODULE_EXPORT rl_err rl_cam_libcamera_open(rl_cam *c, const rl_cam_config *cc, char *err,
+                                                         size_t errlen)
 {
     /* libcamera logs every camera manager start at INFO; the run loop
      * reopens with backoff and rate-limits its own lines, so keep
@@ -240,8 +244,8 @@ extern "C" rl_err rl_cam_open_libcamera(rl_cam *c, const rl_cam_config *cc, char
     return RL_OK;
 }
 
-extern "C" rl_err rl_cam_probe_libcamera(const rl_cam_config *cc, rl_cam_line_fn line, void *ctx, char *err,
-                                         size_t errlen)
+extern "C" RL_MODULE_EXPORT rl_err rl_cam_libcamera_probe(const rl_cam_config *cc, rl_cam_line_fn line,
+                                                          void *ctx, char *err, size_t errlen)
 {
     setenv("LIBCAMERA_LOG_LEVELS", "*:ERROR", 0);
     CameraManager cm;

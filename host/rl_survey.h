@@ -120,9 +120,14 @@ RL_CHECK rl_err rl_survey_add_frame(rl_survey *sv, const char *name, const rl_su
  * the origin or the axis landmark was never placed (err says which). */
 RL_CHECK rl_err rl_survey_build(rl_survey *sv);
 
-/* The joint robust fit and the covariances (rl_survey_adjust.cpp).
- * RL_ERANGE when the solver fails or the result is not finite. */
+/* The joint robust fit and the covariances: rl_survey_adjust_ceres
+ * (rl_survey_adjust.cpp), in the module ringloc-ceres.so that this loads
+ * on first use (rl_survey_adjust_load.c). RL_ERANGE when the solver fails
+ * or the result is not finite, RL_EUNSUPPORTED when the module cannot be
+ * loaded (err says why). */
 RL_CHECK rl_err rl_survey_adjust(rl_survey *sv);
+#define RL_SURVEY_CERES_MODULE "ringloc-ceres.so"
+typedef rl_err (*rl_survey_adjust_fn)(rl_survey *sv);
 
 void rl_survey_free(rl_survey *sv);
 

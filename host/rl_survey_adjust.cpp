@@ -14,6 +14,7 @@
 #include <vector>
 
 extern "C" {
+#include "rl_module.h"
 #include "rl_pose_fit.h"
 #include "rl_survey.h"
 }
@@ -354,7 +355,7 @@ int off_plane(rl_survey *sv, Params &p, ceres::LossFunction *loss)
 
 } // namespace
 
-extern "C" rl_err rl_survey_adjust(rl_survey *sv)
+extern "C" RL_MODULE_EXPORT rl_err rl_survey_adjust_ceres(rl_survey *sv)
 {
     Params p;
     p.q.assign(5 * (size_t)sv->n_fr, 0.0);

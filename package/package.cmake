@@ -29,6 +29,15 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION share/doc/ringloc/docs
 # the web view's drop-in for the unit (network for http:), copied by hand
 install(FILES ${PROJECT_SOURCE_DIR}/package/ringloc-web.conf DESTINATION share/doc/ringloc COMPONENT firmware)
 install(TARGETS ringloc RUNTIME DESTINATION bin COMPONENT tools)
+# the modules loaded on first use (hal/rl_module.h), in /usr/lib/ringloc:
+# the camera's with the robot's package, the survey's with the tools
+set_target_properties(ringloc-fw ringloc PROPERTIES INSTALL_RPATH "$ORIGIN/../lib/ringloc")
+if(TARGET ringloc-libcamera)
+  install(TARGETS ringloc-libcamera LIBRARY DESTINATION lib/ringloc COMPONENT firmware)
+endif()
+if(TARGET ringloc-ceres)
+  install(TARGETS ringloc-ceres LIBRARY DESTINATION lib/ringloc COMPONENT tools)
+endif()
 
 # `ringloc-fuse`, what a controller computer installs to build against
 # rl_fuse (issue 27): the library, static and shared, its three headers

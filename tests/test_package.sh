@@ -41,10 +41,30 @@ readelf -d "$T/root/usr/bin/ringloc-fw" >"$T/needed" 2>&1
 check "ringloc-fw links libpng, libyaml and libturbojpeg" sh -c "grep -q 'libpng' '$T/needed' && grep -q 'libyaml' '$T/needed' && grep -q 'libturbojpeg' '$T/needed'"
 check "the web view's library, when linked, is declared" sh -c "! grep -q libmicrohttpd '$T/needed' || grep -qE '^Depends: .*libmicrohttpd12' '$T/control'"
 check "ringloc-fw links neither cairo nor OpenCV" sh -c "! grep -qiE 'cairo|opencv' '$T/needed'"
+check "ringloc-fw's run path is its package's module folder, not the build tree" sh -c \
+    "grep -q 'R.*PATH.*\[\$ORIGIN/../lib/ringloc\]' '$T/needed' && ! grep -qF '$B' '$T/needed'"
+if grep -q '\./usr/lib/ringloc/ringloc-libcamera.so$' "$T/files"; then
+    check "ringloc-fw links no libcamera (its module does)" sh -c "! grep -q 'NEEDED.*libcamera' '$T/needed'"
+    if [ "$ARCH" = "$(dpkg --print-architecture)" ]; then
+        # the unpacked package's own module, found beside its binary
+        printf 'camera:\n  backend: libcamera\n  device: "0"\nserial:\n  device: /dev/null\n  baud: 115200\ncalibration: c.yaml\nmap: m.yaml\nrobot: r.yaml\n' >"$T/lc.yaml"
+        "$T/root/usr/bin/ringloc-fw" --config "$T/lc.yaml" --probe >/dev/null 2>"$T/lc.err"; rc=$?
+        check "the unpacked ringloc-fw loads its libcamera module" sh -c \
+            "[ $rc = 0 ] || grep -q 'camera: libcamera camera' '$T/lc.err'"
+    fi
+fi
 tools=$(ls "$T"/out/ringloc-tools_*_"$ARCH".deb 2>/dev/null | head -1)
 check "a ringloc-tools_*_$ARCH.deb is built" test -f "$tools"
 check "the tools package has the ringloc command" sh -c "dpkg-deb -c '$tools' | grep -q '\./usr/bin/ringloc$'"
 check "the tools package declares cairo" sh -c "dpkg-deb -f '$tools' Depends | grep -q libcairo2"
+dpkg-deb -c "$tools" >"$T/tools_files" 2>/dev/null
+if grep -q '\./usr/lib/ringloc/ringloc-ceres.so$' "$T/tools_files"; then
+    mkdir -p "$T/tools"
+    dpkg-deb -x "$tools" "$T/tools" 2>/dev/null
+    check "ringloc finds the survey's module beside it and links no Ceres" sh -c \
+        "readelf -d '$T/tools/usr/bin/ringloc' | grep -q 'R.*PATH.*\[\$ORIGIN/../lib/ringloc\]' &&
+         ! readelf -d '$T/tools/usr/bin/ringloc' | grep -q 'NEEDED.*ceres'"
+fi
 # the controller's package (issue 27): rl_fuse to build against, checked by
 # building its header's usage example through its pkg-config file
 fuse=$(ls "$T"/out/ringloc-fuse_*_"$ARCH".deb 2>/dev/null | head -1)
