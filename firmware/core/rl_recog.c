@@ -142,6 +142,8 @@ static void resolve_config(rl_recog *rec, const rl_recog_config *cfg, int w, int
     rec->tone = rl_tones_current(&rec->tones);
     rec->width = w;
     rec->height = h;
+    rec->local_min_first = RL_LOCAL_MIN_FIRST;
+    rec->local_floored = 0;
 }
 
 rl_err rl_recog_init(rl_recog **out, const rl_recog_config *cfg, int w, int h, void *mem,

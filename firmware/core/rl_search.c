@@ -1,5 +1,6 @@
 #include "rl_search.h"
 
+#include <math.h>
 #include "rl_accept.h"
 
 /* Search steps: centre (px) and radius (fraction) steps of each round,
@@ -133,20 +134,30 @@ void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *i
                         const rl_tone *tone, int light, double min_score, double *cx, double *cy,
                         double *r, rl_match *m)
 {
+    (void)rl_search_identify_over(tt, pol, img, tone, light, -INFINITY, min_score, cx, cy, r, m);
+}
+
+int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_image *img,
+                            const rl_tone *tone, int light, double min_first, double min_score, double *cx,
+                            double *cy, double *r, rl_match *m)
+{
     rl_profile p;
     int ids[LIKELY_IDS], n;
     search_state st;
+    double sweep;
     rl_polar_gather(img, tone, *cx, *cy, *r, light, SECTOR_MIN_CONTRAST, pol);
     rl_polar_profile(pol, 0, 0, 1.0, &p);
     rl_match_all(tt, &p, m);
     if (m->id < 0)
-        return;
+        return 1;
     n = likely_ids(tt, &p, m, ids);
     rl_match_list_make(tt, ids, n, m->blur, &st.likely);
     st.x = st.y = 0;
     st.s = 1.0;
     st.score = m->score;
-    search_try(pol, &st, 0, 0, SWEEP_SCALE);
+    sweep = search_try(pol, &st, 0, 0, SWEEP_SCALE);
+    if (m->score < min_first && sweep < min_first)
+        return 0; /* neither the circle nor the step out matches any id closely */
     search_crosses(pol, &st);
     if (st.x != 0 || st.y != 0 || st.s != 1.0) {
         /* every id at every blur where the search ended (its profile as
@@ -158,4 +169,5 @@ void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *i
     }
     if (m->id >= 0 && m->score >= min_score)
         twin_check(tt, pol, st.x, st.y, st.s, RL_POLAR_ALL, m);
+    return 1;
 }

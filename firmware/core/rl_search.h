@@ -41,6 +41,16 @@ void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *i
                         const rl_tone *tone, int light, double min_score, double *cx, double *cy,
                         double *r, rl_match *m);
 
+/* rl_search_identify that reads no further where neither the first match
+ * (every id at every blur at (*cx, *cy, *r) as given) nor the search's
+ * first step (its likely ids at that blur, the radius 1.06 times
+ * larger: the step for edge fits glare makes short) scores min_first: 0
+ * then, the first match in *m and the circle unchanged; else 1 and the
+ * whole search (also when nothing matched, m->id < 0). */
+int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_image *img,
+                            const rl_tone *tone, int light, double min_first, double min_score, double *cx,
+                            double *cy, double *r, rl_match *m);
+
 /* The match of the candidate pol holds, at (cx, cy, r) after
  * rl_search_identify, read along one axis at a time: across a motion the
  * rings are sharp and the code plain where the full circle averages it

@@ -1,0 +1,121 @@
+/* Issue 43: the local pass reads a whole candidate no further when
+ * neither its first match nor the search's step out (radius x1.06)
+ * scores RL_LOCAL_MIN_FIRST (rl_local.h). That floor must lose nothing.
+ *
+ *   test_local_floor DIR SET...   the renderer's SET_NNN frames in DIR,
+ *       each read twice by the whole recognizer, the floor on and off (two
+ *       recognizers, each over the frames in order): every landmark of the
+ *       renderer's truth that the run without the floor reports with its
+ *       true id (within half a radius of its true centre) the run with it
+ *       reports too, and no reported landmark sits on a true one of another
+ *       id. The floor must have stopped candidates on these sets (a test
+ *       of a floor that never acts would pass whatever it is).
+ */
+#include "rl_test.h"
+#include <math.h>
+#include "fixture_eval.h"
+#include "rl_heap_recog.h"
+#include "rl_png.h"
+#include "rl_recog_state.h"
+#include "rl_result.h"
+
+static const char *dir;
+static const char *const *sets;
+static int n_sets;
+
+typedef struct {
+    int read_off, read_on, lost, wrong;
+    long floored; /* candidates the floor stopped */
+} floor_counts;
+
+/* The id reported within half a radius of true landmark l, -1 if none. */
+static int id_at(const rl_result *res, const truth_landmark *l)
+{
+    int i;
+    for (i = 0; i < res->n_landmarks; i++)
+        if (hypot(res->landmarks[i].u - l->u, res->landmarks[i].v - l->v) < 0.5 * l->radius)
+            return res->landmarks[i].id;
+    return -1;
+}
+
+static void frame_both(rl_heap_recog *on, rl_heap_recog *off, const truth *t, floor_counts *c)
+{
+    static rl_result ron, roff;
+    char png[1200], err[512];
+    rl_image img;
+    long before;
+    int j;
+    snprintf(png, sizeof png, "%s/%s", dir, t->image);
+    if (rl_png_read_gray(png, &img, err, sizeof err) != RL_OK)
+        fail_msg("%s", err);
+    /* made for the frame's size first: a recognizer made anew starts with
+     * the floor on and its count at 0 */
+    assert_int_equal(rl_heap_recog_prepare(on, img.width, img.height), RL_OK);
+    assert_int_equal(rl_heap_recog_prepare(off, img.width, img.height), RL_OK);
+    off->rec->local_min_first = -INFINITY;
+    before = on->rec->local_floored;
+    assert_int_equal(rl_heap_recog_run(on, &img, &ron), RL_OK);
+    assert_int_equal(rl_heap_recog_run(off, &img, &roff), RL_OK);
+    c->floored += on->rec->local_floored - before;
+    assert_true(off->rec->local_floored == 0);
+    for (j = 0; j < t->n; j++) {
+        const truth_landmark *l = &t->lm[j];
+        int a = id_at(&roff, l), b = id_at(&ron, l);
+        c->read_off += a == l->id;
+        c->read_on += b == l->id;
+        if (a == l->id && b != l->id) {
+            c->lost++;
+            printf("%s: the %d at (%.1f, %.1f) read without the floor, %d with it\n", t->image, l->id, l->u, l->v, b);
+        }
+        if (b >= 0 && b != l->id) {
+            c->wrong++;
+            printf("%s: the %d at (%.1f, %.1f) read as %d with the floor\n", t->image, l->id, l->u, l->v, b);
+        }
+    }
+    rl_png_free(&img);
+}
+
+static void floor_loses_nothing(void **state)
+{
+    rl_recog_config cfg;
+    rl_heap_recog on, off;
+    floor_counts c;
+    int s, k;
+    (void)state;
+    memset(&c, 0, sizeof c);
+    rl_recog_defaults(&cfg);
+    rl_heap_recog_init(&on, &cfg);
+    rl_heap_recog_init(&off, &cfg);
+    for (s = 0; s < n_sets; s++)
+        for (k = 0;; k++) {
+            truth t;
+            int got = truth_load_frame(dir, sets[s], k, &t);
+            if (got == 0)
+                break;
+            assert_int_equal(got, 1);
+            frame_both(&on, &off, &t, &c);
+        }
+    rl_heap_recog_free(&on);
+    rl_heap_recog_free(&off);
+    printf("read right: %d without the floor, %d with it (%ld candidates stopped); %d lost, %d wrong\n",
+           c.read_off, c.read_on, c.floored, c.lost, c.wrong);
+    assert_true(c.read_off >= 100);
+    assert_true(c.floored > 0);
+    assert_int_equal(c.lost, 0);
+    assert_int_equal(c.wrong, 0);
+}
+
+int main(int argc, char **argv)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(floor_loses_nothing),
+    };
+    if (argc < 3) {
+        fprintf(stderr, "usage: test_local_floor DIR SET...\n");
+        return 2;
+    }
+    dir = argv[1];
+    sets = (const char *const *)(argv + 2);
+    n_sets = argc - 2;
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
