@@ -251,8 +251,8 @@ int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double
     int n = edge_points(img, tone, light, *cx, *cy, *r, ex, ey, &found);
     /* a few outliers left out (a whole 2 of the moving set, two of its
      * dozen points 4-6 px out, read a twentieth too large, its twin 18
-     * leading) only where the rays that found the edge go round it, no
-     * gap between them over EDGE_FEW_GAP rays: an arc (the border or a
+     * leading) only where the rays that found the edge go round it, with
+     * fewer than EDGE_FEW_GAP in a row without one: an arc (the border or a
      * lamp's glare hides the rest) fixes the circle loosely, and leaving
      * its farthest point out let the circle wander (2 cut landmarks of
      * the held-out moving set lost) */
