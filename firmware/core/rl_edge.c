@@ -1,8 +1,8 @@
 #include "rl_edge.h"
 
 #include <math.h>
+#include <stdint.h>
 #include "rl_circle.h"
-#include "rl_geom.h"
 #include "rl_ray.h"
 
 int rl_edge_fit_outline(const rl_label *lb, int reg, const rl_edge_window *w, int thr,
@@ -109,21 +109,43 @@ static double ray_edge(const rl_image *img, const rl_tone *tone, int light, doub
     return r0 + at * step;
 }
 
-int rl_edge_points(const rl_image *img, const rl_tone *tone, int light, double cx, double cy,
-                   double r, double *ex, double *ey)
+/* rl_edge_points, and in *found a bit for each ray that found the edge. */
+static int edge_points(const rl_image *img, const rl_tone *tone, int light, double cx, double cy, double r,
+                       double *ex, double *ey, uint64_t *found)
 {
     double dc[RL_EDGE_RAYS], ds[RL_EDGE_RAYS];
     int a, n = 0;
     rl_ray_dirs(RL_EDGE_RAYS, dc, ds);
+    *found = 0;
     for (a = 0; a < RL_EDGE_RAYS; a++) {
         double rr = ray_edge(img, tone, light, cx, cy, r, dc[a], ds[a]);
         if (rr < 0)
             continue;
         ex[n] = cx + rr * dc[a];
         ey[n] = cy + rr * ds[a];
+        *found |= (uint64_t)1 << a;
         n++;
     }
     return n;
+}
+
+int rl_edge_points(const rl_image *img, const rl_tone *tone, int light, double cx, double cy,
+                   double r, double *ex, double *ey)
+{
+    uint64_t found;
+    return edge_points(img, tone, light, cx, cy, r, ex, ey, &found);
+}
+
+/* Whether fewer than `gap` rays in a row (around the circle) found no
+ * edge: the misses' bits twice over, shifted onto themselves gap - 1 times
+ * (a bit stays set where a miss is followed by gap - 1 more). */
+static int misses_under(uint64_t found, int gap)
+{
+    uint64_t all = ((uint64_t)1 << RL_EDGE_RAYS) - 1, miss = ~found & all, d = miss | (miss << RL_EDGE_RAYS);
+    int k;
+    for (k = 1; k < gap && d; k++)
+        d &= d >> 1;
+    return d == 0;
 }
 
 /* An edge point further than this (px) off the circle through the points
@@ -195,34 +217,44 @@ int rl_edge_fit_points(const double *ex, const double *ey, int n, int few_outlie
 {
     double ncx = 0, ncy = 0, nr = 0;
     unsigned char use[RL_EDGE_RAYS];
-    int i;
+    int i, kept = 0;
     if (n < RL_EDGE_RAYS / 4 || n > RL_EDGE_RAYS)
         return 0;
     for (i = 0; i < n; i++)
         use[i] = 1;
     if (!(few_outliers ? fit_few_outliers(ex, ey, n, &ncx, &ncy, &nr) : fit_used(ex, ey, use, n, &ncx, &ncy, &nr)))
         return 0;
-    for (i = 0; i < n; i++)
+    for (i = 0; i < n; i++) {
         use[i] = fabs(hypot(ex[i] - ncx, ey[i] - ncy) - nr) < 1.0;
+        kept += use[i];
+    }
     if (!fit_used(ex, ey, use, n, &ncx, &ncy, &nr))
         return 0;
     rl_circle_refine(ex, ey, n, &ncx, &ncy, &nr);
     *cx = ncx;
     *cy = ncy;
     *r = nr;
-    return 1;
+    return kept;
 }
+
+/* The few-outlier step's arc: rays in a row without an edge, fewer than
+ * this (the largest gap between rays with one under 105 degrees; a circle
+ * the frame's border cuts has six or more, from 7.5 degrees either side
+ * of the border's normal out to 37.5, below 60 px of radius). */
+#define EDGE_FEW_GAP 6
 
 int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy,
                      double *r)
 {
     double ex[RL_EDGE_RAYS], ey[RL_EDGE_RAYS];
-    int n = rl_edge_points(img, tone, light, *cx, *cy, *r, ex, ey);
+    uint64_t found;
+    int n = edge_points(img, tone, light, *cx, *cy, *r, ex, ey, &found);
     /* a few outliers left out (a whole 2 of the moving set, two of its
      * dozen points 4-6 px out, read a twentieth too large, its twin 18
-     * leading) only where the start's circle lies wholly in the frame: an
-     * arc the border cuts fixes the circle loosely, and leaving its
-     * farthest point out let the circle wander (2 cut landmarks of the
-     * held-out moving set lost) */
-    return rl_edge_fit_points(ex, ey, n, rl_geom_disk_complete(img->width, img->height, *cx, *cy, *r), cx, cy, r);
+     * leading) only where the rays that found the edge go round it, with
+     * fewer than EDGE_FEW_GAP in a row without one: an arc (the border or a
+     * lamp's glare hides the rest) fixes the circle loosely, and leaving
+     * its farthest point out let the circle wander (2 cut landmarks of
+     * the held-out moving set lost) */
+    return rl_edge_fit_points(ex, ey, n, misses_under(found, EDGE_FEW_GAP), cx, cy, r);
 }

@@ -54,8 +54,10 @@ int rl_edge_points(const rl_image *img, const rl_tone *tone, int light, double c
  * the ring's black (a smooth glare gradient adds a constant slope, which
  * moves a level crossing but hardly the gradient's peak). Rays that leave
  * the image or run into light are skipped; then rl_edge_fit_points, with
- * a few outliers left out where the circle (*cx, *cy, *r) lies wholly in
- * the frame. 1 on success (frame coordinates). */
+ * a few outliers left out where the rays that found the edge go round it
+ * (no gap of 105 degrees or more between two of them). On success
+ * (frame coordinates) the number of edge points within a pixel of the
+ * circle (at least 5), 0 when none. */
 int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy,
                      double *r);
 
@@ -63,7 +65,8 @@ int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double
  * least-squares circle (few_outliers: with up to a sixth of the points
  * left out, one at a time the farthest while over 3 px off the circle
  * through the points kept, itself included), the points over 1 px off it
- * dropped, fitted again and finished geometrically. 1 on success. */
+ * dropped, fitted again and finished geometrically. The number of
+ * points kept (those within the pixel, at least 5), 0 when none. */
 int rl_edge_fit_points(const double *ex, const double *ey, int n, int few_outliers, double *cx, double *cy,
                        double *r);
 

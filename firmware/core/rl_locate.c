@@ -142,6 +142,14 @@ static void circle_box(int W, int H, double cx, double cy, double r, rl_box *box
  * 44 px about a point 10 px from the candidate). */
 #define ARC_OFF 0.5
 #define ARC_LARGE 1.5
+/* ... and the circle found from there is taken only where at least this
+ * many of the 24 rays' edge points lie within a pixel of it: the broken
+ * rings of the moving set give 10, 12 and 18; over the moving, cluttered,
+ * clutter_only, glare, motion and border sets the fallback found 13
+ * circles that are no landmark (clutter, fixtures, the paper's corners),
+ * 12 of them through 5-8 points (one of 11, clutter_only), each then a
+ * local read that no rule took. */
+#define ARC_MIN_POINTS 9
 static int rays_from_candidate(const rl_recog *rec, const rl_image *img, int light, const rl_detection *u,
                                double R, double outline_r, double *cx, double *cy, double *r)
 {
@@ -150,7 +158,7 @@ static int rays_from_candidate(const rl_recog *rec, const rl_image *img, int lig
     *cx = u->u;
     *cy = u->v;
     *r = R;
-    return rl_edge_fit_rays(img, rec->tone, light, cx, cy, r);
+    return rl_edge_fit_rays(img, rec->tone, light, cx, cy, r) >= ARC_MIN_POINTS;
 }
 
 int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *res,
