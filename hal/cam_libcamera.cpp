@@ -143,6 +143,11 @@ rl_err fail(rl_cam *c, State *s, char *err, size_t errlen, rl_err e, const char 
 
 } // namespace
 
+extern "C" RL_MODULE_EXPORT unsigned long rl_module_abi(void)
+{
+    return RL_CAM_LIBCAMERA_ABI;
+}
+
 extern "C" RL_MODULE_EXPORT rl_err rl_cam_libcamera_open(rl_cam *c, const rl_cam_config *cc, char *err,
                                                          size_t errlen)
 {

@@ -4,26 +4,48 @@
 #include <stdio.h>
 #include <string.h>
 
-rl_err rl_module_symbol(const char *file, const char *symbol, void (**fn)(void), char *err, size_t errlen)
+/* The module's symbol, or NULL with why (the loader's words). */
+static void *find(void *h, const char *symbol, const char **why)
 {
     void *sym;
-    void *h = dlopen(file, RTLD_NOW | RTLD_LOCAL);
-    const char *why;
-    *fn = NULL;
-    if (h == NULL) {
-        why = dlerror();
-        snprintf(err, errlen, "cannot load the module %s (it is installed in lib/ringloc beside the "
-                              "program): %s", file, why ? why : "unknown reason");
-        return RL_EUNSUPPORTED;
-    }
     dlerror();
     sym = dlsym(h, symbol);
-    if (sym == NULL) {
+    if (sym == NULL)
+        *why = dlerror();
+    return sym;
+}
+
+rl_err rl_module_symbol(const rl_module *m, const char *symbol, void (**fn)(void), char *err, size_t errlen)
+{
+    char path[256];
+    const char *why = NULL;
+    void *h, *sym;
+    rl_module_abi_fn abi;
+    *fn = NULL;
+    /* $ORIGIN: the program's own folder, links resolved (ld.so) */
+    snprintf(path, sizeof path, "$ORIGIN/../lib/ringloc/%s", m->file);
+    if ((h = dlopen(path, RTLD_NOW | RTLD_LOCAL)) == NULL) {
         why = dlerror();
-        snprintf(err, errlen, "module %s has no %s: %s", file, symbol, why ? why : "no such symbol");
+        snprintf(err, errlen, "%s cannot be loaded from lib/ringloc/%s next to the program's folder: %s", m->what,
+                 m->file, why ? why : "unknown reason");
         return RL_EUNSUPPORTED;
     }
-    /* POSIX: a function's address from dlsym may be read as one */
+    if ((sym = find(h, "rl_module_abi", &why)) == NULL) {
+        snprintf(err, errlen, "%s (lib/ringloc/%s) is not a ringloc module: %s", m->what, m->file,
+                 why ? why : "no rl_module_abi");
+        return RL_EUNSUPPORTED;
+    }
+    memcpy(&abi, &sym, sizeof sym); /* POSIX: dlsym's address read as a function's */
+    if (abi() != m->abi) {
+        snprintf(err, errlen, "%s (lib/ringloc/%s) was built for another version or layout of ringloc: install "
+                              "it and the program from one build", m->what, m->file);
+        return RL_EUNSUPPORTED;
+    }
+    if ((sym = find(h, symbol, &why)) == NULL) {
+        snprintf(err, errlen, "%s (lib/ringloc/%s) has no %s: %s", m->what, m->file, symbol,
+                 why ? why : "no such symbol");
+        return RL_EUNSUPPORTED;
+    }
     memcpy(fn, &sym, sizeof sym);
     return RL_OK;
 }

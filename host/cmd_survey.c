@@ -272,6 +272,9 @@ int rl_cmd_survey(int argc, char **argv)
                            rc.family.bits);
     if (rl_site_prepare(&site, &rc, err, sizeof err) != RL_OK)
         return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
+    /* the solver found before the frames are read, not after */
+    if (rl_survey_solver_check(err, sizeof err) != RL_OK)
+        return rl_cli_fail(C, RL_EXIT_FAIL, "%s", err);
     cfg.mount = site.mount;
     cfg.origin_id = a.origin;
     cfg.axis_id = a.axis;

@@ -126,8 +126,11 @@ RL_CHECK rl_err rl_survey_build(rl_survey *sv);
  * or the result is not finite, RL_EUNSUPPORTED when the module cannot be
  * loaded (err says why). */
 RL_CHECK rl_err rl_survey_adjust(rl_survey *sv);
-#define RL_SURVEY_CERES_MODULE "ringloc-ceres.so"
 typedef rl_err (*rl_survey_adjust_fn)(rl_survey *sv);
+
+/* RL_OK when the solver's module (ringloc-ceres.so) can be loaded, else
+ * err says why: checked before a survey reads its frames. */
+RL_CHECK rl_err rl_survey_solver_check(char *err, size_t errlen);
 
 void rl_survey_free(rl_survey *sv);
 

@@ -17,6 +17,7 @@ extern "C" {
 #include "rl_module.h"
 #include "rl_pose_fit.h"
 #include "rl_survey.h"
+#include "rl_survey_ceres.h"
 }
 
 namespace {
@@ -354,6 +355,11 @@ int off_plane(rl_survey *sv, Params &p, ceres::LossFunction *loss)
 }
 
 } // namespace
+
+extern "C" RL_MODULE_EXPORT unsigned long rl_module_abi(void)
+{
+    return RL_SURVEY_CERES_ABI;
+}
 
 extern "C" RL_MODULE_EXPORT rl_err rl_survey_adjust_ceres(rl_survey *sv)
 {

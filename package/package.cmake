@@ -29,9 +29,9 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION share/doc/ringloc/docs
 # the web view's drop-in for the unit (network for http:), copied by hand
 install(FILES ${PROJECT_SOURCE_DIR}/package/ringloc-web.conf DESTINATION share/doc/ringloc COMPONENT firmware)
 install(TARGETS ringloc RUNTIME DESTINATION bin COMPONENT tools)
-# the modules loaded on first use (hal/rl_module.h), in /usr/lib/ringloc:
-# the camera's with the robot's package, the survey's with the tools
-set_target_properties(ringloc-fw ringloc PROPERTIES INSTALL_RPATH "$ORIGIN/../lib/ringloc")
+# the modules loaded on first use (hal/rl_module.h), in /usr/lib/ringloc
+# (../lib/ringloc from the programs' /usr/bin): the camera's with the
+# robot's package, the survey's with the tools
 if(TARGET ringloc-libcamera)
   install(TARGETS ringloc-libcamera LIBRARY DESTINATION lib/ringloc COMPONENT firmware)
 endif()
@@ -78,12 +78,14 @@ if(MHD_FOUND) # the web view (--http)
   string(APPEND RL_FW_DEPENDS ", libmicrohttpd12")
 endif()
 set(CPACK_DEBIAN_FIRMWARE_PACKAGE_DEPENDS "${RL_FW_DEPENDS}")
-set(RL_TOOLS_DEPENDS "libc6 (>= 2.34), libpng16-16, libyaml-0-2, libcairo2")
+set(RL_TOOLS_DEPENDS "libc6 (>= 2.34), libpng16-16, libyaml-0-2, libcairo2, libturbojpeg0")
 if(MHD_FOUND) # `ringloc run --http`
   string(APPEND RL_TOOLS_DEPENDS ", libmicrohttpd12")
 endif()
-if(TARGET ringloc_survey) # a desktop build: `ringloc survey` links Ceres Solver and json-c
-  string(APPEND RL_TOOLS_DEPENDS ", libstdc++6, libceres3, libjson-c5")
+if(TARGET ringloc_survey) # a desktop build: `ringloc survey` (json-c) and its solver's module (Ceres
+  # Solver, linked in whole; the libraries it links: glog, SuiteSparse, ATLAS)
+  string(APPEND RL_TOOLS_DEPENDS ", libjson-c5, libstdc++6, libgoogle-glog0v6, libspqr2, libcholmod3, libcxsparse3,"
+         " libatlas3-base")
 endif()
 set(CPACK_DEBIAN_TOOLS_PACKAGE_DEPENDS "${RL_TOOLS_DEPENDS}")
 set(CPACK_DEBIAN_FIRMWARE_DESCRIPTION "robot self-localization from ring-coded ceiling landmarks (firmware)")

@@ -1,46 +1,63 @@
-/* rl_module: a module found on the program's run path and its entry
- * points; a missing module or symbol is one error naming it. */
+/* rl_module: a module found next to the program's folder (../lib/ringloc)
+ * and its entry points; a missing module, one built for another layout,
+ * or a missing symbol is one error line naming it. */
 #include "rl_test.h"
 #include "rl_module.h"
+#ifdef RL_HAVE_LIBCAMERA
+#include "cam_libcamera.h"
+#endif
+#ifdef RL_HAVE_SURVEY_MODULE
+#include "rl_survey_ceres.h"
+#endif
 
 static void not_found(void)
 {
 }
 
-static void test_missing_module_named(void **state)
+static void check_fails(const rl_module *m, const char *symbol, const char *says)
 {
     void (*fn)(void) = not_found;
     char err[512] = "";
-    (void)state;
-    assert_int_equal(rl_module_symbol("ringloc-nothing.so", "rl_nothing", &fn, err, sizeof err),
-                     RL_EUNSUPPORTED);
+    assert_int_equal(rl_module_symbol(m, symbol, &fn, err, sizeof err), RL_EUNSUPPORTED);
     assert_null(fn);
-    assert_non_null(strstr(err, "ringloc-nothing.so"));
+    assert_non_null(strstr(err, m->what));
+    assert_non_null(strstr(err, m->file));
+    if (strstr(err, says) == NULL)
+        fail_msg("'%s' does not say '%s'", err, says);
     assert_null(strchr(err, '\n'));
 }
 
-/* module: built beside the tests (the build's lib/ringloc), found through
- * the test's run path as a program finds it; its entry point resolves and
- * nothing it did not mark for export does. */
-static void check_module(const char *module, const char *entry, const char *hidden)
+static void test_missing_module_named(void **state)
+{
+    static const rl_module none = {"ringloc-nothing.so", "nothing at all", 1};
+    (void)state;
+    check_fails(&none, "rl_nothing", "cannot be loaded");
+}
+
+/* module m: built for the tests (the build's lib/ringloc, which tests/
+ * reaches as ../lib/ringloc, as a program does); its entry point
+ * resolves, nothing it did not mark for export does, and the same file
+ * taken for another layout is refused */
+static void check_module(rl_module m, const char *entry, const char *hidden)
 {
     void (*fn)(void) = NULL;
     char err[512] = "";
-    assert_int_equal(rl_module_symbol(module, entry, &fn, err, sizeof err), RL_OK);
+    assert_int_equal(rl_module_symbol(&m, entry, &fn, err, sizeof err), RL_OK);
     assert_non_null(fn);
-    fn = not_found;
-    assert_int_equal(rl_module_symbol(module, hidden, &fn, err, sizeof err), RL_EUNSUPPORTED);
-    assert_null(fn);
-    assert_non_null(strstr(err, module));
-    assert_non_null(strstr(err, hidden));
+    check_fails(&m, hidden, hidden);
+    m.abi += 1;
+    check_fails(&m, entry, "another version or layout");
 }
 
 static void test_survey_module(void **state)
 {
     (void)state;
 #ifdef RL_HAVE_SURVEY_MODULE
-    /* rl_pose_fit_model: the module's own copy of the pose model, hidden */
-    check_module("ringloc-ceres.so", "rl_survey_adjust_ceres", "rl_pose_fit_model");
+    {
+        /* rl_pose_fit_model: the module's own copy of the pose model, hidden */
+        rl_module m = RL_SURVEY_CERES_MODULE;
+        check_module(m, "rl_survey_adjust_ceres", "rl_pose_fit_model");
+    }
 #else
     skip(); /* a firmware-only build has no survey */
 #endif
@@ -50,8 +67,11 @@ static void test_libcamera_module(void **state)
 {
     (void)state;
 #ifdef RL_HAVE_LIBCAMERA
-    check_module("ringloc-libcamera.so", "rl_cam_libcamera_open", "rl_clock_now_us");
-    check_module("ringloc-libcamera.so", "rl_cam_libcamera_probe", "rl_image_view");
+    {
+        rl_module m = RL_CAM_LIBCAMERA_MODULE;
+        check_module(m, "rl_cam_libcamera_open", "rl_clock_now_us");
+        check_module(m, "rl_cam_libcamera_probe", "rl_image_view");
+    }
 #else
     skip();
 #endif
