@@ -183,7 +183,7 @@ static void test_tilted_pose_against_truth_and_solvepnp(void **)
     cv::Mat K, D;
     cv_mats(c, K, D);
     rl_map m = site_map();
-    rl_mount mt = {0.12, -0.04, 0.88, 0.3, 0.01, -0.015};
+    rl_mount mt = {0.12, -0.04, 0.88, 0.3, 0.01, -0.015, RL_POSE_TILT_PRIOR};
     for (double tilt : {0.03, -0.02}) {
         cv::Matx33d Rc;
         cv::Vec3d Cc;
@@ -221,7 +221,7 @@ static void test_pose_exact_and_mount(void **)
 {
     rl_calib c = make_cam(RL_DIST_PLUMB_BOB);
     rl_map m = site_map();
-    rl_mount mt = {0.12, -0.04, 0.88, 0.3, 0, 0};
+    rl_mount mt = {0.12, -0.04, 0.88, 0.3, 0, 0, RL_POSE_TILT_PRIOR};
     for (double yaw : {0.0, 1.0, -2.5, 3.1}) {
         std::vector<rl_detection> d = observe(c, m, mt, 1.7, 1.4, yaw);
         rl_pose p;
@@ -239,7 +239,7 @@ static void test_pose_drops_a_misplaced_landmark(void **)
 {
     rl_calib c = make_cam(RL_DIST_PLUMB_BOB);
     rl_map m = site_map(), wrong = m;
-    rl_mount mt = {0, 0, 0.88, 0, 0, 0};
+    rl_mount mt = {0, 0, 0.88, 0, 0, 0, RL_POSE_TILT_PRIOR};
     std::vector<rl_detection> d = observe(c, m, mt, 1.8, 1.5, 0.4, 0.1);
     int victim = d[2].id;
     wrong.lm[rl_map_find(&wrong, victim)].x += 0.25; // moved since the map was made
@@ -258,7 +258,7 @@ static void test_pose_too_few(void **)
 {
     rl_calib c = make_cam(RL_DIST_NONE);
     rl_map m = site_map();
-    rl_mount mt = {0, 0, 0.88, 0, 0, 0};
+    rl_mount mt = {0, 0, 0.88, 0, 0, 0, RL_POSE_TILT_PRIOR};
     std::vector<rl_detection> d = observe(c, m, mt, 1.8, 1.5, 0.0);
     rl_pose p;
     assert_int_equal(rl_pose_solve(&c, &m, &mt, d.data(), 1, NULL, &p), RL_ETOOFEW);
@@ -279,7 +279,7 @@ static void test_pose_agrees_with_solvepnp(void **)
     cv::Mat K, D;
     cv_mats(c, K, D);
     rl_map m = site_map();
-    rl_mount mt = {0, 0, 0.88, 0, 0, 0};
+    rl_mount mt = {0, 0, 0.88, 0, 0, 0, RL_POSE_TILT_PRIOR};
     double Z = m.ceiling_height - mt.z;
     // noise-free points: the two must agree; with 0.2 px noise both must
     // stay near the truth (solvePnP also fits a tilt, which the known

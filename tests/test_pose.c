@@ -71,7 +71,7 @@ static void test_no_pose_from_impossible_detections(void **state)
 {
     rl_calib c = camera();
     rl_map m = map2(0.61);
-    rl_mount mount = {0, 0, 0.88, 0, 0, 0};
+    rl_mount mount = {0, 0, 0.88, 0, 0, 0, RL_POSE_TILT_PRIOR};
     rl_detection d[2];
     rl_pose p;
     static const double far[3] = {1e308, -1e308, 1e200};
@@ -113,7 +113,7 @@ static void test_landmark_heights(void **state)
 {
     rl_calib c = camera();
     rl_map m = map2(0.61);
-    rl_mount mount = {0, 0, 0.88, 0, 0, 0};
+    rl_mount mount = {0, 0, 0.88, 0, 0, 0, RL_POSE_TILT_PRIOR};
     static const double X[3] = {0.0, 0.61, 0.0}, Y[3] = {0.0, 0.0, 0.61}, Z[3] = {2.45, 2.75, 2.75};
     const double rx = 0.3, ry = 0.2;
     rl_detection d[3];
@@ -180,11 +180,11 @@ static void test_tilt_continuous(void **state)
 {
     rl_calib c = camera();
     static rl_map m;
-    rl_mount mount = {0, 0, 0.88, 0, 0, 0};
+    rl_mount mount = {0, 0, 0.88, 0, 0, 0, RL_POSE_TILT_PRIOR};
     rl_detection d[9];
     rl_pose p, last;
     const double rx = 0.3, ry = 0.2, up = 2.75 - 0.88;
-    double t, step, worst = 0, w_last = -1, t_half = -1, reproj = 0;
+    double t, step, worst = 0, w_last = -1, t_half = -1, reproj = 0, zmax = 0;
     int k, n = 0;
     (void)state;
     m = map2(0.61);
@@ -197,6 +197,9 @@ static void test_tilt_continuous(void **state)
     memset(d, 0, sizeof d);
     memset(&last, 0, sizeof last);
     for (t = 0; t <= 0.01; t += 1e-5, n++) {
+        /* where the robot is: a lean of t backwards (a centre straight
+         * above shows forward) puts the camera 0.88 sin t behind the base */
+        const double tx = rx + 0.88 * sin(t);
         for (k = 0; k < 9; k++) {
             double fwd = m.lm[k].x - rx, left = m.lm[k].y - ry;
             double f2 = fwd * cos(t) + up * sin(t), u2 = up * cos(t) - fwd * sin(t);
@@ -219,6 +222,9 @@ static void test_tilt_continuous(void **state)
          * 0.88 m under a camera leaning by t */
         if (n == 0 && hypot(p.x - rx, p.y - ry) > 1e-6)
             fail_msg("level camera: pose (%g, %g), not (%g, %g)", p.x, p.y, rx, ry);
+        /* the pose's sigma covers its error: a level fit is off by the
+         * lean it assumed away (2.75 m times it), and must say so */
+        zmax = fmax(zmax, fabs(p.x - tx) / fmax(p.sigma_x, 1e-9));
         if (n > 0) {
             step = hypot(p.x - last.x, p.y - last.y);
             worst = fmax(worst, step);
@@ -248,6 +254,9 @@ static void test_tilt_continuous(void **state)
     if (worst > 0.0005)
         fail_msg("the pose moved %.3f mm in one 10 urad step (the fits weigh the same at %g rad)", 1000 * worst,
                  t_half);
+    printf("  the pose's error at most %.2f of its sigma\n", zmax);
+    if (zmax > 3)
+        fail_msg("the pose was %.1f sigmas from the robot (sigma too small for the lean it ignored)", zmax);
 }
 
 int main(void)

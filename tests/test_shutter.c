@@ -42,7 +42,7 @@ static rl_detection at(double u, double v)
 static void test_forward(void **state)
 {
     rl_calib c = ideal();
-    rl_mount mount = {0, 0, 0.9, 0, 0, 0};
+    rl_mount mount = {0, 0, 0.9, 0, 0, 0, RL_POSE_TILT_PRIOR};
     rl_motion m = {1.0, 0, 0};
     rl_detection d[3] = {at(420, 359.5), at(200, 119.5), at(320, 239.5)};
     (void)state;
@@ -61,7 +61,7 @@ static void test_forward(void **state)
 static void test_each_distance(void **state)
 {
     rl_calib c = ideal();
-    rl_mount mount = {0, 0, 0.9, 0, 0, 0};
+    rl_mount mount = {0, 0, 0.9, 0, 0, 0, RL_POSE_TILT_PRIOR};
     rl_motion m = {1.0, 0, 0};
     rl_detection d[3] = {at(420, 359.5), at(200, 359.5), at(300, 359.5)};
     double distance[3] = {1.6, 2.0, 0.0};
@@ -77,7 +77,7 @@ static void test_each_distance(void **state)
 static void test_turn(void **state)
 {
     rl_calib c = ideal();
-    rl_mount mount = {0, 0, 0.9, 0, 0, 0};
+    rl_mount mount = {0, 0, 0.9, 0, 0, 0, RL_POSE_TILT_PRIOR};
     rl_motion m = {0, 0, 1.0};
     rl_detection d = at(420, 359.5);
     (void)state;
@@ -89,7 +89,7 @@ static void test_turn(void **state)
 static void test_sideways_and_mount(void **state)
 {
     rl_calib c = ideal();
-    rl_mount mount = {0, 0, 0.9, 0, 0, 0};
+    rl_mount mount = {0, 0, 0.9, 0, 0, 0, RL_POSE_TILT_PRIOR};
     rl_motion left = {0, 0.5, 0};
     rl_detection d = at(300, 359.5);
     (void)state;
@@ -100,7 +100,7 @@ static void test_sideways_and_mount(void **state)
      * rad of (0, 119.5): u -1.1950, v -0.0060), and the mount's 0.2 m
      * ahead adds 0.2 m/s x 10 ms = 2 mm to the left: +0.5 px */
     {
-        rl_mount ahead = {0.2, 0, 0.9, 0, 0, 0};
+        rl_mount ahead = {0.2, 0, 0.9, 0, 0, 0, RL_POSE_TILT_PRIOR};
         rl_motion turn = {0, 0, 1.0};
         rl_detection e = at(320, 359.5);
         rl_shutter_correct(&c, &ahead, 2.0, 0.04, &turn, &e, 1);
@@ -112,7 +112,7 @@ static void test_sideways_and_mount(void **state)
 static void test_nothing_moved(void **state)
 {
     rl_calib c = ideal();
-    rl_mount mount = {0, 0, 0.9, 0, 0, 0};
+    rl_mount mount = {0, 0, 0.9, 0, 0, 0, RL_POSE_TILT_PRIOR};
     rl_motion m = {1.0, 0.2, 0.5};
     rl_detection d = at(420, 359.5);
     (void)state;
@@ -160,7 +160,7 @@ static void test_mount_turned(void **state)
      * 10 mm further towards the camera's right, so from the middle row it
      * lies 10 mm further right: 2.5 px less u, v unchanged */
     rl_calib c = ideal();
-    rl_mount side = {0, 0, 0.9, 1.5707963267948966, 0, 0};
+    rl_mount side = {0, 0, 0.9, 1.5707963267948966, 0, 0, RL_POSE_TILT_PRIOR};
     rl_motion fwd = {1.0, 0, 0};
     rl_detection d = at(420, 359.5);
     (void)state;
@@ -171,7 +171,7 @@ static void test_mount_turned(void **state)
      * in test_sideways_and_mount (u -1.1950, v -0.0060) and lies 2 mm
      * further back: 0.5 px lower */
     {
-        rl_mount left = {0, 0.2, 0.9, 0, 0, 0};
+        rl_mount left = {0, 0.2, 0.9, 0, 0, 0, RL_POSE_TILT_PRIOR};
         rl_motion turn = {0, 0, 1.0};
         rl_detection e = at(320, 359.5);
         rl_shutter_correct(&c, &left, 2.0, 0.04, &turn, &e, 1);

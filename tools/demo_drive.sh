@@ -13,7 +13,7 @@ MOUNT=0.12,-0.03,0.02,0.02,-0.015
 ROCK=0.01
 mkdir -p "$DRIVE"
 "$REN" --write-map "$DRIVE/map.yaml" --write-camera "$DRIVE/camera.yaml" \
-    --write-robot "$DRIVE/robot_true.yaml" --mount $MOUNT
+    --write-robot "$DRIVE/robot_true.yaml" --mount $MOUNT --rock $ROCK
 pids=
 for path in straight:15 rect:20 circle:20; do
     "$REN" --out "$DRIVE" --path "${path%:*}" --frames "${path#*:}" --mount $MOUNT --rock $ROCK &

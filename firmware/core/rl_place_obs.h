@@ -3,7 +3,7 @@
  * height of the map landmark it is tried as. Internal to the core.
  *
  *   extern const rl_place *pl;
- *   rl_mount mount = {0, 0, 0.88, 0, 0, 0};
+ *   rl_mount mount = {0, 0, 0.88, 0, 0, 0, RL_POSE_TILT_PRIOR};
  *   rl_place_obs o;
  *   double x, y;
  *   rl_place_obs_make(pl, &cam, &mount, res.landmarks, res.n_landmarks, NULL, &o);

@@ -232,12 +232,53 @@ static int normal_equations(const rl_pose_model *md, rl_pose_pt *pt, int m, cons
     return 1;
 }
 
+/* The covariance of all five parameters at q into cov: the free ones'
+ * (the first nf) from the centres, with those held at their value
+ * (nf < 5) as unsure as the prior says, "considered": the free ones
+ * moved by as much as the held ones can be wrong (S = -A_ff^-1 A_fh, cov
+ * += S P S'). A held tilt the centres could have measured does not make
+ * the free ones surer: a level fit is off by as much as the robot leans
+ * (the demo's level frames: 3-7 mm off with sigmas of 0.1-0.3 mm when the
+ * tilt's prior was counted as a measurement). A the normal matrix of all
+ * five (the prior only on the held ones' diagonal). 0 if singular. */
+static int considered(const double *A, int nf, double prior, double *cov)
+{
+    double Aff[RL_POSE_NQ * RL_POSE_NQ], S[RL_POSE_NQ][RL_POSE_NQ], e[RL_POSE_NQ];
+    double p2 = prior * prior;
+    int a, b, j, n = RL_POSE_NQ;
+    for (b = 0; b < nf; b++) { /* A_ff^-1, column by column */
+        for (a = 0; a < nf; a++)
+            memcpy(&Aff[a * nf], &A[a * n], (size_t)nf * sizeof *A);
+        for (a = 0; a < nf; a++)
+            e[a] = a == b;
+        if (!solve(Aff, e, nf))
+            return 0;
+        for (a = 0; a < nf; a++)
+            cov[a * n + b] = e[a];
+    }
+    for (a = 0; a < nf; a++)
+        for (j = nf; j < n; j++) {
+            S[a][j] = 0;
+            for (b = 0; b < nf; b++)
+                S[a][j] -= cov[a * n + b] * A[b * n + j];
+        }
+    for (a = 0; a < n; a++)
+        for (b = 0; b < n; b++) {
+            double sum = a < nf && b < nf ? cov[a * n + b] : (a == b ? p2 : 0);
+            for (j = nf; j < n; j++)
+                sum += (a < nf ? S[a][j] : a == j) * (b < nf ? S[b][j] : b == j) * p2 * (a < nf || b < nf);
+            cov[a * n + b] = sum;
+        }
+    return 1;
+}
+
 /* Gauss-Newton on the first nf parameters of q; the covariance of all
- * five (the fixed ones through the prior) into cov, scaled by the pooled
- * noise factor. 0 if it failed. */
+ * five (the held ones through the prior, considered) into cov, the
+ * centres' noise pooled with what their residuals show. 0 if it failed. */
 int rl_pose_fit_solve(const rl_pose_model *md, rl_pose_pt *pt, int m, int nf, double *q, double *cov, double *chi2)
 {
-    double A[RL_POSE_NQ * RL_POSE_NQ], g[RL_POSE_NQ];
+    double A[RL_POSE_NQ * RL_POSE_NQ], g[RL_POSE_NQ], chi2c, factor;
+    rl_pose_model mc;
     int it, a, b, dof;
     for (it = 0; it < 16; it++) {
         double step = 0;
@@ -253,10 +294,20 @@ int rl_pose_fit_solve(const rl_pose_model *md, rl_pose_pt *pt, int m, int nf, do
         if (step < 1e-18 && it >= 3)
             break;
     }
-    /* covariance: (J'J)^-1 over all five, the prior bounding the tilt */
+    /* the residuals say how noisy the centres were: pooled with the
+     * expected noise (three observations' worth) into a factor on the
+     * covariance; a held tilt's prior is what the robot may lean whatever
+     * the centres show, so a level fit scales only the centres' part */
     if (!normal_equations(md, pt, m, q, RL_POSE_NQ, 0, A, g, chi2))
         return 0;
-    for (b = 0; b < RL_POSE_NQ; b++) {
+    dof = 2 * m - nf;
+    factor = dof > 0 ? (*chi2 + 3.0) / (dof + 3.0) : 1.0;
+    if (nf < RL_POSE_NQ) {
+        mc = *md;
+        mc.sn *= sqrt(factor);
+        return normal_equations(&mc, pt, m, q, RL_POSE_NQ, 0, A, g, &chi2c) && considered(A, nf, md->prior, cov);
+    }
+    for (b = 0; b < RL_POSE_NQ; b++) { /* (J'J)^-1, the prior bounding the tilt */
         double Ac[RL_POSE_NQ * RL_POSE_NQ], e[RL_POSE_NQ];
         memcpy(Ac, A, sizeof Ac);
         for (a = 0; a < RL_POSE_NQ; a++)
@@ -264,15 +315,7 @@ int rl_pose_fit_solve(const rl_pose_model *md, rl_pose_pt *pt, int m, int nf, do
         if (!solve(Ac, e, RL_POSE_NQ))
             return 0;
         for (a = 0; a < RL_POSE_NQ; a++)
-            cov[a * RL_POSE_NQ + b] = e[a];
-    }
-    /* the residuals say how noisy the centres were: pooled with the
-     * expected noise (three observations' worth) */
-    dof = 2 * m - nf;
-    if (dof > 0) {
-        double factor = (*chi2 + 3.0) / (dof + 3.0);
-        for (a = 0; a < RL_POSE_NQ * RL_POSE_NQ; a++)
-            cov[a] *= factor;
+            cov[a * RL_POSE_NQ + b] = e[a] * factor;
     }
     return 1;
 }

@@ -64,8 +64,10 @@ int rl_pose_fit_predict(const rl_pose_model *md, const double *Rc, const double 
                         double *xn, double *yn);
 
 /* Fit the first nf (3: a level robot, 5: tilted too) parameters of q from
- * its start; the covariance of all five into cov (the fixed ones through
- * the prior), scaled by the pooled noise; chi2 of the image residuals.
+ * its start; the covariance of all five into cov (the held ones as unsure
+ * as the prior, and the free ones as unsure as that makes them: a level
+ * fit is off by as much as the robot leans), the centres' noise pooled
+ * with what their residuals show; chi2 of the image residuals.
  * 0 if it failed (a landmark behind the camera, a tilt past 0.5 rad). */
 int rl_pose_fit_solve(const rl_pose_model *md, rl_pose_pt *pt, int m, int nf, double *q, double *cov,
                       double *chi2);

@@ -14,8 +14,9 @@
  * the map's height (a weak prior keeps the tilt of a poor geometry
  * small). Every pose carries standard deviations from the fit's geometry
  * and its residuals, pooled with the expected centre noise
- * (RL_POSE_PIXEL_SIGMA); with two landmarks the robot's unknown rocking
- * (RL_POSE_TILT_PRIOR) is in them too. Before fitting, pairwise distances
+ * (RL_POSE_PIXEL_SIGMA); a level fit's also carry the tilt it assumed
+ * away: with two landmarks the robot's rocking (rl_mount.rocking), with
+ * more the lean the tilted fit measured and what it could not rule out. Before fitting, pairwise distances
  * are checked against the map and landmarks that disagree (a wrong id, a
  * landmark moved since the map was made) are dropped and reported.
  *
@@ -46,6 +47,8 @@
 typedef struct {
     double x, y, z, yaw;
     double roll, pitch;
+    double rocking; /* how far the robot leans on its floor, rad (sd per axis;
+                       rl_mount_defaults: RL_POSE_TILT_PRIOR; 0: never) */
 } rl_mount;
 
 /* The paper's alternative to the pinhole model: the physical offset of a
@@ -84,13 +87,13 @@ typedef struct {
  * tilted camera stretches the level model by up to 3%). */
 #define RL_POSE_PAIR_TOLERANCE 0.05
 
-/* Expected noise of a landmark centre, pixels; the rocking of a robot
- * whose tilt is not solved (two landmarks), radians; the prior that keeps
- * a solved tilt within reason, radians. */
+/* Expected noise of a landmark centre, pixels; a robot's rocking unless
+ * its mount says otherwise (rl_mount.rocking), radians; the prior that
+ * keeps a solved tilt within reason, radians. */
 #define RL_POSE_PIXEL_SIGMA 0.15
 #define RL_POSE_TILT_PRIOR 0.005
 #define RL_POSE_TILT_WEAK 0.1
-#define RL_POSE_TILT_LEVEL 0.00002 /* left over when three or more show no tilt */
+#define RL_POSE_TILT_LEVEL 0.000001 /* the least a level fit's tilt is unsure by (a number, not a lean) */
 /* How much better (chi-square, in units of the residual variance) the
  * tilted fit must explain the centres than the level one to weigh as much
  * as the level one in the pose. */

@@ -5,7 +5,7 @@
 #include "rl_outfile.h"
 #include "rl_yaml.h"
 
-static const char *const top_keys[] = {"camera_mount", NULL};
+static const char *const top_keys[] = {"camera_mount", "rocking", NULL};
 static const char *const mount_keys[] = {"x", "y", "z", "yaw", "roll", "pitch", NULL};
 
 rl_err rl_robotfile_load(const char *path, rl_mount *m, char *err, size_t errlen)
@@ -30,7 +30,9 @@ rl_err rl_robotfile_load(const char *path, rl_mount *m, char *err, size_t errlen
         (e = rl_yaml_double_in(&y, cm, "z", "camera_mount.z", 1, 0, 20, &m->z, err, errlen)) != RL_OK ||
         (e = rl_yaml_double_in(&y, cm, "yaw", "camera_mount.yaw", 0, -7, 7, &m->yaw, err, errlen)) != RL_OK ||
         (e = rl_yaml_double_in(&y, cm, "roll", "camera_mount.roll", 0, -0.5, 0.5, &m->roll, err, errlen)) != RL_OK ||
-        (e = rl_yaml_double_in(&y, cm, "pitch", "camera_mount.pitch", 0, -0.5, 0.5, &m->pitch, err, errlen)) != RL_OK)
+        (e = rl_yaml_double_in(&y, cm, "pitch", "camera_mount.pitch", 0, -0.5, 0.5, &m->pitch, err, errlen)) != RL_OK ||
+        (e = rl_yaml_double_in(&y, root, "rocking", "rocking", RL_POSE_TILT_PRIOR, 0, 0.2, &m->rocking, err,
+                               errlen)) != RL_OK)
         goto out;
 out:
     rl_yaml_free(&y);
@@ -51,5 +53,6 @@ rl_err rl_robotfile_save(const char *path, const rl_mount *m, char *err, size_t 
                 m->z, m->yaw, m->roll, m->pitch);
     else
         fprintf(f, "camera_mount: {x: %.4f, y: %.4f, z: %.4f, yaw: %.6f}\n", m->x, m->y, m->z, m->yaw);
+    fprintf(f, "# how far the robot leans on its floor, rad (sd per axis; 0: never)\nrocking: %.6f\n", m->rocking);
     return rl_outfile_commit(&o, err, errlen);
 }

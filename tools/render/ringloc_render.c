@@ -399,6 +399,7 @@ static int write_site(const render_opts *o, const rl_site *site, const render_sc
         mnt.roll = o->mount.roll;
         mnt.pitch = o->mount.pitch;
         mnt.z = s->cam_z;
+        mnt.rocking = o->rock; /* the truth: --rock's sigma */
         if (rl_robotfile_save(o->robot_out, &mnt, err, sizeof err) != RL_OK)
             return rl_cli_fail(NULL, 1, "%s", err);
     }
