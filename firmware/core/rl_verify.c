@@ -164,17 +164,16 @@ static int twin_fits_as_well(const rl_recog *rec, const rl_profile *wide, int id
     for (i = 0; i < n; i++)
         best[i] = -2;
     for (k = 0; k < RADIUS_SCALES; k++) {
-        double s = (1.0 - (k - RADIUS_SCALES / 2) * RADIUS_STEP) / RADIUS_WIDEST;
+        double s = (1.0 - (k - RADIUS_SCALES / 2) * RADIUS_STEP) / RADIUS_WIDEST, sc[RL_MAX_BITS + 1];
         rl_profile q;
         if (s > 1.0)
             continue;
         rl_profile_rescale(wide, s, &q);
-        for (i = 0; i < n; i++) {
-            rl_match m;
-            rl_match_ids(&rec->templates, &q, &codes[i], 1, -1, &m);
-            if (m.id >= 0 && m.score > best[i])
-                best[i] = m.score;
-        }
+        /* each code's own columns, the profile's terms worked out once */
+        rl_match_ids_each(&rec->templates, &q, codes, n, sc);
+        for (i = 0; i < n; i++)
+            if (sc[i] > best[i])
+                best[i] = sc[i];
     }
     for (i = 1; i < n; i++)
         if (best[i] >= best[0])
