@@ -4,6 +4,7 @@
  * here from the formula, not from the matcher). */
 #include "rl_test.h"
 #include <math.h>
+#include "rl_family.h"
 #include "rl_match.h"
 #include "rl_match_kernel.h"
 
@@ -224,6 +225,58 @@ static void test_match_all_is_every_id_listed(void **state)
     }
 }
 
+/* Each id's own best (rl_match_ids_each, the zone twins' check's scores):
+ * the direct correlation's best over the id's blurs, computed here from
+ * the template bins; bit for bit what rl_match_ids gives the id alone;
+ * -2 for an id the table does not hold and for a profile too small to
+ * correlate. */
+static void test_each_id_is_its_own_best(void **state)
+{
+    static unsigned char mem[1 << 18];
+    int bits, trial, k, j;
+    (void)state;
+    for (bits = 5; bits <= 6; bits++) {
+        rl_family fam;
+        rl_templates tt;
+        rl_ws ws;
+        fam.bits = bits;
+        rl_ws_init(&ws, mem, sizeof mem);
+        assert_int_equal(rl_templates_init(&tt, &ws, &fam, NULL, 0), RL_OK);
+        for (trial = 0; trial < 40; trial++) {
+            int i = (int)(uniform() * tt.n), b = (int)(uniform() * RL_BLUR_LEVELS), codes[RL_MAX_BITS + 2], n;
+            double best[RL_MAX_BITS + 2];
+            rl_profile p;
+            memset(&p, 0, sizeof p);
+            for (k = 0; k < RL_PROFILE_BINS; k++) {
+                double cnt = 10 + 8 * k, v = 40 + 180 * rl_templates_bin(&tt, i, b, k) + 40 * (uniform() - 0.5);
+                p.n[k] = cnt;
+                p.sx[k] = cnt * v;
+                p.sxx += cnt * v * v + cnt * 30.0;
+                p.total += cnt;
+            }
+            codes[0] = tt.ids[i];
+            n = 1 + rl_family_zone_twins(&fam, codes[0], codes + 1);
+            codes[n++] = -5; /* not an id */
+            rl_match_ids_each(&tt, &p, codes, n, best);
+            for (j = 0; j < n - 1; j++) {
+                int t = rl_templates_find(&tt, codes[j]);
+                double want = -2;
+                rl_match m;
+                for (k = 0; k < RL_BLUR_LEVELS; k++)
+                    want = fmax(want, direct_r(&p, &tt, t, k));
+                assert_true(fabs(best[j] - want) < 1e-4);
+                rl_match_ids(&tt, &p, &codes[j], 1, -1, &m);
+                assert_memory_equal(&best[j], &m.score, sizeof m.score);
+            }
+            assert_true(best[n - 1] == -2);
+            p.total = 10; /* too few pixels */
+            rl_match_ids_each(&tt, &p, codes, n, best);
+            for (j = 0; j < n; j++)
+                assert_true(best[j] == -2);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -232,6 +285,7 @@ int main(void)
         cmocka_unit_test(test_scores_match_a_direct_correlation),
         cmocka_unit_test(test_wide_kernel_is_blocks_bit_for_bit),
         cmocka_unit_test(test_match_all_is_every_id_listed),
+        cmocka_unit_test(test_each_id_is_its_own_best),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -168,14 +168,13 @@ static int ids_in_place(const rl_templates *tt, const int *ids, int n)
     return 1;
 }
 
-void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, int n, int blur,
-                  rl_match *m)
+/* The columns of ids (at one blur, or every blur when blur < 0) scored
+ * against the profile's terms z into m. */
+static void score_ids(const rl_templates *tt, const profile_terms *z, const int *ids, int n, int blur,
+                      rl_match *m)
 {
     int b0 = blur < 0 ? 0 : blur, b1 = blur < 0 ? RL_BLUR_LEVELS : blur + 1, j, b;
-    profile_terms z;
     rl_match_list ls;
-    if (!match_start(p, &z, m))
-        return;
     if (blur < 0 && ids_in_place(tt, ids, n)) {
         /* each id at every blur: its columns are side by side in the
          * table, scored there (the columns, and their order, as a list's) */
@@ -189,7 +188,7 @@ void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, i
             for (b = 0; b < RL_BLUR_LEVELS; b++)
                 idv[b] = ids[j];
             score_block(tt->table + (size_t)i * RL_BLUR_LEVELS, (size_t)tt->stride, RL_BLUR_LEVELS, idv, bv,
-                        &z, m);
+                        z, m);
         }
         return;
     }
@@ -201,13 +200,38 @@ void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, i
                 memset(ls.table, 0, sizeof ls.table);
             list_add(tt, i, b, &ls);
             if (ls.n == RL_MATCH_BLOCK) {
-                list_score(&ls, &z, m);
+                list_score(&ls, z, m);
                 ls.n = 0;
             }
         }
     }
     if (ls.n > 0)
-        list_score(&ls, &z, m);
+        list_score(&ls, z, m);
+}
+
+void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, int n, int blur,
+                  rl_match *m)
+{
+    profile_terms z;
+    if (match_start(p, &z, m))
+        score_ids(tt, &z, ids, n, blur, m);
+}
+
+void rl_match_ids_each(const rl_templates *tt, const rl_profile *p, const int *ids, int n,
+                       double *best)
+{
+    profile_terms z;
+    rl_match m0;
+    int j, ok = match_start(p, &z, &m0);
+    for (j = 0; j < n; j++) {
+        rl_match m = m0;
+        best[j] = -2;
+        if (!ok)
+            continue;
+        score_ids(tt, &z, &ids[j], 1, -1, &m);
+        if (m.id >= 0)
+            best[j] = m.score;
+    }
 }
 
 int rl_match_twins(const rl_templates *tt, int id, int *twins)

@@ -47,6 +47,13 @@ void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m);
 void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, int n, int blur,
                   rl_match *m);
 
+/* Each id's best score over its templates at every blur, into best[j]
+ * (-2 for an id the table does not hold, or a profile that correlates
+ * with nothing): rl_match_ids on each id alone, the profile's terms
+ * worked out once. */
+void rl_match_ids_each(const rl_templates *tt, const rl_profile *p, const int *ids, int n,
+                       double *best);
+
 /* A list of the templates of n ids at one blur level (every level when
  * blur < 0); columns past RL_MATCH_BLOCK, and ids not in the table, are
  * left out. */

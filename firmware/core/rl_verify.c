@@ -149,13 +149,19 @@ static double best_of(const rl_templates *tt, const rl_profile *wide, int id, do
  * held against its zone twins at every scale (twin_fits_as_well). */
 #define TWIN_CLEAR 0.1
 
+/* Past rounding: a twin under the runner-up by less than this is scored. */
+#define KNOWN_MARGIN 1e-9
+
 /* Whether a code one zone from id (a zone twin) matches the profile at
  * its own best radius as well as id at id's: only the predicted id is
  * judged at the predicted radius, and a twin whose zone edge the blur or
  * the radius moved can lead there (a whole 2 of a degraded frame verified
  * as 18, 0.883 against 0.813, where a full frame reads 2). The profile is
- * rescaled once a radius, each code's own columns scored there. */
-static int twin_fits_as_well(const rl_recog *rec, const rl_profile *wide, int id)
+ * rescaled once a radius, each code's own columns scored there; not at
+ * s_read, where the id was taken (read: its match of every id): no twin
+ * scored more than the runner-up there, under the id. */
+static int twin_fits_as_well(const rl_recog *rec, const rl_profile *wide, int id, double s_read,
+                             const rl_match *read)
 {
     int codes[RL_MAX_BITS + 1], n, k, i;
     double best[RL_MAX_BITS + 1];
@@ -164,17 +170,22 @@ static int twin_fits_as_well(const rl_recog *rec, const rl_profile *wide, int id
     for (i = 0; i < n; i++)
         best[i] = -2;
     for (k = 0; k < RADIUS_SCALES; k++) {
-        double s = (1.0 - (k - RADIUS_SCALES / 2) * RADIUS_STEP) / RADIUS_WIDEST;
+        double s = (1.0 - (k - RADIUS_SCALES / 2) * RADIUS_STEP) / RADIUS_WIDEST, sc[RL_MAX_BITS + 1];
         rl_profile q;
         if (s > 1.0)
             continue;
-        rl_profile_rescale(wide, s, &q);
-        for (i = 0; i < n; i++) {
-            rl_match m;
-            rl_match_ids(&rec->templates, &q, &codes[i], 1, -1, &m);
-            if (m.id >= 0 && m.score > best[i])
-                best[i] = m.score;
+        if (s == s_read && read->score - read->second > KNOWN_MARGIN) {
+            /* the scale the id was taken at: every id was matched there,
+             * so id scored read->score and no twin more than read->second */
+            best[0] = fmax(best[0], read->score);
+            continue;
         }
+        rl_profile_rescale(wide, s, &q);
+        /* each code's own columns, the profile's terms worked out once */
+        rl_match_ids_each(&rec->templates, &q, codes, n, sc);
+        for (i = 0; i < n; i++)
+            if (sc[i] > best[i])
+                best[i] = sc[i];
     }
     for (i = 1; i < n; i++)
         if (best[i] >= best[0])
@@ -225,7 +236,7 @@ static int read_at(const rl_recog *rec, const rl_image *img, const rl_result *re
         if (bs != s)
             taken = judged(rec, &rule, local, &wide, s = bs, id, &m);
     }
-    if (taken && m.score - m.second < TWIN_CLEAR && twin_fits_as_well(rec, &wide, id))
+    if (taken && m.score - m.second < TWIN_CLEAR && twin_fits_as_well(rec, &wide, id, s, &m))
         taken = 0;
     d->radius = RADIUS_WIDEST * r * s;
     d->best_id = m.id;
