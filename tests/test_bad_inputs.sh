@@ -229,6 +229,10 @@ key map "$map" "sigma 0" "0,/{id: 1, x: 0.3050, y: 0.3050}/s//{id: 1, x: 0.3050,
 for v in '!!str 0.88' '"0.88"' "'0.88'" 0x1.cp-1 0X1P0; do
     key robot "$robot" "z $v" "s/z: 0.8800/z: $v/"
 done
+# the robot's rocking (rad, 0 .. 0.2)
+for v in nan .inf abc -0.01 0.5 "[0]" '"0.01"'; do
+    key robot "$robot" rocking "s/^rocking: .*/rocking: $v/"
+done
 sed "0,/{id: 1,/s//{id: 2147483648,/" "$map" >"$T/id31.yaml"
 expect_case 1 "landmarks[0].id: 2147483648 is out of range" "$R" detect --map "$T/id31.yaml" "$frame"
 key map "$map" "overlapping landmarks" "0,/{id: 8, x: 0.9150/s//{id: 8, x: 0.4050/"
