@@ -482,7 +482,7 @@ rl_err rl_survey_build(rl_survey *sv)
         b.cell[i] = -1;
     rl_pose_fit_model(&b.md, &sv->cfg.mount, sv->height, 0.5 * sv->cfg.diameter);
     b.md.sn = sv->cfg.pixel_sigma / sv->cfg.pixel_scale;
-    b.md.prior = sv->cfg.tilt_sigma;
+    b.md.prior[0] = b.md.prior[1] = sv->cfg.tilt_sigma;
     for (i = 0; i < sv->n_obs; i++) {
         sv->obs_lm[i] = -1;
         if (!rl_pose_fit_level_point(&b.md, Z, sv->obs[i].xn, sv->obs[i].yn, &b.p[2 * i], &b.p[2 * i + 1]))

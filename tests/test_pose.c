@@ -184,7 +184,7 @@ static void test_tilt_continuous(void **state)
     rl_detection d[9];
     rl_pose p, last;
     const double rx = 0.3, ry = 0.2, up = 2.75 - 0.88;
-    double t, step, worst = 0, w_last = -1, t_half = -1, reproj = 0, zmax = 0;
+    double t, step, worst = 0, w_last = -1, t_half = -1, reproj = 0, zmax = 0, sy0 = 0, symax = 0;
     int k, n = 0;
     (void)state;
     m = map2(0.61);
@@ -225,6 +225,10 @@ static void test_tilt_continuous(void **state)
         /* the pose's sigma covers its error: a level fit is off by the
          * lean it assumed away (2.75 m times it), and must say so */
         zmax = fmax(zmax, fabs(p.x - tx) / fmax(p.sigma_x, 1e-9));
+        /* the lean is about one axis: the other's sigma stays as level */
+        if (n == 0)
+            sy0 = p.sigma_y;
+        symax = fmax(symax, p.sigma_y);
         if (n > 0) {
             step = hypot(p.x - last.x, p.y - last.y);
             worst = fmax(worst, step);
@@ -254,7 +258,10 @@ static void test_tilt_continuous(void **state)
     if (worst > 0.0005)
         fail_msg("the pose moved %.3f mm in one 10 urad step (the fits weigh the same at %g rad)", 1000 * worst,
                  t_half);
-    printf("  the pose's error at most %.2f of its sigma\n", zmax);
+    printf("  the pose's error at most %.2f of its sigma; sigma across the lean %.2f mm level, %.2f mm at most\n",
+           zmax, 1000 * sy0, 1000 * symax);
+    if (symax > 3 * sy0)
+        fail_msg("a lean about one axis made the other unsure: sigma %.2f mm, %.2f level", 1000 * symax, 1000 * sy0);
     if (zmax > 3)
         fail_msg("the pose was %.1f sigmas from the robot (sigma too small for the lean it ignored)", zmax);
 }

@@ -3,6 +3,7 @@
  * what each file says), and what rl_site_prepare builds from them. */
 #include "rl_test.h"
 #include "rl_outfile.h"
+#include "rl_robotfile.h"
 #include "rl_site.h"
 
 static char cam_path[1024], map_path[1024], empty_path[1024], robot_path[1024], high_path[1024],
@@ -128,6 +129,35 @@ static void test_folder_names(void **state)
     assert_null(f.offsets);
 }
 
+/* robot.yaml's rocking: absent is the default, written only where it is
+ * not (a file an older ringloc reads too), and read back as written */
+static void test_robot_rocking(void **state)
+{
+    rl_mount m, back;
+    char err[600], path[1024], text[512];
+    FILE *f;
+    size_t n;
+    (void)state;
+    assert_int_equal(rl_robotfile_load(robot_path, &m, err, sizeof err), RL_OK);
+    assert_true(m.rocking == RL_POSE_TILT_PRIOR && m.rocking == 0.005);
+    rl_test_path(path, sizeof path, "robot_rocking.yaml");
+    assert_int_equal(rl_robotfile_save(path, &m, err, sizeof err), RL_OK);
+    f = fopen(path, "r");
+    assert_non_null(f);
+    n = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[n] = 0;
+    assert_null(strstr(text, "rocking"));
+    m.rocking = 0.0125;
+    assert_int_equal(rl_robotfile_save(path, &m, err, sizeof err), RL_OK);
+    assert_int_equal(rl_robotfile_load(path, &back, err, sizeof err), RL_OK);
+    assert_true(back.rocking == 0.0125);
+    m.rocking = 0;
+    assert_int_equal(rl_robotfile_save(path, &m, err, sizeof err), RL_OK);
+    assert_int_equal(rl_robotfile_load(path, &back, err, sizeof err), RL_OK);
+    assert_true(back.rocking == 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -135,6 +165,7 @@ int main(void)
         cmocka_unit_test(test_repeated_ids_index),
         cmocka_unit_test(test_checks_name_the_files),
         cmocka_unit_test(test_folder_names),
+        cmocka_unit_test(test_robot_rocking),
     };
     return cmocka_run_group_tests(tests, setup, NULL);
 }

@@ -66,7 +66,7 @@ static void make_model(const rl_calib *cam, const rl_map *map, const rl_mount *m
 {
     rl_pose_fit_model(md, mount, map->ceiling_height, 0.5 * map->diameter);
     md->sn = RL_POSE_PIXEL_SIGMA / sqrt(cam->fx * cam->fy);
-    md->prior = fmax(RL_POSE_TILT_LEVEL, mount->rocking);
+    md->prior[0] = md->prior[1] = fmax(RL_POSE_TILT_LEVEL, mount->rocking);
 }
 
 /* One detection as a point: its ray and, for a level robot, where that
@@ -174,17 +174,18 @@ static void average_fits(double w, const double *qt, const double *covt, double 
     }
 }
 
-/* The tilt a level fit leaves in its uncertainty (held, "considered":
- * the fit is off by as much as the robot leans): the robot's rocking
- * (rl_mount.rocking) as the tilted fit has narrowed it, its lean and its
- * sigma combined with the rocking as two independent estimates are.
+/* The tilt about one axis a level fit leaves in its uncertainty (held,
+ * "considered": the fit is off by as much as the robot leans): the
+ * robot's rocking (rl_mount.rocking) as the tilted fit's lean and its
+ * sigma s about that axis have narrowed it (combined as two independent
+ * estimates are: the root of the posterior's variance plus its mean
+ * squared).
  * Before, 20 urad wherever a tilted fit existed: the demo's level frames
  * (rocking 0.01 rad) were 3-7 mm off with sigmas of 0.1-0.3 mm. */
-static double level_prior(const rl_pose_model *md, const rl_pose *fit)
+static double level_prior(const rl_pose_model *md, double lean, double s)
 {
-    double s = fmax(fit->fit_sigma_roll, fit->fit_sigma_pitch);
     double p2 = md->mount->rocking * md->mount->rocking, s2 = s * s;
-    double lean = fmax(fabs(fit->fit_roll), fabs(fit->fit_pitch)) * p2 / (p2 + s2);
+    lean *= p2 / (p2 + s2);
     return fmax(RL_POSE_TILT_LEVEL, sqrt(p2 * s2 / (p2 + s2) + lean * lean));
 }
 
@@ -200,7 +201,7 @@ static int fit_pinhole(rl_pose_model *md, rl_pose_pt *pt, int m, double *q, doub
     int solved = 0, i;
     memcpy(qt, q, sizeof qt);
     if (m >= 3) {
-        md->prior = RL_POSE_TILT_WEAK;
+        md->prior[0] = md->prior[1] = RL_POSE_TILT_WEAK;
         solved = rl_pose_fit_solve(md, pt, m, RL_POSE_NQ, qt, covt, &chi2t) && variances_ok(covt);
         if (solved) {
             out->fit_roll = qt[3];
@@ -213,7 +214,11 @@ static int fit_pinhole(rl_pose_model *md, rl_pose_pt *pt, int m, double *q, doub
     /* the paper's model: a level robot (the mount's tilt applied); its
      * rocking is in the uncertainty: with two landmarks all of it, with
      * more what the tilted fit could not rule out */
-    md->prior = solved ? level_prior(md, out) : fmax(RL_POSE_TILT_LEVEL, md->mount->rocking);
+    md->prior[0] = md->prior[1] = fmax(RL_POSE_TILT_LEVEL, md->mount->rocking);
+    if (solved) { /* each axis as the tilted fit found it */
+        md->prior[0] = level_prior(md, out->fit_roll, out->fit_sigma_roll);
+        md->prior[1] = level_prior(md, out->fit_pitch, out->fit_sigma_pitch);
+    }
     for (i = 0; i < m; i++)
         pt[i].w = 1;
     if (!rl_pose_fit_solve(md, pt, m, 3, q, cov, chi2)) {
@@ -310,7 +315,8 @@ rl_err rl_pose_solve_matched(const rl_calib *cam, const rl_map *map, const rl_mo
     if (n > RL_MAX_LANDMARKS)
         n = RL_MAX_LANDMARKS; /* more than a frame reports (rl_result) */
     Z = map->ceiling_height - mount->z;
-    if (!(Z > 0) || !(fabs(mount->roll) < 0.5) || !(fabs(mount->pitch) < 0.5))
+    if (!(Z > 0) || !(fabs(mount->roll) < 0.5) || !(fabs(mount->pitch) < 0.5) ||
+        !(mount->rocking >= 0 && mount->rocking <= RL_POSE_ROCKING_MAX))
         return RL_ERANGE;
     make_model(cam, map, mount, &md);
     for (i = 0; i < n && m < RL_MAX_LANDMARKS; i++) {

@@ -37,7 +37,7 @@ void rl_pose_fit_model(rl_pose_model *md, const rl_mount *mount, double height, 
     md->height = height;
     md->radius = radius;
     md->sn = 1.0;
-    md->prior = 1.0;
+    md->prior[0] = md->prior[1] = 1.0;
 }
 
 int rl_pose_fit_level_point(const rl_pose_model *md, double Z, double xn, double yn, double *px, double *py)
@@ -137,8 +137,8 @@ static int residuals(const rl_pose_model *md, const rl_pose_pt *pt, int m, const
         r[2 * i] = (pt[i].xn - xn) / (md->sn * pt[i].noise) * pt[i].w;
         r[2 * i + 1] = (pt[i].yn - yn) / (md->sn * pt[i].noise) * pt[i].w;
     }
-    r[2 * m] = -q[3] / md->prior;
-    r[2 * m + 1] = -q[4] / md->prior;
+    r[2 * m] = -q[3] / md->prior[0];
+    r[2 * m + 1] = -q[4] / md->prior[1];
     return 1;
 }
 
@@ -232,6 +232,9 @@ static int normal_equations(const rl_pose_model *md, rl_pose_pt *pt, int m, cons
     return 1;
 }
 
+/* the held parameter k's prior variance: the tilt's roll (3), pitch (4) */
+#define P(k) ((k) >= 3 ? prior[(k)-3] * prior[(k)-3] : 0.0)
+
 /* The covariance of all five parameters at q into cov: the free ones'
  * (the first nf) from the centres, with those held at their value
  * (nf < 5) as unsure as the prior says, "considered": the free ones
@@ -241,10 +244,9 @@ static int normal_equations(const rl_pose_model *md, rl_pose_pt *pt, int m, cons
  * (the demo's level frames: 3-7 mm off with sigmas of 0.1-0.3 mm when the
  * tilt's prior was counted as a measurement). A the normal matrix of all
  * five (the prior only on the held ones' diagonal). 0 if singular. */
-static int considered(const double *A, int nf, double prior, double *cov)
+static int considered(const double *A, int nf, const double *prior, double *cov)
 {
     double Aff[RL_POSE_NQ * RL_POSE_NQ], S[RL_POSE_NQ][RL_POSE_NQ], e[RL_POSE_NQ];
-    double p2 = prior * prior;
     int a, b, j, n = RL_POSE_NQ;
     for (b = 0; b < nf; b++) { /* A_ff^-1, column by column */
         for (a = 0; a < nf; a++)
@@ -264,13 +266,14 @@ static int considered(const double *A, int nf, double prior, double *cov)
         }
     for (a = 0; a < n; a++)
         for (b = 0; b < n; b++) {
-            double sum = a < nf && b < nf ? cov[a * n + b] : (a == b ? p2 : 0);
+            double sum = a < nf && b < nf ? cov[a * n + b] : (a == b ? P(a) : 0);
             for (j = nf; j < n; j++)
-                sum += (a < nf ? S[a][j] : a == j) * (b < nf ? S[b][j] : b == j) * p2 * (a < nf || b < nf);
+                sum += (a < nf ? S[a][j] : a == j) * (b < nf ? S[b][j] : b == j) * P(j) * (a < nf || b < nf);
             cov[a * n + b] = sum;
         }
     return 1;
 }
+#undef P
 
 /* Gauss-Newton on the first nf parameters of q; the covariance of all
  * five (the held ones through the prior, considered) into cov, the

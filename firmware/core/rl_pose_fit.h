@@ -34,7 +34,7 @@ typedef struct {
     double Rm[9];  /* camera axes in the robot frame */
     double height; /* ceiling above the floor (the map's plane; a landmark may hang lower) */
     double sn;     /* centre noise in normalized units */
-    double prior;  /* sigma of the tilt prior, rad */
+    double prior[2]; /* sigma of the tilt prior: roll, pitch, rad */
     double radius; /* the landmarks' outer radius on the ceiling, m (0: centres as points) */
 } rl_pose_model;
 

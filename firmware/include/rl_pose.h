@@ -47,8 +47,10 @@
 typedef struct {
     double x, y, z, yaw;
     double roll, pitch;
-    double rocking; /* how far the robot leans on its floor, rad (sd per axis;
-                       rl_mount_defaults: RL_POSE_TILT_PRIOR; 0: never) */
+    double rocking; /* how far the robot leans on its floor, rad (sd per axis,
+                       0 .. RL_POSE_ROCKING_MAX; rl_mount_defaults:
+                       RL_POSE_TILT_PRIOR; 0: never, as a brace initializer
+                       that leaves it out says) */
 } rl_mount;
 
 /* The paper's alternative to the pinhole model: the physical offset of a
@@ -92,6 +94,7 @@ typedef struct {
  * keeps a solved tilt within reason, radians. */
 #define RL_POSE_PIXEL_SIGMA 0.15
 #define RL_POSE_TILT_PRIOR 0.005
+#define RL_POSE_ROCKING_MAX 0.3 /* the most rl_mount.rocking may say */
 #define RL_POSE_TILT_WEAK 0.1
 #define RL_POSE_TILT_LEVEL 0.000001 /* the least a level fit's tilt is unsure by (a number, not a lean) */
 /* How much better (chi-square, in units of the residual variance) the

@@ -31,7 +31,7 @@ rl_err rl_robotfile_load(const char *path, rl_mount *m, char *err, size_t errlen
         (e = rl_yaml_double_in(&y, cm, "yaw", "camera_mount.yaw", 0, -7, 7, &m->yaw, err, errlen)) != RL_OK ||
         (e = rl_yaml_double_in(&y, cm, "roll", "camera_mount.roll", 0, -0.5, 0.5, &m->roll, err, errlen)) != RL_OK ||
         (e = rl_yaml_double_in(&y, cm, "pitch", "camera_mount.pitch", 0, -0.5, 0.5, &m->pitch, err, errlen)) != RL_OK ||
-        (e = rl_yaml_double_in(&y, root, "rocking", "rocking", RL_POSE_TILT_PRIOR, 0, 0.2, &m->rocking, err,
+        (e = rl_yaml_double_in(&y, root, "rocking", "rocking", 0, 0, RL_POSE_ROCKING_MAX, &m->rocking, err,
                                errlen)) != RL_OK)
         goto out;
 out:
@@ -53,6 +53,9 @@ rl_err rl_robotfile_save(const char *path, const rl_mount *m, char *err, size_t 
                 m->z, m->yaw, m->roll, m->pitch);
     else
         fprintf(f, "camera_mount: {x: %.4f, y: %.4f, z: %.4f, yaw: %.6f}\n", m->x, m->y, m->z, m->yaw);
-    fprintf(f, "# how far the robot leans on its floor, rad (sd per axis; 0: never)\nrocking: %.6f\n", m->rocking);
+    /* only where it is not the default: a file an older ringloc reads too */
+    if (m->rocking != RL_POSE_TILT_PRIOR)
+        fprintf(f, "# how far the robot leans on its floor, rad (sd per axis; 0: never)\nrocking: %.6f\n",
+                m->rocking);
     return rl_outfile_commit(&o, err, errlen);
 }

@@ -38,6 +38,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     mount.yaw = fuzz_take(&data, &size);
     mount.roll = fuzz_take(&data, &size) * 1e-3; /* mostly within the 0.5 rad a mount may have */
     mount.pitch = fuzz_take(&data, &size) * 1e-3;
+    mount.rocking = fuzz_take(&data, &size) * 1e-3; /* mostly within 0 .. RL_POSE_ROCKING_MAX, some not */
     memset(&map, 0, sizeof map);
     map.family.bits = 5;
     map.diameter = 0.21;

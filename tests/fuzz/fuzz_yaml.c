@@ -42,7 +42,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     case 2: {
         rl_mount m;
         if ((e = rl_robotfile_load(path, &m, err, sizeof err)) == RL_OK &&
-            !(isfinite(m.x) && isfinite(m.y) && isfinite(m.z) && isfinite(m.yaw)))
+            !(isfinite(m.x) && isfinite(m.y) && isfinite(m.z) && isfinite(m.yaw) && fabs(m.roll) <= 0.5 &&
+              fabs(m.pitch) <= 0.5 && m.rocking >= 0 && m.rocking <= RL_POSE_ROCKING_MAX))
             abort();
         break;
     }

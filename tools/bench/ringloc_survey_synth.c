@@ -124,7 +124,7 @@ static int synth_option(int c, const char *arg, synth_opts *o)
     case 's': return rl_cli_ulong(NULL, "--seed", arg, 0, 4294967295ul, &o->seed);
     case 'C': o->cmp = arg; return 1;
     case 'N': return rl_cli_double(NULL, "--noise", arg, 0, 100, &o->noise);
-    case 'K': return rl_cli_double(NULL, "--rock", arg, 0, 0.5, &o->rock);
+    case 'K': return rl_cli_double(NULL, "--rock", arg, 0, RL_POSE_ROCKING_MAX, &o->rock);
     case 'a': o->camera = arg; return 1;
     default: return 0;
     }
@@ -319,6 +319,7 @@ int main(int argc, char **argv)
     n = make_site(&o, site);
     rl_mount_defaults(&mount, 0.88);
     mount.x = 0.1;
+    mount.rocking = o.rock; /* the truth, as the renderer writes it */
     if ((r = write_site(o.out, &cam_site.calib, &mount, site, n)) != 0)
         return r;
     return write_drive(&o, &cam_site.calib, &mount, site, n);

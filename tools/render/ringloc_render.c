@@ -257,7 +257,7 @@ static int render_option(int c, const char *arg, render_opts *o)
     case 'D': return parse_lower(arg, o);
     case 'L': return parse_rolling(arg, o);
     case 'T': return rl_cli_double(NULL, "--interval", arg, 0.001, 3600, &o->interval);
-    case 'r': return rl_cli_double(NULL, "--rock", arg, 0, 0.3, &o->rock);
+    case 'r': return rl_cli_double(NULL, "--rock", arg, 0, RL_POSE_ROCKING_MAX, &o->rock);
     case 'E': o->site_map = arg; return 1;
     case 'P':
         if (!rl_paper_parse(arg, &o->sheet))

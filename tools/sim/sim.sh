@@ -93,7 +93,7 @@ trap 'stop_all; exit 1' INT TERM
 # about 3 mm and 0.3 degrees a frame that the frames' sigmas do not carry:
 # the ARIA example is told so (-frameFloor, -frameFloorYaw).
 MOUNT=0.1,0,0,0.0087,0.0175 ROCK=${SIM_ROCK:-0.001} FLOOR=${SIM_FLOOR:-3} FLOOR_YAW=${SIM_FLOOR_YAW:-0.3}
-"$RENDER" --site-map site.yaml --mount $MOUNT --write-camera cam.yaml --write-robot robot.yaml || exit 1
+"$RENDER" --site-map site.yaml --mount $MOUNT --rock $ROCK --write-camera cam.yaml --write-robot robot.yaml || exit 1
 # The route: 22 m, twice round a 5 x 3 m loop less a leg, from the start (1.5, 1.5)
 cat > route.txt <<'R'
 # waypoints X Y (m, the site's frame)
