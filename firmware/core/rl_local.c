@@ -213,18 +213,16 @@ static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_resul
 /* Read across the motion: the same id as the circle's, and plain there,
  * along each axis in the frame (reads_in_frame); a half axis, half the
  * pixels, must lead by HALF_READ_LEAD. Reads the polar cells of the
- * circle's search. From a centre outside the frame too (a circle fitted
- * to less than half a ring; the cut 10 of the moving set's frame 023,
- * 1.4 px out): only the octants wholly in the frame are read, and the
- * cut rule's lead holds; test_across_twins reads the zone twins of cut
- * landmarks from centres out of the frame and none passes. */
+ * circle's search. Not from a centre outside the frame (a circle fitted
+ * to less than half a ring): no read sees it, and a few octants read
+ * from a centre a few pixels off can name another code clearly. */
 static int read_across_axes(const rl_recog *rec, const rl_accept_rule *rule, const local_read *rd)
 {
     int W = rec->width, H = rec->height, n, whole;
     unsigned reads[READS_MAX];
     rl_accept_rule half = *rule;
     rl_match ma;
-    if (rd->m.id < 0 || rd->m.score < rule->min_score)
+    if (rd->m.id < 0 || rd->m.score < rule->min_score || !in_frame(W, H, rd->cx, rd->cy))
         return 0;
     n = reads_in_frame(rec->polar, W, H, rd->cx, rd->cy, rd->r, reads, &whole);
     rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, rule->max_blur,
@@ -246,19 +244,6 @@ static int read_across(const rl_recog *rec, const rl_accept_rule *rule, const lo
     taken = read_across_axes(rec, rule, rd);
     rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_LOCAL);
     return taken;
-}
-
-int rl_local_read_across(const rl_recog *rec, int id, double cx, double cy, double r)
-{
-    rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL);
-    local_read rd;
-    memset(&rd, 0, sizeof rd);
-    rd.m.id = id;
-    rd.m.score = rule.min_score;
-    rd.cx = cx;
-    rd.cy = cy;
-    rd.r = r;
-    return read_across_axes(rec, &rule, &rd);
 }
 
 /* A read searched from the circle (cx, cy, r) (its polar cells gathered

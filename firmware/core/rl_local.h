@@ -41,12 +41,4 @@ void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res);
 int rl_local_read(rl_recog *rec, const rl_image *img, const rl_result *res, const rl_detection *u, double R,
                   rl_detection *out);
 
-/* The local pass's read across the motion (the last read of a circle its
- * search named `id`): id read from the polar cells rec->polar holds (as
- * the last search gathered them, rl_search.h) at the circle (cx, cy, r),
- * along the axes and pairs of octants wholly in the frame, by the local
- * rule and the cut rule's lead; 1 when taken. For tests: a landmark's
- * zone twins must not be taken. */
-int rl_local_read_across(const rl_recog *rec, int id, double cx, double cy, double r);
-
 #endif
