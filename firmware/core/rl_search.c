@@ -124,8 +124,8 @@ void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double
         rl_match_all(tt, &p, &ma);
         if (ma.id != id || ma.blur > max_blur)
             continue; /* another code, or smeared: along the motion */
-        if (m->id >= 0 && rl_accept_lead(&ma) <= rl_accept_lead(m))
-            continue; /* its twins only lower its lead: it cannot lead */
+        if (m->id >= 0 && ma.second >= 0 && rl_accept_lead(&ma) <= rl_accept_lead(m))
+            continue; /* its twins only lower its lead (a runner-up at or over 0): it cannot lead */
         twin_check(tt, pol, x, y, s, reads[a], &ma);
         if (m->id < 0 || rl_accept_lead(&ma) > rl_accept_lead(m))
             *m = ma;
