@@ -56,8 +56,9 @@ int rl_edge_points(const rl_image *img, const rl_tone *tone, int light, double c
  * the image or run into light are skipped; then rl_edge_fit_points, with
  * a few outliers left out where the rays that found the edge go round it
  * (no gap of 105 degrees or more between two of them). On success
- * (frame coordinates) the number of edge points within a pixel of the
- * circle (at least 5), 0 when none. */
+ * (frame coordinates) the number of edge points within 1 px of the
+ * circle first fitted, before the refit (rl_edge_fit_points' count, at
+ * least 5), 0 when none. */
 int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy,
                      double *r);
 
@@ -69,5 +70,10 @@ int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double
  * points kept (those within the pixel, at least 5), 0 when none. */
 int rl_edge_fit_points(const double *ex, const double *ey, int n, int few_outliers, double *cx, double *cy,
                        double *r);
+
+/* How many of the n points (ex, ey) lie within tol px of the circle
+ * (cx, cy, r). */
+int rl_edge_count_near(const double *ex, const double *ey, int n, double cx, double cy, double r,
+                       double tol);
 
 #endif
