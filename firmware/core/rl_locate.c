@@ -152,8 +152,11 @@ static void circle_box(int W, int H, double cx, double cy, double r, rl_box *box
  * clutter_only, glare, motion and border sets the fallback found 13
  * circles that are no landmark (clutter, fixtures, the paper's corners),
  * 12 of them through 5-8 points (one of 11, clutter_only), each then a
- * local read that no rule took; without the check (0 here) a cut landmark
- * of the held-out set is lost (178 -> 177). */
+ * local read that no rule took. Without the check (0 here) the moving,
+ * held-out, border, glare, motion, cluttered and clutter_only sets read
+ * the same (the fallback's failed fit taken as a circle, as ">= 0" on
+ * the old count did, loses a cut landmark of the held-out set: 178 ->
+ * 177); no read test shows it (test_edge_fit checks the counts). */
 #define ARC_MIN_POINTS 9
 #define ARC_NEAR_PX 1.0
 #define ARC_NEAR 25.0
