@@ -245,6 +245,46 @@ static void small_ring_cut_by_the_border(void **state)
         fail_msg("circle (%.2f, %.2f) r %.2f, drawn (%.2f, %.2f) r %.2f", cx, cy, r, CX, CY, R);
 }
 
+/* The arc fallback (rl_edge_fit_arc) on a dark bar 2R tall on white
+ * paper, from a start R/2 short of its right end: the eight rays 67.5 to
+ * 112.5 degrees either side of the bar's axis find its long edges, at
+ * R/sin(t) (1.01 and 1.08 R: (+-0.41, +-1) and (+-0.13, +-1) radii); the
+ * rest run along the bar's black or start out past its end in the paper.
+ * The circle through the eight (about R, every point within a pixel of it:
+ * rl_edge_fit_rays takes it) is no ring: eight of 24 rays, under the
+ * nine the fallback needs. A ring with half its rays lit (twelve points)
+ * it takes. */
+static void a_bar_is_no_arc(void **state)
+{
+    rl_image img = rl_image_view(W, H, W, px);
+    rl_tone tone;
+    double c[RL_EDGE_RAYS], s[RL_EDGE_RAYS], cx, cy, r;
+    int x, y;
+    (void)state;
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++)
+            px[y * W + x] = fabs(y - CY) < R && x < CX + 0.45 * R ? 40 : 200;
+    rl_tone_init(&tone, 1.0);
+    assert_int_equal(rl_edge_points(&img, &tone, LIGHT, CX, CY, R, px_x, px_y), 8);
+    cx = CX;
+    cy = CY;
+    r = R;
+    assert_true(rl_edge_fit_rays(&img, &tone, LIGHT, &cx, &cy, &r) > 0);
+    printf("  a bar: rl_edge_fit_rays' circle (%.2f, %.2f) r %.2f\n", cx, cy, r);
+    cx = CX;
+    cy = CY;
+    r = R;
+    assert_int_equal(rl_edge_fit_arc(&img, &tone, LIGHT, &cx, &cy, &r), 0);
+    rl_ray_dirs(RL_EDGE_RAYS, c, s);
+    wobble = 0.0;
+    draw(c, s, 0, 12);
+    cx = CX + 0.7;
+    cy = CY - 0.7;
+    r = 1.04 * R;
+    assert_int_equal(rl_edge_fit_arc(&img, &tone, LIGHT, &cx, &cy, &r), 1);
+    assert_true(fabs(r - R) < 0.3 && hypot(cx - CX, cy - CY) < 0.3);
+}
+
 /* Points placed by hand, as frame 046's whole 2 gave them: ten on a
  * circle of 24 px about (100.3, 80.7) with up to 1.2 px of scatter (its
  * dozen lay at 22.4-24.8 px), two out in the paper at +4.2 and +6.1 px.
@@ -289,6 +329,7 @@ int main(void)
         cmocka_unit_test(two_points_out_in_the_paper),
         cmocka_unit_test_teardown(big_ring_cut_by_the_border, restore_drawing),
         cmocka_unit_test_teardown(small_ring_cut_by_the_border, restore_drawing),
+        cmocka_unit_test(a_bar_is_no_arc),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

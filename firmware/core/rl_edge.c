@@ -237,8 +237,8 @@ int rl_edge_fit_points(const double *ex, const double *ey, int n, int few_outlie
     return kept;
 }
 
-int rl_edge_count_near(const double *ex, const double *ey, int n, double cx, double cy, double r,
-                       double tol)
+/* How many of the n points lie within tol px of the circle. */
+static int count_near(const double *ex, const double *ey, int n, double cx, double cy, double r, double tol)
 {
     int i, k = 0;
     for (i = 0; i < n; i++)
@@ -270,4 +270,20 @@ int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double
      * its farthest point out let the circle wander (2 cut landmarks of
      * the held-out moving set lost) */
     return rl_edge_fit_points(ex, ey, n, misses_under(found, EDGE_FEW_GAP), cx, cy, r);
+}
+
+/* The tolerance of rl_edge_fit_arc's count: ARC_NEAR_PX, or a 25th of the
+ * radius where that is more (the edge's scatter grows with the size). */
+#define ARC_NEAR_PX 1.0
+#define ARC_NEAR 25.0
+
+int rl_edge_fit_arc(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy, double *r)
+{
+    double ex[RL_EDGE_RAYS], ey[RL_EDGE_RAYS], tol;
+    /* the points rl_edge_fit_rays finds from the same start */
+    int n = rl_edge_points(img, tone, light, *cx, *cy, *r, ex, ey);
+    if (!rl_edge_fit_rays(img, tone, light, cx, cy, r))
+        return 0;
+    tol = *r / ARC_NEAR > ARC_NEAR_PX ? *r / ARC_NEAR : ARC_NEAR_PX;
+    return count_near(ex, ey, n, *cx, *cy, *r, tol) >= RL_EDGE_ARC_MIN_POINTS;
 }

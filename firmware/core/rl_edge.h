@@ -71,9 +71,12 @@ int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double
 int rl_edge_fit_points(const double *ex, const double *ey, int n, int few_outliers, double *cx, double *cy,
                        double *r);
 
-/* How many of the n points (ex, ey) lie within tol px of the circle
- * (cx, cy, r). */
-int rl_edge_count_near(const double *ex, const double *ey, int n, double cx, double cy, double r,
-                       double tol);
+/* rl_edge_fit_rays from (*cx, *cy, *r), the circle taken only where at
+ * least RL_EDGE_ARC_MIN_POINTS of the rays' edge points lie within 1 px,
+ * or a 25th of its radius where that is more, of the circle returned: the
+ * local pass's fallback from a candidate's centre (rl_locate.c). 1 when
+ * taken. */
+#define RL_EDGE_ARC_MIN_POINTS 9
+int rl_edge_fit_arc(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy, double *r);
 
 #endif
