@@ -237,10 +237,23 @@ int rl_edge_fit_points(const double *ex, const double *ey, int n, int few_outlie
     return kept;
 }
 
+/* How many of the n points lie within tol px of the circle. */
+static int count_near(const double *ex, const double *ey, int n, double cx, double cy, double r, double tol)
+{
+    int i, k = 0;
+    for (i = 0; i < n; i++)
+        k += fabs(hypot(ex[i] - cx, ey[i] - cy) - r) <= tol;
+    return k;
+}
+
 /* The few-outlier step's arc: rays in a row without an edge, fewer than
- * this (the largest gap between rays with one under 105 degrees; a circle
- * the frame's border cuts has six or more, from 7.5 degrees either side
- * of the border's normal out to 37.5, below 60 px of radius). */
+ * this (the largest gap between rays with one under 105 degrees). A circle
+ * the frame's border cuts loses the rays whose path (out to 1.25 radii)
+ * crosses the border, how many set by how deep the cut is against the
+ * radius, not by the size: the four 7.5 and 22.5 degrees either side of
+ * the border's normal once the circle comes within a quarter radius of
+ * the border, the six out to 37.5 degrees once the border cuts it by
+ * about 1% of its radius (0.25 px at 24 px, 1.2 px at 120 px). */
 #define EDGE_FEW_GAP 6
 
 int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy,
@@ -257,4 +270,20 @@ int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double
      * its farthest point out let the circle wander (2 cut landmarks of
      * the held-out moving set lost) */
     return rl_edge_fit_points(ex, ey, n, misses_under(found, EDGE_FEW_GAP), cx, cy, r);
+}
+
+/* The tolerance of rl_edge_fit_arc's count: ARC_NEAR_PX, or a 25th of the
+ * radius where that is more (the edge's scatter grows with the size). */
+#define ARC_NEAR_PX 1.0
+#define ARC_NEAR 25.0
+
+int rl_edge_fit_arc(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy, double *r)
+{
+    double ex[RL_EDGE_RAYS], ey[RL_EDGE_RAYS], tol;
+    /* the points rl_edge_fit_rays finds from the same start */
+    int n = rl_edge_points(img, tone, light, *cx, *cy, *r, ex, ey);
+    if (!rl_edge_fit_rays(img, tone, light, cx, cy, r))
+        return 0;
+    tol = *r / ARC_NEAR > ARC_NEAR_PX ? *r / ARC_NEAR : ARC_NEAR_PX;
+    return count_near(ex, ey, n, *cx, *cy, *r, tol) >= RL_EDGE_ARC_MIN_POINTS;
 }

@@ -56,8 +56,9 @@ int rl_edge_points(const rl_image *img, const rl_tone *tone, int light, double c
  * the image or run into light are skipped; then rl_edge_fit_points, with
  * a few outliers left out where the rays that found the edge go round it
  * (no gap of 105 degrees or more between two of them). On success
- * (frame coordinates) the number of edge points within a pixel of the
- * circle (at least 5), 0 when none. */
+ * (frame coordinates) the number of edge points within 1 px of the
+ * circle first fitted, before the refit (rl_edge_fit_points' count, at
+ * least 5), 0 when none. */
 int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy,
                      double *r);
 
@@ -69,5 +70,13 @@ int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double
  * points kept (those within the pixel, at least 5), 0 when none. */
 int rl_edge_fit_points(const double *ex, const double *ey, int n, int few_outliers, double *cx, double *cy,
                        double *r);
+
+/* rl_edge_fit_rays from (*cx, *cy, *r), the circle taken only where at
+ * least RL_EDGE_ARC_MIN_POINTS of the rays' edge points lie within 1 px,
+ * or a 25th of its radius where that is more, of the circle returned: the
+ * local pass's fallback from a candidate's centre (rl_locate.c). 1 when
+ * taken. */
+#define RL_EDGE_ARC_MIN_POINTS 9
+int rl_edge_fit_arc(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy, double *r);
 
 #endif

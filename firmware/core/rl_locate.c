@@ -142,14 +142,23 @@ static void circle_box(int W, int H, double cx, double cy, double r, rl_box *box
  * 44 px about a point 10 px from the candidate). */
 #define ARC_OFF 0.5
 #define ARC_LARGE 1.5
-/* ... and the circle found from there is taken only where at least this
- * many of the 24 rays' edge points lie within a pixel of it: the broken
+/* ... and the circle found from there is taken only where at least 9
+ * (RL_EDGE_ARC_MIN_POINTS) of the 24 rays' edge points (from the
+ * candidate's centre) lie within 1 px of the circle returned, or a 25th
+ * of its radius where that is more (rl_edge_fit_arc; the edge's scatter
+ * grows with the size: at 1 px, against the first least-squares circle,
+ * the letter sheets of
+ * 3.6mm_28Sep2013 at 40-80 px lost 1-2 landmarks a setting). The broken
  * rings of the moving set give 10, 12 and 18; over the moving, cluttered,
  * clutter_only, glare, motion and border sets the fallback found 13
  * circles that are no landmark (clutter, fixtures, the paper's corners),
  * 12 of them through 5-8 points (one of 11, clutter_only), each then a
- * local read that no rule took. */
-#define ARC_MIN_POINTS 9
+ * local read that no rule took. Without the check (0) the moving,
+ * held-out, border, glare, motion, cluttered and clutter_only sets read
+ * the same (the fallback's failed fit taken as a circle, as ">= 0" on
+ * the old count did, loses a cut landmark of the held-out set: 178 ->
+ * 177); no read test shows it (test_edge_fit's
+ * a_bar_is_no_arc does). */
 static int rays_from_candidate(const rl_recog *rec, const rl_image *img, int light, const rl_detection *u,
                                double R, double outline_r, double *cx, double *cy, double *r)
 {
@@ -158,7 +167,7 @@ static int rays_from_candidate(const rl_recog *rec, const rl_image *img, int lig
     *cx = u->u;
     *cy = u->v;
     *r = R;
-    return rl_edge_fit_rays(img, rec->tone, light, cx, cy, r) >= ARC_MIN_POINTS;
+    return rl_edge_fit_arc(img, rec->tone, light, cx, cy, r);
 }
 
 int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *res,

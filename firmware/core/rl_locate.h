@@ -26,7 +26,8 @@
  * rays from the centre of the region's outline, or from the candidate's
  * centre where none is found and the outline's circle lies over half a
  * radius from it (the region was an arc of a ring motion broke), then
- * only with at least 9 of the 24 rays' edge points on its circle. Where a
+ * only with at least 9 of the 24 rays' edge points within max(1 px, a
+ * 25th of its radius) of its circle. Where a
  * code ring was taken for the centre it surrounds, 0 when neither finds
  * the edge. The box is the region's, or the circle's within the frame
  * where the region was a code ring or the circle came from the
