@@ -4,7 +4,8 @@
  * but the search's step out (the radius 1.06 times larger) over it; the
  * floor must let it through to the search, which reads the id. The drawn
  * ring is the truth (rl_raster); a floor applied to the first match alone
- * stops it, and this test fails then. */
+ * stops it, and this test fails then. And a candidate is whole for the
+ * floor only when its fitted circle is in the frame too (rl_local_whole). */
 #include "rl_test.h"
 #include <math.h>
 #include "rl_local.h"
@@ -76,10 +77,26 @@ static void short_fit_read(void **state)
     assert_true(fabs(r - R) < 0.03 * R);
 }
 
+/* Whole for the floor: the box's circle and the fitted circle in the
+ * frame (hand-placed circles in a 100 x 80 frame). */
+static void whole_by_both_circles(void **state)
+{
+    rl_detection u;
+    (void)state;
+    memset(&u, 0, sizeof u);
+    u.complete = 1;
+    assert_true(rl_local_whole(100, 80, &u, 50, 40, 20));
+    assert_false(rl_local_whole(100, 80, &u, 85, 40, 20)); /* the box whole, the fitted circle cut */
+    assert_false(rl_local_whole(100, 80, &u, 50, 15, 20));
+    u.complete = 0;
+    assert_false(rl_local_whole(100, 80, &u, 50, 40, 20)); /* the box cut */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(short_fit_read),
+        cmocka_unit_test(whole_by_both_circles),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -334,7 +334,7 @@ static int cut_agrees_with_box(rl_recog *rec, const rl_image *img, int light, co
 static int first_read(rl_recog *rec, const rl_image *img, int light, const rl_detection *u, double min_first,
                       const rl_accept_rule *rule, local_read *rd, int *floored)
 {
-    int whole = u->complete && rl_geom_disk_complete(rec->width, rec->height, rd->cx, rd->cy, rd->r);
+    int whole = rl_local_whole(rec->width, rec->height, u, rd->cx, rd->cy, rd->r);
     if (rl_search_identify_over(&rec->templates, rec->polar, img, rec->tone, light,
                                 whole ? min_first : -INFINITY, rule->min_score, &rd->cx, &rd->cy, &rd->r, &rd->m))
         return 1;
@@ -437,6 +437,11 @@ void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res)
         res->unidentified[kept++] = u;
     }
     res->n_unidentified = kept;
+}
+
+int rl_local_whole(int W, int H, const rl_detection *u, double cx, double cy, double r)
+{
+    return u->complete && rl_geom_disk_complete(W, H, cx, cy, r);
 }
 
 int rl_local_read(rl_recog *rec, const rl_image *img, const rl_result *res, const rl_detection *u, double R,

@@ -38,6 +38,11 @@
  * to res->landmarks. */
 void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res);
 
+/* 1 when candidate u is whole for the floor in a W x H frame: its box's
+ * circle (u->complete) and the circle (cx, cy, r) fitted to its edge both
+ * in the frame (the reads the floor skips go by the fitted circle). */
+int rl_local_whole(int W, int H, const rl_detection *u, double cx, double cy, double r);
+
 /* Read one window: the candidate u (its centre, radius, box, complete
  * and visible; the landmark R px in radius) found again and identified
  * as a DUCLR is (rl_locate, the search, the local rule); 1 with it in
