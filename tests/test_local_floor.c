@@ -16,7 +16,7 @@
 #include "fixture_eval.h"
 #include "rl_heap_recog.h"
 #include "rl_png.h"
-#include "rl_recog_state.h"
+#include "rl_local.h"
 #include "rl_result.h"
 
 static const char *dir;
@@ -43,21 +43,14 @@ static void frame_both(rl_heap_recog *on, rl_heap_recog *off, const truth *t, fl
     static rl_result ron, roff;
     char png[1200], err[512];
     rl_image img;
-    long before;
     int j;
     snprintf(png, sizeof png, "%s/%s", dir, t->image);
     if (rl_png_read_gray(png, &img, err, sizeof err) != RL_OK)
         fail_msg("%s", err);
-    /* made for the frame's size first: a recognizer made anew starts with
-     * the floor on and its count at 0 */
-    assert_int_equal(rl_heap_recog_prepare(on, img.width, img.height), RL_OK);
-    assert_int_equal(rl_heap_recog_prepare(off, img.width, img.height), RL_OK);
-    off->rec->local_min_first = -INFINITY;
-    before = on->rec->local_floored;
     assert_int_equal(rl_heap_recog_run(on, &img, &ron), RL_OK);
     assert_int_equal(rl_heap_recog_run(off, &img, &roff), RL_OK);
-    c->floored += on->rec->local_floored - before;
-    assert_true(off->rec->local_floored == 0);
+    c->floored += ron.local_floored; /* per frame */
+    assert_int_equal(roff.local_floored, 0);
     for (j = 0; j < t->n; j++) {
         const truth_landmark *l = &t->lm[j];
         int a = id_at(&roff, l), b = id_at(&ron, l);
@@ -77,15 +70,18 @@ static void frame_both(rl_heap_recog *on, rl_heap_recog *off, const truth *t, fl
 
 static void floor_loses_nothing(void **state)
 {
-    rl_recog_config cfg;
+    rl_recog_config cfg, cfg_off;
     rl_heap_recog on, off;
     floor_counts c;
     int s, k;
     (void)state;
     memset(&c, 0, sizeof c);
     rl_recog_defaults(&cfg);
+    assert_true(cfg.local_min_first == RL_LOCAL_MIN_FIRST); /* the default is the floor */
+    cfg_off = cfg;
+    cfg_off.local_min_first = -INFINITY;
     rl_heap_recog_init(&on, &cfg);
-    rl_heap_recog_init(&off, &cfg);
+    rl_heap_recog_init(&off, &cfg_off);
     for (s = 0; s < n_sets; s++)
         for (k = 0;; k++) {
             truth t;

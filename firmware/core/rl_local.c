@@ -310,28 +310,32 @@ static int cut_agrees_with_box(rl_recog *rec, const rl_image *img, int light, co
 #define CUT_MIN_VISIBLE 0.4
 
 /* The search from rd's circle (rl_search.h), into *rd; 0 when u is whole
- * (its box's circle in the frame) and neither its first match nor the
- * search's step out scores min_first (then it is read no further: no
- * search, ellipse or read across the motion; counted in
- * rec->local_floored). A cut one is read at the frame's size and at its
- * box too, and was taken from first matches as low as 0.19. */
+ * (its box's circle and the fitted circle rd both in the frame) and
+ * neither its first match nor the search's step out scores min_first
+ * (then it is read no further: no search, ellipse or read across the
+ * motion; counted in *floored when floored is not NULL). A cut one (by its
+ * box or its fitted circle) is read at the frame's size and at its box
+ * too, and was taken from first matches as low as 0.15. */
 static int first_read(rl_recog *rec, const rl_image *img, int light, const rl_detection *u, double min_first,
-                      const rl_accept_rule *rule, local_read *rd)
+                      const rl_accept_rule *rule, local_read *rd, int *floored)
 {
+    int whole = rl_local_whole(rec->width, rec->height, u, rd->cx, rd->cy, rd->r);
     if (rl_search_identify_over(&rec->templates, rec->polar, img, rec->tone, light,
-                                u->complete ? min_first : -INFINITY, rule->min_score, &rd->cx, &rd->cy, &rd->r,
-                                &rd->m))
+                                whole ? min_first : -INFINITY, rule->min_score, &rd->cx, &rd->cy, &rd->r, &rd->m))
         return 1;
-    rec->local_floored++;
+    if (floored)
+        (*floored)++;
     return 0;
 }
 
 /* Retry one DUCLR u of expected radius R; 1 if identified (into *out).
  * An identified one is dropped when a ring starting within `reach` px of
  * its centre encloses it (rl_inner; 0: any its size allows); a whole one
- * whose first reads score under min_first is read no further (first_read). */
+ * whose first reads score under min_first is read no further (first_read,
+ * counted in *floored unless NULL). */
 static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *res,
-                           const rl_detection *u, double R, double reach, double min_first, rl_detection *out)
+                           const rl_detection *u, double R, double reach, double min_first, int *floored,
+                           rl_detection *out)
 {
     rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL);
     int W = rec->width, H = rec->height, light = res->levels.light;
@@ -345,7 +349,7 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     out->pass = RL_PASS_LOCAL;
     if (rl_geom_visible_in(W, H, rd.cx, rd.cy, rd.r) < CUT_MIN_VISIBLE)
         return 0;
-    if (!first_read(rec, img, light, u, min_first, &rule, &rd))
+    if (!first_read(rec, img, light, u, min_first, &rule, &rd, floored))
         return 0;
     /* the circle; the ellipse (whose centre is the better one where both
      * read); across the motion (the circle's cells); a cut one at the
@@ -409,7 +413,7 @@ void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res)
         double R = rexp > 0 ? rexp : u.radius;
         if (is_duclr(&rec->cfg, res, &u, R)) {
             res->local_tried++;
-            if (local_candidate(rec, img, res, &u, R, reach, rec->local_min_first, &d)) {
+            if (local_candidate(rec, img, res, &u, R, reach, rec->cfg.local_min_first, &res->local_floored, &d)) {
                 if (rl_result_add_landmark(res, &d))
                     res->local_found++;
                 continue;
@@ -420,8 +424,13 @@ void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res)
     res->n_unidentified = kept;
 }
 
+int rl_local_whole(int W, int H, const rl_detection *u, double cx, double cy, double r)
+{
+    return u->complete && rl_geom_disk_complete(W, H, cx, cy, r);
+}
+
 int rl_local_read(rl_recog *rec, const rl_image *img, const rl_result *res, const rl_detection *u, double R,
                   rl_detection *out)
 {
-    return local_candidate(rec, img, res, u, R, ENCLOSER_REACH * R + ENCLOSER_SLACK_PX, -INFINITY, out);
+    return local_candidate(rec, img, res, u, R, ENCLOSER_REACH * R + ENCLOSER_SLACK_PX, -INFINITY, NULL, out);
 }

@@ -19,20 +19,29 @@
 
 #include "rl_recog_state.h"
 
-/* A whole candidate (its box's circle in the frame) whose first match
- * (every id at every blur at the located circle) and the search's step
- * out (the radius 1.06 times larger, for edge fits glare makes short)
- * both score under this is read no further in the local pass (the
- * recognizer's local_min_first, set to this at init; tests turn it off).
- * On the development folders' composites whole candidates under 0.5 at
- * the circle took a fifth of the pass's time and none was taken there;
- * the step out is there for a whole 6 next to a light that a floor on the
- * first match alone lost on held-out photos. Not in rl_local_read. */
+/* A whole candidate (its box's circle and its fitted circle in the frame)
+ * whose first match (every id at every blur at the located circle) and
+ * the search's step out (the radius 1.06 times larger, for edge fits
+ * glare makes short) both score under this is read no further in the
+ * local pass (the default of rl_recog_config.local_min_first; counted in
+ * rl_result.local_floored). One whose first match names no id is not
+ * stopped (rl_search_identify_over). On the development folders'
+ * composites whole candidates under 0.5 at the circle took a fifth of the
+ * pass's time; 2 of the 331 there were taken by a later read, neither
+ * reaching the output (docs/results.md): lossless as measured, not by
+ * construction. The step out is there for a whole 6 next to a light that
+ * a floor on the first match alone lost on held-out photos. Not in
+ * rl_local_read. */
 #define RL_LOCAL_MIN_FIRST 0.5
 
 /* Retry every DUCLR of res; identified ones move from res->unidentified
  * to res->landmarks. */
 void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res);
+
+/* 1 when candidate u is whole for the floor in a W x H frame: its box's
+ * circle (u->complete) and the circle (cx, cy, r) fitted to its edge both
+ * in the frame (the reads the floor skips go by the fitted circle). */
+int rl_local_whole(int W, int H, const rl_detection *u, double cx, double cy, double r);
 
 /* Read one window: the candidate u (its centre, radius, box, complete
  * and visible; the landmark R px in radius) found again and identified

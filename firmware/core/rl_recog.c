@@ -32,6 +32,7 @@ void rl_recog_defaults(rl_recog_config *cfg)
     cfg->need = 2;
     cfg->local = RL_LOCAL_ALWAYS;
     cfg->near_light = 1.5;
+    cfg->local_min_first = RL_LOCAL_MIN_FIRST;
     cfg->min_contrast = 0.5;
     cfg->gamma = 0.0;
 }
@@ -142,8 +143,6 @@ static void resolve_config(rl_recog *rec, const rl_recog_config *cfg, int w, int
     rec->tone = rl_tones_current(&rec->tones);
     rec->width = w;
     rec->height = h;
-    rec->local_min_first = RL_LOCAL_MIN_FIRST;
-    rec->local_floored = 0;
 }
 
 rl_err rl_recog_init(rl_recog **out, const rl_recog_config *cfg, int w, int h, void *mem,

@@ -38,8 +38,6 @@ struct rl_recog {
     rl_illum illum; /* the ceiling's light across the frame: per-tile thresholds */
     rl_split split; /* the second labellings' thresholds */
     rl_polar *polar;/* a local-pass candidate in polar cells */
-    double local_min_first; /* the local pass's floor on a whole candidate's first reads (rl_local.h) */
-    long local_floored;     /* candidates it stopped, since init: a count */
 };
 
 #endif

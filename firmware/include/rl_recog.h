@@ -73,6 +73,9 @@ typedef struct {
                              ceilings half the landmarks next to lights and most cut ones
                              are found only there, at a fraction of the frame's time) */
     double near_light;    /* DUCLR: gap to a light of at most this many radii (default 1.5) */
+    double local_min_first; /* local pass: a whole DUCLR whose first match and the search's
+                               step out both score under this is read no further (default
+                               0.5, RL_LOCAL_MIN_FIRST; -INFINITY: every one read on) */
     int band_radius;      /* 1: an identified whole landmark's radius from both edges of its
                              outer black band, which no blur or tone curve biases (a
                              survey's scale; some 2-8% more time); 0 (default): from its
@@ -136,6 +139,7 @@ typedef struct {
     rl_box lights[RL_MAX_LIGHTS];
     int local_tried;    /* DUCLRs the local pass retried */
     int local_found;    /* of those, identified */
+    int local_floored;  /* of those, whole ones read no further (local_min_first) */
     double gamma;       /* the tone curve the frame was read through (rl_recog_config.gamma:
                            the configured one, or the one learned) */
     rl_dropped dropped; /* what the limits left out (all 0 on ordinary frames) */
