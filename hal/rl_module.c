@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 /* The module's symbol, or NULL with why (the loader's words). */
 static void *find(void *h, const char *symbol, const char **why)
@@ -15,15 +16,36 @@ static void *find(void *h, const char *symbol, const char **why)
     return sym;
 }
 
+/* The running program's folder into path (/proc/self/exe, links
+ * resolved); 0 if it cannot be read or does not fit. */
+static int program_folder(char *path, size_t len)
+{
+    ssize_t n = readlink("/proc/self/exe", path, len - 1);
+    char *slash;
+    if (n <= 0 || (size_t)n >= len - 1)
+        return 0;
+    path[n] = 0;
+    if ((slash = strrchr(path, '/')) == NULL)
+        return 0;
+    *slash = 0;
+    return 1;
+}
+
 rl_err rl_module_symbol(const rl_module *m, const char *symbol, void (**fn)(void), char *err, size_t errlen)
 {
-    char path[256];
+    char path[1024];
     const char *why = NULL;
     void *h, *sym;
     rl_module_abi_fn abi;
     *fn = NULL;
-    /* $ORIGIN: the program's own folder, links resolved (ld.so) */
-    snprintf(path, sizeof path, "$ORIGIN/../lib/ringloc/%s", m->file);
+    /* the program's own folder, links resolved (not ld.so's $ORIGIN, which
+     * is the caller's: a sanitizer runtime that wraps dlopen is in /usr/lib) */
+    if (!program_folder(path, sizeof path) ||
+        (size_t)snprintf(path + strlen(path), sizeof path - strlen(path), "/../lib/ringloc/%s", m->file) >=
+            sizeof path - strlen(path)) {
+        snprintf(err, errlen, "%s cannot be loaded: the program's own folder is not known", m->what);
+        return RL_EUNSUPPORTED;
+    }
     if ((h = dlopen(path, RTLD_NOW | RTLD_LOCAL)) == NULL) {
         why = dlerror();
         snprintf(err, errlen, "%s cannot be loaded from lib/ringloc/%s next to the program's folder: %s", m->what,

@@ -7,10 +7,12 @@
  * `ringloc` or `ringloc-fw` loads and relocates it: libcamera (the camera
  * backend, with its tracer) and Ceres Solver (the survey's adjustment)
  * were half of a start. A module is found from the program's own folder
- * only (never the library path or the current folder), must say it was
- * built for this program's version and layout, and is never unloaded.
+ * only (/proc/self/exe; never the library path or the current folder),
+ * must say it was built for this program's version and layout, and is
+ * never unloaded.
  *
- *   static const rl_module solver = {"ringloc-ceres.so", "the survey's solver (package ringloc-tools)", 1};
+ *   static const rl_module solver = {"ringloc-ceres.so", "the survey's solver (package ringloc-tools)",
+ *                                    RL_MODULE_ABI(sizeof(rl_map), sizeof(rl_calib))}; // its structures' sizes
  *   void (*fn)(void);
  *   char err[256];
  *   if (rl_module_symbol(&solver, "rl_survey_adjust_ceres", &fn, err, sizeof err) == RL_OK)

@@ -56,7 +56,8 @@ typedef struct {
     double pixel_scale;    /* px per normalized unit: sqrt(fx fy) */
     double pixel_sigma;    /* a centre's noise, px (RL_POSE_PIXEL_SIGMA) */
     double radius_sigma;   /* a radius's noise, px (0.15) */
-    double tilt_sigma;     /* the robot's rocking, rad (0.05): a prior on every frame's tilt */
+    double tilt_sigma;     /* a prior on every frame's tilt, rad (0.05): the survey's own, wider than
+                              robot.yaml's rocking, since it solves each frame's tilt with the rest */
     double gate;           /* how far from where a frame's pose puts it a landmark of
                               the same id is still taken as the same one, m (0.3) */
     int min_views;         /* frames that must see a landmark to place it (2) */

@@ -229,7 +229,7 @@ key map "$map" "sigma 0" "0,/{id: 1, x: 0.3050, y: 0.3050}/s//{id: 1, x: 0.3050,
 for v in '!!str 0.88' '"0.88"' "'0.88'" 0x1.cp-1 0X1P0; do
     key robot "$robot" "z $v" "s/z: 0.8800/z: $v/"
 done
-# the robot's rocking (rad, 0 .. 0.2)
+# the robot's rocking (rad, 0 .. 0.3)
 for v in nan .inf abc -0.01 0.5 "[0]" '"0.01"'; do
     key robot "$robot" rocking "s/^rocking: .*/rocking: $v/"
 done

@@ -21,7 +21,6 @@ static rl_polar pol;
 static rl_tone tone; /* the drawing is linear in grey: a linear camera */
 static uint8_t wsmem[1 << 20];
 
-/* Landmark `id` of radius r at (cx, cy), ink on paper. */
 /* Landmark `id` of radius r at (cx, cy), ink on paper, with noise
  * uniform in +-80 grey levels (a fixed sequence): clean, the first match
  * at 0.92 r scores 0.52-0.88 over the ids, above the floor. */

@@ -139,6 +139,9 @@ int rl_edge_points(const rl_image *img, const rl_tone *tone, int light, double c
 /* Whether fewer than `gap` rays in a row (around the circle) found no
  * edge: the misses' bits twice over, shifted onto themselves gap - 1 times
  * (a bit stays set where a miss is followed by gap - 1 more). */
+/* the found bits, doubled into 64 to read a run across the start */
+typedef char rl_edge_rays_fit_64_bits[RL_EDGE_RAYS <= 32 ? 1 : -1];
+
 static int misses_under(uint64_t found, int gap)
 {
     uint64_t all = ((uint64_t)1 << RL_EDGE_RAYS) - 1, miss = ~found & all, d = miss | (miss << RL_EDGE_RAYS);

@@ -30,8 +30,11 @@
  * pass's time; 2 of the 331 there were taken by a later read, neither
  * reaching the output (docs/results.md): lossless as measured, not by
  * construction. The step out is there for a whole 6 next to a light that
- * a floor on the first match alone lost on held-out photos. Not in
- * rl_local_read. */
+ * a floor on the first match alone lost on held-out photos. A circle the
+ * arc fallback found (rl_locate's rays from the candidate's centre, a ring
+ * the motion broke) is floored as any other: of 8 that reached the floor
+ * on the generated sets one was stopped, none lost (measured, not by
+ * design). Not in rl_local_read. */
 #define RL_LOCAL_MIN_FIRST 0.5
 
 /* Retry every DUCLR of res; identified ones move from res->unidentified

@@ -89,7 +89,11 @@ static void search_crosses(const rl_polar *pol, search_state *st)
 /* The winner's zone twins (rl_match_twins) at their best radius
  * (RL_SEARCH_TWIN_SCALES) near the found one, read from the octants of
  * the mask: when one comes close, the evidence between the two codes is
- * close, and m->second says so. */
+ * close, and m->second says so. A known limit: the list holds one block
+ * (RL_MATCH_BLOCK, 8 columns), so with two twins at seven blurs the
+ * second is scored at the sharpest blur only (docs/results.md, "Reading
+ * across the motion from a centre out of the frame": mending it costs a
+ * held-out cut and is the next round's). */
 static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, double y, double s,
                        unsigned octants, rl_match *m)
 {
@@ -97,7 +101,7 @@ static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, do
     rl_match_list ls;
     if (n == 0)
         return;
-    rl_match_list_make(tt, twins, n, -1, &ls); /* at every blur: one block */
+    rl_match_list_make(tt, twins, n, -1, &ls); /* one block: see above */
     for (k = 0; k < RL_SEARCH_TWIN_SCALES; k++) {
         rl_profile p;
         rl_match mm;

@@ -86,8 +86,8 @@ trap 'stop_all; exit 1' INT TERM
     --map-out site.yaml > plan.txt 2>&1 || { cat plan.txt; exit 1; }
 # The camera 10 cm ahead of the wheels' axle, tilted 0.5 degrees in roll and
 # 1 degree in pitch (the robot's mount, known to ringloc), rocking 0.06
-# degrees a frame (not known to it: 1.9 mm on the ceiling 1.87 m above the
-# camera). The frames are drawn at the truth AMRISim reports, in whole mm
+# degrees a frame (robot.yaml's rocking says so; 1.9 mm on the ceiling 1.87 m
+# above the camera). The frames are drawn at the truth AMRISim reports, in whole mm
 # and degrees: each frame is up to 0.5 mm and 0.5 degree off the simulated
 # robot whose odometry is fused with it. With the frames' own 1 mm steps,
 # about 3 mm and 0.3 degrees a frame that the frames' sigmas do not carry:
