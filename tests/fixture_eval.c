@@ -16,6 +16,30 @@ int truth_load_frame(const char *dir, const char *set, int k, truth *t)
     return truth_load(yaml, t) == 0 ? 1 : -1;
 }
 
+int fixture_sets_args(int argc, char **argv, const char *prog, fixture_sets *fs)
+{
+    if (argc < 3) {
+        fprintf(stderr, "usage: %s DIR SET...\n", prog);
+        return 0;
+    }
+    fs->dir = argv[1];
+    fs->sets = (const char *const *)(argv + 2);
+    fs->n = argc - 2;
+    return 1;
+}
+
+int fixture_sets_next(const fixture_sets *fs, int *s, int *k, truth *t)
+{
+    for (; *s < fs->n; ++*s, *k = 0) {
+        int got = truth_load_frame(fs->dir, fs->sets[*s], *k, t);
+        if (got != 0) {
+            ++*k;
+            return got;
+        }
+    }
+    return 0;
+}
+
 int truth_load(const char *yaml, truth *t)
 {
     rl_yaml y;

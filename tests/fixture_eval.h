@@ -41,6 +41,22 @@ int truth_load(const char *yaml, truth *t);
  * such frame (a set's end), -1 when its YAML does not load. */
 int truth_load_frame(const char *dir, const char *set, int k, truth *t);
 
+/* A test's frames: DIR and its SET names (the arguments DIR SET...). */
+typedef struct {
+    const char *dir;
+    const char *const *sets;
+    int n;
+} fixture_sets;
+
+/* *fs from a test's arguments; 0, with a usage line naming prog on
+ * stderr, when there are not a DIR and a SET. */
+int fixture_sets_args(int argc, char **argv, const char *prog, fixture_sets *fs);
+
+/* The next frame of fs into *t, from set *s frame *k on (both 0 at
+ * first): 1 (*s the set it is of), 0 after the last set's last frame, -1
+ * when a frame's YAML does not load. */
+int fixture_sets_next(const fixture_sets *fs, int *s, int *k, truth *t);
+
 /* The complete landmarks of each id seen, and how many identified, as
  * one line ("  per id: 1 12/12, 2 9/10 ..."); the worst id's rate (1
  * when none was seen), its id in *worst. */

@@ -19,9 +19,7 @@
 #include "rl_local.h"
 #include "rl_result.h"
 
-static const char *dir;
-static const char *const *sets;
-static int n_sets;
+static fixture_sets fs;
 
 typedef struct {
     int read_off, read_on, lost, wrong;
@@ -44,7 +42,7 @@ static void frame_both(rl_heap_recog *on, rl_heap_recog *off, const truth *t, fl
     char png[1200], err[512];
     rl_image img;
     int j;
-    snprintf(png, sizeof png, "%s/%s", dir, t->image);
+    snprintf(png, sizeof png, "%s/%s", fs.dir, t->image);
     if (rl_png_read_gray(png, &img, err, sizeof err) != RL_OK)
         fail_msg("%s", err);
     assert_int_equal(rl_heap_recog_run(on, &img, &ron), RL_OK);
@@ -73,7 +71,8 @@ static void floor_loses_nothing(void **state)
     rl_recog_config cfg, cfg_off;
     rl_heap_recog on, off;
     floor_counts c;
-    int s, k;
+    int s = 0, k = 0, got;
+    truth t;
     (void)state;
     memset(&c, 0, sizeof c);
     rl_recog_defaults(&cfg);
@@ -82,15 +81,9 @@ static void floor_loses_nothing(void **state)
     cfg_off.local_min_first = -INFINITY;
     rl_heap_recog_init(&on, &cfg);
     rl_heap_recog_init(&off, &cfg_off);
-    for (s = 0; s < n_sets; s++)
-        for (k = 0;; k++) {
-            truth t;
-            int got = truth_load_frame(dir, sets[s], k, &t);
-            if (got == 0)
-                break;
-            assert_int_equal(got, 1);
-            frame_both(&on, &off, &t, &c);
-        }
+    while ((got = fixture_sets_next(&fs, &s, &k, &t)) == 1)
+        frame_both(&on, &off, &t, &c);
+    assert_int_equal(got, 0);
     rl_heap_recog_free(&on);
     rl_heap_recog_free(&off);
     printf("read right: %d without the floor, %d with it (%ld candidates stopped); %d lost, %d wrong\n",
@@ -106,12 +99,7 @@ int main(int argc, char **argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(floor_loses_nothing),
     };
-    if (argc < 3) {
-        fprintf(stderr, "usage: test_local_floor DIR SET...\n");
+    if (!fixture_sets_args(argc, argv, "test_local_floor", &fs))
         return 2;
-    }
-    dir = argv[1];
-    sets = (const char *const *)(argv + 2);
-    n_sets = argc - 2;
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

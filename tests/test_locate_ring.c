@@ -25,9 +25,7 @@
 #include "rl_png.h"
 #include "rl_result.h"
 
-static const char *dir;
-static const char *const *sets;
-static int n_sets;
+static fixture_sets fs;
 
 typedef struct {
     int tried, located, off;
@@ -40,7 +38,7 @@ static void frame_rings(rl_heap_recog *hr, const truth *t, locate_counts *c)
     rl_image img;
     double R;
     int j;
-    snprintf(png, sizeof png, "%s/%s", dir, t->image);
+    snprintf(png, sizeof png, "%s/%s", fs.dir, t->image);
     if (rl_png_read_gray(png, &img, err, sizeof err) != RL_OK)
         fail_msg("%s", err);
     assert_int_equal(rl_heap_recog_run(hr, &img, &res), RL_OK);
@@ -89,20 +87,15 @@ static void every_ring_located(void **state)
     rl_recog_config cfg;
     rl_heap_recog hr;
     locate_counts c;
-    int s, k;
+    int s = 0, k = 0, got;
+    truth t;
     (void)state;
     memset(&c, 0, sizeof c);
     rl_recog_defaults(&cfg);
     rl_heap_recog_init(&hr, &cfg);
-    for (s = 0; s < n_sets; s++)
-        for (k = 0;; k++) {
-            truth t;
-            int got = truth_load_frame(dir, sets[s], k, &t);
-            if (got == 0)
-                break;
-            assert_int_equal(got, 1);
-            frame_rings(&hr, &t, &c);
-        }
+    while ((got = fixture_sets_next(&fs, &s, &k, &t)) == 1)
+        frame_rings(&hr, &t, &c);
+    assert_int_equal(got, 0);
     rl_heap_recog_free(&hr);
     printf("%d whole landmarks away from the lights: %d located, %d of them off\n", c.tried, c.located, c.off);
     assert_true(c.tried >= 100);
@@ -115,12 +108,7 @@ int main(int argc, char **argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(every_ring_located),
     };
-    if (argc < 3) {
-        fprintf(stderr, "usage: test_locate_ring DIR SET...\n");
+    if (!fixture_sets_args(argc, argv, "test_locate_ring", &fs))
         return 2;
-    }
-    dir = argv[1];
-    sets = (const char *const *)(argv + 2);
-    n_sets = argc - 2;
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

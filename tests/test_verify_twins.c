@@ -20,9 +20,7 @@
 #include "rl_png.h"
 #include "rl_verify.h"
 
-static const char *dir;
-static const char *const *sets;
-static int n_sets;
+static fixture_sets fs;
 
 typedef struct {
     int whole, near_border, own, twins, wrong;
@@ -44,7 +42,7 @@ static void frame_twins(rl_heap_recog *hr, const char *set, const truth *t, twin
     char png[1200], err[512];
     rl_image img;
     int j, z;
-    snprintf(png, sizeof png, "%s/%s", dir, t->image);
+    snprintf(png, sizeof png, "%s/%s", fs.dir, t->image);
     if (rl_png_read_gray(png, &img, err, sizeof err) != RL_OK)
         fail_msg("%s", err);
     assert_int_equal(rl_heap_recog_run(hr, &img, &res), RL_OK);
@@ -77,20 +75,15 @@ static void no_twin_confirmed(void **state)
     rl_recog_config cfg;
     rl_heap_recog hr;
     twin_counts c;
-    int s, k;
+    int s = 0, k = 0, got;
+    truth t;
     (void)state;
     memset(&c, 0, sizeof c);
     rl_recog_defaults(&cfg);
     rl_heap_recog_init(&hr, &cfg);
-    for (s = 0; s < n_sets; s++)
-        for (k = 0;; k++) {
-            truth t;
-            int got = truth_load_frame(dir, sets[s], k, &t);
-            if (got == 0)
-                break;
-            assert_int_equal(got, 1);
-            frame_twins(&hr, sets[s], &t, &c);
-        }
+    while ((got = fixture_sets_next(&fs, &s, &k, &t)) == 1)
+        frame_twins(&hr, fs.sets[s], &t, &c);
+    assert_int_equal(got, 0);
     rl_heap_recog_free(&hr);
     printf("%d about whole landmarks (%d near the border: read from their edge): %d verified as their own id, "
            "%d of %d zone twins taken\n",
@@ -105,12 +98,7 @@ int main(int argc, char **argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(no_twin_confirmed),
     };
-    if (argc < 3) {
-        fprintf(stderr, "usage: test_verify_twins DIR SET...\n");
+    if (!fixture_sets_args(argc, argv, "test_verify_twins", &fs))
         return 2;
-    }
-    dir = argv[1];
-    sets = (const char *const *)(argv + 2);
-    n_sets = argc - 2;
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -243,8 +243,10 @@ static int normal_equations(const rl_pose_model *md, rl_pose_pt *pt, int m, cons
  * the free ones surer: a level fit is off by as much as the robot leans
  * (the demo's level frames: 3-7 mm off with sigmas of 0.1-0.3 mm when the
  * tilt's prior was counted as a measurement). A the normal matrix of all
- * five (the prior only on the held ones' diagonal). 0 if singular. */
-static int considered(const double *A, int nf, const double *prior, double *cov)
+ * five (the prior only on the held ones' diagonal), factor the centres'
+ * noise factor (on A_ff^-1 only: S is the same at any noise). 0 if
+ * singular. */
+static int considered(const double *A, int nf, const double *prior, double factor, double *cov)
 {
     double Aff[RL_POSE_NQ * RL_POSE_NQ], S[RL_POSE_NQ][RL_POSE_NQ], e[RL_POSE_NQ];
     int a, b, j, n = RL_POSE_NQ;
@@ -266,7 +268,7 @@ static int considered(const double *A, int nf, const double *prior, double *cov)
         }
     for (a = 0; a < n; a++)
         for (b = 0; b < n; b++) {
-            double sum = a < nf && b < nf ? cov[a * n + b] : (a == b ? P(a) : 0);
+            double sum = a < nf && b < nf ? factor * cov[a * n + b] : (a == b ? P(a) : 0);
             for (j = nf; j < n; j++)
                 sum += (a < nf ? S[a][j] : a == j) * (b < nf ? S[b][j] : b == j) * P(j) * (a < nf || b < nf);
             cov[a * n + b] = sum;
@@ -280,8 +282,7 @@ static int considered(const double *A, int nf, const double *prior, double *cov)
  * centres' noise pooled with what their residuals show. 0 if it failed. */
 int rl_pose_fit_solve(const rl_pose_model *md, rl_pose_pt *pt, int m, int nf, double *q, double *cov, double *chi2)
 {
-    double A[RL_POSE_NQ * RL_POSE_NQ], g[RL_POSE_NQ], chi2c, factor;
-    rl_pose_model mc;
+    double A[RL_POSE_NQ * RL_POSE_NQ], g[RL_POSE_NQ], factor;
     int it, a, b, dof;
     for (it = 0; it < 16; it++) {
         double step = 0;
@@ -305,11 +306,8 @@ int rl_pose_fit_solve(const rl_pose_model *md, rl_pose_pt *pt, int m, int nf, do
         return 0;
     dof = 2 * m - nf;
     factor = dof > 0 ? (*chi2 + 3.0) / (dof + 3.0) : 1.0;
-    if (nf < RL_POSE_NQ) {
-        mc = *md;
-        mc.sn *= sqrt(factor);
-        return normal_equations(&mc, pt, m, q, RL_POSE_NQ, 0, A, g, &chi2c) && considered(A, nf, md->prior, cov);
-    }
+    if (nf < RL_POSE_NQ)
+        return considered(A, nf, md->prior, factor, cov);
     for (b = 0; b < RL_POSE_NQ; b++) { /* (J'J)^-1, the prior bounding the tilt */
         double Ac[RL_POSE_NQ * RL_POSE_NQ], e[RL_POSE_NQ];
         memcpy(Ac, A, sizeof Ac);
