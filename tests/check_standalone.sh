@@ -6,18 +6,25 @@
 src=${1:?usage: check_standalone.sh SOURCE_DIR}
 cd "$src" || exit 2
 status=0
+# folders of a workplace or a user's machine (built from pieces: this file names none)
+machine_dirs="(wo""rk|ho""me|Us""ers)"
 if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
     files=$(git ls-files --cached --others --exclude-standard | grep -v '^build')
 else
     files=$(find . -type f ! -path './build*' ! -path './.git/*' | sed 's#^\./##')
 fi
-# 1. paths that leave the tree: the steering folder beside it, or a
-#    build file reaching above the source's top
+# 1. paths that leave the tree: the steering folder beside it, a folder
+#    of the machine a file was written on, or a build file reaching above
+#    the source's top
 for f in $files; do
     case $f in *.png|*.pdf|*.jpg|*.bin) continue ;; esac
     [ -f "$f" ] || continue
     if grep -nE '\.\./shared|(^|[^a-z_/])shared/(landmark-spec|paper|style)' "$f"; then
         echo "standalone: $f names the folder beside the tree (the contract is docs/landmark-spec.md)"
+        status=1
+    fi
+    if grep -nE "/$machine_dirs/[A-Za-z]" "$f"; then
+        echo "standalone: $f names a folder of the machine it was written on (name the build by its commit, a folder by a placeholder)"
         status=1
     fi
     if grep -nE '(PROJECT_SOURCE_DIR|CMAKE_SOURCE_DIR|CURDIR)\)?\}?/\.\.(/|$|[ "])' "$f"; then
