@@ -16,22 +16,23 @@ fi
 # 1. paths that leave the tree: the steering folder beside it, a folder
 #    of the machine a file was written on, or a build file reaching above
 #    the source's top
-for f in $files; do
+texts=$(for f in $files; do
     case $f in *.png|*.pdf|*.jpg|*.bin) continue ;; esac
-    [ -f "$f" ] || continue
-    if grep -nE '\.\./shared|(^|[^a-z_/])shared/(landmark-spec|paper|style)' "$f"; then
-        echo "standalone: $f names the folder beside the tree (the contract is docs/landmark-spec.md)"
+    [ -f "$f" ] && printf '%s\n' "$f"
+done)
+leave() { # message, pattern: one grep over every text file
+    hits=$(printf '%s\n' "$texts" | tr '\n' '\0' | xargs -0 grep -InHE "$2" 2>/dev/null)
+    if [ -n "$hits" ]; then
+        printf '%s\n' "$hits"
+        printf '%s\n' "$hits" | cut -d: -f1 | uniq | while IFS= read -r f; do echo "standalone: $f $1"; done
         status=1
     fi
-    if grep -nE "/$machine_dirs/[A-Za-z]" "$f"; then
-        echo "standalone: $f names a folder of the machine it was written on (name the build by its commit, a folder by a placeholder)"
-        status=1
-    fi
-    if grep -nE '(PROJECT_SOURCE_DIR|CMAKE_SOURCE_DIR|CURDIR)\)?\}?/\.\.(/|$|[ "])' "$f"; then
-        echo "standalone: $f reaches above the source tree"
-        status=1
-    fi
-done
+}
+leave "names the folder beside the tree (the contract is docs/landmark-spec.md)" \
+    '\.\./shared|(^|[^a-z_/])shared/(landmark-spec|paper|style)'
+leave "names a folder of the machine it was written on (name the build by its commit, a folder by a placeholder)" \
+    "/$machine_dirs/[A-Za-z]"
+leave "reaches above the source tree" '(PROJECT_SOURCE_DIR|CMAKE_SOURCE_DIR|CURDIR)\)?\}?/\.\.(/|$|[ "])'
 # 2. every Markdown file under docs named anywhere exists
 for d in $(grep -ahoE 'docs/[A-Za-z0-9_-]+\.md' $files 2>/dev/null | sort -u); do
     [ -f "$d" ] || { echo "standalone: $d is named but not in the tree"; status=1; }
