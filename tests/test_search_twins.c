@@ -20,8 +20,11 @@
  *       search's twin check at every blur"). Its own id is read from at
  *       least one circle of most landmarks, so nothing passes by reading
  *       nothing. The one-block twin check read 54 zone twins on
- *       isp_blur_s21 (whole 19, 23, 25 and 29 from circles 0.88-0.94 or
- *       a tenth off). */
+ *       isp_blur_s21 and 199 on moving and border (19 of them reported);
+ *       with the twins at every blur, the read across the motion still
+ *       took the moving set's cut 22 of frame 008 as 30 from 3 circles
+ *       where the search had its twin ahead (rl_local.c,
+ *       read_across_axes). */
 #include "rl_test.h"
 #include <math.h>
 #include "fixture_eval.h"

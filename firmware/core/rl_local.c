@@ -215,14 +215,20 @@ static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_resul
  * pixels, must lead by HALF_READ_LEAD. Reads the polar cells of the
  * circle's search. Not from a centre outside the frame (a circle fitted
  * to less than half a ring): no read sees it, and a few octants read
- * from a centre a few pixels off can name another code clearly. */
+ * from a centre a few pixels off can name another code clearly. Nor for
+ * a cut circle whose search found a zone twin reading better over it
+ * than the id (m.second over m.score, twin_check): the axes left in the
+ * frame then settle nothing between the two (the moving set's cut 22 of
+ * frame 008, from a circle 1.3 px off and 3% large, was taken as its
+ * twin 30 along an axis; test_search_twins). */
 static int read_across_axes(const rl_recog *rec, const rl_accept_rule *rule, const local_read *rd)
 {
     int W = rec->width, H = rec->height, n, whole;
     unsigned reads[READS_MAX];
     rl_accept_rule half = *rule;
     rl_match ma;
-    if (rd->m.id < 0 || rd->m.score < rule->min_score || !in_frame(W, H, rd->cx, rd->cy))
+    if (rd->m.id < 0 || rd->m.score < rule->min_score || !in_frame(W, H, rd->cx, rd->cy) ||
+        (rd->m.second > rd->m.score && rl_geom_visible_in(W, H, rd->cx, rd->cy, rd->r) < 1.0))
         return 0;
     n = reads_in_frame(rec->polar, W, H, rd->cx, rd->cy, rd->r, reads, &whole);
     rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, rule->max_blur,
