@@ -215,14 +215,20 @@ static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_resul
  * pixels, must lead by HALF_READ_LEAD. Reads the polar cells of the
  * circle's search. Not from a centre outside the frame (a circle fitted
  * to less than half a ring): no read sees it, and a few octants read
- * from a centre a few pixels off can name another code clearly. */
+ * from a centre a few pixels off can name another code clearly. Nor for
+ * a cut circle whose search found a zone twin reading better over it
+ * than the id (m.second over m.score, twin_check): the axes left in the
+ * frame then settle nothing between the two (the moving set's cut 22 of
+ * frame 008, from a circle 1.3 px off and 3% large, was taken as its
+ * twin 30 along an axis; test_search_twins). */
 static int read_across_axes(const rl_recog *rec, const rl_accept_rule *rule, const local_read *rd)
 {
     int W = rec->width, H = rec->height, n, whole;
     unsigned reads[READS_MAX];
     rl_accept_rule half = *rule;
     rl_match ma;
-    if (rd->m.id < 0 || rd->m.score < rule->min_score || !in_frame(W, H, rd->cx, rd->cy))
+    if (rd->m.id < 0 || rd->m.score < rule->min_score || !in_frame(W, H, rd->cx, rd->cy) ||
+        (rd->m.second > rd->m.score && rl_geom_visible_in(W, H, rd->cx, rd->cy, rd->r) < 1.0))
         return 0;
     n = reads_in_frame(rec->polar, W, H, rd->cx, rd->cy, rd->r, reads, &whole);
     rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, rule->max_blur,
@@ -328,22 +334,18 @@ static int first_read(rl_recog *rec, const rl_image *img, int light, const rl_de
     return 0;
 }
 
-/* Retry one DUCLR u of expected radius R; 1 if identified (into *out).
- * An identified one is dropped when a ring starting within `reach` px of
- * its centre encloses it (rl_inner; 0: any its size allows); a whole one
- * whose first reads score under min_first is read no further (first_read,
- * counted in *floored unless NULL). */
-static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *res,
-                           const rl_detection *u, double R, double reach, double min_first, int *floored,
-                           rl_detection *out)
+/* The reads of a DUCLR u (of expected radius R) from rd, the circle
+ * fitted to its outer edge; 1 if identified (into *out, whose box the
+ * caller set). An identified one is dropped when a ring starting within
+ * `reach` px of its centre encloses it (rl_inner; 0: any its size
+ * allows); a whole one whose first reads score under min_first is read
+ * no further (first_read, counted in *floored unless NULL). */
+static int circle_reads(rl_recog *rec, const rl_image *img, const rl_result *res, const rl_detection *u, double R,
+                        double reach, double min_first, int *floored, local_read rd, rl_detection *out)
 {
     rl_accept_rule rule = rl_accept_rule_of(&rec->cfg, RL_PASS_LOCAL);
     int W = rec->width, H = rec->height, light = res->levels.light;
-    local_read rd;
     int taken, ellipse = 0;
-    memset(out, 0, sizeof *out);
-    if (!rl_locate_outer_ring(rec, img, res, u, R, &out->box, &rd.cx, &rd.cy, &rd.r))
-        return 0;
     /* the fitted radius, not the frame's median: lens distortion makes
      * landmarks smaller away from the image centre */
     out->pass = RL_PASS_LOCAL;
@@ -371,6 +373,19 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
     out->score = rd.m.score;
     out->runner_up = rd.m.second;
     return 1;
+}
+
+/* Retry one DUCLR u of expected radius R: its outer ring found again
+ * (rl_locate), then read from the circle fitted to it (circle_reads). */
+static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *res,
+                           const rl_detection *u, double R, double reach, double min_first, int *floored,
+                           rl_detection *out)
+{
+    local_read rd;
+    memset(out, 0, sizeof *out);
+    if (!rl_locate_outer_ring(rec, img, res, u, R, &out->box, &rd.cx, &rd.cy, &rd.r))
+        return 0;
+    return circle_reads(rec, img, res, u, R, reach, min_first, floored, rd, out);
 }
 
 /* A UCLR of about the frame's landmark size is retried wherever it is:
@@ -433,4 +448,18 @@ int rl_local_read(rl_recog *rec, const rl_image *img, const rl_result *res, cons
                   rl_detection *out)
 {
     return local_candidate(rec, img, res, u, R, ENCLOSER_REACH * R + ENCLOSER_SLACK_PX, -INFINITY, NULL, out);
+}
+
+int rl_local_read_circle(rl_recog *rec, const rl_image *img, const rl_result *res, const rl_detection *u,
+                         double R, double cx, double cy, double r, rl_detection *out)
+{
+    local_read rd;
+    memset(out, 0, sizeof *out);
+    memset(&rd, 0, sizeof rd);
+    out->box = u->box;
+    rd.cx = cx;
+    rd.cy = cy;
+    rd.r = r;
+    return circle_reads(rec, img, res, u, R, ENCLOSER_REACH * R + ENCLOSER_SLACK_PX, rec->cfg.local_min_first, NULL,
+                        rd, out);
 }

@@ -53,4 +53,12 @@ int rl_local_whole(int W, int H, const rl_detection *u, double cx, double cy, do
 int rl_local_read(rl_recog *rec, const rl_image *img, const rl_result *res, const rl_detection *u, double R,
                   rl_detection *out);
 
+/* The local pass's reads of candidate u (as rl_local_read) from the
+ * circle (cx, cy, r) as if its outer edge had been fitted there
+ * (rl_locate skipped; the pass's floor, rl_recog_config.local_min_first,
+ * held): for tests that place the circles as an edge fit errs. 1 with
+ * the read in *out (its box u's). */
+int rl_local_read_circle(rl_recog *rec, const rl_image *img, const rl_result *res, const rl_detection *u,
+                         double R, double cx, double cy, double r, rl_detection *out);
+
 #endif

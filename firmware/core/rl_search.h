@@ -12,8 +12,8 @@
  * of a parabola through each axis's three scores is tried and the search
  * ends, else a finer cross follows the same way. Every id at every blur
  * is scored at the end, and the winner's twins in the two zones next to
- * the outer ring at radii around the found one: their best counts as the
- * runner-up.
+ * the outer ring at radii around the found one, each at every blur:
+ * their best counts as the runner-up.
  *
  *   rl_match m;
  *   rl_search_identify(&tt, pol, &img, &tone, light, 0.75, &cx, &cy, &r, &m);

@@ -1,0 +1,186 @@
+/* Issue 44: the local pass reads a candidate from the circle fitted to
+ * its outer edge, and that fit errs: glare or the border leaves it an arc,
+ * and a circle through an arc sits 5-12% short and up to a tenth of a
+ * radius off (rl_search.c). Whatever the circle, the read must not take a
+ * landmark's zone twin (the codes one zone from it next to the outer ring,
+ * which a radius error confuses most): the search holds the id against
+ * its twins (twin_check), every twin at every blur.
+ *
+ *   test_search_twins DIR SET...   the renderer's SET_NNN frames in DIR,
+ *       each recognized at gamma 2.2 (the frame read through the
+ *       camera's curve, where the local read's lead is the gate): every
+ *       landmark at least 0.4 in view (what the local pass tries,
+ *       CUT_MIN_VISIBLE), read by the local pass's reads
+ *       (rl_local_read_circle) from circles placed as an edge fit errs
+ *       round its true one (the renderer's truth): radius 0.88 to 1.06 of
+ *       the true, centre moved up to a tenth of the radius. No read may
+ *       name a zone twin of its id. Reads of other ids, and whether the
+ *       frame's zone twins' check (rl_twins) would report a wrong read,
+ *       are printed and counted, not judged (docs/results.md, "The
+ *       search's twin check at every blur"). Its own id is read from at
+ *       least one circle of most landmarks, so nothing passes by reading
+ *       nothing. The one-block twin check read 54 zone twins on
+ *       isp_blur_s21 and 199 on moving and border (19 of them reported);
+ *       with the twins at every blur, the read across the motion still
+ *       took the moving set's cut 22 of frame 008 as 30 from 3 circles
+ *       where the search had its twin ahead (rl_local.c,
+ *       read_across_axes). */
+#include "rl_test.h"
+#include <math.h>
+#include "fixture_eval.h"
+#include "rl_geom.h"
+#include "rl_heap_recog.h"
+#include "rl_local.h"
+#include "rl_match.h"
+#include "rl_png.h"
+#include "rl_twins.h"
+
+/* The circles: radius scales, and centre steps of a twentieth of the
+ * radius out to a tenth (within a disk of that). */
+static const double scales[] = {0.88, 0.91, 0.94, 0.97, 1.0, 1.03, 1.06};
+#define N_SCALES (int)(sizeof scales / sizeof scales[0])
+#define SHIFT_STEP 0.05
+#define SHIFT_STEPS 2
+
+static fixture_sets fs;
+
+typedef struct {
+    int landmarks, cut, reads, own_reads, own, twin_reads, other_reads, twin_kept, other_kept;
+} twin_counts;
+
+/* A candidate as the global pass leaves one: its box's circle the fitted
+ * one (a box that errs as the fit). */
+static rl_detection candidate_at(int W, int H, double cx, double cy, double r)
+{
+    rl_detection u;
+    memset(&u, 0, sizeof u);
+    u.id = u.best_id = -1;
+    u.u = cx;
+    u.v = cy;
+    u.radius = r;
+    u.complete = rl_geom_disk_complete(W, H, cx, cy, r);
+    u.visible = rl_geom_visible_in(W, H, cx, cy, r);
+    u.box.x0 = (int)floor(fmax(0, cx - r));
+    u.box.y0 = (int)floor(fmax(0, cy - r));
+    u.box.x1 = (int)ceil(fmin(W - 1, cx + r));
+    u.box.y1 = (int)ceil(fmin(H - 1, cy + r));
+    return u;
+}
+
+static int is_twin(const rl_recog *rec, int id, int other)
+{
+    int twins[2], n = rl_match_twins(&rec->templates, id, twins), k;
+    for (k = 0; k < n; k++)
+        if (twins[k] == other)
+            return 1;
+    return 0;
+}
+
+/* Whether the frame's zone twins' check (rl_twins, after both passes)
+ * keeps the local read d among the frame's landmarks res. */
+static int reported(const rl_recog *rec, const rl_image *img, const rl_result *res, const rl_detection *d)
+{
+    static rl_result r2;
+    int i;
+    r2 = *res;
+    if (r2.n_landmarks == RL_MAX_LANDMARKS)
+        r2.n_landmarks--;
+    r2.landmarks[r2.n_landmarks++] = *d;
+    rl_twins_check(rec, img, rl_tones_other(&rec->tones, rec->tone), &r2);
+    for (i = 0; i < r2.n_landmarks; i++)
+        if (r2.landmarks[i].u == d->u && r2.landmarks[i].v == d->v && r2.landmarks[i].radius == d->radius &&
+            r2.landmarks[i].id == d->id)
+            return 1;
+    return 0;
+}
+
+static void landmark_reads(rl_recog *rec, const rl_image *img, const rl_result *res, const char *what,
+                           const truth_landmark *l, twin_counts *c)
+{
+    int k, i, j, own = 0;
+    c->landmarks++;
+    c->cut += l->visible < 0.97;
+    for (k = 0; k < N_SCALES; k++)
+        for (i = -SHIFT_STEPS; i <= SHIFT_STEPS; i++)
+            for (j = -SHIFT_STEPS; j <= SHIFT_STEPS; j++) {
+                double r = l->radius * scales[k], cx = l->u + i * SHIFT_STEP * l->radius,
+                       cy = l->v + j * SHIFT_STEP * l->radius;
+                rl_detection u, d;
+                int twin, kept;
+                if (i * i + j * j > SHIFT_STEPS * SHIFT_STEPS)
+                    continue;
+                u = candidate_at(img->width, img->height, cx, cy, r);
+                c->reads++;
+                if (!rl_local_read_circle(rec, img, res, &u, l->radius, cx, cy, r, &d))
+                    continue;
+                if (d.id == l->id) {
+                    own++;
+                    continue;
+                }
+                twin = is_twin(rec, l->id, d.id);
+                kept = reported(rec, img, res, &d);
+                c->twin_reads += twin;
+                c->other_reads += !twin;
+                c->twin_kept += twin && kept;
+                c->other_kept += !twin && kept;
+                printf("%s: a %s %d at (%.1f, %.1f), radius %.1f, %.2f in view, read as %s%d (%.3f, runner-up "
+                       "%.3f) from (%+.1f, %+.1f) px, radius x%.2f%s\n",
+                       what, l->visible < 0.97 ? "cut" : "whole", l->id, l->u, l->v, l->radius, l->visible,
+                       twin ? "its twin " : "", d.id, d.score, d.runner_up, cx - l->u, cy - l->v, scales[k],
+                       kept ? ", REPORTED" : "");
+            }
+    c->own_reads += own;
+    c->own += own > 0;
+}
+
+static void frame_reads(rl_heap_recog *hr, const char *set, double gamma, const truth *t, twin_counts *c)
+{
+    static rl_result res;
+    char png[1200], err[512], what[600];
+    rl_image img;
+    int j;
+    snprintf(png, sizeof png, "%s/%s", fs.dir, t->image);
+    if (rl_png_read_gray(png, &img, err, sizeof err) != RL_OK)
+        fail_msg("%s", err);
+    assert_int_equal(rl_heap_recog_run(hr, &img, &res), RL_OK);
+    snprintf(what, sizeof what, "%s at gamma %g", t->image, gamma);
+    (void)set;
+    for (j = 0; j < t->n; j++)
+        if (t->lm[j].visible >= 0.4)
+            landmark_reads(hr->rec, &img, &res, what, &t->lm[j], c);
+    rl_png_free(&img);
+}
+
+static void no_twin_read(void **state)
+{
+    rl_recog_config cfg;
+    rl_heap_recog hr;
+    twin_counts c;
+    int s = 0, k = 0, got;
+    truth t;
+    (void)state;
+    memset(&c, 0, sizeof c);
+    rl_recog_defaults(&cfg);
+    cfg.gamma = 2.2;
+    rl_heap_recog_init(&hr, &cfg);
+    while ((got = fixture_sets_next(&fs, &s, &k, &t)) == 1)
+        frame_reads(&hr, fs.sets[s], cfg.gamma, &t, &c);
+    assert_int_equal(got, 0);
+    rl_heap_recog_free(&hr);
+    printf("%d landmarks read (%d cut), %d circles: %d landmarks read as their own id (%d reads); %d reads as a "
+           "zone twin (%d reported), %d as another id (%d reported)\n",
+           c.landmarks, c.cut, c.reads, c.own, c.own_reads, c.twin_reads, c.twin_kept, c.other_reads, c.other_kept);
+    assert_true(c.landmarks >= 50 && c.cut >= 10);
+    assert_true(c.own >= 0.8 * c.landmarks);
+    assert_int_equal(c.twin_reads, 0);
+}
+
+int main(int argc, char **argv)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(no_twin_read),
+    };
+    if (!fixture_sets_args(argc, argv, "test_search_twins", &fs))
+        return 2;
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
