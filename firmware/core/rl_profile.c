@@ -91,7 +91,12 @@ static void gather(const rl_image *img, const rl_tone *tone, double cx, double c
     /* two sets of sums, even and odd pixels: neighbours share a bin, and
      * one set would make every add wait on the one before */
     uint64_t acc[2][RL_PROFILE_BINS], sxx = 0; /* (count, sum) packed: 2^32 / 1023 pixels a bin */
+    /* each grey level's (1, darkness) packed as a bin adds it: one load
+     * and one add a pixel, its darkness the low word */
+    uint64_t packed[256];
     plane_sums ps;
+    for (k = 0; k < 256; k++)
+        packed[k] = PACK_COUNT + tone->dark[k];
     memset(acc, 0, sizeof acc);
     memset(&ps, 0, sizeof ps);
     ps.clipped = y0 < 0 || y1 > img->height - 1;
@@ -125,16 +130,20 @@ static void gather(const rl_image *img, const rl_tone *tone, double cx, double c
                     kb[i] = kk < RL_PROFILE_BINS - 1 ? kk : RL_PROFILE_BINS - 1;
                 }
             }
-            /* the pixels' darkness first; then their bins' sums in pairs,
-             * the even one's in acc[0], the odd one's in acc[1] */
-            for (i = 0; i < nx; i++)
-                v[i] = tone->dark[row[xs + i]];
+            /* the bins' sums in pairs, the even pixel's in acc[0], the odd
+             * one's in acc[1]; each pixel's darkness kept for the row's sums */
             for (i = 0; i + 1 < nx; i += 2) {
-                acc[0][bin[i]] += PACK_COUNT + v[i];
-                acc[1][bin[i + 1]] += PACK_COUNT + v[i + 1];
+                uint64_t w0 = packed[row[xs + i]], w1 = packed[row[xs + i + 1]];
+                v[i] = (uint32_t)w0;
+                v[i + 1] = (uint32_t)w1;
+                acc[0][bin[i]] += w0;
+                acc[1][bin[i + 1]] += w1;
             }
-            if (i < nx)
-                acc[0][bin[i]] += PACK_COUNT + v[i];
+            if (i < nx) {
+                uint64_t w = packed[row[xs + i]];
+                v[i] = (uint32_t)w;
+                acc[0][bin[i]] += w;
+            }
             /* the row's sums, vectorized; in 32 bits: a chunk's squares
              * are under 64 * 1023^2, its i v under 2016 * 1023 */
             for (i = 0, s1 = s2 = s3 = 0; i < nx; i++) {

@@ -1,0 +1,109 @@
+/* The profile gather's sums (rl_profile.c): per bin the pixels and their
+ * summed darkness, and the squares over every pixel, are integers, so the
+ * gather must give them exactly as one pixel at a time would. The oracle
+ * here walks the disk's pixels one by one: the row span and each pixel's
+ * bin from the formulas the module documents (the shape's normalized
+ * radius, the bin from its square root in single precision, a rim pixel
+ * in the last bin), its darkness from the tone's table, and adds. Circles
+ * and ellipses, small and wider than a 64-pixel chunk, whole and cut by
+ * every border, every row and every third row, two tone curves, images
+ * whose rows are longer than they are. */
+#include "rl_test.h"
+#include <math.h>
+#include "rl_profile.h"
+
+#define W 203
+#define STRIDE 211
+#define H 157
+static uint8_t frame[STRIDE * H];
+
+static unsigned long rng = 99;
+static double uniform(void)
+{
+    rng = rng * 6364136223846793005ul + 1442695040888963407ul;
+    return (double)(rng >> 11) / 9007199254740992.0;
+}
+
+/* Pixel by pixel: the rows ystep apart from the disk's top, each row's
+ * span where a dx^2 + 2 b dy dx + c dy^2 < ext^2, clipped to the image. */
+static void one_by_one(const rl_tone *tone, double cx, double cy, double r, const rl_shape *sh, int ystep,
+                       rl_profile *p)
+{
+    double ext = RL_PROFILE_EXTENT * r, scale = RL_PROFILE_BINS / ext, hy = ext * sqrt(sh->a);
+    float fa = (float)sh->a, fscale = (float)scale;
+    int y, x, y0 = (int)ceil(cy - hy), y1 = (int)floor(cy + hy);
+    memset(p, 0, sizeof *p);
+    if (y0 < 0)
+        y0 = 0;
+    if (y1 > H - 1)
+        y1 = H - 1;
+    for (y = y0; y <= y1; y += ystep) {
+        double dy = y - cy, disc = sh->b * sh->b * dy * dy - sh->a * (sh->c * dy * dy - ext * ext), h, mid;
+        float b2dy = (float)(2 * sh->b * dy), cdy2 = (float)(sh->c * dy * dy);
+        int xa, xb;
+        if (disc <= 0)
+            continue;
+        h = sqrt(disc) / sh->a;
+        mid = cx - sh->b * dy / sh->a;
+        xa = (int)ceil(mid - h);
+        xb = (int)floor(mid + h);
+        if (xa < 0)
+            xa = 0;
+        if (xb > W - 1)
+            xb = W - 1;
+        for (x = xa; x <= xb; x++) {
+            float dx = (float)(x - cx), d2 = (fa * dx + b2dy) * dx + cdy2;
+            int k = (int)(sqrtf(d2) * fscale);
+            double v = tone->dark[frame[(size_t)y * STRIDE + (size_t)x]];
+            k = k < RL_PROFILE_BINS - 1 ? k : RL_PROFILE_BINS - 1;
+            p->n[k] += 1;
+            p->sx[k] += v;
+            p->sxx += v * v;
+            p->total += 1;
+        }
+    }
+}
+
+static void test_sums_are_the_pixels_one_by_one(void **state)
+{
+    int trial, k, g;
+    (void)state;
+    for (k = 0; k < STRIDE * H; k++)
+        frame[k] = (uint8_t)(uniform() * 256);
+    for (trial = 0; trial < 400; trial++) {
+        rl_tone tone;
+        rl_shape sh = trial % 3 ? rl_shape_from_moments(1.0, 0.4 * (uniform() - 0.5), 0.5 + 0.5 * uniform())
+                                : rl_shape_circle();
+        /* centres inside, near and past every border; radii up to a disk
+         * wider than the image */
+        double cx = -20 + (W + 40) * uniform(), cy = -20 + (H + 40) * uniform(), r = 2 + 90 * uniform() * uniform();
+        int step = trial % 4 == 3 ? 3 : 1;
+        rl_image img = {W, H, STRIDE, frame};
+        rl_profile got, want;
+        rl_tone_init(&tone, trial % 2 ? 2.2 : 1.0);
+        if (step != 1 && rl_shape_is_circle(&sh))
+            rl_profile_gather_rows(&img, &tone, cx, cy, r, step, &got);
+        else if (rl_shape_is_circle(&sh) && trial % 2)
+            rl_profile_gather(&img, &tone, cx, cy, r, &got);
+        else {
+            step = 1;
+            rl_profile_gather_shaped(&img, &tone, cx, cy, r, &sh, &got);
+        }
+        one_by_one(&tone, cx, cy, r, &sh, step, &want);
+        for (g = 0; g < RL_PROFILE_BINS; g++)
+            if (got.n[g] != want.n[g] || got.sx[g] != want.sx[g])
+                fail_msg("trial %d (%.2f, %.2f) r %.2f: bin %d holds %.0f pixels, %.0f dark; one by one %.0f, %.0f",
+                         trial, cx, cy, r, g, got.n[g], got.sx[g], want.n[g], want.sx[g]);
+        if (got.sxx != want.sxx || got.total != want.total)
+            fail_msg("trial %d: squares %.0f of %.0f pixels; one by one %.0f of %.0f", trial, got.sxx, got.total,
+                     want.sxx, want.total);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sums_are_the_pixels_one_by_one),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
