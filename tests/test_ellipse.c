@@ -145,11 +145,11 @@ static void brute_profile(double cx, double cy, double r, const rl_shape *sh, rl
 
 static void test_profile_matches_brute_force(void **state)
 {
-    unsigned long rng = 7;
+    uint64_t rng = 7;
     int trial, k;
     (void)state;
     for (k = 0; k < W * H; k++) {
-        rng = rng * 6364136223846793005ul + 1442695040888963407ul;
+        rng = rng * 6364136223846793005ull + 1442695040888963407ull;
         /* noise on a slope: a plane for the gather to find */
         frame[k] = (uint8_t)((rng >> 57) + (k % W) / 3 + (k / W) / 4);
     }

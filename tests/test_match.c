@@ -8,10 +8,10 @@
 #include "rl_match.h"
 #include "rl_match_kernel.h"
 
-static unsigned long rng = 12345;
+static uint64_t rng = 12345;
 static double uniform(void)
 {
-    rng = rng * 6364136223846793005ul + 1442695040888963407ul;
+    rng = rng * 6364136223846793005ull + 1442695040888963407ull;
     return (double)(rng >> 11) / 9007199254740992.0;
 }
 

@@ -17,10 +17,10 @@
 #define H 157
 static uint8_t frame[STRIDE * H];
 
-static unsigned long rng = 99;
+static uint64_t rng = 99; /* 64 bits on every target: (rng >> 11) / 2^53 is uniform */
 static double uniform(void)
 {
-    rng = rng * 6364136223846793005ul + 1442695040888963407ul;
+    rng = rng * 6364136223846793005ull + 1442695040888963407ull;
     return (double)(rng >> 11) / 9007199254740992.0;
 }
 
@@ -100,10 +100,38 @@ static void test_sums_are_the_pixels_one_by_one(void **state)
     }
 }
 
+/* A gather larger than one packed word holds: a 2100 x 2100 frame
+ * (4,410,000 pixels, over the 4,198,404 a bin's 32-bit darkness sum holds
+ * at 1023 a pixel), every pixel black, at a radius so large that all of
+ * them fall in bin 0. By hand: bin 0 holds every pixel, its darkness
+ * 4,410,000 times the darkest grey's; a sum that carried would be about
+ * 2^32 short and count one pixel too many. */
+static void test_a_bin_over_four_megapixels(void **state)
+{
+    enum { BIG = 2100 };
+    uint8_t *black = calloc((size_t)BIG * BIG, 1);
+    rl_image img = {BIG, BIG, BIG, black};
+    rl_tone tone;
+    rl_profile got;
+    double pixels = (double)BIG * BIG;
+    int k;
+    (void)state;
+    assert_non_null(black);
+    rl_tone_init(&tone, 2.2);
+    rl_profile_gather(&img, &tone, BIG / 2.0, BIG / 2.0, 1e6, &got);
+    assert_true(got.n[0] == pixels);
+    assert_true(got.sx[0] == pixels * tone.dark[0]);
+    for (k = 1; k < RL_PROFILE_BINS; k++)
+        assert_true(got.n[k] == 0 && got.sx[k] == 0);
+    assert_true(got.total == pixels);
+    free(black);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sums_are_the_pixels_one_by_one),
+        cmocka_unit_test(test_a_bin_over_four_megapixels),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

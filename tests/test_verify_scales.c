@@ -22,10 +22,10 @@
 #include <math.h>
 #include "rl_verify.c"
 
-static unsigned long rng = 4242;
+static uint64_t rng = 4242;
 static double uniform(void)
 {
-    rng = rng * 6364136223846793005ul + 1442695040888963407ul;
+    rng = rng * 6364136223846793005ull + 1442695040888963407ull;
     return (double)(rng >> 11) / 9007199254740992.0;
 }
 

@@ -9,8 +9,14 @@
  * GATHER_BLOCK (a fixed count the compiler vectorizes), then the sums. */
 #define GATHER_CHUNK 64
 #define GATHER_BLOCK 16
-/* A bin's count and sum of darkness packed in one word: one add a pixel. */
+/* A bin's count and sum of darkness packed in one word: one add a pixel.
+ * The darkness (0 .. RL_TONE_MAX a pixel) is the low 32 bits, so a word
+ * holds PACK_PIXELS pixels before its sum would carry into the count:
+ * 4,198,404, more than a 1280x960 frame holds. Larger gathers (a frame
+ * over 4.2 megapixels at a radius of thousands of pixels) unpack their
+ * words into the profile's doubles every PACK_PIXELS pixels. */
 #define PACK_COUNT (1ull << 32)
+#define PACK_PIXELS (0xffffffffu / RL_TONE_MAX)
 
 /* The row's span of x where the shape's normalized radius about (cx, cy)
  * is under ext (dy from the centre): [*xa, *xb], empty when *xa > *xb. */
@@ -79,6 +85,19 @@ static double plane_explained(const plane_sums *ps)
  * On x86 also built for AVX2 and chosen at load time: the bins' 16-pixel
  * blocks in 8-lane vectors, the same float operations pixel by pixel (no
  * fused multiply-add: rl_clones.h). */
+/* The packed sums of both sets (acc[0], acc[1]) added into p's bins, and
+ * emptied. */
+static void unpack_bins(uint64_t acc[2][RL_PROFILE_BINS], rl_profile *p)
+{
+    int k;
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        uint64_t w = acc[0][k] + acc[1][k];
+        p->n[k] += (double)(w >> 32);
+        p->sx[k] += (double)(w & 0xffffffffu);
+    }
+    memset(acc, 0, sizeof(uint64_t) * 2 * RL_PROFILE_BINS);
+}
+
 RL_CLONES_AVX2
 static void gather(const rl_image *img, const rl_tone *tone, double cx, double cy, double r,
                    const rl_shape *sh, int ystep, rl_profile *p)
@@ -90,7 +109,8 @@ static void gather(const rl_image *img, const rl_tone *tone, double cx, double c
     int y, k, y0 = (int)ceil(cy - hy), y1 = (int)floor(cy + hy);
     /* two sets of sums, even and odd pixels: neighbours share a bin, and
      * one set would make every add wait on the one before */
-    uint64_t acc[2][RL_PROFILE_BINS], sxx = 0; /* (count, sum) packed: 2^32 / 1023 pixels a bin */
+    uint64_t acc[2][RL_PROFILE_BINS], sxx = 0; /* (count, sum) packed: PACK_PIXELS pixels in all */
+    uint32_t pending = 0; /* pixels in acc since it was last unpacked */
     /* each grey level's (1, darkness) packed as a bin adds it: one load
      * and one add a pixel, its darkness the low word */
     uint64_t packed[256];
@@ -99,6 +119,8 @@ static void gather(const rl_image *img, const rl_tone *tone, double cx, double c
         packed[k] = PACK_COUNT + tone->dark[k];
     memset(acc, 0, sizeof acc);
     memset(&ps, 0, sizeof ps);
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        p->n[k] = p->sx[k] = 0;
     ps.clipped = y0 < 0 || y1 > img->height - 1;
     /* pixels outside the image are not gathered: a cut landmark meets cut
      * templates */
@@ -115,6 +137,13 @@ static void gather(const rl_image *img, const rl_tone *tone, double cx, double c
             ps.clipped = 1;
         if (x0 < 0) x0 = 0;
         if (x1 > img->width - 1) x1 = img->width - 1;
+        if (x0 <= x1) {
+            if (pending > PACK_PIXELS - (uint32_t)(x1 - x0 + 1)) {
+                unpack_bins(acc, p); /* the next row could carry */
+                pending = 0;
+            }
+            pending += (uint32_t)(x1 - x0 + 1);
+        }
         for (xs = x0; xs <= x1; xs += GATHER_CHUNK) {
             int nx = x1 - xs + 1 < GATHER_CHUNK ? x1 - xs + 1 : GATHER_CHUNK, i, b;
             int bin[GATHER_CHUNK];
@@ -160,13 +189,10 @@ static void gather(const rl_image *img, const rl_tone *tone, double cx, double c
     }
     p->sxx = (double)sxx;
     p->plane = plane_explained(&ps);
+    unpack_bins(acc, p);
     p->total = 0;
-    for (k = 0; k < RL_PROFILE_BINS; k++) {
-        uint64_t w = acc[0][k] + acc[1][k];
-        p->n[k] = (double)(w >> 32);
-        p->sx[k] = (double)(w & 0xffffffffu);
+    for (k = 0; k < RL_PROFILE_BINS; k++)
         p->total += p->n[k];
-    }
 }
 
 void rl_profile_gather(const rl_image *img, const rl_tone *tone, double cx, double cy, double r,
