@@ -20,7 +20,9 @@
 #define ELLIPSE_MAX_MOVE 0.4
 
 /* The zone twins' best score against the ellipse e at radii around its
- * own, as m's runner-up when higher (as the search does for circles). */
+ * own, as m's runner-up when higher (as the search does for circles,
+ * which holds them and every other id one zone away: the ellipse's two
+ * twins only, its reads not measured with the others). */
 static void ellipse_twins(const rl_templates *tt, const rl_image *img, const rl_tone *tone,
                           const rl_ellipse *e, rl_match *m)
 {
@@ -216,8 +218,9 @@ static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_resul
  * circle's search. Not from a centre outside the frame (a circle fitted
  * to less than half a ring): no read sees it, and a few octants read
  * from a centre a few pixels off can name another code clearly. Nor for
- * a cut circle whose search found a zone twin reading better over it
- * than the id (m.second over m.score, twin_check): the axes left in the
+ * a cut circle whose search found a zone twin (or another id one zone
+ * away) reading better over it than the id (m.second over m.score,
+ * twin_check): the axes left in the
  * frame then settle nothing between the two (the moving set's cut 22 of
  * frame 008, from a circle 1.3 px off and 3% large, was taken as its
  * twin 30 along an axis; test_search_twins). */

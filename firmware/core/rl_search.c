@@ -86,24 +86,33 @@ static void search_crosses(const rl_polar *pol, search_state *st)
     }
 }
 
-/* The winner's zone twins (rl_match_twins) at their best radius
- * (RL_SEARCH_TWIN_SCALES) near the found one and their best blur, read
- * from the octants of the mask: when one comes close, the evidence
- * between the two codes is close, and m->second says so. Every twin at
- * every blur: a twin that reads well only at a blurred template is the
- * case (a list of one block, 8 columns, held the second twin's sharpest
- * blur only: read from circles as an edge fit errs, the rendered sets'
- * landmarks passed for a zone twin 253 times, test_search_twins;
- * docs/results.md, "The search's twin check at every blur"). */
+/* The winner's rivals, every id one code zone from it (its zone twins in
+ * the two zones next to the outer ring and the ids that differ in any
+ * other zone: rl_family_zone_twins), each at its best radius
+ * (RL_SEARCH_TWIN_SCALES) near the found one and its best blur, read from
+ * the octants of the mask: when one comes close, the evidence between the
+ * two codes is close, and m->second says so. Every zone: a circle a tenth
+ * of a radius off and a few percent large moves every zone's edges, and
+ * the search's climb can end where a code with one inner zone changed fits
+ * better than the truth (a whole 25 of isp_blur_s21 read as 29, the zone-3
+ * bit set, at a radius 9% large, with 25 ahead of 29 at 0.95 of it:
+ * 0.917 against 0.892). Every blur: a twin that reads well only at a
+ * blurred template is the case (a list of one block, 8 columns, held the
+ * second twin's sharpest blur only). Read from circles as an edge fit
+ * errs, the rendered sets' landmarks passed for a zone twin 253 times
+ * with that list and for the id one zone away in zone 3 80 times (4 of
+ * them kept by rl_twins) with the two zone twins alone (test_search_twins;
+ * docs/results.md, "The search's twin check at every blur" and "Every id
+ * one zone away"). */
 static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, double y, double s,
                        unsigned octants, rl_match *m)
 {
-    int twins[2], n = rl_match_twins(tt, m->id, twins), k;
+    int rivals[RL_MAX_BITS], n = rl_family_zone_twins(&tt->fam, m->id, rivals), k;
     for (k = 0; n > 0 && k < RL_SEARCH_TWIN_SCALES; k++) {
         rl_profile p;
         rl_match mm;
         rl_polar_profile_octants(pol, x, y, s * rl_search_twin_scale[k], octants, &p);
-        rl_match_ids(tt, &p, twins, n, -1, &mm);
+        rl_match_ids(tt, &p, rivals, n, -1, &mm);
         if (mm.id >= 0 && mm.score > m->second)
             m->second = mm.score;
     }

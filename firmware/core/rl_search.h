@@ -11,8 +11,9 @@
  * step either way in radius; if the cross's centre stays best, the peak
  * of a parabola through each axis's three scores is tried and the search
  * ends, else a finer cross follows the same way. Every id at every blur
- * is scored at the end, and the winner's twins in the two zones next to
- * the outer ring at radii around the found one, each at every blur:
+ * is scored at the end, and every id one code zone from the winner (its
+ * twins in the two zones next to the outer ring and the ids that differ
+ * in an inner zone) at radii around the found one, each at every blur:
  * their best counts as the runner-up.
  *
  *   rl_match m;
@@ -26,15 +27,15 @@
 #include "rl_polar.h"
 #include "rl_templates.h"
 
-/* Radius scales (of the found radius) at which the winner's zone twins
- * are scored: their best there counts as the runner-up. */
+/* Radius scales (of the found radius) at which the ids one zone from the
+ * winner are scored: their best there counts as the runner-up. */
 #define RL_SEARCH_TWIN_SCALES 4
 extern const double rl_search_twin_scale[RL_SEARCH_TWIN_SCALES];
 
 /* Identify the candidate at (*cx, *cy, *r) with pol as scratch; the
  * centre and radius are updated to the best fit, the match of every id
- * there is in *m (m->id < 0: nothing matched). The winner's zone twins
- * are scored only when it scores at least min_score (the rule's): under
+ * there is in *m (m->id < 0: nothing matched). The ids one zone from
+ * the winner are scored only when it scores at least min_score (the rule's): under
  * it no rule takes the match whatever its runner-up, and m->second is the
  * runner-up over every id alone (-INFINITY: always scored). */
 void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *img,
@@ -57,7 +58,7 @@ int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_imag
  * with the smeared directions. reads[0 .. n_reads - 1] are octant masks
  * (rl_polar_profile_octants): an axis, or the half of one in the frame.
  * Of the reads whose best id is `id`, the one where it leads its
- * runner-up (the winner's zone twins there included) most, into *m;
+ * runner-up (every id one zone from it there included) most, into *m;
  * m->id < 0 when none reads `id` at a blur level up to max_blur (a read
  * along the motion matches the softest). */
 void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double cx, double cy,

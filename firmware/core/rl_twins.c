@@ -41,7 +41,19 @@
  * zone 1 is under RL_TWINS_FAR_ZONE_PX (rl_twins_check), 1.5 times the
  * size floor's: the shift is the blur's, in pixels, and at
  * the moving frames' 23-25 px (light mixed, read through the right curve)
- * 9% let a twin fit through the grey levels on 5 of their 55 cut ones. */
+ * 9% let a twin fit through the grey levels on 5 of their 55 cut ones.
+ * And for a local read of a whole landmark in a frame read as linear
+ * (the other formation the 2.2 curve): there this check is the gate, not
+ * the local read's lead, and the read's radius is the search's, as short
+ * as the edge fit left it; with its rivals within 3% of it, a whole 25 of
+ * isp_blur_s21 read as 17 from a circle 12% short, and three whole
+ * landmarks of the moving set's frame 036 read as their twins from
+ * circles 9-12% short (five reads), kept the wrong ids
+ * (test_search_twins). Not for a cut
+ * one: on the part left in the frame the wider range lets a rival fit (at
+ * gamma 1 it cost two right cut reads of the 28Sep2013 development
+ * photos' letter sheets and won one; no wrong cut read was kept without
+ * it). */
 static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
                         const int *rv, int n, int far, double *fit)
 {
@@ -286,9 +298,10 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
          * right reads a line at 15-16 px, docs/results.md) */
         if (curved && d.radius < far_radius && minor_radius(rec, img, res->levels.light, &d) < min_radius)
             tol = RL_TWINS_CUT_TOLERANCE;
-        /* a small local read through a curve: its rivals through the
-         * grey levels at the radius they fit (twin_lead) */
-        lead = twin_lead(rec, img, other, &d, rv, n, curved && d.pass == RL_PASS_LOCAL && d.radius < far_radius,
+        /* a local read of a small landmark through a curve, or of a
+         * whole one read as linear: its rivals through the other
+         * formation at the radius they fit (twin_lead's far) */
+        lead = twin_lead(rec, img, other, &d, rv, n, d.pass == RL_PASS_LOCAL && (curved ? d.radius < far_radius : d.complete),
                          &fit);
         /* a circle far from what was read (an ellipse the local pass read
          * in its own shape, at a wide-angle lens's border) says nothing */

@@ -96,9 +96,9 @@
 
 /* A local read through a curve of a landmark whose code zone 1 is under
  * this many px (1.5 times the size floor's; ring5: a radius under 21.3 px)
- * meets its rivals
- * through the other formation at 0.91 .. 1.09 of its radius, not 0.97 ..
- * 1.03: a grey-mixed sheet read through the 2.2 curve swells its dark
+ * meets its rivals (as does a local read of a whole landmark in a frame
+ * read as linear, rl_twins.c) through the other formation at 0.91 .. 1.09 of its radius,
+ * not 0.97 .. 1.03: a grey-mixed sheet read through the 2.2 curve swells its dark
  * zones and its outer edge by about 0.6 of the blur's sigma, and a white
  * zone of 1.4-2.1 px read dark (radius read 14.7-18.6 px) gave the local
  * pass's wrong ids above the floor (docs/results.md); on larger ones the
