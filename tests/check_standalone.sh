@@ -8,6 +8,10 @@ cd "$src" || exit 2
 status=0
 # folders of a workplace or a user's machine (built from pieces: this file names none)
 machine_dirs="(wo""rk|ho""me|Us""ers)"
+# file names split at line ends only (a name may hold spaces)
+IFS='
+'
+
 if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
     files=$(git ls-files --cached --others --exclude-standard | grep -v '^build')
 else
@@ -31,7 +35,7 @@ leave() { # message, pattern: one grep over every text file
 leave "names the folder beside the tree (the contract is docs/landmark-spec.md)" \
     '\.\./shared|(^|[^a-z_/])shared/(landmark-spec|paper|style)'
 leave "names a folder of the machine it was written on (name the build by its commit, a folder by a placeholder)" \
-    "/$machine_dirs/[A-Za-z]"
+    "(^|[^A-Za-z0-9._~/:-])/$machine_dirs/[^[:space:]]"
 leave "reaches above the source tree" '(PROJECT_SOURCE_DIR|CMAKE_SOURCE_DIR|CURDIR)\)?\}?/\.\.(/|$|[ "])'
 # 2. every Markdown file under docs named anywhere exists
 for d in $(grep -ahoE 'docs/[A-Za-z0-9_-]+\.md' $files 2>/dev/null | sort -u); do

@@ -158,6 +158,37 @@ static void zone_twins_by_hand(void **state)
     assert_memory_equal(out, want21, sizeof want21);
 }
 
+/* Every family, every id: the set is exactly the ids whose code differs
+ * in one zone (brute force over every id of the family: one bit of the
+ * xor set, and valid), none twice. */
+static void zone_twins_are_the_one_zone_ids(void **state)
+{
+    int bits;
+    (void)state;
+    for (bits = RL_FAMILY_MIN_BITS; bits <= RL_MAX_BITS; bits++) {
+        rl_family fam;
+        int id, other;
+        assert_int_equal(rl_family_init(&fam, bits), RL_OK);
+        for (id = 0; id < (1 << bits); id++) {
+            int out[RL_MAX_BITS], n, k, want = 0;
+            if (!rl_family_valid(&fam, id))
+                continue;
+            n = rl_family_zone_twins(&fam, id, out);
+            for (other = 0; other < (1 << bits); other++) {
+                int x = id ^ other, one = x != 0 && (x & (x - 1)) == 0, found = 0;
+                for (k = 0; k < n; k++)
+                    found += out[k] == other;
+                if (one && rl_family_valid(&fam, other)) {
+                    want++;
+                    assert_int_equal(found, 1);
+                } else
+                    assert_int_equal(found, 0);
+            }
+            assert_int_equal(n, want);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -168,6 +199,7 @@ int main(void)
         cmocka_unit_test(test_dark_at),
         cmocka_unit_test(band_inner_by_hand),
         cmocka_unit_test(zone_twins_by_hand),
+        cmocka_unit_test(zone_twins_are_the_one_zone_ids),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -39,8 +39,9 @@ int rl_family_count(const rl_family *fam);
 /* 1 if id is valid in the family (1 .. 2^N - 2). */
 int rl_family_valid(const rl_family *fam, int id);
 
-/* The zone twins of id: the valid ids one code zone from it (any zone),
- * into out (room for RL_MAX_BITS); their count. */
+/* The valid ids one code zone from id, in any zone, into out (room for
+ * RL_MAX_BITS); their count. The landmark contract's zone twins are the
+ * two of them that differ in c_1 or c_2 (rl_match_twins). */
 int rl_family_zone_twins(const rl_family *fam, int id, int *out);
 
 /* Bit c_k (k = 1..N) of a code: 1 black, 0 white. */
