@@ -7,7 +7,8 @@
  * buffer's first and last pixel. Widths 1-200 (under one chunk of 64,
  * between one and two, several), strides wider than the width. The
  * regions must be those of an 8-connected flood fill written here; a band
- * that reaches past 255 is the band up to 255. */
+ * that reaches past 255 is the band up to 255. Light bands (lo 235-255)
+ * too, where the labeller passes by whole chunks under lo. */
 #define _DEFAULT_SOURCE
 #include "rl_test.h"
 #include <stdlib.h>
@@ -183,10 +184,58 @@ static void images_against_forbidden_pages(void **state)
     assert_int_equal(bad, 0);
 }
 
+/* A light band (lo 235 or more, as rl_light's): a ceiling under lo with
+ * a few runs over it, so that whole chunks hold no pixel of the band
+ * (the labeller passes them by) next to chunks that do; the runs often
+ * end on a chunk's last pixel (63, 127, 191), the next chunk under lo,
+ * where the run must end, not be carried on over the chunk passed by. */
+static void fill_lights(uint8_t *p, int w, int h, int stride, int lo)
+{
+    int y, k;
+    for (y = 0; y < h; y++) {
+        uint8_t *row = p + (size_t)y * (size_t)stride;
+        int runs = (int)(rnd() % 4);
+        for (k = 0; k < w; k++)
+            row[k] = (uint8_t)(100 + rnd() % (unsigned)(lo - 100)); /* under lo */
+        for (k = 0; k < runs; k++) {
+            int len = 1 + (int)(rnd() % 20), end, a;
+            /* half of them end on a chunk's last pixel */
+            end = rnd() % 2 ? 63 + 64 * (int)(rnd() % 4) : (int)(rnd() % (unsigned)w);
+            if (end >= w)
+                end = w - 1;
+            for (a = end - len + 1 < 0 ? 0 : end - len + 1; a <= end; a++)
+                row[a] = (uint8_t)(lo + rnd() % (unsigned)(256 - lo));
+        }
+    }
+}
+
+static void light_bands(void **state)
+{
+    int W, H, lo, cases = 0, bad = 0;
+    rl_ws ws;
+    (void)state;
+    rl_ws_init(&ws, wsmem, sizeof wsmem);
+    assert_int_equal(rl_label_init(&lb, &ws, MAXW, MAXH, 20000, 4000), RL_OK);
+    for (W = 60; W <= MAXW; W += 1 + (int)(rnd() % 5))
+        for (H = 1; H <= MAXH; H++)
+            for (lo = 235; lo <= 255; lo += 5) {
+                static uint8_t buf[MAXW * MAXH + 64];
+                int stride = W + (int)(rnd() % 9);
+                rl_image im = rl_image_view(W, H, stride, buf);
+                fill_lights(buf, W, H, stride, lo);
+                bad += compare(&im, lo, 256);
+                bad += compare(&im, lo, 256 + (int)(rnd() % 40));
+                cases += 2;
+            }
+    printf("  %d light bands: %d differ from the flood fill\n", cases, bad);
+    assert_int_equal(bad, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(images_against_forbidden_pages),
+        cmocka_unit_test(light_bands),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

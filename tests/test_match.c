@@ -277,6 +277,84 @@ static void test_each_id_is_its_own_best(void **state)
     }
 }
 
+/* An id's index: the first place of it in the table's ids (a linear
+ * search here), -1 for any other number. */
+static int first_place(const rl_templates *tt, int id)
+{
+    int i;
+    for (i = 0; i < tt->n; i++)
+        if (tt->ids[i] == id)
+            return i;
+    return -1;
+}
+
+/* Every field the same, bit for bit. */
+static int same_match(const rl_match *a, const rl_match *b)
+{
+    return a->id == b->id && a->blur == b->blur && memcmp(&a->score, &b->score, sizeof a->score) == 0 &&
+           memcmp(&a->second, &b->second, sizeof a->second) == 0 &&
+           memcmp(&a->contrast, &b->contrast, sizeof a->contrast) == 0;
+}
+
+/* rl_match_id_and_ids (the zone twins' check: an id and its rivals on one
+ * profile) gives what rl_match_ids gives for the id alone and for the
+ * rivals, and the id's score is the direct correlation's best over its
+ * blurs; rl_templates_find is the first place of an id, on the whole
+ * family and on a table of ids out of order with one repeated. */
+static void test_id_and_rivals_at_once(void **state)
+{
+    static unsigned char mem[1 << 18];
+    static const int some[] = {9, 3, 30, 3, 17, 1, 22, 9};
+    int table, trial, k, j;
+    (void)state;
+    for (table = 0; table < 3; table++) {
+        rl_family fam;
+        rl_templates tt;
+        rl_ws ws;
+        fam.bits = table == 1 ? 6 : 5;
+        rl_ws_init(&ws, mem, sizeof mem);
+        assert_int_equal(rl_templates_init(&tt, &ws, &fam, table == 2 ? some : NULL, table == 2 ? 8 : 0), RL_OK);
+        for (k = -3; k < 300; k++)
+            assert_int_equal(rl_templates_find(&tt, k), first_place(&tt, k));
+        for (trial = 0; trial < 40; trial++) {
+            int i = (int)(uniform() * tt.n), b = (int)(uniform() * RL_BLUR_LEVELS), rv[RL_MAX_IDS + 1], n = 0, flat;
+            rl_profile p;
+            memset(&p, 0, sizeof p);
+            for (k = 0; k < RL_PROFILE_BINS; k++) {
+                double cnt = 10 + 8 * k, v = 40 + 180 * rl_templates_bin(&tt, i, b, k) + 60 * (uniform() - 0.5);
+                p.n[k] = cnt;
+                p.sx[k] = cnt * v;
+                p.sxx += cnt * v * v + cnt * 30.0;
+                p.total += cnt;
+            }
+            for (j = 0; j < tt.n; j++)
+                if (tt.ids[j] != tt.ids[i] && uniform() < 0.7)
+                    rv[n++] = tt.ids[j];
+            rv[n++] = 61 + table; /* not in the table */
+            for (flat = 0; flat < 2; flat++) {
+                rl_match own, them, want_own, want_them;
+                double direct = -2;
+                if (flat)
+                    p.total = 10; /* too few pixels: nothing matched */
+                rl_match_id_and_ids(&tt, &p, tt.ids[i], rv, n, -1, &own, &them);
+                rl_match_ids(&tt, &p, &tt.ids[i], 1, -1, &want_own);
+                rl_match_ids(&tt, &p, rv, n, -1, &want_them);
+                assert_true(same_match(&own, &want_own));
+                assert_true(same_match(&them, &want_them));
+                for (k = 0; k < RL_BLUR_LEVELS; k++)
+                    direct = fmax(direct, direct_r(&p, &tt, first_place(&tt, tt.ids[i]), k));
+                if (!flat) {
+                    assert_int_equal(own.id, tt.ids[i]);
+                    assert_true(fabs(own.score - direct) < 1e-4);
+                } else {
+                    assert_int_equal(own.id, -1);
+                    assert_int_equal(them.id, -1);
+                }
+            }
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -286,6 +364,7 @@ int main(void)
         cmocka_unit_test(test_wide_kernel_is_blocks_bit_for_bit),
         cmocka_unit_test(test_match_all_is_every_id_listed),
         cmocka_unit_test(test_each_id_is_its_own_best),
+        cmocka_unit_test(test_id_and_rivals_at_once),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

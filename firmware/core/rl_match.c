@@ -217,6 +217,18 @@ void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, i
         score_ids(tt, &z, ids, n, blur, m);
 }
 
+void rl_match_id_and_ids(const rl_templates *tt, const rl_profile *p, int id, const int *ids, int n,
+                         int blur, rl_match *own, rl_match *m)
+{
+    profile_terms z;
+    int ok = match_start(p, &z, m);
+    *own = *m; /* both start as nothing matched */
+    if (!ok)
+        return;
+    score_ids(tt, &z, &id, 1, blur, own);
+    score_ids(tt, &z, ids, n, blur, m);
+}
+
 void rl_match_ids_each(const rl_templates *tt, const rl_profile *p, const int *ids, int n,
                        double *best)
 {

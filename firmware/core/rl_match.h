@@ -47,6 +47,12 @@ void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m);
 void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, int n, int blur,
                   rl_match *m);
 
+/* rl_match_ids for id alone into *own and for ids into *m, on one
+ * profile: its terms worked out once (the zone twins' check scores an id
+ * and its rivals at each radius). */
+void rl_match_id_and_ids(const rl_templates *tt, const rl_profile *p, int id, const int *ids, int n,
+                         int blur, rl_match *own, rl_match *m);
+
 /* Each id's best score over its templates at every blur, into best[j]
  * (-2 for an id the table does not hold, or a profile that correlates
  * with nothing): rl_match_ids on each id alone, the profile's terms

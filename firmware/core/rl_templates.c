@@ -51,11 +51,7 @@ int rl_templates_moving(int blur)
 
 int rl_templates_find(const rl_templates *tt, int id)
 {
-    int i;
-    for (i = 0; i < tt->n; i++)
-        if (tt->ids[i] == id)
-            return i;
-    return -1;
+    return id >= 0 && id < (1 << RL_MAX_BITS) ? tt->at[id] : -1;
 }
 
 double rl_templates_value_at(const rl_family *fam, int id, double rho, double sigma)
@@ -154,10 +150,14 @@ rl_err rl_templates_init(rl_templates *tt, rl_ws *ws, const rl_family *fam, cons
     if (rl_ws_is_sizing(ws))
         return RL_OK;
     memset(tt->table, 0, (size_t)tt->stride * RL_PROFILE_BINS * sizeof(float)); /* the pads */
+    for (i = 0; i < (1 << RL_MAX_BITS); i++)
+        tt->at[i] = -1;
     for (i = 0; i < n; i++) {
         tt->ids[i] = ids ? ids[i] : i + 1;
-        if (!rl_family_valid(fam, tt->ids[i]))
+        if (!rl_family_valid(fam, tt->ids[i]) || tt->ids[i] >= (1 << RL_MAX_BITS))
             return RL_ERANGE;
+        if (tt->at[tt->ids[i]] < 0) /* a repeated id: its first place */
+            tt->at[tt->ids[i]] = (int16_t)i;
         id_columns(tt, i);
     }
     return RL_OK;

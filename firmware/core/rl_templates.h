@@ -20,6 +20,8 @@
 #ifndef RL_TEMPLATES_H
 #define RL_TEMPLATES_H
 
+#include <stdint.h>
+#include "rl_config.h"
 #include "rl_error.h"
 #include "rl_family.h"
 #include "rl_profile.h"
@@ -39,13 +41,14 @@ typedef struct {
     float *table;   /* RL_PROFILE_BINS x stride; column i * RL_BLUR_LEVELS + b is
                        id ids[i] at blur b, the rest pads (0) */
     int stride;     /* columns per bin, a multiple of RL_MATCH_BLOCK */
+    int16_t at[1 << RL_MAX_BITS]; /* index of id among ids (its first), or -1 */
 } rl_templates;
 
 /* Bytes rl_templates_init takes from a workspace for n ids. */
 size_t rl_templates_bytes(int n);
 
 /* Compute the templates of `ids` (every id of the family when ids is NULL)
- * into ws. RL_ERANGE for an id outside the family, RL_ENOMEM when ws is
+ * into ws. RL_ERANGE for an id outside the family (or past RL_MAX_BITS), RL_ENOMEM when ws is
  * too small. */
 RL_CHECK rl_err rl_templates_init(rl_templates *tt, rl_ws *ws, const rl_family *fam,
                                   const int *ids, int n_ids);
@@ -60,7 +63,8 @@ float rl_templates_bin(const rl_templates *tt, int i, int blur, int k);
 /* 1 for a blur level with motion (its template averages every direction). */
 int rl_templates_moving(int blur);
 
-/* Index of `id` among tt->ids, or -1. */
+/* Index of `id` among tt->ids (its first place), or -1: a look-up, the
+ * matcher asks it for every id it scores. */
 int rl_templates_find(const rl_templates *tt, int id);
 
 #endif

@@ -65,14 +65,16 @@ static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone 
         rl_profile p;
         rl_match m;
         rl_profile_rescale(&wide, (1.0 + k * SCALE_STEP) / top, &p);
-        if (k >= -SCALES_NEAR && k <= SCALES_NEAR) {
-            rl_match_ids(&rec->templates, &p, &d->id, 1, -1, &m);
-            if (m.id >= 0 && m.score > own)
-                own = m.score;
-        }
         /* the rivals at every blur: through the other formation a rival
-         * may fit another than the id does */
-        rl_match_ids(&rec->templates, &p, rv, n, -1, &m);
+         * may fit another than the id does; the id too near its radius */
+        if (k >= -SCALES_NEAR && k <= SCALES_NEAR) {
+            rl_match mo;
+            rl_match_id_and_ids(&rec->templates, &p, d->id, rv, n, -1, &mo, &m);
+            if (mo.id >= 0 && mo.score > own)
+                own = mo.score;
+        } else {
+            rl_match_ids(&rec->templates, &p, rv, n, -1, &m);
+        }
         if (m.id >= 0 && m.score > twin)
             twin = m.score;
     }
