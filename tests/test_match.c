@@ -330,7 +330,7 @@ static void test_id_and_rivals_at_once(void **state)
             for (j = 0; j < tt.n; j++)
                 if (tt.ids[j] != tt.ids[i] && uniform() < 0.7)
                     rv[n++] = tt.ids[j];
-            rv[n++] = 61 + table; /* not in the table */
+            rv[n++] = 255 - table; /* not in the table (no family here reaches 254) */
             for (flat = 0; flat < 2; flat++) {
                 rl_match own, them, want_own, want_them;
                 double direct = -2;

@@ -105,7 +105,8 @@ static uint64_t whole_chunk_bits(const uint8_t *row, const uint8_t *span, int lo
  * is in the band, whatever the spans. The light labelling's band starts
  * at 235 or more, and most of a frame's chunks hold no pixel that high:
  * their maximum is taken in 7 vector steps instead of the chunk's
- * tests (36). */
+ * tests. x86 (SSE2) only: elsewhere (aarch64, RL_NO_VECTOR_EXT) 0, and
+ * the chunk's own tests decide, as before. */
 static int chunk_under(const uint8_t *row, int lo)
 {
 #ifdef LABEL_MOVEMASK

@@ -49,7 +49,7 @@ void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, i
 
 /* rl_match_ids for id alone into *own and for ids into *m, on one
  * profile: its terms worked out once (the zone twins' check scores an id
- * and its rivals at each radius). */
+ * and its rivals at each radius). own and m must be two matches. */
 void rl_match_id_and_ids(const rl_templates *tt, const rl_profile *p, int id, const int *ids, int n,
                          int blur, rl_match *own, rl_match *m);
 

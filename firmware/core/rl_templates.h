@@ -43,6 +43,10 @@ typedef struct {
     int stride;     /* columns per bin, a multiple of RL_MATCH_BLOCK */
     int16_t at[1 << RL_MAX_BITS]; /* index of id among ids (its first), or -1 */
 } rl_templates;
+/* at[] holds an index of up to 2^RL_MAX_BITS - 2 ids in 16 bits, and sits
+ * in rl_recog (512 bytes at 8 bits): a family of more than 15 bits would
+ * wrap it. */
+typedef char rl_templates_at_fits[RL_MAX_BITS <= 15 ? 1 : -1];
 
 /* Bytes rl_templates_init takes from a workspace for n ids. */
 size_t rl_templates_bytes(int n);
