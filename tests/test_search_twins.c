@@ -143,7 +143,7 @@ static void landmark_reads(rl_recog *rec, const rl_image *img, const rl_result *
     c->own += own > 0;
 }
 
-static void frame_reads(rl_heap_recog *hr, const char *set, double gamma, const truth *t, twin_counts *c)
+static void frame_reads(rl_heap_recog *hr, double gamma, const truth *t, twin_counts *c)
 {
     static rl_result res;
     char png[1200], err[512], what[600];
@@ -154,7 +154,6 @@ static void frame_reads(rl_heap_recog *hr, const char *set, double gamma, const 
         fail_msg("%s", err);
     assert_int_equal(rl_heap_recog_run(hr, &img, &res), RL_OK);
     snprintf(what, sizeof what, "%s at gamma %g", t->image, gamma);
-    (void)set;
     for (j = 0; j < t->n; j++)
         if (t->lm[j].visible >= 0.4)
             landmark_reads(hr->rec, &img, &res, what, &t->lm[j], c);
@@ -173,7 +172,7 @@ static void sets_reads(double gamma, twin_counts *c)
     cfg.gamma = gamma;
     rl_heap_recog_init(&hr, &cfg);
     while ((got = fixture_sets_next(&fs, &s, &k, &t)) == 1)
-        frame_reads(&hr, fs.sets[s], cfg.gamma, &t, c);
+        frame_reads(&hr, cfg.gamma, &t, c);
     assert_int_equal(got, 0);
     rl_heap_recog_free(&hr);
     printf("gamma %g: %d landmarks read (%d cut), %d circles: %d landmarks read as their own id (%d reads); %d "

@@ -275,6 +275,7 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
     for (i = 0; i < all; i++) {
         rl_detection d = res->landmarks[i];
         double lead, own = 0, fit, tol = tolerance(&d, curved);
+        int far;
         /* too small to tell its twins apart (RL_TWINS_MIN_ZONE_PX) */
         if (d.radius < min_radius) {
             rl_result_add_unidentified(res, &d);
@@ -303,8 +304,8 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
         /* a local read of a small landmark through a curve, or of a
          * whole one read as linear: its rivals through the other
          * formation at the radius they fit (twin_lead's far) */
-        lead = twin_lead(rec, img, other, &d, rv, n, d.pass == RL_PASS_LOCAL && (curved ? d.radius < far_radius : d.complete),
-                         &fit);
+        far = d.pass == RL_PASS_LOCAL && (curved ? d.radius < far_radius : d.complete);
+        lead = twin_lead(rec, img, other, &d, rv, n, far, &fit);
         /* a circle far from what was read (an ellipse the local pass read
          * in its own shape, at a wide-angle lens's border) says nothing */
         if (fit < d.score - RL_TWINS_UNFIT) {
