@@ -124,16 +124,17 @@ static int rank_rivals(const rl_templates *tt, int id, int *out)
 }
 
 /* Whether d's id leads every id near it read through any monotone curve
- * (rl_rank) by RL_TWINS_RANK_LEAD, from one gather of every row through
- * tone (the ranks do not depend on it; every other row left wrong reads
- * up to 0.008, every row 0.003). The id's best over its blurs at its own
- * radius and 3% either side, each rival's over its blurs at 0.91 .. 1.09
- * (a rival through the wrong formation fits elsewhere). Costs a fraction
- * of scoring every id: the id's scores leave as soon as they cannot pass
- * its best so far, a rival's blurs as soon as their error says they
- * cannot come within the lead (rl_rank_any_over), and the first rival
- * that does ends the read. */
-static int rank_keeps(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d)
+ * (rl_rank) by RL_TWINS_RANK_LEAD about (cx, cy), from one gather of every
+ * row through tone (the ranks do not depend on it; every other row left
+ * wrong reads up to 0.008, every row 0.003). The id's best over its blurs
+ * at its own radius and 3% either side, each rival's over its blurs at
+ * 0.91 .. 1.09 (a rival through the wrong formation fits elsewhere).
+ * Costs a fraction of scoring every id: the id's scores leave as soon as
+ * they cannot pass its best so far, a rival's blurs as soon as their
+ * error says they cannot come within the lead (rl_rank_any_over), and the
+ * first rival that does ends the read. */
+static int rank_keeps_at(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
+                         double cx, double cy)
 {
     const rl_templates *tt = &rec->templates;
     double own = -1, bar;
@@ -142,7 +143,7 @@ static int rank_keeps(const rl_recog *rec, const rl_image *img, const rl_tone *t
     rl_rank_order o[3];
     if (self < 0 || (n = rank_rivals(tt, d->id, rv)) == 0)
         return 0;
-    rl_profile_gather_rows(img, tone, d->u, d->v, d->radius * RANK_TOP, 1, &wide);
+    rl_profile_gather_rows(img, tone, cx, cy, d->radius * RANK_TOP, 1, &wide);
     /* its own radius first (where it peaks most often), each score
      * left as soon as it cannot pass the best so far */
     for (k = 0; k < 3; k++) {
@@ -165,6 +166,40 @@ static int rank_keeps(const rl_recog *rec, const rl_image *img, const rl_tone *t
                 return 0;
     }
     return 1;
+}
+
+/* Whether the rank read keeps d (rank_keeps_at) about its centre and,
+ * for a whole local read, about its outer edge's centre too.
+ *
+ * The read is blind to the formation only where each bin of the profile
+ * holds pixels of one printed radius, so only about the landmark's true
+ * centre. About a centre off by a pixel a bin averages pixels of radii a
+ * pixel apart (more than half a zone's width next to the outer ring), and
+ * averaging grey levels is a mixing after the curve, which no monotone
+ * curve undoes: a thin black zone reads as grey, and the code with it
+ * white can lead. A local read's centre is where its search found the id
+ * fitting best (up to 1.5 px from where it started): for a misread, where
+ * the wrong id fits. The centre of its outer edge (rl_edge_fit_rays
+ * through the frame's curve; light: the frame's light level) is chosen
+ * for no id, and a symmetric blur of either formation moves the edge alike
+ * along every ray; but motion and a lamp's halo can move it too (3 px off
+ * on a moving frame of another seed). Neither is sure to be the landmark's
+ * centre, so the id must lead about both. A whole 11 of a 2.2 camera
+ * blurring after its curve, read as linear as its twin 3 from a circle
+ * 0.8 px off and 6% short, 11 ahead by 0.033 through the 2.2 curve, was
+ * kept by the rank read about the search's centre; about its edge's, 0.07
+ * px from the truth, it is refused (test_search_twins). A global read's
+ * centre is its darkness centroid, chosen for no id (rl_refine_centre),
+ * and a cut one has only the read's (a circle through an arc fixes its
+ * centre loosely). */
+static int rank_keeps(const rl_recog *rec, const rl_image *img, const rl_tone *tone, int light,
+                      const rl_detection *d)
+{
+    double cx = d->u, cy = d->v, r = d->radius;
+    if (!rank_keeps_at(rec, img, tone, d, d->u, d->v))
+        return 0;
+    return d->pass != RL_PASS_LOCAL || !d->complete || !rl_edge_fit_rays(img, tone, light, &cx, &cy, &r) ||
+           rank_keeps_at(rec, img, tone, d, cx, cy);
 }
 
 /* The ids d is judged against: its zone twins; for a local read (sector
@@ -323,7 +358,7 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
          * (RL_TWINS_RANK_OWN) */
         if (keeps(&d, tol, lead, own) ||
             (rank_fits(&d, curved, others_median(radii, all, i)) && own > RL_TWINS_RANK_OWN &&
-             rank_keeps(rec, img, rec->tone, &d)))
+             rank_keeps(rec, img, rec->tone, res->levels.light, &d)))
             res->landmarks[kept++] = d;
         else
             rl_result_add_unidentified(res, &d);
