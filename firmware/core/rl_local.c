@@ -159,13 +159,10 @@ static void cut_outwards(int W, int H, double d, double *x, double *y)
         *y += t < b ? -d : d;
 }
 
-/* A local candidate's read: its match and where it was made; whether
- * that circle was its region's outline alone (rl_locate: no ray found a
- * grey outer edge round it). */
+/* A local candidate's read: its match and where it was made. */
 typedef struct {
     rl_match m;
     double cx, cy, r;
-    int outline_only;
 } local_read;
 
 /* 1 when (x, y) lies in the W x H frame. */
@@ -327,17 +324,11 @@ static int cut_agrees_with_box(rl_recog *rec, const rl_image *img, int light, co
  * (then it is read no further: no search, ellipse or read across the
  * motion; counted in *floored when floored is not NULL). A cut one (by its
  * box or its fitted circle) is read at the frame's size and at its box
- * too, and was taken from first matches as low as 0.15. Where the floor
- * is on and rd's circle is its region's outline alone (no ray found the
- * outer edge: a printed ring's is a step from ink to paper), a whole one
- * must show the local rule's own score there (local_min_score; rl_local.h
- * says what it cuts and what it was measured on). */
+ * too, and was taken from first matches as low as 0.15. */
 static int first_read(rl_recog *rec, const rl_image *img, int light, const rl_detection *u, double min_first,
                       const rl_accept_rule *rule, local_read *rd, int *floored)
 {
     int whole = rl_local_whole(rec->width, rec->height, u, rd->cx, rd->cy, rd->r);
-    if (whole && rd->outline_only && min_first > -INFINITY && min_first < rule->min_score)
-        min_first = rule->min_score;
     if (rl_search_identify_over(&rec->templates, rec->polar, img, rec->tone, light,
                                 whole ? min_first : -INFINITY, rule->min_score, &rd->cx, &rd->cy, &rd->r, &rd->m))
         return 1;
@@ -394,12 +385,9 @@ static int local_candidate(rl_recog *rec, const rl_image *img, const rl_result *
                            rl_detection *out)
 {
     local_read rd;
-    int located;
     memset(out, 0, sizeof *out);
-    located = rl_locate_outer_ring(rec, img, res, u, R, &out->box, &rd.cx, &rd.cy, &rd.r);
-    if (!located)
+    if (!rl_locate_outer_ring(rec, img, res, u, R, &out->box, &rd.cx, &rd.cy, &rd.r))
         return 0;
-    rd.outline_only = located == RL_LOCATE_OUTLINE;
     return circle_reads(rec, img, res, u, R, reach, min_first, floored, rd, out);
 }
 

@@ -34,16 +34,7 @@
  * arc fallback found (rl_locate's rays from the candidate's centre, a ring
  * the motion broke) is floored as any other: of 8 that reached the floor
  * on the generated sets one was stopped, none lost (measured, not by
- * design). Not in rl_local_read.
- * A whole candidate whose circle is its region's outline alone (no ray
- * from it found a grey outer edge: rl_locate's RL_LOCATE_OUTLINE) is held
- * to the local rule's own score (rl_recog_config.local_min_score, 0.75)
- * instead: a printed ring's outer edge is a step from ink to paper. On a
- * development folder's composites (3.6mm_28Sep2013, the bench's 207) 251
- * whole candidates were so located and none was taken; without the search
- * a few of the renderer's moving and glare landmarks were lost (a smeared
- * edge), with the first step held to the rule's score none (measured, not
- * by design; docs/results.md). */
+ * design). Not in rl_local_read. */
 #define RL_LOCAL_MIN_FIRST 0.5
 
 /* Retry every DUCLR of res; identified ones move from res->unidentified

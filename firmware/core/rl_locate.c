@@ -228,7 +228,5 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
     /* the frame's landmarks are of one size but for the lens: a wide angle
      * shrinks them towards the corners, where a circle fitted to an
      * ellipse's arc comes out shorter still */
-    if (fabs(*r - R) > LOCATE_SIZE_TOLERANCE * R)
-        return 0;
-    return found ? RL_LOCATE_EDGE : RL_LOCATE_OUTLINE;
+    return fabs(*r - R) <= LOCATE_SIZE_TOLERANCE * R;
 }

@@ -31,12 +31,7 @@
  * code ring was taken for the centre it surrounds, 0 when neither finds
  * the edge. The box is the region's, or the circle's within the frame
  * where the region was a code ring or the circle came from the
- * candidate's centre. Found: RL_LOCATE_EDGE when rays found the outer
- * edge, RL_LOCATE_OUTLINE when the circle is the outline's alone (no ray
- * from either centre found it; the local pass holds those to a higher
- * floor, rl_local.h). */
-#define RL_LOCATE_OUTLINE 1
-#define RL_LOCATE_EDGE 2
+ * candidate's centre. */
 int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *res,
                          const rl_detection *u, double R, rl_box *box, double *cx, double *cy,
                          double *r);
