@@ -198,11 +198,16 @@ static void through_the_curve(void **state)
     twin_counts c;
     (void)state;
     sets_reads(2.2, &c);
-    /* most landmarks from some circle (82 of 82, 661 of 661; frames of
-     * other seeds 173 of 177 and up) */
-    assert_true(c.own >= 0.97 * c.landmarks);
     assert_int_equal(c.twin_kept, 0);
     assert_int_equal(c.other_kept, 0);
+    /* through the camera's curve the local read's lead is the gate: every
+     * landmark of every CI set of both builds is read as its own id from
+     * some circle (82 of 82, 661 of 661; the sanitizer build's 81, 301)
+     * and at most one in 200 as its twin from any (none; the sanitizer
+     * build's moving 016's 4 tied with its 20); one in 100 unread leaves
+     * room for other seeds (173 of 177 and up) */
+    assert_true(c.landmarks - c.own <= c.landmarks / 100);
+    assert_true(c.twin_reads * 200 <= c.landmarks);
 }
 
 /* The 2.2 camera read as linear: the local reads' leads are weaker (a
@@ -212,9 +217,9 @@ static void read_as_linear(void **state)
     twin_counts c;
     (void)state;
     sets_reads(1.0, &c);
-    assert_true(c.own >= 0.93 * c.landmarks); /* 81 of 82, 631 of 661 */
     assert_int_equal(c.twin_kept, 0);
     assert_int_equal(c.other_kept, 0);
+    assert_true(c.own >= 0.93 * c.landmarks); /* 81 of 82, 631 of 661 */
 }
 
 int main(int argc, char **argv)

@@ -168,8 +168,30 @@ static int rank_keeps_at(const rl_recog *rec, const rl_image *img, const rl_tone
     return 1;
 }
 
+/* The centre of d's outer edge (rl_edge_fit_arc from d's circle, through
+ * tone; light: the frame's light level) into (*cx, *cy): taken where its
+ * radius is within EDGE_RADIUS of d's (the search reads 0.88 .. 1.06 of
+ * a fitted one) and the centre within EDGE_REACH radii of d's (the same
+ * landmark, not a neighbour's ring). 0 otherwise. */
+#define EDGE_RADIUS 0.2
+#define EDGE_REACH 0.25
+
+static int edge_centre(const rl_image *img, const rl_tone *tone, int light, const rl_detection *d, double *cx,
+                       double *cy)
+{
+    double u = d->u, v = d->v, r = d->radius;
+    if (!rl_edge_fit_arc(img, tone, light, &u, &v, &r) || !(fabs(r - d->radius) <= EDGE_RADIUS * d->radius) ||
+        !(hypot(u - d->u, v - d->v) <= EDGE_REACH * d->radius))
+        return 0;
+    *cx = u;
+    *cy = v;
+    return 1;
+}
+
 /* Whether the rank read keeps d (rank_keeps_at) about its centre and,
- * for a whole local read, about its outer edge's centre too.
+ * for a whole local read whose outer edge gives a centre (edge_centre),
+ * about that centre too; where the edge gives none, about its own alone
+ * (as before the edge's centre was read).
  *
  * The read is blind to the formation only where each bin of the profile
  * holds pixels of one printed radius, so only about the landmark's true
@@ -178,28 +200,26 @@ static int rank_keeps_at(const rl_recog *rec, const rl_image *img, const rl_tone
  * averaging grey levels is a mixing after the curve, which no monotone
  * curve undoes: a thin black zone reads as grey, and the code with it
  * white can lead. A local read's centre is where its search found the id
- * fitting best (up to 1.5 px from where it started): for a misread, where
- * the wrong id fits. The centre of its outer edge (rl_edge_fit_rays
- * through the frame's curve; light: the frame's light level) is chosen
- * for no id, and a symmetric blur of either formation moves the edge alike
- * along every ray; but motion and a lamp's halo can move it too (3 px off
- * on a moving frame of another seed). Neither is sure to be the landmark's
- * centre, so the id must lead about both. A whole 11 of a 2.2 camera
- * blurring after its curve, read as linear as its twin 3 from a circle
- * 0.8 px off and 6% short, 11 ahead by 0.033 through the 2.2 curve, was
- * kept by the rank read about the search's centre; about its edge's, 0.07
- * px from the truth, it is refused (test_search_twins). A global read's
- * centre is its darkness centroid, chosen for no id (rl_refine_centre),
- * and a cut one has only the read's (a circle through an arc fixes its
- * centre loosely). */
+ * fitting best (up to 1.5 px each way from where it started): for a
+ * misread, where the wrong id fits. The centre of its outer edge is
+ * chosen for no id, and a symmetric blur of either formation moves the
+ * edge alike along every ray; but motion and a lamp's halo can move it too
+ * (3 px off on a moving frame of another seed, where the edge's centre
+ * alone kept a wrong read the search's refused). Neither is sure to be
+ * the landmark's centre, so the id must lead about both (the case that
+ * made the rule: docs/results.md, "Frames nobody tuned on"). A global
+ * read's centre is its darkness centroid, chosen for no id
+ * (rl_refine_centre), and a cut one has only the read's (a circle through
+ * an arc fixes its centre loosely). */
 static int rank_keeps(const rl_recog *rec, const rl_image *img, const rl_tone *tone, int light,
                       const rl_detection *d)
 {
-    double cx = d->u, cy = d->v, r = d->radius;
+    double cx, cy;
     if (!rank_keeps_at(rec, img, tone, d, d->u, d->v))
         return 0;
-    return d->pass != RL_PASS_LOCAL || !d->complete || !rl_edge_fit_rays(img, tone, light, &cx, &cy, &r) ||
-           rank_keeps_at(rec, img, tone, d, cx, cy);
+    if (d->pass != RL_PASS_LOCAL || !d->complete || !edge_centre(img, tone, light, d, &cx, &cy))
+        return 1;
+    return rank_keeps_at(rec, img, tone, d, cx, cy);
 }
 
 /* The ids d is judged against: its zone twins; for a local read (sector

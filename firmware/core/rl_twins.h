@@ -16,8 +16,9 @@
  * unidentified, not as either id (a local read needs a margin more),
  * unless read through any monotone curve (rl_rank, which no formation
  * moves; a whole local read about its outer edge's centre too, one
- * chosen for no id) it leads every id up to two zones away clearly, its lead through
- * the frame's curve clear too. A landmark too small for its twins to be
+ * chosen for no id, where the edge gives one near its circle) it leads
+ * every id up to two zones away clearly, its lead through the frame's
+ * curve clear too. A landmark too small for its twins to be
  * told apart at all (code zone 1 under RL_TWINS_MIN_ZONE_PX) gets no id.
  * What the twins came to is in the landmark's runner_up.
  *
