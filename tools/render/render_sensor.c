@@ -14,18 +14,27 @@ void render_sensor_defaults(render_sensor *se)
     se->tone = RENDER_TONE_GAMMA22;
 }
 
-/* One pass of a 1-D kernel (taps k[-rad .. rad]) along x (dx = 1) or y. */
+/* One pass of a 1-D kernel (taps k[-rad .. rad]) along x (dx = 1) or y;
+ * the image's edge repeated beyond it. */
 static void convolve_1d(const double *src, double *dst, int W, int H, const double *k, int rad, int along_x)
 {
+    size_t step = along_x ? 1 : (size_t)W;
     int x, y, j;
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
+            int at = along_x ? x : y, n = along_x ? W : H;
             double acc = 0;
-            for (j = -rad; j <= rad; j++) {
-                int xx = along_x ? x + j : x, yy = along_x ? y : y + j;
-                xx = xx < 0 ? 0 : xx >= W ? W - 1 : xx;
-                yy = yy < 0 ? 0 : yy >= H ? H - 1 : yy;
-                acc += k[j + rad] * src[(size_t)yy * W + xx];
+            if (at >= rad && at < n - rad) { /* every tap inside: the same sum, unclamped */
+                const double *p = src + (size_t)y * W + x - rad * step;
+                for (j = 0; j <= 2 * rad; j++)
+                    acc += k[j] * p[j * step];
+            } else {
+                for (j = -rad; j <= rad; j++) {
+                    int xx = along_x ? x + j : x, yy = along_x ? y : y + j;
+                    xx = xx < 0 ? 0 : xx >= W ? W - 1 : xx;
+                    yy = yy < 0 ? 0 : yy >= H ? H - 1 : yy;
+                    acc += k[j + rad] * src[(size_t)yy * W + xx];
+                }
             }
             dst[(size_t)y * W + x] = acc;
         }
@@ -88,12 +97,19 @@ static int blur_disk(double *img, int W, int H, double r)
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
             double acc = 0;
-            for (j = -rad; j <= rad; j++)
-                for (i = -rad; i <= rad; i++) {
-                    int xx = x + i < 0 ? 0 : x + i >= W ? W - 1 : x + i;
-                    int yy = y + j < 0 ? 0 : y + j >= H ? H - 1 : y + j;
-                    acc += k[(j + rad) * n + i + rad] * img[(size_t)yy * W + xx];
-                }
+            if (x >= rad && x < W - rad && y >= rad && y < H - rad) { /* inside: the same sum, unclamped */
+                const double *p = img + (size_t)(y - rad) * W + (x - rad);
+                for (j = 0; j < n; j++)
+                    for (i = 0; i < n; i++)
+                        acc += k[j * n + i] * p[(size_t)j * W + i];
+            } else {
+                for (j = -rad; j <= rad; j++)
+                    for (i = -rad; i <= rad; i++) {
+                        int xx = x + i < 0 ? 0 : x + i >= W ? W - 1 : x + i;
+                        int yy = y + j < 0 ? 0 : y + j >= H ? H - 1 : y + j;
+                        acc += k[(j + rad) * n + i + rad] * img[(size_t)yy * W + xx];
+                    }
+            }
             tmp[(size_t)y * W + x] = acc;
         }
     memcpy(img, tmp, sizeof(double) * (size_t)W * H);
