@@ -154,14 +154,22 @@ int render_sensor_develop(const render_sensor *se, double *lin, int W, int H, co
 {
     size_t i, n = (size_t)W * H;
     double levels;
+    int k, top;
+    uint8_t *grey;
     if (render_blur_gauss(lin, W, H, se->blur) != 0 || blur_disk(lin, W, H, se->defocus) != 0)
         return -1;
-    levels = (double)((1 << (se->adc_bits < 8 ? 8 : se->adc_bits > 16 ? 16 : se->adc_bits)) - 1);
+    top = (1 << (se->adc_bits < 8 ? 8 : se->adc_bits > 16 ? 16 : se->adc_bits)) - 1;
+    levels = (double)top;
+    /* a raw value is one of top + 1 (q / levels): each one's grey level, once */
+    if ((grey = malloc((size_t)top + 1)) == NULL)
+        return -1;
+    for (k = 0; k <= top; k++)
+        grey[k] = to_u8(255.0 * tone(se->tone, k / levels));
     for (i = 0; i < n; i++) {
         double e = photons((lin[i] > 1 ? 1 : lin[i]) * se->full_well, rng);
         double raw = e / se->full_well + se->read_noise / 255.0 * rng->normal();
-        raw = floor((raw < 0 ? 0 : raw > 1 ? 1 : raw) * levels + 0.5) / levels;
-        out[i] = to_u8(255.0 * tone(se->tone, raw));
+        out[i] = grey[(int)floor((raw < 0 ? 0 : raw > 1 ? 1 : raw) * levels + 0.5)];
     }
+    free(grey);
     return 0;
 }
