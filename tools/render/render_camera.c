@@ -261,7 +261,7 @@ int render_camera_frame(const render_scene *s, uint8_t *out)
     }
     e = render_sensor_develop(&s->se, lin, W, H, &rng, out);
     free(lin);
-    free(grid.idx);
+    render_ceiling_grid_free(&grid);
     return e;
 }
 

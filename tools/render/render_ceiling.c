@@ -33,25 +33,39 @@ void render_ceiling_tags_close(void)
     tagfam = NULL;
 }
 
-static double tile_pattern(const render_scene *s, double X, double Y)
+/* floor(u), as floor gives it: the truncation moved down below 0, where
+ * it fits an int */
+static double floor_of(double u)
 {
+    double f;
+    if (!(fabs(u) < 1e9))
+        return floor(u);
+    f = (int)u;
+    return f > u ? f - 1 : f;
+}
+
+static double tile_pattern(const render_scene *s, const render_grid *g, double X, double Y)
+{
+    const render_noise *nz = g->noise;
     double u = (X - s->tile_px) / s->tile, v = (Y - s->tile_py) / s->tile;
-    double fu = (u - floor(u)) * s->tile, fv = (v - floor(v)) * s->tile;
+    double fu = (u - floor_of(u)) * s->tile, fv = (v - floor_of(v)) * s->tile;
     double bar = 0.012; /* half of a 24 mm T-bar */
-    double du = fmin(fu, s->tile - fu), dv = fmin(fv, s->tile - fv);
+    /* fmin's (neither is NaN, and no zeros of both signs: fu >= 0, tile - fu > 0) */
+    double du = fu < s->tile - fu ? fu : s->tile - fu, dv = fv < s->tile - fv ? fv : s->tile - fv;
     if (du < bar || dv < bar)
         return TBAR;
     if (du < bar + 0.003 || dv < bar + 0.003)
         return 0.55; /* the shadow line along the bar */
     /* fissured mineral tile: fine noise and a few darker pits */
-    return TILE + 0.05 * (render_random_vnoise(X * 90, Y * 90) - 0.5) + 0.03 * (render_random_vnoise(X * 20, Y * 20) - 0.5) -
-           (render_random_vnoise(X * 300, Y * 300) > 0.93 ? 0.15 : 0.0);
+    return TILE + 0.05 * (render_random_vnoise_in(&nz[1], X * 90, Y * 90) - 0.5) +
+           0.03 * (render_random_vnoise_in(&nz[0], X * 20, Y * 20) - 0.5) -
+           (render_random_vnoise_over(&nz[2], X * 300, Y * 300, 0.93) ? 0.15 : 0.0);
 }
 
 /* The ceiling as bright as the scene says (darker or lighter than paper). */
-static double tile_radiance(const render_scene *s, double X, double Y)
+static double tile_radiance(const render_scene *s, const render_grid *g, double X, double Y)
 {
-    return s->ceiling * tile_pattern(s, X, Y);
+    return s->ceiling * tile_pattern(s, g, X, Y);
 }
 
 /* Radiance of an object at local coordinates (lx, ly), or -1 if outside. */
@@ -114,7 +128,7 @@ static double object_radiance(const render_scene *s, const render_object *o, dou
 }
 
 /* Gap from a point to a light's rectangle (0 inside). */
-double render_ceiling_light_gap(const render_object *o, double X, double Y)
+static double light_gap(const render_object *o, double X, double Y)
 {
     double c = o->cr, s = o->sr, dx = X - o->x, dy = Y - o->y;
     double lx = fabs(c * dx + s * dy) - o->a, ly = fabs(-s * dx + c * dy) - o->b;
@@ -123,33 +137,56 @@ double render_ceiling_light_gap(const render_object *o, double X, double Y)
     return sqrt(lx * lx + ly * ly);
 }
 
+double render_ceiling_light_gap(const render_object *o, double X, double Y)
+{
+    return light_gap(o, X, Y);
+}
+
+/* The cell of the grid (X, Y) falls in; outside it, the cell that lists
+ * every object. */
+static int cell_at(const render_grid *g, double X, double Y)
+{
+    double u = (X - g->x0) * (1.0 / RENDER_GRID_CELL), v = (Y - g->y0) * (1.0 / RENDER_GRID_CELL);
+    if (u >= 0 && v >= 0 && u < g->nx && v < g->ny)
+        return (int)v * g->nx + (int)u;
+    return g->nx * g->ny;
+}
+
+/* The halo at (X, Y): the lights of cell c, in the scene's order. */
+static double halo_at(const render_scene *s, const render_grid *g, int c, double X, double Y)
+{
+    double halo = 0;
+    int k;
+    for (k = g->glow[c]; k < g->glow[c + 1]; k++) {
+        const render_grid_entry *e = &g->at[k];
+        double dx = X - e->x, dy = Y - e->y;
+        if (fabs(dx) < e->reach && fabs(dy) < e->reach) {
+            const render_object *o = e->o;
+            double gap = o->kind == RENDER_OBJ_LIGHT ? light_gap(o, X, Y) : fmax(0, sqrt(dx * dx + dy * dy) - 0.8 * o->a);
+            /* exp(-0) is 1 */
+            halo += s->halo_amp * (gap > 0 ? exp(-gap / s->halo_sigma) : 1.0) * (o->kind == RENDER_OBJ_LIGHT ? 1.0 : 0.4);
+        }
+    }
+    return halo;
+}
+
 double render_ceiling_radiance(const render_scene *s, const render_grid *g, double X, double Y)
 {
-    double v = -1, halo = 0;
-    int gx = (int)floor((X - g->x0) / RENDER_GRID_CELL), gy = (int)floor((Y - g->y0) / RENDER_GRID_CELL), k, k0, k1;
-    int all = gx < 0 || gy < 0 || gx >= g->nx || gy >= g->ny;
-    k0 = all ? 0 : g->start[gy * g->nx + gx];
-    k1 = all ? s->n : g->start[gy * g->nx + gx + 1];
-    /* objects later in the list lie on top */
-    for (k = k0; k < k1; k++) {
-        const render_object *o = &s->obj[all ? k : g->idx[k]];
-        double dx = X - o->x, dy = Y - o->y, reach = o->a > o->b ? o->a : o->b;
-        double r;
-        if (o->drop > 0)
-            continue; /* hangs below the ceiling: render_ceiling_object */
-        if ((o->kind == RENDER_OBJ_LIGHT || o->kind == RENDER_OBJ_DOWNLIGHT) &&
-            fabs(dx) < reach + 8 * s->halo_sigma && fabs(dy) < reach + 8 * s->halo_sigma) {
-            double gap = o->kind == RENDER_OBJ_LIGHT ? render_ceiling_light_gap(o, X, Y) : fmax(0, sqrt(dx * dx + dy * dy) - 0.8 * o->a);
-            halo += s->halo_amp * exp(-gap / s->halo_sigma) * (o->kind == RENDER_OBJ_LIGHT ? 1.0 : 0.4);
-        }
-        if (fabs(dx) > reach * 1.5 || fabs(dy) > reach * 1.5)
+    int c = cell_at(g, X, Y), k;
+    double halo = halo_at(s, g, c, X, Y);
+    /* objects later in the list lie on top: the last that covers the point */
+    for (k = g->cover[c + 1] - 1; k >= g->cover[c]; k--) {
+        const render_grid_entry *e = &g->at[k];
+        const render_object *o = e->o;
+        double dx = X - e->x, dy = Y - e->y, r;
+        if (fabs(dx) > e->reach || fabs(dy) > e->reach)
             continue;
         r = object_radiance(s, o, o->cr * dx + o->sr * dy, -o->sr * dx + o->cr * dy);
         if (r >= 0)
-            v = r;
+            return r + halo;
     }
     /* the tile only where no object covers it */
-    return (v >= 0 ? v : tile_radiance(s, X, Y)) + halo;
+    return tile_radiance(s, g, X, Y) + halo;
 }
 
 double render_ceiling_object(const render_scene *s, const render_object *o, double X, double Y)
@@ -158,56 +195,113 @@ double render_ceiling_object(const render_scene *s, const render_object *o, doub
     return object_radiance(s, o, o->cr * dx + o->sr * dy, -o->sr * dx + o->cr * dy);
 }
 
-/* The grid cells an object's reach (1.5 times its size, a light's halo)
- * touches, clipped to the grid. */
-static void object_cells(const render_scene *s, const render_grid *g, const render_object *o, int *x0, int *x1, int *y0, int *y1)
+/* The cells within e of (x, y) (a square), clipped to the grid, into
+ * r[4] (x0, x1, y0, y1; none where x0 > x1 or y0 > y1). A sample's cell
+ * (cell_at) rounds differently: e is widened by far more than that. */
+static void cells_near(const render_grid *g, double x, double y, double e, int *r)
 {
-    double reach = o->a > o->b ? o->a : o->b, e = reach * 1.5;
-    if (o->kind == RENDER_OBJ_LIGHT || o->kind == RENDER_OBJ_DOWNLIGHT)
-        e = fmax(e, reach + 8 * s->halo_sigma);
-    e += 1e-9;
-    *x0 = (int)fmax(0, floor((o->x - e - g->x0) / RENDER_GRID_CELL));
-    *x1 = (int)fmin(g->nx - 1, floor((o->x + e - g->x0) / RENDER_GRID_CELL));
-    *y0 = (int)fmax(0, floor((o->y - e - g->y0) / RENDER_GRID_CELL));
-    *y1 = (int)fmin(g->ny - 1, floor((o->y + e - g->y0) / RENDER_GRID_CELL));
+    e += 1e-6;
+    r[0] = (int)fmax(0, floor((x - e - g->x0) * (1.0 / RENDER_GRID_CELL)));
+    r[1] = (int)fmin(g->nx - 1, floor((x + e - g->x0) * (1.0 / RENDER_GRID_CELL)));
+    r[2] = (int)fmax(0, floor((y - e - g->y0) * (1.0 / RENDER_GRID_CELL)));
+    r[3] = (int)fmin(g->ny - 1, floor((y + e - g->y0) * (1.0 / RENDER_GRID_CELL)));
+}
+
+/* Object o, reaching e, into the cells of one list (start: cover or
+ * glow) within e of it and the cell outside the grid: counted (at NULL)
+ * or written at fill[cell]. */
+static void list_object(const render_grid *g, const render_object *o, double e, int *start, int *fill,
+                        render_grid_entry *at)
+{
+    int r[4], cx, cy, out = g->nx * g->ny;
+    render_grid_entry en;
+    en.x = o->x;
+    en.y = o->y;
+    en.reach = e;
+    en.o = o;
+    cells_near(g, o->x, o->y, e, r);
+    for (cy = r[2]; cy <= r[3]; cy++)
+        for (cx = r[0]; cx <= r[1]; cx++) {
+            if (at)
+                at[fill[cy * g->nx + cx]++] = en;
+            else
+                start[cy * g->nx + cx + 1]++;
+        }
+    if (at)
+        at[fill[out]++] = en;
+    else
+        start[out + 1]++;
+}
+
+/* Every object on the ceiling into the cells it can cover (its reach, 1.5
+ * times its size) and every light into those its halo can reach, in the
+ * scene's order: counted, or written. */
+static void list_objects(const render_scene *s, render_grid *g, int *fill_cover, int *fill_glow, render_grid_entry *at)
+{
+    int i;
+    for (i = 0; i < s->n; i++) {
+        const render_object *o = &s->obj[i];
+        double reach = o->a > o->b ? o->a : o->b;
+        if (o->drop > 0)
+            continue; /* hangs below the ceiling: render_ceiling_object */
+        list_object(g, o, reach * 1.5, g->cover, fill_cover, at);
+        if (o->kind == RENDER_OBJ_LIGHT || o->kind == RENDER_OBJ_DOWNLIGHT)
+            list_object(g, o, reach + 8 * s->halo_sigma, g->glow, fill_glow, at);
+    }
+}
+
+/* The tiles' noise lattices over the grid (tile_pattern's scales). */
+static int noise_tables(render_grid *g)
+{
+    static const double scale[3] = {20, 90, 300};
+    double x1 = g->x0 + g->nx * RENDER_GRID_CELL, y1 = g->y0 + g->ny * RENDER_GRID_CELL;
+    int i;
+    for (i = 0; i < 3; i++)
+        if (render_random_noise_make(&g->noise[i], g->x0 * scale[i], g->y0 * scale[i], x1 * scale[i],
+                                     y1 * scale[i]) != 0)
+            return -1;
+    return 0;
 }
 
 int render_ceiling_grid(const render_scene *s, const double *b, double m, render_grid *g)
 {
-    static int fill[RENDER_GRID_MAX * RENDER_GRID_MAX];
-    int i, cx, cy, pass;
+    static int fill_cover[RENDER_GRID_CELLS], fill_glow[RENDER_GRID_CELLS];
+    int i, n;
+    memset(g->noise, 0, sizeof g->noise);
+    g->at = NULL;
     g->x0 = b[0] - m;
     g->y0 = b[1] - m;
     g->nx = (int)ceil((b[2] + m - g->x0) / RENDER_GRID_CELL);
     g->ny = (int)ceil((b[3] + m - g->y0) / RENDER_GRID_CELL);
-    g->idx = NULL;
-    if (!(g->nx > 0 && g->ny > 0 && g->nx <= RENDER_GRID_MAX && g->ny <= RENDER_GRID_MAX)) {
-        g->nx = g->ny = 0; /* every sample looks at every object */
-        return 0;
-    }
-    /* each object into the cells its reach touches: counted, then filled
-     * in the scene's order */
-    memset(g->start, 0, sizeof(int) * (size_t)(g->nx * g->ny + 1));
-    for (pass = 0; pass < 2; pass++) {
-        for (i = 0; i < s->n; i++) {
-            int x0, x1, y0, y1;
-            object_cells(s, g, &s->obj[i], &x0, &x1, &y0, &y1);
-            for (cy = y0; cy <= y1; cy++)
-                for (cx = x0; cx <= x1; cx++) {
-                    int c = cy * g->nx + cx;
-                    if (pass == 0)
-                        g->start[c + 1]++;
-                    else
-                        g->idx[fill[c]++] = i;
-                }
-        }
-        if (pass == 0) {
-            for (i = 0; i < g->nx * g->ny; i++)
-                g->start[i + 1] += g->start[i];
-            memcpy(fill, g->start, sizeof(int) * (size_t)(g->nx * g->ny));
-            if ((g->idx = malloc(sizeof(int) * (size_t)(g->start[g->nx * g->ny] + 1))) == NULL)
-                return -1;
-        }
+    if (!(g->nx > 0 && g->ny > 0 && g->nx <= RENDER_GRID_MAX && g->ny <= RENDER_GRID_MAX))
+        g->nx = g->ny = 0; /* every sample in the cell outside the grid */
+    n = g->nx * g->ny + 1;
+    /* counted, then filled in the scene's order: the covers, then the glows */
+    memset(g->cover, 0, sizeof(int) * (size_t)(n + 1));
+    memset(g->glow, 0, sizeof(int) * (size_t)(n + 1));
+    list_objects(s, g, NULL, NULL, NULL);
+    for (i = 0; i < n; i++)
+        g->cover[i + 1] += g->cover[i];
+    g->glow[0] = g->cover[n];
+    for (i = 0; i < n; i++)
+        g->glow[i + 1] += g->glow[i];
+    memcpy(fill_cover, g->cover, sizeof(int) * (size_t)n);
+    memcpy(fill_glow, g->glow, sizeof(int) * (size_t)n);
+    if ((g->at = malloc(sizeof *g->at * (size_t)(g->glow[n] + 1))) == NULL)
+        return -1;
+    list_objects(s, g, fill_cover, fill_glow, g->at);
+    if (g->nx > 0 && noise_tables(g) != 0) {
+        render_ceiling_grid_free(g);
+        return -1;
     }
     return 0;
+}
+
+void render_ceiling_grid_free(render_grid *g)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        render_random_noise_free(&g->noise[i]);
+    free(g->at);
+    g->at = NULL;
 }

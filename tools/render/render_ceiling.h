@@ -3,30 +3,44 @@
  * docs/landmark-spec.md, or AprilTag 36h11 twins; lights that saturate;
  * clutter) and the halo lights cast around them.
  *
- * A frame looks up a point's objects in a grid over what it sees (0.1 m
- * cells, each listing the objects that can touch it, in the scene's
- * order), so a sample looks at a few objects, not all: the picture is the
- * same.
+ * A frame looks up a point's objects in a grid over what it sees (5 cm
+ * cells, each listing the objects that can cover it and the lights whose
+ * halo can reach it, in the scene's order), so a sample looks at a few
+ * objects, not all, and the tiles' value noise in its lattices' hashes
+ * made once for the view: the picture is the same, bit for bit.
  *
  *   static render_grid g;                          // large: keep it static
  *   double view[4] = {x0, y0, x1, y1};             // what the frame sees, m
  *   if (render_ceiling_grid(&s, view, 0.05, &g) == 0)
  *       use(render_ceiling_radiance(&s, &g, 1.0, 2.0));
- *   free(g.idx);
+ *   render_ceiling_grid_free(&g);
  */
 #ifndef RENDER_CEILING_H
 #define RENDER_CEILING_H
 
+#include "render_random.h"
 #include "render_scene.h"
 
-#define RENDER_GRID_CELL 0.1 /* m */
-#define RENDER_GRID_MAX 128  /* cells each way; a larger view looks at every object */
+#define RENDER_GRID_CELL 0.05 /* m */
+#define RENDER_GRID_MAX 256   /* cells each way; a larger view looks at every object */
+#define RENDER_GRID_CELLS (RENDER_GRID_MAX * RENDER_GRID_MAX + 1) /* and one for samples outside it */
+
+/* An object in a cell's list: where it is and how far it reaches there
+ * (1.5 times its size, or a light's halo). */
+typedef struct {
+    double x, y, reach;
+    const render_object *o;
+} render_grid_entry;
 
 typedef struct {
     double x0, y0;
-    int nx, ny;                                      /* 0: no grid */
-    int start[RENDER_GRID_MAX * RENDER_GRID_MAX + 1]; /* cell c's objects: idx[start[c] .. start[c + 1]) */
-    int *idx;                                        /* malloc'ed; the caller frees it */
+    int nx, ny; /* 0: no grid (every sample in the one cell outside it) */
+    /* cell c's objects that can cover a point of it, at[cover[c] .. cover[c + 1]),
+     * and the lights whose halo can reach it, at[glow[c] .. glow[c + 1]); cell
+     * nx * ny, outside the grid, lists them all */
+    int cover[RENDER_GRID_CELLS + 1], glow[RENDER_GRID_CELLS + 1];
+    render_grid_entry *at; /* malloc'ed */
+    render_noise noise[3]; /* the tiles' value noise at its three scales (coarse to fine) over the grid */
 } render_grid;
 
 /* The AprilTag 36h11 bitmaps a twin scene draws: made once (0, or -1),
@@ -36,8 +50,9 @@ int render_ceiling_tags_open(void);
 void render_ceiling_tags_close(void);
 
 /* The grid over view (x0, y0, x1, y1), widened by margin: 0, or -1 out of
- * memory. */
+ * memory (g holds nothing to free then). */
 int render_ceiling_grid(const render_scene *s, const double *view, double margin, render_grid *g);
+void render_ceiling_grid_free(render_grid *g);
 
 /* The radiance at map point (X, Y): 1 is the paper near the white point. */
 double render_ceiling_radiance(const render_scene *s, const render_grid *g, double X, double Y);

@@ -2,6 +2,8 @@
 #include "render_random.h"
 
 #include <math.h>
+#include <stdlib.h>
+#include <string.h>
 
 static uint64_t rng_state = 88172645463325252ull;
 
@@ -46,10 +48,39 @@ double render_random_hash(int i, int j)
 double render_random_vnoise(double x, double y)
 {
     int i = (int)floor(x), j = (int)floor(y);
-    double fx = x - i, fy = y - j;
-    double a = render_random_hash(i, j), b = render_random_hash(i + 1, j), c = render_random_hash(i, j + 1),
-           d = render_random_hash(i + 1, j + 1);
-    fx = fx * fx * (3 - 2 * fx);
-    fy = fy * fy * (3 - 2 * fy);
-    return (a * (1 - fx) + b * fx) * (1 - fy) + (c * (1 - fx) + d * fx) * fy;
+    return render_random_mix(render_random_hash(i, j), render_random_hash(i + 1, j), render_random_hash(i, j + 1),
+                             render_random_hash(i + 1, j + 1), x - i, y - j);
+}
+
+/* at most 4 M points (32 MB): a frame's view at the finest scale is some 0.6 M */
+#define NOISE_MAX_POINTS (4 << 20)
+
+int render_random_noise_make(render_noise *t, double x0, double y0, double x1, double y1)
+{
+    double ni = floor(x1) - floor(x0) + 2, nj = floor(y1) - floor(y0) + 2;
+    int a, b;
+    memset(t, 0, sizeof *t);
+    if (!(ni > 0 && nj > 0 && ni * nj <= NOISE_MAX_POINTS && fabs(x0) < 1e9 && fabs(y0) < 1e9))
+        return 0;
+    if ((t->v = malloc(sizeof *t->v * (size_t)(ni * nj))) == NULL)
+        return -1;
+    t->i0 = (int)floor(x0);
+    t->j0 = (int)floor(y0);
+    t->ni = (int)ni;
+    t->nj = (int)nj;
+    for (b = 0; b < t->nj; b++)
+        for (a = 0; a < t->ni; a++)
+            t->v[(size_t)b * t->ni + a] = render_random_hash(t->i0 + a, t->j0 + b);
+    /* a cell needs its corners on both sides */
+    t->lo[0] = t->i0;
+    t->lo[1] = t->j0;
+    t->hi[0] = t->i0 + t->ni - 1;
+    t->hi[1] = t->j0 + t->nj - 1;
+    return 0;
+}
+
+void render_random_noise_free(render_noise *t)
+{
+    free(t->v);
+    memset(t, 0, sizeof *t);
 }

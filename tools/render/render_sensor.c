@@ -14,18 +14,27 @@ void render_sensor_defaults(render_sensor *se)
     se->tone = RENDER_TONE_GAMMA22;
 }
 
-/* One pass of a 1-D kernel (taps k[-rad .. rad]) along x (dx = 1) or y. */
+/* One pass of a 1-D kernel (taps k[-rad .. rad]) along x (dx = 1) or y;
+ * the image's edge repeated beyond it. */
 static void convolve_1d(const double *src, double *dst, int W, int H, const double *k, int rad, int along_x)
 {
+    size_t step = along_x ? 1 : (size_t)W;
     int x, y, j;
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
+            int at = along_x ? x : y, n = along_x ? W : H;
             double acc = 0;
-            for (j = -rad; j <= rad; j++) {
-                int xx = along_x ? x + j : x, yy = along_x ? y : y + j;
-                xx = xx < 0 ? 0 : xx >= W ? W - 1 : xx;
-                yy = yy < 0 ? 0 : yy >= H ? H - 1 : yy;
-                acc += k[j + rad] * src[(size_t)yy * W + xx];
+            if (at >= rad && at < n - rad) { /* every tap inside: the same sum, unclamped */
+                const double *p = src + (size_t)y * W + x - rad * step;
+                for (j = 0; j <= 2 * rad; j++)
+                    acc += k[j] * p[j * step];
+            } else {
+                for (j = -rad; j <= rad; j++) {
+                    int xx = along_x ? x + j : x, yy = along_x ? y : y + j;
+                    xx = xx < 0 ? 0 : xx >= W ? W - 1 : xx;
+                    yy = yy < 0 ? 0 : yy >= H ? H - 1 : yy;
+                    acc += k[j + rad] * src[(size_t)yy * W + xx];
+                }
             }
             dst[(size_t)y * W + x] = acc;
         }
@@ -88,12 +97,19 @@ static int blur_disk(double *img, int W, int H, double r)
     for (y = 0; y < H; y++)
         for (x = 0; x < W; x++) {
             double acc = 0;
-            for (j = -rad; j <= rad; j++)
-                for (i = -rad; i <= rad; i++) {
-                    int xx = x + i < 0 ? 0 : x + i >= W ? W - 1 : x + i;
-                    int yy = y + j < 0 ? 0 : y + j >= H ? H - 1 : y + j;
-                    acc += k[(j + rad) * n + i + rad] * img[(size_t)yy * W + xx];
-                }
+            if (x >= rad && x < W - rad && y >= rad && y < H - rad) { /* inside: the same sum, unclamped */
+                const double *p = img + (size_t)(y - rad) * W + (x - rad);
+                for (j = 0; j < n; j++)
+                    for (i = 0; i < n; i++)
+                        acc += k[j * n + i] * p[(size_t)j * W + i];
+            } else {
+                for (j = -rad; j <= rad; j++)
+                    for (i = -rad; i <= rad; i++) {
+                        int xx = x + i < 0 ? 0 : x + i >= W ? W - 1 : x + i;
+                        int yy = y + j < 0 ? 0 : y + j >= H ? H - 1 : y + j;
+                        acc += k[(j + rad) * n + i + rad] * img[(size_t)yy * W + xx];
+                    }
+            }
             tmp[(size_t)y * W + x] = acc;
         }
     memcpy(img, tmp, sizeof(double) * (size_t)W * H);
@@ -138,14 +154,22 @@ int render_sensor_develop(const render_sensor *se, double *lin, int W, int H, co
 {
     size_t i, n = (size_t)W * H;
     double levels;
+    int k, top;
+    uint8_t *grey;
     if (render_blur_gauss(lin, W, H, se->blur) != 0 || blur_disk(lin, W, H, se->defocus) != 0)
         return -1;
-    levels = (double)((1 << (se->adc_bits < 8 ? 8 : se->adc_bits > 16 ? 16 : se->adc_bits)) - 1);
+    top = (1 << (se->adc_bits < 8 ? 8 : se->adc_bits > 16 ? 16 : se->adc_bits)) - 1;
+    levels = (double)top;
+    /* a raw value is one of top + 1 (q / levels): each one's grey level, once */
+    if ((grey = malloc((size_t)top + 1)) == NULL)
+        return -1;
+    for (k = 0; k <= top; k++)
+        grey[k] = to_u8(255.0 * tone(se->tone, k / levels));
     for (i = 0; i < n; i++) {
         double e = photons((lin[i] > 1 ? 1 : lin[i]) * se->full_well, rng);
         double raw = e / se->full_well + se->read_noise / 255.0 * rng->normal();
-        raw = floor((raw < 0 ? 0 : raw > 1 ? 1 : raw) * levels + 0.5) / levels;
-        out[i] = to_u8(255.0 * tone(se->tone, raw));
+        out[i] = grey[(int)floor((raw < 0 ? 0 : raw > 1 ? 1 : raw) * levels + 0.5)];
     }
+    free(grey);
     return 0;
 }
