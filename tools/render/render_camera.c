@@ -234,8 +234,10 @@ int render_camera_frame(const render_scene *s, uint8_t *out)
         move_x[a] = t * s->motion * cos(s->motion_dir);
         move_y[a] = t * s->motion * sin(s->motion_dir);
     }
-    if (!lin || build_rays(&s->cam) != 0 || view_grid(s, &grid) != 0)
+    if (!lin || build_rays(&s->cam) != 0 || view_grid(s, &grid) != 0) {
+        free(lin);
         return -1;
+    }
     n_low = hanging(s, low, box);
     for (y = 0; y < H; y++) {
         /* a rolling shutter: this row exposed f of the readout from the middle row's */

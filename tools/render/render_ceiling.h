@@ -34,7 +34,8 @@ typedef struct {
 
 typedef struct {
     double x0, y0;
-    int nx, ny; /* 0: no grid (every sample in the one cell outside it) */
+    int nx, ny; /* 0: no grid (every sample in the one cell outside it); only a grid made by
+                 * render_ceiling_grid lists anything (a zeroed one meets no object) */
     /* cell c's objects that can cover a point of it, at[cover[c] .. cover[c + 1]),
      * and the lights whose halo can reach it, at[glow[c] .. glow[c + 1]); cell
      * nx * ny, outside the grid, lists them all */

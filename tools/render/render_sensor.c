@@ -168,7 +168,8 @@ int render_sensor_develop(const render_sensor *se, double *lin, int W, int H, co
     for (i = 0; i < n; i++) {
         double e = photons((lin[i] > 1 ? 1 : lin[i]) * se->full_well, rng);
         double raw = e / se->full_well + se->read_noise / 255.0 * rng->normal();
-        out[i] = grey[(int)floor((raw < 0 ? 0 : raw > 1 ? 1 : raw) * levels + 0.5)];
+        /* clamped to [0, 1], a NaN (a zero full well) to 0: the index stays in the table */
+        out[i] = grey[(int)floor((raw > 0 ? (raw < 1 ? raw : 1) : 0) * levels + 0.5)];
     }
     free(grey);
     return 0;
