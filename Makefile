@@ -4,7 +4,9 @@
 #   make host            build the host binaries into build/
 #   make host-test       build and run every test (CTest)
 #   make host-test-asan  the same tests built with clang under AddressSanitizer + UBSan (build-asan/),
-#                        with the plain-C matcher (RL_NO_VECTOR_EXT) instead of the vector one
+#                        with the plain-C matcher (RL_NO_VECTOR_EXT) instead of the vector one;
+#                        its fixtures rendered by the renderer's code uninstrumented at -O2 (the
+#                        same bytes), the instrumented renderer checked against it (render_checked)
 #   make demo            the firmware on a bundled drive: poses over a pty, report
 #   make bench           recognition, pose, place and survey benchmarks (figures, not pass/fail),
 #                        with the time of each stage of the recognizer (docs/design.md) and
