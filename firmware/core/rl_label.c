@@ -185,7 +185,7 @@ static uint64_t chunk_bits(const uint8_t *row, const uint8_t *span, int lo, int 
     if (i == CHUNK && (half[0] | half[1]) == 0)
         return 0; /* most of a ceiling: no pixel in the band */
 #endif
-    for (; i < n; i++)
+    for (; i < n && i < CHUNK; i++) /* n <= CHUNK: said for GCC's bounds warning on aarch64 */
         in[i] = (uint8_t)(row[i] - lo) < span[i];
     for (; i < CHUNK; i++)
         in[i] = 0;
