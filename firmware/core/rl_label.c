@@ -104,9 +104,32 @@ static uint64_t whole_chunk_bits(const uint8_t *row, const uint8_t *span, int lo
 /* Whether every pixel of a whole chunk is under lo (lo > 0): then none
  * is in the band, whatever the spans. The light labelling's band starts
  * at 235 or more, and most of a frame's chunks hold no pixel that high:
- * their maximum is taken in 7 vector steps instead of the chunk's
- * tests. x86 (SSE2) only: elsewhere (aarch64, RL_NO_VECTOR_EXT) 0, and
- * the chunk's own tests decide, as before. */
+ * on x86 their maximum is taken in 7 vector steps instead of the chunk's
+ * tests; elsewhere (aarch64, RL_NO_VECTOR_EXT) eight 64-bit words are
+ * tested a byte at a time in each (chunk_under_words). */
+#ifndef LABEL_MOVEMASK
+#define HIGH_BITS (0x80 * ONES)
+/* A byte b's low seven bits plus 128 - m reach bit 7 (no carry out of the
+ * byte: at most 127 + 128) exactly when they are m or more; so b >= lo
+ * is, for lo >= 128, b's bit 7 and its low bits at least lo - 128, and
+ * for lo < 128, b's bit 7 or its low bits at least lo. */
+static int chunk_under_words(const uint8_t *row, int lo)
+{
+    uint64_t over = 0, w;
+    int i;
+    if (lo > 255)
+        return 1;
+    for (i = 0; i < CHUNK; i += 8) {
+        memcpy(&w, row + i, sizeof w); /* byte order does not matter: any byte will do */
+        if (lo >= 128)
+            over |= ((w & ~HIGH_BITS) + (uint64_t)(256 - lo) * ONES) & w;
+        else
+            over |= ((w & ~HIGH_BITS) + (uint64_t)(128 - lo) * ONES) | w;
+    }
+    return (over & HIGH_BITS) == 0;
+}
+#endif
+
 static int chunk_under(const uint8_t *row, int lo)
 {
 #ifdef LABEL_MOVEMASK
@@ -118,9 +141,7 @@ static int chunk_under(const uint8_t *row, int lo)
     /* every byte at most lo - 1: max(m, lo - 1) is lo - 1 everywhere */
     return _mm_movemask_epi8(_mm_cmpeq_epi8(_mm_max_epu8(m, top), top)) == 0xffff;
 #else
-    (void)row;
-    (void)lo;
-    return 0; /* the chunk's tests decide */
+    return chunk_under_words(row, lo);
 #endif
 }
 
@@ -164,7 +185,7 @@ static uint64_t chunk_bits(const uint8_t *row, const uint8_t *span, int lo, int 
     if (i == CHUNK && (half[0] | half[1]) == 0)
         return 0; /* most of a ceiling: no pixel in the band */
 #endif
-    for (; i < n; i++)
+    for (; i < n && i < CHUNK; i++) /* n <= CHUNK: said for GCC's bounds warning on aarch64 */
         in[i] = (uint8_t)(row[i] - lo) < span[i];
     for (; i < CHUNK; i++)
         in[i] = 0;

@@ -15,7 +15,9 @@
  * 4,198,404, more than a 1280x960 frame holds. Larger gathers (a frame
  * over 4.2 megapixels at a radius of thousands of pixels) unpack their
  * words into the profile's doubles every PACK_PIXELS pixels. */
-#define PACK_COUNT (1ull << 32)
+#if RL_TONE_PACK_COUNT != (1ull << 32)
+#error "rl_profile unpacks a bin's count from the high 32 bits"
+#endif
 #define PACK_PIXELS (0xffffffffu / RL_TONE_MAX)
 
 /* The row's span of x where the shape's normalized radius about (cx, cy)
@@ -111,12 +113,10 @@ static void gather(const rl_image *img, const rl_tone *tone, double cx, double c
      * one set would make every add wait on the one before */
     uint64_t acc[2][RL_PROFILE_BINS], sxx = 0; /* (count, sum) packed: PACK_PIXELS pixels in all */
     uint32_t pending = 0; /* pixels in acc since it was last unpacked */
-    /* each grey level's (1, darkness) packed as a bin adds it: one load
-     * and one add a pixel, its darkness the low word */
-    uint64_t packed[256];
+    /* each grey level's (1, darkness) packed as a bin adds it, made with
+     * the curve: one load and one add a pixel, its darkness the low word */
+    const uint64_t *packed = tone->packed;
     plane_sums ps;
-    for (k = 0; k < 256; k++)
-        packed[k] = PACK_COUNT + tone->dark[k];
     memset(acc, 0, sizeof acc);
     memset(&ps, 0, sizeof ps);
     for (k = 0; k < RL_PROFILE_BINS; k++)

@@ -15,6 +15,7 @@
  *
  *   rl_tone t;
  *   rl_tone_init(&t, 2.2);     // t.light[128] == 224.5, t.dark[128] == 798
+ *                              // t.packed[128] == RL_TONE_PACK_COUNT + 798
  *   double span = rl_tone_light(&t, 180.0) - rl_tone_light(&t, 40.0);
  */
 #ifndef RL_TONE_H
@@ -25,12 +26,19 @@
 /* Light of the white point (grey 255). */
 #define RL_TONE_MAX 1023
 
+/* A pixel's count in rl_tone.packed: the word's high half. */
+#define RL_TONE_PACK_COUNT (1ull << 32)
+
 typedef struct {
     float light[256];   /* light of each grey level, 0 .. RL_TONE_MAX */
     uint16_t dark[256]; /* RL_TONE_MAX - light, rounded: the darkness profiles sum */
+    uint64_t packed[256]; /* RL_TONE_PACK_COUNT + dark: one pixel's (count, darkness) in one
+                             word, what rl_profile adds into a bin (made once a curve,
+                             not once a gather) */
 } rl_tone;
 
-/* The tables for a tone curve of exponent gamma (1: a linear camera). */
+/* The tables for a tone curve of exponent gamma (1: a linear camera),
+ * all three. */
 void rl_tone_init(rl_tone *t, double gamma);
 
 /* Light of a grey level between the table's entries (linear in between);
