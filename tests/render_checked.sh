@@ -4,7 +4,7 @@
 # the sanitizers (its frames the ones the sanitizer build's tests were
 # written for, byte for byte, in a third less CPU), and builds the same
 # sources under ASan and UBSan as `ringloc-render-checked`. Here each of
-# the renderer's ways (every set, a camera pipeline, paths with their map,
+# the renderer's ways (every fixture set of the suite, a camera pipeline, paths with their map,
 # rocking and tilt, a fisheye lens, a rolling shutter, a hung landmark, the
 # survey's site, a large site's drives, AprilTag twins) runs once under the
 # sanitizers, and its files must be the optimised renderer's, byte for byte.

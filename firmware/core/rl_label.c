@@ -105,8 +105,8 @@ static uint64_t whole_chunk_bits(const uint8_t *row, const uint8_t *span, int lo
  * is in the band, whatever the spans. The light labelling's band starts
  * at 235 or more, and most of a frame's chunks hold no pixel that high:
  * on x86 their maximum is taken in 7 vector steps instead of the chunk's
- * tests; elsewhere (aarch64, RL_NO_VECTOR_EXT) eight 64-bit words are
- * tested a byte at a time in each (chunk_under_words). */
+ * tests; elsewhere (aarch64, RL_NO_VECTOR_EXT) eight 64-bit words, the
+ * eight bytes of each at once (an add and an and/or: chunk_under_words). */
 #ifndef LABEL_MOVEMASK
 #define HIGH_BITS (0x80 * ONES)
 /* A byte b's low seven bits plus 128 - m reach bit 7 (no carry out of the
