@@ -230,6 +230,22 @@ static void test_match_all_is_every_id_listed(void **state)
  * the template bins; bit for bit what rl_match_ids gives the id alone;
  * -2 for an id the table does not hold and for a profile too small to
  * correlate. */
+
+/* A profile drawn from template i at blur b, grey 40 .. 220, each bin
+ * (10 + 8 k pixels) off by up to amp / 2 and its spread 30 a pixel. */
+static void noisy_profile(const rl_templates *tt, int i, int b, double amp, rl_profile *p)
+{
+    int k;
+    memset(p, 0, sizeof *p);
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        double cnt = 10 + 8 * k, v = 40 + 180 * rl_templates_bin(tt, i, b, k) + amp * (uniform() - 0.5);
+        p->n[k] = cnt;
+        p->sx[k] = cnt * v;
+        p->sxx += cnt * v * v + cnt * 30.0;
+        p->total += cnt;
+    }
+}
+
 static void test_each_id_is_its_own_best(void **state)
 {
     static unsigned char mem[1 << 18];
@@ -246,14 +262,7 @@ static void test_each_id_is_its_own_best(void **state)
             int i = (int)(uniform() * tt.n), b = (int)(uniform() * RL_BLUR_LEVELS), codes[RL_MAX_BITS + 2], n;
             double best[RL_MAX_BITS + 2];
             rl_profile p;
-            memset(&p, 0, sizeof p);
-            for (k = 0; k < RL_PROFILE_BINS; k++) {
-                double cnt = 10 + 8 * k, v = 40 + 180 * rl_templates_bin(&tt, i, b, k) + 40 * (uniform() - 0.5);
-                p.n[k] = cnt;
-                p.sx[k] = cnt * v;
-                p.sxx += cnt * v * v + cnt * 30.0;
-                p.total += cnt;
-            }
+            noisy_profile(&tt, i, b, 40, &p);
             codes[0] = tt.ids[i];
             n = 1 + rl_family_zone_twins(&fam, codes[0], codes + 1);
             codes[n++] = -5; /* not an id */
@@ -319,14 +328,7 @@ static void test_id_and_rivals_at_once(void **state)
         for (trial = 0; trial < 40; trial++) {
             int i = (int)(uniform() * tt.n), b = (int)(uniform() * RL_BLUR_LEVELS), rv[RL_MAX_IDS + 1], n = 0, flat;
             rl_profile p;
-            memset(&p, 0, sizeof p);
-            for (k = 0; k < RL_PROFILE_BINS; k++) {
-                double cnt = 10 + 8 * k, v = 40 + 180 * rl_templates_bin(&tt, i, b, k) + 60 * (uniform() - 0.5);
-                p.n[k] = cnt;
-                p.sx[k] = cnt * v;
-                p.sxx += cnt * v * v + cnt * 30.0;
-                p.total += cnt;
-            }
+            noisy_profile(&tt, i, b, 60, &p);
             for (j = 0; j < tt.n; j++)
                 if (tt.ids[j] != tt.ids[i] && uniform() < 0.7)
                     rv[n++] = tt.ids[j];
