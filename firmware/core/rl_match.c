@@ -2,7 +2,6 @@
 
 #include <math.h>
 #include <string.h>
-#include "rl_match_bound.h"
 #include "rl_match_kernel.h"
 
 /* What every column's correlation shares: the profile's pixels, their
@@ -114,59 +113,6 @@ void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m)
         }
         c0 += nc;
     }
-}
-
-/* rl_match_all through the bound: each id's score bounded from above
- * (rl_match_bound_ids), the ids scored exactly from the highest bound down
- * until the next bound is under the second best id so far, then the
- * scored ids' columns kept in table order as rl_match_all keeps them. An id
- * left out scores under two ids that were scored, so it is neither the
- * best nor the runner-up: the same match. */
-void rl_match_all_bounded(const rl_templates *tt, const rl_match_bound *mb, const rl_profile *p,
-                          rl_match *m)
-{
-    profile_terms z;
-    double upper[RL_MAX_IDS], top1 = -HUGE_VAL, top2 = -HUGE_VAL;
-    float sums[RL_MAX_IDS][3][RL_MATCH_BLOCK];
-    int order[RL_MAX_IDS], scored[RL_MAX_IDS], n = tt->n, i, j, b, c;
-    if (mb == NULL || mb->n != n || n > RL_MAX_IDS || (n - 1) * RL_BLUR_LEVELS + RL_MATCH_BLOCK > tt->stride) {
-        rl_match_all(tt, p, m);
-        return;
-    }
-    if (!match_start(p, &z, m))
-        return;
-    rl_match_bound_ids(mb, p, z.n, z.sx, z.ivx, upper);
-    /* ids by their bound, the highest first */
-    for (i = 0; i < n; i++) {
-        for (j = i; j > 0 && upper[order[j - 1]] < upper[i]; j--)
-            order[j] = order[j - 1];
-        order[j] = i;
-        scored[i] = 0;
-    }
-    for (j = 0; j < n; j++) {
-        rl_match one;
-        i = order[j];
-        if (upper[i] < top2)
-            break; /* this id and every later one under two scored ids */
-        rl_match_kernel(tt->table + (size_t)i * RL_BLUR_LEVELS, (size_t)tt->stride, z.fn, z.fs, sums[i][0],
-                        sums[i][1], sums[i][2]);
-        scored[i] = 1;
-        one.id = -1;
-        one.score = one.second = -1.0;
-        for (b = 0; b < RL_BLUR_LEVELS; b++)
-            keep_column(&one, &z, tt->ids[i], b, sums[i][0][b], sums[i][1][b], sums[i][2][b]);
-        if (one.id < 0)
-            continue;
-        if (one.score > top1) {
-            top2 = top1;
-            top1 = one.score;
-        } else if (one.score > top2) {
-            top2 = one.score;
-        }
-    }
-    for (i = 0; i < n; i++)
-        for (c = 0; scored[i] && c < RL_BLUR_LEVELS; c++)
-            keep_column(m, &z, tt->ids[i], c, sums[i][0][c], sums[i][1][c], sums[i][2][c]);
 }
 
 /* Add column (id index i, blur b) of the table to a list (the table's

@@ -41,14 +41,6 @@ typedef struct {
 /* Score every template against a profile. */
 void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m);
 
-/* rl_match_all's match (the same id, score, runner-up, contrast and
- * blur, bit for bit) scoring only the ids whose bound (rl_match_bound.h,
- * built for tt) could reach the best or the runner-up; rl_match_all
- * itself when mb is NULL or built for another table. */
-struct rl_match_bound_s;
-void rl_match_all_bounded(const rl_templates *tt, const struct rl_match_bound_s *mb, const rl_profile *p,
-                          rl_match *m);
-
 /* Score only the templates of the given ids, at one blur level
  * (0 .. RL_BLUR_LEVELS - 1) or at all of them (blur < 0). Ids the table
  * does not hold are skipped. */

@@ -19,7 +19,6 @@
 
 #include "rl_illum.h"
 #include "rl_label.h"
-#include "rl_match_bound.h"
 #include "rl_polar.h"
 #include "rl_recog.h"
 #include "rl_split.h"
@@ -31,7 +30,6 @@ struct rl_recog {
     int width, height;
     int ids[RL_MAX_IDS]; /* copy of cfg.ids */
     rl_templates templates;        /* rendered at init */
-    rl_match_bound bound; /* the templates' scores bounded (verification's match) */
     rl_tones tones; /* the camera's tone curve, configured or learned */
     const rl_tone *tone; /* the one this frame is read through (in tones) */
     rl_label dark;  /* ROI labelling: the frame, its second labellings (rl_split), then the

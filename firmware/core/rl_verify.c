@@ -207,7 +207,7 @@ static int judged(const rl_recog *rec, const rl_accept_rule *rule, const rl_leve
     rl_match_ids(&rec->templates, &q, &id, 1, -1, m);
     if (!(m->id == id && m->score >= rule->min_score))
         return 0;
-    rl_match_all_bounded(&rec->templates, &rec->bound, &q, m);
+    rl_match_all(&rec->templates, &q, m);
     return m->id == id && rl_accept(rule, m, rl_accept_span(local, rec->tone, &q));
 }
 
