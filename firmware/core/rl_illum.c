@@ -2,12 +2,15 @@
 
 #include <string.h>
 
+/* The largest tile (px): its samples' sums fit tile_level's fields. */
+#define RL_ILLUM_MAX_TILE 64
+
 /* Tiles of about a twentieth of the frame's width, a power of two (32 px
  * at 640): the labeller finds a pixel's tile by a shift. */
 static int tile_size(int W)
 {
     int t = 16;
-    while (t < 64 && 2 * t <= W / 14)
+    while (t < RL_ILLUM_MAX_TILE && 2 * t <= W / 14)
         t *= 2;
     return t;
 }
@@ -32,26 +35,53 @@ rl_err rl_illum_init(rl_illum *il, rl_ws *ws, int W, int H)
     return RL_OK;
 }
 
+/* A sample's four counts packed in one word (illum_words): from the top,
+ * 1 when it is no lamp (n), 1 when it is also at or above the dark
+ * threshold (n_hi), its level when no lamp (sum), its level when both
+ * (sum_hi), 16 bits each. A tile has at most 16 x 8 samples (64 px
+ * tiles: every fourth row, every eighth column), so n and n_hi stay
+ * under 256 and the sums under 128 x 255 < 2^16: no field carries into
+ * the next, and the word's sums are the four plain sums. */
+#define FIELD 16
+#define N_SHIFT (3 * FIELD)
+#define NHI_SHIFT (2 * FIELD)
+#define SUM_SHIFT FIELD
+#define FIELD_MASK 0xffffu
+#if RL_ILLUM_MAX_TILE > 64
+#error "rl_illum packs a tile's sums in 16 bits: at most 64 px tiles"
+#endif
+
+/* Each grey level's packed sample word under thr and light. */
+static void illum_words(uint64_t *word, int thr, int light)
+{
+    unsigned v;
+    for (v = 0; v < 256; v++) {
+        uint64_t m = v < (unsigned)light, h = m & (v >= (unsigned)thr);
+        word[v] = m << N_SHIFT | h << NHI_SHIFT | (v * m) << SUM_SHIFT | v * h;
+    }
+}
+
 /* A tile's ceiling level: the mean of its samples at or above the frame's
  * dark threshold when they are at least a quarter of them, else the mean
  * of them all (a tile in a shadow, or inside a landmark's ink: its
  * neighbours then tell); every fourth row and eighth column (32 samples of
- * a 32 px tile), lamps left out, in one branch-free pass (a ceiling's
- * texture makes the tests unpredictable); 0 when it is all lamp. */
-static int tile_level(const rl_image *img, int x0, int y0, int x1, int y1, int thr, int light)
+ * a 32 px tile), lamps left out, one add of a packed word a sample
+ * (illum_words: a ceiling's texture makes tests unpredictable); 0 when it
+ * is all lamp. */
+static int tile_level(const rl_image *img, const uint64_t *word, int x0, int y0, int x1, int y1)
 {
-    unsigned sum = 0, n = 0, sum_hi = 0, n_hi = 0;
+    uint64_t acc = 0;
+    unsigned sum, n, sum_hi, n_hi;
     int x, y;
     for (y = y0; y < y1; y += 4) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
-        for (x = x0; x < x1; x += 8) {
-            unsigned v = row[x], m = v < (unsigned)light, h = m & (v >= (unsigned)thr);
-            sum += v * m;
-            n += m;
-            sum_hi += v * h;
-            n_hi += h;
-        }
+        for (x = x0; x < x1; x += 8)
+            acc += word[row[x]];
     }
+    n = (unsigned)(acc >> N_SHIFT) & FIELD_MASK;
+    n_hi = (unsigned)(acc >> NHI_SHIFT) & FIELD_MASK;
+    sum = (unsigned)(acc >> SUM_SHIFT) & FIELD_MASK;
+    sum_hi = (unsigned)acc & FIELD_MASK;
     if (n < 3)
         return 0;
     return (int)(4 * n_hi >= n ? sum_hi / n_hi : sum / n);
@@ -97,12 +127,14 @@ void rl_illum_measure(rl_illum *il, const rl_image *img, const rl_levels *lv)
 {
     int tx, ty, T = il->tile;
     double ref;
+    uint64_t word[256];
+    illum_words(word, lv->threshold, lv->light);
     for (ty = 0; ty < il->ny; ty++)
         for (tx = 0; tx < il->nx; tx++) {
             int x1 = (tx + 1) * T < img->width ? (tx + 1) * T : img->width;
             int y1 = (ty + 1) * T < img->height ? (ty + 1) * T : img->height;
             il->level[ty * il->nx + tx] =
-                (uint8_t)tile_level(img, tx * T, ty * T, x1, y1, lv->threshold, lv->light);
+                (uint8_t)tile_level(img, word, tx * T, ty * T, x1, y1);
         }
     /* the threshold follows the light: the same fraction of the local
      * level as the frame's threshold is of its background */

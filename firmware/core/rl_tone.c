@@ -26,9 +26,18 @@ double rl_tone_light(const rl_tone *t, double grey)
 
 int rl_tone_midway(const rl_tone *t, double g0, double g1)
 {
+    /* the first v under 255 whose light at v + 0.5 reaches mid, else 255:
+     * a curve's light never falls as the grey level rises (rl_tone_init's
+     * powers), so it is found by halving [lo, hi], where every v under lo
+     * stays under mid and hi is the answer or 255 */
     double mid = 0.5 * (rl_tone_light(t, g0) + rl_tone_light(t, g1));
-    int v;
-    for (v = 0; v < 255 && rl_tone_light(t, v + 0.5) < mid; v++)
-        ;
-    return v;
+    int lo = 0, hi = 255;
+    while (lo < hi) {
+        int v = (lo + hi) / 2;
+        if (rl_tone_light(t, v + 0.5) < mid)
+            lo = v + 1;
+        else
+            hi = v;
+    }
+    return lo;
 }

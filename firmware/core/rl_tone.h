@@ -48,7 +48,8 @@ double rl_tone_light(const rl_tone *t, double grey);
 /* The grey level where light is halfway between that of grey levels g0
  * and g1: the threshold that splits a blurred edge between them where a
  * symmetric blur leaves the printed edge (pixels below it are the darker
- * side). */
+ * side). Found by halving: t's light must never fall as the grey level
+ * rises (true of every curve rl_tone_init makes with a gamma over 0). */
 int rl_tone_midway(const rl_tone *t, double g0, double g1);
 
 #endif
