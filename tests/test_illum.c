@@ -49,6 +49,10 @@ static void test_tile_levels_by_hand(void **state)
     draw_tile(6, a); /* 3 of 12 over it, a quarter: 150 */
     for (k = 0; k < 32; k++) a[k] = k < 3 ? 150 : k < 13 ? 60 : 245;
     draw_tile(7, a); /* 3 of 13: all, (3 x 150 + 10 x 60) / 13 = 80.8 */
+    for (k = 0; k < 32; k++) a[k] = k % 2 ? 100 : 50;
+    draw_tile(9, a); /* 16 exactly at the threshold count over it: 100 (75 if not) */
+    for (k = 0; k < 32; k++) a[k] = k % 2 ? 240 : 200;
+    draw_tile(10, a); /* 16 exactly at the lamp level are lamps: 200 (220 if not) */
     rl_ws_init(&ws, wsmem, sizeof wsmem);
     assert_int_equal(rl_illum_init(&il, &ws, W, H), RL_OK);
     assert_int_equal(il.tile, 32);
@@ -62,9 +66,11 @@ static void test_tile_levels_by_hand(void **state)
     assert_int_equal(il.level[6], 150);
     assert_int_equal(il.level[7], 80);
     assert_int_equal(il.level[8], 0); /* black, under the threshold: all, 0 */
+    assert_int_equal(il.level[9], 100);
+    assert_int_equal(il.level[10], 200);
 }
 
-/* The largest tiles (64 px, frames 1792 px wide and more) hold 128
+/* The largest tiles (64 px, frames 896 px wide and more) hold 128
  * samples: their counts and sums at the brightest level that is no lamp. */
 #define WL 1792
 #define HL 64

@@ -9,10 +9,10 @@
 /* The definition, scanned level by level. */
 static int midway_scan(const rl_tone *t, int g0, int g1)
 {
-    double mid = 0.5 * ((double)t->light[g0] + (double)t->light[g1]);
+    double mid = 0.5 * (rl_tone_light(t, g0) + rl_tone_light(t, g1));
     int v;
     for (v = 0; v < 255; v++)
-        if ((double)t->light[v] + 0.5 * ((double)t->light[v + 1] - (double)t->light[v]) >= mid)
+        if (!(rl_tone_light(t, v + 0.5) < mid))
             return v;
     return 255;
 }

@@ -40,15 +40,18 @@ rl_err rl_illum_init(rl_illum *il, rl_ws *ws, int W, int H)
  * threshold (n_hi), its level when no lamp (sum), its level when both
  * (sum_hi), 16 bits each. A tile has at most 16 x 8 samples (64 px
  * tiles: every fourth row, every eighth column), so n and n_hi stay
- * under 256 and the sums under 128 x 255 < 2^16: no field carries into
+ * under 256 and the sums at most 128 x 255 = 32640 < 2^16: no field carries into
  * the next, and the word's sums are the four plain sums. */
 #define FIELD 16
 #define N_SHIFT (3 * FIELD)
 #define NHI_SHIFT (2 * FIELD)
 #define SUM_SHIFT FIELD
 #define FIELD_MASK 0xffffu
-#if RL_ILLUM_MAX_TILE > 64
-#error "rl_illum packs a tile's sums in 16 bits: at most 64 px tiles"
+/* A tile's samples: every ROW_STEP-th row, every COL_STEP-th column. */
+#define ROW_STEP 4
+#define COL_STEP 8
+#if (RL_ILLUM_MAX_TILE / ROW_STEP) * (RL_ILLUM_MAX_TILE / COL_STEP) * 255 > 0xffff
+#error "rl_illum packs a tile's sums in 16 bits: too many samples a tile"
 #endif
 
 /* Each grey level's packed sample word under thr and light. */
@@ -73,9 +76,9 @@ static int tile_level(const rl_image *img, const uint64_t *word, int x0, int y0,
     uint64_t acc = 0;
     unsigned sum, n, sum_hi, n_hi;
     int x, y;
-    for (y = y0; y < y1; y += 4) {
+    for (y = y0; y < y1; y += ROW_STEP) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
-        for (x = x0; x < x1; x += 8)
+        for (x = x0; x < x1; x += COL_STEP)
             acc += word[row[x]];
     }
     n = (unsigned)(acc >> N_SHIFT) & FIELD_MASK;
