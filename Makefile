@@ -32,6 +32,12 @@ BUILD      ?= build
 BUILD_ASAN ?= build-asan
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
+# CMake's generator for a build folder it has not configured yet: Ninja where
+# it is installed (Debian's ninja-build; the host build in two thirds of the
+# Makefiles' wall time, docs/results.md "CI's time"), else CMake's default. A
+# folder already configured keeps its generator (CMake refuses to change it).
+# Shell code, run when the recipe's line runs: $(call GEN,DIR)
+GEN = $$([ -f $(1)/CMakeCache.txt ] || ! command -v ninja >/dev/null 2>&1 || echo -G Ninja)
 
 .PHONY: all deps host host-test host-test-asan bench bench-real demo fuzz soak sim clean
 
@@ -45,7 +51,7 @@ AMRISIM  ?=
 ARIA_DIR ?=
 
 sim: deps
-	@if [ -n "$(ARIA_DIR)" ]; then cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	@if [ -n "$(ARIA_DIR)" ]; then cmake -S . -B $(BUILD) $(call GEN,$(BUILD)) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DARIA_DIR=$(abspath $(ARIA_DIR)) $(CMAKE_ARGS) > /dev/null; \
 	  else $(MAKE) --no-print-directory $(BUILD)/CMakeCache.txt; fi
 	cmake --build $(BUILD) -j $(JOBS) --target ringloc ringloc-render ringloc-fw ringloc-sim-line ringloc-sim-report
@@ -71,7 +77,8 @@ soak: host
 # Fuzzing: each target FUZZ_SECONDS under ASan + UBSan, and the targets
 # without libpng and libyaml under MSan too, JOBS at a time
 # (tools/fuzz.sh); a crash stops the run and leaves its input beside the
-# target as crash-NAME-*.
+# target as crash-NAME-*. Each tree builds its targets and what they link,
+# not the firmware's programs and libraries they do not use.
 BUILD_FUZZ        ?= build-fuzz
 BUILD_FUZZ_MSAN   ?= build-fuzz-msan
 FUZZ_SECONDS      ?= 60
@@ -80,12 +87,12 @@ FUZZ_MSAN_TARGETS ?= recog pose packet place http
 
 fuzz:
 	@sh tools/deps.sh fuzz
-	cmake -S . -B $(BUILD_FUZZ) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+	cmake -S . -B $(BUILD_FUZZ) $(call GEN,$(BUILD_FUZZ)) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
 	  -DRL_FUZZ=ON -DCMAKE_BUILD_TYPE=Debug $(CMAKE_ARGS)
-	cmake --build $(BUILD_FUZZ) -j $(JOBS)
-	cmake -S . -B $(BUILD_FUZZ_MSAN) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+	cmake --build $(BUILD_FUZZ) -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_TARGETS))
+	cmake -S . -B $(BUILD_FUZZ_MSAN) $(call GEN,$(BUILD_FUZZ_MSAN)) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
 	  -DRL_FUZZ=ON -DRL_FUZZ_SANITIZE=memory -DCMAKE_BUILD_TYPE=Debug $(CMAKE_ARGS)
-	cmake --build $(BUILD_FUZZ_MSAN) -j $(JOBS)
+	cmake --build $(BUILD_FUZZ_MSAN) -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_MSAN_TARGETS))
 	sh tools/fuzz.sh $(FUZZ_SECONDS) $(JOBS) $(foreach t,$(FUZZ_TARGETS),$(BUILD_FUZZ):$(t)) \
 	  $(foreach t,$(FUZZ_MSAN_TARGETS),$(BUILD_FUZZ_MSAN):$(t))
 
@@ -98,7 +105,7 @@ TARGET      ?=
 
 cross:
 	@sh tools/deps.sh $(if $(filter host,$(BOARD)),host,cross)
-	cmake -S . -B $(BUILD_BOARD) -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/boards/$(BOARD)/toolchain.cmake \
+	cmake -S . -B $(BUILD_BOARD) $(call GEN,$(BUILD_BOARD)) -DCMAKE_TOOLCHAIN_FILE=$(CURDIR)/boards/$(BOARD)/toolchain.cmake \
 	  -DRL_BOARD=$(BOARD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
 	cmake --build $(BUILD_BOARD) -j $(JOBS)
 	cd $(BUILD_BOARD) && ctest --output-on-failure -j $(JOBS)
@@ -120,7 +127,7 @@ deps:
 	@sh tools/deps.sh
 
 $(BUILD)/CMakeCache.txt: | deps
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo $(CMAKE_ARGS)
+	cmake -S . -B $(BUILD) $(call GEN,$(BUILD)) -DCMAKE_BUILD_TYPE=RelWithDebInfo $(CMAKE_ARGS)
 
 host: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
@@ -133,7 +140,7 @@ host-test-asan:
 	@if [ -f $(BUILD_ASAN)/CMakeCache.txt ] && ! grep -q '^CMAKE_C_COMPILER:.*clang' $(BUILD_ASAN)/CMakeCache.txt; then \
 	  echo "host-test-asan: $(BUILD_ASAN) was configured for another compiler; starting it afresh with clang"; \
 	  rm -rf $(BUILD_ASAN); fi
-	cmake -S . -B $(BUILD_ASAN) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+	cmake -S . -B $(BUILD_ASAN) $(call GEN,$(BUILD_ASAN)) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
 	  -DCMAKE_BUILD_TYPE=Debug -DRL_SANITIZE=ON -DRL_NO_VECTOR_EXT=ON -DRL_FIXTURE_COUNT=12 $(CMAKE_ARGS)
 	cmake --build $(BUILD_ASAN) -j $(JOBS)
 	cd $(BUILD_ASAN) && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp ctest --output-on-failure -j $(JOBS)
