@@ -48,6 +48,7 @@ fuzzer() { printf 'int LLVMFuzzerTestOneInput(const unsigned char *d, unsigned l
 if [ "$profile" = fuzz ] || [ "$profile" = asan ]; then
     need_pkg cmake have cmake
     need_pkg make have make
+    need_pkg ninja-build have ninja # the Makefile's generator for new build folders
     need_pkg pkg-config have pkg-config
     need_pkg clang have clang
     need_pkg libclang-rt-dev fuzzer
@@ -59,6 +60,7 @@ fi
 if [ "$profile" != fuzz ]; then
     need_pkg cmake have cmake
     need_pkg make have make
+    need_pkg ninja-build have ninja
     need_pkg gcc have cc
     need_pkg g++ have c++
     need_pkg pkg-config have pkg-config
