@@ -41,7 +41,11 @@
  *       within 3% of the radius read; on the sanitizer build's frames
  *       (another renderer's floating point) its rank read kept a whole 11
  *       of isp_blur_s21 007 read as 3 from a circle 1.3 px off at 0.94 r,
- *       read about the read's centre, not its outer edge's. */
+ *       read about the read's centre, not its outer edge's; read as
+ *       linear, the search climbed from the arc of seed 42's border 018
+ *       cut 19 to a circle 1.2 times its radius, a third of a radius out
+ *       of the frame, where both formations read 7 (rl_twins.c,
+ *       cut_circle_on_edge). */
 #include "rl_test.h"
 #include <math.h>
 #include "fixture_eval.h"

@@ -19,7 +19,9 @@
  * chosen for no id, where the edge gives one near its circle) it leads
  * every id up to two zones away clearly, its lead through the frame's
  * curve clear too. A landmark too small for its twins to be
- * told apart at all (code zone 1 under RL_TWINS_MIN_ZONE_PX) gets no id.
+ * told apart at all (code zone 1 under RL_TWINS_MIN_ZONE_PX) gets no id,
+ * nor a cut local read whose circle the search took off its outer edge
+ * (RL_TWINS_CUT_BULGE).
  * What the twins came to is in the landmark's runner_up.
  *
  *   rl_twins_check(rec, &img, rl_tones_other(&rec->tones, rec->tone), &res);
@@ -84,6 +86,23 @@
  * read in its shape fits a circle at 0.4-0.6; the misreads the rule is for
  * fitted within 0.04). */
 #define RL_TWINS_UNFIT 0.2
+
+/* A local read of a landmark the border cuts whose circle passes outside
+ * the circle fitted to its outer edge (rl_edge_fit_rays from the read's
+ * circle) by more than this share of its radius, along some direction
+ * (the centres' distance plus the read's radius less the edge's), gets no
+ * id: twice the outer ring's width (0.2 R, docs/landmark-spec.md), so
+ * there the read puts its whole outer ring on the quiet zone round the
+ * landmark. A circle fitted to what is left of a cut ring fixes centre and
+ * radius loosely, and the local search can climb from it to a larger
+ * circle sharing the arc in the frame, where another id fits and both
+ * formations agree (a cut 19 read as 7 at gamma 1 from 1.19 of its radius,
+ * its centre a third of a radius out of the frame: 0.51-0.59 there); the
+ * right cut reads from every circle an edge fit could leave measured up to
+ * 0.35 (test_search_twins, docs/results.md). Judged only for a read whose
+ * radius is RL_TWINS_CUT_SIZE or more over the frame's other landmarks'
+ * (rl_twins.c, cut_circle_on_edge). */
+#define RL_TWINS_CUT_BULGE 0.4
 
 /* Code zone 1, the narrowest (next to the outer ring), narrower than this
  * many pixels: no id, whatever the reads (a landmark of ring5 under 14.2 px).
