@@ -9,7 +9,12 @@
  * 2.2, auto and 1. Judged by the renderer's truth: not one wrong id, per
  * id (the table names the ids that were), and the frames are read at all
  * (half the whole landmarks at 2.2, the renderer's curve: a set read as
- * nothing would pass the first test for nothing).
+ * nothing would pass the first test for nothing). Each frame is read
+ * twice, as the firmware reads (rl_recog_defaults) and as `detect` and
+ * `survey` read (band_radius: radii from the outer band's two edges),
+ * and must give the same ids at the same places both ways, and no wrong
+ * one either way (a radius refined for the id read once let rl_twins
+ * keep a 24 read as its twin 16 at gamma 1: tests/frames/band_twin_000).
  */
 #include "rl_test.h"
 #include <math.h>
@@ -21,14 +26,40 @@ static const char *dir;
 static const double gammas[] = {2.2, 0.0, 1.0};
 #define N_GAMMAS 3
 
-/* Frame path (NAME.yaml) read at gamma by a recognizer of its own. */
-static void first_frame(const char *yaml, double gamma, eval_counts *c, int *wrong_per_id)
+/* img read at gamma by a recognizer of its own, band radii or not. */
+static void read_first(const rl_image *img, double gamma, int band, rl_result *res)
 {
-    static rl_result res;
-    char png[1024], err[512];
-    const char *slash = strrchr(yaml, '/');
     rl_recog_config cfg;
     rl_heap_recog hr;
+    rl_recog_defaults(&cfg);
+    cfg.gamma = gamma;
+    cfg.band_radius = band;
+    rl_heap_recog_init(&hr, &cfg);
+    assert_int_equal(rl_heap_recog_run(&hr, img, res), RL_OK);
+    rl_heap_recog_free(&hr);
+}
+
+/* The same landmarks (ids, centres) in a and b; fails naming the frame. */
+static void same_ids(const char *image, double gamma, const rl_result *a, const rl_result *b)
+{
+    int i;
+    if (a->n_landmarks != b->n_landmarks)
+        fail_msg("%s at gamma %g: %d landmarks, %d with band radii", image, gamma, a->n_landmarks, b->n_landmarks);
+    for (i = 0; i < a->n_landmarks; i++)
+        if (a->landmarks[i].id != b->landmarks[i].id || a->landmarks[i].u != b->landmarks[i].u ||
+            a->landmarks[i].v != b->landmarks[i].v)
+            fail_msg("%s at gamma %g: landmark %d is %d at (%.2f, %.2f), with band radii %d at (%.2f, %.2f)", image,
+                     gamma, i, a->landmarks[i].id, a->landmarks[i].u, a->landmarks[i].v, b->landmarks[i].id,
+                     b->landmarks[i].u, b->landmarks[i].v);
+}
+
+/* Frame path (NAME.yaml) read at gamma by a recognizer of its own, as the
+ * firmware and as detect read it. */
+static void first_frame(const char *yaml, double gamma, eval_counts *c, int *wrong_per_id)
+{
+    static rl_result res, plain;
+    char png[1024], err[512];
+    const char *slash = strrchr(yaml, '/');
     rl_image img;
     truth t;
     int before = c->wrong_id, i, j;
@@ -36,12 +67,10 @@ static void first_frame(const char *yaml, double gamma, eval_counts *c, int *wro
     snprintf(png, sizeof png, "%.*s%s", slash ? (int)(slash - yaml + 1) : 0, yaml, t.image);
     if (rl_png_read_gray(png, &img, err, sizeof err) != RL_OK)
         fail_msg("%s", err);
-    rl_recog_defaults(&cfg);
-    cfg.gamma = gamma;
-    rl_heap_recog_init(&hr, &cfg);
-    assert_int_equal(rl_heap_recog_run(&hr, &img, &res), RL_OK);
-    rl_heap_recog_free(&hr);
+    read_first(&img, gamma, 0, &plain);
+    read_first(&img, gamma, 1, &res);
     rl_png_free(&img);
+    same_ids(t.image, gamma, &plain, &res);
     eval_frame(&t, &res, c, 0);
     if (c->wrong_id == before)
         return;

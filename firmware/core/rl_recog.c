@@ -12,6 +12,7 @@
 #include "rl_light.h"
 #include "rl_local.h"
 #include "rl_recog_state.h"
+#include "rl_refine.h"
 #include "rl_result.h"
 #include "rl_speck.h"
 #include "rl_twins.h"
@@ -304,6 +305,18 @@ static int local_wanted(const rl_recog_config *cfg, const rl_result *res)
            (cfg->local == RL_LOCAL_AUTO && res->n_landmarks < cfg->need);
 }
 
+/* Each whole landmark the global pass read from a round region gets its
+ * radius from both edges of its outer band (rl_recog_config.band_radius). */
+static void band_radii(const rl_recog *rec, const rl_image *img, rl_result *res)
+{
+    int i;
+    for (i = 0; i < res->n_landmarks; i++) {
+        rl_detection *d = &res->landmarks[i];
+        if (d->round)
+            rl_refine_radius_band(img, rec->tone, &rec->cfg.family, d->id, d->u, d->v, &d->radius);
+    }
+}
+
 /* The frame through the stages of rl_stage.h, in their order; each
  * announced to the configuration's hook as it begins. */
 static rl_err run_stages(rl_recog *rec, const rl_image *img, rl_result *res)
@@ -359,8 +372,12 @@ static rl_err run_stages(rl_recog *rec, const rl_image *img, rl_result *res)
         rl_stage_enter(hook, RL_STAGE_TWINS);
         rl_twins_check(rec, img, rl_tones_other(&rec->tones, rec->tone), res);
     }
-    /* 6. the frame's landmarks: consistent sizes, in order */
+    /* 6. the frame's landmarks: consistent sizes, their band radii when
+     *    asked for (after every id is decided: no judgement sees them),
+     *    in order */
     rl_filter_size(res, rec->cfg.size_tolerance);
+    if (rec->cfg.band_radius)
+        band_radii(rec, img, res);
     rl_filter_sort(res);
     return RL_OK;
 }

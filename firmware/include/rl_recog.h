@@ -78,8 +78,9 @@ typedef struct {
                                0.5, RL_LOCAL_MIN_FIRST; -INFINITY: every one read on) */
     int band_radius;      /* 1: an identified whole landmark's radius from both edges of its
                              outer black band, which no blur or tone curve biases (a
-                             survey's scale; some 2-8% more time); 0 (default): from its
-                             outer edge (the pose does not use it) */
+                             survey's scale; some 2-8% more time), refined after every id
+                             is decided, so the ids are the default's; 0 (default): from
+                             its outer edge (the pose does not use it) */
     double gamma;         /* the camera's tone curve, grey = 255 (light / white)^(1 / gamma):
                              2.2 for the sRGB-like output of most cameras (V4L2,
                              libcamera, webcams), 1 for one that outputs linear light
@@ -106,13 +107,17 @@ typedef struct {
                            least lead the id held, over any other id through the frame's
                            curve and over its zone twins through the other image
                            formation (rl_recog_config.gamma); below score for every
-                           reported id */
+                           reported id but one whose zone twin reads within the
+                           tolerance rl_twins grants (at most 0.006 over) */
     rl_pass pass;       /* which pass identified it */
     int complete;       /* 0 if the image border cuts it */
     rl_box box;         /* outer ring's bounding box */
     double visible;     /* fraction of the disk inside the image */
     int best_id;        /* the id that read best, taken or not (-1: none read); an
                            unidentified candidate's says what it nearly was */
+    int round;          /* 1: read whole by the global pass from a round region, the
+                           reads rl_recog_config.band_radius refines once every id is
+                           decided */
 } rl_detection;
 
 /* What a compile-time limit (rl_config.h) left out of one frame's result. */
