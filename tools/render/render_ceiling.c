@@ -13,6 +13,11 @@
 #define TILE 0.70
 #define TBAR 0.80
 #define LIGHT 6.0
+/* the tiles' value noise, lattice cells per metre: their shading, their
+ * fissures and their pits (render_grid's coarse, fine, pits) */
+#define COARSE 20
+#define FINE 90
+#define PITS 300
 
 static apriltag_family_t *tagfam;
 static image_u8_t *tag_images[32];
@@ -46,7 +51,6 @@ static double floor_of(double u)
 
 static double tile_pattern(const render_scene *s, const render_grid *g, double X, double Y)
 {
-    const render_noise *nz = g->noise;
     double u = (X - s->tile_px) / s->tile, v = (Y - s->tile_py) / s->tile;
     double fu = (u - floor_of(u)) * s->tile, fv = (v - floor_of(v)) * s->tile;
     double bar = 0.012; /* half of a 24 mm T-bar */
@@ -57,9 +61,9 @@ static double tile_pattern(const render_scene *s, const render_grid *g, double X
     if (du < bar + 0.003 || dv < bar + 0.003)
         return 0.55; /* the shadow line along the bar */
     /* fissured mineral tile: fine noise and a few darker pits */
-    return TILE + 0.05 * (render_random_vnoise_in(&nz[1], X * 90, Y * 90) - 0.5) +
-           0.03 * (render_random_vnoise_in(&nz[0], X * 20, Y * 20) - 0.5) -
-           (render_random_vnoise_over(&nz[2], X * 300, Y * 300, 0.93) ? 0.15 : 0.0);
+    return TILE + 0.05 * (render_random_vnoise_in(&g->fine, X * FINE, Y * FINE) - 0.5) +
+           0.03 * (render_random_vnoise_in(&g->coarse, X * COARSE, Y * COARSE) - 0.5) -
+           (render_random_vnoise_over(&g->pits, X * PITS, Y * PITS, 0.93) ? 0.15 : 0.0);
 }
 
 /* The ceiling as bright as the scene says (darker or lighter than paper). */
@@ -290,17 +294,12 @@ static int list_objects(const render_scene *s, render_grid *g)
     return 0;
 }
 
-/* The tiles' noise lattices over the grid (tile_pattern's scales). */
-static int noise_tables(render_grid *g)
+/* One of the tiles' noise lattices over the grid, at scale k (cells per
+ * metre): 0, or -1 out of memory. */
+static int noise_table(const render_grid *g, double k, render_noise *t)
 {
-    static const double scale[3] = {20, 90, 300};
     double x1 = g->x0 + g->nx * RENDER_GRID_CELL, y1 = g->y0 + g->ny * RENDER_GRID_CELL;
-    int i;
-    for (i = 0; i < 3; i++)
-        if (render_random_noise_make(&g->noise[i], g->x0 * scale[i], g->y0 * scale[i], x1 * scale[i],
-                                     y1 * scale[i]) != 0)
-            return -1;
-    return 0;
+    return render_random_noise_make(t, g->x0 * k, g->y0 * k, x1 * k, y1 * k);
 }
 
 /* The grid's cells over view b widened by m (none where it would be
@@ -317,10 +316,14 @@ static void grid_cells(const double *b, double m, render_grid *g)
 
 int render_ceiling_grid(const render_scene *s, const double *b, double m, render_grid *g)
 {
-    memset(g->noise, 0, sizeof g->noise);
+    memset(&g->coarse, 0, sizeof g->coarse);
+    memset(&g->fine, 0, sizeof g->fine);
+    memset(&g->pits, 0, sizeof g->pits);
     g->at = NULL;
     grid_cells(b, m, g);
-    if (list_objects(s, g) != 0 || (g->nx > 0 && noise_tables(g) != 0)) {
+    if (list_objects(s, g) != 0 ||
+        (g->nx > 0 && (noise_table(g, COARSE, &g->coarse) != 0 || noise_table(g, FINE, &g->fine) != 0 ||
+                       noise_table(g, PITS, &g->pits) != 0))) {
         render_ceiling_grid_free(g);
         return -1;
     }
@@ -329,9 +332,9 @@ int render_ceiling_grid(const render_scene *s, const double *b, double m, render
 
 void render_ceiling_grid_free(render_grid *g)
 {
-    int i;
-    for (i = 0; i < 3; i++)
-        render_random_noise_free(&g->noise[i]);
+    render_random_noise_free(&g->coarse);
+    render_random_noise_free(&g->fine);
+    render_random_noise_free(&g->pits);
     free(g->at);
     g->at = NULL;
 }

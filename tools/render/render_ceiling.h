@@ -41,7 +41,8 @@ typedef struct {
      * nx * ny, outside the grid, lists them all */
     int cover[RENDER_GRID_CELLS + 1], glow[RENDER_GRID_CELLS + 1];
     render_grid_entry *at; /* malloc'ed */
-    render_noise noise[3]; /* the tiles' value noise at its three scales (coarse to fine) over the grid */
+    /* the tiles' value noise over the grid at its three scales: their shading, fissures and pits */
+    render_noise coarse, fine, pits;
 } render_grid;
 
 /* The AprilTag 36h11 bitmaps a twin scene draws: made once (0, or -1),
