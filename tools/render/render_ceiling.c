@@ -316,9 +316,7 @@ static void grid_cells(const double *b, double m, render_grid *g)
 
 int render_ceiling_grid(const render_scene *s, const double *b, double m, render_grid *g)
 {
-    memset(&g->coarse, 0, sizeof g->coarse);
-    memset(&g->fine, 0, sizeof g->fine);
-    memset(&g->pits, 0, sizeof g->pits);
+    free(g->at);
     g->at = NULL;
     grid_cells(b, m, g);
     if (list_objects(s, g) != 0 ||

@@ -9,7 +9,7 @@
  * objects, not all, and the tiles' value noise in its lattices' hashes
  * made once for the view: the picture is the same, bit for bit.
  *
- *   static render_grid g;                          // large: keep it static
+ *   static render_grid g;                          // large: keep it static (zeroed)
  *   double view[4] = {x0, y0, x1, y1};             // what the frame sees, m
  *   if (render_ceiling_grid(&s, view, 0.05, &g) == 0)
  *       use(render_ceiling_radiance(&s, &g, 1.0, 2.0));
@@ -51,8 +51,10 @@ typedef struct {
 int render_ceiling_tags_open(void);
 void render_ceiling_tags_close(void);
 
-/* The grid over view (x0, y0, x1, y1), widened by margin: 0, or -1 out of
- * memory (g holds nothing to free then). */
+/* The grid over view (x0, y0, x1, y1), widened by margin, in g zeroed or
+ * made before (its memory reused frame after frame; freed once, by
+ * render_ceiling_grid_free): 0, or -1 out of memory (g holds nothing to
+ * free then). */
 int render_ceiling_grid(const render_scene *s, const double *view, double margin, render_grid *g);
 void render_ceiling_grid_free(render_grid *g);
 
