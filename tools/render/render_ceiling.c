@@ -295,10 +295,15 @@ static int list_objects(const render_scene *s, render_grid *g)
 }
 
 /* One of the tiles' noise lattices over the grid, at scale k (cells per
- * metre): 0, or -1 out of memory. */
+ * metre); none without a grid (every look-up hashes: a frame's table is
+ * not left over the last frame's view): 0, or -1 out of memory. */
 static int noise_table(const render_grid *g, double k, render_noise *t)
 {
     double x1 = g->x0 + g->nx * RENDER_GRID_CELL, y1 = g->y0 + g->ny * RENDER_GRID_CELL;
+    if (g->nx == 0) {
+        render_random_noise_free(t);
+        return 0;
+    }
     return render_random_noise_make(t, g->x0 * k, g->y0 * k, x1 * k, y1 * k);
 }
 
@@ -319,9 +324,8 @@ int render_ceiling_grid(const render_scene *s, const double *b, double m, render
     free(g->at);
     g->at = NULL;
     grid_cells(b, m, g);
-    if (list_objects(s, g) != 0 ||
-        (g->nx > 0 && (noise_table(g, COARSE, &g->coarse) != 0 || noise_table(g, FINE, &g->fine) != 0 ||
-                       noise_table(g, PITS, &g->pits) != 0))) {
+    if (list_objects(s, g) != 0 || noise_table(g, COARSE, &g->coarse) != 0 || noise_table(g, FINE, &g->fine) != 0 ||
+        noise_table(g, PITS, &g->pits) != 0) {
         render_ceiling_grid_free(g);
         return -1;
     }
