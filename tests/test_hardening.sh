@@ -164,7 +164,7 @@ sed "s|backend: png, device: $T/frames.txt|backend: v4l2, device: /dev/videoRLTE
 
 # 8. lens models: an OpenCV fisheye calibration (fisheye_model: 1) reads as
 #    the fisheye model, and one without an image size loads with --size
-fish=$(dirname "$0")/fixtures/fisheye_opencv.yaml
+fish=$(dirname "$0")/frames/fisheye_opencv.yaml
 "$R" locate --camera "$fish" --map "$D/map.yaml" --robot "$D/robot.yaml" "$frame" >"$T/fish.json" 2>"$T/fish.err"; rc=$?
 [ $rc = 0 ] && grep -q '"pose": ' "$T/fish.json" && ok || bad "fisheye file: rc $rc: $(cat "$T/fish.err")"
 grep -v "^image_" "$fish" >"$T/nosize.yaml"

@@ -54,21 +54,6 @@ typedef uint8_t label_v16 __attribute__((vector_size(16)));
 #endif
 #endif
 
-/* Eight bytes, each 0 or with its low bit set, as eight bits (byte i:
- * bit i). */
-static uint64_t pack8(const uint8_t *in)
-{
-    uint64_t w = 0;
-#if defined(__GNUC__) && defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-    memcpy(&w, in, sizeof w);
-#else
-    int i;
-    for (i = 7; i >= 0; i--)
-        w = w << 8 | in[i];
-#endif
-    return (w & ONES) * PACK_BITS >> 56;
-}
-
 static int trailing_zeros(uint64_t w) /* w != 0 */
 {
 #if defined(__GNUC__)
@@ -145,35 +130,33 @@ static int chunk_under(const uint8_t *row, int lo)
 #endif
 }
 
-/* Bit i set when lo <= row[i] < lo + span[i], for i < n <= CHUNK; the
- * `before` bytes before row and span are theirs too (a row's earlier
- * chunks). */
-static uint64_t chunk_bits(const uint8_t *row, const uint8_t *span, int lo, int n, int before)
+#ifndef LABEL_MOVEMASK
+/* Eight bytes, each 0 or with its low bit set, as eight bits (byte i:
+ * bit i). */
+static uint64_t pack8(const uint8_t *in)
+{
+    uint64_t w = 0;
+#if defined(__GNUC__) && defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    memcpy(&w, in, sizeof w);
+#else
+    int i;
+    for (i = 7; i >= 0; i--)
+        w = w << 8 | in[i];
+#endif
+    return (w & ONES) * PACK_BITS >> 56;
+}
+
+/* chunk_bits of a whole chunk: each pixel's test as a byte (16 at once
+ * in vectors), the bytes packed eight at a time. */
+static uint64_t whole_chunk_bits(const uint8_t *row, const uint8_t *span, int lo)
 {
     uint8_t in[CHUNK];
     uint64_t bits = 0;
-    int i = 0;
-#ifdef LABEL_MOVEMASK
-    uint8_t rs[2][CHUNK];
-    if (n == CHUNK)
-        return whole_chunk_bits(row, span, lo);
-    /* a row's last, short chunk (a window's: 13 of a 77 px one): the
-     * whole chunk that ends with it, its bits shifted down, where the row
-     * is that long; else copied out, its pad's band empty (span 0: no
-     * bit) */
-    if (before >= CHUNK - n)
-        return whole_chunk_bits(row - (CHUNK - n), span - (CHUNK - n), lo) >> (CHUNK - n);
-    memcpy(rs[0], row, (size_t)n);
-    memcpy(rs[1], span, (size_t)n);
-    memset(rs[0] + n, 0, (size_t)(CHUNK - n));
-    memset(rs[1] + n, 0, (size_t)(CHUNK - n));
-    return whole_chunk_bits(rs[0], rs[1], lo);
-#endif
-    (void)before;
+    int i;
 #ifdef LABEL_VECTORS
     label_v16 any = {0};
     uint64_t half[2];
-    for (; i + 16 <= n; i += 16) {
+    for (i = 0; i < CHUNK; i += 16) {
         label_v16 v, sp, m;
         memcpy(&v, row + i, sizeof v);
         memcpy(&sp, span + i, sizeof sp);
@@ -182,16 +165,36 @@ static uint64_t chunk_bits(const uint8_t *row, const uint8_t *span, int lo, int 
         any |= m;
     }
     memcpy(half, &any, sizeof half);
-    if (i == CHUNK && (half[0] | half[1]) == 0)
+    if ((half[0] | half[1]) == 0)
         return 0; /* most of a ceiling: no pixel in the band */
-#endif
-    for (; i < n && i < CHUNK; i++) /* n <= CHUNK: said for GCC's bounds warning on aarch64 */
+#else
+    for (i = 0; i < CHUNK; i++)
         in[i] = (uint8_t)(row[i] - lo) < span[i];
-    for (; i < CHUNK; i++)
-        in[i] = 0;
+#endif
     for (i = 0; i < CHUNK; i += 8)
         bits |= pack8(in + i) << i;
     return bits;
+}
+#endif
+
+/* Bit i set when lo <= row[i] < lo + span[i], for i < n <= CHUNK; the
+ * `before` bytes before row and span are theirs too (a row's earlier
+ * chunks). Only whole chunks are tested (whole_chunk_bits, one form per
+ * target): a row's last, short chunk (a window's: 13 of a 77 px one) is
+ * the whole chunk that ends with it, its bits shifted down, where the row
+ * is that long; else copied out, its pad's band empty (span 0: no bit). */
+static uint64_t chunk_bits(const uint8_t *row, const uint8_t *span, int lo, int n, int before)
+{
+    uint8_t rs[2][CHUNK];
+    if (n == CHUNK)
+        return whole_chunk_bits(row, span, lo);
+    if (before >= CHUNK - n)
+        return whole_chunk_bits(row - (CHUNK - n), span - (CHUNK - n), lo) >> (CHUNK - n);
+    memcpy(rs[0], row, (size_t)n);
+    memcpy(rs[1], span, (size_t)n);
+    memset(rs[0] + n, 0, (size_t)(CHUNK - n));
+    memset(rs[1] + n, 0, (size_t)(CHUNK - n));
+    return whole_chunk_bits(rs[0], rs[1], lo);
 }
 
 static int32_t find(int32_t *p, int32_t a)

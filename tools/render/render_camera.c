@@ -96,6 +96,7 @@ void render_camera_shutter(render_scene *s, const render_mount *m, double yaw, d
 
 /* Undistorted rays of every subsample, cached per camera. */
 static double *ray_table;
+static render_grid grid; /* remade each frame in its own memory */
 static rl_calib ray_cam;
 
 static int build_rays(const rl_calib *cam)
@@ -222,7 +223,6 @@ int render_camera_frame(const render_scene *s, uint8_t *out)
     double *lin = malloc(sizeof(double) * (size_t)W * H);
     static int low[RENDER_MAX_OBJ], box[RENDER_MAX_OBJ][4], here[RENDER_MAX_OBJ];
     double rmax = sqrt(s->cam.cx * s->cam.cx + s->cam.cy * s->cam.cy);
-    static render_grid grid;
     render_rng rng = {rng_normal, rng_uniform};
     /* motion blur: each subsample at its own instant, the camera moved
      * and turned (about its axis) by then */
@@ -263,7 +263,6 @@ int render_camera_frame(const render_scene *s, uint8_t *out)
     }
     e = render_sensor_develop(&s->se, lin, W, H, &rng, out);
     free(lin);
-    render_ceiling_grid_free(&grid);
     return e;
 }
 
@@ -271,4 +270,5 @@ void render_camera_free(void)
 {
     free(ray_table);
     ray_table = NULL;
+    render_ceiling_grid_free(&grid);
 }

@@ -13,6 +13,11 @@
 #define TILE 0.70
 #define TBAR 0.80
 #define LIGHT 6.0
+/* the tiles' value noise, lattice cells per metre: their shading, their
+ * fissures and their pits (render_grid's coarse, fine, pits) */
+#define COARSE 20
+#define FINE 90
+#define PITS 300
 
 static apriltag_family_t *tagfam;
 static image_u8_t *tag_images[32];
@@ -46,7 +51,6 @@ static double floor_of(double u)
 
 static double tile_pattern(const render_scene *s, const render_grid *g, double X, double Y)
 {
-    const render_noise *nz = g->noise;
     double u = (X - s->tile_px) / s->tile, v = (Y - s->tile_py) / s->tile;
     double fu = (u - floor_of(u)) * s->tile, fv = (v - floor_of(v)) * s->tile;
     double bar = 0.012; /* half of a 24 mm T-bar */
@@ -57,9 +61,9 @@ static double tile_pattern(const render_scene *s, const render_grid *g, double X
     if (du < bar + 0.003 || dv < bar + 0.003)
         return 0.55; /* the shadow line along the bar */
     /* fissured mineral tile: fine noise and a few darker pits */
-    return TILE + 0.05 * (render_random_vnoise_in(&nz[1], X * 90, Y * 90) - 0.5) +
-           0.03 * (render_random_vnoise_in(&nz[0], X * 20, Y * 20) - 0.5) -
-           (render_random_vnoise_over(&nz[2], X * 300, Y * 300, 0.93) ? 0.15 : 0.0);
+    return TILE + 0.05 * (render_random_vnoise_in(&g->fine, X * FINE, Y * FINE) - 0.5) +
+           0.03 * (render_random_vnoise_in(&g->coarse, X * COARSE, Y * COARSE) - 0.5) -
+           (render_random_vnoise_over(&g->pits, X * PITS, Y * PITS, 0.93) ? 0.15 : 0.0);
 }
 
 /* The ceiling as bright as the scene says (darker or lighter than paper). */
@@ -207,11 +211,22 @@ static void cells_near(const render_grid *g, double x, double y, double e, int *
     r[3] = (int)fmin(g->ny - 1, floor((y + e - g->y0) * (1.0 / RENDER_GRID_CELL)));
 }
 
-/* Object o, reaching e, into the cells of one list (start: cover or
- * glow) within e of it and the cell outside the grid: counted (at NULL)
- * or written at fill[cell]. */
-static void list_object(const render_grid *g, const render_object *o, double e, int *start, int *fill,
-                        render_grid_entry *at)
+/* Object o, reaching e, counted in the cells of one list (start: cover
+ * or glow) within e of it and in the cell outside the grid: start[c + 1]
+ * counts cell c's entries. */
+static void count_object(const render_grid *g, const render_object *o, double e, int *start)
+{
+    int r[4], cx, cy, out = g->nx * g->ny;
+    cells_near(g, o->x, o->y, e, r);
+    for (cy = r[2]; cy <= r[3]; cy++)
+        for (cx = r[0]; cx <= r[1]; cx++)
+            start[cy * g->nx + cx + 1]++;
+    start[out + 1]++;
+}
+
+/* Object o, reaching e, written into the same cells as count_object's,
+ * each at the cell's next free place in g->at, next[c] (moved on). */
+static void place_object(render_grid *g, const render_object *o, double e, int *next)
 {
     int r[4], cx, cy, out = g->nx * g->ny;
     render_grid_entry en;
@@ -221,76 +236,96 @@ static void list_object(const render_grid *g, const render_object *o, double e, 
     en.o = o;
     cells_near(g, o->x, o->y, e, r);
     for (cy = r[2]; cy <= r[3]; cy++)
-        for (cx = r[0]; cx <= r[1]; cx++) {
-            if (at)
-                at[fill[cy * g->nx + cx]++] = en;
-            else
-                start[cy * g->nx + cx + 1]++;
-        }
-    if (at)
-        at[fill[out]++] = en;
-    else
-        start[out + 1]++;
+        for (cx = r[0]; cx <= r[1]; cx++)
+            g->at[next[cy * g->nx + cx]++] = en;
+    g->at[next[out]++] = en;
 }
 
-/* Every object on the ceiling into the cells it can cover (its reach, 1.5
- * times its size) and every light into those its halo can reach, in the
- * scene's order: counted, or written. */
-static void list_objects(const render_scene *s, render_grid *g, int *fill_cover, int *fill_glow, render_grid_entry *at)
+/* How far object o reaches on the ceiling (1.5 times its size), and a
+ * light's halo (glow, else -1): 0, or -1 where it hangs below the ceiling
+ * (render_ceiling_object) and is listed nowhere. */
+static int object_reach(const render_scene *s, const render_object *o, double *cover, double *glow)
 {
-    int i;
-    for (i = 0; i < s->n; i++) {
-        const render_object *o = &s->obj[i];
-        double reach = o->a > o->b ? o->a : o->b;
-        if (o->drop > 0)
-            continue; /* hangs below the ceiling: render_ceiling_object */
-        list_object(g, o, reach * 1.5, g->cover, fill_cover, at);
-        if (o->kind == RENDER_OBJ_LIGHT || o->kind == RENDER_OBJ_DOWNLIGHT)
-            list_object(g, o, reach + 8 * s->halo_sigma, g->glow, fill_glow, at);
-    }
-}
-
-/* The tiles' noise lattices over the grid (tile_pattern's scales). */
-static int noise_tables(render_grid *g)
-{
-    static const double scale[3] = {20, 90, 300};
-    double x1 = g->x0 + g->nx * RENDER_GRID_CELL, y1 = g->y0 + g->ny * RENDER_GRID_CELL;
-    int i;
-    for (i = 0; i < 3; i++)
-        if (render_random_noise_make(&g->noise[i], g->x0 * scale[i], g->y0 * scale[i], x1 * scale[i],
-                                     y1 * scale[i]) != 0)
-            return -1;
+    double reach = o->a > o->b ? o->a : o->b;
+    if (o->drop > 0)
+        return -1;
+    *cover = reach * 1.5;
+    *glow = o->kind == RENDER_OBJ_LIGHT || o->kind == RENDER_OBJ_DOWNLIGHT ? reach + 8 * s->halo_sigma : -1;
     return 0;
 }
 
-int render_ceiling_grid(const render_scene *s, const double *b, double m, render_grid *g)
+/* The cells' lists, in the scene's order: every object on the ceiling
+ * in the cells it can cover and every light in those its halo can reach,
+ * counted, their places in g->at laid out (the covers, then the glows)
+ * and written. g->cover and g->glow are the write positions while they
+ * are written (each cell's moves to its end, the next cell's start), then
+ * moved up a cell back to the starts: no scratch. 0, or -1 out of memory. */
+static int list_objects(const render_scene *s, render_grid *g)
 {
-    static int fill_cover[RENDER_GRID_CELLS], fill_glow[RENDER_GRID_CELLS];
-    int i, n;
-    memset(g->noise, 0, sizeof g->noise);
-    g->at = NULL;
-    g->x0 = b[0] - m;
-    g->y0 = b[1] - m;
-    g->nx = (int)ceil((b[2] + m - g->x0) / RENDER_GRID_CELL);
-    g->ny = (int)ceil((b[3] + m - g->y0) / RENDER_GRID_CELL);
-    if (!(g->nx > 0 && g->ny > 0 && g->nx <= RENDER_GRID_MAX && g->ny <= RENDER_GRID_MAX))
-        g->nx = g->ny = 0; /* every sample in the cell outside the grid */
-    n = g->nx * g->ny + 1;
-    /* counted, then filled in the scene's order: the covers, then the glows */
+    int i, n = g->nx * g->ny + 1;
+    double cover, glow;
     memset(g->cover, 0, sizeof(int) * (size_t)(n + 1));
     memset(g->glow, 0, sizeof(int) * (size_t)(n + 1));
-    list_objects(s, g, NULL, NULL, NULL);
+    for (i = 0; i < s->n; i++)
+        if (object_reach(s, &s->obj[i], &cover, &glow) == 0) {
+            count_object(g, &s->obj[i], cover, g->cover);
+            if (glow >= 0)
+                count_object(g, &s->obj[i], glow, g->glow);
+        }
     for (i = 0; i < n; i++)
         g->cover[i + 1] += g->cover[i];
     g->glow[0] = g->cover[n];
     for (i = 0; i < n; i++)
         g->glow[i + 1] += g->glow[i];
-    memcpy(fill_cover, g->cover, sizeof(int) * (size_t)n);
-    memcpy(fill_glow, g->glow, sizeof(int) * (size_t)n);
     if ((g->at = malloc(sizeof *g->at * (size_t)(g->glow[n] + 1))) == NULL)
         return -1;
-    list_objects(s, g, fill_cover, fill_glow, g->at);
-    if (g->nx > 0 && noise_tables(g) != 0) {
+    for (i = 0; i < s->n; i++)
+        if (object_reach(s, &s->obj[i], &cover, &glow) == 0) {
+            place_object(g, &s->obj[i], cover, g->cover);
+            if (glow >= 0)
+                place_object(g, &s->obj[i], glow, g->glow);
+        }
+    /* cover[c] is now cell c's end, cover[c + 1]'s start; the covers end
+     * where the glows start */
+    memmove(g->cover + 1, g->cover, sizeof(int) * (size_t)n);
+    g->cover[0] = 0;
+    memmove(g->glow + 1, g->glow, sizeof(int) * (size_t)n);
+    g->glow[0] = g->cover[n];
+    return 0;
+}
+
+/* One of the tiles' noise lattices over the grid, at scale k (cells per
+ * metre); none without a grid (every look-up hashes: a frame's table is
+ * not left over the last frame's view): 0, or -1 out of memory. */
+static int noise_table(const render_grid *g, double k, render_noise *t)
+{
+    double x1 = g->x0 + g->nx * RENDER_GRID_CELL, y1 = g->y0 + g->ny * RENDER_GRID_CELL;
+    if (g->nx == 0) {
+        render_random_noise_free(t);
+        return 0;
+    }
+    return render_random_noise_make(t, g->x0 * k, g->y0 * k, x1 * k, y1 * k);
+}
+
+/* The grid's cells over view b widened by m (none where it would be
+ * too large: every sample in the cell outside it). */
+static void grid_cells(const double *b, double m, render_grid *g)
+{
+    g->x0 = b[0] - m;
+    g->y0 = b[1] - m;
+    g->nx = (int)ceil((b[2] + m - g->x0) / RENDER_GRID_CELL);
+    g->ny = (int)ceil((b[3] + m - g->y0) / RENDER_GRID_CELL);
+    if (!(g->nx > 0 && g->ny > 0 && g->nx <= RENDER_GRID_MAX && g->ny <= RENDER_GRID_MAX))
+        g->nx = g->ny = 0;
+}
+
+int render_ceiling_grid(const render_scene *s, const double *b, double m, render_grid *g)
+{
+    free(g->at);
+    g->at = NULL;
+    grid_cells(b, m, g);
+    if (list_objects(s, g) != 0 || noise_table(g, COARSE, &g->coarse) != 0 || noise_table(g, FINE, &g->fine) != 0 ||
+        noise_table(g, PITS, &g->pits) != 0) {
         render_ceiling_grid_free(g);
         return -1;
     }
@@ -299,9 +334,9 @@ int render_ceiling_grid(const render_scene *s, const double *b, double m, render
 
 void render_ceiling_grid_free(render_grid *g)
 {
-    int i;
-    for (i = 0; i < 3; i++)
-        render_random_noise_free(&g->noise[i]);
+    render_random_noise_free(&g->coarse);
+    render_random_noise_free(&g->fine);
+    render_random_noise_free(&g->pits);
     free(g->at);
     g->at = NULL;
 }

@@ -9,7 +9,7 @@
  * objects, not all, and the tiles' value noise in its lattices' hashes
  * made once for the view: the picture is the same, bit for bit.
  *
- *   static render_grid g;                          // large: keep it static
+ *   static render_grid g;                          // large: keep it static (zeroed)
  *   double view[4] = {x0, y0, x1, y1};             // what the frame sees, m
  *   if (render_ceiling_grid(&s, view, 0.05, &g) == 0)
  *       use(render_ceiling_radiance(&s, &g, 1.0, 2.0));
@@ -41,7 +41,8 @@ typedef struct {
      * nx * ny, outside the grid, lists them all */
     int cover[RENDER_GRID_CELLS + 1], glow[RENDER_GRID_CELLS + 1];
     render_grid_entry *at; /* malloc'ed */
-    render_noise noise[3]; /* the tiles' value noise at its three scales (coarse to fine) over the grid */
+    /* the tiles' value noise over the grid at its three scales: their shading, fissures and pits */
+    render_noise coarse, fine, pits;
 } render_grid;
 
 /* The AprilTag 36h11 bitmaps a twin scene draws: made once (0, or -1),
@@ -50,8 +51,10 @@ typedef struct {
 int render_ceiling_tags_open(void);
 void render_ceiling_tags_close(void);
 
-/* The grid over view (x0, y0, x1, y1), widened by margin: 0, or -1 out of
- * memory (g holds nothing to free then). */
+/* The grid over view (x0, y0, x1, y1), widened by margin, in g zeroed or
+ * made before (its memory reused frame after frame; freed once, by
+ * render_ceiling_grid_free): 0, or -1 out of memory (g holds nothing to
+ * free then). */
 int render_ceiling_grid(const render_scene *s, const double *view, double margin, render_grid *g);
 void render_ceiling_grid_free(render_grid *g);
 

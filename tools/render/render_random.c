@@ -57,13 +57,21 @@ double render_random_vnoise(double x, double y)
 
 int render_random_noise_make(render_noise *t, double x0, double y0, double x1, double y1)
 {
-    double ni = floor(x1) - floor(x0) + 2, nj = floor(y1) - floor(y0) + 2;
+    double ni = floor(x1) - floor(x0) + 2, nj = floor(y1) - floor(y0) + 2, *v = t->v;
+    size_t room = t->room;
     int a, b;
-    memset(t, 0, sizeof *t);
+    memset(t, 0, sizeof *t); /* holds none until made */
+    t->v = v;
+    t->room = room;
     if (!(ni > 0 && nj > 0 && ni * nj <= NOISE_MAX_POINTS && fabs(x0) < 1e9 && fabs(y0) < 1e9))
         return 0;
-    if ((t->v = malloc(sizeof *t->v * (size_t)(ni * nj))) == NULL)
-        return -1;
+    if ((size_t)(ni * nj) > t->room) {
+        free(t->v);
+        t->room = 0;
+        if ((t->v = malloc(sizeof *t->v * (size_t)(ni * nj))) == NULL)
+            return -1;
+        t->room = (size_t)(ni * nj);
+    }
     t->i0 = (int)floor(x0);
     t->j0 = (int)floor(y0);
     t->ni = (int)ni;

@@ -15,9 +15,11 @@
  *   double t = render_random_vnoise(x * 90, 0.5);
  *
  * A frame that samples the noise millions of times over one area hashes
- * its lattice there once (render_noise): the same values, looked up.
+ * its lattice there once (render_noise): the same values, looked up. A
+ * table made again keeps its memory where it is large enough (frame after
+ * frame), and is freed once.
  *
- *   render_noise nz;
+ *   render_noise nz = {0};
  *   if (render_random_noise_make(&nz, 0, 0, 300, 200) == 0) {  // lattice units
  *       double u = render_random_vnoise_in(&nz, 12.3, 45.6);  // = render_random_vnoise(12.3, 45.6)
  *       int hi = render_random_vnoise_over(&nz, 12.3, 45.6, 0.93);
@@ -51,12 +53,18 @@ double render_random_vnoise(double x, double y);
  * once for many look-ups. */
 typedef struct {
     int i0, j0, ni, nj; /* lattice points i0 .. i0 + ni - 1, j0 .. j0 + nj - 1 */
-    double lo[2], hi[2]; /* the (x, y) whose cells it holds: [lo, hi) */
+    /* the (x, y) whose cells it holds, [lo, hi): (i0, j0) and (i0 + ni - 1,
+     * j0 + nj - 1), kept as doubles for the look-up's test (from the ints
+     * there, a frame's render takes 3% more instructions) */
+    double lo[2], hi[2];
     double *v;           /* render_random_hash of each (row j - j0, column i - i0); malloc'ed */
+    size_t room;         /* values v has room for */
 } render_noise;
 
-/* Made: 0, or -1 (out of memory; t holds none). A rectangle too large
- * holds none either (0): every look-up then hashes. */
+/* Made, in t zeroed or made before (its memory reused where it has the
+ * room, else freed): 0, or -1 (out of memory; t holds none). A rectangle
+ * too large holds none either (0): every look-up then hashes. Freed once,
+ * by render_random_noise_free. */
 int render_random_noise_make(render_noise *t, double x0, double y0, double x1, double y1);
 void render_random_noise_free(render_noise *t);
 
