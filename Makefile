@@ -33,11 +33,13 @@ BUILD_ASAN ?= build-asan
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 # CMake's generator for a build folder it has not configured yet: Ninja where
-# it is installed (Debian's ninja-build; the host build in two thirds of the
+# it is installed (Debian's ninja-build, which tools/deps.sh installs as root;
+# the host build in two thirds of the
 # Makefiles' wall time, docs/results.md "CI's time"), else CMake's default. A
-# folder already configured keeps its generator (CMake refuses to change it).
+# folder already configured keeps its generator (CMake refuses to change it),
+# and a CMAKE_GENERATOR in the environment is CMake's to use.
 # Shell code, run when the recipe's line runs: $(call GEN,DIR)
-GEN = $$([ -f $(1)/CMakeCache.txt ] || ! command -v ninja >/dev/null 2>&1 || echo -G Ninja)
+GEN = $$([ -n "$$CMAKE_GENERATOR" ] || [ -f "$(1)/CMakeCache.txt" ] || ! command -v ninja >/dev/null 2>&1 || echo -G Ninja)
 
 .PHONY: all deps host host-test host-test-asan bench bench-real demo fuzz soak sim clean
 

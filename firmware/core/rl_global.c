@@ -81,7 +81,7 @@ void rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, c
                          rl_result_light_gap(res, &c->box) <= rec->cfg.near_light * d->radius, d, &m) &&
         !rl_inner_enclosed(img, frame->light, d->u, d->v, d->radius, 0.0)) {
         d->id = m.id;
-        d->round = d->complete && rl_shape_is_circle(&c->shape);
+        d->band_ready = rec->cfg.band_radius && d->complete && rl_shape_is_circle(&c->shape);
     }
     d->best_id = m.id; /* taken or not: an unread candidate's nearest id */
     d->score = m.score;

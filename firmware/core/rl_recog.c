@@ -312,7 +312,7 @@ static void band_radii(const rl_recog *rec, const rl_image *img, rl_result *res)
     int i;
     for (i = 0; i < res->n_landmarks; i++) {
         rl_detection *d = &res->landmarks[i];
-        if (d->round)
+        if (d->band_ready)
             rl_refine_radius_band(img, rec->tone, &rec->cfg.family, d->id, d->u, d->v, &d->radius);
     }
 }

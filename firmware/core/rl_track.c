@@ -229,6 +229,7 @@ static int read_box(const rl_recog *rec, const rl_image *img, const rl_result *r
     clr.box.y1 = (int)ceil(c->v + c->radius);
     clr.shape = rl_shape_circle();
     rl_global_read(rec, img, &clr, rec->tone, res, d);
+    d->band_ready = 0; /* a window's read takes no band radius (rl_recog_run's end does) */
     return d->id;
 }
 

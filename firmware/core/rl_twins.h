@@ -61,7 +61,8 @@
 #define RL_TWINS_CUT_TOLERANCE 0.0
 /* A cut landmark read through a curve whose radius is this far (a share)
  * from the frame's landmarks' is not decided by the rank read (rl_twins.c,
- * rank_fits). */
+ * rank_fits); a cut local read this much over them has its circle judged
+ * against its outer edge (cut_circle_on_edge, RL_TWINS_CUT_BULGE). */
 #define RL_TWINS_CUT_SIZE 0.05
 /* A landmark the formations disagree on keeps its id when its lead
  * through the frame's curve passes the rule above with no twin through

@@ -115,9 +115,10 @@ typedef struct {
     double visible;     /* fraction of the disk inside the image */
     int best_id;        /* the id that read best, taken or not (-1: none read); an
                            unidentified candidate's says what it nearly was */
-    int round;          /* 1: read whole by the global pass from a round region, the
-                           reads rl_recog_config.band_radius refines once every id is
-                           decided */
+    int band_ready;     /* internal: 1 for a whole global read from a round region
+                           when rl_recog_config.band_radius is set, whose radius
+                           rl_recog_run takes from the band once every id is decided
+                           (tracking's reads take none) */
 } rl_detection;
 
 /* What a compile-time limit (rl_config.h) left out of one frame's result. */
