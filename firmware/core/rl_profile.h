@@ -37,7 +37,7 @@ typedef struct {
 } rl_profile;
 
 /* Gather the pixels of img within RL_PROFILE_EXTENT * r of (cx, cy), their
- * darkness in light (tone->packed's, built from tone->dark once a curve). */
+ * darkness in light (tone->packed's low words). */
 void rl_profile_gather(const rl_image *img, const rl_tone *tone, double cx, double cy, double r,
                        rl_profile *p);
 

@@ -8,8 +8,8 @@ void rl_tone_init(rl_tone *t, double gamma)
     for (v = 0; v < 256; v++) {
         double l = RL_TONE_MAX * pow(v / 255.0, gamma);
         t->light[v] = (float)l;
-        t->dark[v] = (uint16_t)(RL_TONE_MAX - (int)(l + 0.5));
-        t->packed[v] = RL_TONE_PACK_COUNT + t->dark[v];
+        /* its darkness, RL_TONE_MAX - light rounded, in the low word */
+        t->packed[v] = RL_TONE_PACK_COUNT + (uint64_t)(RL_TONE_MAX - (int)(l + 0.5));
     }
 }
 

@@ -14,8 +14,8 @@
  * map keeps their order, and their thresholds are placed halfway in light.
  *
  *   rl_tone t;
- *   rl_tone_init(&t, 2.2);     // t.light[128] == 224.5, t.dark[128] == 798
- *                              // t.packed[128] == RL_TONE_PACK_COUNT + 798
+ *   rl_tone_init(&t, 2.2);     // t.light[128] == 224.5,
+ *                              // t.packed[128] == RL_TONE_PACK_COUNT + 798 (darkness 798)
  *   double span = rl_tone_light(&t, 180.0) - rl_tone_light(&t, 40.0);
  */
 #ifndef RL_TONE_H
@@ -31,14 +31,14 @@
 
 typedef struct {
     float light[256];   /* light of each grey level, 0 .. RL_TONE_MAX */
-    uint16_t dark[256]; /* RL_TONE_MAX - light, rounded: the darkness profiles sum */
-    uint64_t packed[256]; /* RL_TONE_PACK_COUNT + dark: one pixel's (count, darkness) in one
+    uint64_t packed[256]; /* RL_TONE_PACK_COUNT + darkness (RL_TONE_MAX - light, rounded,
+                             what the profiles sum): one pixel's (count, darkness) in one
                              word, what rl_profile adds into a bin (made once a curve,
                              not once a gather) */
 } rl_tone;
 
 /* The tables for a tone curve of exponent gamma (1: a linear camera),
- * all three. */
+ * both. */
 void rl_tone_init(rl_tone *t, double gamma);
 
 /* Light of a grey level between the table's entries (linear in between);
