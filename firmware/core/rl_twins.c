@@ -172,7 +172,11 @@ static int rank_keeps_at(const rl_recog *rec, const rl_image *img, const rl_tone
  * tone; light: the frame's light level) into (*cx, *cy): taken where its
  * radius is within EDGE_RADIUS of d's (the search reads 0.88 .. 1.06 of
  * a fitted one) and the centre within EDGE_REACH radii of d's (the same
- * landmark, not a neighbour's ring). 0 otherwise. */
+ * landmark, not a neighbour's ring). 0 otherwise. Not rl_verify.c's
+ * edge_centre: that one refits the visible part of the edge twice from a
+ * prediction next to the border (rl_edge_fit_rays, the radius within a
+ * tenth of the predicted); this one takes a whole read's own circle once
+ * and only where enough of the edge lies on it (rl_edge_fit_arc). */
 #define EDGE_RADIUS 0.2
 #define EDGE_REACH 0.25
 

@@ -95,7 +95,8 @@ static int settle_centre(const rl_image *img, const rl_levels *local, double r, 
  * outer edge's visible part (rl_edge_fit_rays, the local pass's fit: rays
  * that leave the frame give no point), fitted twice (the second from the
  * first's centre), taken when its radius is within EDGE_RADIUS of the
- * predicted one and it is within CENTRE_REACH radii of the prediction. */
+ * predicted one and it is within CENTRE_REACH radii of the prediction
+ * (rl_twins.c's edge_centre, on a whole read's circle, is another rule). */
 #define EDGE_NEAR 1.2
 #define EDGE_FITS 2
 #define EDGE_RADIUS 0.1
