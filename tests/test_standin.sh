@@ -5,7 +5,8 @@
 # turning 30 degrees a second, pose frames 10 a second arriving 100 ms
 # after capture, then again over a line with delays the frames do not
 # carry, a drifting and restarting camera board; the fused pose at every server information packet
-# against the stand-in's truth (a median within 20 mm: the frames and
+# against the stand-in's truth (no bias over 4 mm ahead or across, and a
+# median within 20 mm: the frames and
 # the odometry are stamped on arrival by processes that share the machine
 # with the build, so a loaded host's scheduling shows here; the fusion's
 # figures, 1 mm and 3 mm, are test_fuse_drive's, on simulated time).
@@ -18,6 +19,7 @@ C=$2
 T=$3
 A=${4:-}
 LIMIT=${RL_STANDIN_LIMIT_MM:-20}
+BIAS_LIMIT=${RL_STANDIN_BIAS_MM:-4}
 rm -rf "$T"
 mkdir -p "$T"
 fail=0
@@ -32,22 +34,41 @@ port=$((20000 + $$ % 20000))
 # packets it cannot move. A broken fusion moves them all: the odometry
 # alone is metres off, a frame put at its arrival (the latency ignored)
 # 100 mm at 1 m/s.
+# A bias of a few mm passes that median, so the signed errors' medians are
+# judged too, in the robot's frame: across the heading within BIAS_LIMIT
+# either way, and along it at most BIAS_LIMIT ahead of the truth. Load only
+# ever delays (a packet read late is stamped late: the pose lags), so
+# behind the truth only the median above bounds it: 8 runs beside two busy
+# loops at load 4-5 gave -0.4 .. -12.6 mm along, at most 0.33 mm across;
+# alone -0.5 .. +1.0 along. A capture time 10 ms early (a latency counted
+# twice) puts the pose 9-12 mm ahead: it fails here, not on the median.
 judge() { # LOG NAME LIMIT_MM [ARIA [FROM]]
-    awk -v name="$2" -v lim="$3" -v aria="${4:-}" -v from="${5:-3}" 'BEGIN { n = 0; i = 0 } NR == FNR { t[n] = $1; x[n] = $2; y[n] = $3; n++; next }
+    awk -v name="$2" -v lim="$3" -v blim="$BIAS_LIMIT" -v aria="${4:-}" -v from="${5:-3}" 'BEGIN { n = 0; i = 0 }
+        NR == FNR { t[n] = $1; x[n] = $2; y[n] = $3; w[n] = $4; n++; next }
         { while (i < n - 2 && t[i + 1] < $1) i++
           if (n < 2 || $1 < t[0] + from || $1 > t[n - 1]) next
           f = ($1 - t[i]) / (t[i + 1] - t[i]); tx = x[i] + f * (x[i + 1] - x[i]); ty = y[i] + f * (y[i + 1] - y[i])
-          e = ($2 - tx)^2 + ($3 - ty)^2; s += e; if (e > mx) mx = e; ef[m] = e; m++
-          if (aria) { e = ($5 - tx)^2 + ($6 - ty)^2; sa += e; ea[m - 1] = e } }
-        function median(a, k, j, v) { # a[0..m-1] sorted in place (m is small); its median in mm
+          c = cos(w[i]); sn = sin(w[i])
+          e = ($2 - tx)^2 + ($3 - ty)^2; s += e; if (e > mx) mx = e; ef[m] = e
+          al[m] = c * ($2 - tx) + sn * ($3 - ty); cr[m] = c * ($3 - ty) - sn * ($2 - tx); m++
+          if (aria) { e = ($5 - tx)^2 + ($6 - ty)^2; sa += e; ea[m - 1] = e
+                      ala[m - 1] = c * ($5 - tx) + sn * ($6 - ty); cra[m - 1] = c * ($6 - ty) - sn * ($5 - tx) } }
+        function med(a, k, j, v) { # a[0..m-1] sorted in place (m is small); its median
             for (k = 1; k < m; k++) { v = a[k]; for (j = k - 1; j >= 0 && a[j] > v; j--) a[j + 1] = a[j]; a[j + 1] = v }
-            return 1000 * sqrt(m % 2 ? a[(m - 1) / 2] : (a[m / 2 - 1] + a[m / 2]) / 2) }
+            return m % 2 ? a[(m - 1) / 2] : (a[m / 2 - 1] + a[m / 2]) / 2 }
+        function abs(v) { return v < 0 ? -v : v }
         END { if (m < 25) { print "FAIL: " name ": " m + 0 " packets judged"; exit 1 }
-              md = median(ef)
-              printf "%s: %d packets, fused pose %.2f mm median from the truth (limit %s; %.2f RMS, largest %.2f)", name, m, md, lim, 1000 * sqrt(s / m), 1000 * sqrt(mx)
-              if (aria) { mda = median(ea); printf ", ArRobot::getPose() %.2f mm median (%.2f RMS)", mda, 1000 * sqrt(sa / m) }
+              md = 1000 * sqrt(med(ef)); ba = 1000 * med(al); bc = 1000 * med(cr)
+              printf "%s: %d packets, fused pose %.2f mm median from the truth (limit %s; %.2f RMS, largest %.2f), " \
+                     "median %+.2f mm along the heading, %+.2f across (limits %s ahead, %s across)", name, m, md, lim, 1000 * sqrt(s / m),
+                     1000 * sqrt(mx), ba, bc, blim, blim
+              ok = md <= lim && ba <= blim && abs(bc) <= blim
+              if (aria) { mda = 1000 * sqrt(med(ea)); baa = 1000 * med(ala); bca = 1000 * med(cra)
+                          printf ", ArRobot::getPose() %.2f mm median (%.2f RMS), %+.2f along, %+.2f across", mda,
+                                 1000 * sqrt(sa / m), baa, bca
+                          ok = ok && mda <= lim && baa <= blim && abs(bca) <= blim }
               printf "\n"
-              exit !(md <= lim && (!aria || mda <= lim)) }' "$T/$1.truth" "$T/$1.log"
+              exit !ok }' "$T/$1.truth" "$T/$1.log"
 }
 run() { # NAME, the stand-in's own options, then the controller's command line with @PORT@ @PTY@ @LOG@
     name=$1
