@@ -34,8 +34,8 @@ port=$((20000 + $$ % 20000))
 # packets it cannot move. A broken fusion moves them all: the odometry
 # alone is metres off, a frame put at its arrival (the latency ignored)
 # 100 mm at 1 m/s.
-# A bias of a few mm passes that median, so the signed errors' medians are
-# judged too, in the robot's frame: across the heading within BIAS_LIMIT
+# A bias of a few mm passes that median, so the signed errors' medians of
+# the fused pose are judged too, in the robot's frame: across the heading within BIAS_LIMIT
 # either way, and along it at most BIAS_LIMIT ahead of the truth. Load only
 # ever delays (a packet read late is stamped late: the pose lags), so
 # behind the truth only the median above bounds it: 8 runs beside two busy
@@ -66,7 +66,7 @@ judge() { # LOG NAME LIMIT_MM [ARIA [FROM]]
               if (aria) { mda = 1000 * sqrt(med(ea)); baa = 1000 * med(ala); bca = 1000 * med(cra)
                           printf ", ArRobot::getPose() %.2f mm median (%.2f RMS), %+.2f along, %+.2f across", mda,
                                  1000 * sqrt(sa / m), baa, bca
-                          ok = ok && mda <= lim && baa <= blim && abs(bca) <= blim }
+                          ok = ok && mda <= lim } # its bias printed only: not yet measured (no AriaCoda here)
               printf "\n"
               exit !ok }' "$T/$1.truth" "$T/$1.log"
 }
