@@ -2,14 +2,18 @@
  * neither its first match nor the search's step out (radius x1.06)
  * scores RL_LOCAL_MIN_FIRST (rl_local.h). That floor must lose nothing.
  *
+ * The same floor holds a cut candidate's read at its box where no other
+ * of its reads took it (rl_result.local_box_floored).
+ *
  *   test_local_floor DIR SET...   the renderer's SET_NNN frames in DIR,
  *       each read twice by the whole recognizer, the floor on and off (two
  *       recognizers, each over the frames in order): every landmark of the
  *       renderer's truth that the run without the floor reports with its
  *       true id (within half a radius of its true centre) the run with it
  *       reports too, and no reported landmark sits on a true one of another
- *       id. The floor must have stopped candidates on these sets (a test
- *       of a floor that never acts would pass whatever it is).
+ *       id. The floor must have stopped candidates on these sets, whole
+ *       ones and cut ones' reads at their box (a test of a floor that
+ *       never acts would pass whatever it is).
  */
 #include "rl_test.h"
 #include <math.h>
@@ -23,7 +27,8 @@ static fixture_sets fs;
 
 typedef struct {
     int read_off, read_on, lost, wrong;
-    long floored; /* candidates the floor stopped */
+    long floored;     /* whole candidates the floor stopped */
+    long box_floored; /* cut candidates' reads at their box it stopped */
 } floor_counts;
 
 /* The id reported within half a radius of true landmark l, -1 if none. */
@@ -49,6 +54,8 @@ static void frame_both(rl_heap_recog *on, rl_heap_recog *off, const truth *t, fl
     assert_int_equal(rl_heap_recog_run(off, &img, &roff), RL_OK);
     c->floored += ron.local_floored; /* per frame */
     assert_int_equal(roff.local_floored, 0);
+    c->box_floored += ron.local_box_floored;
+    assert_int_equal(roff.local_box_floored, 0);
     for (j = 0; j < t->n; j++) {
         const truth_landmark *l = &t->lm[j];
         int a = id_at(&roff, l), b = id_at(&ron, l);
@@ -86,10 +93,11 @@ static void floor_loses_nothing(void **state)
     assert_int_equal(got, 0);
     rl_heap_recog_free(&on);
     rl_heap_recog_free(&off);
-    printf("read right: %d without the floor, %d with it (%ld candidates stopped); %d lost, %d wrong\n",
-           c.read_off, c.read_on, c.floored, c.lost, c.wrong);
+    printf("read right: %d without the floor, %d with it (%ld candidates stopped, %ld reads at a cut one's box); "
+           "%d lost, %d wrong\n", c.read_off, c.read_on, c.floored, c.box_floored, c.lost, c.wrong);
     assert_true(c.read_off >= 100);
     assert_true(c.floored > 0);
+    assert_true(c.box_floored > 0);
     assert_int_equal(c.lost, 0);
     assert_int_equal(c.wrong, 0);
 }

@@ -34,7 +34,10 @@
  * arc fallback found (rl_locate's rays from the candidate's centre, a ring
  * the motion broke) is floored as any other: of 8 that reached the floor
  * on the generated sets one was stopped, none lost (measured, not by
- * design). Not in rl_local_read. */
+ * design). A cut candidate's read at its box, where no other of its reads
+ * took it, is floored the same (rl_result.local_box_floored; its first
+ * read is not: cut landmarks were taken from first matches under 0.1).
+ * Not in rl_local_read. */
 #define RL_LOCAL_MIN_FIRST 0.5
 
 /* Retry every DUCLR of res; identified ones move from res->unidentified

@@ -9,7 +9,7 @@ void rl_result_clear(rl_result *res, int W, int H)
 {
     memset(res, 0, offsetof(rl_result, landmarks)); /* up to n_landmarks */
     res->n_unidentified = res->n_lights = 0;
-    res->n_candidates = res->n_regions = res->local_tried = res->local_found = res->local_floored = 0;
+    res->n_candidates = res->n_regions = res->local_tried = res->local_found = res->local_floored = res->local_box_floored = 0;
     memset(&res->dropped, 0, sizeof res->dropped);
     res->width = W;
     res->height = H;

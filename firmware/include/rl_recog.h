@@ -146,6 +146,8 @@ typedef struct {
     int local_tried;    /* DUCLRs the local pass retried */
     int local_found;    /* of those, identified */
     int local_floored;  /* of those, whole ones read no further (local_min_first) */
+    int local_box_floored; /* of those, cut ones whose read at their box, after no other read took
+                              them, went no further (local_min_first) */
     double gamma;       /* the tone curve the frame was read through (rl_recog_config.gamma:
                            the configured one, or the one learned) */
     rl_dropped dropped; /* what the limits left out (all 0 on ordinary frames) */
