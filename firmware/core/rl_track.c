@@ -123,29 +123,68 @@ static int is_whole(const rl_track_window *w, int W, int H)
     return rl_geom_disk_complete(W, H, w->u, w->v, WHOLE_MARGIN * w->radius);
 }
 
-/* The landmarks the predicted pose puts in view, into t->win, but those
- * too small for an id (rl_twins_min_radius: no read would name them, and
- * a window that reads none fails the frame); how many of them are whole. */
-static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mount, const rl_map *map)
+/* The landmarks the pose (x, y, yaw) puts in view, into win (*n of
+ * them), but those too small for an id (rl_twins_min_radius: no read
+ * would name them, and a window that reads none fails the frame); how
+ * many of them are whole. */
+static int predict_at(const rl_calib *cam, const rl_mount *mount, const rl_map *map, double x, double y,
+                      double yaw, rl_track_window *win, int *n)
 {
     rl_pose_model md;
     double q[RL_POSE_NQ] = {0}, Rc[9], C[3], slope = view_slope(cam), min_radius = rl_twins_min_radius(&map->family);
     int i, whole = 0;
     rl_pose_fit_model(&md, mount, map->ceiling_height, 0.5 * map->diameter);
-    q[0] = t->ex;
-    q[1] = t->ey;
-    q[2] = t->eyaw;
+    q[0] = x;
+    q[1] = y;
+    q[2] = yaw;
     rl_pose_fit_camera(&md, q, Rc, C);
-    t->n = 0;
-    for (i = 0; i < map->count && t->n < RL_MAX_LANDMARKS; i++) {
-        rl_track_window *w = &t->win[t->n];
+    *n = 0;
+    for (i = 0; i < map->count && *n < RL_MAX_LANDMARKS; i++) {
+        rl_track_window *w = &win[*n];
         if (out_of_reach(map, i, C, slope) || !project(cam, &md, Rc, C, map, i, w) ||
             w->visible < PREDICT_MIN_VISIBLE || w->radius < MIN_RADIUS_MARGIN * min_radius)
             continue;
         whole += is_whole(w, cam->width, cam->height);
-        t->n++;
+        (*n)++;
     }
     return whole;
+}
+
+/* The landmarks the predicted pose puts in view, into t->win (predict_at);
+ * how many of them are whole. */
+static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mount, const rl_map *map)
+{
+    return predict_at(cam, mount, map, t->ex, t->ey, t->eyaw, t->win, &t->n);
+}
+
+/* A full frame's landmark is taken as map entry w's, projected from the
+ * frame's own pose, when it has w's id within FULL_NEAR radii of w (the
+ * windows' reach for a frame's first read; the pose leaves out the
+ * robot's rocking) and no other of the frame's landmarks with that id is
+ * within twice that. */
+#define FULL_NEAR 1.5
+
+/* t->known from the last full frame's landmarks (t->full_id ...), each
+ * taken as the map entry its frame's pose projects it to (FULL_NEAR). */
+static void known_from_full(rl_track *t, const rl_calib *cam, const rl_mount *mount, const rl_map *map)
+{
+    rl_track_window at[RL_MAX_LANDMARKS];
+    int n, i, k;
+    t->n_known = 0;
+    (void)predict_at(cam, mount, map, t->x, t->y, t->yaw, at, &n);
+    for (i = 0; i < n; i++) {
+        int found = -1, near = 0;
+        for (k = 0; k < t->n_full; k++) {
+            double e = hypot(t->full_u[k] - at[i].u, t->full_v[k] - at[i].v);
+            if (t->full_id[k] != at[i].id || !(e <= 2 * FULL_NEAR * at[i].radius))
+                continue;
+            near++;
+            if (e <= FULL_NEAR * at[i].radius)
+                found = k;
+        }
+        if (found >= 0 && near == 1)
+            t->known[t->n_known++] = at[i].index;
+    }
 }
 
 /* The predictions reordered so that each next one lies farthest from
@@ -190,6 +229,11 @@ int rl_track_plan(rl_track *t, const rl_calib *cam, const rl_mount *mount, const
         cam == NULL || mount == NULL || map == NULL)
         return 0;
     predict_pose(t, t_s, odom);
+    if (t->full_posed) {
+        /* the first frame after a full one: its checked landmarks */
+        known_from_full(t, cam, mount, map);
+        t->full_posed = 0;
+    }
     if (predict_windows(t, cam, mount, map) < 2)
         return 0;
     order_spread(t, cam->cx, cam->cy);
@@ -254,9 +298,10 @@ static int verifies(const rl_track_window *w, double shift, const rl_detection *
  * reads a candidate whose box is the predicted one (a whole landmark),
  * else as the local pass reads one (its own window and threshold). */
 static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, const rl_track_window *w,
-                       double shift, int full, const rl_result *res, rl_detection *d)
+                       double shift, int full, const rl_result *res, rl_detection *d, int *verified)
 {
     rl_detection u;
+    *verified = 1;
     /* a window verification does not take is read the costly way, even
      * when its ink drew the centre past the reach or no ink showed (*away):
      * a review found both where the costly reads find the landmark (the
@@ -272,6 +317,7 @@ static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, co
     if (w->visible >= CUT_VISIBLE &&
         rl_verify_read_border(rec, img, res, w->id, w->u, w->v, w->radius, d) && verifies(w, shift, d))
         return 1;
+    *verified = 0;
     window_candidate(w, img->width, img->height, &u);
     if (u.complete && (read_box(rec, img, res, &u, d) == w->id ||
                        (hypot(d->u - u.u, d->v - u.v) > BOX_RETRY_PX && read_box(rec, img, res, d, d) == w->id)) &&
@@ -314,11 +360,25 @@ static void shift_apply(const frame_shift *f, rl_track_window *w)
     w->v += (f->dv - a * f->x) / f->n + a * x;
 }
 
+/* Whether map entry index kept its id through the zone twins' check in
+ * the frame before (t->known). */
+static int was_known(const rl_track *t, int index)
+{
+    int k;
+    for (k = 0; k < t->n_known; k++)
+        if (t->known[k] == index)
+            return 1;
+    return 0;
+}
+
 /* The windows read, whole ones first: the first within max_first_shift
  * radii of its prediction; each next one where the reads so far put it
  * (frame_shift), within max_shift. Returns how many were read; *missed 1
- * (and no more read) as soon as a whole one is missed. */
-static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_result *res, int *missed)
+ * (and no more read) as soon as a whole one is missed. Each landmark of
+ * res: its map entry (index) and whether the twins' check may take its id
+ * as known (known: verified, and kept in the frame before). */
+static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_result *res, int *missed,
+                        int *index, unsigned char *known)
 {
     frame_shift fs;
     int pass, i, read = 0;
@@ -330,7 +390,7 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
         for (i = 0; i < t->n; i++) {
             rl_track_window w = t->win[i];
             rl_detection d;
-            int whole = is_whole(&w, img->width, img->height);
+            int whole = is_whole(&w, img->width, img->height), verified;
             if (whole != (pass == 0))
                 continue;
             /* where the shift puts it: whole, or enough in view, there */
@@ -344,7 +404,7 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
             res->local_tried++;
             if (!read_window(t, rec, img, &w, read ? t->cfg.max_shift : t->cfg.max_first_shift,
                              read < CUT_READS || w.visible >= CUT_VISIBLE,
-                             res, &d) ||
+                             res, &d, &verified) ||
                 !rl_result_add_landmark(res, &d)) {
                 if (whole) {
                     *missed = 1; /* the prediction failed: the frame is read in full */
@@ -352,6 +412,8 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
                 }
                 continue;
             }
+            index[res->n_landmarks - 1] = w.index;
+            known[res->n_landmarks - 1] = (unsigned char)was_known(t, w.index);
             shift_add(&fs, &t->win[i], &d);
             read++;
         }
@@ -360,7 +422,8 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
 
 rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result *res, int *ok)
 {
-    int read, missed;
+    int read, missed, index[RL_MAX_LANDMARKS], i;
+    unsigned char known[RL_MAX_LANDMARKS], kept[RL_MAX_LANDMARKS];
     if (t == NULL || rec == NULL || img == NULL || res == NULL || ok == NULL || !rl_image_valid(img) ||
         img->width != rec->width || img->height != rec->height)
         return RL_EINVAL;
@@ -368,14 +431,22 @@ rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result 
     rl_result_clear(res, rec->width, rec->height);
     res->levels = t->levels;
     res->gamma = rl_tones_gamma(&rec->tones);
-    read = read_windows(t, rec, img, res, &missed);
+    read = read_windows(t, rec, img, res, &missed, index, known);
     /* the zone twins' check of a full frame (rl_twins): a read it refuses
-     * is missed, and the frame read in full */
+     * is missed, and the frame read in full. A verified read of a landmark
+     * the check kept in the frame before is not judged again: its id is
+     * the map's, confirmed there by every id's match and its twins'
+     * (rl_verify) and read where the track has followed it since the check
+     * (docs/tracking.md) */
+    t->n_seen = 0;
     if (res->n_landmarks > 0) {
         int before = res->n_landmarks;
-        rl_twins_check(rec, img, rl_tones_other(&rec->tones, rec->tone), res);
+        rl_twins_check_known(rec, img, rl_tones_other(&rec->tones, rec->tone), res, known, kept);
         missed |= res->n_landmarks < before;
         read -= before - res->n_landmarks;
+        for (i = 0; i < before; i++)
+            if (kept[i])
+                t->seen[t->n_seen++] = index[i];
     }
     res->local_found = read;
     rl_filter_sort(res);
@@ -392,9 +463,18 @@ rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result 
 
 void rl_track_full(rl_track *t, const rl_result *res)
 {
+    int i;
     t->tracked = 0;
     t->since_full = 0;
     t->full_next = 0;
+    t->n_known = 0;
+    t->full_posed = 0;
+    t->n_full = 0;
+    for (i = 0; i < res->n_landmarks && t->n_full < RL_MAX_LANDMARKS; i++) {
+        t->full_id[t->n_full] = res->landmarks[i].id;
+        t->full_u[t->n_full] = res->landmarks[i].u;
+        t->full_v[t->n_full++] = res->landmarks[i].v;
+    }
     t->levels = res->levels;
     t->have_levels = res->levels.threshold > 0;
     t->frames_full++;
@@ -406,12 +486,23 @@ int rl_track_pose(rl_track *t, const rl_pose *pose, double t_s)
                        fabs(wrap(pose->yaw - t->eyaw)) > t->cfg.max_jump_yaw)) {
         t->tracked = 0;
         t->fallbacks++;
+        t->n_known = 0;
+        t->full_posed = 0;
         return 1;
     }
+    /* the reads the twins' check kept count as known only from a frame
+     * whose pose was taken: read by windows, or in full (rl_track_plan
+     * takes those as map entries from this pose) */
+    t->n_known = 0;
+    t->full_posed = pose != NULL && !t->tracked && t->n_full > 0;
     if (pose == NULL) {
         t->full_next = 1;
         t->have_prev = 0;
         return 0;
+    }
+    if (t->tracked) {
+        memcpy(t->known, t->seen, (size_t)t->n_seen * sizeof t->seen[0]);
+        t->n_known = t->n_seen;
     }
     t->px = t->x;
     t->py = t->y;

@@ -102,6 +102,14 @@ typedef struct {
     int tracked;                  /* 1: this frame was read by windows */
     int n;                        /* this frame's predictions */
     rl_track_window win[RL_MAX_LANDMARKS];
+    /* map entries (rl_track_window.index) whose read kept its id through
+     * the zone twins' check in the last frame, read by windows and its
+     * pose taken (known); this frame's, until its pose is (seen) */
+    int known[RL_MAX_LANDMARKS], n_known, seen[RL_MAX_LANDMARKS], n_seen;
+    /* the last full frame's landmarks (each kept by the check), while its
+     * pose is the last one taken (full_posed) */
+    int n_full, full_posed, full_id[RL_MAX_LANDMARKS];
+    double full_u[RL_MAX_LANDMARKS], full_v[RL_MAX_LANDMARKS];
     long frames_tracked, frames_full, fallbacks; /* counts */
 } rl_track;
 
