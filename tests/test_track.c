@@ -398,29 +398,10 @@ static void decisions(void **state)
     assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.1, NULL), 0);
 }
 
-/* A full frame's landmark at (u, v) with id. */
-static void put_landmark(rl_result *res, int id, double u, double v)
-{
-    rl_detection *d = &res->landmarks[res->n_landmarks++];
-    memset(d, 0, sizeof *d);
-    d->id = d->best_id = id;
-    d->u = u;
-    d->v = v;
-    d->radius = 24.44;
-    d->complete = 1;
-}
-
 /* Which landmarks the zone twins' check need not judge again (rl_track's
- * known): under the 3 x 3 grid (0.2 m landmarks: 457.01 x 0.1 / 1.87 =
- * 24.44 px), worked out by hand from the robot's pose (at the origin
- * heading +x, the camera 1.87 m under the ceiling): map entry i at x =
- * 0.5 (i % 3) - 0.5 forward, y = 0.5 (i / 3) - 0.5 left is seen at u =
- * 319.5 + 457.01 y / 1.87, v = 239.5 - 457.01 x / 1.87 (122.19 px a
- * step). A full frame's landmark is taken as the map entry its pose puts
- * within 1.5 radii (36.7 px) with its id, and no other with that id within
- * 3 radii; a frame read by windows passes on the landmarks its check kept,
- * once its pose is taken; a jump, a frame without a pose or a full frame
- * that reads none leave none known. */
+ * known): a frame read by windows passes on the map entries whose reads
+ * its check kept, once its pose is taken, to the next frame only; a full
+ * frame, a jump and a frame without a pose leave none known. */
 static void known_landmarks(void **state)
 {
     static rl_map map;
@@ -430,41 +411,27 @@ static void known_landmarks(void **state)
     rl_track_config tc;
     rl_result res;
     rl_pose p, jumped;
-    int i, known[10] = {0};
     (void)state;
     under_a_grid(&map, 0.2, &cam, &mount, &tc, &trk, &res);
     memset(&p, 0, sizeof p);
     res.levels.threshold = 100;
-    put_landmark(&res, 5, 319.5 + 3.0, 239.5 - 2.0);  /* entry 4, 3.6 px off */
-    put_landmark(&res, 1, 197.31 + 30.0, 361.69);     /* entry 0, 30 px off */
-    put_landmark(&res, 3, 197.31 - 40.0, 117.31);     /* entry 2, 40 px off: not it */
-    put_landmark(&res, 7, 441.69, 361.69 + 10.0);     /* entry 6, but two 7s */
-    put_landmark(&res, 7, 441.69, 361.69 - 50.0);
-    put_landmark(&res, 9, 441.69 + 5.0, 117.31);      /* entry 8 */
     rl_track_full(&trk, &res);
-    /* none known until the full frame's pose is taken */
-    assert_int_equal(trk.n_known, 0);
     assert_int_equal(rl_track_pose(&trk, &p, 0.0), 0);
+    assert_int_equal(trk.n_known, 0); /* a full frame's reads are judged again */
     assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.1, NULL), 1);
-    for (i = 0; i < trk.n_known; i++)
-        known[trk.known[i]]++;
-    assert_int_equal(trk.n_known, 3);
-    assert_int_equal(known[4], 1);
-    assert_int_equal(known[0], 1);
-    assert_int_equal(known[8], 1);
     /* a frame read by windows: the reads its check kept, once its pose is taken */
     trk.tracked = 1;
     trk.since_full++;
     trk.n_seen = 2;
     trk.seen[0] = 4;
     trk.seen[1] = 7;
+    assert_int_equal(trk.n_known, 0);
     assert_int_equal(rl_track_pose(&trk, &p, 0.1), 0);
     assert_int_equal(trk.n_known, 2);
     assert_int_equal(trk.known[0], 4);
     assert_int_equal(trk.known[1], 7);
-    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.2, NULL), 1);
-    assert_int_equal(trk.n_known, 2); /* not replaced by the full frame's */
     /* its pose jumped: none (the frame is read again in full) */
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.2, NULL), 1);
     trk.tracked = 1;
     jumped = p;
     jumped.x += 0.3;
@@ -475,11 +442,11 @@ static void known_landmarks(void **state)
     trk.tracked = 1;
     assert_int_equal(rl_track_pose(&trk, NULL, 0.2), 1);
     assert_int_equal(trk.n_known, 0);
-    /* a full frame that read none */
-    res.n_landmarks = 0;
+    /* the full frame read then: none */
+    trk.n_known = 2;
     rl_track_full(&trk, &res);
-    assert_int_equal(rl_track_pose(&trk, &p, 0.3), 0);
-    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.4, NULL), 1);
+    assert_int_equal(trk.n_known, 0);
+    assert_int_equal(rl_track_pose(&trk, &p, 0.2), 0);
     assert_int_equal(trk.n_known, 0);
 }
 

@@ -123,68 +123,29 @@ static int is_whole(const rl_track_window *w, int W, int H)
     return rl_geom_disk_complete(W, H, w->u, w->v, WHOLE_MARGIN * w->radius);
 }
 
-/* The landmarks the pose (x, y, yaw) puts in view, into win (*n of
- * them), but those too small for an id (rl_twins_min_radius: no read
- * would name them, and a window that reads none fails the frame); how
- * many of them are whole. */
-static int predict_at(const rl_calib *cam, const rl_mount *mount, const rl_map *map, double x, double y,
-                      double yaw, rl_track_window *win, int *n)
+/* The landmarks the predicted pose puts in view, into t->win, but those
+ * too small for an id (rl_twins_min_radius: no read would name them, and
+ * a window that reads none fails the frame); how many of them are whole. */
+static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mount, const rl_map *map)
 {
     rl_pose_model md;
     double q[RL_POSE_NQ] = {0}, Rc[9], C[3], slope = view_slope(cam), min_radius = rl_twins_min_radius(&map->family);
     int i, whole = 0;
     rl_pose_fit_model(&md, mount, map->ceiling_height, 0.5 * map->diameter);
-    q[0] = x;
-    q[1] = y;
-    q[2] = yaw;
+    q[0] = t->ex;
+    q[1] = t->ey;
+    q[2] = t->eyaw;
     rl_pose_fit_camera(&md, q, Rc, C);
-    *n = 0;
-    for (i = 0; i < map->count && *n < RL_MAX_LANDMARKS; i++) {
-        rl_track_window *w = &win[*n];
+    t->n = 0;
+    for (i = 0; i < map->count && t->n < RL_MAX_LANDMARKS; i++) {
+        rl_track_window *w = &t->win[t->n];
         if (out_of_reach(map, i, C, slope) || !project(cam, &md, Rc, C, map, i, w) ||
             w->visible < PREDICT_MIN_VISIBLE || w->radius < MIN_RADIUS_MARGIN * min_radius)
             continue;
         whole += is_whole(w, cam->width, cam->height);
-        (*n)++;
+        t->n++;
     }
     return whole;
-}
-
-/* The landmarks the predicted pose puts in view, into t->win (predict_at);
- * how many of them are whole. */
-static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mount, const rl_map *map)
-{
-    return predict_at(cam, mount, map, t->ex, t->ey, t->eyaw, t->win, &t->n);
-}
-
-/* A full frame's landmark is taken as map entry w's, projected from the
- * frame's own pose, when it has w's id within FULL_NEAR radii of w (the
- * windows' reach for a frame's first read; the pose leaves out the
- * robot's rocking) and no other of the frame's landmarks with that id is
- * within twice that. */
-#define FULL_NEAR 1.5
-
-/* t->known from the last full frame's landmarks (t->full_id ...), each
- * taken as the map entry its frame's pose projects it to (FULL_NEAR). */
-static void known_from_full(rl_track *t, const rl_calib *cam, const rl_mount *mount, const rl_map *map)
-{
-    rl_track_window at[RL_MAX_LANDMARKS];
-    int n, i, k;
-    t->n_known = 0;
-    (void)predict_at(cam, mount, map, t->x, t->y, t->yaw, at, &n);
-    for (i = 0; i < n; i++) {
-        int found = -1, near = 0;
-        for (k = 0; k < t->n_full; k++) {
-            double e = hypot(t->full_u[k] - at[i].u, t->full_v[k] - at[i].v);
-            if (t->full_id[k] != at[i].id || !(e <= 2 * FULL_NEAR * at[i].radius))
-                continue;
-            near++;
-            if (e <= FULL_NEAR * at[i].radius)
-                found = k;
-        }
-        if (found >= 0 && near == 1)
-            t->known[t->n_known++] = at[i].index;
-    }
 }
 
 /* The predictions reordered so that each next one lies farthest from
@@ -229,11 +190,6 @@ int rl_track_plan(rl_track *t, const rl_calib *cam, const rl_mount *mount, const
         cam == NULL || mount == NULL || map == NULL)
         return 0;
     predict_pose(t, t_s, odom);
-    if (t->full_posed) {
-        /* the first frame after a full one: its checked landmarks */
-        known_from_full(t, cam, mount, map);
-        t->full_posed = 0;
-    }
     if (predict_windows(t, cam, mount, map) < 2)
         return 0;
     order_spread(t, cam->cx, cam->cy);
@@ -413,7 +369,7 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
                 continue;
             }
             index[res->n_landmarks - 1] = w.index;
-            known[res->n_landmarks - 1] = (unsigned char)was_known(t, w.index);
+            known[res->n_landmarks - 1] = (unsigned char)(verified && was_known(t, w.index));
             shift_add(&fs, &t->win[i], &d);
             read++;
         }
@@ -463,18 +419,10 @@ rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result 
 
 void rl_track_full(rl_track *t, const rl_result *res)
 {
-    int i;
     t->tracked = 0;
     t->since_full = 0;
     t->full_next = 0;
     t->n_known = 0;
-    t->full_posed = 0;
-    t->n_full = 0;
-    for (i = 0; i < res->n_landmarks && t->n_full < RL_MAX_LANDMARKS; i++) {
-        t->full_id[t->n_full] = res->landmarks[i].id;
-        t->full_u[t->n_full] = res->landmarks[i].u;
-        t->full_v[t->n_full++] = res->landmarks[i].v;
-    }
     t->levels = res->levels;
     t->have_levels = res->levels.threshold > 0;
     t->frames_full++;
@@ -487,14 +435,13 @@ int rl_track_pose(rl_track *t, const rl_pose *pose, double t_s)
         t->tracked = 0;
         t->fallbacks++;
         t->n_known = 0;
-        t->full_posed = 0;
         return 1;
     }
     /* the reads the twins' check kept count as known only from a frame
-     * whose pose was taken: read by windows, or in full (rl_track_plan
-     * takes those as map entries from this pose) */
+     * read by windows whose pose was taken (from a full frame's reads, the
+     * next frame's first, the moving drive's poses came out worse: a read
+     * the check refuses there sends the frame back to a full read) */
     t->n_known = 0;
-    t->full_posed = pose != NULL && !t->tracked && t->n_full > 0;
     if (pose == NULL) {
         t->full_next = 1;
         t->have_prev = 0;

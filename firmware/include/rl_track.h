@@ -26,7 +26,9 @@
  * frame reads is lost for longer than full_every frames, and no id is
  * taken that the recognizer's own rules would not take (the frame's reads
  * go through the zone twins' check, rl_twins, as a full frame's: a read it
- * refuses is missed).
+ * refuses is missed; a verification of a landmark whose read the check
+ * kept in the frame before, read by windows with its pose taken, is not
+ * judged again).
  *
  * Allocation-free: the tracker is the caller's struct.
  *
@@ -106,10 +108,6 @@ typedef struct {
      * the zone twins' check in the last frame, read by windows and its
      * pose taken (known); this frame's, until its pose is (seen) */
     int known[RL_MAX_LANDMARKS], n_known, seen[RL_MAX_LANDMARKS], n_seen;
-    /* the last full frame's landmarks (each kept by the check), while its
-     * pose is the last one taken (full_posed) */
-    int n_full, full_posed, full_id[RL_MAX_LANDMARKS];
-    double full_u[RL_MAX_LANDMARKS], full_v[RL_MAX_LANDMARKS];
     long frames_tracked, frames_full, fallbacks; /* counts */
 } rl_track;
 
