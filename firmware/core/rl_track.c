@@ -332,7 +332,7 @@ static int was_known(const rl_track *t, int index)
  * (frame_shift), within max_shift. Returns how many were read; *missed 1
  * (and no more read) as soon as a whole one is missed. Each landmark of
  * res: its map entry (index) and whether the twins' check may take its id
- * as known (known: verified, and kept in the frame before). */
+ * as known (known: kept in the frame before). */
 static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_result *res, int *missed,
                         int *index, unsigned char *known)
 {
@@ -369,7 +369,7 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
                 continue;
             }
             index[res->n_landmarks - 1] = w.index;
-            known[res->n_landmarks - 1] = (unsigned char)(verified && was_known(t, w.index));
+            known[res->n_landmarks - 1] = (unsigned char)was_known(t, w.index);
             shift_add(&fs, &t->win[i], &d);
             read++;
         }
@@ -389,10 +389,10 @@ rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result 
     res->gamma = rl_tones_gamma(&rec->tones);
     read = read_windows(t, rec, img, res, &missed, index, known);
     /* the zone twins' check of a full frame (rl_twins): a read it refuses
-     * is missed, and the frame read in full. A verified read of a landmark
-     * the check kept in the frame before is not judged again: its id is
-     * the map's, confirmed there by every id's match and its twins'
-     * (rl_verify) and read where the track has followed it since the check
+     * is missed, and the frame read in full. A read of a landmark the check
+     * kept in the frame before (read by windows) is not judged again: its
+     * id is the map's, named again by the read within the windows' reach
+     * of where the track has followed it since the check
      * (docs/tracking.md) */
     t->n_seen = 0;
     if (res->n_landmarks > 0) {

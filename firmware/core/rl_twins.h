@@ -147,7 +147,7 @@ double rl_twins_min_radius(const rl_family *fam);
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res);
 
 /* rl_twins_check, but a landmark i with known[i] nonzero keeps its id
- * unjudged (a verified window read of a landmark whose id this check kept
+ * unjudged (a window read of a landmark whose id this check kept
  * in the frame before: rl_track), unless too small for an id; known NULL:
  * none. kept (NULL: not wanted), one entry per landmark of res as it came
  * in: 1 when it keeps its id. */

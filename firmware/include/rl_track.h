@@ -26,9 +26,8 @@
  * frame reads is lost for longer than full_every frames, and no id is
  * taken that the recognizer's own rules would not take (the frame's reads
  * go through the zone twins' check, rl_twins, as a full frame's: a read it
- * refuses is missed; a verification of a landmark whose read the check
- * kept in the frame before, read by windows with its pose taken, is not
- * judged again).
+ * refuses is missed; a landmark whose read the check kept in the frame
+ * before, read by windows with its pose taken, is not judged again).
  *
  * Allocation-free: the tracker is the caller's struct.
  *
