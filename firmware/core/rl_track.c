@@ -254,10 +254,9 @@ static int verifies(const rl_track_window *w, double shift, const rl_detection *
  * reads a candidate whose box is the predicted one (a whole landmark),
  * else as the local pass reads one (its own window and threshold). */
 static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, const rl_track_window *w,
-                       double shift, int full, const rl_result *res, rl_detection *d, int *verified)
+                       double shift, int full, const rl_result *res, rl_detection *d)
 {
     rl_detection u;
-    *verified = 1;
     /* a window verification does not take is read the costly way, even
      * when its ink drew the centre past the reach or no ink showed (*away):
      * a review found both where the costly reads find the landmark (the
@@ -273,7 +272,6 @@ static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, co
     if (w->visible >= CUT_VISIBLE &&
         rl_verify_read_border(rec, img, res, w->id, w->u, w->v, w->radius, d) && verifies(w, shift, d))
         return 1;
-    *verified = 0;
     window_candidate(w, img->width, img->height, &u);
     if (u.complete && (read_box(rec, img, res, &u, d) == w->id ||
                        (hypot(d->u - u.u, d->v - u.v) > BOX_RETRY_PX && read_box(rec, img, res, d, d) == w->id)) &&
@@ -346,7 +344,7 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
         for (i = 0; i < t->n; i++) {
             rl_track_window w = t->win[i];
             rl_detection d;
-            int whole = is_whole(&w, img->width, img->height), verified;
+            int whole = is_whole(&w, img->width, img->height);
             if (whole != (pass == 0))
                 continue;
             /* where the shift puts it: whole, or enough in view, there */
@@ -360,7 +358,7 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
             res->local_tried++;
             if (!read_window(t, rec, img, &w, read ? t->cfg.max_shift : t->cfg.max_first_shift,
                              read < CUT_READS || w.visible >= CUT_VISIBLE,
-                             res, &d, &verified) ||
+                             res, &d) ||
                 !rl_result_add_landmark(res, &d)) {
                 if (whole) {
                     *missed = 1; /* the prediction failed: the frame is read in full */
