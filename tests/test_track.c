@@ -398,6 +398,58 @@ static void decisions(void **state)
     assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.1, NULL), 0);
 }
 
+/* Which landmarks the zone twins' check need not judge again (rl_track's
+ * known): a frame read by windows passes on the map entries whose reads
+ * its check kept, once its pose is taken, to the next frame only; a full
+ * frame, a jump and a frame without a pose leave none known. */
+static void known_landmarks(void **state)
+{
+    static rl_map map;
+    rl_calib cam;
+    rl_mount mount;
+    rl_track trk;
+    rl_track_config tc;
+    rl_result res;
+    rl_pose p, jumped;
+    (void)state;
+    under_a_grid(&map, 0.2, &cam, &mount, &tc, &trk, &res);
+    memset(&p, 0, sizeof p);
+    res.levels.threshold = 100;
+    rl_track_full(&trk, &res);
+    assert_int_equal(rl_track_pose(&trk, &p, 0.0), 0);
+    assert_int_equal(trk.n_known, 0); /* a full frame's reads are judged again */
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.1, NULL), 1);
+    /* a frame read by windows: the reads its check kept, once its pose is taken */
+    trk.tracked = 1;
+    trk.since_full++;
+    trk.n_seen = 2;
+    trk.seen[0] = 4;
+    trk.seen[1] = 7;
+    assert_int_equal(trk.n_known, 0);
+    assert_int_equal(rl_track_pose(&trk, &p, 0.1), 0);
+    assert_int_equal(trk.n_known, 2);
+    assert_int_equal(trk.known[0], 4);
+    assert_int_equal(trk.known[1], 7);
+    /* its pose jumped: none (the frame is read again in full) */
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.2, NULL), 1);
+    trk.tracked = 1;
+    jumped = p;
+    jumped.x += 0.3;
+    assert_int_equal(rl_track_pose(&trk, &jumped, 0.2), 1);
+    assert_int_equal(trk.n_known, 0);
+    /* a frame read by windows with no pose: none */
+    trk.n_known = 2;
+    trk.tracked = 1;
+    assert_int_equal(rl_track_pose(&trk, NULL, 0.2), 1);
+    assert_int_equal(trk.n_known, 0);
+    /* the full frame read then: none */
+    trk.n_known = 2;
+    rl_track_full(&trk, &res);
+    assert_int_equal(trk.n_known, 0);
+    assert_int_equal(rl_track_pose(&trk, &p, 0.2), 0);
+    assert_int_equal(trk.n_known, 0);
+}
+
 /* A landmark above the ceiling (in a skylight's well, 5 m above the floor,
  * 4.12 m above the camera at 0.88 m) seen near the image's top left
  * corner, worked out by hand: robot at the origin heading +x, landmarks
@@ -457,7 +509,8 @@ int main(int argc, char **argv)
         dir = argv[1];
         return cmocka_run_group_tests(tests, NULL, NULL);
     } else {
-        const struct CMUnitTest tests[] = {cmocka_unit_test(decisions), cmocka_unit_test(above_the_ceiling)};
+        const struct CMUnitTest tests[] = {cmocka_unit_test(decisions), cmocka_unit_test(known_landmarks),
+                                           cmocka_unit_test(above_the_ceiling)};
         return cmocka_run_group_tests(tests, NULL, NULL);
     }
 }

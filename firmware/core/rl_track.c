@@ -314,11 +314,25 @@ static void shift_apply(const frame_shift *f, rl_track_window *w)
     w->v += (f->dv - a * f->x) / f->n + a * x;
 }
 
+/* Whether map entry index kept its id through the zone twins' check in
+ * the frame before (t->known). */
+static int was_known(const rl_track *t, int index)
+{
+    int k;
+    for (k = 0; k < t->n_known; k++)
+        if (t->known[k] == index)
+            return 1;
+    return 0;
+}
+
 /* The windows read, whole ones first: the first within max_first_shift
  * radii of its prediction; each next one where the reads so far put it
  * (frame_shift), within max_shift. Returns how many were read; *missed 1
- * (and no more read) as soon as a whole one is missed. */
-static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_result *res, int *missed)
+ * (and no more read) as soon as a whole one is missed. Each landmark of
+ * res: its map entry (index) and whether the twins' check may take its id
+ * as known (known: kept in the frame before). */
+static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_result *res, int *missed,
+                        int *index, unsigned char *known)
 {
     frame_shift fs;
     int pass, i, read = 0;
@@ -352,6 +366,8 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
                 }
                 continue;
             }
+            index[res->n_landmarks - 1] = w.index;
+            known[res->n_landmarks - 1] = (unsigned char)was_known(t, w.index);
             shift_add(&fs, &t->win[i], &d);
             read++;
         }
@@ -360,7 +376,8 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
 
 rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result *res, int *ok)
 {
-    int read, missed;
+    int read, missed, index[RL_MAX_LANDMARKS], i;
+    unsigned char known[RL_MAX_LANDMARKS], kept[RL_MAX_LANDMARKS];
     if (t == NULL || rec == NULL || img == NULL || res == NULL || ok == NULL || !rl_image_valid(img) ||
         img->width != rec->width || img->height != rec->height)
         return RL_EINVAL;
@@ -368,14 +385,22 @@ rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result 
     rl_result_clear(res, rec->width, rec->height);
     res->levels = t->levels;
     res->gamma = rl_tones_gamma(&rec->tones);
-    read = read_windows(t, rec, img, res, &missed);
+    read = read_windows(t, rec, img, res, &missed, index, known);
     /* the zone twins' check of a full frame (rl_twins): a read it refuses
-     * is missed, and the frame read in full */
+     * is missed, and the frame read in full. A read of a landmark the check
+     * kept in the frame before (read by windows) is not judged again: its
+     * id is the map's, named again by the read within the windows' reach
+     * of where the track has followed it since the check
+     * (docs/tracking.md) */
+    t->n_seen = 0;
     if (res->n_landmarks > 0) {
         int before = res->n_landmarks;
-        rl_twins_check(rec, img, rl_tones_other(&rec->tones, rec->tone), res);
+        rl_twins_check_known(rec, img, rl_tones_other(&rec->tones, rec->tone), res, known, kept);
         missed |= res->n_landmarks < before;
         read -= before - res->n_landmarks;
+        for (i = 0; i < before; i++)
+            if (kept[i])
+                t->seen[t->n_seen++] = index[i];
     }
     res->local_found = read;
     rl_filter_sort(res);
@@ -395,6 +420,7 @@ void rl_track_full(rl_track *t, const rl_result *res)
     t->tracked = 0;
     t->since_full = 0;
     t->full_next = 0;
+    t->n_known = 0;
     t->levels = res->levels;
     t->have_levels = res->levels.threshold > 0;
     t->frames_full++;
@@ -406,12 +432,22 @@ int rl_track_pose(rl_track *t, const rl_pose *pose, double t_s)
                        fabs(wrap(pose->yaw - t->eyaw)) > t->cfg.max_jump_yaw)) {
         t->tracked = 0;
         t->fallbacks++;
+        t->n_known = 0;
         return 1;
     }
+    /* the reads the twins' check kept count as known only from a frame
+     * read by windows whose pose was taken (from a full frame's reads, the
+     * next frame's first, the moving drive's poses came out worse: a read
+     * the check refuses there sends the frame back to a full read) */
+    t->n_known = 0;
     if (pose == NULL) {
         t->full_next = 1;
         t->have_prev = 0;
         return 0;
+    }
+    if (t->tracked) {
+        memcpy(t->known, t->seen, (size_t)t->n_seen * sizeof t->seen[0]);
+        t->n_known = t->n_seen;
     }
     t->px = t->x;
     t->py = t->y;

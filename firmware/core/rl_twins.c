@@ -335,6 +335,14 @@ static int cut_circle_on_edge(const rl_image *img, const rl_tone *tone, int ligh
     return hypot(u - d->u, v - d->v) + d->radius - r <= RL_TWINS_CUT_BULGE * d->radius;
 }
 
+/* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
+static void keep(rl_result *res, int *n, const rl_detection *d, unsigned char *kept, int i)
+{
+    res->landmarks[(*n)++] = *d;
+    if (kept != NULL)
+        kept[i] = 1;
+}
+
 double rl_twins_min_radius(const rl_family *fam)
 {
     /* code zone 1's width, a share of R (the narrowest: the zones inside
@@ -346,17 +354,25 @@ double rl_twins_min_radius(const rl_family *fam)
 
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res)
 {
+    rl_twins_check_known(rec, img, other, res, NULL, NULL);
+}
+
+void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res,
+                          const unsigned char *known, unsigned char *kept)
+{
     double radii[RL_MAX_LANDMARKS], min_radius = rl_twins_min_radius(&rec->templates.fam);
     double far_radius = RL_TWINS_FAR_ZONE_PX / RL_TWINS_MIN_ZONE_PX * min_radius; /* 1.5 floors */
     /* read through a curve, not as linear light */
     int curved = rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0;
-    int i, kept = 0, rv[RL_MAX_IDS], n, all = res->n_landmarks;
+    int i, kept_n = 0, rv[RL_MAX_IDS], n, all = res->n_landmarks;
     for (i = 0; i < all; i++)
         radii[i] = res->landmarks[i].radius;
     for (i = 0; i < all; i++) {
         rl_detection d = res->landmarks[i];
         double lead, own = 0, fit, tol = tolerance(&d, curved);
         int far;
+        if (kept != NULL)
+            kept[i] = 0;
         /* too small to tell its twins apart (RL_TWINS_MIN_ZONE_PX); a cut
          * local read off its outer edge (RL_TWINS_CUT_BULGE) */
         if (d.radius < min_radius ||
@@ -373,8 +389,8 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
          * every id by 0.055; read as linear, cut ones clear of every id
          * were right on every set) */
         if ((d.pass == RL_PASS_GLOBAL && (d.complete || !curved) && d.score - d.runner_up >= RL_TWINS_CLEAR) ||
-            (n = rivals(rec, &d, rv)) == 0) {
-            res->landmarks[kept++] = d;
+            (known != NULL && known[i]) || (n = rivals(rec, &d, rv)) == 0) {
+            keep(res, &kept_n, &d, kept, i);
             continue;
         }
         /* over the floor by its radius, under it along its minor axis, in
@@ -393,7 +409,7 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
         /* a circle far from what was read (an ellipse the local pass read
          * in its own shape, at a wide-angle lens's border) says nothing */
         if (fit < d.score - RL_TWINS_UNFIT) {
-            res->landmarks[kept++] = d;
+            keep(res, &kept_n, &d, kept, i);
             continue;
         }
         if (d.score - lead > d.runner_up)
@@ -408,9 +424,9 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
         if (keeps(&d, tol, lead, own) ||
             (rank_fits(&d, curved, others_median(radii, all, i)) && own > RL_TWINS_RANK_OWN &&
              rank_keeps(rec, img, rec->tone, res->levels.light, &d)))
-            res->landmarks[kept++] = d;
+            keep(res, &kept_n, &d, kept, i);
         else
             rl_result_add_unidentified(res, &d);
     }
-    res->n_landmarks = kept;
+    res->n_landmarks = kept_n;
 }

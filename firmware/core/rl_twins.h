@@ -146,4 +146,12 @@ double rl_twins_min_radius(const rl_family *fam);
  * the twins came to. */
 void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res);
 
+/* rl_twins_check, but a landmark i with known[i] nonzero keeps its id
+ * unjudged (a window read of a landmark whose id this check kept
+ * in the frame before: rl_track), unless too small for an id; known NULL:
+ * none. kept (NULL: not wanted), one entry per landmark of res as it came
+ * in: 1 when it keeps its id. */
+void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res,
+                          const unsigned char *known, unsigned char *kept);
+
 #endif

@@ -26,7 +26,8 @@
  * frame reads is lost for longer than full_every frames, and no id is
  * taken that the recognizer's own rules would not take (the frame's reads
  * go through the zone twins' check, rl_twins, as a full frame's: a read it
- * refuses is missed).
+ * refuses is missed; a landmark whose read the check kept in the frame
+ * before, read by windows with its pose taken, is not judged again).
  *
  * Allocation-free: the tracker is the caller's struct.
  *
@@ -102,6 +103,10 @@ typedef struct {
     int tracked;                  /* 1: this frame was read by windows */
     int n;                        /* this frame's predictions */
     rl_track_window win[RL_MAX_LANDMARKS];
+    /* map entries (rl_track_window.index) whose read kept its id through
+     * the zone twins' check in the last frame, read by windows and its
+     * pose taken (known); this frame's, until its pose is (seen) */
+    int known[RL_MAX_LANDMARKS], n_known, seen[RL_MAX_LANDMARKS], n_seen;
     long frames_tracked, frames_full, fallbacks; /* counts */
 } rl_track;
 
