@@ -3,9 +3,12 @@
  * window reads of a landmark the check kept before), and kept[] says, in
  * the order the landmarks came in, which kept their ids.
  *
- *   test_twins_known DIR SET    frame 0 of SET in DIR (SET_000.png and the
- *       renderer's truth SET_000.yaml; tests/frames band_twin: the frame
- *       where rl_twins once kept a 24 read as its twin 16 at gamma 1)
+ *   test_twins_known DIR SET CUT   frame 0 of SET and of CUT in DIR
+ *       (SET_000.png and the renderer's truth SET_000.yaml; tests/frames
+ *       band_twin: the frame where rl_twins once kept a 24 read as its
+ *       twin 16 at gamma 1; twins_cut: a frame with a cut 19 in its
+ *       corner, where the local search once climbed to a circle 1.2 times
+ *       its radius, a third of a radius out of the frame)
  *
  * At gamma 1 and 2.2 the frame's whole landmarks are read by hand at
  * their true places and radii (the truth's), each as its own id or as a
@@ -21,17 +24,24 @@
  *     kept[] 1 at its input index, while the unknown twins before and
  *     after it are refused (kept[] in input order: a refused read at 0,
  *     the known one at 1);
- *   - a known read under the size floor (rl_twins_min_radius) gets no id.
+ *   - a known read under the size floor (rl_twins_min_radius) gets no id;
+ *   - a known cut local read whose circle passes outside the landmark's
+ *     outer edge by more than RL_TWINS_CUT_BULGE of its radius gets no id
+ *     (CUT's 19 read from 1.2 times its true circle, its centre a third of
+ *     a radius further out of the frame: by hand it passes outside the
+ *     true edge by R / 3 + 0.2 R = 0.53 R, over 0.4 x 1.2 R = 0.48 R),
+ *     while the same landmark read from its true circle keeps its id.
  */
 #include "rl_test.h"
 #include <math.h>
 #include "fixture_eval.h"
+#include "rl_geom.h"
 #include "rl_heap_recog.h"
 #include "rl_match.h"
 #include "rl_png.h"
 #include "rl_twins.h"
 
-static const char *dir, *set;
+static const char *dir, *set, *cut_set;
 
 /* The reads, in input order: a true landmark's id (looked up in the
  * truth) read as itself (twin -1) or as its zone twin in code bit
@@ -87,34 +97,50 @@ static rl_detection read_at(const rl_recog *rec, const rl_image *img, int id, do
     return d;
 }
 
-/* The frame read at gamma (its recognizer's curve and levels) and the
- * plan's reads at the truth's places. */
-static void frame_at(double gamma, frame *f)
+/* Frame 0 of set_name read at gamma (its recognizer's curve and levels)
+ * into *f, its truth into *t. */
+static void frame_load(const char *set_name, double gamma, frame *f, truth *t)
 {
     static rl_result res;
     rl_recog_config cfg;
     char png[1200], err[512];
-    truth t;
-    int i, j, bits;
-    assert_int_equal(truth_load_frame(dir, set, 0, &t), 1);
-    snprintf(png, sizeof png, "%s/%s", dir, t.image);
+    assert_int_equal(truth_load_frame(dir, set_name, 0, t), 1);
+    snprintf(png, sizeof png, "%s/%s", dir, t->image);
     if (rl_png_read_gray(png, &f->img, err, sizeof err) != RL_OK)
         fail_msg("%s", err);
     rl_recog_defaults(&cfg);
     cfg.gamma = gamma;
-    bits = cfg.family.bits;
     rl_heap_recog_init(&f->hr, &cfg);
     assert_int_equal(rl_heap_recog_run(&f->hr, &f->img, &res), RL_OK);
     f->empty = res;
     f->empty.n_landmarks = 0;
     f->empty.n_unidentified = 0;
+}
+
+/* The truth's landmark of id (one in the frame). */
+static const truth_landmark *truth_of(const truth *t, int id)
+{
+    const truth_landmark *l = NULL;
+    int j;
+    for (j = 0; j < t->n; j++)
+        if (t->lm[j].id == id) {
+            assert_null(l);
+            l = &t->lm[j];
+        }
+    assert_non_null(l);
+    return l;
+}
+
+/* SET's frame read at gamma and the plan's reads at the truth's places. */
+static void frame_at(double gamma, frame *f)
+{
+    truth t;
+    int i, bits;
+    frame_load(set, gamma, f, &t);
+    bits = f->hr.rec->templates.fam.bits;
     for (i = 0; i < N_READS; i++) {
-        const truth_landmark *l = NULL;
+        const truth_landmark *l = truth_of(&t, plan[i].id);
         int id;
-        for (j = 0; j < t.n; j++)
-            if (t.lm[j].id == plan[i].id)
-                l = &t.lm[j];
-        assert_non_null(l);
         assert_true(l->visible >= 1.0); /* whole: a global read */
         id = plan[i].twin < 0 ? l->id : l->id ^ (1 << (bits - 1 - plan[i].twin));
         assert_true(plan[i].twin < 0 ? id == l->id : is_twin(bits, l->id, id));
@@ -308,6 +334,61 @@ static void a_known_read_too_small_has_no_id(void **state)
     }
 }
 
+/* A local read of a landmark the border cuts, as the search leaves one:
+ * id at (u, v), radius r, scored there through the frame's curve. */
+static rl_detection cut_read_at(const frame *f, int id, double u, double v, double r)
+{
+    rl_detection d = read_at(f->hr.rec, &f->img, id, u, v, r);
+    d.pass = RL_PASS_LOCAL;
+    d.complete = rl_geom_disk_complete(f->img.width, f->img.height, u, v, r);
+    d.visible = rl_geom_visible_in(f->img.width, f->img.height, u, v, r);
+    assert_false(d.complete);
+    return d;
+}
+
+/* CUT's cut 19 marked known: read from a circle off its outer edge
+ * (1.2 R, its centre R / 3 further from the frame's centre), no id; from
+ * its true circle, its id; the frame's whole landmarks (right global
+ * reads, the frame's size for the rule) kept. kept[] in input order. */
+static void a_known_cut_read_off_its_edge_has_no_id(void **state)
+{
+    static rl_result res;
+    unsigned char known[N_READS], kept[N_READS];
+    rl_detection reads[N_READS];
+    int want[N_READS] = {0, 1, 1, 1, 1};
+    const int whole[] = {30, 24, 22};
+    frame f;
+    truth t;
+    int g, i;
+    (void)state;
+    memset(known, 1, sizeof known);
+    for (g = 0; g < N_GAMMAS; g++) {
+        const truth_landmark *l;
+        double out_u, out_v, len;
+        frame_load(cut_set, gammas[g], &f, &t);
+        l = truth_of(&t, 19);
+        assert_true(l->visible < 1.0);
+        out_u = l->u - 0.5 * f.img.width;
+        out_v = l->v - 0.5 * f.img.height;
+        len = hypot(out_u, out_v);
+        reads[0] = cut_read_at(&f, l->id, l->u + out_u / len * l->radius / 3, l->v + out_v / len * l->radius / 3,
+                               1.2 * l->radius);
+        reads[1] = cut_read_at(&f, l->id, l->u, l->v, l->radius);
+        for (i = 2; i < N_READS; i++) {
+            const truth_landmark *w = truth_of(&t, whole[i - 2]);
+            assert_true(w->visible >= 1.0);
+            reads[i] = read_at(f.hr.rec, &f.img, w->id, w->u, w->v, w->radius);
+        }
+        memset(kept, 0xAA, sizeof kept);
+        with_reads(&f, reads, &res);
+        rl_twins_check_known(f.hr.rec, &f.img, other(&f), &res, known, kept);
+        for (i = 0; i < N_READS; i++)
+            assert_int_equal(kept[i], want[i]);
+        assert_split(reads, want, &res);
+        frame_free(&f);
+    }
+}
+
 int main(int argc, char **argv)
 {
     const struct CMUnitTest tests[] = {
@@ -315,12 +396,14 @@ int main(int argc, char **argv)
         cmocka_unit_test(nothing_known_is_the_plain_check),
         cmocka_unit_test(a_known_read_keeps_its_id),
         cmocka_unit_test(a_known_read_too_small_has_no_id),
+        cmocka_unit_test(a_known_cut_read_off_its_edge_has_no_id),
     };
-    if (argc != 3) {
-        fprintf(stderr, "usage: test_twins_known DIR SET\n");
+    if (argc != 4) {
+        fprintf(stderr, "usage: test_twins_known DIR SET CUT\n");
         return 2;
     }
     dir = argv[1];
     set = argv[2];
+    cut_set = argv[3];
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
