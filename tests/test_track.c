@@ -384,12 +384,20 @@ static void decisions(void **state)
     jumped = p;
     jumped.x += 0.3;
     assert_int_equal(rl_track_pose(&trk, &jumped, 1.1), 1);
+    /* ... and is read again in full, not by the same windows */
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 1.1, NULL), 0);
+    rl_track_full(&trk, &res);
+    assert_int_equal(rl_track_pose(&trk, &p, 1.1), 0);
     /* ... and so does a frame read by windows with no pose */
-    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 1.1, NULL), 1);
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 1.2, NULL), 1);
     trk.tracked = 1;
-    assert_int_equal(rl_track_pose(&trk, NULL, 1.1), 1);
-    /* a last pose older than max_age: no plan */
-    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 1.0 + tc.max_age + 0.05, NULL), 0);
+    assert_int_equal(rl_track_pose(&trk, NULL, 1.2), 1);
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 1.2, NULL), 0);
+    rl_track_full(&trk, &res);
+    assert_int_equal(rl_track_pose(&trk, &p, 1.2), 0);
+    /* a last pose older than max_age: no plan (within it: one) */
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 1.2 + tc.max_age + 0.05, NULL), 0);
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 1.2 + tc.max_age - 0.05, NULL), 1);
     /* tracking off */
     tc.full_every = 0;
     rl_track_init(&trk, &tc);

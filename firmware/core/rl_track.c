@@ -433,6 +433,7 @@ int rl_track_pose(rl_track *t, const rl_pose *pose, double t_s)
         t->tracked = 0;
         t->fallbacks++;
         t->n_known = 0;
+        t->full_next = 1; /* the frame is read again in full, not by the same windows */
         return 1;
     }
     /* the reads the twins' check kept count as known only from a frame

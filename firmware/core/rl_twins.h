@@ -148,7 +148,9 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
 
 /* rl_twins_check, but a landmark i with known[i] nonzero keeps its id
  * unjudged (a window read of a landmark whose id this check kept
- * in the frame before: rl_track), unless too small for an id; known NULL:
+ * in the frame before: rl_track), unless too small for an id or a cut
+ * local read whose circle lies off its outer edge (RL_TWINS_CUT_BULGE,
+ * rl_twins.c's cut_circle_on_edge); known NULL:
  * none. kept (NULL: not wanted), one entry per landmark of res as it came
  * in: 1 when it keeps its id. */
 void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res,

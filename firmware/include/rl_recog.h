@@ -74,7 +74,8 @@ typedef struct {
                              are found only there, at a fraction of the frame's time) */
     double near_light;    /* DUCLR: gap to a light of at most this many radii (default 1.5) */
     double local_min_first; /* local pass: a whole DUCLR whose first match and the search's
-                               step out both score under this is read no further (default
+                               step out both score under this is read no further, nor a cut
+                               one's read at its box once no other read took it (default
                                0.5, RL_LOCAL_MIN_FIRST; -INFINITY: every one read on) */
     int band_radius;      /* 1: an identified whole landmark's radius from both edges of its
                              outer black band, which no blur or tone curve biases (a

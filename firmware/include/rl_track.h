@@ -105,7 +105,9 @@ typedef struct {
     rl_track_window win[RL_MAX_LANDMARKS];
     /* map entries (rl_track_window.index) whose read kept its id through
      * the zone twins' check in the last frame, read by windows and its
-     * pose taken (known); this frame's, until its pose is (seen) */
+     * pose taken (known); this frame's, until its pose is (seen). They
+     * index the map rl_track_plan was given: a caller that changes the
+     * map calls rl_track_init first */
     int known[RL_MAX_LANDMARKS], n_known, seen[RL_MAX_LANDMARKS], n_seen;
     long frames_tracked, frames_full, fallbacks; /* counts */
 } rl_track;
@@ -113,7 +115,9 @@ typedef struct {
 /* Fill every field with its default. */
 void rl_track_defaults(rl_track_config *cfg);
 
-/* A tracker with no pose yet (its first frame is full). */
+/* A tracker with no pose yet (its first frame is full); also after the
+ * map given to rl_track_plan changes (its known landmarks are the map's
+ * entries). */
 void rl_track_init(rl_track *t, const rl_track_config *cfg);
 
 /* Whether the frame at time t_s (s) can be read by windows; if so its
@@ -139,7 +143,8 @@ void rl_track_full(rl_track *t, const rl_result *res);
 /* The frame's pose (NULL: none) at time t_s: remembered for the next
  * prediction. Returns 1 when the frame was read by windows and its pose
  * jumped from the prediction (or it has none): the caller reads the same
- * frame in full (and calls rl_track_full, then this again). */
+ * frame in full (rl_track_plan returns 0 for it; the caller calls
+ * rl_track_full, then this again). */
 int rl_track_pose(rl_track *t, const rl_pose *pose, double t_s);
 
 #endif
