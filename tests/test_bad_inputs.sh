@@ -63,17 +63,19 @@ opt plan diameter "0 -0.2" --landmarks 30 $geom --distance 1.87
 opt plan ceiling-height "0 -2.75" --landmarks 30 $geom --camera-height 0.88
 opt plan camera-height "-1" --landmarks 30 $geom --ceiling-height 2.75
 opt plan pitch "0 -0.61" $geom --distance 1.87 --ceiling-height 2.75 --grid 6x5 --map-out "$T/m.yaml"
-area="--area 6x5 --pitch 0.61 $geom --distance 1.87 --ceiling-height 2.75 --map-out $T/m.yaml"
-opt plan hamming "0 3 2.5 -2" $area
-opt plan min-view "0 2 101 2.5" $area
-opt plan seed "-1 2.5 1e10" $area
+# plan --area's options in "$@" (the script's own arguments are read), so
+# that a scratch path with a space stays one word
+set -- --area 6x5 --pitch 0.61 $geom --distance 1.87 --ceiling-height 2.75 --map-out "$T/m.yaml"
+opt plan hamming "0 3 2.5 -2" "$@"
+opt plan min-view "0 2 101 2.5" "$@"
+opt plan seed "-1 2.5 1e10" "$@"
 for v in abc 0x10 10x0 nanxnan infx5 1e9x1 -5x5 10 "" 5x5x5x; do
     expect_case 2 "--area" "$R" plan --area "$v" --pitch 0.61 $geom --distance 1.87 --ceiling-height 2.75
 done
 expect_case 2 "--area needs --pitch" "$R" plan --area 6x5 $geom --distance 1.87 --ceiling-height 2.75
 expect_case 2 "--area needs --ceiling-height" "$R" plan --area 6x5 --pitch 0.61 $geom --distance 1.87
-expect_case 2 "give --area or --grid" "$R" plan $area --grid 6x5
-expect_case 2 "--family" "$R" plan $area --family ring9
+expect_case 2 "give --area or --grid" "$R" plan "$@" --grid 6x5
+expect_case 2 "--family" "$R" plan "$@" --family ring9
 expect_case 2 "go with --area" "$R" plan $geom --distance 1.87 --landmarks 30 --hamming 2
 expect_case 2 "would overlap" "$R" plan --area 6x5 --pitch 0.1 $geom --distance 1.87 --ceiling-height 2.75
 expect_case 2 "more than a map holds" "$R" plan --area 600x600 --pitch 0.61 $geom --distance 1.87 --ceiling-height 2.75
@@ -91,11 +93,12 @@ opt locate readout "-1 201" --camera "$cam" --map "$map" --robot "$robot" "$fram
 expect_case 2 "--alone" "$R" locate --alone --readout 30 --camera "$cam" --map "$map" --robot "$robot" "$frame"
 opt calibrate-offsets degree "0 4 2.5" --map "$map" --robot "$robot" --pose 1,1,0 --out "$T/o.yaml" "$frame"
 opt run frames "-1 2.5" --config "$D/none.yaml"
-sv="--camera $cam --robot $robot --origin 1 --axis 8 --out $T/s.yaml"
-opt survey diameter "0 -0.21 10" $sv "$frame"
-opt survey ceiling-height "0 -2.75" $sv "$frame"
-opt survey axis-distance "0 -1" $sv "$frame"
-opt survey gate "0 -0.3" $sv "$frame"
+# survey's options in "$@", as plan --area's above
+set -- --camera "$cam" --robot "$robot" --origin 1 --axis 8 --out "$T/s.yaml"
+opt survey diameter "0 -0.21 10" "$@" "$frame"
+opt survey ceiling-height "0 -2.75" "$@" "$frame"
+opt survey axis-distance "0 -1" "$@" "$frame"
+opt survey gate "0 -0.3" "$@" "$frame"
 opt survey origin "0 -1 2.5" --camera "$cam" --robot "$robot" --axis 8 --out "$T/s.yaml" "$frame"
 opt survey axis "0 -1 2.5" --camera "$cam" --robot "$robot" --origin 1 --out "$T/s.yaml" "$frame"
 opt monitor baud "0 -9600 12345 2.5" "$T/none.bin"
@@ -159,7 +162,7 @@ file detect map "$frame"
 file plan camera --landmarks 30 --distance 1.87
 file survey camera --robot "$robot" --origin 1 --axis 8 --out "$T/s.yaml" "$frame"
 file survey robot --camera "$cam" --origin 1 --axis 8 --out "$T/s.yaml" "$frame"
-file survey map $sv "$frame"
+file survey map "$@" "$frame"
 printf '0 0 0 0\n0.1 0.1 0 0\n' >"$T/odo.txt"
 file fuse odometry "$T/odo.txt"
 for f in "$T/absent.bin" "$T/folder" "$T/empty.yaml" "$T/garbage.yaml" "$frame" "$T/fifo"; do
@@ -175,9 +178,9 @@ for last in 1700000000 1e300; do
     desc="$last" expect_case 1 "more than a day: do they jump" "$R" fuse --odometry "$T/jump_odo.txt" "$T/odo.txt"
 done
 desc=
-expect_case 2 "origin" "$R" survey $sv --origin 40 "$frame"
+expect_case 2 "origin" "$R" survey "$@" --origin 40 "$frame"
 expect_case 2 "same landmark" "$R" survey --camera "$cam" --robot "$robot" --origin 8 --axis 8 --out "$T/s.yaml" "$frame"
-expect_case 2 "not both" "$R" survey $sv --ceiling-height 2.75 --axis-distance 3 "$frame"
+expect_case 2 "not both" "$R" survey "$@" --ceiling-height 2.75 --axis-distance 3 "$frame"
 expect_case 2 "required" "$R" survey --camera "$cam" "$frame"
 # detect's JSON lines as survey frames
 "$R" detect "$frame" >"$T/good.jsonl"
@@ -185,13 +188,13 @@ for bad in 'not json' '[1, 2]' '{"image": "a.png"}' '{"landmarks": [{"id": 40, "
     '{"landmarks": [{"id": 5, "u": "x", "v": 2, "radius": 20}]}' '{"width": 320, "height": 240, "landmarks": []}' \
     '{"landmarks": [{"id": 5, "u": 1e309, "v": 2, "radius": 20}]}' '{"landmarks": [{"id": 5, "u": 1, "v": 2, "radius": -3}]}'; do
     { cat "$T/good.jsonl"; printf '%s\n' "$bad"; } >"$T/bad.jsonl"
-    desc="$bad" expect_case 1 "bad.jsonl:2" "$R" survey $sv "$T/bad.jsonl"
+    desc="$bad" expect_case 1 "bad.jsonl:2" "$R" survey "$@" "$T/bad.jsonl"
 done
 desc=
 : >"$T/empty.jsonl"
-expect_case 1 "empty.jsonl" "$R" survey $sv "$T/empty.jsonl"
-expect_case 1 "folder" "$R" survey $sv "$T/folder"
-expect_case 1 "absent.png" "$R" survey $sv "$T/absent.png"
+expect_case 1 "empty.jsonl" "$R" survey "$@" "$T/empty.jsonl"
+expect_case 1 "folder" "$R" survey "$@" "$T/folder"
+expect_case 1 "absent.png" "$R" survey "$@" "$T/absent.png"
 for f in "$T/absent.png" "$T/folder" "$T/empty.png" "$T/trunc.png" "$T/half.png" "$T/pnm.png" "$T/garbage.yaml" \
     "$T/fifo"; do
     expect_case 1 "$(basename "$f")" "$R" detect "$f"

@@ -84,9 +84,21 @@ run() { # NAME, the stand-in's own options, then the controller's command line w
     sp=$!
     i=0
     while [ ! -L "$T/tty" ] && [ $i -lt 50 ]; do sleep 0.1; i=$((i + 1)); done
-    cmd=$(echo "$*" | sed "s|@PORT@|$port|g; s|@PTY@|$T/tty|g; s|@LOG@|$T/$name.log|g")
-    # shellcheck disable=SC2086 # the command's words
-    timeout 60 $cmd >"$T/$name.out" 2>&1 || { echo "FAIL: $name exited $?: $(tail -5 "$T/$name.out")"; fail=1; }
+    # @PORT@ @PTY@ @LOG@ replaced argument by argument, each argument one
+    # word (a path with a space in it is not split)
+    k=$#
+    while [ "$k" -gt 0 ]; do
+        a=$1
+        shift
+        case $a in
+        @PORT@) a=$port ;;
+        @PTY@) a=$T/tty ;;
+        @LOG@) a=$T/$name.log ;;
+        esac
+        set -- "$@" "$a"
+        k=$((k - 1))
+    done
+    timeout 60 "$@" >"$T/$name.out" 2>&1 || { echo "FAIL: $name exited $?: $(tail -5 "$T/$name.out")"; fail=1; }
     i=0
     while kill -0 $sp 2>/dev/null && [ $i -lt 30 ]; do sleep 0.1; i=$((i + 1)); done
     kill $sp 2>/dev/null
