@@ -197,6 +197,21 @@ static void assert_split(const rl_detection *reads, const int *want, const rl_re
     assert_int_equal(res->n_unidentified, u);
 }
 
+/* The check with known[] over reads (in order), into res: kept[] must be
+ * want[], and the result split as want says. */
+static void assert_known_check(const frame *f, const rl_detection *reads, const unsigned char *known,
+                               const int *want, rl_result *res)
+{
+    unsigned char kept[N_READS];
+    int i;
+    memset(kept, 0xAA, sizeof kept);
+    with_reads(f, reads, res);
+    rl_twins_check_known(f->hr.rec, &f->img, other(f), res, known, kept);
+    for (i = 0; i < N_READS; i++)
+        assert_int_equal(kept[i], want[i]);
+    assert_split(reads, want, res);
+}
+
 /* Two results alike in what the check decides and writes. */
 static void assert_same_result(const rl_result *a, const rl_result *b)
 {
@@ -275,7 +290,7 @@ static void nothing_known_is_the_plain_check(void **state)
 static void a_known_read_keeps_its_id(void **state)
 {
     static rl_result res;
-    unsigned char known[N_READS] = {0}, kept[N_READS];
+    unsigned char known[N_READS] = {0};
     int want[N_READS];
     frame f;
     int g, i, k = 0;
@@ -285,12 +300,7 @@ static void a_known_read_keeps_its_id(void **state)
         frame_at(gammas[g], &f);
         for (i = 0; i < N_READS; i++)
             want[i] = f.reads[i].id == f.truth_id[i] || known[i];
-        memset(kept, 0xAA, sizeof kept);
-        with_reads(&f, f.reads, &res);
-        rl_twins_check_known(f.hr.rec, &f.img, other(&f), &res, known, kept);
-        for (i = 0; i < N_READS; i++)
-            assert_int_equal(kept[i], want[i]);
-        assert_split(f.reads, want, &res);
+        assert_known_check(&f, f.reads, known, want, &res);
         for (i = 0, k = 0; i < KNOWN_AT; i++)
             k += want[i];
         assert_true(res.landmarks[k].runner_up == f.reads[KNOWN_AT].runner_up);
@@ -303,7 +313,7 @@ static void a_known_read_keeps_its_id(void **state)
 static void a_known_read_too_small_has_no_id(void **state)
 {
     static rl_result res;
-    unsigned char known[N_READS], kept[N_READS];
+    unsigned char known[N_READS];
     rl_detection small[N_READS];
     int want[N_READS];
     frame f;
@@ -324,12 +334,7 @@ static void a_known_read_too_small_has_no_id(void **state)
             if (!want[i])
                 small[i].radius = 0.9 * floor_r;
         }
-        memset(kept, 0xAA, sizeof kept);
-        with_reads(&f, small, &res);
-        rl_twins_check_known(f.hr.rec, &f.img, other(&f), &res, known, kept);
-        for (i = 0; i < N_READS; i++)
-            assert_int_equal(kept[i], want[i]);
-        assert_split(small, want, &res);
+        assert_known_check(&f, small, known, want, &res);
         frame_free(&f);
     }
 }
@@ -353,7 +358,7 @@ static rl_detection cut_read_at(const frame *f, int id, double u, double v, doub
 static void a_known_cut_read_off_its_edge_has_no_id(void **state)
 {
     static rl_result res;
-    unsigned char known[N_READS], kept[N_READS];
+    unsigned char known[N_READS];
     rl_detection reads[N_READS];
     int want[N_READS] = {0, 1, 1, 1, 1};
     const int whole[] = {30, 24, 22};
@@ -379,12 +384,7 @@ static void a_known_cut_read_off_its_edge_has_no_id(void **state)
             assert_true(w->visible >= 1.0);
             reads[i] = read_at(f.hr.rec, &f.img, w->id, w->u, w->v, w->radius);
         }
-        memset(kept, 0xAA, sizeof kept);
-        with_reads(&f, reads, &res);
-        rl_twins_check_known(f.hr.rec, &f.img, other(&f), &res, known, kept);
-        for (i = 0; i < N_READS; i++)
-            assert_int_equal(kept[i], want[i]);
-        assert_split(reads, want, &res);
+        assert_known_check(&f, reads, known, want, &res);
         frame_free(&f);
     }
 }
