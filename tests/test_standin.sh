@@ -5,8 +5,8 @@
 # turning 30 degrees a second, pose frames 10 a second arriving 100 ms
 # after capture, then again over a line with delays the frames do not
 # carry, a drifting and restarting camera board; the fused pose at every server information packet
-# against the stand-in's truth (no bias over 4 mm ahead or across, and a
-# median within 20 mm: the frames and
+# against the stand-in's truth (no bias over 4 mm ahead or across on the
+# first run, the serial line's bias printed; a median within 20 mm: the frames and
 # the odometry are stamped on arrival by processes that share the machine
 # with the build, so a loaded host's scheduling shows here; the fusion's
 # figures, 1 mm and 3 mm, are test_fuse_drive's, on simulated time).
