@@ -41,18 +41,7 @@ judge() {
 }
 
 sed 's|^|'"$D"'/|' "$T/frames.txt" >"$T/frames_abs.txt"
-# locate ARGS... over the frames in order, one argument a line of
-# frames_abs.txt (split at line ends only: a path may hold a space)
-locate_frames() {
-    IFS='
-'
-    set -f
-    # shellcheck disable=SC2046
-    set -- "$@" $(cat "$T/frames_abs.txt")
-    set +f
-    unset IFS
-    "$R" locate --camera "$D/camera.yaml" --map "$D/map.yaml" --robot "$D/robot.yaml" "$@"
-}
+locate_frames() { locate_frames_in "$T/frames_abs.txt" "$@"; }
 locate_frames 2>"$T/locate.err" | poses >"$T/locate.txt"
 set -- $(judge "$T/locate.txt")
 [ "$2" = 0 ] && [ "$3" = 0 ] && [ "$1" -ge 100 ] && ok || bad "locate in order: $1 right, $2 wrong, $3 without a place"

@@ -19,18 +19,7 @@ J=${5:-}
 n=$(wc -l <"$T/frames.txt")
 [ "$n" -ge 20 ] && ok || bad "only $n $P frames in $D"
 
-# locate ARGS... over the frames in order, one argument a line of
-# frames.txt (split at line ends only: a path may hold a space)
-locate_frames() {
-    IFS='
-'
-    set -f
-    # shellcheck disable=SC2046
-    set -- "$@" $(cat "$T/frames.txt")
-    set +f
-    unset IFS
-    "$R" locate --camera "$D/camera.yaml" --map "$D/map.yaml" --robot "$D/robot.yaml" "$@"
-}
+locate_frames() { locate_frames_in "$T/frames.txt" "$@"; }
 locate_frames --track >"$T/tracked.jsonl" 2>"$T/tracked.err"
 locate_frames --no-track >"$T/full.jsonl" 2>"$T/full.err"
 [ "$(wc -l <"$T/tracked.jsonl")" = "$n" ] && [ "$(wc -l <"$T/full.jsonl")" = "$n" ] && ok ||
