@@ -24,6 +24,10 @@ expect() {
     fi
 }
 
+# ere TEXT: an extended regular expression matching TEXT literally (a
+# path in expect's PATTERN: its dots, $ or brackets not the pattern's)
+ere() { printf '%s\n' "$1" | sed 's/[][\\.*^$+?(){}|]/\\&/g'; }
+
 # The summary line, and the script's status.
 sh_done() {
     echo "$pass passed, $fail failed"

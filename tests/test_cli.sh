@@ -32,7 +32,7 @@ expect 2 '--px: 5 is out of range \(16 .. 8000\)' -- "$R" gen --id 3 --png "$T/x
 expect 2 'nothing to write' -- "$R" gen --id 3
 expect 2 'either --id or --map' -- "$R" gen --pdf "$T/x.pdf"
 expect 1 '/nonexistent/dir/x.pdf' -- "$R" gen --id 3 --diameter 0.15 --pdf /nonexistent/dir/x.pdf
-expect 1 "$T/nomap.yaml: No such file" -- "$R" gen --map "$T/nomap.yaml" --pdf "$T/x.pdf"
+expect 1 "$(ere "$T/nomap.yaml"): No such file" -- "$R" gen --map "$T/nomap.yaml" --pdf "$T/x.pdf"
 printf 'family: ring5\ndiameter: 0.2\nceiling_height: 2.5\nlandmarks:\n  - {id: 3, x: 0, y: 0}\n  - {id: 40, x: 1, y: 0}\n' >"$T/badid.yaml"
 expect 1 "badid.yaml:6: landmarks\[1\].id: id 40 is not in ring5" -- "$R" gen --map "$T/badid.yaml" --pdf "$T/x.pdf"
 printf 'family: ring5\ndiameter: 0.2\nceiling_height: 2.5\nlandmarks:\n  - {id: 3, x: 0, y: 0}\n  - {id: 4, x: 0.15, y: 0}\n' >"$T/overlap.yaml"
@@ -70,7 +70,7 @@ expect 2 '--landmarks: how many' -- "$R" plan --hfov 70 --distance 1.87
 expect 1 'need more than the 254 ids' -- "$R" plan --landmarks 300 --hfov 70 --distance 1.87
 expect 1 'does not fit a4 paper' -- "$R" plan --landmarks 100 --hfov 70 --distance 1.87
 expect 2 "--resolution: '640' is not a size" -- "$R" plan --landmarks 30 --hfov 70 --distance 1.87 --resolution 640
-expect 1 "$T/nocam.yaml: No such file" -- "$R" plan --landmarks 30 --camera "$T/nocam.yaml" --distance 1.87
+expect 1 "$(ere "$T/nocam.yaml"): No such file" -- "$R" plan --landmarks 30 --camera "$T/nocam.yaml" --distance 1.87
 printf 'image_width: 640\nimage_height: 480\ncamera_matrix: {rows: 3, cols: 3, data: [457, 0, 319.5, 0, 457, 239.5, 0, 0]}\n' >"$T/badcam.yaml"
 expect 1 'badcam.yaml:3: camera_matrix: rows x cols is 3x3 but data has 8 values' -- "$R" plan --landmarks 30 --camera "$T/badcam.yaml" --distance 1.87
 printf 'image_width: 640\nimage_height: 480\ncamera_matrix: {rows: 3, cols: 3, data: [457, 0, 319.5, 0, 457, 239.5, 0, 0, 1]}\ndistortion_model: plumb_bob\ndistortion_coefficients: {rows: 1, cols: 5, data: [0, 0, 0, 0, 0]}\n' >"$T/cam.yaml"

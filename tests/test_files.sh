@@ -92,13 +92,16 @@ cfg "$T/null_link" >"$T/null.yaml"
 "$R" run --config "$T/null.yaml" 2>"$T/null.err"; rc=$?
 [ $rc = 0 ] && grep -q ": 12 frames, 12 poses" "$T/null.err" && ok || bad "serial.device a link to /dev/null: rc $rc: $(tail -3 "$T/null.err")"
 
-# 4. standard output that cannot be written is a failure, one line
-expect 1 "ringloc detect: standard output: " -- sh -c "'$R' detect '$D/straight_000.png' >/dev/full"
-expect 1 "ringloc locate: standard output: " -- sh -c \
-    "'$R' locate --camera '$D/camera.yaml' --map '$D/map.yaml' --robot '$D/robot.yaml' '$D/straight_000.png' >/dev/full"
+# 4. standard output that cannot be written is a failure, one line (the
+#    command's words as arguments, never pasted into shell code: a path
+#    may hold a quote)
+to_full() { "$@" >/dev/full; }
+expect 1 "ringloc detect: standard output: " -- to_full "$R" detect "$D/straight_000.png"
+expect 1 "ringloc locate: standard output: " -- \
+    to_full "$R" locate --camera "$D/camera.yaml" --map "$D/map.yaml" --robot "$D/robot.yaml" "$D/straight_000.png"
 "$R" monitor "$T/frames.bin" >/dev/full 2>"$T/mon.err"; rc=$? # (its summary line besides)
 [ $rc = 1 ] && grep -q "ringloc monitor: standard output: " "$T/mon.err" && ok || bad "monitor >/dev/full: rc $rc: $(cat "$T/mon.err")"
-expect 1 "ringloc: standard output: " -- sh -c "'$R' --help >/dev/full"
+expect 1 "ringloc: standard output: " -- to_full "$R" --help
 
 # 5. site-check: a file under --out that cannot be written fails the run
 mkdir -p "$T/photos"
