@@ -48,9 +48,11 @@ static const char *locate_help =
     "                   places or drives)\n"
     "  --track          once placed, read an image of the drive only in windows\n"
     "                   round where the map's landmarks must be (\"track\":\n"
-    "                   \"windows\"), every 10th in full (\"full\"), and whenever a\n"
-    "                   window misses or the pose jumps (docs/tracking.md); by\n"
-    "                   default (or --no-track) every image is read in full\n"
+    "                   \"windows\"; \"unjudged\": the landmarks kept as known from\n"
+    "                   the frame before), every 10th in full (\"full\"), and\n"
+    "                   whenever a window misses or the pose jumps\n"
+    "                   (docs/tracking.md); by default (or --no-track) every\n"
+    "                   image is read in full\n"
     "  --readout MS     the camera's rolling shutter: its rows read top to bottom in\n"
     "                   MS milliseconds (0, the default: a global shutter); each\n"
     "                   landmark is moved to the middle row's instant by the motion\n"
@@ -76,6 +78,19 @@ static const char *pose_error(const rl_run_report *rep)
     return rl_strerror(rep->pose_err);
 }
 
+/* The map entries whose reads kept their ids unjudged (known from the
+ * frame before): their ids and places. */
+static void print_unjudged(const rl_track *t, const rl_map *map)
+{
+    int k;
+    printf(", \"unjudged\": [");
+    for (k = 0; k < t->n_unjudged; k++) {
+        const rl_map_landmark *m = &map->lm[t->unjudged[k]];
+        printf("%s{\"id\": %d, \"x\": %.4f, \"y\": %.4f}", k ? ", " : "", m->id, m->x, m->y);
+    }
+    printf("]");
+}
+
 /* The detect line's fields, then place and pose. */
 static void print_pose(const rl_run_report *rep, const rl_site *site)
 {
@@ -87,6 +102,8 @@ static void print_pose(const rl_run_report *rep, const rl_site *site)
         printf(", \"place\": {\"status\": \"%s\", \"verified\": %d, \"runner_up\": %d, \"candidates\": %d}",
                rl_place_status_name(found->status), found->verified, found->runner_up, found->candidates);
     printf(", \"track\": \"%s\"", rep->windows ? "windows" : "full");
+    if (rep->windows) /* the reads kept as known, unjudged by the zone twins' check (rl_track.h) */
+        print_unjudged(rep->track, &site->map);
     if (rep->pose_err != RL_OK) {
         printf(", \"pose\": null, \"pose_error\": \"%s\"}\n", pose_error(rep));
         return;

@@ -432,6 +432,7 @@ static void use_frame(rl_runner *r, const rl_cam_frame *f)
     rep.event = RL_RUN_FRAME;
     rep.t_us = f->t_us;
     rep.frame = f;
+    rep.track = &r->track;
     t_us = r->cfg.frame_interval > 0 ? (uint64_t)(r->reads * r->cfg.frame_interval * 1e6) : f->t_us;
     e = recognize(r, f, (double)t_us / 1e6, &rep);
     if (e == RL_OK)

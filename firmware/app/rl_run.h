@@ -78,6 +78,7 @@ typedef struct {
     double recog_us;            /* FRAME: recognition's time alone */
     int local_used;             /* FRAME: 1 when the local pass identified one of its landmarks */
     int windows;                /* FRAME: 1 when read by tracking windows only (rl_track.h) */
+    const rl_track *track;      /* FRAME: the tracker after the frame (its unjudged reads) */
     rl_err pose_err;            /* FRAME: RL_OK with a pose; RL_ETOOFEW, RL_EAMBIGUOUS, ...;
                                    RL_EUNSUPPORTED when the site cannot localize */
     const rl_pose *pose;        /* FRAME after a solve (the failed one too: n_dropped) */

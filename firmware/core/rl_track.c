@@ -393,14 +393,18 @@ rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result 
      * of where the track has followed it since the check
      * (docs/tracking.md) */
     t->n_seen = 0;
+    t->n_unjudged = 0;
     if (res->n_landmarks > 0) {
         int before = res->n_landmarks;
         rl_twins_check_known(rec, img, rl_tones_other(&rec->tones, rec->tone), res, known, kept);
         missed |= res->n_landmarks < before;
         read -= before - res->n_landmarks;
-        for (i = 0; i < before; i++)
+        for (i = 0; i < before; i++) {
             if (kept[i])
                 t->seen[t->n_seen++] = index[i];
+            if (kept[i] && known[i])
+                t->unjudged[t->n_unjudged++] = index[i];
+        }
     }
     res->local_found = read;
     rl_filter_sort(res);
@@ -421,6 +425,7 @@ void rl_track_full(rl_track *t, const rl_result *res)
     t->since_full = 0;
     t->full_next = 0;
     t->n_known = 0;
+    t->n_unjudged = 0;
     t->levels = res->levels;
     t->have_levels = res->levels.threshold > 0;
     t->frames_full++;

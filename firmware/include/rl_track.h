@@ -109,6 +109,10 @@ typedef struct {
      * index the map rl_track_plan was given: a caller that changes the
      * map calls rl_track_init first */
     int known[RL_MAX_LANDMARKS], n_known, seen[RL_MAX_LANDMARKS], n_seen;
+    /* the map entries of this frame's reads that kept their ids unjudged
+     * as known (none after rl_track_full): what a log shows of the
+     * shortcut, for a test to judge against the truth */
+    int unjudged[RL_MAX_LANDMARKS], n_unjudged;
     long frames_tracked, frames_full, fallbacks; /* counts */
 } rl_track;
 
