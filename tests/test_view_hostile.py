@@ -16,6 +16,14 @@ Nothing here depends on the machine's load (issue 39): the latencies of
 the runs are printed as a benchmark (with the pages open against A and
 A2, run before and after B), never asserted.
 
+What it waits for is the camera's 15 frames a second; nothing else is
+waited for on its own (CI's time, docs/results.md): the two Chromiums
+start side by side while A runs (A's latency is printed as that), and quit
+while A2 starts (within its first SETTLED frames, whose latency is not
+counted); the attack takes some 2 s of C's 8 (the garbage bytes, which
+the server holds unanswered until its 10 s timeout, waited on for 0.5 s:
+no answer, a close and a 400 are accepted alike).
+
 usage: test_view_hostile.py RINGLOC PATHS_DIR TMPDIR"""
 import os
 import socket
@@ -29,7 +37,7 @@ import view_lib as vl  # noqa: E402
 
 FRAMES = 120       # 8 s at 15 frames a second
 SETTLED = 45       # latency is printed from here on: the browsers started (on CI's cores) by then
-ATTACKED = 180     # the attacked run is longer: the attack must end before it does
+ATTACKED = FRAMES  # the attack (some 2 s) must end before the run does: checked
 TOKEN = "s3cret"
 
 
@@ -66,7 +74,7 @@ BAD = [  # (what, request, statuses accepted; 0: closed)
     ("bad seq", get(b"/frame.jpg?seq=-1&token=" + TOKEN.encode()), {400}),
     ("POST", b"POST /status.json?token=s3cret HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: 5\r\n\r\nhello", {405}),
     ("DELETE", b"DELETE /?token=s3cret HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n", {405}),
-    ("garbage", b"\x00\xff\xfe garbage \r\n\r\n", {0, 400}),
+    ("garbage", b"\x00\xff\xfe garbage \r\n\r\n", {0, 400}, 0.5),
     ("HTTP/9", b"GET / HTTP/9.9\r\nHost: 127.0.0.1\r\n\r\n", {0, 400, 505}),
     ("oversized header", get(b"/?token=s3cret", b"X-Big: " + b"a" * 200000 + b"\r\n"), {0, 413, 431}),
 ]
@@ -126,8 +134,8 @@ def attack(port, fw, ck):
     """Bad requests one by one, then slowloris clients and a flood of 100
     connections at once; then good requests, while the firmware still runs."""
     stop, flooded = threading.Event(), []
-    for what, raw, ok in BAD:
-        got = status_of(raw, port)
+    for what, raw, ok, *wait in BAD:
+        got = status_of(raw, port, *wait)
         ck.check(got in ok, "%s: answered %d, expected one of %s" % (what, got, sorted(ok)))
     threads = [threading.Thread(target=slowloris, args=(port, 20, stop)),
                threading.Thread(target=flood, args=(port, 100, flooded))]
@@ -171,22 +179,53 @@ def with_browsers(port, drivers):
     return during
 
 
+def side_by_side(jobs):
+    """Start each job (a function) in a thread of its own; the returned
+    function waits for them all and returns their results, or raises the
+    first one's exception."""
+    out = [None] * len(jobs)
+
+    def one(i):
+        try:
+            out[i] = (jobs[i](), None)
+        except Exception as e:  # noqa: BLE001 (re-raised in the caller's thread)
+            out[i] = (None, e)
+    threads = [threading.Thread(target=one, args=(i,)) for i in range(len(jobs))]
+    for t in threads:
+        t.start()
+
+    def join():
+        for t in threads:
+            t.join()
+        for _, e in out:
+            if e is not None:
+                raise e
+        return [r for r, _ in out]
+    return join
+
+
 def measure(ringloc, tmp, paths_dir, names):
-    """A, then B with two pages open, then A again: the pose frames and the
-    pages' frame counts."""
+    """A (the two Chromiums starting meanwhile), then B with two pages open,
+    then A again (the Chromiums quitting as it starts): the pose frames and
+    the pages' frame counts."""
     runs = {}
     cfg = vl.write_config(tmp, paths_dir, names, "A.bin")
-    runs["A"], _ = run(ringloc, tmp, cfg, "A")
-    drivers = [vl.chromium(1024, 768, tmp), vl.chromium(1024, 768, tmp)]
+    started = side_by_side([lambda: vl.chromium(1024, 768, tmp), lambda: vl.chromium(1024, 768, tmp)])
+    try:
+        runs["A"], _ = run(ringloc, tmp, cfg, "A")
+    finally:
+        drivers = [d for d in started() if d is not None]
     try:
         port = vl.free_port()
         cfg = vl.write_config(tmp, paths_dir, names, "B.bin")
         runs["B"], updates = run(ringloc, tmp, cfg, "B", "127.0.0.1:%d" % port, with_browsers(port, drivers))
     finally:
-        for d in drivers:
-            d.quit()
-    cfg = vl.write_config(tmp, paths_dir, names, "A2.bin")
-    runs["A2"], _ = run(ringloc, tmp, cfg, "A2")
+        quit_all = side_by_side([d.quit for d in drivers])
+    try:
+        cfg = vl.write_config(tmp, paths_dir, names, "A2.bin")
+        runs["A2"], _ = run(ringloc, tmp, cfg, "A2")
+    finally:
+        quit_all()
     return runs, updates
 
 
@@ -222,7 +261,8 @@ def main():
         if tag != "A":
             same = sum(vl.same_pose(a, b) for a, b in zip(runs["A"], got[:FRAMES]))
             ck.check(same == FRAMES, "run %s: %d of %d pose frames equal to those without the view" % (tag, same, FRAMES))
-    print("benchmark (not asserted): pose frames: A %d, A2 %d, B %d, C %d; latency mean/median A %.2f/%.2f ms, A2 %.2f/%.2f ms, "
+    print("benchmark (not asserted): pose frames: A %d, A2 %d, B %d, C %d; latency mean/median A (the browsers starting) "
+          "%.2f/%.2f ms, A2 %.2f/%.2f ms, "
           "B (two pages open) %.2f/%.2f ms, C (attacked) %.2f/%.2f ms; pages drew %s frames; "
           "flood: %d connections, %d answered 200"
           % (len(runs["A"]), len(runs["A2"]), len(runs["B"]), len(runs["C"]), lat["A"][0], lat["A"][1], lat["A2"][0],
