@@ -178,14 +178,14 @@ static void verify_landmark(const rl_recog *rec, const rl_image *img, const rl_r
     rl_detection d;
     int away, k, other = l->id % rl_family_count(&rec->templates.fam) + 1;
     c->tried++;
-    if (rl_verify_read(rec, img, res, l->id, l->u + 0.3 * r, l->v, r, &d, &away)) {
+    if (rl_verify_read(rec, img, res, l->id, 0, l->u + 0.3 * r, l->v, r, &d, &away)) {
         c->read++;
         c->centred += hypot(d.u - l->u, d.v - l->v) <= 1.0;
     }
     c->near_away += away;
-    c->wrong += rl_verify_read(rec, img, res, other, l->u + 0.3 * r, l->v, r, &d, &away);
+    c->wrong += rl_verify_read(rec, img, res, other, 0, l->u + 0.3 * r, l->v, r, &d, &away);
     /* 2 radii and more from the border: no read from its edge */
-    c->false_read += rl_verify_read_border(rec, img, res, l->id, l->u, l->v, r, &d);
+    c->false_read += rl_verify_read_border(rec, img, res, l->id, 0, l->u, l->v, r, &d);
     /* 2.2 radii off, on the side farthest from the others */
     for (k = 0; k < 8; k++) {
         double u = l->u + 2.2 * r * cos(k * M_PI / 4), v = l->v + 2.2 * r * sin(k * M_PI / 4), o;
@@ -200,7 +200,7 @@ static void verify_landmark(const rl_recog *rec, const rl_image *img, const rl_r
     }
     if (best >= 5.0 * r) {
         c->far++;
-        c->false_read += rl_verify_read(rec, img, res, l->id, fu, fv, r, &d, &away);
+        c->false_read += rl_verify_read(rec, img, res, l->id, 0, fu, fv, r, &d, &away);
         c->far_away += away;
     }
     /* between it and its nearest neighbour, where 2.5 radii hold no ink */
@@ -210,7 +210,7 @@ static void verify_landmark(const rl_recog *rec, const rl_image *img, const rl_r
             hypot(u - l->u, v - l->v) < 3.6 * r || nearest_other(t, -1, u, v) < 3.6 * r)
             continue;
         c->empty++;
-        c->false_read += rl_verify_read(rec, img, res, l->id, u, v, r, &d, &away);
+        c->false_read += rl_verify_read(rec, img, res, l->id, 0, u, v, r, &d, &away);
         c->empty_away += away;
         break;
     }
@@ -233,18 +233,18 @@ static void verify_at_border(const rl_recog *rec, const rl_image *img, const rl_
     if (room >= 1.1 * l->radius || l->visible < 0.6 || nearest_other(t, j, l->u, l->v) < 4 * l->radius)
         return;
     c->tried++;
-    if (rl_verify_read_border(rec, img, res, l->id, l->u + (side ? 0 : 0.2 * r), l->v + (side ? 0.2 * r : 0), r,
+    if (rl_verify_read_border(rec, img, res, l->id, 0, l->u + (side ? 0 : 0.2 * r), l->v + (side ? 0.2 * r : 0), r,
                               &d)) {
         c->read++;
         c->centred += hypot(d.u - l->u, d.v - l->v) <= 1.0;
     }
-    c->wrong += rl_verify_read_border(rec, img, res, other, l->u, l->v, r, &d);
+    c->wrong += rl_verify_read_border(rec, img, res, other, 0, l->u, l->v, r, &d);
     for (s = -1; s <= 1; s += 2) { /* along the border */
         double u = l->u + (side ? 0 : s * 2.2 * r), v = l->v + (side ? s * 2.2 * r : 0);
         if (u < 0 || v < 0 || u > img->width - 1 || v > img->height - 1 || nearest_other(t, j, u, v) < 3 * r)
             continue;
         c->empty++;
-        c->false_read += rl_verify_read_border(rec, img, res, l->id, u, v, r, &d);
+        c->false_read += rl_verify_read_border(rec, img, res, l->id, 0, u, v, r, &d);
     }
 }
 

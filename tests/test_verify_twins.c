@@ -11,7 +11,12 @@
  *       is read on most of them (the rest go to the costly reads), so
  *       nothing is passed by reading nothing. Degraded frames gave a
  *       whole 2 verified as 18 (0.883 against 0.813) before the twins
- *       were held against the id at every radius tried (rl_verify.c). */
+ *       were held against the id at every radius tried (rl_verify.c).
+ *       Then the same verified as known (rl_verify_read's `known`: the
+ *       id judged against its rivals alone, rl_rivals) as every other id
+ *       of the family, not its twins only: none taken, its own read as
+ *       known where it is read with every id matched (brute force over
+ *       the pairs the frames hold; docs/tracking.md, eleventh session). */
 #include "rl_test.h"
 #include <math.h>
 #include "fixture_eval.h"
@@ -24,16 +29,18 @@ static fixture_sets fs;
 
 typedef struct {
     int whole, near_border, own, twins, wrong;
+    int own_known, others, others_taken; /* verified as known */
 } twin_counts;
 
 /* The verification of id at landmark l: the border read where the
  * centre step cannot run (room under 1.2 radii), else the usual one. */
-static int verify(const rl_recog *rec, const rl_image *img, const rl_result *res, const truth_landmark *l, int id)
+static int verify(const rl_recog *rec, const rl_image *img, const rl_result *res, const truth_landmark *l, int id,
+                  int known)
 {
     rl_detection d;
     int away;
-    return rl_verify_read(rec, img, res, id, l->u, l->v, l->radius, &d, &away) ||
-           rl_verify_read_border(rec, img, res, id, l->u, l->v, l->radius, &d);
+    return rl_verify_read(rec, img, res, id, known, l->u, l->v, l->radius, &d, &away) ||
+           rl_verify_read_border(rec, img, res, id, known, l->u, l->v, l->radius, &d);
 }
 
 static void frame_twins(rl_heap_recog *hr, const char *set, const truth *t, twin_counts *c)
@@ -41,7 +48,7 @@ static void frame_twins(rl_heap_recog *hr, const char *set, const truth *t, twin
     static rl_result res;
     char png[1200], err[512];
     rl_image img;
-    int j, z;
+    int j, z, k, own;
     snprintf(png, sizeof png, "%s/%s", fs.dir, t->image);
     if (rl_png_read_gray(png, &img, err, sizeof err) != RL_OK)
         fail_msg("%s", err);
@@ -54,13 +61,26 @@ static void frame_twins(rl_heap_recog *hr, const char *set, const truth *t, twin
             continue;
         c->whole++;
         c->near_border += fmin(fmin(l->u, l->v), fmin(img.width - 1 - l->u, img.height - 1 - l->v)) < 1.2 * l->radius;
-        c->own += verify(hr->rec, &img, &res, l, l->id);
+        own = verify(hr->rec, &img, &res, l, l->id, 0);
+        c->own += own;
+        c->own_known += own && verify(hr->rec, &img, &res, l, l->id, 1);
+        for (k = 0; k < hr->rec->templates.n; k++) {
+            int other = hr->rec->templates.ids[k];
+            if (other == l->id)
+                continue;
+            c->others++;
+            if (verify(hr->rec, &img, &res, l, other, 1)) {
+                c->others_taken++;
+                printf("%s: a whole %d at (%.1f, %.1f), radius %.1f, verified as known %d\n", set, l->id, l->u, l->v,
+                       l->radius, other);
+            }
+        }
         for (z = 0; z < fam->bits; z++) {
             int twin = l->id ^ (1 << z);
             if (!rl_family_valid(fam, twin))
                 continue;
             c->twins++;
-            if (verify(hr->rec, &img, &res, l, twin)) {
+            if (verify(hr->rec, &img, &res, l, twin, 0)) {
                 c->wrong++;
                 printf("%s: a whole %d at (%.1f, %.1f), radius %.1f, verified as its twin %d\n", set, l->id, l->u,
                        l->v, l->radius, twin);
@@ -91,6 +111,10 @@ static void no_twin_confirmed(void **state)
     assert_true(c.whole >= 100 && c.near_border >= 30);
     assert_true(c.own >= 0.6 * c.whole);
     assert_int_equal(c.wrong, 0);
+    printf("verified as known: %d of the %d read as their own id; %d of %d other ids taken\n", c.own_known, c.own,
+           c.others_taken, c.others);
+    assert_int_equal(c.others_taken, 0);
+    assert_true(c.own_known >= c.own - c.own / 50);
 }
 
 int main(int argc, char **argv)

@@ -27,6 +27,16 @@
 #include "rl_image.h"
 #include "rl_recog.h"
 
+/* Where the landmarks' size R is known (the frame's median, a map's
+ * landmark predicted), a landmark enclosing a candidate is no larger than
+ * 1.45 times it (the lens's spread of sizes): its outer ring starts within
+ * RL_INNER_REACH R + RL_INNER_REACH_PX of the candidate's centre (0.8 of
+ * that, blur and the rays' steps). Beyond, a grille or striped ceiling
+ * past a narrow margin looked like a ring around landmarks of the frame's
+ * size (next to lamps, on composited photos: 2-3% of them). */
+#define RL_INNER_REACH 1.16
+#define RL_INNER_REACH_PX 2.0
+
 /* 1 if the candidate (cx, cy, r) is enclosed by a concentric dark ring
  * that starts within `reach` px of its centre (0: within 2.9 r, the ring
  * around the smallest mimic); rays are looked along from 1.3 r, past the

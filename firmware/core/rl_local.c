@@ -438,20 +438,10 @@ static int is_duclr(const rl_recog_config *cfg, const rl_result *res, const rl_d
     return (near_light || on_border || landmark_sized) && (!on_border || u->visible >= 0.5);
 }
 
-/* Where the frame's landmark size is known, a landmark enclosing a
- * candidate is no larger than 1.45 times it (the lens's spread of sizes,
- * as LOCATE_SIZE_TOLERANCE allows): its outer ring starts within 0.8 of
- * that, 1.16 of the frame's radii, and 2 px (blur, the rays' steps).
- * Beyond, a grille or striped ceiling past a narrow margin looked like a
- * ring around landmarks of the frame's size (next to lamps, on composited
- * photos: 2-3% of them). */
-#define ENCLOSER_REACH 1.16
-#define ENCLOSER_SLACK_PX 2.0
-
 void rl_local_pass(rl_recog *rec, const rl_image *img, rl_result *res)
 {
     double rexp = rl_result_median_radius(res);
-    double reach = rexp > 0 ? ENCLOSER_REACH * rexp + ENCLOSER_SLACK_PX : 0.0; /* 0: the frame's size unknown */
+    double reach = rexp > 0 ? RL_INNER_REACH * rexp + RL_INNER_REACH_PX : 0.0; /* 0: the frame's size unknown */
     int i, kept = 0, n = res->n_unidentified;
     for (i = 0; i < n; i++) {
         rl_detection u = res->unidentified[i], d;
@@ -478,7 +468,7 @@ int rl_local_whole(int W, int H, const rl_detection *u, double cx, double cy, do
 int rl_local_read(rl_recog *rec, const rl_image *img, const rl_result *res, const rl_detection *u, double R,
                   rl_detection *out)
 {
-    return local_candidate(rec, img, res, u, R, ENCLOSER_REACH * R + ENCLOSER_SLACK_PX, -INFINITY, NULL, NULL, out);
+    return local_candidate(rec, img, res, u, R, RL_INNER_REACH * R + RL_INNER_REACH_PX, -INFINITY, NULL, NULL, out);
 }
 
 int rl_local_read_circle(rl_recog *rec, const rl_image *img, const rl_result *res, const rl_detection *u,
@@ -491,6 +481,6 @@ int rl_local_read_circle(rl_recog *rec, const rl_image *img, const rl_result *re
     rd.cx = cx;
     rd.cy = cy;
     rd.r = r;
-    return circle_reads(rec, img, res, u, R, ENCLOSER_REACH * R + ENCLOSER_SLACK_PX, rec->cfg.local_min_first, NULL,
+    return circle_reads(rec, img, res, u, R, RL_INNER_REACH * R + RL_INNER_REACH_PX, rec->cfg.local_min_first, NULL,
                         NULL, rd, out);
 }

@@ -21,6 +21,7 @@
 #include "rl_label.h"
 #include "rl_polar.h"
 #include "rl_recog.h"
+#include "rl_rivals.h"
 #include "rl_split.h"
 #include "rl_templates.h"
 #include "rl_tones.h"
@@ -30,6 +31,7 @@ struct rl_recog {
     int width, height;
     int ids[RL_MAX_IDS]; /* copy of cfg.ids */
     rl_templates templates;        /* rendered at init */
+    rl_rivals rivals;    /* each id's rivals, for a known window's read (rl_verify) */
     rl_tones tones; /* the camera's tone curve, configured or learned */
     const rl_tone *tone; /* the one this frame is read through (in tones) */
     rl_label dark;  /* ROI labelling: the frame, its second labellings (rl_split), then the

@@ -248,6 +248,17 @@ static int verifies(const rl_track_window *w, double shift, const rl_detection *
 #define CUT_READS 3
 #define CUT_VISIBLE 0.97
 
+/* Whether map entry index kept its id through the zone twins' check in
+ * the frame before (t->known). */
+static int was_known(const rl_track *t, int index)
+{
+    int k;
+    for (k = 0; k < t->n_known; k++)
+        if (t->known[k] == index)
+            return 1;
+    return 0;
+}
+
 /* 1 when the window of w reads its predicted id near the prediction
  * (within `shift` radii; the read into *d): first verified there
  * (rl_verify); when that is not clear and `full` is 1, as the global pass
@@ -257,11 +268,14 @@ static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, co
                        double shift, int full, const rl_result *res, rl_detection *d)
 {
     rl_detection u;
+    /* kept in the frame before (read by windows, its pose taken): its id
+     * judged against its rivals alone (rl_verify) */
+    int known = was_known(t, w->index);
     /* a window verification does not take is read the costly way, even
      * when its ink drew the centre past the reach or no ink showed (*away):
      * a review found both where the costly reads find the landmark (the
      * centre settled just past 1.5 radii off, a faint one under midway grey) */
-    if (rl_verify_read(rec, img, res, w->id, w->u, w->v, w->radius, d, NULL) && verifies(w, shift, d))
+    if (rl_verify_read(rec, img, res, w->id, known, w->u, w->v, w->radius, d, NULL) && verifies(w, shift, d))
         return 1;
     if (!full)
         return 0;
@@ -270,7 +284,7 @@ static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, co
      * deeper is not read this way (among the first reads it moved the
      * frame's shift: docs/tracking.md) */
     if (w->visible >= CUT_VISIBLE &&
-        rl_verify_read_border(rec, img, res, w->id, w->u, w->v, w->radius, d) && verifies(w, shift, d))
+        rl_verify_read_border(rec, img, res, w->id, known, w->u, w->v, w->radius, d) && verifies(w, shift, d))
         return 1;
     window_candidate(w, img->width, img->height, &u);
     if (u.complete && (read_box(rec, img, res, &u, d) == w->id ||
@@ -312,17 +326,6 @@ static void shift_apply(const frame_shift *f, rl_track_window *w)
         a = (f->w + (f->y * f->du - f->x * f->dv) / f->n) / spread;
     w->u += (f->du + a * f->y) / f->n - a * y;
     w->v += (f->dv - a * f->x) / f->n + a * x;
-}
-
-/* Whether map entry index kept its id through the zone twins' check in
- * the frame before (t->known). */
-static int was_known(const rl_track *t, int index)
-{
-    int k;
-    for (k = 0; k < t->n_known; k++)
-        if (t->known[k] == index)
-            return 1;
-    return 0;
 }
 
 /* The windows read, whole ones first: the first within max_first_shift

@@ -194,11 +194,36 @@ static int twin_fits_as_well(const rl_recog *rec, const rl_profile *wide, int id
     return 0;
 }
 
+/* A known landmark's id (rl_verify.h: `known`) against its rivals alone
+ * (rl_rivals) when its templates score RL_RIVALS_TAKEN or more at q: into
+ * m->second their best, which the rule's lead and the zone twins' check
+ * (twin_fits_as_well: the twins are rivals) take as the runner-up. 0 when
+ * the rivals were not worked out or the id scores under that: every id is
+ * matched instead. */
+static int rivals_only(const rl_recog *rec, const rl_profile *q, int id, rl_match *m)
+{
+    int rv[RL_MAX_IDS], n;
+    rl_match r;
+    if (!(m->score >= RL_RIVALS_TAKEN) || (n = rl_rivals_of(&rec->rivals, &rec->templates, id, rv)) < 0)
+        return 0;
+    rl_match_ids(&rec->templates, q, rv, n, -1, &r);
+    if (r.id >= 0 && r.score > m->score) {
+        /* a rival leads: not id (every id matched would say the same) */
+        double own = m->score;
+        *m = r;
+        m->second = fmax(own, r.second);
+    } else if (r.id >= 0) {
+        m->second = fmax(m->second, r.score);
+    }
+    return 1;
+}
+
 /* The match of every id at every blur against the profile read at scale
  * s of the gathered one (into *m), as the global pass matches; 1 when the
- * rule takes it as id. */
+ * rule takes it as id. A known landmark's id is matched against its
+ * rivals alone when it scores high enough (rivals_only). */
 static int judged(const rl_recog *rec, const rl_accept_rule *rule, const rl_levels *local,
-                  const rl_profile *wide, double s, int id, rl_match *m)
+                  const rl_profile *wide, double s, int id, int known, rl_match *m)
 {
     rl_profile q;
     rl_profile_rescale(wide, s, &q);
@@ -208,7 +233,8 @@ static int judged(const rl_recog *rec, const rl_accept_rule *rule, const rl_leve
     rl_match_ids(&rec->templates, &q, &id, 1, -1, m);
     if (!(m->id == id && m->score >= rule->min_score))
         return 0;
-    rl_match_all(&rec->templates, &q, m);
+    if (!(known && rivals_only(rec, &q, id, m)))
+        rl_match_all(&rec->templates, &q, m);
     return m->id == id && rl_accept(rule, m, rl_accept_span(local, rec->tone, &q));
 }
 
@@ -216,7 +242,7 @@ static int judged(const rl_recog *rec, const rl_accept_rule *rule, const rl_leve
  * as id (judged, best_of; local: the levels at the prediction), not a
  * code ring; into *d. */
 static int read_at(const rl_recog *rec, const rl_image *img, const rl_result *res, const rl_levels *local,
-                   int id, double r, rl_detection *d)
+                   int id, int known, double r, rl_detection *d)
 {
     rl_accept_rule rule;
     rl_profile wide;
@@ -230,12 +256,12 @@ static int read_at(const rl_recog *rec, const rl_image *img, const rl_result *re
     rule = rl_accept_rule_at(&rec->cfg, RL_PASS_GLOBAL,
                              rl_result_light_gap(res, &d->box) <= rec->cfg.near_light * r);
     rl_profile_gather_rows(img, rec->tone, d->u, d->v, RADIUS_WIDEST * r, GATHER_ROWS, &wide);
-    taken = judged(rec, &rule, local, &wide, s, id, &m);
+    taken = judged(rec, &rule, local, &wide, s, id, known, &m);
     if (!taken) {
         double bs;
         best_of(&rec->templates, &wide, id, &bs);
         if (bs != s)
-            taken = judged(rec, &rule, local, &wide, s = bs, id, &m);
+            taken = judged(rec, &rule, local, &wide, s = bs, id, known, &m);
     }
     if (taken && m.score - m.second < TWIN_CLEAR && twin_fits_as_well(rec, &wide, id, s, &m))
         taken = 0;
@@ -244,8 +270,12 @@ static int read_at(const rl_recog *rec, const rl_image *img, const rl_result *re
     d->score = m.score;
     d->runner_up = m.second;
     /* not a code ring of a larger landmark read as its own (as the global
-     * pass drops one) */
-    if (!taken || rl_inner_enclosed(img, res->levels.light, d->u, d->v, d->radius, 0.0))
+     * pass drops one); around a known landmark, no larger than the map's
+     * landmarks, r as predicted (the local pass bounds it by the frame's
+     * size alike): its rays stop past the quiet zone */
+    if (!taken ||
+        rl_inner_enclosed(img, res->levels.light, d->u, d->v, d->radius,
+                          known ? RL_INNER_REACH * r + RL_INNER_REACH_PX : 0.0))
         return 0;
     d->id = id;
     d->pass = RL_PASS_GLOBAL;
@@ -254,8 +284,8 @@ static int read_at(const rl_recog *rec, const rl_image *img, const rl_result *re
     return 1;
 }
 
-int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
-                   double v, double r, rl_detection *d, int *away)
+int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, int known,
+                   double u, double v, double r, rl_detection *d, int *away)
 {
     rl_levels local;
     int far = 0;
@@ -273,11 +303,11 @@ int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *re
             *away = far;
         return 0;
     }
-    return read_at(rec, img, res, &local, id, r, d);
+    return read_at(rec, img, res, &local, id, known, r, d);
 }
 
-int rl_verify_read_border(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
-                          double v, double r, rl_detection *d)
+int rl_verify_read_border(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, int known,
+                          double u, double v, double r, rl_detection *d)
 {
     rl_levels local;
     memset(d, 0, sizeof *d);
@@ -288,5 +318,5 @@ int rl_verify_read_border(const rl_recog *rec, const rl_image *img, const rl_res
         !edge_centre(img, rec->tone, res->levels.light, r, &d->u, &d->v))
         return 0;
     rl_accept_levels_at(&rec->illum, &res->levels, u, v, &local);
-    return read_at(rec, img, res, &local, id, r, d);
+    return read_at(rec, img, res, &local, id, known, r, d);
 }

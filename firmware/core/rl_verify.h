@@ -21,7 +21,7 @@
  *
  *   rl_detection d;
  *   int away;
- *   if (rl_verify_read(rec, &img, &res, 17, 320.5, 240.2, 25.4, &d, &away))
+ *   if (rl_verify_read(rec, &img, &res, 17, 0, 320.5, 240.2, 25.4, &d, &away))
  *       use(d.u, d.v);   // id 17 there
  *   else if (away)
  *       use(0);          // its ink is not near the prediction
@@ -32,7 +32,11 @@
 #include "rl_recog_state.h"
 
 /* 1 when the landmark of `id` predicted at (u, v) with radius r (px) is
- * read there: into *d (centre refined, the radius within a few percent of
+ * read there. known 1: the track already knows the landmark there (read
+ * by windows in the frame before, its pose taken): when id's templates
+ * score RL_RIVALS_TAKEN or more, id is judged against its rivals alone
+ * (rl_rivals.h: the ids whose landmark can score that high as id; the
+ * runner-up reported is theirs), not every id; 0: every id, always: into *d (centre refined, the radius within a few percent of
  * r). 0 when the read is not clear (cut by the border, not found near the
  * prediction, another id or a runner-up too close, a zone twin that fits
  * as well at its own best radius, a code ring): read the
@@ -44,18 +48,18 @@
  * 1.5 radii off a landmark that is within them, and a faint landmark can
  * have nothing under midway grey (rl_track reads such a window the costly
  * way); on failure d's id, score and runner-up are unspecified. */
-int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
-                   double v, double r, rl_detection *d, int *away);
+int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, int known,
+                   double u, double v, double r, rl_detection *d, int *away);
 
 /* The same read of a landmark next to the border (the centre step's disk
  * would leave the frame: rl_verify_read gives no read there), its centre
  * the circle through its outer edge's visible part (rl_edge_fit_rays, from
  * the prediction, fitted twice, its radius within 10% of r, within 1.5
  * radii of the prediction); then gathered, judged and checked as
- * rl_verify_read's. 0 at once for a prediction clear of the border (1.2
+ * rl_verify_read's (known as there). 0 at once for a prediction clear of the border (1.2
  * radii of room). The caller uses it for a window the costly reads would
  * otherwise take (rl_track). */
-int rl_verify_read_border(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, double u,
-                          double v, double r, rl_detection *d);
+int rl_verify_read_border(const rl_recog *rec, const rl_image *img, const rl_result *res, int id, int known,
+                          double u, double v, double r, rl_detection *d);
 
 #endif

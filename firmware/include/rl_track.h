@@ -8,8 +8,9 @@
  * (those entering across the border too). rl_track_read reads only there,
  * the predictions in an order that spreads them over the frame: each first
  * verified where predicted (its centre drawn to its ink, its profile
- * judged by the global pass's rule against every id, and refused where a
- * zone twin fits as well at its own radius: rl_verify; next to the border,
+ * judged by the global pass's rule against every id, or, for a landmark
+ * known from the frame before, against its id's rivals alone, and refused
+ * where a zone twin fits as well at its own radius: rl_verify; next to the border,
  * from its visible edge: rl_verify_read_border), else as
  * the global pass reads a candidate whose box is the prediction, else,
  * for a landmark about whole, as the local pass reads
