@@ -226,7 +226,7 @@ static int32_t unite(int32_t *p, int32_t root, int32_t b)
 /* Append run [a, b] of the current row and join it with the previous
  * row's runs it touches (8-connected): they are sorted, so the forward
  * pointer *j suffices. */
-static rl_err add_run(rl_label *lb, int a, int b, int *n, int *j, int prev_end)
+static inline rl_err add_run(rl_label *lb, int a, int b, int *n, int *j, int prev_end)
 {
     int32_t *p = lb->tag, root = *n;
     int jj;
