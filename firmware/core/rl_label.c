@@ -226,7 +226,7 @@ static int32_t unite(int32_t *p, int32_t root, int32_t b)
 /* Append run [a, b] of the current row and join it with the previous
  * row's runs it touches (8-connected): they are sorted, so the forward
  * pointer *j suffices. */
-static rl_err add_run(rl_label *lb, int a, int b, int *n, int *j, int prev_end)
+static inline rl_err add_run(rl_label *lb, int a, int b, int *n, int *j, int prev_end)
 {
     int32_t *p = lb->tag, root = *n;
     int jj;
@@ -286,20 +286,22 @@ static rl_err row_runs(rl_label *lb, const uint8_t *row, int xa, int width, int 
     if (all)
         return add_run(lb, 0, width - 1, n, &j, prev_end);
     for (x = xa; x < width; x += CHUNK) {
-        int len = width - x < CHUNK ? width - x : CHUNK, pos = 0;
-        uint64_t bits;
+        int len = width - x < CHUNK ? width - x : CHUNK;
+        uint64_t bits, edges;
         /* outside a run, a chunk with no pixel in the band changes
          * nothing (in a run it ends the run: its tests say where) */
         if (open < 0 && lo > 0 && len == CHUNK && chunk_under(row + x, lo))
             continue;
         bits = chunk_bits(row + x, lb->span + x, lo, len, x);
-        while (pos < len) {
-            uint64_t rest = (open < 0 ? bits : ~bits) >> pos;
-            if (rest == 0)
-                break; /* the chunk ends as it is: outside, or in a run */
-            pos += trailing_zeros(rest);
-            if (pos >= len)
-                break;
+        /* a bit where a pixel's test differs from the one before it (the
+         * chunk's first against the run open or not): the starts and ends
+         * in turn, lowest first, one word for the chunk. In a short chunk
+         * the bits past the row are clear, so a run that reaches the row's
+         * end ends at the first of them, where the row ends it anyway. */
+        edges = bits ^ (bits << 1 | (uint64_t)(open >= 0));
+        while (edges) {
+            int pos = trailing_zeros(edges);
+            edges &= edges - 1;
             if (open < 0) {
                 open = x + pos;
             } else {

@@ -23,22 +23,44 @@
 #define PACK_S_SHIFT 32
 #define PACK_MAX 4095 /* 4095 * 255 < 2^20, 4095 * 255^2 < 2^31 */
 
-/* Add the packed sums to the raw float cells and clear them. */
+/* Add the packed sums to the raw float cells (first: into cells not yet
+ * written, set to them: the same floats as 0 plus them) and clear them. */
 POLAR_CLONES
-static void unpack_cells(rl_polar *pol)
+static void unpack_cells(rl_polar *pol, int first)
 {
     int sct, k;
     for (sct = 0; sct < RL_SECTORS; sct++) {
         uint64_t *a = pol->acc[sct] + RL_POLAR_PAD;
         float *n = pol->n[sct] + RL_POLAR_PAD, *sm = pol->s[sct] + RL_POLAR_PAD;
         float *q = pol->q[sct] + RL_POLAR_PAD;
-        for (k = 0; k < RL_POLAR_BINS; k++) {
-            uint32_t hi = (uint32_t)(a[k] >> PACK_S_SHIFT), lo = (uint32_t)a[k];
-            n[k] += (float)(int32_t)(hi >> (PACK_N_SHIFT - PACK_S_SHIFT));
-            sm[k] += (float)(int32_t)(hi & ((1u << (PACK_N_SHIFT - PACK_S_SHIFT)) - 1));
-            q[k] += (float)(int32_t)lo;
-            a[k] = 0;
-        }
+        if (first)
+            for (k = 0; k < RL_POLAR_BINS; k++) {
+                uint32_t hi = (uint32_t)(a[k] >> PACK_S_SHIFT), lo = (uint32_t)a[k];
+                n[k] = (float)(int32_t)(hi >> (PACK_N_SHIFT - PACK_S_SHIFT));
+                sm[k] = (float)(int32_t)(hi & ((1u << (PACK_N_SHIFT - PACK_S_SHIFT)) - 1));
+                q[k] = (float)(int32_t)lo;
+                a[k] = 0;
+            }
+        else
+            for (k = 0; k < RL_POLAR_BINS; k++) {
+                uint32_t hi = (uint32_t)(a[k] >> PACK_S_SHIFT), lo = (uint32_t)a[k];
+                n[k] += (float)(int32_t)(hi >> (PACK_N_SHIFT - PACK_S_SHIFT));
+                sm[k] += (float)(int32_t)(hi & ((1u << (PACK_N_SHIFT - PACK_S_SHIFT)) - 1));
+                q[k] += (float)(int32_t)lo;
+                a[k] = 0;
+            }
+    }
+}
+
+/* The float cells' pads (RL_POLAR_PAD either side of a sector's bins, read
+ * by a shifted profile's two-tap filter) zeroed; their bins are written
+ * by the first unpack_cells. */
+static void clear_pads(float (*c)[RL_POLAR_CELLS])
+{
+    int sct;
+    for (sct = 0; sct < RL_SECTORS; sct++) {
+        memset(c[sct], 0, RL_POLAR_PAD * sizeof c[sct][0]);
+        memset(c[sct] + RL_POLAR_PAD + RL_POLAR_BINS, 0, RL_POLAR_PAD * sizeof c[sct][0]);
     }
 }
 
@@ -57,20 +79,54 @@ static int ifloor(double v)
 
 /* The brightest grey level under `light` on a coarse grid over the
  * candidate's disk of reach lim (at least 1). */
+#if defined(__GNUC__) && !defined(RL_NO_VECTOR_EXT) && defined(__BYTE_ORDER__) && \
+    __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+#define POLAR_VECTORS 1
+typedef uint16_t polar_u16x8 __attribute__((vector_size(16)));
+#endif
+
+/* The brightest of row[x0], row[x0 + 2], .. up to x1 under light, or top
+ * where none is brighter. In vectors, 16 bytes at a time: their even bytes
+ * (the low byte of each 16-bit lane: little-endian), those at light or over
+ * zeroed, the lanes' maximum kept; the same maximum as one by one. */
+static int brightest_in_row(const uint8_t *row, int x0, int x1, int light, int top)
+{
+    int x = x0;
+#ifdef POLAR_VECTORS
+    if (x1 - x0 >= 15) {
+        uint16_t l = (uint16_t)(light > 256 ? 256 : light), m[8];
+        polar_u16x8 lim = {l, l, l, l, l, l, l, l}, low = {255, 255, 255, 255, 255, 255, 255, 255};
+        polar_u16x8 best = {0, 0, 0, 0, 0, 0, 0, 0};
+        int k;
+        for (; x + 15 <= x1; x += 16) {
+            polar_u16x8 v, keep;
+            memcpy(&v, row + x, sizeof v);
+            v &= low;
+            v &= (polar_u16x8)(v < lim);
+            keep = (polar_u16x8)(v > best);
+            best = (v & keep) | (best & ~keep);
+        }
+        memcpy(m, &best, sizeof m);
+        for (k = 0; k < 8; k++)
+            top = m[k] > top ? m[k] : top;
+    }
+#endif
+    for (; x <= x1; x += 2)
+        if (row[x] < light && row[x] > top)
+            top = row[x];
+    return top;
+}
+
 static int brightest_below(const rl_image *img, double cx, double cy, double lim, int light)
 {
-    int x, y, top = 1;
+    int y, top = 1;
     int x0 = (int)(cx - lim), x1 = (int)(cx + lim), y0 = (int)(cy - lim), y1 = (int)(cy + lim);
     if (x0 < 0) x0 = 0;
     if (y0 < 0) y0 = 0;
     if (x1 > img->width - 1) x1 = img->width - 1;
     if (y1 > img->height - 1) y1 = img->height - 1;
-    for (y = y0; y <= y1; y += 2) {
-        const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
-        for (x = x0; x <= x1; x += 2)
-            if (row[x] < light && row[x] > top)
-                top = row[x];
-    }
+    for (y = y0; y <= y1; y += 2)
+        top = brightest_in_row(img->data + (size_t)y * (size_t)img->stride, x0, x1, light, top);
     return top;
 }
 
@@ -83,9 +139,9 @@ static void polar_setup(rl_polar *pol, const rl_tone *tone, int top, double cx, 
     int k, sct;
     double scale = 255.0 / (tone->light[top] > 1 ? tone->light[top] : 1);
     memset(pol->acc, 0, sizeof pol->acc);
-    memset(pol->n, 0, sizeof pol->n);
-    memset(pol->s, 0, sizeof pol->s);
-    memset(pol->q, 0, sizeof pol->q);
+    clear_pads(pol->n);
+    clear_pads(pol->s);
+    clear_pads(pol->q);
     for (k = 0; k < 256; k++)
     {
         double l = tone->light[k] * scale;
@@ -125,7 +181,7 @@ static void gather_cells(rl_polar *pol, const rl_image *img)
                          ? 1 << 30
                          : (int)(PACK_MAX / (bw_box + ch_box + 1.0));
     float inv = (float)(1.0 / bw), fcx = (float)cx;
-    int y, y0 = iceil(cy - lim), y1 = ifloor(cy + lim), rows = 0;
+    int y, y0 = iceil(cy - lim), y1 = ifloor(cy + lim), rows = 0, first = 1;
     uint64_t *acc = &pol->acc[0][0];
     if (flush_rows < 1)
         flush_rows = 1;
@@ -142,7 +198,8 @@ static void gather_cells(rl_polar *pol, const rl_image *img)
         if (half <= 0)
             continue;
         if (++rows > flush_rows) {
-            unpack_cells(pol);
+            unpack_cells(pol, first);
+            first = 0;
             rows = 1;
         }
         /* the row's span inside the outer circle */
@@ -178,7 +235,7 @@ static void gather_cells(rl_polar *pol, const rl_image *img)
                 acc[cell[i]] += pol->lut[row[xs + i]];
         }
     }
-    unpack_cells(pol);
+    unpack_cells(pol, first);
 }
 
 /* Each sector's black and white (extreme means over groups of 4 bins of
