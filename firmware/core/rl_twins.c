@@ -291,15 +291,22 @@ static int keeps(const rl_detection *d, double tol, double other, double own)
 }
 
 /* Whether the rank read may decide d: not for a cut landmark read
- * through a curve whose radius is RL_TWINS_CUT_SIZE or more off the
- * frame's other landmarks' (size; 0: none known, not decided), where the rank read,
+ * through a curve, nor for a cut local read in a frame read as linear,
+ * whose radius is RL_TWINS_CUT_SIZE or more off the frame's other
+ * landmarks' (size; 0: none known, not decided), where the rank read,
  * which leans on the radius, can take its twin: a cut 17 read as 25 at
  * 2.2 with its radius 9% short led 17 by more than RL_TWINS_RANK_LEAD
  * there too (the cut ones it kept right on the development sets were
- * within 4.2%). */
+ * within 4.2%); read as linear, a cut 17 of a moving frame nobody had
+ * tuned on (0.58 in view, next to a lamp), its local read's circle 1.3 px
+ * off and 9.8% short, read as its twin 1 and led 17 so, the 2.2 curve's
+ * 17 0.009 ahead of it (docs/results.md, eleventh session). A global
+ * read's radius comes from its whole box, not a fit to an arc. */
 static int rank_fits(const rl_detection *d, int curved, double size)
 {
-    return !curved || d->complete || (size > 0 && fabs(d->radius - size) < RL_TWINS_CUT_SIZE * size);
+    if (d->complete || (!curved && d->pass != RL_PASS_LOCAL))
+        return 1;
+    return size > 0 && fabs(d->radius - size) < RL_TWINS_CUT_SIZE * size;
 }
 
 /* The median of the n radii r but the i-th (0 when there is no other). */
