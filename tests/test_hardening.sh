@@ -85,7 +85,11 @@ wait $m 2>/dev/null
 cfg "$T/hup.bin" 20 >"$T/hup.yaml"
 "$R" run --config "$T/hup.yaml" 2>"$T/hup.err" &
 pid=$!
-sleep 1
+# its first frame written: running, its signals handled (a loaded machine or
+# a sanitizer build may take seconds to get there)
+i=0
+while [ ! -s "$T/hup.bin" ] && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done
+sleep 0.2
 kill -HUP $pid
 wait $pid; rc=$?
 [ $rc = 0 ] && grep -q "frames dropped (stopped by signal)" "$T/hup.err" && ok || bad "SIGHUP: rc $rc: $(tail -1 "$T/hup.err")"
