@@ -10,9 +10,14 @@
  * twins (one zone apart: a blurred twin scores up to 0.999) and every id
  * on whose landmark the expected id's templates score RL_RIVALS_MIN or
  * more: the landmark modelled as its own templates at every blur, read
- * through tone curves 1, 2.2 and the inverse of 2.2, at its radius and 5%
- * either side, over a uniform disk's pixels. Worked out once at init;
+ * through tone curves 1, 2.2 and the inverse of 2.2, at its radius and
+ * 5% and 10% either side (a prediction a few percent off, then the read's
+ * own 5% search), over a uniform disk's pixels. Worked out once at init;
  * docs/tracking.md (eleventh session) has the table and its margin.
+ *
+ * Not the zone twins' check's rivals (rl_twins: the ids one zone apart
+ * a read is compared with) nor the rank read's (design.md): these are
+ * the ids a known window is matched against instead of every id.
  *
  *   rl_rivals rv;
  *   int ids[RL_MAX_IDS], n;

@@ -198,13 +198,15 @@ static int twin_fits_as_well(const rl_recog *rec, const rl_profile *wide, int id
  * (rl_rivals) when its templates score RL_RIVALS_TAKEN or more at q: into
  * m->second their best, which the rule's lead and the zone twins' check
  * (twin_fits_as_well: the twins are rivals) take as the runner-up. 0 when
- * the rivals were not worked out or the id scores under that: every id is
- * matched instead. */
+ * the rivals were not worked out, the map holds none of them, or the id
+ * scores under that: every id is matched instead. */
 static int rivals_only(const rl_recog *rec, const rl_profile *q, int id, rl_match *m)
 {
     int rv[RL_MAX_IDS], n;
     rl_match r;
-    if (!(m->score >= RL_RIVALS_TAKEN) || (n = rl_rivals_of(&rec->rivals, &rec->templates, id, rv)) < 0)
+    /* no rivals in the map (n 0): every id matched, which is cheap on a
+     * short list, gives the rule its runner-up */
+    if (!(m->score >= RL_RIVALS_TAKEN) || (n = rl_rivals_of(&rec->rivals, &rec->templates, id, rv)) <= 0)
         return 0;
     rl_match_ids(&rec->templates, q, rv, n, -1, &r);
     if (r.id >= 0 && r.score > m->score) {

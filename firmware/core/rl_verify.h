@@ -32,12 +32,13 @@
 #include "rl_recog_state.h"
 
 /* 1 when the landmark of `id` predicted at (u, v) with radius r (px) is
- * read there. known 1: the track already knows the landmark there (read
- * by windows in the frame before, its pose taken): when id's templates
- * score RL_RIVALS_TAKEN or more, id is judged against its rivals alone
- * (rl_rivals.h: the ids whose landmark can score that high as id; the
- * runner-up reported is theirs), not every id; 0: every id, always: into *d (centre refined, the radius within a few percent of
- * r). 0 when the read is not clear (cut by the border, not found near the
+ * read there, into *d (centre refined, the radius within a few percent
+ * of r). known 1: the track already knows the landmark there (read by
+ * windows in the frame before, its pose taken): when id's templates score
+ * RL_RIVALS_TAKEN or more and the map holds rivals of id, id is judged
+ * against its rivals alone (rl_rivals.h: the ids whose landmark can score
+ * that high as id; the runner-up reported is theirs) instead of every id.
+ * known 0: every id, always. 0 when the read is not clear (cut by the border, not found near the
  * prediction, another id or a runner-up too close, a zone twin that fits
  * as well at its own best radius, a code ring): read the
  * window in full. res: the frame's levels (the last full frame's).
