@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Nothing on the robot gets worse with the web view (issue 29). The same
-120 frames (the rendered rect drive at 15 frames a second), four times:
+120 frames (the rendered rect drive at 15 frames a second), four times
+(C those and more, below):
   A  without the web view (and A2, again after B);
   B  with it (--http), the page open in two headless Chromiums throughout;
   C  with it (ringloc.yaml's http: {listen, token}) under hostile clients:
@@ -22,10 +23,14 @@ start side by side while A runs (A's latency is printed as that), and quit
 while A2 starts (within its first SETTLED frames, whose latency is not
 counted); the attack takes some 2 s of C's 8 (the garbage bytes, which
 the server holds unanswered until its 10 s timeout, waited on for 0.5 s:
-no answer, a close and a 400 are accepted alike).
+no answer, a close and a 400 are accepted alike). C is not a fixed number
+of frames: it plays until the attack has returned and AFTER frames more,
+and FRAMES at least, then is stopped (SIGTERM), so a slow machine makes
+it longer, never failed (120 frames, 8 s, on an idle one).
 
 usage: test_view_hostile.py RINGLOC PATHS_DIR TMPDIR"""
 import os
+import signal
 import socket
 import statistics
 import sys
@@ -37,7 +42,8 @@ import view_lib as vl  # noqa: E402
 
 FRAMES = 120       # 8 s at 15 frames a second
 SETTLED = 45       # latency is printed from here on: the browsers started (on CI's cores) by then
-ATTACKED = FRAMES  # the attack (some 2 s) must end before the run does: checked
+AFTER = 15         # run C plays this many frames at least after the attack returned
+CAP = 180 * vl.RATE  # C's --frames: more than CTest's timeout (180 s) lets it play; it is stopped
 TOKEN = "s3cret"
 
 
@@ -150,7 +156,7 @@ def attack(port, fw, ck):
     stop.set()
     threads[0].join()
     time.sleep(0.2)
-    ck.check(fw.poll() is None, "the firmware ended before the attack did (the run is too short to judge)")
+    ck.check(fw.poll() is None, "the firmware ended during the attack (it plays until stopped)")
     for what, raw, ok in GOOD:  # after the attack, the server answers again
         got = status_of(raw, port)
         ck.check(got in ok, "after the attack, %s: answered %d" % (what, got))
@@ -162,7 +168,12 @@ def run(ringloc, tmp, cfg, tag, http=None, during=None, frames=FRAMES):
     if os.path.exists(serial):
         os.remove(serial)
     fw = vl.start_firmware(ringloc, cfg, tmp, frames, http, tag)
-    out = during(fw) if during else None
+    try:
+        out = during(fw) if during else None
+    except BaseException:
+        fw.terminate()  # C's would play on for minutes
+        fw.wait()
+        raise
     if fw.wait(60) != 0:
         raise vl.Fail("run %s exited %d: %s" % (tag, fw.returncode, open(os.path.join(tmp, tag + ".err")).read()))
     return vl.decode(ringloc, serial), out
@@ -179,10 +190,32 @@ def with_browsers(port, drivers):
     return during
 
 
+def sent(ringloc, serial):
+    """The frames on the serial line so far (one being written is skipped)."""
+    return len(vl.decode(ringloc, serial)) if os.path.exists(serial) else 0
+
+
+def attacked(ringloc, serial, port, ck, played):
+    """Run C's: the attack, then frames until AFTER more than had been sent
+    when it returned, FRAMES at least; then the firmware is stopped. played
+    gets that least number of frames."""
+    def during(fw):
+        vl.wait_http(port, fw)
+        flooded = attack(port, fw, ck)
+        n = sent(ringloc, serial)
+        played.append(max(FRAMES, n + AFTER))
+        while fw.poll() is None and n < played[0]:
+            time.sleep(max(0.1, (played[0] - n) / vl.RATE))
+            n = sent(ringloc, serial)
+        fw.send_signal(signal.SIGTERM)
+        return flooded
+    return during
+
+
 def side_by_side(jobs):
     """Start each job (a function) in a thread of its own; the returned
-    function waits for them all and returns their results, or raises the
-    first one's exception."""
+    function waits for them all and returns (result, None) or (None, the
+    exception) for each, never raising."""
     out = [None] * len(jobs)
 
     def one(i):
@@ -197,11 +230,21 @@ def side_by_side(jobs):
     def join():
         for t in threads:
             t.join()
-        for _, e in out:
-            if e is not None:
-                raise e
-        return [r for r, _ in out]
+        return out
     return join
+
+
+def results(outcomes):
+    """side_by_side's outcomes: the results, or the first exception raised."""
+    for _, e in outcomes:
+        if e is not None:
+            raise e
+    return [r for r, _ in outcomes]
+
+
+def quitting(drivers):
+    """Each driver's quit, side by side; the returned function waits for them."""
+    return side_by_side([d.quit for d in drivers])
 
 
 def measure(ringloc, tmp, paths_dir, names):
@@ -211,21 +254,31 @@ def measure(ringloc, tmp, paths_dir, names):
     runs = {}
     cfg = vl.write_config(tmp, paths_dir, names, "A.bin")
     started = side_by_side([lambda: vl.chromium(1024, 768, tmp), lambda: vl.chromium(1024, 768, tmp)])
+    # whatever fails (a run, a Chromium's start), the Chromiums that started
+    # are quit, and the error raised is the first one
     try:
         runs["A"], _ = run(ringloc, tmp, cfg, "A")
-    finally:
-        drivers = [d for d in started() if d is not None]
+    except BaseException:
+        quitting([d for d, e in started() if e is None])()
+        raise
+    opened = started()
+    drivers = [d for d, e in opened if e is None]
     try:
+        results(opened)  # a Chromium that did not start
         port = vl.free_port()
         cfg = vl.write_config(tmp, paths_dir, names, "B.bin")
         runs["B"], updates = run(ringloc, tmp, cfg, "B", "127.0.0.1:%d" % port, with_browsers(port, drivers))
-    finally:
-        quit_all = side_by_side([d.quit for d in drivers])
+    except BaseException:
+        quitting(drivers)()
+        raise
+    quit_all = quitting(drivers)
     try:
         cfg = vl.write_config(tmp, paths_dir, names, "A2.bin")
         runs["A2"], _ = run(ringloc, tmp, cfg, "A2")
-    finally:
+    except BaseException:
         quit_all()
+        raise
+    results(quit_all())
     return runs, updates
 
 
@@ -246,15 +299,17 @@ def main():
     cfg_c = vl.write_config(tmp, paths_dir, names, "C.bin")
     with open(cfg_c, "a") as f:
         f.write("http: {listen: 127.0.0.1:%d, token: %s}\n" % (port, TOKEN))
+    played = []  # C's least number of frames: FRAMES, and AFTER after the attack
     runs["C"], flooded = run(ringloc, tmp, cfg_c, "C", None,
-                             lambda fw: (vl.wait_http(port, fw), attack(port, fw, ck))[1], ATTACKED)
+                             attacked(ringloc, os.path.join(tmp, "C.bin"), port, ck, played), CAP)
     lat["C"] = latencies(runs["C"])
     ck.check(all(u >= 6 for u in updates), "the two pages drew %s frames (they were not live)" % updates)
-    for tag, n in (("A", FRAMES), ("A2", FRAMES), ("B", FRAMES), ("C", ATTACKED)):
+    for tag, n in (("A", FRAMES), ("A2", FRAMES), ("B", FRAMES), ("C", played[0])):
         got = runs[tag]
         poses = [p for p in got if p["type"] == "pose"]
-        ck.check(len(poses) == n and len(got) == n, "run %s: %d pose frames (%d frames in all) for %d frames"
-                 % (tag, len(poses), len(got), n))
+        enough = len(got) >= n if tag == "C" else len(got) == n  # C is stopped, at n frames or after
+        ck.check(len(poses) == len(got) and enough, "run %s: %d pose frames (%d frames in all) for %s%d frames"
+                 % (tag, len(poses), len(got), "at least " if tag == "C" else "", n))
         seqs = [p.get("seq") for p in got]
         gaps = [i for i in range(1, len(seqs)) if seqs[i] != (seqs[i - 1] + 1) % 65536]
         ck.check(not gaps, "run %s: sequence numbers jump at frames %s" % (tag, gaps[:5]))
