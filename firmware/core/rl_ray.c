@@ -160,7 +160,9 @@ void rl_ray_lit_init(rl_ray_lit *lit, const rl_tone *tone, int light)
 /* A sample is NaN exactly when one of its four pixels is at or above the
  * light level: tone's light is finite, and a NaN among the four carries
  * through every term of the interpolation, even at weight 0 (0 * NaN is
- * NaN), as rl_ray_sample stops on a pixel whatever its weight. */
+ * NaN), as rl_ray_sample stops on a pixel whatever its weight. The core
+ * is built without fast-math (firmware/CMakeLists.txt), under which the
+ * NaN test could be dropped; test_ray would then fail. */
 RL_CLONES_AVX2
 int rl_ray_sample_lit(const rl_image *img, const rl_ray_lit *lit, double x, double y, double dx,
                       double dy, int n, float *out)
