@@ -5,7 +5,10 @@
  * without a light level, the answer and the bits of the formula written
  * here sample by sample (in a view whose rows are longer than it); a ray
  * rl_ray_inside takes reads no pixel outside the image, its end a hair
- * under the last column or row. */
+ * under the last column or row. The light table (rl_ray_lit) against
+ * its definition at every level and light level 1 .. 256, and its rays
+ * against the formula and rl_ray_sample at every light level, including a
+ * light pixel that weighs nothing in its sample. */
 #include <math.h>
 #include "rl_test.h"
 #include "rl_ray.h"
@@ -184,6 +187,115 @@ static void ends_at_the_last_pixel(void **state)
     assert_true(taken > 1000);
 }
 
+/* Every grey level's entry for light levels 1 .. 256 and two curves:
+ * NaN at or above the level, below it tone's light bit for bit. */
+static void lit_table_is_its_definition(void **state)
+{
+    static const double gammas[] = {1.0, 2.2};
+    int k, light, g;
+    (void)state;
+    for (k = 0; k < 2; k++) {
+        rl_tone tone;
+        rl_tone_init(&tone, gammas[k]);
+        for (light = 1; light <= 256; light++) {
+            rl_ray_lit lit;
+            rl_ray_lit_init(&lit, &tone, light);
+            for (g = 0; g < 256; g++) {
+                if (g >= light) {
+                    assert_true(isnan(lit.light[g]));
+                } else {
+                    assert_false(isnan(lit.light[g]));
+                    assert_memory_equal(&lit.light[g], &tone.light[g], sizeof(float));
+                }
+            }
+        }
+    }
+}
+
+/* Random rays at every light level 1 .. 256 over an image of 8 x 8 blocks
+ * (each a random level 0 .. 239 and noise up to 15 over it, every grey
+ * level in the image): rl_ray_sample_lit gives the formula's answer (and
+ * rl_ray_sample's), and on 1 the formula's bits; rays of both answers at
+ * most levels. */
+static void lit_rays_are_the_formula(void **state)
+{
+    rl_tone tone;
+    rl_image img = rl_image_view(W - 13, H - 5, W, px);
+    uint32_t seed = 31337;
+    uint8_t base[(H / 8) * (W / 8)];
+    int i, light, stopped = 0, passed = 0, both = 0;
+    (void)state;
+    for (i = 0; i < (H / 8) * (W / 8); i++) {
+        seed = seed * 1664525u + 1013904223u;
+        base[i] = (uint8_t)((seed >> 8) % 240);
+    }
+    for (i = 0; i < W * H; i++) {
+        seed = seed * 1664525u + 1013904223u;
+        px[i] = (uint8_t)(base[i / W / 8 * (W / 8) + i % W / 8] + (seed >> 28));
+    }
+    rl_tone_init(&tone, 2.2);
+    for (light = 1; light <= 256; light++) {
+        rl_ray_lit lit;
+        int t, stops = 0, passes = 0;
+        rl_ray_lit_init(&lit, &tone, light);
+        for (t = 0; t < 300; t++) {
+            float a[64], b[64], c[64];
+            double x, y, dx, dy;
+            int n = random_ray(&seed, &x, &y, &dx, &dy), want;
+            if (!rl_ray_inside(&img, x, y, x + (n - 1) * dx, y + (n - 1) * dy))
+                continue;
+            want = oracle(&img, &tone, x, y, dx, dy, n, light, a);
+            assert_int_equal(rl_ray_sample(&img, &tone, x, y, dx, dy, n, light, c), want);
+            assert_int_equal(rl_ray_sample_lit(&img, &lit, x, y, dx, dy, n, b), want);
+            if (want)
+                assert_memory_equal(a, b, (size_t)n * sizeof(float));
+            stops += !want;
+            passes += want;
+        }
+        both += stops > 0 && passes > 0;
+        stopped += stops;
+        passed += passes;
+    }
+    assert_true(stopped > 10000 && passed > 5000 && both > 200);
+}
+
+/* A light pixel at weight 0 still stops the ray, as in rl_ray_sample (a
+ * sample touches its four pixels whatever their weights): samples on
+ * whole pixels, the light one right of, below or diagonal to a sample,
+ * that sample first, in the middle of four, or in the tail past the last
+ * four. */
+static void lit_pixel_at_weight_zero(void **state)
+{
+    static const int at[3][2] = {{1, 0}, {0, 1}, {1, 1}};
+    rl_tone tone;
+    rl_image img = rl_image_view(W, H, W, px);
+    rl_ray_lit lit;
+    int k, s, n;
+    (void)state;
+    rl_tone_init(&tone, 2.2);
+    rl_ray_lit_init(&lit, &tone, 200);
+    for (k = 0; k < 3; k++) {
+        for (n = 1; n <= 9; n++) {
+            for (s = 0; s < n; s++) {
+                float a[9], b[9];
+                memset(px, 100, sizeof px);
+                /* the ray (10, 20), (11, 20) .. in whole pixels; sample s's pixel
+                 * (10 + s, 20) offset by at[k] is light */
+                px[(20 + at[k][1]) * W + 10 + s + at[k][0]] = 230;
+                if (at[k][0] == 1 && s + 1 < n)
+                    continue; /* that pixel is the next sample's own, at weight 1 */
+                assert_int_equal(oracle(&img, &tone, 10.0, 20.0, 1.0, 0.0, n, 200, a), 0);
+                assert_int_equal(rl_ray_sample_lit(&img, &lit, 10.0, 20.0, 1.0, 0.0, n, b), 0);
+                /* under a level it does not reach, the ray passes */
+                assert_int_equal(rl_ray_sample_lit(&img, (rl_ray_lit_init(&lit, &tone, 231), &lit), 10.0, 20.0,
+                                                   1.0, 0.0, n, b),
+                                 1);
+                rl_ray_lit_init(&lit, &tone, 200);
+            }
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -191,6 +303,9 @@ int main(void)
         cmocka_unit_test(no_light_path_same),
         cmocka_unit_test(rays_are_the_formula),
         cmocka_unit_test(ends_at_the_last_pixel),
+        cmocka_unit_test(lit_table_is_its_definition),
+        cmocka_unit_test(lit_rays_are_the_formula),
+        cmocka_unit_test(lit_pixel_at_weight_zero),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -82,8 +82,8 @@ static double steepest_rise(const float *prof, int ns, int ib, double span)
 /* The outer edge's radius along direction (c, s) from (cx, cy), between
  * the ring's black inside r and the paper's white outside it; -1 when the
  * ray leaves the image, meets light or shows no clear edge. */
-static double ray_edge(const rl_image *img, const rl_tone *tone, int light, double cx, double cy,
-                       double r, double c, double s)
+static double ray_edge(const rl_image *img, const rl_ray_lit *lit, double cx, double cy, double r,
+                       double c, double s)
 {
     float prof[EDGE_MAX_SAMPLES], black = 1e9f, white = -1e9f;
     int i, ns = (int)(EDGE_SPAN * r / EDGE_STEP) + 1, ib = 0, ir;
@@ -93,7 +93,7 @@ static double ray_edge(const rl_image *img, const rl_tone *tone, int light, doub
         step = EDGE_SPAN * r / (ns - 1);
     }
     if (!rl_ray_inside(img, x, y, x + (ns - 1) * step * c, y + (ns - 1) * step * s) ||
-        !rl_ray_sample(img, tone, x, y, step * c, step * s, ns, light, prof))
+        !rl_ray_sample_lit(img, lit, x, y, step * c, step * s, ns, prof))
         return -1;
     ir = (int)((r - r0) / step);
     for (i = 0; i < ns; i++) {
@@ -114,11 +114,13 @@ static int edge_points(const rl_image *img, const rl_tone *tone, int light, doub
                        double *ex, double *ey, uint64_t *found)
 {
     double dc[RL_EDGE_RAYS], ds[RL_EDGE_RAYS];
+    rl_ray_lit lit; /* light folded into the tone curve, once for the rays */
     int a, n = 0;
     rl_ray_dirs(RL_EDGE_RAYS, dc, ds);
+    rl_ray_lit_init(&lit, tone, light);
     *found = 0;
     for (a = 0; a < RL_EDGE_RAYS; a++) {
-        double rr = ray_edge(img, tone, light, cx, cy, r, dc[a], ds[a]);
+        double rr = ray_edge(img, &lit, cx, cy, r, dc[a], ds[a]);
         if (rr < 0)
             continue;
         ex[n] = cx + rr * dc[a];
