@@ -204,9 +204,19 @@ def attacked(ringloc, serial, port, ck, played):
         flooded = attack(port, fw, ck)
         n = sent(ringloc, serial)
         played.append(max(FRAMES, n + AFTER))
+        # bounded: a firmware that stops writing frames but runs on must
+        # fail here, not hang to CTest's timeout
+        deadline = time.time() + 30 + played[0] / vl.RATE
+        last, grew = n, time.time()
         while fw.poll() is None and n < played[0]:
+            if time.time() > deadline or time.time() - grew > 10:
+                ck.check(False, "run C: %d of %d frames, none in the last %.0f s" %
+                         (n, played[0], time.time() - grew))
+                break
             time.sleep(max(0.1, (played[0] - n) / vl.RATE))
             n = sent(ringloc, serial)
+            if n > last:
+                last, grew = n, time.time()
         fw.send_signal(signal.SIGTERM)
         return flooded
     return during
@@ -221,7 +231,7 @@ def side_by_side(jobs):
     def one(i):
         try:
             out[i] = (jobs[i](), None)
-        except Exception as e:  # noqa: BLE001 (re-raised in the caller's thread)
+        except BaseException as e:  # noqa: BLE001 (re-raised in the caller's thread)
             out[i] = (None, e)
     threads = [threading.Thread(target=one, args=(i,)) for i in range(len(jobs))]
     for t in threads:

@@ -5,6 +5,12 @@
 #include <string.h>
 #include "rl_clones.h"
 
+/* rl_ray_sample_lit finds light by NaN samples: a build that assumes no
+ * NaN (-ffast-math, -Ofast, -ffinite-math-only) would read through light. */
+#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
+#error "rl_ray.c tests samples for NaN: build the core without -ffast-math, -Ofast or -ffinite-math-only"
+#endif
+
 /* By rotation from the first direction: four trigonometric calls instead
  * of 2 n. */
 void rl_ray_dirs(int n, double *c, double *s)
@@ -147,7 +153,7 @@ int rl_ray_sample(const rl_image *img, const rl_tone *tone, double x, double y, 
     return sample_ray(img, tone, x, y, dx, dy, n, light, out);
 }
 
-/* A copy and a fill (light is mostly near the top: few NaNs), some 100
+/* A copy and a fill (light is mostly near the top: few NaNs), about 190
  * instructions where a test a level took 1,800. */
 void rl_ray_lit_init(rl_ray_lit *lit, const rl_tone *tone, int light)
 {
