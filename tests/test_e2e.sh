@@ -71,8 +71,9 @@ sed 's|backend: png, device: frames_abs.txt|backend: v4l2, device: /nonexistent/
 "$R" run --config "$T/nocam.yaml" 2>"$T/nocam.err" &
 pid=$!
 # status frames every 200 ms once it runs; a loaded machine may take seconds
-# to start it (a large site's map), so wait for three, up to 4 s (under the
-# log's 5 s interval, so the rate limit below still holds)
+# to start it (a large site's map), so wait for three: 4 s of waits, the
+# monitor's runs on top (the rate limit below, 3 lines, holds under 15 s:
+# the first line and one a 5 s interval)
 sleep 1
 i=0
 st=0

@@ -13,7 +13,7 @@
  * most of them by the rivals alone (their runner-up is a rival's).
  * With the zone twins alone as rivals ids are taken as others; the same
  * with the rivals modelled at 0.95-1.05 of the radius only, where the
- * window's predicted radius is 6% off (off_radius). The floor
+ * window's predicted radius is 6% small or 12% large (off_radius). The floor
  * (RL_RIVALS_TAKEN) is a margin no case here needs (docs/tracking.md,
  * eleventh session). A map without an id's rivals reads that id as
  * every id matched does (small_map). */
@@ -156,7 +156,7 @@ static void nothing_beyond_every_id(void **state)
     assert_int_equal(c.beyond_full, 0);
 }
 
-/* A window predicted 6% small or large (a pose or a ceiling height a
+/* A window predicted 6% small or 12% large (a pose or a ceiling height a
  * little off; the read searches 0.95-1.05 of the prediction): the known
  * window takes nothing, through either curve, that every id matched
  * refuses. (Every id matched itself takes a 30 blurred by 0.1 R as 12 at
@@ -192,6 +192,11 @@ static void small_map(void **state)
     cfg.n_ids = 3;
     rl_heap_recog_init(&hr, &cfg);
     assert_int_equal(rl_heap_recog_prepare(&hr, W, H), RL_OK);
+    assert_true(rl_rivals_ready(&hr.rec->rivals));
+    for (k = 0; k < 3; k++) { /* the path this is about: no rival in the map */
+        int rv[RL_MAX_IDS];
+        assert_int_equal(rl_rivals_of(&hr.rec->rivals, &hr.rec->templates, ids[k], rv), 0);
+    }
     for (k = 0; k < 3; k++)
         for (s = 0; s < 4; s++) {
             double cu, cv;

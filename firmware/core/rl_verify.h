@@ -38,7 +38,7 @@
  * RL_RIVALS_TAKEN or more and the map holds rivals of id, id is judged
  * against its rivals alone (rl_rivals.h: the ids whose landmark can score
  * that high as id; the runner-up reported is theirs) instead of every id.
- * known 0: every id, always. 0 when the read is not clear (cut by the border, not found near the
+ * known 0: every id, always. Returns 0 when the read is not clear (cut by the border, not found near the
  * prediction, another id or a runner-up too close, a zone twin that fits
  * as well at its own best radius, a code ring): read the
  * window in full. res: the frame's levels (the last full frame's).

@@ -9,8 +9,8 @@
  * the predictions in an order that spreads them over the frame: each first
  * verified where predicted (its centre drawn to its ink, its profile
  * judged by the global pass's rule against every id, or, for a landmark
- * known from the frame before whose id scores 0.94 or more, against its
- * id's rivals alone, and refused
+ * known from the frame before whose id scores 0.94 or more where the map
+ * holds rivals of its id, against those rivals alone, and refused
  * where a zone twin fits as well at its own radius: rl_verify; next to the border,
  * from its visible edge: rl_verify_read_border), else as
  * the global pass reads a candidate whose box is the prediction, else,
