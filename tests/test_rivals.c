@@ -66,8 +66,9 @@ typedef struct {
 
 /* Every landmark of the family drawn at blur sigma through camera curve
  * gamma, read by hr (its curve configured); each verified as known for
- * every other id at rs times its radius (a prediction that far off): c->wrong counts those taken, c->beyond_full those taken
- * that the match of every id (known 0) does not take. */
+ * every other id at rs times its radius (a prediction that far off):
+ * c->wrong counts those taken, c->beyond_full those taken that the match
+ * of every id (known 0) does not take. */
 static void pairs_at(rl_heap_recog *hr, double sigma, double gamma, double rs, pair_counts *c)
 {
     static rl_result res;
@@ -247,6 +248,41 @@ static void rivals_hold_the_twins(void **state)
     rl_heap_recog_free(&hr);
 }
 
+/* skip_rivals: no rivals worked out, n^2 bytes less workspace, and a
+ * known read matched against every id (the same reads as every id). */
+static void skipped(void **state)
+{
+    static rl_result res;
+    rl_recog_config cfg;
+    rl_heap_recog hr;
+    rl_image img = {W, H, W, pix};
+    unsigned seed = 5;
+    size_t with, without;
+    int k, n = 0;
+    (void)state;
+    rl_recog_defaults(&cfg);
+    with = rl_recog_workspace_size(W, H, &cfg);
+    cfg.skip_rivals = 1;
+    without = rl_recog_workspace_size(W, H, &cfg);
+    assert_true(with >= without + 30 * 30);
+    rl_heap_recog_init(&hr, &cfg);
+    assert_int_equal(rl_heap_recog_prepare(&hr, W, H), RL_OK);
+    assert_false(rl_rivals_ready(&hr.rec->rivals));
+    for (k = 1; k <= 30; k += 7) {
+        double cu, cv;
+        rl_detection d;
+        int a, b;
+        draw(&hr.rec->templates.fam, k, 0.03, 1.0, 3, &seed, &cu, &cv);
+        assert_int_equal(rl_heap_recog_run(&hr, &img, &res), RL_OK);
+        a = rl_verify_read(hr.rec, &img, &res, k, 1, cu, cv, RADIUS, &d, NULL);
+        b = rl_verify_read(hr.rec, &img, &res, k, 0, cu, cv, RADIUS, &d, NULL);
+        assert_int_equal(a, b);
+        n += a;
+    }
+    assert_true(n >= 4);
+    rl_heap_recog_free(&hr);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -255,6 +291,7 @@ int main(void)
         cmocka_unit_test(nothing_beyond_every_id),
         cmocka_unit_test(off_radius),
         cmocka_unit_test(small_map),
+        cmocka_unit_test(skipped),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

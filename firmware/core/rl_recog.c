@@ -102,7 +102,7 @@ static rl_err layout(rl_ws *ws, const rl_recog_config *cfg, int w, int h, rl_rec
         return e;
     r = *rec ? *rec : scratch;
     if ((e = rl_templates_init(&r->templates, ws, &cfg->family, cfg->ids, cfg->ids ? cfg->n_ids : 0)) != RL_OK ||
-        (e = rl_rivals_init(&r->rivals, ws, &r->templates)) != RL_OK ||
+        (e = cfg->skip_rivals ? rl_rivals_none(&r->rivals) : rl_rivals_init(&r->rivals, ws, &r->templates)) != RL_OK ||
         (e = rl_label_init(&r->dark, ws, w, h, runs, RL_MAX_REGIONS)) != RL_OK ||
         (e = rl_label_init(&r->light, ws, w, (h + 1) / 2, runs / 4, RL_MAX_LIGHTS * 8)) != RL_OK ||
         (e = rl_illum_init(&r->illum, ws, w, h)) != RL_OK ||

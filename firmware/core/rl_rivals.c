@@ -88,6 +88,13 @@ rl_err rl_rivals_init(rl_rivals *rv, rl_ws *ws, const rl_templates *tt)
     return RL_OK;
 }
 
+rl_err rl_rivals_none(rl_rivals *rv)
+{
+    rv->n = 0;
+    rv->near = NULL;
+    return RL_OK;
+}
+
 int rl_rivals_ready(const rl_rivals *rv)
 {
     return rv->n > 0;

@@ -51,6 +51,9 @@ typedef struct {
  * is too small. */
 RL_CHECK rl_err rl_rivals_init(rl_rivals *rv, rl_ws *ws, const rl_templates *tt);
 
+/* No rivals (rl_rivals_ready 0: every id is matched); RL_OK. */
+rl_err rl_rivals_none(rl_rivals *rv);
+
 /* 1 when the rivals were worked out (rl_rivals_of answers). */
 int rl_rivals_ready(const rl_rivals *rv);
 

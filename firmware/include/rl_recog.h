@@ -93,6 +93,10 @@ typedef struct {
                              sharpening) is not reported, whatever the curve */
     rl_stage_hook stage_hook; /* called as each stage of a frame begins (rl_stage.h);
                                  none by default */
+    int skip_rivals;      /* 1: a tracked window's rivals (rl_rivals) are not worked out at
+                             init (some 14 ms for ring5, n^2 in the ids; rl_recog_run never
+                             uses them, and a known window then matches every id): for a
+                             recognizer built often, as a fuzzer's; 0 (default): worked out */
 } rl_recog_config;
 
 typedef struct {

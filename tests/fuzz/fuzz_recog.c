@@ -31,6 +31,7 @@ static rl_recog *recognizer(int w, int h, int bits, int local, int score)
     cfg.local = (rl_local_policy)local;
     cfg.family.bits = bits;
     cfg.min_score = 0.5 + score / 100.0;
+    cfg.skip_rivals = 1; /* rl_recog_run never uses them; a recognizer an input */
     n = rl_recog_workspace_size(w, h, &cfg);
     if (n == 0 || (kept.mem = malloc(n)) == NULL)
         return NULL;
