@@ -240,6 +240,74 @@ static int judged(const rl_recog *rec, const rl_accept_rule *rule, const rl_leve
     return m->id == id && rl_accept(rule, m, rl_accept_span(local, rec->tone, &q));
 }
 
+/* The read radius held against the outer ring's edge (read_at). The
+ * verification reads at the predicted radius, or the best of 0.95-1.05
+ * of it, and trusted it: a prediction 10-15% off the landmark's radius (a
+ * map's height, a pose or a place wrong) read another landmark there as
+ * the predicted id, at a radius 5-10% off its own (docs/tracking.md,
+ * twelfth session; test_verify_twins). Now where the ring's edge, measured
+ * on the profile gathered (profile_edge), is more than EDGE_TRUSTED off
+ * the predicted radius and more than EDGE_AGREE off the radius read, the
+ * id must also lead every id (its rivals, when known) at the edge: a
+ * veto, the read stays the one taken (taken at the edge instead, the
+ * moving drive's poses moved and a whole landmark went unread); no edge
+ * (no contrast from EDGE_FROM out) refuses it. EDGE_AGREE is a quarter
+ * of ring5's outermost code zone (0.8 (1 - sqrt(4/5)) = 0.085 R), the
+ * radius error at which that
+ * zone's boundary moves by a fifth of its width; EDGE_TRUSTED is how far
+ * the edge's measure strays on the bench's smeared, tone-mismatched
+ * landmarks (within 0.04 of the renderer's radius on most, up to 0.07 on
+ * the moving drive's): a prediction that close is trusted as before, and
+ * the drives' reads judged again are few (2 of 587 on the demo's drive).
+ * EDGE_FROM: the ring's levels are looked for from this many read radii
+ * out (the outer ring of a landmark 15% larger or smaller lies beyond). */
+#define EDGE_AGREE 0.021
+#define EDGE_TRUSTED 0.04
+#define EDGE_FROM 0.6
+
+/* The outer ring's edge in profile p, as a scale of its gathered radius:
+ * from the outside in, the first bin darker than midway between the
+ * darkest and the lightest bins from `from` radii out (the profile's own
+ * levels: a blurred ring's peak is under the ink's), then the steepest
+ * fall of darkness within two bins of it (a symmetric blur leaves the
+ * printed edge at its inflection, where midway of a lowered peak lies
+ * outside), placed between bins by a parabola through the falls. -1 when
+ * there is no contrast. */
+static double profile_edge(const rl_profile *p, double from)
+{
+    double d[RL_PROFILE_BINS], hi = -1, lo = RL_TONE_MAX + 1.0, mid, g0, g1 = 0, g2, c;
+    int k, k0 = (int)(from / RL_PROFILE_EXTENT * RL_PROFILE_BINS), kc = -1, kb = -1;
+    k0 = k0 < 2 ? 2 : k0;
+    for (k = k0 - 2; k < RL_PROFILE_BINS; k++) {
+        d[k] = p->n[k] > 0 ? p->sx[k] / p->n[k] : -1; /* -1: no pixel */
+        if (k >= k0 && d[k] >= 0) {
+            if (d[k] > hi)
+                hi = d[k];
+            if (d[k] < lo)
+                lo = d[k];
+        }
+    }
+    if (!(hi > lo))
+        return -1;
+    mid = 0.5 * (hi + lo);
+    for (k = RL_PROFILE_BINS - 1; k >= k0 && kc < 0; k--)
+        if (d[k] >= mid)
+            kc = k;
+    if (kc < 0)
+        return -1;
+    for (k = kc - 2; k <= kc + 1 && k + 1 < RL_PROFILE_BINS; k++)
+        if (d[k] >= 0 && d[k + 1] >= 0 && d[k] - d[k + 1] > g1) {
+            g1 = d[k] - d[k + 1];
+            kb = k;
+        }
+    if (kb < 0)
+        return (kc + 1.0) / RL_PROFILE_BINS * RL_PROFILE_EXTENT;
+    g0 = kb > k0 - 2 && d[kb - 1] >= 0 ? d[kb - 1] - d[kb] : 0;
+    g2 = kb + 2 < RL_PROFILE_BINS && d[kb + 2] >= 0 ? d[kb + 1] - d[kb + 2] : 0;
+    c = g0 - 2 * g1 + g2;
+    return (kb + 1 + (c < 0 ? 0.5 * (g0 - g2) / c : 0)) / RL_PROFILE_BINS * RL_PROFILE_EXTENT;
+}
+
 /* The read at d's centre (settled): the profile gathered there, judged
  * as id (judged, best_of; local: the levels at the prediction), not a
  * code ring; into *d. */
@@ -264,6 +332,19 @@ static int read_at(const rl_recog *rec, const rl_image *img, const rl_result *re
         best_of(&rec->templates, &wide, id, &bs);
         if (bs != s)
             taken = judged(rec, &rule, local, &wide, s = bs, id, known, &m);
+    }
+    if (taken) {
+        /* a veto: where the ring's edge is off the prediction and the read
+         * (EDGE_AGREE), the id must lead every id there too (the rule's
+         * score, contrast and blur; its lead was met at s); the read stays
+         * the one taken at s */
+        double e = profile_edge(&wide, EDGE_FROM * s);
+        if (!(fabs(s - e) <= EDGE_AGREE * e) && !(fabs(1.0 / RADIUS_WIDEST - e) <= EDGE_TRUSTED * e)) {
+            rl_accept_rule leads = rule;
+            rl_match at_edge;
+            leads.min_lead = 1.0;
+            taken = e > 0 && e <= 1.0 && judged(rec, &leads, local, &wide, e, id, known, &at_edge);
+        }
     }
     if (taken && m.score - m.second < TWIN_CLEAR && twin_fits_as_well(rec, &wide, id, s, &m))
         taken = 0;
