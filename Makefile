@@ -7,6 +7,11 @@
 #                        with the plain-C matcher (RL_NO_VECTOR_EXT) instead of the vector one;
 #                        its fixtures rendered by the renderer's code uninstrumented at -O2 (the
 #                        same bytes), the instrumented renderer checked against it (render_checked)
+#   make host-test-asan-vector  the tests that run the core's vector paths (the labeller's
+#                        run bounds, the gathers and their AVX2 clones, the polar scan,
+#                        rl_ray, the matcher's kernels) and the bad inputs, built with
+#                        GCC under AddressSanitizer + UBSan with the vectors on
+#                        (build-asan-vec/): host-test-asan runs the plain C instead
 #   make demo            the firmware on a bundled drive: poses over a pty, report
 #   make bench           recognition, pose, place and survey benchmarks (figures, not pass/fail),
 #                        with the time of each stage of the recognizer (docs/design.md) and
@@ -30,6 +35,7 @@
 
 BUILD      ?= build
 BUILD_ASAN ?= build-asan
+BUILD_ASAN_VEC ?= build-asan-vec
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 # CMake's generator for a build folder it has not configured yet: Ninja where
@@ -41,7 +47,7 @@ CMAKE_ARGS ?=
 # Shell code, run when the recipe's line runs: $(call GEN,DIR)
 GEN = $$([ -n "$$CMAKE_GENERATOR" ] || [ -f "$(1)/CMakeCache.txt" ] || ! command -v ninja >/dev/null 2>&1 || echo -G Ninja)
 
-.PHONY: all deps host host-test host-test-asan bench bench-real demo fuzz soak sim clean
+.PHONY: all deps host host-test host-test-asan host-test-asan-vector bench bench-real demo fuzz soak sim clean
 
 # `make sim` (issue 42, tools/sim/sim.sh): one run per word of SIM_RUNS, into
 # SIM_DIR/WORD: clean (the route as it is), disturbed (ringloc's frames cut
@@ -147,6 +153,30 @@ host-test-asan:
 	cmake --build $(BUILD_ASAN) -j $(JOBS)
 	cd $(BUILD_ASAN) && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp ctest --output-on-failure -j $(JOBS)
 
+# host-test-asan builds with RL_NO_VECTOR_EXT (the plain-C matcher: CI runs
+# each matcher's suite once), which also turns off every other vector path
+# of the core, and with clang, which has no AVX2 clones (rl_clones.h): none
+# of them ran under a sanitizer (twelfth session). This build keeps them on,
+# with GCC (its target_clones: the AVX2 clones run where the processor has
+# AVX2), and builds and runs only the tests that reach them and the bad
+# inputs through `ringloc` (odd sizes and strides: the vectors' tails; the
+# renderer, uninstrumented as in host-test-asan, makes their fixtures).
+ASAN_VEC_TESTS ?= test_polar test_polar_scan test_ray test_refine test_label_bounds test_label_chunks \
+                  test_match test_profile test_recog test_oracles
+ASAN_VEC_NONE  :=
+ASAN_VEC_RUN   ?= ^($(subst $(ASAN_VEC_NONE) ,|,$(strip $(ASAN_VEC_TESTS)))|test_bad_inputs_[0-9]+)$$
+
+host-test-asan-vector:
+	@sh tools/deps.sh asan
+	@if [ -f $(BUILD_ASAN_VEC)/CMakeCache.txt ] && ! grep -q '^CMAKE_C_COMPILER:.*gcc' $(BUILD_ASAN_VEC)/CMakeCache.txt; then \
+	  echo "host-test-asan-vector: $(BUILD_ASAN_VEC) was configured for another compiler; starting it afresh with gcc"; \
+	  rm -rf $(BUILD_ASAN_VEC); fi
+	cmake -S . -B $(BUILD_ASAN_VEC) $(call GEN,$(BUILD_ASAN_VEC)) -DCMAKE_C_COMPILER=gcc -DCMAKE_CXX_COMPILER=g++ \
+	  -DCMAKE_BUILD_TYPE=Debug -DRL_SANITIZE=ON -DRL_NO_VECTOR_EXT=OFF -DRL_FIXTURE_COUNT=12 $(CMAKE_ARGS)
+	cmake --build $(BUILD_ASAN_VEC) -j $(JOBS) --target $(ASAN_VEC_TESTS) ringloc ringloc-render
+	cd $(BUILD_ASAN_VEC) && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp \
+	  ctest --output-on-failure -j $(JOBS) -R '$(ASAN_VEC_RUN)'
+
 demo: host
 	sh tools/demo.sh
 
@@ -210,4 +240,4 @@ bench-real: host
 	$(BUILD)/tools/ringloc-bench --real $(REAL)
 
 clean:
-	rm -rf $(BUILD) $(BUILD_ASAN) $(BUILD_FUZZ) $(BUILD_FUZZ_MSAN)
+	rm -rf $(BUILD) $(BUILD_ASAN) $(BUILD_ASAN_VEC) $(BUILD_FUZZ) $(BUILD_FUZZ_MSAN)

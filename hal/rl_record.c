@@ -130,7 +130,9 @@ static rl_err make_drive_folder(rl_record *r, const char *dir, char *err, size_t
         return RL_EIO;
     }
     for (n = 1; n <= RL_RECORD_MAX_DRIVES; n++) {
-        char sub[16];
+        /* room for any int: GCC under the sanitizers (-O1) does not see
+         * n's lower bound and warns of a truncation */
+        char sub[24];
         snprintf(sub, sizeof sub, "drive_%03d", n);
         if (mkdirat(fd, sub, 0755) == 0)
             break;
