@@ -252,9 +252,9 @@ static int judged(const rl_recog *rec, const rl_accept_rule *rule, const rl_leve
  * veto, the read stays the one taken (taken at the edge instead, the
  * moving drive's poses moved and a whole landmark went unread); no edge
  * (no contrast from EDGE_FROM out) refuses it. EDGE_AGREE is a quarter
- * of ring5's outermost code zone (0.8 (1 - sqrt(4/5)) = 0.085 R), the
- * radius error at which that
- * zone's boundary moves by a fifth of its width; EDGE_TRUSTED is how far
+ * of ring5's outermost code zone (0.8 (1 - sqrt(4/5)) = 0.085 R): a
+ * radius that far off moves the zone's inner boundary by a fifth of its
+ * width. EDGE_TRUSTED is how far
  * the edge's measure strays on the bench's smeared, tone-mismatched
  * landmarks (within 0.04 of the renderer's radius on most, up to 0.07 on
  * the moving drive's): a prediction that close is trusted as before, and
