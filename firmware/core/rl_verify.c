@@ -122,6 +122,9 @@ static int edge_centre(const rl_image *img, const rl_tone *tone, int light, doub
 #define RADIUS_WIDEST 1.05
 #define RADIUS_SCALES 5
 #define RADIUS_STEP 0.025
+/* rl_recog holds one bin-move table a radius (rl_verify_init) */
+typedef char rl_verify_scales_fit[sizeof(((rl_recog *)0)->verify_scales) ==
+                                          RADIUS_SCALES * sizeof(rl_profile_scale) ? 1 : -1];
 
 /* Scale k (0 .. RADIUS_SCALES - 1) of the gathered radius: k 2 is the
  * predicted radius, each next k RADIUS_STEP of it smaller. */
