@@ -146,6 +146,39 @@ static void test_rescaled_profile_moves_bins(void **state)
     assert_true(q.n[3] == 10 && q.n[40] == 4);
 }
 
+/* A profile rescaled by the bins' moves worked out once for its scale
+ * (rl_profile_scale_make) is the one rl_profile_rescale gives, bit for
+ * bit, at the verification's radii and at random ones (half of them
+ * decimals, where a bin's middle falls on a bin's edge: 26.5 / 0.53), on
+ * random profiles with empty bins; a scale table made for another scale
+ * gives another profile (the test tells them apart). */
+static void test_rescale_by_moves_is_rescale(void **state)
+{
+    rl_profile p, a, b;
+    rl_profile_scale sc;
+    int trial, k, differ = 0;
+    (void)state;
+    for (trial = 0; trial < 400; trial++) {
+        double s = trial < 5 ? (1.0 - (trial - 2) * 0.025) / 1.05
+                   : trial % 2 ? 0.5 + 0.5 * uniform() : (double)(500 + (int)(uniform() * 500)) / 1000.0;
+        for (k = 0; k < RL_PROFILE_BINS; k++) {
+            p.n[k] = uniform() < 0.1 ? 0.0 : floor(uniform() * 300);
+            p.sx[k] = p.n[k] * floor(uniform() * 1023) + uniform();
+        }
+        p.sxx = uniform();
+        p.plane = uniform();
+        p.total = uniform();
+        rl_profile_scale_make(s, &sc);
+        assert_true(sc.made && sc.s == s);
+        rl_profile_rescale_by(&p, &sc, &a);
+        rl_profile_rescale(&p, s, &b);
+        assert_memory_equal(&a, &b, sizeof a);
+        rl_profile_rescale(&p, s * 0.97, &b);
+        differ += memcmp(&a, &b, sizeof a) != 0;
+    }
+    assert_true(differ > 300);
+}
+
 /* The wide kernel (RL_MATCH_WIDE blocks in one walk) gives each column the
  * bits of one block at a time, with empty bins and on a table whose rows
  * are longer than the blocks (the table's stride). */
@@ -362,6 +395,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_kernels_agree_bit_for_bit),
         cmocka_unit_test(test_rescaled_profile_moves_bins),
+        cmocka_unit_test(test_rescale_by_moves_is_rescale),
         cmocka_unit_test(test_scores_match_a_direct_correlation),
         cmocka_unit_test(test_wide_kernel_is_blocks_bit_for_bit),
         cmocka_unit_test(test_match_all_is_every_id_listed),

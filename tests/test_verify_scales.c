@@ -125,6 +125,7 @@ static void check_is_the_rule_in_full(void **state)
         fam.bits = bits;
         rl_ws_init(&ws, mem, sizeof mem);
         assert_int_equal(rl_templates_init(&rec.templates, &ws, &fam, NULL, 0), RL_OK);
+        rl_verify_init(&rec); /* the radii's moves, as rl_recog_init makes them */
         for (trial = 0; trial < 150; trial++) {
             int ia = (int)(uniform() * tt->n), z = 1 + (int)(uniform() * 2), b = (int)(uniform() * RL_BLUR_LEVELS);
             int idb = tt->ids[ia] ^ (1 << (bits - z)), k;

@@ -216,6 +216,14 @@ void rl_profile_gather_rows(const rl_image *img, const rl_tone *tone, double cx,
     gather(img, tone, cx, cy, r, &circle, step < 1 ? 1 : step, p);
 }
 
+/* The bin that bin k's middle falls in at scale s, the last for those
+ * past it. */
+static int rescaled_bin(int k, double s)
+{
+    int j = (int)((k + 0.5) / s);
+    return j < RL_PROFILE_BINS - 1 ? j : RL_PROFILE_BINS - 1;
+}
+
 void rl_profile_rescale(const rl_profile *src, double s, rl_profile *dst)
 {
     int k;
@@ -225,8 +233,33 @@ void rl_profile_rescale(const rl_profile *src, double s, rl_profile *dst)
     memset(dst->n, 0, sizeof dst->n);
     memset(dst->sx, 0, sizeof dst->sx);
     for (k = 0; k < RL_PROFILE_BINS; k++) {
-        int j = (int)((k + 0.5) / s);
-        j = j < RL_PROFILE_BINS - 1 ? j : RL_PROFILE_BINS - 1;
+        int j = rescaled_bin(k, s);
+        dst->n[j] += src->n[k];
+        dst->sx[j] += src->sx[k];
+    }
+}
+
+void rl_profile_scale_make(double s, rl_profile_scale *sc)
+{
+    int k;
+    sc->s = s;
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        sc->to[k] = (unsigned char)rescaled_bin(k, s);
+    sc->made = 1;
+}
+
+void rl_profile_rescale_by(const rl_profile *src, const rl_profile_scale *sc, rl_profile *dst)
+{
+    int k;
+    dst->sxx = src->sxx;
+    dst->plane = src->plane;
+    dst->total = src->total;
+    memset(dst->n, 0, sizeof dst->n);
+    memset(dst->sx, 0, sizeof dst->sx);
+    /* each bin's sums added in k's order into a zeroed bin, as
+     * rl_profile_rescale adds them */
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        int j = sc->to[k];
         dst->n[j] += src->n[k];
         dst->sx[j] += src->sx[k];
     }

@@ -57,4 +57,19 @@ void rl_profile_gather_rows(const rl_image *img, const rl_tone *tone, double cx,
  * radii read from one gather, for 64 additions each. */
 void rl_profile_rescale(const rl_profile *src, double s, rl_profile *dst);
 
+/* Where rl_profile_rescale moves each bin at one scale, worked out once
+ * for a scale that many profiles are read at (the division a bin left
+ * out). made 0 (a zeroed one): not worked out. */
+typedef struct {
+    double s;
+    int made;
+    unsigned char to[RL_PROFILE_BINS];
+} rl_profile_scale;
+
+/* The bins' moves at scale s (0 < s <= 1) into *sc. */
+void rl_profile_scale_make(double s, rl_profile_scale *sc);
+
+/* rl_profile_rescale(src, sc->s, dst), the same bits, by sc's moves. */
+void rl_profile_rescale_by(const rl_profile *src, const rl_profile_scale *sc, rl_profile *dst);
+
 #endif

@@ -122,22 +122,52 @@ static int edge_centre(const rl_image *img, const rl_tone *tone, int light, doub
 #define RADIUS_WIDEST 1.05
 #define RADIUS_SCALES 5
 #define RADIUS_STEP 0.025
+/* rl_recog holds one bin-move table a radius (rl_verify_init) */
+typedef char rl_verify_scales_fit[sizeof(((rl_recog *)0)->verify_scales) ==
+                                          RADIUS_SCALES * sizeof(rl_profile_scale) ? 1 : -1];
+
+/* Scale k (0 .. RADIUS_SCALES - 1) of the gathered radius: k 2 is the
+ * predicted radius, each next k RADIUS_STEP of it smaller. */
+static double radius_scale(int k)
+{
+    return (1.0 - (k - RADIUS_SCALES / 2) * RADIUS_STEP) / RADIUS_WIDEST;
+}
+
+void rl_verify_init(rl_recog *rec)
+{
+    int k;
+    for (k = 0; k < RADIUS_SCALES; k++)
+        rl_profile_scale_make(radius_scale(k), &rec->verify_scales[k]);
+}
+
+/* The gathered profile read at scale s (rl_profile_rescale): by the
+ * moves worked out at init when s is one of the radii, the same bits. */
+static void rescale(const rl_recog *rec, const rl_profile *wide, double s, rl_profile *q)
+{
+    int k;
+    for (k = 0; k < RADIUS_SCALES; k++)
+        if (rec->verify_scales[k].made && rec->verify_scales[k].s == s) {
+            rl_profile_rescale_by(wide, &rec->verify_scales[k], q);
+            return;
+        }
+    rl_profile_rescale(wide, s, q);
+}
 
 /* id's best score over the RADIUS_SCALES radii (its templates alone),
  * and the scale (of the gathered radius) where it is reached (*at). */
-static double best_of(const rl_templates *tt, const rl_profile *wide, int id, double *at)
+static double best_of(const rl_recog *rec, const rl_profile *wide, int id, double *at)
 {
     double best = -2;
     int k;
     *at = 1.0 / RADIUS_WIDEST;
     for (k = 0; k < RADIUS_SCALES; k++) {
-        double s = (1.0 - (k - RADIUS_SCALES / 2) * RADIUS_STEP) / RADIUS_WIDEST;
+        double s = radius_scale(k);
         rl_profile q;
         rl_match m;
         if (s > 1.0)
             continue;
-        rl_profile_rescale(wide, s, &q);
-        rl_match_ids(tt, &q, &id, 1, -1, &m);
+        rescale(rec, wide, s, &q);
+        rl_match_ids(&rec->templates, &q, &id, 1, -1, &m);
         if (m.id >= 0 && m.score > best) {
             best = m.score;
             *at = s;
@@ -160,33 +190,47 @@ static double best_of(const rl_templates *tt, const rl_profile *wide, int id, do
  * as 18, 0.883 against 0.813, where a full frame reads 2). The profile is
  * rescaled once a radius, each code's own columns scored there; not at
  * s_read, where the id was taken (read: its match of every id): no twin
- * scored more than the runner-up there, under the id. */
+ * scored more than the runner-up there, under the id. The id's own best
+ * is at least its score at s_read: the twins are scored first, and the id
+ * at the other radii only when a twin reaches that (the same answer as
+ * every code at every radius: test_verify_scales). */
 static int twin_fits_as_well(const rl_recog *rec, const rl_profile *wide, int id, double s_read,
                              const rl_match *read)
 {
-    int codes[RL_MAX_BITS + 1], n, k, i;
-    double best[RL_MAX_BITS + 1];
+    int codes[RL_MAX_BITS + 1], n, k, i, pass;
+    double best[RL_MAX_BITS + 1], top = -2;
     codes[0] = id;
     n = 1 + rl_family_zone_twins(&rec->templates.fam, id, codes + 1);
     for (i = 0; i < n; i++)
         best[i] = -2;
-    for (k = 0; k < RADIUS_SCALES; k++) {
-        double s = (1.0 - (k - RADIUS_SCALES / 2) * RADIUS_STEP) / RADIUS_WIDEST, sc[RL_MAX_BITS + 1];
-        rl_profile q;
-        if (s > 1.0)
-            continue;
-        if (s == s_read && read->score - read->second > KNOWN_MARGIN) {
-            /* the scale the id was taken at: every id was matched there,
-             * so id scored read->score and no twin more than read->second */
-            best[0] = fmax(best[0], read->score);
-            continue;
+    /* pass 0: the twins at every radius, the id at s_read; pass 1 (only
+     * when a twin reached the id's score so far): the id at the others */
+    for (pass = 0; pass < 2 && n > 1; pass++) {
+        for (k = 0; k < RADIUS_SCALES; k++) {
+            double s = radius_scale(k), sc[RL_MAX_BITS + 1];
+            int at_read = s == s_read, from = pass == 0 && !at_read, to = pass == 0 ? n : 1;
+            rl_profile q;
+            if (s > 1.0 || (pass == 1 && at_read))
+                continue;
+            if (at_read && read->score - read->second > KNOWN_MARGIN) {
+                /* the scale the id was taken at: every id was matched there,
+                 * so id scored read->score and no twin more than read->second */
+                best[0] = fmax(best[0], read->score);
+                continue;
+            }
+            rescale(rec, wide, s, &q);
+            /* each code's own columns, the profile's terms worked out once */
+            rl_match_ids_each(&rec->templates, &q, codes + from, to - from, sc + from);
+            for (i = from; i < to; i++)
+                if (sc[i] > best[i])
+                    best[i] = sc[i];
         }
-        rl_profile_rescale(wide, s, &q);
-        /* each code's own columns, the profile's terms worked out once */
-        rl_match_ids_each(&rec->templates, &q, codes, n, sc);
-        for (i = 0; i < n; i++)
-            if (sc[i] > best[i])
-                best[i] = sc[i];
+        if (pass == 0) {
+            for (i = 1; i < n; i++)
+                top = fmax(top, best[i]);
+            if (top < best[0])
+                return 0; /* no twin reaches the id's score at s_read */
+        }
     }
     for (i = 1; i < n; i++)
         if (best[i] >= best[0])
@@ -228,7 +272,7 @@ static int judged(const rl_recog *rec, const rl_accept_rule *rule, const rl_leve
                   const rl_profile *wide, double s, int id, int known, rl_match *m)
 {
     rl_profile q;
-    rl_profile_rescale(wide, s, &q);
+    rescale(rec, wide, s, &q);
     /* the id's own columns first: below the rule's score at its best blur
      * it is not taken whatever the others score (the match of every id
      * would find the same score for it) */
@@ -329,7 +373,7 @@ static int read_at(const rl_recog *rec, const rl_image *img, const rl_result *re
     taken = judged(rec, &rule, local, &wide, s, id, known, &m);
     if (!taken) {
         double bs;
-        best_of(&rec->templates, &wide, id, &bs);
+        best_of(rec, &wide, id, &bs);
         if (bs != s)
             taken = judged(rec, &rule, local, &wide, s = bs, id, known, &m);
     }

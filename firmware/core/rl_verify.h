@@ -31,6 +31,11 @@
 
 #include "rl_recog_state.h"
 
+/* The radii a window's profile is read at, worked out once into
+ * rec->verify_scales (rl_recog_init calls it). A recognizer without them
+ * (zeroed) reads the same, rescaling by division. */
+void rl_verify_init(rl_recog *rec);
+
 /* 1 when the landmark of `id` predicted at (u, v) with radius r (px) is
  * read there, into *d (centre refined, the radius within a few percent
  * of r). known 1: the track already knows the landmark there (read by
