@@ -6,8 +6,10 @@
 #include "rl_ellipse.h"
 #include "rl_match.h"
 #include "rl_median.h"
+#include "rl_motion.h"
 #include "rl_profile.h"
 #include "rl_rank.h"
+#include "rl_refine.h"
 #include "rl_result.h"
 
 /* Radius scales a landmark and its twins are scored at (the radius was
@@ -54,17 +56,15 @@
  * gamma 1 it cost two right cut reads of the 28Sep2013 development
  * photos' letter sheets and won one; no wrong cut read was kept without
  * it). */
-static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
-                        const int *rv, int n, int far, double *fit)
+static double twin_lead_wide(const rl_recog *rec, const rl_profile *wide, double top, int reach,
+                             const rl_detection *d, const int *rv, int n, double *fit)
 {
-    int reach = far ? SCALES_FAR : SCALES_NEAR, k;
-    double own = -1, twin = -1, top = 1.0 + reach * SCALE_STEP;
-    rl_profile wide;
-    rl_profile_gather_rows(img, tone, d->u, d->v, d->radius * top, ROW_STEP, &wide);
+    int k;
+    double own = -1, twin = -1;
     for (k = -reach; k <= reach; k++) {
         rl_profile p;
         rl_match m;
-        rl_profile_rescale(&wide, (1.0 + k * SCALE_STEP) / top, &p);
+        rl_profile_rescale(wide, (1.0 + k * SCALE_STEP) / top, &p);
         /* the rivals at every blur: through the other formation a rival
          * may fit another than the id does; the id too near its radius */
         if (k >= -SCALES_NEAR && k <= SCALES_NEAR) {
@@ -80,6 +80,27 @@ static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone 
     }
     *fit = own;
     return own - twin;
+}
+
+static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
+                        const int *rv, int n, int far, double *fit)
+{
+    int reach = far ? SCALES_FAR : SCALES_NEAR;
+    double top = 1.0 + reach * SCALE_STEP;
+    rl_profile wide;
+    rl_profile_gather_rows(img, tone, d->u, d->v, d->radius * top, ROW_STEP, &wide);
+    return twin_lead_wide(rec, &wide, top, reach, d, rv, n, fit);
+}
+
+/* twin_lead (0.97 .. 1.03 of the radius) read from the pixels along axis
+ * a alone (rl_profile_gather_axis), every row. */
+static double axis_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
+                        const int *rv, int n, int a, double *fit)
+{
+    double top = 1.0 + SCALES_NEAR * SCALE_STEP;
+    rl_profile wide;
+    rl_profile_gather_axis(img, tone, d->u, d->v, d->radius * top, a, &wide);
+    return twin_lead_wide(rec, &wide, top, SCALES_NEAR, d, rv, n, fit);
 }
 
 /* Radii the rank read gathers for: RANK_SCALES from RANK_FROM of the
@@ -342,6 +363,49 @@ static int cut_circle_on_edge(const rl_image *img, const rl_tone *tone, int ligh
     return hypot(u - d->u, v - d->v) + d->radius - r <= RL_TWINS_CUT_BULGE * d->radius;
 }
 
+/* Whether d, a landmark that moved (rl_motion_measure) refused by the
+ * reads of its whole ring, keeps its id read across its motion: along its
+ * sharpest axis alone, through the other formation and the frame's curve
+ * (keeps, tol), about its centre and, for a local read, about its
+ * darkness centroid too.
+ *
+ * A motion mixes light on the sensor, whatever the camera does after its
+ * curve: along it the rings are smeared, and there the grey levels'
+ * reading differs from the light's by the smear's width, enough for a
+ * zone twin at a moving template to lead (the moving robot's refused
+ * right reads: the twin 0.001-0.03 ahead through the grey levels, at the
+ * strongest motion template or the softest focus one). Across the motion
+ * only the blur that is the same every way is left, as on a landmark that
+ * did not move, and the twins are told apart as there. The axis is chosen
+ * for no id (the rings' gradients). A read along one axis cannot see its
+ * centre off across that axis, and a local read's centre is where its
+ * search found the id fitting best (a whole 12 read as 30 from a circle
+ * 2.6 px off its centre led 12 along the sharpest axis): about the
+ * darkness centroid (rl_refine_centre, twice: chosen for no id, and a
+ * straight motion smears a ring alike on both sides of it) the id must
+ * lead too. A cut local read has no such centre: not judged here. A
+ * global read's centre is already its darkness centroid. */
+static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels *lv, const rl_detection *d,
+                       const int *rv, int n, double tol)
+{
+    const rl_tone *other = rl_tones_other(&rec->tones, rec->tone);
+    rl_motion mo;
+    rl_detection c = *d;
+    double fit;
+    if ((d->pass == RL_PASS_LOCAL && !d->complete) || !rl_motion_measure(img, d->u, d->v, d->radius, &mo) ||
+        mo.ratio > RL_TWINS_MOVED)
+        return 0;
+    if (!keeps(d, tol, axis_lead(rec, img, other, d, rv, n, mo.axis, &fit),
+               axis_lead(rec, img, rec->tone, d, rv, n, mo.axis, &fit)))
+        return 0;
+    if (d->pass != RL_PASS_LOCAL)
+        return 1;
+    rl_refine_centre(img, lv, &c.u, &c.v, c.radius);
+    rl_refine_centre(img, lv, &c.u, &c.v, c.radius);
+    return keeps(d, tol, axis_lead(rec, img, other, &c, rv, n, mo.axis, &fit),
+                 axis_lead(rec, img, rec->tone, &c, rv, n, mo.axis, &fit));
+}
+
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
 static void keep(rl_result *res, int *n, const rl_detection *d, unsigned char *kept, int i)
 {
@@ -431,6 +495,8 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         if (keeps(&d, tol, lead, own) ||
             (rank_fits(&d, curved, others_median(radii, all, i)) && own > RL_TWINS_RANK_OWN &&
              rank_keeps(rec, img, rec->tone, res->levels.light, &d)))
+            keep(res, &kept_n, &d, kept, i);
+        else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol))
             keep(res, &kept_n, &d, kept, i);
         else
             rl_result_add_unidentified(res, &d);

@@ -128,6 +128,12 @@
  * the range let a twin fit 5 of 55 right cut reads. */
 #define RL_TWINS_FAR_ZONE_PX 1.8
 
+/* A landmark whose axes' radial gradients (rl_motion) differ by less than
+ * this (rl_motion's ratio above it) did not move, for rl_twins: its twins
+ * are not read across a motion. Still landmarks of the clean rendered set
+ * measured 0.85-1; the moving set's right reads the check refused 0.4-0.87. */
+#define RL_TWINS_MOVED 0.8
+
 /* The radius (px) under which a landmark of fam gets no id: its code zone
  * 1 under RL_TWINS_MIN_ZONE_PX (ring4 11.2, ring5 14.2, ring6 17.2 px).
  * A landmark over it by its radius read but under it along its minor
