@@ -14,24 +14,21 @@
 /* tan(22.5 degrees): the wedge's half-width about an axis. */
 #define WEDGE_TAN 0.41421356
 
-int rl_motion_on_axis(double dx, double dy, int a)
-{
-    /* the axis's direction (c, s) and its normal; along the axis within the wedge */
-    static const double c[RL_MOTION_AXES] = {1.0, 0.70710678, 0.0, -0.70710678};
-    static const double s[RL_MOTION_AXES] = {0.0, 0.70710678, 1.0, 0.70710678};
-    double along = dx * c[a] + dy * s[a], across = -dx * s[a] + dy * c[a];
-    return fabs(across) <= WEDGE_TAN * fabs(along);
-}
-
-/* The axis a pixel at (dx, dy) lies on (the wedges cover every
- * direction; on a boundary the first). */
+/* The axis a pixel at (dx, dy) lies on: within 22.5 degrees of a row or a
+ * column, else on the diagonal its signs give. */
 static int axis_of(double dx, double dy)
 {
-    int a;
-    for (a = 0; a < RL_MOTION_AXES - 1; a++)
-        if (rl_motion_on_axis(dx, dy, a))
-            return a;
-    return RL_MOTION_AXES - 1;
+    double ax = fabs(dx), ay = fabs(dy);
+    if (ay <= WEDGE_TAN * ax)
+        return 0;
+    if (ax <= WEDGE_TAN * ay)
+        return 2;
+    return (dx > 0) == (dy > 0) ? 1 : 3;
+}
+
+int rl_motion_on_axis(double dx, double dy, int a)
+{
+    return axis_of(dx, dy) == a;
 }
 
 int rl_motion_measure(const rl_image *img, double cx, double cy, double r, rl_motion *m)

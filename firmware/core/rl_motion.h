@@ -39,8 +39,9 @@ typedef struct {
 int rl_motion_measure(const rl_image *img, double cx, double cy, double r, rl_motion *m);
 
 /* Whether a pixel at (dx, dy) from a centre lies within 22.5 degrees of
- * axis a (either side of the centre): the wedge rl_motion_measure sums
- * into a, and rl_profile_gather_axis gathers. */
+ * axis a (either side of the centre; a pixel on a wedge's edge in one of
+ * the two): the wedge rl_motion_measure sums into a, and
+ * rl_profile_gather_axis gathers. */
 int rl_motion_on_axis(double dx, double dy, int a);
 
 #endif
