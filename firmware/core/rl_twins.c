@@ -366,8 +366,8 @@ static int cut_circle_on_edge(const rl_image *img, const rl_tone *tone, int ligh
 /* Whether d, a landmark that moved (rl_motion_measure) refused by the
  * reads of its whole ring, keeps its id read across its motion: along its
  * sharpest axis alone, through the other formation and the frame's curve
- * (keeps, tol), about its centre and, for a local read, about its
- * darkness centroid too.
+ * (keeps, tol), about its centre and, but for a whole global read, about
+ * a centre chosen for no id too.
  *
  * A motion mixes light on the sensor, whatever the camera does after its
  * curve: along it the rings are smeared, and there the grey levels'
@@ -380,11 +380,17 @@ static int cut_circle_on_edge(const rl_image *img, const rl_tone *tone, int ligh
  * for no id (the rings' gradients). A read along one axis cannot see its
  * centre off across that axis, and a local read's centre is where its
  * search found the id fitting best (a whole 12 read as 30 from a circle
- * 2.6 px off its centre led 12 along the sharpest axis): about the
+ * 2.6 px off its centre: 30 led along the sharpest axis there): about the
  * darkness centroid (rl_refine_centre, twice: chosen for no id, and a
  * straight motion smears a ring alike on both sides of it) the id must
- * lead too. A cut local read has no such centre: not judged here. A
- * global read's centre is already its darkness centroid. */
+ * lead too; for a cut read of either pass, whose centroid the border
+ * skews (rl_refine_centre leaves a cut disk's alone), about the
+ * centre of the circle fitted to its outer edge from its circle
+ * (rl_edge_fit_rays; within EDGE_RADIUS of its radius and EDGE_REACH
+ * radii of its centre, else not kept). The outer edge's own arc
+ * (edge_centre) gave a whole one's centre on 1 of 12 moving frames'
+ * refusals: motion breaks the arcs. A whole global read's centre is
+ * already its darkness centroid (docs/results.md, twelfth session). */
 static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels *lv, const rl_detection *d,
                        const int *rv, int n, double tol)
 {
@@ -392,16 +398,23 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
     rl_motion mo;
     rl_detection c = *d;
     double fit;
-    if ((d->pass == RL_PASS_LOCAL && !d->complete) || !rl_motion_measure(img, d->u, d->v, d->radius, &mo) ||
-        mo.ratio > RL_TWINS_MOVED)
+    if (!rl_motion_measure(img, d->u, d->v, d->radius, &mo) || mo.ratio > RL_TWINS_MOVED)
         return 0;
     if (!keeps(d, tol, axis_lead(rec, img, other, d, rv, n, mo.axis, &fit),
                axis_lead(rec, img, rec->tone, d, rv, n, mo.axis, &fit)))
         return 0;
-    if (d->pass != RL_PASS_LOCAL)
+    if (d->pass != RL_PASS_LOCAL && d->complete)
         return 1;
-    rl_refine_centre(img, lv, &c.u, &c.v, c.radius);
-    rl_refine_centre(img, lv, &c.u, &c.v, c.radius);
+    if (d->complete) {
+        rl_refine_centre(img, lv, &c.u, &c.v, c.radius);
+        rl_refine_centre(img, lv, &c.u, &c.v, c.radius);
+    } else {
+        double r = d->radius;
+        if (!rl_edge_fit_rays(img, rec->tone, lv->light, &c.u, &c.v, &r) ||
+            !(fabs(r - d->radius) <= EDGE_RADIUS * d->radius) ||
+            !(hypot(c.u - d->u, c.v - d->v) <= EDGE_REACH * d->radius))
+            return 0;
+    }
     return keeps(d, tol, axis_lead(rec, img, other, &c, rv, n, mo.axis, &fit),
                  axis_lead(rec, img, rec->tone, &c, rv, n, mo.axis, &fit));
 }
