@@ -18,7 +18,13 @@
  * moves; a whole local read about its outer edge's centre too, one
  * chosen for no id, where the edge gives one near its circle) it leads
  * every id up to two zones away clearly, its lead through the frame's
- * curve clear too. A landmark too small for its twins to be
+ * curve clear too; or, for a landmark that moved during the exposure
+ * (rl_motion: its rings sharper across the motion than along it) in a
+ * frame read through a curve, unless read along its sharpest axis alone
+ * (where only the blur that is the same every way is left) it passes the
+ * same rule there, about its centre and, but for a whole global read,
+ * about a centre chosen for no id (a whole one's darkness centroid, a cut
+ * one's outer edge). A landmark too small for its twins to be
  * told apart at all (code zone 1 under RL_TWINS_MIN_ZONE_PX) gets no id,
  * nor a cut local read whose circle the search took off its outer edge
  * (RL_TWINS_CUT_BULGE).
