@@ -56,15 +56,21 @@
  * gamma 1 it cost two right cut reads of the 28Sep2013 development
  * photos' letter sheets and won one; no wrong cut read was kept without
  * it). */
-static double twin_lead_wide(const rl_recog *rec, const rl_profile *wide, double top, int reach,
-                             const rl_detection *d, const int *rv, int n, double *fit)
+static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
+                        const int *rv, int n, int far, int axis, double *fit)
 {
-    int k;
-    double own = -1, twin = -1;
+    int reach = far ? SCALES_FAR : SCALES_NEAR, k;
+    double own = -1, twin = -1, top = 1.0 + reach * SCALE_STEP;
+    rl_profile wide;
+    /* axis >= 0: its pixels alone, every row (moved_keeps) */
+    if (axis < 0)
+        rl_profile_gather_rows(img, tone, d->u, d->v, d->radius * top, ROW_STEP, &wide);
+    else
+        rl_profile_gather_axis(img, tone, d->u, d->v, d->radius * top, axis, &wide);
     for (k = -reach; k <= reach; k++) {
         rl_profile p;
         rl_match m;
-        rl_profile_rescale(wide, (1.0 + k * SCALE_STEP) / top, &p);
+        rl_profile_rescale(&wide, (1.0 + k * SCALE_STEP) / top, &p);
         /* the rivals at every blur: through the other formation a rival
          * may fit another than the id does; the id too near its radius */
         if (k >= -SCALES_NEAR && k <= SCALES_NEAR) {
@@ -80,27 +86,6 @@ static double twin_lead_wide(const rl_recog *rec, const rl_profile *wide, double
     }
     *fit = own;
     return own - twin;
-}
-
-static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
-                        const int *rv, int n, int far, double *fit)
-{
-    int reach = far ? SCALES_FAR : SCALES_NEAR;
-    double top = 1.0 + reach * SCALE_STEP;
-    rl_profile wide;
-    rl_profile_gather_rows(img, tone, d->u, d->v, d->radius * top, ROW_STEP, &wide);
-    return twin_lead_wide(rec, &wide, top, reach, d, rv, n, fit);
-}
-
-/* twin_lead (0.97 .. 1.03 of the radius) read from the pixels along axis
- * a alone (rl_profile_gather_axis), every row. */
-static double axis_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
-                        const int *rv, int n, int a, double *fit)
-{
-    double top = 1.0 + SCALES_NEAR * SCALE_STEP;
-    rl_profile wide;
-    rl_profile_gather_axis(img, tone, d->u, d->v, d->radius * top, a, &wide);
-    return twin_lead_wide(rec, &wide, top, SCALES_NEAR, d, rv, n, fit);
 }
 
 /* Radii the rank read gathers for: RANK_SCALES from RANK_FROM of the
@@ -364,33 +349,16 @@ static int cut_circle_on_edge(const rl_image *img, const rl_tone *tone, int ligh
 }
 
 /* Whether d, a landmark that moved (rl_motion_measure) refused by the
- * reads of its whole ring, keeps its id read across its motion: along its
- * sharpest axis alone, through the other formation and the frame's curve
- * (keeps, tol), about its centre and, but for a whole global read, about
- * a centre chosen for no id too.
- *
- * A motion mixes light on the sensor, whatever the camera does after its
- * curve: along it the rings are smeared, and there the grey levels'
- * reading differs from the light's by the smear's width, enough for a
- * zone twin at a moving template to lead (the moving robot's refused
- * right reads: the twin 0.001-0.03 ahead through the grey levels, at the
- * strongest motion template or the softest focus one). Across the motion
- * only the blur that is the same every way is left, as on a landmark that
- * did not move, and the twins are told apart as there. The axis is chosen
- * for no id (the rings' gradients). A read along one axis cannot see its
- * centre off across that axis, and a local read's centre is where its
- * search found the id fitting best (a whole 12 read as 30 from a circle
- * 2.6 px off its centre: 30 led along the sharpest axis there): about the
- * darkness centroid (rl_refine_centre, twice: chosen for no id, and a
- * straight motion smears a ring alike on both sides of it) the id must
- * lead too; for a cut read of either pass, whose centroid the border
- * skews (rl_refine_centre leaves a cut disk's alone), about the
- * centre of the circle fitted to its outer edge from its circle
- * (rl_edge_fit_rays; within EDGE_RADIUS of its radius and EDGE_REACH
- * radii of its centre, else not kept). The outer edge's own arc
- * (edge_centre) gave a whole one's centre on 1 of 12 moving frames'
- * refusals: motion breaks the arcs. A whole global read's centre is
- * already its darkness centroid (docs/results.md, twelfth session). */
+ * reads of its whole ring, passes keeps (tol) read along its sharpest axis
+ * alone, through both formations: across a motion only the blur that is
+ * the same every way is left (docs/design.md, rule 5). An axis cannot see
+ * a centre off across it, and a local read's centre is where the id fit
+ * best (a whole 12 read as 30 from 2.6 px off led there), so but for a
+ * whole global read (its centre a darkness centroid) the id must pass
+ * about a centre chosen for no id too: a whole one's darkness centroid
+ * (twice; a straight motion smears a ring alike on both sides), a cut
+ * one's outer edge (rl_edge_fit_rays from its circle, near it; the arc's,
+ * edge_centre, came on 1 of 12 moved refusals: motion breaks arcs). */
 static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels *lv, const rl_detection *d,
                        const int *rv, int n, double tol)
 {
@@ -400,8 +368,8 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
     double fit;
     if (!rl_motion_measure(img, d->u, d->v, d->radius, &mo) || mo.ratio > RL_TWINS_MOVED)
         return 0;
-    if (!keeps(d, tol, axis_lead(rec, img, other, d, rv, n, mo.axis, &fit),
-               axis_lead(rec, img, rec->tone, d, rv, n, mo.axis, &fit)))
+    if (!keeps(d, tol, twin_lead(rec, img, other, d, rv, n, 0, mo.axis, &fit),
+               twin_lead(rec, img, rec->tone, d, rv, n, 0, mo.axis, &fit)))
         return 0;
     if (d->pass != RL_PASS_LOCAL && d->complete)
         return 1;
@@ -415,8 +383,8 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
             !(hypot(c.u - d->u, c.v - d->v) <= EDGE_REACH * d->radius))
             return 0;
     }
-    return keeps(d, tol, axis_lead(rec, img, other, &c, rv, n, mo.axis, &fit),
-                 axis_lead(rec, img, rec->tone, &c, rv, n, mo.axis, &fit));
+    return keeps(d, tol, twin_lead(rec, img, other, &c, rv, n, 0, mo.axis, &fit),
+                 twin_lead(rec, img, rec->tone, &c, rv, n, 0, mo.axis, &fit));
 }
 
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
@@ -489,7 +457,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * whole one read as linear: its rivals through the other
          * formation at the radius they fit (twin_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (curved ? d.radius < far_radius : d.complete);
-        lead = twin_lead(rec, img, other, &d, rv, n, far, &fit);
+        lead = twin_lead(rec, img, other, &d, rv, n, far, -1, &fit);
         /* a circle far from what was read (an ellipse the local pass read
          * in its own shape, at a wide-angle lens's border) says nothing */
         if (fit < d.score - RL_TWINS_UNFIT) {
@@ -501,7 +469,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         /* through the frame's own curve only where the other's lead
          * alone does not keep it (own: 0, the id's lead where it was read) */
         if (!keeps(&d, tol, lead, 0.0))
-            own = twin_lead(rec, img, rec->tone, &d, rv, n, 0, &fit);
+            own = twin_lead(rec, img, rec->tone, &d, rv, n, 0, -1, &fit);
         /* the formations disagree: the read through any monotone curve
          * decides, where the frame's curve reads the id clearly too
          * (RL_TWINS_RANK_OWN) */
