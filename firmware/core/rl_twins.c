@@ -358,18 +358,19 @@ static int cut_circle_on_edge(const rl_image *img, const rl_tone *tone, int ligh
  * about a centre chosen for no id too: a whole one's darkness centroid
  * (twice; a straight motion smears a ring alike on both sides), a cut
  * one's outer edge (rl_edge_fit_rays from its circle, near it; the arc's,
- * edge_centre, came on 1 of 12 moved refusals: motion breaks arcs). */
+ * edge_centre, came on 1 of 12 moved refusals: motion breaks arcs).
+ * *least: the least lead through the other formation it read. */
 static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels *lv, const rl_detection *d,
-                       const int *rv, int n, double tol)
+                       const int *rv, int n, double tol, double *least)
 {
     const rl_tone *other = rl_tones_other(&rec->tones, rec->tone);
     rl_motion mo;
     rl_detection c = *d;
-    double fit;
+    double fit, lead;
     if (!rl_motion_measure(img, d->u, d->v, d->radius, &mo) || mo.ratio > RL_TWINS_MOVED)
         return 0;
-    if (!keeps(d, tol, twin_lead(rec, img, other, d, rv, n, 0, mo.axis, &fit),
-               twin_lead(rec, img, rec->tone, d, rv, n, 0, mo.axis, &fit)))
+    *least = twin_lead(rec, img, other, d, rv, n, 0, mo.axis, &fit);
+    if (!keeps(d, tol, *least, twin_lead(rec, img, rec->tone, d, rv, n, 0, mo.axis, &fit)))
         return 0;
     if (d->pass != RL_PASS_LOCAL && d->complete)
         return 1;
@@ -383,8 +384,9 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
             !(hypot(c.u - d->u, c.v - d->v) <= EDGE_REACH * d->radius))
             return 0;
     }
-    return keeps(d, tol, twin_lead(rec, img, other, &c, rv, n, 0, mo.axis, &fit),
-                 twin_lead(rec, img, rec->tone, &c, rv, n, 0, mo.axis, &fit));
+    lead = twin_lead(rec, img, other, &c, rv, n, 0, mo.axis, &fit);
+    *least = lead < *least ? lead : *least;
+    return keeps(d, tol, lead, twin_lead(rec, img, rec->tone, &c, rv, n, 0, mo.axis, &fit));
 }
 
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
@@ -477,8 +479,13 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
             (rank_fits(&d, curved, others_median(radii, all, i)) && own > RL_TWINS_RANK_OWN &&
              rank_keeps(rec, img, rec->tone, res->levels.light, &d)))
             keep(res, &kept_n, &d, kept, i);
-        else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol))
+        else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol, &lead)) {
+            /* its runner-up from the reads across the motion it passed */
+            d.runner_up = res->landmarks[i].runner_up;
+            if (d.score - lead > d.runner_up)
+                d.runner_up = d.score - lead;
             keep(res, &kept_n, &d, kept, i);
+        }
         else
             rl_result_add_unidentified(res, &d);
     }
