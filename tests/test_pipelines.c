@@ -15,9 +15,14 @@
  * and must give the same ids at the same places both ways, and no wrong
  * one either way (a radius refined for the id read once let rl_twins
  * keep a 24 read as its twin 16 at gamma 1: tests/frames/band_twin_000).
+ * With RL_PIPE_MISSES=k in the environment, at most k of the set's whole
+ * landmarks may go unidentified at gamma 2.2 and auto (the renderer's
+ * curve, and the one learned from the frame): for frames a change is to
+ * read.
  */
 #include "rl_test.h"
 #include <math.h>
+#include <stdlib.h>
 #include "fixture_eval.h"
 #include "rl_heap_recog.h"
 #include "rl_png.h"
@@ -110,6 +115,9 @@ static void pipeline_set(void **state)
             fail_msg("no %s frames in %s", set, dir);
         if (g == 0)
             assert_true(c.complete_ident >= 0.5 * c.complete && c.complete > 0);
+        if (g < 2 && getenv("RL_PIPE_MISSES") != NULL && c.complete - c.complete_ident > atoi(getenv("RL_PIPE_MISSES")))
+            fail_msg("%s at gamma %s: %d whole landmarks not identified, at most %s", dir, g == 1 ? "auto" : "2.2",
+                     c.complete - c.complete_ident, getenv("RL_PIPE_MISSES"));
         wrong += c.wrong_id;
     }
     if (wrong > 0) {

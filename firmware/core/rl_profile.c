@@ -4,6 +4,7 @@
 #include <stdint.h>
 #include <string.h>
 #include "rl_clones.h"
+#include "rl_motion.h"
 
 /* Pixels of a row handled at a time: their bins first, in blocks of
  * GATHER_BLOCK (a fixed count the compiler vectorizes), then the sums. */
@@ -263,4 +264,35 @@ void rl_profile_rescale_by(const rl_profile *src, const rl_profile_scale *sc, rl
         dst->n[j] += src->n[k];
         dst->sx[j] += src->sx[k];
     }
+}
+
+void rl_profile_gather_axis(const rl_image *img, const rl_tone *tone, double cx, double cy, double r, int a,
+                            rl_profile *p)
+{
+    double ext = RL_PROFILE_EXTENT * r, scale = RL_PROFILE_BINS / ext;
+    int x0 = (int)ceil(cx - ext), x1 = (int)floor(cx + ext), y0 = (int)ceil(cy - ext), y1 = (int)floor(cy + ext);
+    int x, y, k;
+    memset(p, 0, sizeof *p);
+    if (x0 < 0) x0 = 0;
+    if (y0 < 0) y0 = 0;
+    if (x1 > img->width - 1) x1 = img->width - 1;
+    if (y1 > img->height - 1) y1 = img->height - 1;
+    for (y = y0; y <= y1; y++) {
+        const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
+        double dy = y - cy;
+        for (x = x0; x <= x1; x++) {
+            double dx = x - cx, d = sqrt(dx * dx + dy * dy);
+            double v;
+            if (d >= ext || !rl_motion_on_axis(dx, dy, a))
+                continue;
+            k = (int)(d * scale);
+            k = k < RL_PROFILE_BINS - 1 ? k : RL_PROFILE_BINS - 1;
+            v = (double)(uint32_t)tone->packed[row[x]];
+            p->n[k] += 1;
+            p->sx[k] += v;
+            p->sxx += v * v;
+        }
+    }
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        p->total += p->n[k];
 }

@@ -51,6 +51,13 @@ void rl_profile_gather_shaped(const rl_image *img, const rl_tone *tone, double c
 void rl_profile_gather_rows(const rl_image *img, const rl_tone *tone, double cx, double cy, double r,
                             int step, rl_profile *p);
 
+/* rl_profile_gather from the pixels within 22.5 degrees of axis a alone
+ * (rl_motion_on_axis: either side of the centre), no plane left out: a
+ * moving landmark read across its motion (rl_motion), where the rings are
+ * sharp. Plain per-pixel code: for the few reads that need it. */
+void rl_profile_gather_axis(const rl_image *img, const rl_tone *tone, double cx, double cy, double r, int a,
+                            rl_profile *p);
+
 /* Profile src, gathered at radius r, as one gathered at s * r would be
  * (s <= 1): each bin's pixels moved to the bin its middle falls in, those
  * past the extent into the last bin (as gathering puts the rim's). Three

@@ -6,8 +6,10 @@
 #include "rl_ellipse.h"
 #include "rl_match.h"
 #include "rl_median.h"
+#include "rl_motion.h"
 #include "rl_profile.h"
 #include "rl_rank.h"
+#include "rl_refine.h"
 #include "rl_result.h"
 
 /* Radius scales a landmark and its twins are scored at (the radius was
@@ -55,12 +57,16 @@
  * photos' letter sheets and won one; no wrong cut read was kept without
  * it). */
 static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
-                        const int *rv, int n, int far, double *fit)
+                        const int *rv, int n, int far, int axis, double *fit)
 {
     int reach = far ? SCALES_FAR : SCALES_NEAR, k;
     double own = -1, twin = -1, top = 1.0 + reach * SCALE_STEP;
     rl_profile wide;
-    rl_profile_gather_rows(img, tone, d->u, d->v, d->radius * top, ROW_STEP, &wide);
+    /* axis >= 0: its pixels alone, every row (moved_keeps) */
+    if (axis < 0)
+        rl_profile_gather_rows(img, tone, d->u, d->v, d->radius * top, ROW_STEP, &wide);
+    else
+        rl_profile_gather_axis(img, tone, d->u, d->v, d->radius * top, axis, &wide);
     for (k = -reach; k <= reach; k++) {
         rl_profile p;
         rl_match m;
@@ -342,6 +348,47 @@ static int cut_circle_on_edge(const rl_image *img, const rl_tone *tone, int ligh
     return hypot(u - d->u, v - d->v) + d->radius - r <= RL_TWINS_CUT_BULGE * d->radius;
 }
 
+/* Whether d, a landmark that moved (rl_motion_measure) refused by the
+ * reads of its whole ring, passes keeps (tol) read along its sharpest axis
+ * alone, through both formations: across a motion only the blur that is
+ * the same every way is left (docs/design.md, rule 5). An axis cannot see
+ * a centre off across it, and a local read's centre is where the id fit
+ * best (a whole 12 read as 30 from 2.6 px off led there), so but for a
+ * whole global read (its centre a darkness centroid) the id must pass
+ * about a centre chosen for no id too: a whole one's darkness centroid
+ * (twice; a straight motion smears a ring alike on both sides), a cut
+ * one's outer edge (rl_edge_fit_rays from its circle, near it; the arc's,
+ * edge_centre, came on 1 of 12 moved refusals: motion breaks arcs).
+ * *least: the least lead through the other formation it read. */
+static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels *lv, const rl_detection *d,
+                       const int *rv, int n, double tol, double *least)
+{
+    const rl_tone *other = rl_tones_other(&rec->tones, rec->tone);
+    rl_motion mo;
+    rl_detection c = *d;
+    double fit, lead;
+    if (!rl_motion_measure(img, d->u, d->v, d->radius, &mo) || mo.ratio > RL_TWINS_MOVED)
+        return 0;
+    *least = twin_lead(rec, img, other, d, rv, n, 0, mo.axis, &fit);
+    if (!keeps(d, tol, *least, twin_lead(rec, img, rec->tone, d, rv, n, 0, mo.axis, &fit)))
+        return 0;
+    if (d->pass != RL_PASS_LOCAL && d->complete)
+        return 1;
+    if (d->complete) {
+        rl_refine_centre(img, lv, &c.u, &c.v, c.radius);
+        rl_refine_centre(img, lv, &c.u, &c.v, c.radius);
+    } else {
+        double r = d->radius;
+        if (!rl_edge_fit_rays(img, rec->tone, lv->light, &c.u, &c.v, &r) ||
+            !(fabs(r - d->radius) <= EDGE_RADIUS * d->radius) ||
+            !(hypot(c.u - d->u, c.v - d->v) <= EDGE_REACH * d->radius))
+            return 0;
+    }
+    lead = twin_lead(rec, img, other, &c, rv, n, 0, mo.axis, &fit);
+    *least = lead < *least ? lead : *least;
+    return keeps(d, tol, lead, twin_lead(rec, img, rec->tone, &c, rv, n, 0, mo.axis, &fit));
+}
+
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
 static void keep(rl_result *res, int *n, const rl_detection *d, unsigned char *kept, int i)
 {
@@ -412,7 +459,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * whole one read as linear: its rivals through the other
          * formation at the radius they fit (twin_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (curved ? d.radius < far_radius : d.complete);
-        lead = twin_lead(rec, img, other, &d, rv, n, far, &fit);
+        lead = twin_lead(rec, img, other, &d, rv, n, far, -1, &fit);
         /* a circle far from what was read (an ellipse the local pass read
          * in its own shape, at a wide-angle lens's border) says nothing */
         if (fit < d.score - RL_TWINS_UNFIT) {
@@ -424,7 +471,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         /* through the frame's own curve only where the other's lead
          * alone does not keep it (own: 0, the id's lead where it was read) */
         if (!keeps(&d, tol, lead, 0.0))
-            own = twin_lead(rec, img, rec->tone, &d, rv, n, 0, &fit);
+            own = twin_lead(rec, img, rec->tone, &d, rv, n, 0, -1, &fit);
         /* the formations disagree: the read through any monotone curve
          * decides, where the frame's curve reads the id clearly too
          * (RL_TWINS_RANK_OWN) */
@@ -432,6 +479,13 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
             (rank_fits(&d, curved, others_median(radii, all, i)) && own > RL_TWINS_RANK_OWN &&
              rank_keeps(rec, img, rec->tone, res->levels.light, &d)))
             keep(res, &kept_n, &d, kept, i);
+        else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol, &lead)) {
+            /* its runner-up from the reads across the motion it passed */
+            d.runner_up = res->landmarks[i].runner_up;
+            if (d.score - lead > d.runner_up)
+                d.runner_up = d.score - lead;
+            keep(res, &kept_n, &d, kept, i);
+        }
         else
             rl_result_add_unidentified(res, &d);
     }
