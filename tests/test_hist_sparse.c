@@ -121,7 +121,8 @@ static void kmeans_passes_empty_levels(void **state)
         same++;
         differ_centres += k > 1 && c[0] != c[k - 1];
     }
-    printf("%d clusterings, %d of them of distinct centres: the same bounds and centres as every level summed\n",
+    printf("%d clusterings, %d of them of distinct centres: the same bounds and centres as every level "
+           "summed\n",
            same, differ_centres);
     assert_true(same > 15000 && differ_centres > 5000);
 }
