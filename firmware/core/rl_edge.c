@@ -261,12 +261,11 @@ static int count_near(const double *ex, const double *ey, int n, double cx, doub
  * about 1% of its radius (0.25 px at 24 px, 1.2 px at 120 px). */
 #define EDGE_FEW_GAP 6
 
-int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy,
+/* rl_edge_fit_rays on the n edge points its rays found (edge_points,
+ * the rays' bits in found). */
+static int fit_found(const double *ex, const double *ey, int n, uint64_t found, double *cx, double *cy,
                      double *r)
 {
-    double ex[RL_EDGE_RAYS], ey[RL_EDGE_RAYS];
-    uint64_t found;
-    int n = edge_points(img, tone, light, *cx, *cy, *r, ex, ey, &found);
     /* a few outliers left out (a whole 2 of the moving set, two of its
      * dozen points 4-6 px out, read a twentieth too large, its twin 18
      * leading) only where the rays that found the edge go round it, with
@@ -277,6 +276,15 @@ int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double
     return rl_edge_fit_points(ex, ey, n, misses_under(found, EDGE_FEW_GAP), cx, cy, r);
 }
 
+int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy,
+                     double *r)
+{
+    double ex[RL_EDGE_RAYS], ey[RL_EDGE_RAYS];
+    uint64_t found;
+    int n = edge_points(img, tone, light, *cx, *cy, *r, ex, ey, &found);
+    return fit_found(ex, ey, n, found, cx, cy, r);
+}
+
 /* The tolerance of rl_edge_fit_arc's count: ARC_NEAR_PX, or a 25th of the
  * radius where that is more (the edge's scatter grows with the size). */
 #define ARC_NEAR_PX 1.0
@@ -285,9 +293,12 @@ int rl_edge_fit_rays(const rl_image *img, const rl_tone *tone, int light, double
 int rl_edge_fit_arc(const rl_image *img, const rl_tone *tone, int light, double *cx, double *cy, double *r)
 {
     double ex[RL_EDGE_RAYS], ey[RL_EDGE_RAYS], tol;
-    /* the points rl_edge_fit_rays finds from the same start */
-    int n = rl_edge_points(img, tone, light, *cx, *cy, *r, ex, ey);
-    if (!rl_edge_fit_rays(img, tone, light, cx, cy, r))
+    uint64_t found;
+    /* the rays sampled once: rl_edge_fit_rays' points from the same start
+     * are both what it fits and what the circle is counted against (they
+     * were sampled twice: half the fallback's rays) */
+    int n = edge_points(img, tone, light, *cx, *cy, *r, ex, ey, &found);
+    if (!fit_found(ex, ey, n, found, cx, cy, r))
         return 0;
     tol = *r / ARC_NEAR > ARC_NEAR_PX ? *r / ARC_NEAR : ARC_NEAR_PX;
     return count_near(ex, ey, n, *cx, *cy, *r, tol) >= RL_EDGE_ARC_MIN_POINTS;

@@ -109,6 +109,8 @@ static void coarse_bounds(const rl_hist *h, int lo, int hi, int k, int *bound)
         double c = 0, s = 0, q = 0;
         int v;
         for (v = lo + i * COARSE; v < lo + (i + 1) * COARSE && v < hi; v++) {
+            if (h->bin[v] == 0)
+                continue; /* it would add +0.0 to sums that are +0.0 or more: no bit moves */
             c += h->bin[v];
             s += (double)h->bin[v] * v;
             q += (double)h->bin[v] * v * v;
@@ -133,6 +135,8 @@ static void lloyd(const rl_hist *h, int k, int *bound, double *centres)
         for (m = 0; m < k; m++) {
             double c = 0, s = 0;
             for (i = bound[m]; i < bound[m + 1]; i++) {
+                if (h->bin[i] == 0)
+                    continue; /* as in coarse_bounds: an empty level adds +0.0 */
                 c += h->bin[i];
                 s += (double)h->bin[i] * i;
             }

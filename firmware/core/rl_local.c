@@ -20,18 +20,24 @@
 #define ELLIPSE_MAX_MOVE 0.4
 
 /* The zone twins' best score against the ellipse e at radii around its
- * own, as m's runner-up when higher (as the search does for circles,
+ * own (at_r: e's profile at its own radius), as m's runner-up when higher (as the search does for circles,
  * which holds them and every other id one zone away: the ellipse's two
  * twins only, its reads not measured with the others). */
 static void ellipse_twins(const rl_templates *tt, const rl_image *img, const rl_tone *tone,
-                          const rl_ellipse *e, rl_match *m)
+                          const rl_ellipse *e, const rl_profile *at_r, rl_match *m)
 {
     int twins[2], n = rl_match_twins(tt, m->id, twins), k;
     for (k = 0; n > 0 && k < RL_SEARCH_TWIN_SCALES; k++) {
         rl_profile p;
+        const rl_profile *pk = at_r;
         rl_match mm;
-        rl_profile_gather_shaped(img, tone, e->cx, e->cy, e->r * rl_search_twin_scale[k], &e->shape, &p);
-        rl_match_ids(tt, &p, twins, n, -1, &mm);
+        /* at scale 1 (e->r * 1.0 is e->r) the profile local_ellipse
+         * gathered, at_r: not gathered again */
+        if (rl_search_twin_scale[k] != 1.0) {
+            rl_profile_gather_shaped(img, tone, e->cx, e->cy, e->r * rl_search_twin_scale[k], &e->shape, &p);
+            pk = &p;
+        }
+        rl_match_ids(tt, pk, twins, n, -1, &mm);
         if (mm.id >= 0 && mm.score > m->second)
             m->second = mm.score;
     }
@@ -40,27 +46,27 @@ static void ellipse_twins(const rl_templates *tt, const rl_image *img, const rl_
 /* The candidate at (cx, cy, r) as an ellipse fitted to its outer edge
  * (perspective, the lens: a circle's profile smears its zones): its match
  * into *m (its zone twins not yet in m->second: ellipse_twins), the span of light its contrast counts against into *span (not
- * sector-normalized) and the ellipse into *e; 0 when the
+ * sector-normalized), the ellipse into *e and its profile into *p; 0 when the
  * edge is no such ellipse. */
 static int local_ellipse(const rl_recog *rec, const rl_image *img, const rl_result *res,
-                         double cx, double cy, double r, rl_ellipse *e, rl_match *m, double *span)
+                         double cx, double cy, double r, rl_ellipse *e, rl_match *m, double *span,
+                         rl_profile *p)
 {
     const rl_templates *tt = &rec->templates;
     int light = res->levels.light;
     rl_levels local;
     double ex[RL_EDGE_RAYS], ey[RL_EDGE_RAYS], aspect;
     int n = rl_edge_points(img, rec->tone, light, cx, cy, r, ex, ey);
-    rl_profile p;
     if (!rl_ellipse_fit(ex, ey, n, cx, cy, r, e))
         return 0;
     aspect = rl_ellipse_aspect(&e->shape);
     if (aspect < ELLIPSE_MIN_ASPECT || aspect > ELLIPSE_MAX_ASPECT ||
         hypot(e->cx - cx, e->cy - cy) > ELLIPSE_MAX_MOVE * r || fabs(e->r - r) > ELLIPSE_MAX_MOVE * r)
         return 0;
-    rl_profile_gather_shaped(img, rec->tone, e->cx, e->cy, e->r, &e->shape, &p);
-    rl_match_all(tt, &p, m);
+    rl_profile_gather_shaped(img, rec->tone, e->cx, e->cy, e->r, &e->shape, p);
+    rl_match_all(tt, p, m);
     rl_accept_levels_at(&rec->illum, &res->levels, e->cx, e->cy, &local);
-    *span = rl_accept_span(&local, rec->tone, &p);
+    *span = rl_accept_span(&local, rec->tone, p);
     return 1;
 }
 
@@ -185,9 +191,10 @@ static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_resul
 {
     rl_ellipse e;
     rl_match me;
+    rl_profile pe;
     double span;
     int later;
-    if (!local_ellipse(rec, img, res, rd->cx, rd->cy, rd->r, &e, &me, &span))
+    if (!local_ellipse(rec, img, res, rd->cx, rd->cy, rd->r, &e, &me, &span, &pe))
         return 0;
     /* a higher runner-up only lowers a lead whose runner-up is >= 0: a
      * match the rule rejects without its twins' scores is rejected with
@@ -195,13 +202,13 @@ static int read_ellipse(const rl_recog *rec, const rl_image *img, const rl_resul
      * under the rule's score, which no runner-up makes taken */
     later = me.second >= 0;
     if (me.id >= 0 && !later && me.score >= rule->min_score)
-        ellipse_twins(&rec->templates, img, rec->tone, &e, &me);
+        ellipse_twins(&rec->templates, img, rec->tone, &e, &pe, &me);
     if (!local_accept(rule, &me, rec->width, rec->height, e.cx, e.cy, e.r, span))
         return 0;
     if (!in_frame(rec->width, rec->height, e.cx, e.cy) && me.id != rd->m.id)
         return -1;
     if (me.id >= 0 && later) {
-        ellipse_twins(&rec->templates, img, rec->tone, &e, &me);
+        ellipse_twins(&rec->templates, img, rec->tone, &e, &pe, &me);
         if (!local_accept(rule, &me, rec->width, rec->height, e.cx, e.cy, e.r, span))
             return 0;
     }

@@ -20,7 +20,8 @@ static const double search_scale[SEARCH_ROUNDS] = {0.03, 0.015};
 const double rl_search_twin_scale[RL_SEARCH_TWIN_SCALES] = {0.95, 1.0, 1.05, 1.1};
 
 /* Where the search stands: the best centre shift and radius scale so far,
- * their score over the likely ids at one blur, and their profile. */
+ * their score over the likely ids at one blur, and their profile (at the
+ * start the circle's own). */
 typedef struct {
     rl_match_list likely;
     double x, y, s, score;
@@ -86,7 +87,8 @@ static void search_crosses(const rl_polar *pol, search_state *st)
     }
 }
 
-/* The winner's rivals, every id one code zone from it (its zone twins in
+/* The winner's rivals (at_s: the profile of the octants at x, y, s),
+ * every id one code zone from it (its zone twins in
  * the two zones next to the outer ring and the ids that differ in any
  * other zone: rl_family_zone_twins), each at its best radius
  * (RL_SEARCH_TWIN_SCALES) near the found one and its best blur, read from
@@ -105,14 +107,20 @@ static void search_crosses(const rl_polar *pol, search_state *st)
  * docs/results.md, "The search's twin check at every blur" and "Every id
  * one zone away"). */
 static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, double y, double s,
-                       unsigned octants, rl_match *m)
+                       unsigned octants, const rl_profile *at_s, rl_match *m)
 {
     int rivals[RL_MAX_BITS], n = rl_family_zone_twins(&tt->fam, m->id, rivals), k;
     for (k = 0; n > 0 && k < RL_SEARCH_TWIN_SCALES; k++) {
         rl_profile p;
+        const rl_profile *pk = at_s;
         rl_match mm;
-        rl_polar_profile_octants(pol, x, y, s * rl_search_twin_scale[k], octants, &p);
-        rl_match_ids(tt, &p, rivals, n, -1, &mm);
+        /* at scale 1 the profile is at_s, the caller's from the same
+         * arguments (s * 1.0 is s): not made again */
+        if (rl_search_twin_scale[k] != 1.0) {
+            rl_polar_profile_octants(pol, x, y, s * rl_search_twin_scale[k], octants, &p);
+            pk = &p;
+        }
+        rl_match_ids(tt, pk, rivals, n, -1, &mm);
         if (mm.id >= 0 && mm.score > m->second)
             m->second = mm.score;
     }
@@ -136,7 +144,7 @@ void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double
             continue; /* another code, or smeared: along the motion */
         if (m->id >= 0 && ma.second >= 0 && rl_accept_lead(&ma) <= rl_accept_lead(m))
             continue; /* its twins only lower its lead (a runner-up at or over 0): it cannot lead */
-        twin_check(tt, pol, x, y, s, reads[a], &ma);
+        twin_check(tt, pol, x, y, s, reads[a], &p, &ma);
         if (m->id < 0 || rl_accept_lead(&ma) > rl_accept_lead(m))
             *m = ma;
     }
@@ -167,6 +175,7 @@ int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_imag
     st.x = st.y = 0;
     st.s = 1.0;
     st.score = m->score;
+    st.best = p; /* the profile at (0, 0, 1): the twin check's where the search stays */
     sweep = search_try(pol, &st, 0, 0, SWEEP_SCALE);
     if (m->score < min_first && sweep < min_first)
         return 0; /* neither the circle nor the step out matches any id closely */
@@ -180,6 +189,6 @@ int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_imag
         *r *= st.s;
     }
     if (m->id >= 0 && m->score >= min_score)
-        twin_check(tt, pol, st.x, st.y, st.s, RL_POLAR_ALL, m);
+        twin_check(tt, pol, st.x, st.y, st.s, RL_POLAR_ALL, &st.best, m);
     return 1;
 }
