@@ -7,9 +7,9 @@
 #                        with the plain-C matcher (RL_NO_VECTOR_EXT) instead of the vector one;
 #                        its fixtures rendered by the renderer's code uninstrumented at -O2 (the
 #                        same bytes), the instrumented renderer checked against it (render_checked)
-#   make host-test-asan-vector  the tests that run the core's vector paths (the labeller's
-#                        run bounds, the gathers and their AVX2 clones, the polar scan,
-#                        rl_ray, the matcher's kernels) and the bad inputs, built with
+#   make host-test-asan-vector  the unit tests that run the core's vector paths (the
+#                        labeller's run bounds, the gathers and their AVX2 clones, the polar
+#                        scan, rl_ray, the matcher's kernels), built with
 #                        GCC under AddressSanitizer + UBSan with the vectors on
 #                        (build-asan-vec/): host-test-asan runs the plain C instead
 #   make demo            the firmware on a bundled drive: poses over a pty, report
@@ -158,13 +158,14 @@ host-test-asan:
 # of the core, and with clang, which has no AVX2 clones (rl_clones.h): none
 # of them ran under a sanitizer (twelfth session). This build keeps them on,
 # with GCC (its target_clones: the AVX2 clones run where the processor has
-# AVX2), and builds and runs only the tests that reach them and the bad
-# inputs through `ringloc` (odd sizes and strides: the vectors' tails; the
-# renderer, uninstrumented as in host-test-asan, makes their fixtures).
+# AVX2), and builds and runs only the unit tests that reach them: odd
+# widths, strides wider than the width and buffers that end at the last
+# pixel (the vectors' tails) are theirs. The bad inputs through `ringloc`
+# (options, files, YAML) reach no vector path and run in host-test-asan.
 ASAN_VEC_TESTS ?= test_polar test_polar_scan test_ray test_refine test_label_bounds test_label_chunks \
                   test_match test_profile test_recog test_oracles
 ASAN_VEC_NONE  :=
-ASAN_VEC_RUN   ?= ^($(subst $(ASAN_VEC_NONE) ,|,$(strip $(ASAN_VEC_TESTS)))|test_bad_inputs_[0-9]+)$$
+ASAN_VEC_RUN   ?= ^($(subst $(ASAN_VEC_NONE) ,|,$(strip $(ASAN_VEC_TESTS))))$$
 
 host-test-asan-vector:
 	@sh tools/deps.sh asan
@@ -173,7 +174,7 @@ host-test-asan-vector:
 	  rm -rf $(BUILD_ASAN_VEC); fi
 	cmake -S . -B $(BUILD_ASAN_VEC) $(call GEN,$(BUILD_ASAN_VEC)) -DCMAKE_C_COMPILER=gcc -DCMAKE_CXX_COMPILER=g++ \
 	  -DCMAKE_BUILD_TYPE=Debug -DRL_SANITIZE=ON -DRL_NO_VECTOR_EXT=OFF -DRL_FIXTURE_COUNT=12 $(CMAKE_ARGS)
-	cmake --build $(BUILD_ASAN_VEC) -j $(JOBS) --target $(ASAN_VEC_TESTS) ringloc ringloc-render
+	cmake --build $(BUILD_ASAN_VEC) -j $(JOBS) --target $(ASAN_VEC_TESTS)
 	cd $(BUILD_ASAN_VEC) && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp \
 	  ctest --output-on-failure -j $(JOBS) -R '$(ASAN_VEC_RUN)'
 
