@@ -75,6 +75,13 @@ static double region_size(const rl_region *g)
     return bw > bh ? bw : bh;
 }
 
+/* The shorter side of a region's box. */
+static double region_short_side(const rl_region *g)
+{
+    double bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
+    return bw < bh ? bw : bh;
+}
+
 /* Re-extraction: the largest region of landmark size near the candidate
  * (window coordinates, the window at w), one whose box holds the
  * candidate's centre before any other (a ring surrounds its centre; a
@@ -222,8 +229,10 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
     } else if (code_ring) {
         return 0; /* a code ring taken for its centre: its radius is not the landmark's */
     }
-    /* the outer ring's box, not the code ring's or the arc's */
-    if (code_ring || from_candidate)
+    /* the outer ring's box, not the code ring's, the arc's or a part's
+     * (motion can break the ring: a half of it of landmark length was
+     * taken, its box half as wide as the circle fitted to its edge) */
+    if (code_ring || from_candidate || (found && region_short_side(&rec->dark.reg[reg]) < RING_MIN_SIZE * *r))
         circle_box(rec->width, rec->height, *cx, *cy, *r, box);
     /* the frame's landmarks are of one size but for the lens: a wide angle
      * shrinks them towards the corners, where a circle fitted to an
