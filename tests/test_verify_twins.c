@@ -126,9 +126,8 @@ static void no_twin_confirmed(void **state)
 }
 
 /* The renderer's radius times these: a prediction 10-15% off, and 3-7%
- * off (twelfth session's review: a whole 2 taken as 18 from 5% long, where
- * the read sits at the end of the radii tried and the edge measured there
- * agrees with it). */
+ * off (twelfth session's review: a whole 2 of the moving set taken as 18
+ * from 5% long, read at the smallest radius tried). */
 static const double off_scales[] = {0.85, 0.88, 0.90, 0.93, 0.95, 0.97, 1.03, 1.05, 1.07, 1.10, 1.12, 1.15};
 #define N_OFF (int)(sizeof off_scales / sizeof off_scales[0])
 
