@@ -146,8 +146,55 @@ static void test_rescaled_profile_moves_bins(void **state)
     assert_true(q.n[3] == 10 && q.n[40] == 4);
 }
 
+/* The oracle of the rescale, from its definition (rl_profile.h): bin k's
+ * sums added, in k's order, into the bin its middle (k + 0.5) / s falls
+ * in, those past the end into the last. */
+static void rescaled_by_division(const rl_profile *src, double s, rl_profile *dst)
+{
+    int k;
+    memset(dst, 0, sizeof *dst);
+    dst->sxx = src->sxx;
+    dst->plane = src->plane;
+    dst->total = src->total;
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        double at = floor((k + 0.5) / s);
+        int j = at >= RL_PROFILE_BINS - 1 ? RL_PROFILE_BINS - 1 : (int)at;
+        dst->n[j] += src->n[k];
+        dst->sx[j] += src->sx[k];
+    }
+}
+
+/* At a tiny scale (a radius measured near 0) every bin's middle is past
+ * the end: all in the last bin (before the twelfth session's edge round
+ * the quotient was cast to int first, past int's range: undefined, a
+ * write far outside the profile on x86). */
+static void test_rescale_tiny_scale_to_last_bin(void **state)
+{
+    rl_profile p, q;
+    rl_profile_scale sc;
+    double tiny[] = {1e-300, 1e-12, 4e-9};
+    int i, k;
+    (void)state;
+    memset(&p, 0, sizeof p);
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        p.n[k] = 1;
+        p.sx[k] = k;
+    }
+    for (i = 0; i < 3; i++) {
+        rl_profile_rescale(&p, tiny[i], &q);
+        for (k = 0; k < RL_PROFILE_BINS - 1; k++)
+            assert_true(q.n[k] == 0 && q.sx[k] == 0);
+        assert_true(q.n[RL_PROFILE_BINS - 1] == RL_PROFILE_BINS);
+        assert_true(q.sx[RL_PROFILE_BINS - 1] == 0.5 * RL_PROFILE_BINS * (RL_PROFILE_BINS - 1));
+        rl_profile_scale_make(tiny[i], &sc);
+        for (k = 0; k < RL_PROFILE_BINS; k++)
+            assert_int_equal(sc.to[k], RL_PROFILE_BINS - 1);
+    }
+}
+
 /* A profile rescaled by the bins' moves worked out once for its scale
- * (rl_profile_scale_make) is the one rl_profile_rescale gives, bit for
+ * (rl_profile_scale_make) is the one rl_profile_rescale gives, and the
+ * one the division gives (rescaled_by_division), bit for
  * bit, at the verification's radii and at random ones (half of them
  * decimals, where a bin's middle falls on a bin's edge: 26.5 / 0.53), on
  * random profiles with empty bins; a scale table made for another scale
@@ -172,6 +219,8 @@ static void test_rescale_by_moves_is_rescale(void **state)
         assert_true(sc.made && sc.s == s);
         rl_profile_rescale_by(&p, &sc, &a);
         rl_profile_rescale(&p, s, &b);
+        assert_memory_equal(&a, &b, sizeof a);
+        rescaled_by_division(&p, s, &b);
         assert_memory_equal(&a, &b, sizeof a);
         rl_profile_rescale(&p, s * 0.97, &b);
         differ += memcmp(&a, &b, sizeof a) != 0;
@@ -396,6 +445,7 @@ int main(void)
         cmocka_unit_test(test_kernels_agree_bit_for_bit),
         cmocka_unit_test(test_rescaled_profile_moves_bins),
         cmocka_unit_test(test_rescale_by_moves_is_rescale),
+        cmocka_unit_test(test_rescale_tiny_scale_to_last_bin),
         cmocka_unit_test(test_scores_match_a_direct_correlation),
         cmocka_unit_test(test_wide_kernel_is_blocks_bit_for_bit),
         cmocka_unit_test(test_match_all_is_every_id_listed),

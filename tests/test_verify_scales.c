@@ -173,10 +173,69 @@ static void check_is_the_rule_in_full(void **state)
     assert_true(twin >= 100 && own >= 100 && elsewhere >= 100);
 }
 
+/* A profile of darkness levels d (one pixel a bin) for profile_edge. */
+static void levels_profile(const double *d, rl_profile *p)
+{
+    int k;
+    memset(p, 0, sizeof *p);
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        p->n[k] = 1;
+        p->sx[k] = d[k];
+        p->total += 1;
+    }
+}
+
+/* profile_edge's place between bins (twelfth session's edge round), by
+ * hand. The falls of darkness are written g(k) = d[k] - d[k + 1], at the
+ * boundary k + 1 (in bins; the edge is returned as boundary / BINS *
+ * EXTENT). Two profiles, bins 0..A at 100:
+ * - the ring's levels' midway (70, the lightest 40) first met from the
+ *   outside at bin A + 3, so the falls looked at are g(A + 1 .. A + 4):
+ *   10, 8.9, 1.1, 1; the steepest there is g(A + 1) (boundary A + 2) but
+ *   g(A) = 11, outside, is steeper: the edge is between the boundaries of
+ *   the two steepest falls, A + 1 .. A + 2 (a parabola through 11, 10,
+ *   8.9 has its top 10.5 bins off: the old code's answer);
+ * - midway 79.75 (the lightest 59.5) first met at A + 3, falls g(A .. A +
+ *   4) 4, 10, 6, 0.5, 0.5: the steepest g(A + 1) at least both
+ *   neighbours', its parabola through (-1, 4), (0, 10), (1, 6) tops at
+ *   (4 - 6) / (2 (4 - 20 + 6)) = 0.1: boundary A + 2.1. */
+static void edge_within_the_steepest_falls(void **state)
+{
+    enum { A = 20 };
+    const double w = RL_PROFILE_EXTENT / RL_PROFILE_BINS;
+    double d[RL_PROFILE_BINS], e;
+    rl_profile p;
+    int k;
+    (void)state;
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        d[k] = k <= A ? 100 : 40;
+    d[A + 1] = 89;
+    d[A + 2] = 79;
+    d[A + 3] = 70.1;
+    d[A + 4] = 69;
+    d[A + 5] = 68;
+    levels_profile(d, &p);
+    e = profile_edge(&p, 0.0);
+    printf("edge beside a steeper fall: %.3f bins (between %d and %d)\n", e / w, A + 1, A + 2);
+    assert_true(e >= (A + 1) * w - 1e-9 && e <= (A + 2) * w + 1e-9);
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        d[k] = k <= A ? 100 : 59.5;
+    d[A + 1] = 96;
+    d[A + 2] = 86;
+    d[A + 3] = 80;
+    d[A + 4] = 79.5;
+    d[A + 5] = 79;
+    levels_profile(d, &p);
+    e = profile_edge(&p, 0.0);
+    printf("edge at a peaked fall: %.4f bins (%.1f)\n", e / w, A + 2.1);
+    assert_true(fabs(e - (A + 2.1) * w) < 1e-9);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(check_is_the_rule_in_full),
+        cmocka_unit_test(edge_within_the_steepest_falls),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

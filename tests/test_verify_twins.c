@@ -125,8 +125,10 @@ static void no_twin_confirmed(void **state)
     assert_true(c.own_known >= c.own - c.own / 50);
 }
 
-/* The renderer's radius times these: a prediction 10-15% off. */
-static const double off_scales[] = {0.85, 0.88, 0.90, 1.10, 1.12, 1.15};
+/* The renderer's radius times these: a prediction 10-15% off, and 3-7%
+ * off (twelfth session's review: a whole 2 of the moving set taken as 18
+ * from 5% long, read at the smallest radius tried). */
+static const double off_scales[] = {0.85, 0.88, 0.90, 0.93, 0.95, 0.97, 1.03, 1.05, 1.07, 1.10, 1.12, 1.15};
 #define N_OFF (int)(sizeof off_scales / sizeof off_scales[0])
 
 typedef struct {
@@ -190,7 +192,7 @@ static void off_radius_not_taken(void **state)
     assert_int_equal(got, 0);
     rl_heap_recog_free(&hr);
     printf("%d about whole landmarks: %d verified as their own id (known), %d of %d from 5%% off; predicted "
-           "10-15%% off: %d of %d other ids taken\n",
+           "3-15%% off: %d of %d other ids taken\n",
            c.whole, c.own, c.own_near, 2 * c.whole, c.taken, c.tries);
     assert_true(c.whole >= 100);
     assert_true(c.own >= 0.6 * c.whole);

@@ -221,23 +221,17 @@ void rl_profile_gather_rows(const rl_image *img, const rl_tone *tone, double cx,
  * past it. */
 static int rescaled_bin(int k, double s)
 {
-    int j = (int)((k + 0.5) / s);
-    return j < RL_PROFILE_BINS - 1 ? j : RL_PROFILE_BINS - 1;
+    /* compared before the cast: at a tiny s the quotient is past int's
+     * range (the cast would be undefined) */
+    double j = (k + 0.5) / s;
+    return j < RL_PROFILE_BINS - 1 ? (int)j : RL_PROFILE_BINS - 1;
 }
 
 void rl_profile_rescale(const rl_profile *src, double s, rl_profile *dst)
 {
-    int k;
-    dst->sxx = src->sxx;
-    dst->plane = src->plane;
-    dst->total = src->total;
-    memset(dst->n, 0, sizeof dst->n);
-    memset(dst->sx, 0, sizeof dst->sx);
-    for (k = 0; k < RL_PROFILE_BINS; k++) {
-        int j = rescaled_bin(k, s);
-        dst->n[j] += src->n[k];
-        dst->sx[j] += src->sx[k];
-    }
+    rl_profile_scale sc;
+    rl_profile_scale_make(s, &sc);
+    rl_profile_rescale_by(src, &sc, dst);
 }
 
 void rl_profile_scale_make(double s, rl_profile_scale *sc)
@@ -257,8 +251,8 @@ void rl_profile_rescale_by(const rl_profile *src, const rl_profile_scale *sc, rl
     dst->total = src->total;
     memset(dst->n, 0, sizeof dst->n);
     memset(dst->sx, 0, sizeof dst->sx);
-    /* each bin's sums added in k's order into a zeroed bin, as
-     * rl_profile_rescale adds them */
+    /* each bin's sums added in k's order into a zeroed bin
+     * (rl_profile_rescale is this, by the moves made at its s) */
     for (k = 0; k < RL_PROFILE_BINS; k++) {
         int j = sc->to[k];
         dst->n[j] += src->n[k];
