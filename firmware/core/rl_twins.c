@@ -268,14 +268,16 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
     return keeps(tol, mg, lead, twin_lead(rec, img, rec->tone, &c, rv, n, 0, mo.axis, &fit));
 }
 
-/* Whether a small whole landmark read through a curve may keep its id
- * before the rules that keep one (keeps, the rank read, moved_keeps):
- * a global read where its twins at 0.91 .. 1.09 of its radius through
+/* Whether a small whole landmark that moved (rl_motion; every wrong read
+ * below had, and on still frames through a wide-angle lens, where the
+ * rings are ellipses, the global rule cost 3 right reads of 263) may keep
+ * its id before the rules that keep one (keeps, the rank read,
+ * moved_keeps): a global read where its twins at 0.91 .. 1.09 of its radius through
  * the frame's own curve do not lead it (three wrong reads of the
  * reviewer's stress sets, a 2 as 18 and a 4 as 20, the twin 0.0002 to
  * 0.001 ahead there, one of them kept by moved_keeps; every right one of
- * 2,246 led by 0.0016 or more); a local one that moved (rl_motion), where
- * it passes keeps along its sharpest axis too (two wrong, a 4 as 20 and
+ * 2,246 led by 0.0016 or more); a local one where it passes keeps along
+ * its sharpest axis too (two wrong, a 4 as 20 and
  * an 18 as 26, led their twins through both formations about the whole
  * ring but not along the axis; 11 of 1,100 right ones failed it). */
 static int small_fits(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n,
@@ -284,12 +286,10 @@ static int small_fits(const rl_recog *rec, const rl_image *img, const rl_detecti
     const rl_tone *other = rl_tones_other(&rec->tones, rec->tone);
     rl_motion mo;
     double fit;
-    if (!d->complete)
+    if (!d->complete || !rl_motion_measure(img, d->u, d->v, d->radius, &mo) || mo.ratio > RL_TWINS_MOVED)
         return 1;
     if (d->pass != RL_PASS_LOCAL)
         return twin_lead(rec, img, rec->tone, d, rv, n, 1, -1, &fit) > 0;
-    if (!rl_motion_measure(img, d->u, d->v, d->radius, &mo) || mo.ratio > RL_TWINS_MOVED)
-        return 1;
     return keeps(tol, mg, twin_lead(rec, img, other, d, rv, n, 0, mo.axis, &fit),
                  twin_lead(rec, img, rec->tone, d, rv, n, 0, mo.axis, &fit));
 }
