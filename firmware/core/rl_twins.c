@@ -158,7 +158,8 @@ static int keeps(double tol, double margin, double other, double own)
 
 /* The sum keeps wants: RL_TWINS_LOCAL_MARGIN for a local read (read
  * sector by sector, its own lead says less) and for a global one under
- * the far radius in a frame read through a curve (small: a whole 4 of a
+ * the far radius, whatever the curve (small; read as linear, a whole 4
+ * of a blurred moving frame read as 20 led by 0.0008 and 0.0026: a whole 4 of a
  * 16 px moving frame read as its twin 20 led it by 0.0039 through the
  * other formation and 0.0026 through its own, the right 23 of the same
  * frame by 0.0096 and 0.048: docs/results.md, twelfth session), else 0. */
@@ -329,7 +330,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
     for (i = 0; i < all; i++) {
         rl_detection d = res->landmarks[i];
         double lead, own = 0, fit, tol = tolerance(&d, curved), mg;
-        /* a small landmark in a frame read through a curve */
+        /* a small landmark (under the far radius), whatever the curve */
         int far, small = d.radius < far_radius;
         if (kept != NULL)
             kept[i] = 0;
