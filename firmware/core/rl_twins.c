@@ -158,11 +158,11 @@ static int keeps(double tol, double margin, double other, double own)
 
 /* The sum keeps wants: RL_TWINS_LOCAL_MARGIN for a local read (read
  * sector by sector, its own lead says less) and for a global one under
- * the far radius, whatever the curve (small; read as linear, a whole 4
- * of a blurred moving frame read as 20 led by 0.0008 and 0.0026: a whole 4 of a
- * 16 px moving frame read as its twin 20 led it by 0.0039 through the
- * other formation and 0.0026 through its own, the right 23 of the same
- * frame by 0.0096 and 0.048: docs/results.md, twelfth session), else 0. */
+ * the far radius, whatever the curve (small: a whole 4 of a 16 px
+ * moving frame read as its twin 20 led it by 0.0039 through the other
+ * formation and 0.0026 through its own, the right 23 of the same frame
+ * by 0.0096 and 0.048; another 4 read as 20 in a frame read as linear by
+ * 0.0008 and 0.0026: docs/results.md, twelfth session), else 0. */
 static double margin(const rl_detection *d, int small)
 {
     return d->pass == RL_PASS_LOCAL || small ? RL_TWINS_LOCAL_MARGIN : 0.0;
