@@ -140,6 +140,13 @@
  * measured 0.85-1; the moving set's right reads the check refused 0.4-0.87. */
 #define RL_TWINS_MOVED 0.8
 
+/* A landmark whose outer edge fits an ellipse of aspect (minor over major)
+ * under this is not read across a motion: a still one drawn slanted at
+ * 0.85 measures a ratio under RL_TWINS_MOVED at 12-16 px (test_motion),
+ * while a straight motion leaves a ring's outer edge round (its half
+ * level stays at the radius along the motion). */
+#define RL_TWINS_MOVED_ASPECT 0.9
+
 /* The radius (px) under which a landmark of fam gets no id: its code zone
  * 1 under RL_TWINS_MIN_ZONE_PX (ring4 11.2, ring5 14.2, ring6 17.2 px).
  * A landmark over it by its radius read but under it along its minor
