@@ -190,6 +190,14 @@ static void test_rescale_tiny_scale_to_last_bin(void **state)
         for (k = 0; k < RL_PROFILE_BINS; k++)
             assert_int_equal(sc.to[k], RL_PROFILE_BINS - 1);
     }
+    /* no caller's (the header: 0 < s <= 1), but a table built at s <= 0
+     * must still index the profile: every move to bin 0 (before the
+     * guard, -0.5 gave moves to 255 and 129) */
+    for (i = 0; i < 2; i++) {
+        rl_profile_scale_make(i == 0 ? -0.5 : -0.0, &sc);
+        for (k = 0; k < RL_PROFILE_BINS; k++)
+            assert_int_equal(sc.to[k], 0);
+    }
 }
 
 /* A profile rescaled by the bins' moves worked out once for its scale

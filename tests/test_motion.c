@@ -83,7 +83,9 @@ static double edge_aspect(const rl_image *img, double cx, double cy, double r)
 /* A still landmark seen slanted at 0.85 measures as moved at 12-16 px
  * (the reviewer's probe: ratio 0.775-0.793), so the twins must not read
  * it across a motion: its edge's ellipse is flatter than
- * RL_TWINS_MOVED_ASPECT. A round one moved 5 px (the moving frames'
+ * RL_TWINS_MOVED_ASPECT. This checks the measures and the constant that
+ * rl_twins.c's guard compares, not the guard's call itself (the guard
+ * only refuses reads: no wrong id either way). A round one moved 5 px (the moving frames'
  * motion) keeps a round edge and is read across its motion. */
 static void test_slanted_still_not_moved(void **state)
 {

@@ -30,8 +30,10 @@
  * 25th of its radius) of its circle. Where a
  * code ring was taken for the centre it surrounds, 0 when neither finds
  * the edge. The box is the region's, or the circle's within the frame
- * where the region was a code ring or the circle came from the
- * candidate's centre. */
+ * where the region was a code ring, the circle came from the
+ * candidate's centre, or the region's box is narrower than 1.6 of the
+ * fitted radius (a part of a ring motion broke; a cut landmark's or a
+ * flat ellipse's box is the circle's clipped to the frame then). */
 int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *res,
                          const rl_detection *u, double R, rl_box *box, double *cx, double *cy,
                          double *r);

@@ -222,9 +222,10 @@ void rl_profile_gather_rows(const rl_image *img, const rl_tone *tone, double cx,
 static int rescaled_bin(int k, double s)
 {
     /* compared before the cast: at a tiny s the quotient is past int's
-     * range (the cast would be undefined) */
+     * range, at s <= 0 (no caller's) negative or -inf: the cast would be
+     * undefined or the bin out of range; NaN goes to bin 0 */
     double j = (k + 0.5) / s;
-    return j < RL_PROFILE_BINS - 1 ? (int)j : RL_PROFILE_BINS - 1;
+    return !(j > 0) ? 0 : j < RL_PROFILE_BINS - 1 ? (int)j : RL_PROFILE_BINS - 1;
 }
 
 void rl_profile_rescale(const rl_profile *src, double s, rl_profile *dst)

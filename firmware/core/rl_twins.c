@@ -88,7 +88,6 @@ static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone 
     return own - twin;
 }
 
-
 /* The ids d is judged against: its zone twins; for a local read (sector
  * by sector, the centre searched) every other id of the table. */
 static int rivals(const rl_recog *rec, const rl_detection *d, int *out)

@@ -13,7 +13,8 @@
  * and radius (and 3% either side; a small local read's rivals in a frame
  * read through a curve 9%, RL_TWINS_FAR_ZONE_PX): one whose twin leads it there by more
  * than it leads the twin through the frame's curve is reported
- * unidentified, not as either id (a local read needs a margin more),
+ * unidentified, not as either id (a local read, and any read of a small
+ * landmark, under RL_TWINS_FAR_ZONE_PX's radius, needs a margin more),
  * unless read through any monotone curve (rl_rank, which no formation
  * moves; a whole local read about its outer edge's centre too, one
  * chosen for no id, where the edge gives one near its circle) it leads
@@ -24,7 +25,10 @@
  * (where only the blur that is the same every way is left) it passes the
  * same rule there, about its centre and, but for a whole global read,
  * about a centre chosen for no id (a whole one's darkness centroid, a cut
- * one's outer edge). A landmark too small for its twins to be
+ * one's outer edge). A small whole landmark that moved must also pass
+ * before any rule keeps it: a global read its twins at 9% either side
+ * through the frame's curve, a local read the rule along its sharpest
+ * axis (small_fits; docs/design.md, rule 6). A landmark too small for its twins to be
  * told apart at all (code zone 1 under RL_TWINS_MIN_ZONE_PX) gets no id,
  * nor a cut local read whose circle the search took off its outer edge
  * (RL_TWINS_CUT_BULGE).
@@ -37,14 +41,16 @@
 
 #include "rl_recog_state.h"
 
-/* A global read of a whole landmark whose id leads every other id through
- * its curve by this much correlation is clear (no such read the
+/* A global read of a whole landmark (not a small one: under
+ * RL_TWINS_FAR_ZONE_PX's radius it is always checked) whose id leads every
+ * other id through its curve by this much correlation is clear (no such read the
  * formations turned into a twin led by more than 0.036: composites and
  * moving frames, docs/design.md; a cut one read through the 2.2 curve
  * led by 0.055, so a landmark the border cuts is always checked in a frame
  * read through a curve). */
 #define RL_TWINS_CLEAR 0.05
-/* A local read's lead over its twins, both formations summed, at least;
+/* A local read's (and a small global read's) lead over its twins, both
+ * formations summed, at least;
  * and its twin's lead through the other formation, at most. */
 #define RL_TWINS_LOCAL_MARGIN 0.01
 /* A twin's lead through the other formation past which no lead through
@@ -153,9 +159,8 @@
  * axis (a slanted one: the ellipse fitted to its outer edge), in a frame
  * read through a curve, keeps its id only while no twin leads it at all
  * through the other formation (RL_TWINS_CUT_TOLERANCE), or by the rank
- * read; only under RL_TWINS_FAR_ZONE_PX's radius (ring5 21.3 px), and only
- * for reads not already clear (a whole global read leading every id by
- * RL_TWINS_CLEAR is kept as before). */
+ * read; only under RL_TWINS_FAR_ZONE_PX's radius (ring5 21.3 px), where no
+ * read is clear by RL_TWINS_CLEAR. */
 double rl_twins_min_radius(const rl_family *fam);
 
 /* Each landmark of res that is not clear checked against its zone twins

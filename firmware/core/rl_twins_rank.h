@@ -18,7 +18,7 @@
 #define RL_TWINS_EDGE_RADIUS 0.2
 #define RL_TWINS_EDGE_REACH 0.25
 
-/* Whether d's id leads every id RANK_ZONES zones from it or fewer by
+/* Whether d's id leads every id two zones from it or fewer by
  * RL_TWINS_RANK_LEAD read through any monotone curve, from gathers
  * through tone (light: the frame's light level). */
 int rl_twins_rank_keeps(const rl_recog *rec, const rl_image *img, const rl_tone *tone, int light,
