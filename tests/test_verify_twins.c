@@ -54,8 +54,9 @@ static int verify(const rl_recog *rec, const rl_image *img, const rl_result *res
            rl_verify_read_border(rec, img, res, id, known, l->u, l->v, l->radius, &d);
 }
 
-static void frame_twins(rl_heap_recog *hr, const char *set, const truth *t, twin_counts *c)
+static void frame_twins(rl_heap_recog *hr, const char *set, const truth *t, void *counts)
 {
+    twin_counts *c = counts;
     static rl_result res;
     char png[1200], err[512];
     rl_image img;
@@ -101,21 +102,28 @@ static void frame_twins(rl_heap_recog *hr, const char *set, const truth *t, twin
     rl_png_free(&img);
 }
 
-static void no_twin_confirmed(void **state)
+/* Every frame of the sets through frame(hr, set, truth, counts), one
+ * recognizer with the defaults for them all. */
+static void each_frame(void (*frame)(rl_heap_recog *, const char *, const truth *, void *), void *counts)
 {
     rl_recog_config cfg;
     rl_heap_recog hr;
-    twin_counts c;
     int s = 0, k = 0, got;
     truth t;
-    (void)state;
-    memset(&c, 0, sizeof c);
     rl_recog_defaults(&cfg);
     rl_heap_recog_init(&hr, &cfg);
     while ((got = fixture_sets_next(&fs, &s, &k, &t)) == 1)
-        frame_twins(&hr, fs.sets[s], &t, &c);
+        frame(&hr, fs.sets[s], &t, counts);
     assert_int_equal(got, 0);
     rl_heap_recog_free(&hr);
+}
+
+static void no_twin_confirmed(void **state)
+{
+    twin_counts c;
+    (void)state;
+    memset(&c, 0, sizeof c);
+    each_frame(frame_twins, &c);
     printf("%d about whole landmarks (%d near the border: read from their edge): %d verified as their own id, "
            "%d of %d zone twins taken\n",
            c.whole, c.near_border, c.own, c.wrong, c.twins);
@@ -138,8 +146,9 @@ typedef struct {
     int whole, own, own_near, tries, taken;
 } off_counts;
 
-static void frame_off_radius(rl_heap_recog *hr, const char *set, const truth *t, off_counts *c)
+static void frame_off_radius(rl_heap_recog *hr, const char *set, const truth *t, void *counts)
 {
+    off_counts *c = counts;
     static rl_result res;
     char png[1200], err[512];
     rl_image img;
@@ -181,19 +190,10 @@ static void frame_off_radius(rl_heap_recog *hr, const char *set, const truth *t,
 
 static void off_radius_not_taken(void **state)
 {
-    rl_recog_config cfg;
-    rl_heap_recog hr;
     off_counts c;
-    int s = 0, k = 0, got;
-    truth t;
     (void)state;
     memset(&c, 0, sizeof c);
-    rl_recog_defaults(&cfg);
-    rl_heap_recog_init(&hr, &cfg);
-    while ((got = fixture_sets_next(&fs, &s, &k, &t)) == 1)
-        frame_off_radius(&hr, fs.sets[s], &t, &c);
-    assert_int_equal(got, 0);
-    rl_heap_recog_free(&hr);
+    each_frame(frame_off_radius, &c);
     printf("%d about whole landmarks: %d verified as their own id (known), %d of %d from 5%% off; predicted "
            "3-15%% off: %d of %d other ids taken\n",
            c.whole, c.own, c.own_near, 2 * c.whole, c.taken, c.tries);
