@@ -1,6 +1,8 @@
 /* PNG-sequence camera: a directory of PNGs (sorted by name), a text file
  * listing one PNG per line (relative to the list's folder), or the files
- * a command line names, played at a rate. A frame is decoded when it is grabbed, into one block sized at
+ * a command line names, played at a rate (frame k's capture time t0 + k
+ * periods, its due time, t0 the opening's), or as fast as they decode (its
+ * grab's). A frame is decoded when it is grabbed, into one block sized at
  * open, so memory does not grow with the list and grabbing never
  * allocates; a list file is read a line at a time. A frame that cannot be
  * read, or is not the camera's size, is reported (RL_EFORMAT, the reason
@@ -127,7 +129,13 @@ static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
     f->index = s->next++;
     f->slot = 0;
     f->name = s->path;
-    f->t_us = rl_clock_now_us();
+    /* played at a rate, a frame's capture time is when it was due, not
+     * when the loop came for it: the times a replay gives the loop (its
+     * track's and prior's, a rolling shutter's moves) and the pose frames'
+     * time_ms then come from the files and the rate alone, whatever the
+     * machine's load; a frame grabbed late is as old as it is (the pose
+     * frame's latency). As fast as they decode, no frame is due: the grab's */
+    f->t_us = s->period_us > 0 ? due : rl_clock_now_us();
     e = s->any_size ? grow_for(s, err, sizeof err) : RL_OK;
     if (e == RL_OK)
         e = rl_png_read_gray_into(s->path, s->block, s->cap, &f->img, err, sizeof err);
