@@ -280,7 +280,8 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
     double fit, lead;
     if (!measure_motion_once(img, d, m))
         return 0;
-    /* a still landmark seen slanted measures as moved (test_motion) */
+    /* a still landmark seen slanted measures as moved (test_motion;
+     * test_twins_slanted holds this guard) */
     minor_radius(rec, img, lv->light, d, &fit);
     if (fit < RL_TWINS_MOVED_ASPECT)
         return 0;
