@@ -32,6 +32,7 @@ typedef struct {
     long next;
     uint64_t t0, period_us;
     int loop;
+    int held;              /* s->path is a frame a grab timed out before: the next grab's */
 } png_state;
 
 static void png_close(rl_cam *c)
@@ -73,6 +74,7 @@ static int next_name(png_state *s)
 static void rewind_names(png_state *s)
 {
     s->at = 0;
+    s->held = 0;
     if (s->list != NULL)
         rewind(s->list);
 }
@@ -108,7 +110,9 @@ static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
     uint64_t due, now;
     rl_err e;
     char err[sizeof c->error];
-    if (!next_name(s)) {
+    if (s->held) {
+        s->held = 0; /* a grab timed out before this frame was due: still the next */
+    } else if (!next_name(s)) {
         if (!s->loop)
             return RL_ENOTFOUND;
         rewind_names(s);
@@ -122,6 +126,7 @@ static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
         uint64_t wait = due - now;
         if (timeout_ms >= 0 && wait > (uint64_t)timeout_ms * 1000u) {
             rl_clock_sleep_us((uint64_t)timeout_ms * 1000u);
+            s->held = 1; /* not taken: the next grab plays it */
             return RL_ETIMEOUT;
         }
         rl_clock_sleep_us(wait);

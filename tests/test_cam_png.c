@@ -73,6 +73,25 @@ static void a_frame_is_stamped_when_due(void **state)
     rl_cam_close(&c);
 }
 
+/* A grab that gives up before the next frame is due does not skip it:
+ * the grab after it plays that frame. The period is a second, so the
+ * first grab's zero wait cannot reach it however busy the machine. */
+static void a_timed_out_grab_skips_no_frame(void **state)
+{
+    rl_cam c;
+    rl_cam_frame f;
+    uint64_t opened, t0;
+    (void)state;
+    open_frames(&c, "cam_png_held", 1.0, &opened);
+    t0 = grab_time(&c, 10);
+    assert_int_equal(rl_cam_grab(&c, 0, &f), RL_ETIMEOUT);
+    assert_int_equal(rl_cam_grab(&c, 3000, &f), RL_OK);
+    assert_int_equal(f.img.data[0], 20); /* f1, not f2 */
+    assert_int_equal(f.t_us - t0, 1000000);
+    rl_cam_release(&c, &f);
+    rl_cam_close(&c);
+}
+
 static void as_fast_as_they_decode_is_the_grab(void **state)
 {
     rl_cam c;
@@ -91,6 +110,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(a_frame_is_stamped_when_due),
+        cmocka_unit_test(a_timed_out_grab_skips_no_frame),
         cmocka_unit_test(as_fast_as_they_decode_is_the_grab),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
