@@ -1,6 +1,8 @@
 /* PNG-sequence camera: a directory of PNGs (sorted by name), a text file
  * listing one PNG per line (relative to the list's folder), or the files
- * a command line names, played at a rate. A frame is decoded when it is grabbed, into one block sized at
+ * a command line names, played at a rate (frame k's capture time t0 + k
+ * periods, its due time, t0 the opening's), or as fast as they decode (its
+ * grab's). A frame is decoded when it is grabbed, into one block sized at
  * open, so memory does not grow with the list and grabbing never
  * allocates; a list file is read a line at a time. A frame that cannot be
  * read, or is not the camera's size, is reported (RL_EFORMAT, the reason
@@ -30,6 +32,7 @@ typedef struct {
     long next;
     uint64_t t0, period_us;
     int loop;
+    int held;              /* s->path is a frame a grab timed out before: the next grab's */
 } png_state;
 
 static void png_close(rl_cam *c)
@@ -71,6 +74,7 @@ static int next_name(png_state *s)
 static void rewind_names(png_state *s)
 {
     s->at = 0;
+    s->held = 0;
     if (s->list != NULL)
         rewind(s->list);
 }
@@ -106,7 +110,9 @@ static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
     uint64_t due, now;
     rl_err e;
     char err[sizeof c->error];
-    if (!next_name(s)) {
+    if (s->held) {
+        s->held = 0; /* a grab timed out before this frame was due: still the next */
+    } else if (!next_name(s)) {
         if (!s->loop)
             return RL_ENOTFOUND;
         rewind_names(s);
@@ -120,6 +126,7 @@ static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
         uint64_t wait = due - now;
         if (timeout_ms >= 0 && wait > (uint64_t)timeout_ms * 1000u) {
             rl_clock_sleep_us((uint64_t)timeout_ms * 1000u);
+            s->held = 1; /* not taken: the next grab plays it */
             return RL_ETIMEOUT;
         }
         rl_clock_sleep_us(wait);
@@ -127,7 +134,13 @@ static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
     f->index = s->next++;
     f->slot = 0;
     f->name = s->path;
-    f->t_us = rl_clock_now_us();
+    /* played at a rate, a frame's capture time is when it was due, not
+     * when the loop came for it: the times a replay gives the loop (its
+     * track's and prior's, a rolling shutter's moves) and the pose frames'
+     * time_ms then come from the files and the rate alone, whatever the
+     * machine's load; a frame grabbed late is as old as it is (the pose
+     * frame's latency). As fast as they decode, no frame is due: the grab's */
+    f->t_us = s->period_us > 0 ? due : rl_clock_now_us();
     e = s->any_size ? grow_for(s, err, sizeof err) : RL_OK;
     if (e == RL_OK)
         e = rl_png_read_gray_into(s->path, s->block, s->cap, &f->img, err, sizeof err);

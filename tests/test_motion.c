@@ -84,9 +84,10 @@ static double edge_aspect(const rl_image *img, double cx, double cy, double r)
  * (the reviewer's probe: ratio 0.775-0.793), so the twins must not read
  * it across a motion: its edge's ellipse is flatter than
  * RL_TWINS_MOVED_ASPECT. This checks the measures and the constant that
- * rl_twins.c's guard compares, not the guard's call itself (the guard
- * only refuses reads: no wrong id either way). A round one moved 5 px (the moving frames'
- * motion) keeps a round edge and is read across its motion. */
+ * rl_twins.c's guard compares; test_twins_slanted checks the guard's call
+ * (moved_keeps refusing such a landmark its id would pass along the axis).
+ * A round one moved 5 px (the moving frames' motion) keeps a round edge
+ * and is read across its motion. */
 static void test_slanted_still_not_moved(void **state)
 {
     static const double radii[] = {12, 14, 16};

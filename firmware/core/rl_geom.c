@@ -19,6 +19,18 @@ double rl_geom_box_gap(const rl_box *a, const rl_box *b)
     return sqrt(dx * dx + dy * dy);
 }
 
+void rl_geom_square_in(int W, int H, double cx, double cy, double half, int border, rl_box *b)
+{
+    b->x0 = (int)ceil(cx - half);
+    b->y0 = (int)ceil(cy - half);
+    b->x1 = (int)floor(cx + half);
+    b->y1 = (int)floor(cy + half);
+    if (b->x0 < border) b->x0 = border;
+    if (b->y0 < border) b->y0 = border;
+    if (b->x1 > W - 1 - border) b->x1 = W - 1 - border;
+    if (b->y1 > H - 1 - border) b->y1 = H - 1 - border;
+}
+
 double rl_geom_disk_visible(double r, double d)
 {
     double seg;

@@ -1,6 +1,8 @@
 /* rl_geom: boxes and disks in the image (internal).
  *
  *   double v = rl_geom_visible_in(640, 480, 10.0, 240.0, 30.0);  // 0.61: cut on the left
+ *   rl_box b;
+ *   rl_geom_square_in(640, 480, 10.0, 240.0, 34.5, 1, &b);        // (1, 206)-(44, 274)
  */
 #ifndef RL_GEOM_H
 #define RL_GEOM_H
@@ -15,6 +17,12 @@ int rl_geom_box_inside(const rl_box *in, const rl_box *out);
 
 /* Gap in pixels between two boxes (0 when they touch or overlap). */
 double rl_geom_box_gap(const rl_box *a, const rl_box *b);
+
+/* Into b the pixels of the square of half-side `half` about (cx, cy)
+ * (its edges included) that lie in a W x H image `border` px or more in
+ * from its edges (1 for a central difference's neighbours); empty (x1 <
+ * x0 or y1 < y0) where there are none. */
+void rl_geom_square_in(int W, int H, double cx, double cy, double half, int border, rl_box *b);
 
 /* Fraction of a disk of radius r left visible when a straight edge passes
  * at signed distance d from its centre (d > 0: centre on the visible side). */

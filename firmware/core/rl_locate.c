@@ -75,13 +75,6 @@ static double region_size(const rl_region *g)
     return bw > bh ? bw : bh;
 }
 
-/* The shorter side of a region's box. */
-static double region_short_side(const rl_region *g)
-{
-    double bw = g->x1 - g->x0 + 1, bh = g->y1 - g->y0 + 1;
-    return bw < bh ? bw : bh;
-}
-
 /* Re-extraction: the largest region of landmark size near the candidate
  * (window coordinates, the window at w), one whose box holds the
  * candidate's centre before any other (a ring surrounds its centre; a
@@ -184,7 +177,7 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
     rl_image win;
     rl_box w;
     rl_edge_window ew;
-    int thr, reg = -1, step, light = res->levels.light, code_ring, found, from_candidate = 0;
+    int thr, reg = -1, step, light = res->levels.light, code_ring, found;
     double ink, tx, ty, tr = R;
     if (!local_window(res, u, R, &w) ||
         rl_image_sub(img, w.x0, w.y0, w.x1 - w.x0 + 1, w.y1 - w.y0 + 1, &win) != RL_OK ||
@@ -200,10 +193,6 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
     if (reg < 0)
         return 0;
     code_ring = region_size(&rec->dark.reg[reg]) < RING_MIN_SIZE * R;
-    box->x0 = w.x0 + rec->dark.reg[reg].x0;
-    box->y0 = w.y0 + rec->dark.reg[reg].y0;
-    box->x1 = w.x0 + rec->dark.reg[reg].x1;
-    box->y1 = w.y0 + rec->dark.reg[reg].y1;
     /* the centre from the visible outer edge, not the centroid of what is
      * left (biased inwards when part is missing) */
     ew.img = &win;
@@ -221,7 +210,7 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
     ty = *cy;
     found = rl_edge_fit_rays(img, rec->tone, light, &tx, &ty, &tr);
     if (!found)
-        found = from_candidate = rays_from_candidate(rec, img, light, u, R, *r, &tx, &ty, &tr);
+        found = rays_from_candidate(rec, img, light, u, R, *r, &tx, &ty, &tr);
     if (found) {
         *cx = tx;
         *cy = ty;
@@ -229,11 +218,9 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
     } else if (code_ring) {
         return 0; /* a code ring taken for its centre: its radius is not the landmark's */
     }
-    /* the outer ring's box, not the code ring's, the arc's or a part's
-     * (motion can break the ring: a half of it of landmark length was
-     * taken, its box half as wide as the circle fitted to its edge) */
-    if (code_ring || from_candidate || (found && region_short_side(&rec->dark.reg[reg]) < RING_MIN_SIZE * *r))
-        circle_box(rec->width, rec->height, *cx, *cy, *r, box);
+    /* the box: the fitted circle's within the frame, whatever region was
+     * taken (a code ring, an arc, a part of a ring motion broke) */
+    circle_box(rec->width, rec->height, *cx, *cy, *r, box);
     /* the frame's landmarks are of one size but for the lens: a wide angle
      * shrinks them towards the corners, where a circle fitted to an
      * ellipse's arc comes out shorter still */

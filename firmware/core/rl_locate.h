@@ -29,11 +29,9 @@
  * only with at least 9 of the 24 rays' edge points within max(1 px, a
  * 25th of its radius) of its circle. Where a
  * code ring was taken for the centre it surrounds, 0 when neither finds
- * the edge. The box is the region's, or the circle's within the frame
- * where the region was a code ring, the circle came from the
- * candidate's centre, or the region's box is narrower than 1.6 of the
- * fitted radius (a part of a ring motion broke; a cut landmark's or a
- * flat ellipse's box is the circle's clipped to the frame then). */
+ * the edge. The box is the circle's within the frame, whatever region
+ * was taken (the outer ring, a code ring, an arc or a part of a ring
+ * motion broke; a cut landmark's is clipped to the frame). */
 int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *res,
                          const rl_detection *u, double R, rl_box *box, double *cx, double *cy,
                          double *r);

@@ -1,6 +1,7 @@
 #include "rl_motion.h"
 
 #include <math.h>
+#include "rl_geom.h"
 
 /* Radii the gradients are taken over, shares of r: the code zones and the
  * outer ring (the centre dot's edge is a few pixels round; the quiet zone
@@ -35,17 +36,14 @@ int rl_motion_measure(const rl_image *img, double cx, double cy, double r, rl_mo
 {
     double sum[RL_MOTION_AXES] = {0}, n[RL_MOTION_AXES] = {0}, lo2 = INNER * INNER * r * r,
            hi2 = OUTER * OUTER * r * r;
-    int x0 = (int)ceil(cx - OUTER * r), x1 = (int)floor(cx + OUTER * r);
-    int y0 = (int)ceil(cy - OUTER * r), y1 = (int)floor(cy + OUTER * r), x, y, a;
+    rl_box b;
+    int x, y, a;
     /* central differences: one pixel in from the image's edge */
-    if (x0 < 1) x0 = 1;
-    if (y0 < 1) y0 = 1;
-    if (x1 > img->width - 2) x1 = img->width - 2;
-    if (y1 > img->height - 2) y1 = img->height - 2;
-    for (y = y0; y <= y1; y++) {
+    rl_geom_square_in(img->width, img->height, cx, cy, OUTER * r, 1, &b);
+    for (y = b.y0; y <= b.y1; y++) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
         double dy = y - cy;
-        for (x = x0; x <= x1; x++) {
+        for (x = b.x0; x <= b.x1; x++) {
             double dx = x - cx, d2 = dx * dx + dy * dy, gx, gy, g;
             if (d2 < lo2 || d2 > hi2)
                 continue;

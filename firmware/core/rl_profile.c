@@ -4,6 +4,7 @@
 #include <stdint.h>
 #include <string.h>
 #include "rl_clones.h"
+#include "rl_geom.h"
 #include "rl_motion.h"
 
 /* Pixels of a row handled at a time: their bins first, in blocks of
@@ -265,14 +266,13 @@ void rl_profile_gather_axis(const rl_image *img, const rl_tone *tone, double cx,
                             rl_profile *p)
 {
     double ext = RL_PROFILE_EXTENT * r, scale = RL_PROFILE_BINS / ext;
-    int x0 = (int)ceil(cx - ext), x1 = (int)floor(cx + ext), y0 = (int)ceil(cy - ext), y1 = (int)floor(cy + ext);
-    int x, y, k;
+    rl_box b;
+    int x, y, k, x0, x1;
     memset(p, 0, sizeof *p);
-    if (x0 < 0) x0 = 0;
-    if (y0 < 0) y0 = 0;
-    if (x1 > img->width - 1) x1 = img->width - 1;
-    if (y1 > img->height - 1) y1 = img->height - 1;
-    for (y = y0; y <= y1; y++) {
+    rl_geom_square_in(img->width, img->height, cx, cy, ext, 0, &b);
+    x0 = b.x0;
+    x1 = b.x1;
+    for (y = b.y0; y <= b.y1; y++) {
         const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
         double dy = y - cy;
         for (x = x0; x <= x1; x++) {

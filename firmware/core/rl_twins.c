@@ -219,6 +219,41 @@ static int cut_circle_on_edge(const rl_image *img, const rl_tone *tone, int ligh
     return hypot(u - d->u, v - d->v) + d->radius - r <= RL_TWINS_CUT_BULGE * d->radius;
 }
 
+/* A landmark's motion and its leads over its twins along the motion's
+ * sharpest axis through both formations: small_fits and moved_keeps ask
+ * for the same of one landmark, each worked out once, when first wanted. */
+typedef struct {
+    int measured, moved; /* rl_motion_measure done; it measured, ratio not over RL_TWINS_MOVED */
+    rl_motion mo;
+    int read;            /* the leads read: */
+    double other, own;   /* through the other formation, through the frame's curve */
+} moved_read;
+
+/* Whether d moved (rl_motion_measure, its ratio not over
+ * RL_TWINS_MOVED), measured into m the first time. */
+static int measure_motion_once(const rl_image *img, const rl_detection *d, moved_read *m)
+{
+    if (!m->measured) {
+        m->measured = 1;
+        m->moved = rl_motion_measure(img, d->u, d->v, d->radius, &m->mo) && !(m->mo.ratio > RL_TWINS_MOVED);
+    }
+    return m->moved;
+}
+
+/* d's leads over its twins rv along m's sharpest axis at 0.97 .. 1.03
+ * (twin_lead), through the other formation and the frame's curve, read
+ * into m the first time (m measured and moved). */
+static void read_axis_leads_once(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv,
+                                 int n, moved_read *m)
+{
+    double fit;
+    if (m->read)
+        return;
+    m->read = 1;
+    m->other = twin_lead(rec, img, rl_tones_other(&rec->tones, rec->tone), d, rv, n, 0, m->mo.axis, &fit);
+    m->own = twin_lead(rec, img, rec->tone, d, rv, n, 0, m->mo.axis, &fit);
+}
+
 /* Whether d, a landmark that moved (rl_motion_measure) refused by the
  * reads of its whole ring, passes keeps (tol) read along its sharpest axis
  * alone, through both formations: across a motion only the blur that is
@@ -234,22 +269,25 @@ static int cut_circle_on_edge(const rl_image *img, const rl_tone *tone, int ligh
  * small local read: far here cost 50 right reads of the reviewer's 14
  * stress sets and refused no wrong one (twelfth session). Not for a
  * landmark whose edge is an ellipse flatter than RL_TWINS_MOVED_ASPECT.
- * *least: the least lead through the other formation it read. */
+ * m: d's motion and axis leads, as small_fits left them (read here
+ * where it did not). *least: the least lead through the other formation
+ * it read. */
 static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels *lv, const rl_detection *d,
-                       const int *rv, int n, double tol, double mg, double *least)
+                       const int *rv, int n, double tol, double mg, moved_read *m, double *least)
 {
     const rl_tone *other = rl_tones_other(&rec->tones, rec->tone);
-    rl_motion mo;
     rl_detection c = *d;
     double fit, lead;
-    if (!rl_motion_measure(img, d->u, d->v, d->radius, &mo) || mo.ratio > RL_TWINS_MOVED)
+    if (!measure_motion_once(img, d, m))
         return 0;
-    /* a still landmark seen slanted measures as moved (test_motion) */
+    /* a still landmark seen slanted measures as moved (test_motion;
+     * test_twins_slanted holds this guard) */
     minor_radius(rec, img, lv->light, d, &fit);
     if (fit < RL_TWINS_MOVED_ASPECT)
         return 0;
-    *least = twin_lead(rec, img, other, d, rv, n, 0, mo.axis, &fit);
-    if (!keeps(tol, mg, *least, twin_lead(rec, img, rec->tone, d, rv, n, 0, mo.axis, &fit)))
+    read_axis_leads_once(rec, img, d, rv, n, m);
+    *least = m->other;
+    if (!keeps(tol, mg, m->other, m->own))
         return 0;
     if (d->pass != RL_PASS_LOCAL && d->complete)
         return 1;
@@ -263,9 +301,9 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
             !(hypot(c.u - d->u, c.v - d->v) <= RL_TWINS_EDGE_REACH * d->radius))
             return 0;
     }
-    lead = twin_lead(rec, img, other, &c, rv, n, 0, mo.axis, &fit);
+    lead = twin_lead(rec, img, other, &c, rv, n, 0, m->mo.axis, &fit);
     *least = lead < *least ? lead : *least;
-    return keeps(tol, mg, lead, twin_lead(rec, img, rec->tone, &c, rv, n, 0, mo.axis, &fit));
+    return keeps(tol, mg, lead, twin_lead(rec, img, rec->tone, &c, rv, n, 0, m->mo.axis, &fit));
 }
 
 /* Whether a small whole landmark that moved (rl_motion; every wrong read
@@ -279,19 +317,19 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
  * 2,246 led by 0.0016 or more); a local one where it passes keeps along
  * its sharpest axis too (two wrong, a 4 as 20 and
  * an 18 as 26, led their twins through both formations about the whole
- * ring but not along the axis; 11 of 1,100 right ones failed it). */
+ * ring but not along the axis; 11 of 1,100 right ones failed it). m:
+ * d's motion and axis leads, read here where wanted and kept for
+ * moved_keeps. */
 static int small_fits(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n,
-                      double tol, double mg)
+                      double tol, double mg, moved_read *m)
 {
-    const rl_tone *other = rl_tones_other(&rec->tones, rec->tone);
-    rl_motion mo;
     double fit;
-    if (!d->complete || !rl_motion_measure(img, d->u, d->v, d->radius, &mo) || mo.ratio > RL_TWINS_MOVED)
+    if (!d->complete || !measure_motion_once(img, d, m))
         return 1;
     if (d->pass != RL_PASS_LOCAL)
         return twin_lead(rec, img, rec->tone, d, rv, n, 1, -1, &fit) > 0;
-    return keeps(tol, mg, twin_lead(rec, img, other, d, rv, n, 0, mo.axis, &fit),
-                 twin_lead(rec, img, rec->tone, d, rv, n, 0, mo.axis, &fit));
+    read_axis_leads_once(rec, img, d, rv, n, m);
+    return keeps(tol, mg, m->other, m->own);
 }
 
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
@@ -329,6 +367,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
     for (i = 0; i < all; i++) {
         rl_detection d = res->landmarks[i];
         double lead, own = 0, fit, tol = tolerance(&d, curved), mg;
+        moved_read moved = {0};
         /* a small landmark (under the far radius), whatever the curve */
         int far, small = d.radius < far_radius;
         if (kept != NULL)
@@ -370,7 +409,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * formation at the radius they fit (twin_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (curved ? d.radius < far_radius : d.complete);
         lead = twin_lead(rec, img, other, &d, rv, n, far, -1, &fit);
-        if (small && !small_fits(rec, img, &d, rv, n, tol, mg)) {
+        if (small && !small_fits(rec, img, &d, rv, n, tol, mg, &moved)) {
             rl_result_add_unidentified(res, &d);
             continue;
         }
@@ -393,7 +432,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
             (rank_fits(&d, curved, others_median(radii, all, i)) && own > RL_TWINS_RANK_OWN &&
              rl_twins_rank_keeps(rec, img, rec->tone, res->levels.light, &d)))
             keep(res, &kept_n, &d, kept, i);
-        else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol, mg, &lead)) {
+        else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol, mg, &moved, &lead)) {
             /* its runner-up from the reads across the motion it passed */
             d.runner_up = res->landmarks[i].runner_up;
             if (d.score - lead > d.runner_up)
