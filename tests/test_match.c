@@ -238,13 +238,16 @@ static void test_rescale_by_moves_is_rescale(void **state)
 
 /* The wide kernel (RL_MATCH_WIDE blocks in one walk) gives each column the
  * bits of one block at a time, with empty bins and on a table whose rows
- * are longer than the blocks (the table's stride). */
+ * are longer than the blocks (the table's stride): blocks side by side
+ * (rl_match_all) and blocks anywhere in the row, out of order and
+ * overlapping (a list of ids' own columns, rl_match_ids). */
 static void test_wide_kernel_is_blocks_bit_for_bit(void **state)
 {
     enum { STRIDE = RL_MATCH_WIDE * RL_MATCH_BLOCK + 16 };
     static float t[RL_PROFILE_BINS * STRIDE];
     float fn[RL_PROFILE_BINS], fs[RL_PROFILE_BINS];
     float a[3][RL_MATCH_WIDE * RL_MATCH_BLOCK], b[3][RL_MATCH_WIDE * RL_MATCH_BLOCK];
+    const float *blocks[RL_MATCH_WIDE];
     int trial, k, blk;
     (void)state;
     for (trial = 0; trial < 200; trial++) {
@@ -254,16 +257,21 @@ static void test_wide_kernel_is_blocks_bit_for_bit(void **state)
             fn[k] = uniform() < 0.2 ? 0.0f : (float)(uniform() * 300);
             fs[k] = fn[k] * (float)(uniform() * 255);
         }
+        /* side by side from column 8; then three columns drawn anywhere
+         * in the row's first STRIDE - RL_MATCH_BLOCK */
         for (blk = 0; blk < RL_MATCH_WIDE; blk++)
-            rl_match_kernel_plain(t + 8 + blk * RL_MATCH_BLOCK, STRIDE, fn, fs, a[0] + blk * RL_MATCH_BLOCK,
+            blocks[blk] = t + (trial % 2 == 0 ? 8 + blk * RL_MATCH_BLOCK
+                                              : (int)(uniform() * (STRIDE - RL_MATCH_BLOCK + 1)));
+        for (blk = 0; blk < RL_MATCH_WIDE; blk++)
+            rl_match_kernel_plain(blocks[blk], STRIDE, fn, fs, a[0] + blk * RL_MATCH_BLOCK,
                                   a[1] + blk * RL_MATCH_BLOCK, a[2] + blk * RL_MATCH_BLOCK);
-        rl_match_kernel_wide(t + 8, STRIDE, fn, fs, b[0], b[1], b[2]);
+        rl_match_kernel_wide(blocks, STRIDE, fn, fs, b[0], b[1], b[2]);
         assert_memory_equal(a, b, sizeof a);
-        rl_match_kernel_wide_blocks(t + 8, STRIDE, fn, fs, b[0], b[1], b[2]);
+        rl_match_kernel_wide_blocks(blocks, STRIDE, fn, fs, b[0], b[1], b[2]);
         assert_memory_equal(a, b, sizeof a);
 #ifdef RL_HAVE_MATCH_KERNEL_V8
         if (__builtin_cpu_supports("avx")) {
-            rl_match_kernel_v8w(t + 8, STRIDE, fn, fs, b[0], b[1], b[2]);
+            rl_match_kernel_v8w(blocks, STRIDE, fn, fs, b[0], b[1], b[2]);
             assert_memory_equal(a, b, sizeof a);
         }
 #endif
@@ -349,25 +357,33 @@ static void test_each_id_is_its_own_best(void **state)
         rl_ws_init(&ws, mem, sizeof mem);
         assert_int_equal(rl_templates_init(&tt, &ws, &fam, NULL, 0), RL_OK);
         for (trial = 0; trial < 40; trial++) {
-            int i = (int)(uniform() * tt.n), b = (int)(uniform() * RL_BLUR_LEVELS), codes[RL_MAX_BITS + 2], n;
+            int i = (int)(uniform() * tt.n), b = (int)(uniform() * RL_BLUR_LEVELS), codes[RL_MAX_BITS + 2], n, nonid;
             double best[RL_MAX_BITS + 2];
             rl_profile p;
             noisy_profile(&tt, i, b, 40, &p);
             codes[0] = tt.ids[i];
             n = 1 + rl_family_zone_twins(&fam, codes[0], codes + 1);
-            codes[n++] = -5; /* not an id */
+            /* not an id, anywhere in the list (the ids are scored three
+             * a walk: one passed over must not shift the rest) */
+            nonid = trial % (n + 1);
+            for (j = n; j > nonid; j--)
+                codes[j] = codes[j - 1];
+            codes[nonid] = -5;
+            n++;
             rl_match_ids_each(&tt, &p, codes, n, best);
-            for (j = 0; j < n - 1; j++) {
+            for (j = 0; j < n; j++) {
                 int t = rl_templates_find(&tt, codes[j]);
                 double want = -2;
                 rl_match m;
+                if (j == nonid)
+                    continue;
                 for (k = 0; k < RL_BLUR_LEVELS; k++)
                     want = fmax(want, direct_r(&p, &tt, t, k));
                 assert_true(fabs(best[j] - want) < 1e-4);
                 rl_match_ids(&tt, &p, &codes[j], 1, -1, &m);
                 assert_memory_equal(&best[j], &m.score, sizeof m.score);
             }
-            assert_true(best[n - 1] == -2);
+            assert_true(best[nonid] == -2);
             p.total = 10; /* too few pixels */
             rl_match_ids_each(&tt, &p, codes, n, best);
             for (j = 0; j < n; j++)

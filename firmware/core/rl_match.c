@@ -99,7 +99,10 @@ void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m)
         int nc;
         if (c0 + WIDE_COLUMNS <= tt->stride && ncol - c0 > WIDE_COLUMNS - RL_MATCH_BLOCK) {
             nc = ncol - c0 < WIDE_COLUMNS ? ncol - c0 : WIDE_COLUMNS;
-            rl_match_kernel_wide(tt->table + c0, (size_t)tt->stride, z.fn, z.fs, st, stt, sxt);
+            const float *blocks[RL_MATCH_WIDE];
+            for (c = 0; c < RL_MATCH_WIDE; c++)
+                blocks[c] = tt->table + c0 + c * RL_MATCH_BLOCK;
+            rl_match_kernel_wide(blocks, (size_t)tt->stride, z.fn, z.fs, st, stt, sxt);
         } else {
             nc = ncol - c0 < RL_MATCH_BLOCK ? ncol - c0 : RL_MATCH_BLOCK;
             rl_match_kernel(tt->table + c0, (size_t)tt->stride, z.fn, z.fs, st, stt, sxt);
@@ -168,6 +171,49 @@ static int ids_in_place(const rl_templates *tt, const int *ids, int n)
     return 1;
 }
 
+/* Up to RL_MATCH_WIDE ids of the table in place (ids_in_place), from
+ * ids[*from] on (those not in the table passed over), each at every blur:
+ * the j-th one's sums at st + j * RL_MATCH_BLOCK .., its place in ids
+ * into at[j]. Two or three ids take one walk over the bins
+ * (rl_match_kernel_wide: a verification's rivals and zone twins are lists
+ * of a few ids, a block each, and one block's walk waits on its adds), one
+ * a block; each column's sums the same bits either way. *from moves past
+ * the ids taken; their count. */
+static int sum_in_place(const rl_templates *tt, const profile_terms *z, const int *ids, int n, int *from,
+                        int *at, float *st, float *stt, float *sxt)
+{
+    const float *blocks[RL_MATCH_WIDE];
+    int c = 0, j;
+    for (; *from < n && c < RL_MATCH_WIDE; (*from)++) {
+        int i = rl_templates_find(tt, ids[*from]);
+        if (i < 0)
+            continue;
+        blocks[c] = tt->table + (size_t)i * RL_BLUR_LEVELS;
+        at[c++] = *from;
+    }
+    if (c >= RL_MATCH_WIDE - 1) {
+        /* two ids: the second's block summed twice in the walk (one walk
+         * with its adds side by side is quicker than two, each waiting on
+         * its own; the spare sums are not read) */
+        for (j = c; j < RL_MATCH_WIDE; j++)
+            blocks[j] = blocks[c - 1];
+        rl_match_kernel_wide(blocks, (size_t)tt->stride, z->fn, z->fs, st, stt, sxt);
+    } else
+        for (j = 0; j < c; j++)
+            rl_match_kernel(blocks[j], (size_t)tt->stride, z->fn, z->fs, st + j * RL_MATCH_BLOCK,
+                            stt + j * RL_MATCH_BLOCK, sxt + j * RL_MATCH_BLOCK);
+    return c;
+}
+
+/* Id's columns (every blur) from its sums at st.. kept into m. */
+static void keep_id(rl_match *m, const profile_terms *z, int id, const float *st, const float *stt,
+                    const float *sxt)
+{
+    int b;
+    for (b = 0; b < RL_BLUR_LEVELS; b++)
+        keep_column(m, z, id, b, st[b], stt[b], sxt[b]);
+}
+
 /* The columns of ids (at one blur, or every blur when blur < 0) scored
  * against the profile's terms z into m. */
 static void score_ids(const rl_templates *tt, const profile_terms *z, const int *ids, int n, int blur,
@@ -178,17 +224,14 @@ static void score_ids(const rl_templates *tt, const profile_terms *z, const int 
     if (blur < 0 && ids_in_place(tt, ids, n)) {
         /* each id at every blur: its columns are side by side in the
          * table, scored there (the columns, and their order, as a list's) */
-        int bv[RL_BLUR_LEVELS];
-        for (b = 0; b < RL_BLUR_LEVELS; b++)
-            bv[b] = b;
-        for (j = 0; j < n; j++) {
-            int i = rl_templates_find(tt, ids[j]), idv[RL_BLUR_LEVELS];
-            if (i < 0)
-                continue;
-            for (b = 0; b < RL_BLUR_LEVELS; b++)
-                idv[b] = ids[j];
-            score_block(tt->table + (size_t)i * RL_BLUR_LEVELS, (size_t)tt->stride, RL_BLUR_LEVELS, idv, bv,
-                        z, m);
+        float st[RL_MATCH_WIDE * RL_MATCH_BLOCK], stt[RL_MATCH_WIDE * RL_MATCH_BLOCK],
+            sxt[RL_MATCH_WIDE * RL_MATCH_BLOCK];
+        int at[RL_MATCH_WIDE], from = 0, c;
+        while (from < n) {
+            c = sum_in_place(tt, z, ids, n, &from, at, st, stt, sxt);
+            for (j = 0; j < c; j++)
+                keep_id(m, z, ids[at[j]], st + j * RL_MATCH_BLOCK, stt + j * RL_MATCH_BLOCK,
+                        sxt + j * RL_MATCH_BLOCK);
         }
         return;
     }
@@ -235,11 +278,27 @@ void rl_match_ids_each(const rl_templates *tt, const rl_profile *p, const int *i
     profile_terms z;
     rl_match m0;
     int j, ok = match_start(p, &z, &m0);
-    for (j = 0; j < n; j++) {
-        rl_match m = m0;
+    for (j = 0; j < n; j++)
         best[j] = -2;
-        if (!ok)
-            continue;
+    if (ok && ids_in_place(tt, ids, n)) {
+        /* three ids a walk over the bins (sum_in_place), each kept apart */
+        float st[RL_MATCH_WIDE * RL_MATCH_BLOCK], stt[RL_MATCH_WIDE * RL_MATCH_BLOCK],
+            sxt[RL_MATCH_WIDE * RL_MATCH_BLOCK];
+        int at[RL_MATCH_WIDE], from = 0, c;
+        while (from < n) {
+            c = sum_in_place(tt, &z, ids, n, &from, at, st, stt, sxt);
+            for (j = 0; j < c; j++) {
+                rl_match m = m0;
+                keep_id(&m, &z, ids[at[j]], st + j * RL_MATCH_BLOCK, stt + j * RL_MATCH_BLOCK,
+                        sxt + j * RL_MATCH_BLOCK);
+                if (m.id >= 0)
+                    best[at[j]] = m.score;
+            }
+        }
+        return;
+    }
+    for (j = 0; j < n && ok; j++) {
+        rl_match m = m0;
         score_ids(tt, &z, &ids[j], 1, -1, &m);
         if (m.id >= 0)
             best[j] = m.score;

@@ -19,11 +19,11 @@ void rl_match_kernel_plain(const float *t, size_t stride, const float *fn, const
     }
 }
 
-void rl_match_kernel_wide_blocks(const float *t, size_t stride, const float *fn, const float *fs,
+void rl_match_kernel_wide_blocks(const float *const *t, size_t stride, const float *fn, const float *fs,
                                  float *st, float *stt, float *sxt)
 {
     int b;
     for (b = 0; b < RL_MATCH_WIDE; b++)
-        rl_match_kernel(t + b * RL_MATCH_BLOCK, stride, fn, fs, st + b * RL_MATCH_BLOCK,
+        rl_match_kernel(t[b], stride, fn, fs, st + b * RL_MATCH_BLOCK,
                         stt + b * RL_MATCH_BLOCK, sxt + b * RL_MATCH_BLOCK);
 }

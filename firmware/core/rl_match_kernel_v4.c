@@ -62,25 +62,26 @@ __attribute__((target("avx"))) void rl_match_kernel_v8(const float *t, size_t st
     memcpy(sxt, &sx, sizeof sx);
 }
 
-/* Three blocks side by side (columns t .. t + 23) in one walk over the
- * bins: each bin's count and sum broadcast once for the three; each lane
- * the same products added in the same order as rl_match_kernel_v8's. */
-__attribute__((target("avx"))) void rl_match_kernel_v8w(const float *t, size_t stride, const float *fn,
+/* Three blocks (columns t[0] .. t[0] + 7, t[1] .., t[2] ..) in one walk
+ * over the bins: each bin's count and sum broadcast once for the three;
+ * each lane the same products added in the same order as
+ * rl_match_kernel_v8's. */
+__attribute__((target("avx"))) void rl_match_kernel_v8w(const float *const *t, size_t stride, const float *fn,
                                                         const float *fs, float *st, float *stt, float *sxt)
 {
     rl_v8 s0 = {0, 0, 0, 0, 0, 0, 0, 0}, s1 = s0, s2 = s0, ss0 = s0, ss1 = s0, ss2 = s0, sx0 = s0, sx1 = s0,
           sx2 = s0;
     int k;
     for (k = 0; k < RL_PROFILE_BINS; k++) {
-        const float *tk = t + (size_t)k * stride;
+        size_t at = (size_t)k * stride;
         rl_v8 t0, t1, t2, nv, sv;
         if (fn[k] == 0)
             continue; /* bins outside the image or in light */
         nv = (rl_v8)_mm256_broadcast_ss(fn + k);
         sv = (rl_v8)_mm256_broadcast_ss(fs + k);
-        memcpy(&t0, tk, sizeof t0);
-        memcpy(&t1, tk + 8, sizeof t1);
-        memcpy(&t2, tk + 16, sizeof t2);
+        memcpy(&t0, t[0] + at, sizeof t0);
+        memcpy(&t1, t[1] + at, sizeof t1);
+        memcpy(&t2, t[2] + at, sizeof t2);
         s0 += nv * t0;
         s1 += nv * t1;
         s2 += nv * t2;
@@ -102,7 +103,7 @@ __attribute__((target("avx"))) void rl_match_kernel_v8w(const float *t, size_t s
     memcpy(sxt + 16, &sx2, sizeof sx2);
 }
 
-void rl_match_kernel_wide_x86(const float *t, size_t stride, const float *fn, const float *fs, float *st,
+void rl_match_kernel_wide_x86(const float *const *t, size_t stride, const float *fn, const float *fs, float *st,
                               float *stt, float *sxt)
 {
     if (__builtin_cpu_supports("avx"))

@@ -88,11 +88,16 @@ static double view_slope(const rl_calib *cam)
 
 /* Whether map landmark i is too far from the camera's foot C to be in
  * view, at its own height (one above the ceiling, in a skylight's well,
- * is seen from farther). */
-static int out_of_reach(const rl_map *map, int i, const double *C, double slope)
+ * is seen from farther; rl_map_height's rule): the reach at the ceiling
+ * (ceiling_reach) worked out once a frame. Every landmark of the map is
+ * looked at each frame (a large site's 6,400: this test was a third of
+ * the tracked frames' instructions there with the height fetched by a
+ * call each), so it reads only the landmark's own fields. */
+static int out_of_reach(const rl_map *map, int i, const double *C, double slope, double ceiling_reach)
 {
-    double reach = slope * (rl_map_height(map, i) - C[2]) + map->diameter;
-    return fabs(map->lm[i].x - C[0]) > reach || fabs(map->lm[i].y - C[1]) > reach;
+    const rl_map_landmark *lm = &map->lm[i];
+    double reach = lm->z > 0.0 ? slope * (lm->z - C[2]) + map->diameter : ceiling_reach;
+    return fabs(lm->x - C[0]) > reach || fabs(lm->y - C[1]) > reach;
 }
 
 /* Map landmark i's image centre and radius from the camera (Rc, C); 0
@@ -130,16 +135,18 @@ static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mou
 {
     rl_pose_model md;
     double q[RL_POSE_NQ] = {0}, Rc[9], C[3], slope = view_slope(cam), min_radius = rl_twins_min_radius(&map->family);
+    double ceiling_reach;
     int i, whole = 0;
     rl_pose_fit_model(&md, mount, map->ceiling_height, 0.5 * map->diameter);
     q[0] = t->ex;
     q[1] = t->ey;
     q[2] = t->eyaw;
     rl_pose_fit_camera(&md, q, Rc, C);
+    ceiling_reach = slope * (map->ceiling_height - C[2]) + map->diameter;
     t->n = 0;
     for (i = 0; i < map->count && t->n < RL_MAX_LANDMARKS; i++) {
         rl_track_window *w = &t->win[t->n];
-        if (out_of_reach(map, i, C, slope) || !project(cam, &md, Rc, C, map, i, w) ||
+        if (out_of_reach(map, i, C, slope, ceiling_reach) || !project(cam, &md, Rc, C, map, i, w) ||
             w->visible < PREDICT_MIN_VISIBLE || w->radius < MIN_RADIUS_MARGIN * min_radius)
             continue;
         whole += is_whole(w, cam->width, cam->height);
