@@ -463,6 +463,54 @@ static void test_id_and_rivals_at_once(void **state)
     }
 }
 
+/* rl_match_id_and_rest (a local read's zone twins' check: its id and
+ * every other id of the table, rl_twins) gives, bit for bit, what
+ * rl_match_id_and_ids gives for the id and the list of every other id in
+ * table order (the old computation, the oracle here): whole families of
+ * 5 to 8 bits (each id's block of columns in the table, which the old
+ * call scores in place) and 8 ids out of order (the last id's block runs
+ * past the table: the old call copies it into a list); profiles
+ * drawn from the id, from another id, and noise; too few pixels. */
+static void test_id_and_rest_is_every_other_listed(void **state)
+{
+    static unsigned char mem[1 << 19];
+    static const int some[] = {9, 3, 30, 17, 1, 22, 12, 5}; /* 56 columns: the last id's block runs past them */
+    int table, trial, j;
+    (void)state;
+    for (table = 0; table < 5; table++) {
+        rl_family fam;
+        rl_templates tt;
+        rl_ws ws;
+        fam.bits = table < 4 ? 5 + table : 5;
+        rl_ws_init(&ws, mem, sizeof mem);
+        assert_int_equal(rl_templates_init(&tt, &ws, &fam, table == 4 ? some : NULL, table == 4 ? 8 : 0), RL_OK);
+        /* the whole families' last ids have a whole block after them (the
+         * old call scores each id in place); the 8 ids' last has not (it
+         * is copied into a list) */
+        assert_int_equal((tt.n - 1) * RL_BLUR_LEVELS + RL_MATCH_BLOCK <= tt.stride, table < 4);
+        for (trial = 0; trial < 60; trial++) {
+            int i = (int)(uniform() * tt.n), src = trial % 3 == 0 ? (int)(uniform() * tt.n) : i;
+            int b = (int)(uniform() * RL_BLUR_LEVELS), rv[RL_MAX_IDS], n = 0, flat;
+            rl_profile p;
+            noisy_profile(&tt, src, b, trial % 3 == 2 ? 400 : 60, &p);
+            for (j = 0; j < tt.n; j++)
+                if (tt.ids[j] != tt.ids[i])
+                    rv[n++] = tt.ids[j];
+            for (flat = 0; flat < 2; flat++) {
+                rl_match own, rest, want_own, want_rest;
+                if (flat)
+                    p.total = 10; /* too few pixels: nothing matched */
+                rl_match_id_and_rest(&tt, &p, tt.ids[i], &own, &rest);
+                rl_match_id_and_ids(&tt, &p, tt.ids[i], rv, n, -1, &want_own, &want_rest);
+                assert_true(same_match(&own, &want_own));
+                assert_true(same_match(&rest, &want_rest));
+                if (!flat && src == i && trial % 3 != 2)
+                    assert_int_equal(own.id, tt.ids[i]);
+            }
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -475,6 +523,7 @@ int main(void)
         cmocka_unit_test(test_match_all_is_every_id_listed),
         cmocka_unit_test(test_each_id_is_its_own_best),
         cmocka_unit_test(test_id_and_rivals_at_once),
+        cmocka_unit_test(test_id_and_rest_is_every_other_listed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -12,7 +12,12 @@
  *   usual size and at one large enough that the packed sums are moved out
  *   during the gather;
  * - every pixel of the disk in its own cell once (the sums added four
- *   pixels a step), against a plain loop over the pixels. */
+ *   pixels a step), against a plain loop over the pixels;
+ * - a profile's rescale (rescale_bins: the three sums in one vector's
+ *   lanes) against its definition, summed plainly: each mid bin m lands at
+ *   t = (m - SHIFT_GUARD + 0.5) / scale - 0.5, 1 - w of it in bin
+ *   floor(t) and w in the next, added in the order of m, and the totals
+ *   of n and q added in the order of the bins, bit for bit. */
 #include "rl_test.h"
 #include "rl_polar.c"
 
@@ -159,12 +164,76 @@ static void every_pixel_is_gathered_once(void **state)
     assert_true(pixels > 300000);
 }
 
+/* The oracle: rescale_bins by its definition, one bin array a sum. */
+static void plain_rescale(const float *mn, const float *ms, const float *mq, double scale, rl_profile *p)
+{
+    float bn[RL_PROFILE_BINS + 2] = {0}, bs[RL_PROFILE_BINS + 2] = {0}, bq[RL_PROFILE_BINS + 2] = {0};
+    float tn = 0, tq = 0;
+    double a = 1.0 / scale;
+    int m, k;
+    for (m = 0; m < MID_BINS; m++) {
+        double t = a * m + (a * (0.5 - SHIFT_GUARD) - 0.5);
+        int j;
+        float w;
+        if (t < -1.0 || t >= RL_PROFILE_BINS)
+            continue;
+        j = (int)floor(t);
+        w = (float)(t - j);
+        /* bin j + 1 at index j + 2, so bin -1 has a place */
+        bn[j + 1] += (1.0f - w) * mn[m];
+        bs[j + 1] += (1.0f - w) * ms[m];
+        bq[j + 1] += (1.0f - w) * mq[m];
+        bn[j + 2] += w * mn[m];
+        bs[j + 2] += w * ms[m];
+        bq[j + 2] += w * mq[m];
+    }
+    for (k = 0; k < RL_PROFILE_BINS; k++) {
+        p->n[k] = bn[k + 1];
+        p->sx[k] = bs[k + 1];
+        tn += bn[k + 1];
+        tq += bq[k + 1];
+    }
+    p->total = tn;
+    p->sxx = tq;
+    p->plane = 0;
+}
+
+static void the_rescale_is_its_definition(void **state)
+{
+    static const double fixed[] = {1.0, 0.5, 0.9, 0.95, 1.05, 1.1, 1.06, 0.985, 1.015, 2.0, 0.01, 40.0};
+    float mn[MID_BINS], ms[MID_BINS], mq[MID_BINS];
+    int trial, m, k, wrong = 0;
+    (void)state;
+    for (trial = 0; trial < 20000; trial++) {
+        rl_profile got, want;
+        double scale = trial < 12 ? fixed[trial] : 0.85 + 0.3 * (rnd() % 100000) / 100000.0;
+        for (m = 0; m < MID_BINS; m++) { /* some mid bins empty, as a sector's pads and lights leave them */
+            int empty = rnd() % 5 == 0;
+            mn[m] = empty ? 0.0f : (float)(rnd() % 4000) / 7.0f;
+            ms[m] = empty ? 0.0f : mn[m] * (float)(rnd() % 256);
+            mq[m] = empty ? 0.0f : ms[m] * (float)(rnd() % 256) / 3.0f;
+        }
+        memset(&got, 0x5a, sizeof got);
+        memset(&want, 0xa5, sizeof want);
+        rescale_bins(mn, ms, mq, scale, &got);
+        plain_rescale(mn, ms, mq, scale, &want);
+        for (k = 0; k < RL_PROFILE_BINS; k++)
+            wrong += memcmp(&got.n[k], &want.n[k], sizeof got.n[k]) != 0 ||
+                     memcmp(&got.sx[k], &want.sx[k], sizeof got.sx[k]) != 0;
+        wrong += memcmp(&got.total, &want.total, sizeof got.total) != 0 ||
+                 memcmp(&got.sxx, &want.sxx, sizeof got.sxx) != 0 || got.plane != want.plane;
+    }
+    printf("  20000 rescales: %d numbers wrong\n", wrong);
+    assert_int_equal(wrong, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(the_brightest_level_under_light_is_the_plain_loops),
         cmocka_unit_test(the_cells_do_not_depend_on_what_the_struct_held),
         cmocka_unit_test(every_pixel_is_gathered_once),
+        cmocka_unit_test(the_rescale_is_its_definition),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

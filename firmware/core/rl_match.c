@@ -86,29 +86,28 @@ static void score_block(const float *t, size_t stride, int nc, const int *ids, c
 /* Columns the wide kernel scores at a time. */
 #define WIDE_COLUMNS (RL_MATCH_WIDE * RL_MATCH_BLOCK)
 
-void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m)
+/* Every column of the table scored against the profile's terms z, in
+ * table order, as wide a block at a time as the table holds (each
+ * column's sums the same bits either way); id's columns kept in *own and
+ * the rest in *m, or all in *m when own is NULL. */
+static inline void score_table(const rl_templates *tt, const profile_terms *z, int id, rl_match *own, rl_match *m)
 {
-    profile_terms z;
     int ncol = tt->n * RL_BLUR_LEVELS, c0, c, i = 0, b = 0;
-    if (!match_start(p, &z, m))
-        return;
-    /* the columns in table order, as wide a block at a time as the table
-     * holds (each column's sums the same bits either way) */
     for (c0 = 0; c0 < ncol;) {
         float st[WIDE_COLUMNS], stt[WIDE_COLUMNS], sxt[WIDE_COLUMNS];
         int nc;
         if (c0 + WIDE_COLUMNS <= tt->stride && ncol - c0 > WIDE_COLUMNS - RL_MATCH_BLOCK) {
-            nc = ncol - c0 < WIDE_COLUMNS ? ncol - c0 : WIDE_COLUMNS;
             const float *blocks[RL_MATCH_WIDE];
+            nc = ncol - c0 < WIDE_COLUMNS ? ncol - c0 : WIDE_COLUMNS;
             for (c = 0; c < RL_MATCH_WIDE; c++)
                 blocks[c] = tt->table + c0 + c * RL_MATCH_BLOCK;
-            rl_match_kernel_wide(blocks, (size_t)tt->stride, z.fn, z.fs, st, stt, sxt);
+            rl_match_kernel_wide(blocks, (size_t)tt->stride, z->fn, z->fs, st, stt, sxt);
         } else {
             nc = ncol - c0 < RL_MATCH_BLOCK ? ncol - c0 : RL_MATCH_BLOCK;
-            rl_match_kernel(tt->table + c0, (size_t)tt->stride, z.fn, z.fs, st, stt, sxt);
+            rl_match_kernel(tt->table + c0, (size_t)tt->stride, z->fn, z->fs, st, stt, sxt);
         }
         for (c = 0; c < nc; c++) {
-            keep_column(m, &z, tt->ids[i], b, st[c], stt[c], sxt[c]);
+            keep_column(own != NULL && tt->ids[i] == id ? own : m, z, tt->ids[i], b, st[c], stt[c], sxt[c]);
             if (++b == RL_BLUR_LEVELS) {
                 b = 0;
                 i++;
@@ -116,6 +115,22 @@ void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m)
         }
         c0 += nc;
     }
+}
+
+void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m)
+{
+    profile_terms z;
+    if (match_start(p, &z, m))
+        score_table(tt, &z, -1, NULL, m);
+}
+
+void rl_match_id_and_rest(const rl_templates *tt, const rl_profile *p, int id, rl_match *own, rl_match *rest)
+{
+    profile_terms z;
+    int ok = match_start(p, &z, rest);
+    *own = *rest; /* both start as nothing matched */
+    if (ok)
+        score_table(tt, &z, id, own, rest);
 }
 
 /* Add column (id index i, blur b) of the table to a list (the table's

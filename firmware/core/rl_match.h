@@ -53,6 +53,14 @@ void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, i
 void rl_match_id_and_ids(const rl_templates *tt, const rl_profile *p, int id, const int *ids, int n,
                          int blur, rl_match *own, rl_match *m);
 
+/* rl_match_id_and_ids for id and every other id of the table (in table
+ * order), at every blur, in one walk over the table (the match of every
+ * id's columns, wide blocks at a time): id's columns kept into *own, the
+ * rest into *rest, the same bits as rl_match_id_and_ids with ids every
+ * other id of a table that holds each id once (the zone twins' check of
+ * a local read, rl_twins). own and rest must be two matches. */
+void rl_match_id_and_rest(const rl_templates *tt, const rl_profile *p, int id, rl_match *own, rl_match *rest);
+
 /* Each id's best score over its templates at every blur, into best[j]
  * (-2 for an id the table does not hold, or a profile that correlates
  * with nothing): rl_match_ids on each id alone, the profile's terms

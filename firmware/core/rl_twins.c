@@ -29,6 +29,15 @@
  * decisions on every set measured (docs/design.md). */
 #define ROW_STEP 2
 
+/* 1 when d's rivals (rivals()) are every other id of the table: a local
+ * read's. Its rivals are then scored with the id in one walk over the
+ * table (rl_match_id_and_rest: the same bits as the list of every other
+ * id, the recognizer's table holding each id once). */
+static int every_rival(const rl_detection *d)
+{
+    return d->pass == RL_PASS_LOCAL;
+}
+
 /* How far d's id leads its best rival (rivals()) through tone: its best
  * score over 0.97 .. 1.03 of its radius (into *fit) less the rival's best
  * there, or with far over 0.91 .. 1.09. A grey-mixed sheet read through
@@ -59,7 +68,7 @@
 static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
                         const int *rv, int n, int far, int axis, double *fit)
 {
-    int reach = far ? SCALES_FAR : SCALES_NEAR, k;
+    int reach = far ? SCALES_FAR : SCALES_NEAR, k, every = every_rival(d);
     double own = -1, twin = -1, top = 1.0 + reach * SCALE_STEP;
     rl_profile wide;
     /* axis >= 0: its pixels alone, every row (moved_keeps) */
@@ -75,9 +84,15 @@ static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone 
          * may fit another than the id does; the id too near its radius */
         if (k >= -SCALES_NEAR && k <= SCALES_NEAR) {
             rl_match mo;
-            rl_match_id_and_ids(&rec->templates, &p, d->id, rv, n, -1, &mo, &m);
+            if (every)
+                rl_match_id_and_rest(&rec->templates, &p, d->id, &mo, &m);
+            else
+                rl_match_id_and_ids(&rec->templates, &p, d->id, rv, n, -1, &mo, &m);
             if (mo.id >= 0 && mo.score > own)
                 own = mo.score;
+        } else if (every) {
+            rl_match mo;
+            rl_match_id_and_rest(&rec->templates, &p, d->id, &mo, &m);
         } else {
             rl_match_ids(&rec->templates, &p, rv, n, -1, &m);
         }
@@ -94,7 +109,7 @@ static int rivals(const rl_recog *rec, const rl_detection *d, int *out)
 {
     int n = 0, i;
     /* every zone: a wrong formation moves every edge, the outer ones most */
-    if (d->pass != RL_PASS_LOCAL)
+    if (!every_rival(d))
         return rl_family_zone_twins(&rec->templates.fam, d->id, out);
     for (i = 0; i < rec->templates.n; i++)
         if (rec->templates.ids[i] != d->id)
