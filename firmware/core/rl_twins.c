@@ -276,8 +276,14 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
  * the frame's own curve do not lead it (three wrong reads of the
  * reviewer's stress sets, a 2 as 18 and a 4 as 20, the twin 0.0002 to
  * 0.001 ahead there, one of them kept by moved_keeps; every right one of
- * 2,246 led by 0.0016 or more); a local one where it passes keeps along
- * its sharpest axis too (two wrong, a 4 as 20 and
+ * 2,246 led by 0.0016 or more), nor along its sharpest axis, and the
+ * two leads together over mg, as keeps sums a read's two (thirteenth
+ * session: on twelve stress sets of 15-18 px, an 18 as 26 twice, a 4 as
+ * 20 and a 16 as 24, smeared to motion ratios 0.27-0.63, led about the
+ * whole ring by 0.004 to 0.008 and along the axis by -0.017 to 0.0025;
+ * it cost 5 right reads of 3,467 at 2.2, 21 of 2,397 at gamma 1); a
+ * local one where it passes keeps along its sharpest axis too (two
+ * wrong, a 4 as 20 and
  * an 18 as 26, led their twins through both formations about the whole
  * ring but not along the axis; 11 of 1,100 right ones failed it). */
 static int small_fits(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n,
@@ -288,8 +294,11 @@ static int small_fits(const rl_recog *rec, const rl_image *img, const rl_detecti
     double fit;
     if (!d->complete || !rl_motion_measure(img, d->u, d->v, d->radius, &mo) || mo.ratio > RL_TWINS_MOVED)
         return 1;
-    if (d->pass != RL_PASS_LOCAL)
-        return twin_lead(rec, img, rec->tone, d, rv, n, 1, -1, &fit) > 0;
+    if (d->pass != RL_PASS_LOCAL) {
+        double ring = twin_lead(rec, img, rec->tone, d, rv, n, 1, -1, &fit);
+        double axis = ring > 0 ? twin_lead(rec, img, rec->tone, d, rv, n, 1, mo.axis, &fit) : 0.0;
+        return ring > 0 && axis > 0 && ring + axis > mg;
+    }
     return keeps(tol, mg, twin_lead(rec, img, other, d, rv, n, 0, mo.axis, &fit),
                  twin_lead(rec, img, rec->tone, d, rv, n, 0, mo.axis, &fit));
 }
