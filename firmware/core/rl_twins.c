@@ -281,7 +281,7 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
  * session: on twelve stress sets of 15-18 px, an 18 as 26 twice, a 4 as
  * 20 and a 16 as 24, smeared to motion ratios 0.27-0.63, led about the
  * whole ring by 0.004 to 0.008 and along the axis by -0.017 to 0.0025;
- * it cost 5 right reads of 3,467 at 2.2, 21 of 2,397 at gamma 1); a
+ * it cost 5 whole landmarks of 3,061 at 2.2, 18 of 2,206 at gamma 1); a
  * local one where it passes keeps along its sharpest axis too (two
  * wrong, a 4 as 20 and
  * an 18 as 26, led their twins through both formations about the whole
