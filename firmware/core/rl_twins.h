@@ -27,8 +27,9 @@
  * about a centre chosen for no id (a whole one's darkness centroid, a cut
  * one's outer edge). A small whole landmark that moved must also pass
  * before any rule keeps it: a global read its twins at 9% either side
- * through the frame's curve, a local read the rule along its sharpest
- * axis (small_fits; docs/design.md, rule 6). A landmark too small for its twins to be
+ * through the frame's curve, about the whole ring and along its sharpest
+ * axis (the two leads over RL_TWINS_LOCAL_MARGIN), a local read the rule
+ * along its sharpest axis (small_fits; docs/design.md, rule 6). A landmark too small for its twins to be
  * told apart at all (code zone 1 under RL_TWINS_MIN_ZONE_PX) gets no id,
  * nor a cut local read whose circle the search took off its outer edge
  * (RL_TWINS_CUT_BULGE).
