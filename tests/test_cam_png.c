@@ -75,16 +75,28 @@ static void a_frame_is_stamped_when_due(void **state)
 
 /* A grab that gives up before the next frame is due does not skip it:
  * the grab after it plays that frame. The period is a second, so the
- * first grab's zero wait cannot reach it however busy the machine. */
+ * zero wait falls short of the next frame unless the machine stalled a
+ * whole second since the opening: then the test is skipped, not failed
+ * (no timed assertion). */
 static void a_timed_out_grab_skips_no_frame(void **state)
 {
     rl_cam c;
     rl_cam_frame f;
     uint64_t opened, t0;
+    rl_err e;
     (void)state;
     open_frames(&c, "cam_png_held", 1.0, &opened);
     t0 = grab_time(&c, 10);
-    assert_int_equal(rl_cam_grab(&c, 0, &f), RL_ETIMEOUT);
+    e = rl_cam_grab(&c, 0, &f);
+    if (e == RL_OK) {
+        /* the machine stalled a whole period since the opening: f1 was
+         * due, nothing timed out, nothing to test (not a failure) */
+        assert_int_equal(f.img.data[0], 20);
+        rl_cam_release(&c, &f);
+        rl_cam_close(&c);
+        skip();
+    }
+    assert_int_equal(e, RL_ETIMEOUT);
     assert_int_equal(rl_cam_grab(&c, 3000, &f), RL_OK);
     assert_int_equal(f.img.data[0], 20); /* f1, not f2 */
     assert_int_equal(f.t_us - t0, 1000000);
