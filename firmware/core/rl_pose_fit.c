@@ -188,7 +188,10 @@ int rl_pose_fit_predict(const rl_pose_model *md, const double *Rc, const double 
 /* rl_pose_fit_predict's arithmetic for the value (the same bits), and
  * beside it the quotients' derivatives: x = l / u moves by (dl - x du) / u.
  * With a radius the prediction is the mean of the four points' images
- * (the centre's own cancels), so its derivative is theirs averaged. */
+ * (the centre's own cancels), so its derivative is theirs averaged: the
+ * sums over the points that do not depend on the parameter are made once
+ * (P, Q; E, F for the points' steps along the map's x and y, whose own
+ * derivatives are those of Rc's rows 0 and 1). */
 int rl_pose_fit_predict_d(const rl_pose_model *md, const rl_pose_fit_view *v, double X, double Y, double Z,
                           int nq, double *xn, double *yn, double *dxn, double *dyn)
 {
@@ -196,57 +199,51 @@ int rl_pose_fit_predict_d(const rl_pose_model *md, const rl_pose_fit_view *v, do
     double dx = X - C[0], dy = Y - C[1], dz = Z - C[2], r = md->radius, sx = 0, sy = 0;
     double f = Rc[0] * dx + Rc[3] * dy + Rc[6] * dz, l = Rc[1] * dx + Rc[4] * dy + Rc[7] * dz,
            u = Rc[2] * dx + Rc[5] * dy + Rc[8] * dz;
-    double dc[RL_POSE_NQ][3];
+    double P = 0, Qx = 0, Qy = 0, E[2] = {0, 0}, Fx[2] = {0, 0}, Fy[2] = {0, 0};
     int i, a;
     if (!(u > 1e-6))
         return 0;
     *xn = l / u;
     *yn = -f / u;
+    if (r <= 0) {
+        P = 1 / u;
+        Qx = *xn * P;
+        Qy = *yn * P;
+    } else {
+        for (i = 0; i < 4; i++) {
+            int row = i < 2 ? 0 : 3;
+            double s = i & 1 ? -r : r, sf = s * Rc[row], sl = s * Rc[row + 1], su = s * Rc[row + 2], xi, yi, iu;
+            if (!(u + su > 1e-6))
+                return 0;
+            xi = (l + sl) / (u + su);
+            yi = -(f + sf) / (u + su);
+            sx += xi - *xn;
+            sy += yi - *yn;
+            iu = 0.25 / (u + su);
+            P += iu;
+            Qx += xi * iu;
+            Qy += yi * iu;
+            E[i >> 1] += s * iu;
+            Fx[i >> 1] += s * xi * iu;
+            Fy[i >> 1] += s * yi * iu;
+        }
+        *xn += sx / 4;
+        *yn += sy / 4;
+    }
     for (a = 0; a < nq; a++) {
         const double *D = v->dRc[a];
-        dc[a][0] = v->dc[a][0];
-        dc[a][1] = v->dc[a][1];
-        dc[a][2] = v->dc[a][2];
-        if (a >= 2) {
-            dc[a][0] += D[0] * dx + D[3] * dy + D[6] * dz;
-            dc[a][1] += D[1] * dx + D[4] * dy + D[7] * dz;
-            dc[a][2] += D[2] * dx + D[5] * dy + D[8] * dz;
+        double df = v->dc[a][0], dl = v->dc[a][1], du = v->dc[a][2];
+        if (a < 2) { /* x, y: the camera moves, its axes stay */
+            dxn[a] = dl * P - du * Qx;
+            dyn[a] = -df * P - du * Qy;
+            continue;
         }
+        df += D[0] * dx + D[3] * dy + D[6] * dz;
+        dl += D[1] * dx + D[4] * dy + D[7] * dz;
+        du += D[2] * dx + D[5] * dy + D[8] * dz;
+        dxn[a] = dl * P - du * Qx + D[1] * E[0] - D[2] * Fx[0] + D[4] * E[1] - D[5] * Fx[1];
+        dyn[a] = -df * P - du * Qy - D[0] * E[0] - D[2] * Fy[0] - D[3] * E[1] - D[5] * Fy[1];
     }
-    if (r <= 0) {
-        double iu = 1 / u;
-        for (a = 0; a < nq; a++) {
-            dxn[a] = (dc[a][1] - *xn * dc[a][2]) * iu;
-            dyn[a] = (-dc[a][0] - *yn * dc[a][2]) * iu;
-        }
-        return 1;
-    }
-    for (a = 0; a < nq; a++)
-        dxn[a] = dyn[a] = 0;
-    for (i = 0; i < 4; i++) {
-        int row = i < 2 ? 0 : 3;
-        double s = i & 1 ? -r : r, sf = s * Rc[row], sl = s * Rc[row + 1], su = s * Rc[row + 2], xi, yi, iu;
-        if (!(u + su > 1e-6))
-            return 0;
-        xi = (l + sl) / (u + su);
-        yi = -(f + sf) / (u + su);
-        sx += xi - *xn;
-        sy += yi - *yn;
-        iu = 0.25 / (u + su);
-        for (a = 0; a < nq; a++) {
-            const double *D = v->dRc[a];
-            double df = dc[a][0], dl = dc[a][1], du = dc[a][2];
-            if (a >= 2) {
-                df += s * D[row];
-                dl += s * D[row + 1];
-                du += s * D[row + 2];
-            }
-            dxn[a] += (dl - xi * du) * iu;
-            dyn[a] += (-df - yi * du) * iu;
-        }
-    }
-    *xn += sx / 4;
-    *yn += sy / 4;
     return 1;
 }
 
@@ -316,7 +313,7 @@ static int normal_equations(const rl_pose_model *md, rl_pose_pt *pt, int m, cons
             /* Huber weights from these residuals: a centre more than two
              * of its sigmas off counts less (the residuals are linear in
              * them) */
-            double e = hypot(rx, ry);
+            double e = sqrt(rx * rx + ry * ry);
             pt[i].w = e > 2.0 ? sqrt(2.0 / e) : 1.0;
             rx *= pt[i].w;
             ry *= pt[i].w;
