@@ -312,12 +312,14 @@ static const rl_detection *shutter_moved(rl_runner *r, uint64_t t_us, rl_detecti
     return moved;
 }
 
-/* The frame's pose into rep (rep->pose_err says whether there is one). */
+/* The frame's pose into rep (rep->pose_err says whether there is one);
+ * rep->pose_us is its time. */
 static void localize(rl_runner *r, uint64_t t_us, rl_run_report *rep, rl_pose *pose, rl_place_found *found)
 {
     rl_place_prior prior;
     rl_detection moved[RL_MAX_LANDMARKS];
     const rl_result *res = r->res;
+    uint64_t t0 = rl_clock_now_us();
     memset(pose, 0, sizeof *pose);
     memset(found, 0, sizeof *found);
     if (!can_localize(r->site)) {
@@ -328,6 +330,7 @@ static void localize(rl_runner *r, uint64_t t_us, rl_run_report *rep, rl_pose *p
     rep->place = found;
     rep->pose_err = rl_site_solve(r->site, shutter_moved(r, t_us, moved), res->n_landmarks,
                                   make_prior(r, t_us, &prior), pose, found);
+    rep->pose_us += (double)(rl_clock_now_us() - t0);
     if (rep->pose_err == RL_OK) {
         r->prev = r->last;
         r->prev.have = r->last.have && t_us > r->last.t_us;

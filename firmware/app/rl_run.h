@@ -15,7 +15,8 @@
  * seam (rl_run_io), so tests inject every fault; settings through
  * rl_run_config with defaults; the state is the loop's own, read through
  * rl_run_counts. Nothing is allocated after rl_run_init for frames of the
- * calibration's size; only recognition is timed (recog_us).
+ * calibration's size; recognition and localizing are timed (recog_us,
+ * pose_us).
  *
  *   static rl_runner runner;
  *   static rl_result result;
@@ -76,6 +77,7 @@ typedef struct {
     const rl_cam_frame *frame;  /* FRAME: the frame; else NULL */
     const rl_result *res;       /* FRAME: its landmarks; else NULL */
     double recog_us;            /* FRAME: recognition's time alone */
+    double pose_us;             /* FRAME: localizing's time alone (the place and the pose) */
     int local_used;             /* FRAME: 1 when the local pass identified one of its landmarks */
     int windows;                /* FRAME: 1 when read by tracking windows only (rl_track.h) */
     const rl_track *track;      /* FRAME: the tracker after the frame (its unjudged reads) */

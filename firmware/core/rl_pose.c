@@ -104,22 +104,21 @@ static int drop_inconsistent(rl_pose_pt *pt, int m, rl_pose *out)
 {
     int i, j;
     for (;;) {
-        int worst = -1, worst_bad = 0;
-        for (i = 0; i < m; i++) {
-            int bad = 0;
-            for (j = 0; j < m; j++) {
-                double dp, dm;
-                if (j == i)
-                    continue;
-                dp = hypot(pt[i].px - pt[j].px, pt[i].py - pt[j].py);
-                dm = hypot(pt[i].mx - pt[j].mx, pt[i].my - pt[j].my);
-                bad += fabs(dp - dm) > RL_POSE_PAIR_TOLERANCE + 0.04 * dm;
+        int worst = -1, worst_bad = 0, bad[RL_MAX_LANDMARKS];
+        memset(bad, 0, sizeof *bad * (size_t)m);
+        for (i = 0; i < m; i++) /* each pair once: it counts against both */
+            for (j = i + 1; j < m; j++) {
+                double dp = hypot(pt[i].px - pt[j].px, pt[i].py - pt[j].py),
+                       dm = hypot(pt[i].mx - pt[j].mx, pt[i].my - pt[j].my);
+                int off = fabs(dp - dm) > RL_POSE_PAIR_TOLERANCE + 0.04 * dm;
+                bad[i] += off;
+                bad[j] += off;
             }
-            if (bad > worst_bad) {
-                worst_bad = bad;
+        for (i = 0; i < m; i++)
+            if (bad[i] > worst_bad) {
+                worst_bad = bad[i];
                 worst = i;
             }
-        }
         if (worst < 0)
             return m;
         if (m <= 2) {

@@ -11,10 +11,9 @@ void rl_pose_fit_mul(const double *a, const double *b, double *c)
             c[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
 }
 
-/* Rz(yaw) Ry(pitch) Rx(roll) */
-void rl_pose_fit_rotation(double yaw, double pitch, double roll, double *R)
+/* Rz(yaw) Ry(pitch) Rx(roll) from the angles' cosines and sines */
+static void rotation_cs(double cz, double sz, double cy, double sy, double cx, double sx, double *R)
 {
-    double cz = cos(yaw), sz = sin(yaw), cy = cos(pitch), sy = sin(pitch), cx = cos(roll), sx = sin(roll);
     R[0] = cz * cy;
     R[1] = cz * sy * sx - sz * cx;
     R[2] = cz * sy * cx + sz * sx;
@@ -24,6 +23,11 @@ void rl_pose_fit_rotation(double yaw, double pitch, double roll, double *R)
     R[6] = -sy;
     R[7] = cy * sx;
     R[8] = cy * cx;
+}
+
+void rl_pose_fit_rotation(double yaw, double pitch, double roll, double *R)
+{
+    rotation_cs(cos(yaw), sin(yaw), cos(pitch), sin(pitch), cos(roll), sin(roll), R);
 }
 
 void rl_pose_fit_model(rl_pose_model *md, const rl_mount *mount, double height, double radius)
@@ -81,15 +85,72 @@ void rl_pose_fit_rigid(const rl_pose_pt *pt, int n, double *tx, double *ty, doub
 }
 
 
-void rl_pose_fit_camera(const rl_pose_model *md, const double *q, double *Rc, double *C)
+/* The camera's rotation and centre on the robot rotated by Rr at q. */
+static void camera_of(const rl_pose_model *md, const double *q, const double *Rr, double *Rc, double *C)
 {
-    double Rr[9];
     const rl_mount *m = md->mount;
-    rl_pose_fit_rotation(q[2], q[4], q[3], Rr);
     rl_pose_fit_mul(Rr, md->Rm, Rc);
     C[0] = q[0] + Rr[0] * m->x + Rr[1] * m->y + Rr[2] * m->z;
     C[1] = q[1] + Rr[3] * m->x + Rr[4] * m->y + Rr[5] * m->z;
     C[2] = Rr[6] * m->x + Rr[7] * m->y + Rr[8] * m->z;
+}
+
+void rl_pose_fit_camera(const rl_pose_model *md, const double *q, double *Rc, double *C)
+{
+    double Rr[9];
+    rl_pose_fit_rotation(q[2], q[4], q[3], Rr);
+    camera_of(md, q, Rr, Rc, C);
+}
+
+/* The robot's rotation's derivatives: by yaw [ez]x Rr (Rz's turn comes
+ * first), by roll Rr [ex]x (Rx's last), by pitch each entry's own. A
+ * landmark's camera coordinates c = Rc' (P - C) move by dRc' (P - C) -
+ * Rc' dC: the second part the same for every landmark, kept in v->dc. */
+void rl_pose_fit_view_of(const rl_pose_model *md, const double *q, rl_pose_fit_view *v)
+{
+    double cz = cos(q[2]), sz = sin(q[2]), cy = cos(q[4]), sy = sin(q[4]), cx = cos(q[3]), sx = sin(q[3]);
+    double Rr[9], D[9];
+    const rl_mount *m = md->mount;
+    const double *Rc = v->Rc;
+    int a, k;
+    rotation_cs(cz, sz, cy, sy, cx, sx, Rr);
+    camera_of(md, q, Rr, v->Rc, v->C);
+    for (a = 2; a < RL_POSE_NQ; a++) {
+        double dC[3];
+        if (a == 2) {
+            for (k = 0; k < 3; k++) {
+                D[k] = -Rr[3 + k];
+                D[3 + k] = Rr[k];
+                D[6 + k] = 0;
+            }
+        } else if (a == 3) {
+            for (k = 0; k < 9; k += 3) {
+                D[k] = 0;
+                D[k + 1] = Rr[k + 2];
+                D[k + 2] = -Rr[k + 1];
+            }
+        } else {
+            D[0] = -cz * sy;
+            D[1] = cz * cy * sx;
+            D[2] = cz * cy * cx;
+            D[3] = -sz * sy;
+            D[4] = sz * cy * sx;
+            D[5] = sz * cy * cx;
+            D[6] = -cy;
+            D[7] = -sy * sx;
+            D[8] = -sy * cx;
+        }
+        rl_pose_fit_mul(D, md->Rm, v->dRc[a]);
+        for (k = 0; k < 3; k++)
+            dC[k] = D[3 * k] * m->x + D[3 * k + 1] * m->y + D[3 * k + 2] * m->z;
+        for (k = 0; k < 3; k++)
+            v->dc[a][k] = -(Rc[k] * dC[0] + Rc[3 + k] * dC[1] + Rc[6 + k] * dC[2]);
+    }
+    for (k = 0; k < 3; k++) { /* x and y move the camera, not its axes */
+        v->dc[0][k] = -Rc[k];
+        v->dc[1][k] = -Rc[3 + k];
+    }
+    memset(v->dRc, 0, 2 * sizeof v->dRc[0]);
 }
 
 /* What the recognizer measures for the landmark at (X, Y), seen by the
@@ -124,21 +185,65 @@ int rl_pose_fit_predict(const rl_pose_model *md, const double *Rc, const double 
     return 1;
 }
 
-/* Weighted residuals: two per landmark (image), two for the tilt prior. */
-static int residuals(const rl_pose_model *md, const rl_pose_pt *pt, int m, const double *q, double *r)
+/* rl_pose_fit_predict's arithmetic for the value (the same bits), and
+ * beside it the quotients' derivatives: x = l / u moves by (dl - x du) / u.
+ * With a radius the prediction is the mean of the four points' images
+ * (the centre's own cancels), so its derivative is theirs averaged: the
+ * sums over the points that do not depend on the parameter are made once
+ * (P, Q; E, F for the points' steps along the map's x and y, whose own
+ * derivatives are those of Rc's rows 0 and 1). */
+int rl_pose_fit_predict_d(const rl_pose_model *md, const rl_pose_fit_view *v, double X, double Y, double Z,
+                          int nq, double *xn, double *yn, double *dxn, double *dyn)
 {
-    double Rc[9], C[3];
-    int i;
-    rl_pose_fit_camera(md, q, Rc, C);
-    for (i = 0; i < m; i++) {
-        double xn, yn;
-        if (!rl_pose_fit_predict(md, Rc, C, pt[i].mx, pt[i].my, pt[i].mz, &xn, &yn))
-            return 0;
-        r[2 * i] = (pt[i].xn - xn) / (md->sn * pt[i].noise) * pt[i].w;
-        r[2 * i + 1] = (pt[i].yn - yn) / (md->sn * pt[i].noise) * pt[i].w;
+    const double *Rc = v->Rc, *C = v->C;
+    double dx = X - C[0], dy = Y - C[1], dz = Z - C[2], r = md->radius, sx = 0, sy = 0;
+    double f = Rc[0] * dx + Rc[3] * dy + Rc[6] * dz, l = Rc[1] * dx + Rc[4] * dy + Rc[7] * dz,
+           u = Rc[2] * dx + Rc[5] * dy + Rc[8] * dz;
+    double P = 0, Qx = 0, Qy = 0, E[2] = {0, 0}, Fx[2] = {0, 0}, Fy[2] = {0, 0};
+    int i, a;
+    if (!(u > 1e-6))
+        return 0;
+    *xn = l / u;
+    *yn = -f / u;
+    if (r <= 0) {
+        P = 1 / u;
+        Qx = *xn * P;
+        Qy = *yn * P;
+    } else {
+        for (i = 0; i < 4; i++) {
+            int row = i < 2 ? 0 : 3;
+            double s = i & 1 ? -r : r, sf = s * Rc[row], sl = s * Rc[row + 1], su = s * Rc[row + 2], xi, yi, iu;
+            if (!(u + su > 1e-6))
+                return 0;
+            xi = (l + sl) / (u + su);
+            yi = -(f + sf) / (u + su);
+            sx += xi - *xn;
+            sy += yi - *yn;
+            iu = 0.25 / (u + su);
+            P += iu;
+            Qx += xi * iu;
+            Qy += yi * iu;
+            E[i >> 1] += s * iu;
+            Fx[i >> 1] += s * xi * iu;
+            Fy[i >> 1] += s * yi * iu;
+        }
+        *xn += sx / 4;
+        *yn += sy / 4;
     }
-    r[2 * m] = -q[3] / md->prior[0];
-    r[2 * m + 1] = -q[4] / md->prior[1];
+    for (a = 0; a < nq; a++) {
+        const double *D = v->dRc[a];
+        double df = v->dc[a][0], dl = v->dc[a][1], du = v->dc[a][2];
+        if (a < 2) { /* x, y: the camera moves, its axes stay */
+            dxn[a] = dl * P - du * Qx;
+            dyn[a] = -df * P - du * Qy;
+            continue;
+        }
+        df += D[0] * dx + D[3] * dy + D[6] * dz;
+        dl += D[1] * dx + D[4] * dy + D[7] * dz;
+        du += D[2] * dx + D[5] * dy + D[8] * dz;
+        dxn[a] = dl * P - du * Qx + D[1] * E[0] - D[2] * Fx[0] + D[4] * E[1] - D[5] * Fx[1];
+        dyn[a] = -df * P - du * Qy - D[0] * E[0] - D[2] * Fy[0] - D[3] * E[1] - D[5] * Fy[1];
+    }
     return 1;
 }
 
@@ -182,53 +287,56 @@ static int solve(double *A, double *b, int n)
 }
 
 /* The normal matrix J'J and gradient J'r of the free parameters (the
- * first nf of q), J by central differences. 0 if a landmark fell behind. */
+ * first nf of q), J analytic (rl_pose_fit_predict_d): two rows a
+ * landmark, its image residual in units of its noise, and two for the
+ * tilt prior; chi2 of the image rows. With reweight, each landmark's
+ * Huber weight from its residual here first. 0 if a landmark fell
+ * behind. */
 static int normal_equations(const rl_pose_model *md, rl_pose_pt *pt, int m, const double *q, int nf,
                             int reweight, double *A, double *g, double *chi2)
 {
-    double r0[2 * RL_MAX_LANDMARKS + 2], rp[2 * RL_MAX_LANDMARKS + 2];
-    double J[RL_POSE_NQ][2 * RL_MAX_LANDMARKS + 2];
-    int nr = 2 * m + 2, a, b, k;
-    if (reweight)
-        for (a = 0; a < m; a++)
-            pt[a].w = 1;
-    if (!residuals(md, pt, m, q, r0))
-        return 0;
-    if (reweight) {
-        /* Huber weights from these residuals: a centre more than two of
-         * its sigmas off counts less (the residuals are linear in them) */
-        for (a = 0; a < m; a++) {
-            double e = hypot(r0[2 * a], r0[2 * a + 1]);
-            pt[a].w = e > 2.0 ? sqrt(2.0 / e) : 1.0;
-            r0[2 * a] *= pt[a].w;
-            r0[2 * a + 1] *= pt[a].w;
-        }
-    }
-    for (a = 0; a < nf; a++) {
-        /* forward differences: metres and radians alike, a step of 1e-7
-         * is far below what the fit resolves and far above rounding */
-        double qp[RL_POSE_NQ], h = 1e-7;
-        memcpy(qp, q, sizeof qp);
-        qp[a] += h;
-        if (!residuals(md, pt, m, qp, rp))
-            return 0;
-        for (k = 0; k < nr; k++)
-            J[a][k] = -(rp[k] - r0[k]) / h; /* d(prediction)/dq, weighted */
-    }
+    rl_pose_fit_view v;
+    int i, a, b;
+    rl_pose_fit_view_of(md, q, &v);
+    memset(A, 0, sizeof *A * (size_t)(nf * nf));
+    memset(g, 0, sizeof *g * (size_t)nf);
     *chi2 = 0;
-    for (k = 0; k < 2 * m; k++)
-        *chi2 += r0[k] * r0[k];
-    for (a = 0; a < nf; a++) {
-        g[a] = 0;
-        for (k = 0; k < nr; k++)
-            g[a] += J[a][k] * r0[k];
-        for (b = 0; b < nf; b++) {
-            double sum = 0;
-            for (k = 0; k < nr; k++)
-                sum += J[a][k] * J[b][k];
-            A[a * nf + b] = sum;
+    for (i = 0; i < m; i++) {
+        double xn, yn, jx[RL_POSE_NQ], jy[RL_POSE_NQ], rx, ry, k;
+        if (!rl_pose_fit_predict_d(md, &v, pt[i].mx, pt[i].my, pt[i].mz, nf, &xn, &yn, jx, jy))
+            return 0;
+        if (reweight)
+            pt[i].w = 1;
+        rx = (pt[i].xn - xn) / (md->sn * pt[i].noise) * pt[i].w;
+        ry = (pt[i].yn - yn) / (md->sn * pt[i].noise) * pt[i].w;
+        if (reweight) {
+            /* Huber weights from these residuals: a centre more than two
+             * of its sigmas off counts less (the residuals are linear in
+             * them) */
+            double e = sqrt(rx * rx + ry * ry);
+            pt[i].w = e > 2.0 ? sqrt(2.0 / e) : 1.0;
+            rx *= pt[i].w;
+            ry *= pt[i].w;
+        }
+        *chi2 += rx * rx;
+        *chi2 += ry * ry;
+        k = pt[i].w / (md->sn * pt[i].noise);
+        for (a = 0; a < nf; a++) {
+            jx[a] *= k; /* d(prediction)/dq, weighted */
+            jy[a] *= k;
+            g[a] += jx[a] * rx + jy[a] * ry;
+            for (b = 0; b <= a; b++)
+                A[a * nf + b] += jx[a] * jx[b] + jy[a] * jy[b];
         }
     }
+    for (a = 3; a < nf; a++) { /* the prior's rows: residual -q / sigma, its derivative 1 / sigma */
+        double p2 = md->prior[a - 3] * md->prior[a - 3];
+        A[a * nf + a] += 1 / p2;
+        g[a] += -q[a] / p2;
+    }
+    for (a = 0; a < nf; a++)
+        for (b = a + 1; b < nf; b++)
+            A[a * nf + b] = A[b * nf + a];
     return 1;
 }
 

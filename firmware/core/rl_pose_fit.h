@@ -63,6 +63,22 @@ void rl_pose_fit_camera(const rl_pose_model *md, const double *q, double *Rc, do
 int rl_pose_fit_predict(const rl_pose_model *md, const double *Rc, const double *C, double X, double Y, double Z,
                         double *xn, double *yn);
 
+/* The camera of q (as rl_pose_fit_camera) and its derivatives by each of
+ * q's five parameters, for rl_pose_fit_predict_d. */
+typedef struct {
+    double Rc[9], C[3];
+    double dRc[RL_POSE_NQ][9]; /* dRc / dq[a] (0 for x and y) */
+    double dc[RL_POSE_NQ][3];  /* -Rc' dC / dq[a]: a fixed point's move in the camera's axes */
+} rl_pose_fit_view;
+
+void rl_pose_fit_view_of(const rl_pose_model *md, const double *q, rl_pose_fit_view *v);
+
+/* rl_pose_fit_predict from the view v (the same value, bit for bit) and
+ * its derivatives by the first nq parameters of q into dxn, dyn (exact:
+ * the fit's Jacobian); 0 if behind the camera. */
+int rl_pose_fit_predict_d(const rl_pose_model *md, const rl_pose_fit_view *v, double X, double Y, double Z,
+                          int nq, double *xn, double *yn, double *dxn, double *dyn);
+
 /* Fit the first nf (3: a level robot, 5: tilted too) parameters of q from
  * its start; the covariance of all five into cov (the held ones as unsure
  * as the prior, and the free ones as unsure as that makes them: a level

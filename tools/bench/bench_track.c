@@ -51,6 +51,10 @@ static int truth_read(const char *png, truth *t)
 typedef struct {
     int frames, windows, fulls, whole, whole_read, ids, wrong_ids, posed, pose_right, pose_frames;
     double us_all[FRAMES], us_win[FRAMES], us_full[FRAMES], unit[FRAMES], err[FRAMES];
+    /* localizing (the place and the pose, rl_run's pose_us) alone and
+     * with the frame's recognition, by the same frames as us_* */
+    double pose_all[FRAMES], pose_win[FRAMES], pose_full[FRAMES];
+    double both_all[FRAMES], both_win[FRAMES], both_full[FRAMES];
     int nerr;
     long by_box, by_window; /* landmarks of windowed frames read as a box, as a window */
 } tally;
@@ -102,15 +106,22 @@ static rl_err put(void *ctx, const rl_run_report *rep)
     s->unit[s->frames] = sk->unit.unit_ns / sk->unit.units / 1000.0;
     sk->unit.unit_ns = 0;
     sk->unit.units = 0;
+    s->pose_all[s->frames] = rep->pose_us;
+    s->both_all[s->frames] = rep->recog_us + rep->pose_us;
     s->us_all[s->frames++] = rep->recog_us;
     for (k = 0; k < rep->res->n_landmarks && rep->windows; k++)
         s->by_box += rep->res->landmarks[k].pass == RL_PASS_GLOBAL;
     for (k = 0; k < rep->res->n_landmarks && rep->windows; k++)
         s->by_window += rep->res->landmarks[k].pass == RL_PASS_LOCAL;
-    if (rep->windows)
+    if (rep->windows) {
+        s->pose_win[s->windows] = rep->pose_us;
+        s->both_win[s->windows] = rep->recog_us + rep->pose_us;
         s->us_win[s->windows++] = rep->recog_us;
-    else
+    } else {
+        s->pose_full[s->fulls] = rep->pose_us;
+        s->both_full[s->fulls] = rep->recog_us + rep->pose_us;
         s->us_full[s->fulls++] = rep->recog_us;
+    }
     count_ids(s, &t, rep->res);
     for (k = 0; k < t.n; k++)
         whole += t.visible[k] >= 0.999;
@@ -146,14 +157,21 @@ static int drive_frames(const char *dir, const char *prefix, char ***out)
     return *out ? n : -1;
 }
 
-static void print_row(const char *what, int n, double *us, tally *s, int first)
+/* One row: n frames' median recognition time (us) and in passes; on the
+ * first row of a run its reads and poses; then the median time of
+ * localizing them (the place and the pose) and of the frame with it, in
+ * passes. */
+static void print_row(const char *what, int n, double *us, double *pose, double *both, tally *s, int first)
 {
     double u = rl_bench_median(s->unit, s->frames), m = n ? rl_bench_median(us, n) : 0;
+    double p = n ? rl_bench_median(pose, n) : 0, b = n ? rl_bench_median(both, n) : 0;
     printf("  %-16s %6d %10.1f %8.2f", what, n, m, u > 0 ? m / u : 0.0);
     if (first)
         printf("   %5d/%-5d %5d  %5d/%-5d %8.1f", s->whole_read, s->whole, s->wrong_ids, s->pose_right, s->pose_frames,
                s->nerr ? 1000.0 * rl_bench_median(s->err, s->nerr) : 0.0);
-    printf("\n");
+    else
+        printf("   %11s %5s  %11s %8s", "", "", "", "");
+    printf("  %7.2f %9.2f\n", u > 0 ? p / u : 0.0, u > 0 ? b / u : 0.0);
 }
 
 int rl_bench_track(const char *dir, const char *prefix)
@@ -198,19 +216,20 @@ int rl_bench_track(const char *dir, const char *prefix)
     pr.run.track.max_reads = 0;
     printf("track, %s/%s*.png (%d frames in order, 10 a second; a full frame every %d): median us per frame and\n"
            "in whole-frame histogram passes (%.1f us, the same frames); whole landmarks read right, wrong ids,\n"
-           "poses within %.0f cm of the truth (frames with two whole landmarks), median pose error mm\n",
+           "poses within %.0f cm of the truth (frames with two whole landmarks), median pose error mm; then\n"
+           "localizing (the place and the pose) and the frame with it, in passes (medians of the same frames)\n",
            dir, prefix, n, pr.run.track.full_every, rl_bench_median(full.unit, full.frames), 100 * POSE_TOLERANCE);
-    printf("  %-16s %6s %10s %8s   %11s %5s  %11s %8s\n", "frames", "count", "us", "passes", "whole read", "wrong",
-           "poses", "err mm");
-    print_row("full (--no-track)", full.frames, full.us_all, &full, 1);
-    print_row("tracked: all", tracked.frames, tracked.us_all, &tracked, 1);
-    print_row("  by windows", tracked.windows, tracked.us_win, &tracked, 0);
+    printf("  %-16s %6s %10s %8s   %11s %5s  %11s %8s  %7s %9s\n", "frames", "count", "us", "passes", "whole read",
+           "wrong", "poses", "err mm", "pose", "with pose");
+    print_row("full (--no-track)", full.frames, full.us_all, full.pose_all, full.both_all, &full, 1);
+    print_row("tracked: all", tracked.frames, tracked.us_all, tracked.pose_all, tracked.both_all, &tracked, 1);
+    print_row("  by windows", tracked.windows, tracked.us_win, tracked.pose_win, tracked.both_win, &tracked, 0);
     printf("  (their landmarks: %ld verified or read as the global pass reads a box, %ld as the local pass reads a window)\n",
            tracked.by_box, tracked.by_window);
-    print_row("  in full", tracked.fulls, tracked.us_full, &tracked, 0);
-    print_row("tracked, 3 reads", capped.frames, capped.us_all, &capped, 1);
-    print_row("  by windows", capped.windows, capped.us_win, &capped, 0);
-    print_row("  in full", capped.fulls, capped.us_full, &capped, 0);
+    print_row("  in full", tracked.fulls, tracked.us_full, tracked.pose_full, tracked.both_full, &tracked, 0);
+    print_row("tracked, 3 reads", capped.frames, capped.us_all, capped.pose_all, capped.both_all, &capped, 1);
+    print_row("  by windows", capped.windows, capped.us_win, capped.pose_win, capped.both_win, &capped, 0);
+    print_row("  in full", capped.fulls, capped.us_full, capped.pose_full, capped.both_full, &capped, 0);
     for (k = 0; k < n; k++)
         free(names[k]);
     free(names);

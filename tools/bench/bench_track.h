@@ -3,7 +3,9 @@
  * loop (rl_run, as `ringloc locate` runs them) three times, every frame in
  * full, tracked (rl_track.h), and tracked with at most 3 reads a frame
  * (rl_track_config.max_reads), each frame's recognition time beside one
- * histogram pass over the same frame measured in the same run, and,
+ * histogram pass over the same frame measured in the same run, then the
+ * time of localizing the frame (the place and the pose, rl_run's pose_us)
+ * and of the frame with it, in the same passes, and,
  * against the renderer's truth (NAME.yaml), the whole landmarks read
  * right, the wrong ids and the poses within 5 cm, side by side.
  *
