@@ -2,7 +2,10 @@
  * listing one PNG per line (relative to the list's folder), or the files
  * a command line names, played at a rate (frame k's capture time t0 + k
  * periods, its due time, t0 the opening's), or as fast as they decode (its
- * grab's). A frame is decoded when it is grabbed, into one block sized at
+ * grab's). A loop slower than the rate takes each frame late; once a grab
+ * comes more than a second (or three periods, if longer) after its due
+ * time, t0 moves so that frame is due at its grab: the times show one gap,
+ * as a camera's that dropped frames, and the latency stops growing. A frame is decoded when it is grabbed, into one block sized at
  * open, so memory does not grow with the list and grabbing never
  * allocates; a list file is read a line at a time. A frame that cannot be
  * read, or is not the camera's size, is reported (RL_EFORMAT, the reason
@@ -104,6 +107,20 @@ static rl_err grow_for(png_state *s, char *err, size_t errlen)
     return rl_cam_png_fit(s->path, &s->block, &s->cap, &w, &h, err, errlen);
 }
 
+/* How far behind its due time a grab may come before the frames are
+ * re-timed: the larger of a second and LAG_PERIODS periods. Within it a
+ * loop catches up after a slow frame (a full search after a lost track)
+ * and the replay keeps its times; a second holds a 30-frame hiccup at 30
+ * frames a second, and LAG_PERIODS periods one of a few frames at a slow
+ * rate. Beyond it a frame's latency (the pose packet's, capped at 6.55 s)
+ * would only grow; the bound stays under that cap down to 0.46 frames a
+ * second. */
+#define LAG_PERIODS 3
+static uint64_t behind_bound(uint64_t period_us)
+{
+    return period_us * LAG_PERIODS > 1000000u ? period_us * LAG_PERIODS : 1000000u;
+}
+
 static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
 {
     png_state *s = (png_state *)c->state;
@@ -122,6 +139,12 @@ static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
     /* pace to the rate: frame k is due at t0 + k * period */
     due = s->t0 + (uint64_t)s->next * s->period_us;
     now = rl_clock_now_us();
+    if (s->period_us > 0 && now > due && now - due > behind_bound(s->period_us)) {
+        /* the loop cannot keep the rate: this frame is due now, the ones
+         * after it a period apart (one gap, as a camera dropping frames) */
+        s->t0 = now - (uint64_t)s->next * s->period_us;
+        due = now;
+    }
     if (due > now) {
         uint64_t wait = due - now;
         if (timeout_ms >= 0 && wait > (uint64_t)timeout_ms * 1000u) {
@@ -138,8 +161,9 @@ static rl_err png_grab(rl_cam *c, int timeout_ms, rl_cam_frame *f)
      * when the loop came for it: the times a replay gives the loop (its
      * track's and prior's, a rolling shutter's moves) and the pose frames'
      * time_ms then come from the files and the rate alone, whatever the
-     * machine's load; a frame grabbed late is as old as it is (the pose
-     * frame's latency). As fast as they decode, no frame is due: the grab's */
+     * machine's load, as long as the loop keeps within behind_bound of
+     * them; a frame grabbed late is as old as it is (the pose frame's
+     * latency). As fast as they decode, no frame is due: the grab's */
     f->t_us = s->period_us > 0 ? due : rl_clock_now_us();
     e = s->any_size ? grow_for(s, err, sizeof err) : RL_OK;
     if (e == RL_OK)

@@ -13,6 +13,7 @@
 #include "rl_test.h"
 #include <math.h>
 #include <string.h>
+#include "draw_slanted.h"
 #include "rl_edge.h"
 #include "rl_ellipse.h"
 #include "rl_motion.h"
@@ -41,25 +42,6 @@ static void draw(rl_image *img, int id, double cx, double cy, double r, double s
                 dark += rl_templates_value_at(&fam, id, sqrt(dx * dx + dy * dy) / r, sigma);
             }
             pix[y * W + x] = (uint8_t)lround(220 - 190 * dark / STEPS);
-        }
-    img->width = W;
-    img->height = H;
-    img->stride = W;
-    img->data = pix;
-}
-
-/* id drawn still at (cx, cy), radius r px, focus sigma, its x axis
- * shrunk to sx of its radius (a landmark seen slanted: minor over major
- * sx); paper 220, ink 30. */
-static void draw_slanted(rl_image *img, int id, double cx, double cy, double r, double sigma, double sx)
-{
-    rl_family fam = {5};
-    int x, y;
-    for (y = 0; y < H; y++)
-        for (x = 0; x < W; x++) {
-            double dx = (x - cx) / sx, dy = y - cy;
-            double dark = rl_templates_value_at(&fam, id, sqrt(dx * dx + dy * dy) / r, sigma);
-            pix[y * W + x] = (uint8_t)lround(220 - 190 * dark);
         }
     img->width = W;
     img->height = H;
@@ -97,7 +79,7 @@ static void test_slanted_still_not_moved(void **state)
     (void)state;
     for (i = 0; i < sizeof radii / sizeof radii[0]; i++) {
         double r = radii[i];
-        draw_slanted(&img, 23, 60.3, 59.6, r, 0.03, 0.85);
+        img = draw_slanted(pix, W, H, 23, 60.3, 59.6, r, 0.03, 0.85);
         assert_true(rl_motion_measure(&img, 60.3, 59.6, r, &m));
         /* what the moved read would take: it must be refused */
         assert_false(m.ratio < RL_TWINS_MOVED && edge_aspect(&img, 60.3, 59.6, r) >= RL_TWINS_MOVED_ASPECT);

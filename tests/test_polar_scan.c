@@ -14,7 +14,8 @@
  * - every pixel of the disk in its own cell once (the sums added four
  *   pixels a step), against a plain loop over the pixels;
  * - a profile's rescale (rescale_bins: the three sums in one vector's
- *   lanes) against its definition, summed plainly: each mid bin m lands at
+ *   lanes; its scalar loop under RL_NO_VECTOR_EXT, the sanitizer build's)
+ *   against its definition, summed plainly: each mid bin m lands at
  *   t = (m - SHIFT_GUARD + 0.5) / scale - 0.5, 1 - w of it in bin
  *   floor(t) and w in the next, added in the order of m, and the totals
  *   of n and q added in the order of the bins, bit for bit. */

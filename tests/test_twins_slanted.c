@@ -16,6 +16,7 @@
  * it). */
 #include "rl_test.h"
 #include <math.h>
+#include "draw_slanted.h"
 #include "rl_heap_recog.h"
 #include "rl_templates.h"
 /* the statics called */
@@ -25,21 +26,6 @@
 #define H 120
 
 static uint8_t pix[W * H];
-
-/* id drawn still at (cx, cy), radius r px, focus sigma (share of r), its
- * x axis shrunk to sx of its radius; paper 220, ink 30 (linear light). */
-static rl_image draw_slanted(int id, double cx, double cy, double r, double sigma, double sx)
-{
-    rl_family fam = {5};
-    int x, y;
-    for (y = 0; y < H; y++)
-        for (x = 0; x < W; x++) {
-            double dx = (x - cx) / sx, dy = y - cy;
-            double dark = rl_templates_value_at(&fam, id, sqrt(dx * dx + dy * dy) / r, sigma);
-            pix[y * W + x] = (uint8_t)lround(220 - 190 * dark);
-        }
-    return rl_image_view(W, H, W, pix);
-}
 
 static void slanted_still_is_not_read_across_a_motion(void **state)
 {
@@ -57,7 +43,7 @@ static void slanted_still_is_not_read_across_a_motion(void **state)
     rl_heap_recog_init(&hr, &cfg);
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         double r = cases[i].r, cx = 60.3, cy = 59.6, aspect, fit, least = 0;
-        rl_image img = draw_slanted(23, cx, cy, r, 0.03, cases[i].sx);
+        rl_image img = draw_slanted(pix, W, H, 23, cx, cy, r, 0.03, cases[i].sx);
         const rl_recog *rec;
         const rl_tone *other;
         rl_detection d;

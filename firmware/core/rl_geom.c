@@ -31,6 +31,14 @@ void rl_geom_square_in(int W, int H, double cx, double cy, double half, int bord
     if (b->y1 > H - 1 - border) b->y1 = H - 1 - border;
 }
 
+void rl_geom_circle_box(int W, int H, double cx, double cy, double r, rl_box *box)
+{
+    box->x0 = cx - r > 0 ? (int)floor(cx - r) : 0;
+    box->y0 = cy - r > 0 ? (int)floor(cy - r) : 0;
+    box->x1 = cx + r < W - 1 ? (int)ceil(cx + r) : W - 1;
+    box->y1 = cy + r < H - 1 ? (int)ceil(cy + r) : H - 1;
+}
+
 double rl_geom_disk_visible(double r, double d)
 {
     double seg;

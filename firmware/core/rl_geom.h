@@ -24,6 +24,10 @@ double rl_geom_box_gap(const rl_box *a, const rl_box *b);
  * x0 or y1 < y0) where there are none. */
 void rl_geom_square_in(int W, int H, double cx, double cy, double half, int border, rl_box *b);
 
+/* Into box the pixels a circle (cx, cy, r) touches, its box rounded
+ * outwards, within the W x H frame. */
+void rl_geom_circle_box(int W, int H, double cx, double cy, double r, rl_box *box);
+
 /* Fraction of a disk of radius r left visible when a straight edge passes
  * at signed distance d from its centre (d > 0: centre on the visible side). */
 double rl_geom_disk_visible(double r, double d);

@@ -402,6 +402,7 @@ static int circle_reads(rl_recog *rec, const rl_image *img, const rl_result *res
     out->u = rd.cx;
     out->v = rd.cy;
     out->radius = rd.r;
+    rl_geom_circle_box(W, H, rd.cx, rd.cy, rd.r, &out->box); /* the reads moved the located circle */
     out->complete = rl_geom_disk_complete(W, H, rd.cx, rd.cy, rd.r);
     out->visible = rl_geom_visible_in(W, H, rd.cx, rd.cy, rd.r);
     if (!taken || rl_inner_enclosed(img, light, rd.cx, rd.cy, rd.r, reach))

@@ -109,15 +109,6 @@ static int local_outer_ring(const rl_label *lb, const rl_box *w, const rl_detect
 
 #define LOCATE_SIZE_TOLERANCE 0.45
 
-/* The box of the circle (cx, cy, r) within the W x H frame. */
-static void circle_box(int W, int H, double cx, double cy, double r, rl_box *box)
-{
-    box->x0 = cx - r > 0 ? (int)floor(cx - r) : 0;
-    box->y0 = cy - r > 0 ? (int)floor(cy - r) : 0;
-    box->x1 = cx + r < W - 1 ? (int)ceil(cx + r) : W - 1;
-    box->y1 = cy + r < H - 1 ? (int)ceil(cy + r) : H - 1;
-}
-
 /* Thresholds tried, each midway between the ink and the one before: the
  * first may join the outer ring to its surroundings (a ceiling darker
  * than the paper past a narrow margin, paper dimmed away from a lamp)
@@ -220,7 +211,7 @@ int rl_locate_outer_ring(rl_recog *rec, const rl_image *img, const rl_result *re
     }
     /* the box: the fitted circle's within the frame, whatever region was
      * taken (a code ring, an arc, a part of a ring motion broke) */
-    circle_box(rec->width, rec->height, *cx, *cy, *r, box);
+    rl_geom_circle_box(rec->width, rec->height, *cx, *cy, *r, box);
     /* the frame's landmarks are of one size but for the lens: a wide angle
      * shrinks them towards the corners, where a circle fitted to an
      * ellipse's arc comes out shorter still */

@@ -229,6 +229,34 @@ static void keep_id(rl_match *m, const profile_terms *z, int id, const float *st
         keep_column(m, z, id, b, st[b], stt[b], sxt[b]);
 }
 
+/* Every id of ids (each in place in the table) at every blur, a walk
+ * over the bins for RL_MATCH_WIDE of them (sum_in_place): kept into m; or,
+ * where best is given, each into its own copy of m (m unchanged), its
+ * score, where it matched, into best[its index]. */
+static void keep_in_place(const rl_templates *tt, const profile_terms *z, const int *ids, int n, rl_match *m,
+                          double *best)
+{
+    float st[RL_MATCH_WIDE * RL_MATCH_BLOCK], stt[RL_MATCH_WIDE * RL_MATCH_BLOCK],
+        sxt[RL_MATCH_WIDE * RL_MATCH_BLOCK];
+    int at[RL_MATCH_WIDE], from = 0, c, j;
+    while (from < n) {
+        c = sum_in_place(tt, z, ids, n, &from, at, st, stt, sxt);
+        for (j = 0; j < c; j++) {
+            const float *bt = st + j * RL_MATCH_BLOCK, *btt = stt + j * RL_MATCH_BLOCK,
+                        *bxt = sxt + j * RL_MATCH_BLOCK;
+            rl_match each;
+            if (best == NULL) {
+                keep_id(m, z, ids[at[j]], bt, btt, bxt);
+                continue;
+            }
+            each = *m;
+            keep_id(&each, z, ids[at[j]], bt, btt, bxt);
+            if (each.id >= 0)
+                best[at[j]] = each.score;
+        }
+    }
+}
+
 /* The columns of ids (at one blur, or every blur when blur < 0) scored
  * against the profile's terms z into m. */
 static void score_ids(const rl_templates *tt, const profile_terms *z, const int *ids, int n, int blur,
@@ -239,15 +267,7 @@ static void score_ids(const rl_templates *tt, const profile_terms *z, const int 
     if (blur < 0 && ids_in_place(tt, ids, n)) {
         /* each id at every blur: its columns are side by side in the
          * table, scored there (the columns, and their order, as a list's) */
-        float st[RL_MATCH_WIDE * RL_MATCH_BLOCK], stt[RL_MATCH_WIDE * RL_MATCH_BLOCK],
-            sxt[RL_MATCH_WIDE * RL_MATCH_BLOCK];
-        int at[RL_MATCH_WIDE], from = 0, c;
-        while (from < n) {
-            c = sum_in_place(tt, z, ids, n, &from, at, st, stt, sxt);
-            for (j = 0; j < c; j++)
-                keep_id(m, z, ids[at[j]], st + j * RL_MATCH_BLOCK, stt + j * RL_MATCH_BLOCK,
-                        sxt + j * RL_MATCH_BLOCK);
-        }
+        keep_in_place(tt, z, ids, n, m, NULL);
         return;
     }
     ls.n = 0;
@@ -296,20 +316,8 @@ void rl_match_ids_each(const rl_templates *tt, const rl_profile *p, const int *i
     for (j = 0; j < n; j++)
         best[j] = -2;
     if (ok && ids_in_place(tt, ids, n)) {
-        /* three ids a walk over the bins (sum_in_place), each kept apart */
-        float st[RL_MATCH_WIDE * RL_MATCH_BLOCK], stt[RL_MATCH_WIDE * RL_MATCH_BLOCK],
-            sxt[RL_MATCH_WIDE * RL_MATCH_BLOCK];
-        int at[RL_MATCH_WIDE], from = 0, c;
-        while (from < n) {
-            c = sum_in_place(tt, &z, ids, n, &from, at, st, stt, sxt);
-            for (j = 0; j < c; j++) {
-                rl_match m = m0;
-                keep_id(&m, &z, ids[at[j]], st + j * RL_MATCH_BLOCK, stt + j * RL_MATCH_BLOCK,
-                        sxt + j * RL_MATCH_BLOCK);
-                if (m.id >= 0)
-                    best[at[j]] = m.score;
-            }
-        }
+        /* three ids a walk over the bins, each kept apart */
+        keep_in_place(tt, &z, ids, n, &m0, best);
         return;
     }
     for (j = 0; j < n && ok; j++) {

@@ -389,8 +389,14 @@ static void shift_sectors(const rl_polar *pol, double dx, double dy, unsigned oc
 }
 
 /* The rescale's three sums side by side (GCC's vectors: lane by lane the
- * same float operations as three scalars, no fused multiply-add in C99). */
-#if defined(__GNUC__)
+ * same float operations as three scalars, so the same bits). Whether
+ * `b += w * x` is one fused multiply-add is the compiler's choice, taken
+ * alike for vectors and scalars: GCC in ISO C mode (the build's -std=c99)
+ * never fuses; clang fuses within an expression by default where the
+ * target has one (aarch64; x86 with FMA), in both forms. RL_NO_VECTOR_EXT
+ * (the sanitizer build) runs the scalar loop, under test_polar_scan's
+ * oracle. */
+#if defined(__GNUC__) && !defined(RL_NO_VECTOR_EXT)
 #define RESCALE_VECTORS 1
 typedef float rescale_v4 __attribute__((vector_size(16)));
 #endif
