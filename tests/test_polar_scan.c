@@ -1,4 +1,4 @@
-/* Three parts of the polar gather (rl_polar.c) held to their definitions:
+/* Three parts of the polar gather (rl_polar.c, rl_polar_profile.c) held to their definitions:
  * - the candidate's brightest level under light (brightest_in_row, which
  *   sets the cells' scale: 16 bytes at a time in vectors, their even ones)
  *   against a plain loop over every second pixel, at every start parity,
@@ -21,6 +21,7 @@
  *   of n and q added in the order of the bins, bit for bit. */
 #include "rl_test.h"
 #include "rl_polar.c"
+#include "rl_polar_profile.c"
 
 static unsigned seed = 2718;
 static unsigned rnd(void)

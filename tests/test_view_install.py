@@ -493,12 +493,22 @@ def check_recording(ck, port, rec, tmp):
         page(drv, port)
         ck.check(wait_updates(drv), "recording: the page never showed a frame")
         ck.check(click_record(drv, "stop recording"), "no 'stop recording' button while recording")
-        time.sleep(1.5)  # the writer's queue drained
-        js, n0 = status(port), drive_frames(rec)
+        # the writer drains its queue: every frame it kept (queued before the
+        # stop) reaches the disk. How long that takes is the machine's load
+        # (1.5 s was not enough under the sanitizers with other jobs
+        # running): wait for it, up to 30 s, rather than for a fixed time
+        end = time.time() + 30
+        while True:
+            js, n0 = status(port), drive_frames(rec)
+            if (not js["recording"]["on"] and n0 >= js["recording"]["kept"]) or time.time() > end:
+                break
+            time.sleep(0.3)
         time.sleep(1.5)
-        n1 = drive_frames(rec)
-        ck.check(not js["recording"]["on"] and "stopped from the web view" in js["recording"]["note"] and n1 == n0,
-                 "stopped from the page: %s, frames %d then %d" % (js["recording"], n0, n1))
+        js1, n1 = status(port), drive_frames(rec)
+        ck.check(not js["recording"]["on"] and "stopped from the web view" in js["recording"]["note"] and n1 == n0
+                 and js1["recording"]["kept"] == js["recording"]["kept"],
+                 "stopped from the page: %s, frames %d then %d, kept %d then %d"
+                 % (js["recording"], n0, n1, js["recording"]["kept"], js1["recording"]["kept"]))
         ck.check(click_record(drv, "start recording"), "no 'start recording' button once stopped")
         time.sleep(1.5)
         n2 = drive_frames(rec)
