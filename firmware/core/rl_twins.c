@@ -363,6 +363,41 @@ static int small_fits(const rl_recog *rec, const rl_image *img, int light, const
     return keeps(tol, mg, m->other, m->own);
 }
 
+/* Whether d, a small landmark (under the far radius), keeps its id read
+ * at the frame's size too (size: the frame's other landmarks' radius, 0
+ * none known), where its read's circle is larger than the frame's by
+ * RL_TWINS_CUT_SIZE or more, or, for a cut local read, smaller by as
+ * much: there its lead over its twins (rivals()) through the other
+ * formation plus its lead through the frame's curve, each at 0.97 .. 1.03
+ * of size, must be positive (rule 3's sum, without the margin). The
+ * landmarks of one ceiling are one size, and the frame's others measure
+ * it with the same blur from pixels this read did not use; a zone twin
+ * differs next to the outer ring, where the radius puts the zones. A
+ * circle larger than the frame's reached past the landmark's edge (a
+ * lamp's halo; the climb cut_circle_on_edge judges), and from the arc a
+ * cut ring leaves the search can also settle inside it; a whole read's
+ * circle short of the frame's is common and says little (the local
+ * pass's circles under blur are 9-12% short of the global pass's box:
+ * right reads there trail their twins at the frame's size by 0.04-0.1).
+ * Thirteenth session, fresh seeds: a whole 18 next to a lamp at the
+ * frame's top edge read as 26 from 1.097 of the frame's size (at it the
+ * 26 trailed by 0.017 through the grey levels and 0.008 through the
+ * curve), and a cut 29 read as 25 at gamma 1 by the local pass from 0.943
+ * of it (the 25 0.035 behind there through the 2.2 curve, 0.004 ahead
+ * through its own). */
+static int size_fits(const rl_recog *rec, const rl_image *img, const rl_tone *other, const rl_detection *d,
+                     const int *rv, int n, double size)
+{
+    rl_detection s = *d;
+    double fit, lead;
+    if (!(size > 0) || (d->radius < (1.0 + RL_TWINS_CUT_SIZE) * size &&
+                        (d->complete || d->pass != RL_PASS_LOCAL || d->radius > (1.0 - RL_TWINS_CUT_SIZE) * size)))
+        return 1;
+    s.radius = size;
+    lead = twin_lead(rec, img, other, &s, rv, n, 0, -1, &fit);
+    return lead + twin_lead(rec, img, rec->tone, &s, rv, n, 0, -1, &fit) > 0;
+}
+
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
 static void keep(rl_result *res, int *n, const rl_detection *d, unsigned char *kept, int i)
 {
@@ -440,7 +475,8 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * formation at the radius they fit (twin_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (curved ? d.radius < far_radius : d.complete);
         lead = twin_lead(rec, img, other, &d, rv, n, far, -1, &fit);
-        if (small && !small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &moved)) {
+        if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &moved) ||
+                      !size_fits(rec, img, other, &d, rv, n, others_median(radii, all, i)))) {
             rl_result_add_unidentified(res, &d);
             continue;
         }
