@@ -31,8 +31,8 @@
  * axis (the two leads over RL_TWINS_LOCAL_MARGIN), a local read the rule
  * along its sharpest axis (small_fits; docs/design.md, rule 6). A small
  * landmark read from a circle RL_TWINS_CUT_SIZE or more larger than the
- * frame's other landmarks' (a cut local read: or smaller) must lead its
- * twins read at their radius too (size_fits; rule 7). A landmark too small for its twins to be
+ * frame's other landmarks' must lead its twins read at their radius
+ * too (size_fits; rule 7). A landmark too small for its twins to be
  * told apart at all (code zone 1 under RL_TWINS_MIN_ZONE_PX) gets no id,
  * nor a cut local read whose circle the search took off its outer edge
  * (RL_TWINS_CUT_BULGE).
@@ -79,8 +79,8 @@
  * from the frame's landmarks' is not decided by the rank read (rl_twins.c,
  * rank_fits); a cut local read this much over them has its circle judged
  * against its outer edge (cut_circle_on_edge, RL_TWINS_CUT_BULGE); a
- * small read this much over them (a cut local one: or under) must lead
- * its twins read at their radius too (size_fits). */
+ * small read this much over them must lead its twins read at their
+ * radius too (size_fits). */
 #define RL_TWINS_CUT_SIZE 0.05
 /* A landmark the formations disagree on keeps its id when its lead
  * through the frame's curve passes the rule above with no twin through
