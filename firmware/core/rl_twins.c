@@ -363,6 +363,38 @@ static int small_fits(const rl_recog *rec, const rl_image *img, int light, const
     return keeps(tol, mg, m->other, m->own);
 }
 
+/* Whether d, a small landmark (under the far radius), keeps its id read
+ * at the frame's size too (size: the frame's other landmarks' radius, 0
+ * none known), where its read's circle is larger than the frame's by
+ * RL_TWINS_CUT_SIZE or more: there its lead over its rivals (rivals())
+ * through the other formation plus its lead through the frame's curve,
+ * each at 0.97 .. 1.03 of size, must be positive (rule 3's sum, without
+ * the margin). The landmarks of one ceiling are one size, and the frame's
+ * others measure it through the same blur from pixels this read did not
+ * use; a zone twin differs next to the outer ring, where the radius puts
+ * the zones, and a circle larger than the frame's reached past the
+ * landmark's edge (a lamp's halo; the climb cut_circle_on_edge judges).
+ * A circle short of the frame's says little: 923 right whole reads on
+ * the development sets' traces were 5% or more short of their frame's,
+ * some trailing their twins there by up to 0.12, and a wide-angle lens
+ * makes the border's landmarks smaller (judging cut local reads 5% short
+ * cut fixtures_lens's cut ones 35 -> 20 of 44, under its bar).
+ * Thirteenth session, fresh seeds: a whole 18 next to a lamp at the
+ * frame's top edge read as 26 from 1.097 of the frame's size (at it the
+ * 26 trailed by 0.017 through the grey levels and 0.008 through the
+ * curve). */
+static int size_fits(const rl_recog *rec, const rl_image *img, const rl_tone *other, const rl_detection *d,
+                     const int *rv, int n, double size)
+{
+    rl_detection s = *d;
+    double fit, lead;
+    if (!(size > 0) || d->radius < (1.0 + RL_TWINS_CUT_SIZE) * size)
+        return 1;
+    s.radius = size;
+    lead = twin_lead(rec, img, other, &s, rv, n, 0, -1, &fit);
+    return lead + twin_lead(rec, img, rec->tone, &s, rv, n, 0, -1, &fit) > 0;
+}
+
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
 static void keep(rl_result *res, int *n, const rl_detection *d, unsigned char *kept, int i)
 {
@@ -440,7 +472,8 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * formation at the radius they fit (twin_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (curved ? d.radius < far_radius : d.complete);
         lead = twin_lead(rec, img, other, &d, rv, n, far, -1, &fit);
-        if (small && !small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &moved)) {
+        if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &moved) ||
+                      !size_fits(rec, img, other, &d, rv, n, others_median(radii, all, i)))) {
             rl_result_add_unidentified(res, &d);
             continue;
         }

@@ -29,7 +29,10 @@
  * before any rule keeps it: a global read its twins at 9% either side
  * through the frame's curve, about the whole ring and along its sharpest
  * axis (the two leads over RL_TWINS_LOCAL_MARGIN), a local read the rule
- * along its sharpest axis (small_fits; docs/design.md, rule 6). A landmark too small for its twins to be
+ * along its sharpest axis (small_fits; docs/design.md, rule 6). A small
+ * landmark read from a circle RL_TWINS_CUT_SIZE or more larger than the
+ * frame's other landmarks' must lead its twins read at their radius
+ * too (size_fits; rule 7). A landmark too small for its twins to be
  * told apart at all (code zone 1 under RL_TWINS_MIN_ZONE_PX) gets no id,
  * nor a cut local read whose circle the search took off its outer edge
  * (RL_TWINS_CUT_BULGE).
@@ -75,7 +78,9 @@
 /* A cut landmark read through a curve whose radius is this far (a share)
  * from the frame's landmarks' is not decided by the rank read (rl_twins.c,
  * rank_fits); a cut local read this much over them has its circle judged
- * against its outer edge (cut_circle_on_edge, RL_TWINS_CUT_BULGE). */
+ * against its outer edge (cut_circle_on_edge, RL_TWINS_CUT_BULGE); a
+ * small read this much over them must lead its twins read at their
+ * radius too (size_fits). */
 #define RL_TWINS_CUT_SIZE 0.05
 /* A landmark the formations disagree on keeps its id when its lead
  * through the frame's curve passes the rule above with no twin through
