@@ -47,7 +47,7 @@
  *       linear, the search climbed from the arc of seed 42's border 018
  *       cut 19 to a circle 1.2 times its radius, a third of a radius out
  *       of the frame, where both formations read 7 (rl_twins.c,
- *       cut_circle_on_edge). */
+ *       rl_twins_cut_on_edge). */
 #include "rl_test.h"
 #include <math.h>
 #include "fixture_eval.h"

@@ -212,28 +212,6 @@ static double others_median(const double *r, int n, int i)
     return rl_median(v, m);
 }
 
-/* Whether the local read d of a landmark the border cuts lies where its
- * outer edge is, by the landmark contract (RL_TWINS_CUT_BULGE), the edge
- * the circle fitted to its points along rays from d's circle (one whose
- * edge gives no circle passes). Judged only where d's radius is
- * RL_TWINS_CUT_SIZE or more over size, the frame's other landmarks'
- * (0: none known, always judged): where the search climbed past the
- * landmark, and only there can it matter (the cut read it refuses was 1.2
- * times the frame's size; right cut reads sit at the border, which the
- * lens makes smaller, and the local pass's taken reads of cut landmarks on
- * seeds 41-44 were at most 1.05 of their true radius). An edge fit is
- * some 45,000 instructions: judged on every cut local read it cost 0.6% of
- * the recognizer's instructions on moving frames, judged here 0.05%. */
-static int cut_circle_on_edge(const rl_image *img, const rl_tone *tone, int light, const rl_detection *d,
-                              double size)
-{
-    double u = d->u, v = d->v, r = d->radius;
-    if ((size > 0 && d->radius < (1.0 + RL_TWINS_CUT_SIZE) * size) ||
-        !rl_edge_fit_rays(img, tone, light, &u, &v, &r))
-        return 1;
-    return hypot(u - d->u, v - d->v) + d->radius - r <= RL_TWINS_CUT_BULGE * d->radius;
-}
-
 /* A landmark's motion and its leads over its twins along the motion's
  * sharpest axis through both formations: small_fits and moved_keeps ask
  * for the same of one landmark, each worked out once, when first wanted. */
@@ -373,7 +351,7 @@ static int small_fits(const rl_recog *rec, const rl_image *img, int light, const
  * others measure it through the same blur from pixels this read did not
  * use; a zone twin differs next to the outer ring, where the radius puts
  * the zones, and a circle larger than the frame's reached past the
- * landmark's edge (a lamp's halo; the climb cut_circle_on_edge judges).
+ * landmark's edge (a lamp's halo; the climb rl_twins_cut_on_edge judges).
  * A circle short of the frame's says little: 923 right whole reads on
  * the development sets' traces were 5% or more short of their frame's,
  * some trailing their twins there by up to 0.12, and a wide-angle lens
@@ -439,7 +417,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * local read off its outer edge (RL_TWINS_CUT_BULGE) */
         if (d.radius < min_radius ||
             (d.pass == RL_PASS_LOCAL && !d.complete &&
-             !cut_circle_on_edge(img, rec->tone, res->levels.light, &d, others_median(radii, all, i)))) {
+             !rl_twins_cut_on_edge(img, rec->tone, res->levels.light, &d, others_median(radii, all, i)))) {
             rl_result_add_unidentified(res, &d);
             continue;
         }

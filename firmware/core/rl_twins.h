@@ -78,7 +78,7 @@
 /* A cut landmark read through a curve whose radius is this far (a share)
  * from the frame's landmarks' is not decided by the rank read (rl_twins.c,
  * rank_fits); a cut local read this much over them has its circle judged
- * against its outer edge (cut_circle_on_edge, RL_TWINS_CUT_BULGE); a
+ * against its outer edge (rl_twins_cut_on_edge, RL_TWINS_CUT_BULGE); a
  * small read this much over them must lead its twins read at their
  * radius too (size_fits). */
 #define RL_TWINS_CUT_SIZE 0.05
@@ -120,7 +120,7 @@
  * right cut reads from every circle an edge fit could leave measured up to
  * 0.35 (test_search_twins, docs/results.md). Judged only for a read whose
  * radius is RL_TWINS_CUT_SIZE or more over the frame's other landmarks'
- * (rl_twins.c, cut_circle_on_edge). */
+ * (rl_twins.c, rl_twins_cut_on_edge). */
 #define RL_TWINS_CUT_BULGE 0.4
 
 /* Code zone 1, the narrowest (next to the outer ring), narrower than this
@@ -180,7 +180,7 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
  * unjudged (a window read of a landmark whose id this check kept
  * in the frame before: rl_track), unless too small for an id or a cut
  * local read whose circle lies off its outer edge (RL_TWINS_CUT_BULGE,
- * rl_twins.c's cut_circle_on_edge); known NULL:
+ * rl_twins.c's rl_twins_cut_on_edge); known NULL:
  * none. kept (NULL: not wanted), one entry per landmark of res as it came
  * in: 1 when it keeps its id. */
 void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res,
