@@ -136,6 +136,14 @@ static void a_timed_out_grab_skips_no_frame(void **state)
     assert_int_equal(e, RL_ETIMEOUT);
     assert_int_equal(rl_cam_grab(&c, 3000, &f), RL_OK);
     assert_int_equal(f.img.data[0], 20); /* f1, not f2 */
+    if (rl_clock_now_us() - t0 >= 4000000) {
+        /* the machine stalled past the re-timing's bound (3 periods at 1
+         * frame a second) before f1 was grabbed: it is stamped at its
+         * grab, rightly; its due time is not what is left to test */
+        rl_cam_release(&c, &f);
+        rl_cam_close(&c);
+        skip();
+    }
     assert_int_equal(f.t_us - t0, 1000000);
     rl_cam_release(&c, &f);
     rl_cam_close(&c);

@@ -10,6 +10,7 @@
 #include "rl_profile.h"
 #include "rl_refine.h"
 #include "rl_result.h"
+#include "rl_twins_cut.h"
 #include "rl_twins_rank.h"
 
 /* Radius scales a landmark and its twins are scored at (the radius was
@@ -17,10 +18,8 @@
  * other): the id at 0.97, 1 and 1.03 of it; its rivals there too, or, for
  * a small local read through a curve (RL_TWINS_FAR_ZONE_PX), at 0.91 ..
  * 1.09 (twin_lead's `far`), from one gather at the largest (with `far`
- * that gather is 1.09 radii wide, so the id's own three are read from
- * coarser bins than without, so its lead can move either way: no wrong id
- * came of it on the sets here; the id from its own 1.03 gather would make
- * the check only stricter, not done yet). */
+ * the id's own three come from coarser bins, so its lead can move either
+ * way: no wrong id came of it on the sets here). */
 #define SCALE_STEP 0.03
 #define SCALES_NEAR 1 /* each side of the radius read: 0.97 .. 1.03 */
 #define SCALES_FAR 3  /* 0.91 .. 1.09 */
@@ -351,16 +350,11 @@ static int small_fits(const rl_recog *rec, const rl_image *img, int light, const
  * others measure it through the same blur from pixels this read did not
  * use; a zone twin differs next to the outer ring, where the radius puts
  * the zones, and a circle larger than the frame's reached past the
- * landmark's edge (a lamp's halo; the climb rl_twins_cut_on_edge judges).
- * A circle short of the frame's says little: 923 right whole reads on
- * the development sets' traces were 5% or more short of their frame's,
- * some trailing their twins there by up to 0.12, and a wide-angle lens
- * makes the border's landmarks smaller (judging cut local reads 5% short
- * cut fixtures_lens's cut ones 35 -> 20 of 44, under its bar).
- * Thirteenth session, fresh seeds: a whole 18 next to a lamp at the
- * frame's top edge read as 26 from 1.097 of the frame's size (at it the
- * 26 trailed by 0.017 through the grey levels and 0.008 through the
- * curve). */
+ * landmark's edge (a lamp's halo: a whole 18 read as 26 from 1.097 of
+ * the frame's size). A circle short of the frame's says little (right
+ * reads were, and a lens makes the border's landmarks smaller); one
+ * lower than the rest (a map's z) is judged at the others' size and may
+ * be refused (docs/design.md rule 7, docs/results.md). */
 static int size_fits(const rl_recog *rec, const rl_image *img, const rl_tone *other, const rl_detection *d,
                      const int *rv, int n, double size)
 {
@@ -371,6 +365,19 @@ static int size_fits(const rl_recog *rec, const rl_image *img, const rl_tone *ot
     s.radius = size;
     lead = twin_lead(rec, img, other, &s, rv, n, 0, -1, &fit);
     return lead + twin_lead(rec, img, rec->tone, &s, rv, n, 0, -1, &fit) > 0;
+}
+
+/* The frame's size for size_fits: the median of the radii r but the
+ * i-th, of whole reads (whole[j]) of min_radius or more, where two or more
+ * are left (one read alone is no frame's size); 0 otherwise (not known). */
+static double others_size(const double *r, const unsigned char *whole, int n, int i, double min_radius)
+{
+    double v[RL_MAX_LANDMARKS];
+    int j, m = 0;
+    for (j = 0; j < n; j++)
+        if (j != i && whole[j] && r[j] >= min_radius)
+            v[m++] = r[j];
+    return m >= 2 ? rl_median(v, m) : 0.0;
 }
 
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
@@ -403,8 +410,11 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
     /* read through a curve, not as linear light */
     int curved = rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0;
     int i, kept_n = 0, rv[RL_MAX_IDS], n, all = res->n_landmarks;
-    for (i = 0; i < all; i++)
+    unsigned char whole[RL_MAX_LANDMARKS];
+    for (i = 0; i < all; i++) {
         radii[i] = res->landmarks[i].radius;
+        whole[i] = (unsigned char)(res->landmarks[i].complete != 0);
+    }
     for (i = 0; i < all; i++) {
         rl_detection d = res->landmarks[i];
         double lead, own = 0, fit, tol = tolerance(&d, curved), mg;
@@ -451,7 +461,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         far = d.pass == RL_PASS_LOCAL && (curved ? d.radius < far_radius : d.complete);
         lead = twin_lead(rec, img, other, &d, rv, n, far, -1, &fit);
         if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &moved) ||
-                      !size_fits(rec, img, other, &d, rv, n, others_median(radii, all, i)))) {
+                      !size_fits(rec, img, other, &d, rv, n, others_size(radii, whole, all, i, min_radius)))) {
             rl_result_add_unidentified(res, &d);
             continue;
         }

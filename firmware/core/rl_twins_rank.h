@@ -1,8 +1,7 @@
 /* rl_twins_rank: the rank read of rl_twins_check, blind to the tone curve
  * (rl_rank): whether a landmark's id leads the ids a zone or two from it
  * through any monotone curve, about its centre and, for a whole local
- * read, about its outer edge's centre too, and whether a cut read's circle
- * lies on its outer edge (rl_twins_rank.c). Internal:
+ * read, about its outer edge's centre too (rl_twins_rank.c). Internal:
  * rl_twins_check's.
  *
  *   int kept = rl_twins_rank_keeps(rec, &img, rec->tone, res.levels.light, &res.landmarks[0]);
@@ -24,12 +23,5 @@
  * through tone (light: the frame's light level). */
 int rl_twins_rank_keeps(const rl_recog *rec, const rl_image *img, const rl_tone *tone, int light,
                         const rl_detection *d);
-
-/* Whether the local read d of a landmark the border cuts lies on its
- * outer edge (RL_TWINS_CUT_BULGE), judged only where its radius is
- * RL_TWINS_CUT_SIZE or more over size, the frame's other landmarks' (0:
- * none known); rl_twins_rank.c says why. */
-int rl_twins_cut_on_edge(const rl_image *img, const rl_tone *tone, int light, const rl_detection *d,
-                         double size);
 
 #endif
