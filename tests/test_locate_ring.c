@@ -4,9 +4,8 @@
  *   test_locate_ring DIR SET...   the renderer's SET_NNN frames in DIR:
  *       every whole landmark away from the lights (over 1.5 radii from
  *       one: a lamp may hide its edge), from a candidate at its true centre
- *       at the frame's landmark size (as the local pass tries it: here the
- *       median of the renderer's radii of the landmarks in view, so no
- *       read of the frame's moves the truth), is located within 0.25
+ *       (the renderer's truth) at the frame's landmark size (as the local
+ *       pass tries it), is located within 0.25
  *       of its radius of its true centre and within 20% of its true
  *       radius (the lens shrinks landmarks towards the corners: 13% at
  *       the moving set's borders), its box about the outer ring's. On the
@@ -23,8 +22,8 @@
 #include "fixture_eval.h"
 #include "rl_heap_recog.h"
 #include "rl_locate.h"
-#include "rl_median.h"
 #include "rl_png.h"
+#include "rl_result.h"
 
 static fixture_sets fs;
 
@@ -37,19 +36,14 @@ static void frame_rings(rl_heap_recog *hr, const truth *t, locate_counts *c)
     static rl_result res;
     char png[1200], err[512];
     rl_image img;
-    double R, radii[EVAL_MAX_TRUTH];
-    int j, n;
+    double R;
+    int j;
     snprintf(png, sizeof png, "%s/%s", fs.dir, t->image);
     if (rl_png_read_gray(png, &img, err, sizeof err) != RL_OK)
         fail_msg("%s", err);
-    /* the frame's lights, levels and labelling, as the local pass has them */
     assert_int_equal(rl_heap_recog_run(hr, &img, &res), RL_OK);
-    /* the size the local pass expects, the frame's landmarks', from the
-     * renderer's truth (the pass has the median of their radii read) */
-    for (j = 0, n = 0; j < t->n; j++)
-        if (t->lm[j].visible > 0)
-            radii[n++] = t->lm[j].radius;
-    R = rl_median(radii, n);
+    /* the size the local pass expects: the frame's landmarks' */
+    R = rl_result_median_radius(&res);
     for (j = 0; j < t->n; j++) {
         const truth_landmark *l = &t->lm[j];
         rl_detection u;
@@ -60,7 +54,7 @@ static void frame_rings(rl_heap_recog *hr, const truth *t, locate_counts *c)
         memset(&u, 0, sizeof u);
         u.u = l->u;
         u.v = l->v;
-        u.radius = R;
+        u.radius = R > 0 ? R : l->radius;
         u.complete = 1;
         u.visible = 1.0;
         c->tried++;
