@@ -77,24 +77,21 @@ static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone 
         rl_profile_gather_axis(img, tone, d->u, d->v, d->radius * top, axis, &wide);
     for (k = -reach; k <= reach; k++) {
         rl_profile p;
-        rl_match m;
+        rl_match m, mo;
+        int near = k >= -SCALES_NEAR && k <= SCALES_NEAR;
         rl_profile_rescale(&wide, (1.0 + k * SCALE_STEP) / top, &p);
         /* the rivals at every blur: through the other formation a rival
-         * may fit another than the id does; the id too near its radius */
-        if (k >= -SCALES_NEAR && k <= SCALES_NEAR) {
-            rl_match mo;
-            if (every)
-                rl_match_id_and_rest(&rec->templates, &p, d->id, &mo, &m);
-            else
-                rl_match_id_and_ids(&rec->templates, &p, d->id, rv, n, -1, &mo, &m);
-            if (mo.id >= 0 && mo.score > own)
-                own = mo.score;
-        } else if (every) {
-            rl_match mo;
+         * may fit another than the id does; the id too near its radius
+         * (every other id as rivals: the id comes with them in one walk) */
+        mo.id = -1;
+        if (every)
             rl_match_id_and_rest(&rec->templates, &p, d->id, &mo, &m);
-        } else {
+        else if (near)
+            rl_match_id_and_ids(&rec->templates, &p, d->id, rv, n, -1, &mo, &m);
+        else
             rl_match_ids(&rec->templates, &p, rv, n, -1, &m);
-        }
+        if (near && mo.id >= 0 && mo.score > own)
+            own = mo.score;
         if (m.id >= 0 && m.score > twin)
             twin = m.score;
     }
