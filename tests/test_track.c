@@ -458,6 +458,73 @@ static void known_landmarks(void **state)
     assert_int_equal(trk.n_known, 0);
 }
 
+/* A full frame's reads name the next window frame's map entries
+ * (rl_track.named: judged as known by the verification, against their
+ * ids' rivals; the zone twins' check still judges them, rl_track.known
+ * stays empty). The grid's landmarks by hand: 1.87 m above the camera,
+ * fx 457.01 px, so a landmark (x, y) m from the robot (heading +x) at u =
+ * 319.5 + 244.39 y, v = 239.5 - 244.39 x, radius 24.44 px; every read
+ * moved by (30, -25) px (39 px: the robot's tilt, more than 1.5 radii).
+ * Ids 1-6 read where they are; at id 7's place a read named 9 (id 9's own
+ * place 1 m away); id 8 read twice 20 px apart; 9 not read: 1-6 named
+ * (map entries 0-5) and no other. A frame read by windows, a jump and
+ * the full frame read after it name none. */
+static void named_after_full(void **state)
+{
+    static rl_map map;
+    rl_calib cam;
+    rl_mount mount;
+    rl_track trk;
+    rl_track_config tc;
+    rl_result res;
+    rl_pose p, jumped;
+    int i, k, n = 0;
+    (void)state;
+    under_a_grid(&map, 0.2, &cam, &mount, &tc, &trk, &res);
+    memset(&p, 0, sizeof p);
+    res.levels.threshold = 100;
+    for (i = 0; i < 8; i++) {
+        rl_detection *d = &res.landmarks[n++];
+        d->id = i == 6 ? 9 : i + 1;
+        d->u = 319.5 + 244.39 * map.lm[i].y + 30;
+        d->v = 239.5 - 244.39 * map.lm[i].x - 25;
+        d->radius = 24.44;
+        if (i == 7) {
+            res.landmarks[n] = *d;
+            res.landmarks[n++].u += 20;
+        }
+    }
+    res.n_landmarks = n;
+    rl_track_full(&trk, &res);
+    assert_int_equal(rl_track_pose(&trk, &p, 0.0), 0);
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.1, NULL), 1);
+    assert_int_equal(trk.n_known, 0);
+    assert_int_equal(trk.n_named, 6);
+    for (i = 0; i < 6; i++) {
+        int found = 0;
+        for (k = 0; k < trk.n_named; k++)
+            found += trk.named[k] == i;
+        assert_int_equal(found, 1);
+    }
+    /* read by windows, its pose taken: its reads are known, none named */
+    trk.tracked = 1;
+    trk.since_full++;
+    trk.n_seen = 0;
+    assert_int_equal(rl_track_pose(&trk, &p, 0.1), 0);
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.2, NULL), 1);
+    assert_int_equal(trk.n_named, 0);
+    /* a jump: the frame read again in full names none */
+    trk.tracked = 1;
+    jumped = p;
+    jumped.x += 0.3;
+    assert_int_equal(rl_track_pose(&trk, &jumped, 0.2), 1);
+    assert_int_equal(trk.n_named, 0);
+    rl_track_full(&trk, &res);
+    assert_int_equal(rl_track_pose(&trk, &p, 0.2), 0);
+    assert_int_equal(rl_track_plan(&trk, &cam, &mount, &map, 0.3, NULL), 1);
+    assert_int_equal(trk.n_named, 0);
+}
+
 /* A landmark above the ceiling (in a skylight's well, 5 m above the floor,
  * 4.12 m above the camera at 0.88 m) seen near the image's top left
  * corner, worked out by hand: robot at the origin heading +x, landmarks
@@ -518,6 +585,7 @@ int main(int argc, char **argv)
         return cmocka_run_group_tests(tests, NULL, NULL);
     } else {
         const struct CMUnitTest tests[] = {cmocka_unit_test(decisions), cmocka_unit_test(known_landmarks),
+                                           cmocka_unit_test(named_after_full),
                                            cmocka_unit_test(above_the_ceiling)};
         return cmocka_run_group_tests(tests, NULL, NULL);
     }

@@ -11,6 +11,7 @@
 #include "rl_recog_state.h"
 #include "rl_result.h"
 #include "rl_tones.h"
+#include "rl_track_order.h"
 #include "rl_twins.h"
 #include "rl_verify.h"
 
@@ -155,36 +156,44 @@ static int predict_windows(rl_track *t, const rl_calib *cam, const rl_mount *mou
     return whole;
 }
 
-/* The predictions reordered so that each next one lies farthest from
- * those before it, the one nearest the image centre first: the first
- * few reads span the frame (the pose from them is well conditioned). */
-static void order_spread(rl_track *t, double cu, double cv)
+/* The map entries of the full frame's reads (t->full_*) among this
+ * frame's predictions, each projected as the full frame's pose puts it
+ * (the robot level): a read of its id, the only one within NAMED_REACH
+ * radii of that, is its pair; the robot's tilt moves every read alike, so
+ * an entry is named when its pair lies within NAMED_NEAR radii of its
+ * projection moved by the pairs' mean offset. */
+#define NAMED_REACH 4.0
+#define NAMED_NEAR 1.5
+
+static void name_full_reads(rl_track *t, const rl_calib *cam, const rl_mount *mount, const rl_map *map)
 {
-    double dmin[RL_MAX_LANDMARKS]; /* squared: from each one left to those placed (i > 0) */
-    int i, j;
-    for (j = 0; j < t->n; j++) {
-        double du = t->win[j].u - cu, dv = t->win[j].v - cv;
-        dmin[j] = -(du * du + dv * dv);
-    }
+    rl_pose_model md;
+    rl_track_window at[RL_MAX_LANDMARKS];
+    double q[RL_POSE_NQ] = {0}, Rc[9], C[3], du = 0, dv = 0;
+    int i, k, pair[RL_MAX_LANDMARKS], n = 0;
+    rl_pose_fit_model(&md, mount, map->ceiling_height, 0.5 * map->diameter);
+    q[0] = t->x;
+    q[1] = t->y;
+    q[2] = t->yaw;
+    rl_pose_fit_camera(&md, q, Rc, C);
     for (i = 0; i < t->n; i++) {
-        int best = i;
-        for (j = i + 1; j < t->n; j++)
-            if (dmin[j] > dmin[best])
-                best = j;
-        if (best != i) {
-            rl_track_window w = t->win[i];
-            double d = dmin[i];
-            t->win[i] = t->win[best];
-            t->win[best] = w;
-            dmin[i] = dmin[best];
-            dmin[best] = d;
-        }
-        for (j = i + 1; j < t->n; j++) {
-            double du = t->win[j].u - t->win[i].u, dv = t->win[j].v - t->win[i].v, d2 = du * du + dv * dv;
-            if (i == 0 || d2 < dmin[j])
-                dmin[j] = d2;
+        pair[i] = -1;
+        if (!project(cam, &md, Rc, C, map, t->win[i].index, &at[i]))
+            continue;
+        for (k = 0; k < t->n_full; k++)
+            if (t->full_id[k] == at[i].id &&
+                hypot(t->full_u[k] - at[i].u, t->full_v[k] - at[i].v) <= NAMED_REACH * at[i].radius)
+                pair[i] = pair[i] == -1 ? k : -2;
+        if (pair[i] >= 0) {
+            du += t->full_u[pair[i]] - at[i].u;
+            dv += t->full_v[pair[i]] - at[i].v;
+            n++;
         }
     }
+    for (i = 0; i < t->n && n > 0; i++)
+        if (pair[i] >= 0 && hypot(t->full_u[pair[i]] - at[i].u - du / n, t->full_v[pair[i]] - at[i].v - dv / n) <=
+                                NAMED_NEAR * at[i].radius)
+            t->named[t->n_named++] = at[i].index;
 }
 
 int rl_track_plan(rl_track *t, const rl_calib *cam, const rl_mount *mount, const rl_map *map, double t_s,
@@ -199,7 +208,10 @@ int rl_track_plan(rl_track *t, const rl_calib *cam, const rl_mount *mount, const
     predict_pose(t, t_s, odom);
     if (predict_windows(t, cam, mount, map) < 2)
         return 0;
-    order_spread(t, cam->cx, cam->cy);
+    if (t->full_reads)
+        name_full_reads(t, cam, mount, map);
+    t->full_reads = 0;
+    rl_track_order_spread(t, cam->cx, cam->cy);
     return 1;
 }
 
@@ -255,15 +267,20 @@ static int verifies(const rl_track_window *w, double shift, const rl_detection *
 #define CUT_READS 3
 #define CUT_VISIBLE 0.97
 
-/* Whether map entry index kept its id through the zone twins' check in
- * the frame before (t->known). */
-static int was_known(const rl_track *t, int index)
+/* Whether map entry index is in list[0 .. n - 1]: t->known (kept its id
+ * through the zone twins' check in the frame before) or t->named. */
+static int in_list(const int *list, int n, int index)
 {
     int k;
-    for (k = 0; k < t->n_known; k++)
-        if (t->known[k] == index)
+    for (k = 0; k < n; k++)
+        if (list[k] == index)
             return 1;
     return 0;
+}
+
+static int was_known(const rl_track *t, int index)
+{
+    return in_list(t->known, t->n_known, index);
 }
 
 /* 1 when the window of w reads its predicted id near the prediction
@@ -275,9 +292,10 @@ static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, co
                        double shift, int full, const rl_result *res, rl_detection *d)
 {
     rl_detection u;
-    /* kept in the frame before (read by windows, its pose taken): its id
-     * judged against its rivals alone (rl_verify) */
-    int known = was_known(t, w->index);
+    /* kept in the frame before (read by windows, its pose taken), or read
+     * by the full frame before (named): its id judged against its rivals
+     * alone (rl_verify) */
+    int known = was_known(t, w->index) || in_list(t->named, t->n_named, w->index);
     /* a window verification does not take is read the costly way, even
      * when its ink drew the centre past the reach or no ink showed (*away):
      * a review found both where the costly reads find the landmark (the
@@ -302,49 +320,16 @@ static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, co
            verifies(w, shift, d);
 }
 
-/* How the reads so far moved from their predictions: a shift and a small
- * turn about the image centre (the robot's rocking shifts every landmark
- * alike, a heading error turns them), least squares over the reads. */
-typedef struct {
-    double cu, cv;               /* the turn's centre */
-    double n, x, y, q, du, dv, w; /* sums */
-} frame_shift;
-
-static void shift_add(frame_shift *f, const rl_track_window *w, const rl_detection *d)
-{
-    double x = w->u - f->cu, y = w->v - f->cv, du = d->u - w->u, dv = d->v - w->v;
-    f->n++;
-    f->x += x;
-    f->y += y;
-    f->q += x * x + y * y;
-    f->du += du;
-    f->dv += dv;
-    f->w += x * dv - y * du;
-}
-
-/* w moved as the reads so far say. */
-static void shift_apply(const frame_shift *f, rl_track_window *w)
-{
-    double x = w->u - f->cu, y = w->v - f->cv, spread, a = 0;
-    if (f->n == 0)
-        return;
-    spread = f->q - (f->x * f->x + f->y * f->y) / f->n;
-    if (f->n >= 2 && spread > 400.0) /* reads 20 px apart or more tell a turn */
-        a = (f->w + (f->y * f->du - f->x * f->dv) / f->n) / spread;
-    w->u += (f->du + a * f->y) / f->n - a * y;
-    w->v += (f->dv - a * f->x) / f->n + a * x;
-}
-
 /* The windows read, whole ones first: the first within max_first_shift
  * radii of its prediction; each next one where the reads so far put it
- * (frame_shift), within max_shift. Returns how many were read; *missed 1
+ * (rl_track_shift), within max_shift. Returns how many were read; *missed 1
  * (and no more read) as soon as a whole one is missed. Each landmark of
  * res: its map entry (index) and whether the twins' check may take its id
  * as known (known: kept in the frame before). */
 static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_result *res, int *missed,
                         int *index, unsigned char *known)
 {
-    frame_shift fs;
+    rl_track_shift fs;
     int pass, i, read = 0;
     memset(&fs, 0, sizeof fs);
     fs.cu = 0.5 * (img->width - 1);
@@ -358,7 +343,7 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
             if (whole != (pass == 0))
                 continue;
             /* where the shift puts it: whole, or enough in view, there */
-            shift_apply(&fs, &w);
+            rl_track_shift_apply(&fs, &w);
             w.visible = rl_geom_visible_in(img->width, img->height, w.u, w.v, w.radius);
             whole = is_whole(&w, img->width, img->height);
             if (w.visible < t->cfg.min_visible)
@@ -378,7 +363,7 @@ static int read_windows(rl_track *t, rl_recog *rec, const rl_image *img, rl_resu
             }
             index[res->n_landmarks - 1] = w.index;
             known[res->n_landmarks - 1] = (unsigned char)was_known(t, w.index);
-            shift_add(&fs, &t->win[i], &d);
+            rl_track_shift_add(&fs, &t->win[i], &d);
             read++;
         }
     return read;
@@ -431,10 +416,20 @@ rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result 
 
 void rl_track_full(rl_track *t, const rl_result *res)
 {
+    int i;
+    /* its reads, named by the next plan once its pose is taken; not a
+     * frame read again after a jump or with no pose */
+    t->n_full = 0;
+    for (i = 0; i < res->n_landmarks && !t->full_next; i++)
+        if (res->landmarks[i].id >= 0) {
+            t->full_id[t->n_full] = res->landmarks[i].id;
+            t->full_u[t->n_full] = res->landmarks[i].u;
+            t->full_v[t->n_full++] = res->landmarks[i].v;
+        }
     t->tracked = 0;
     t->since_full = 0;
     t->full_next = 0;
-    t->n_known = 0;
+    t->n_known = t->n_named = 0;
     t->n_unjudged = 0;
     t->levels = res->levels;
     t->have_levels = res->levels.threshold > 0;
@@ -447,7 +442,7 @@ int rl_track_pose(rl_track *t, const rl_pose *pose, double t_s)
                        fabs(wrap(pose->yaw - t->eyaw)) > t->cfg.max_jump_yaw)) {
         t->tracked = 0;
         t->fallbacks++;
-        t->n_known = 0;
+        t->n_known = t->n_named = t->full_reads = 0;
         t->full_next = 1; /* the frame is read again in full, not by the same windows */
         return 1;
     }
@@ -456,11 +451,14 @@ int rl_track_pose(rl_track *t, const rl_pose *pose, double t_s)
      * next frame's first, the moving drive's poses came out worse: a read
      * the check refuses there sends the frame back to a full read) */
     t->n_known = 0;
+    t->n_named = 0;
+    t->full_reads = 0;
     if (pose == NULL) {
         t->full_next = 1;
         t->have_prev = 0;
         return 0;
     }
+    t->full_reads = !t->tracked && t->n_full > 0;
     if (t->tracked) {
         memcpy(t->known, t->seen, (size_t)t->n_seen * sizeof t->seen[0]);
         t->n_known = t->n_seen;

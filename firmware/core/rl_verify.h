@@ -38,8 +38,8 @@ void rl_verify_init(rl_recog *rec);
 
 /* 1 when the landmark of `id` predicted at (u, v) with radius r (px) is
  * read there, into *d (centre refined, the radius within a few percent
- * of r). known 1: the track already knows the landmark there (read by
- * windows in the frame before, its pose taken): when id's templates score
+ * of r). known 1: the track already knows the landmark there (read in
+ * the frame before, by windows or in full, its pose taken): when id's templates score
  * RL_RIVALS_TAKEN or more and the map holds rivals of id, id is judged
  * against its rivals alone (rl_rivals.h: the ids whose landmark can score
  * that high as id; the runner-up reported is theirs) instead of every id.

@@ -9,7 +9,8 @@
  * the predictions in an order that spreads them over the frame: each first
  * verified where predicted (its centre drawn to its ink, its profile
  * judged by the global pass's rule against every id, or, for a landmark
- * known from the frame before whose id scores 0.94 or more where the map
+ * known from the frame before (read there by windows, or by the full
+ * frame, its pose taken) whose id scores 0.94 or more where the map
  * holds rivals of its id, against those rivals alone, and refused
  * where a zone twin fits as well at its own radius: rl_verify; next to the border,
  * from its visible edge: rl_verify_read_border), else as
@@ -111,6 +112,14 @@ typedef struct {
      * index the map rl_track_plan was given: a caller that changes the
      * map calls rl_track_init first */
     int known[RL_MAX_LANDMARKS], n_known, seen[RL_MAX_LANDMARKS], n_seen;
+    /* map entries a full frame read, its pose taken (named; the frame
+     * after it is the first by windows): judged as known by rl_verify
+     * (their ids against their rivals) but not passed unjudged by the
+     * zone twins' check. The full frame's reads (their ids and centres)
+     * are kept until rl_track_plan names their map entries (full_reads
+     * 1: to be named) */
+    int named[RL_MAX_LANDMARKS], n_named, full_reads, n_full, full_id[RL_MAX_LANDMARKS];
+    double full_u[RL_MAX_LANDMARKS], full_v[RL_MAX_LANDMARKS];
     /* the map entries of this frame's reads that kept their ids unjudged
      * as known (none after rl_track_full): what a log shows of the
      * shortcut, for a test to judge against the truth */
