@@ -135,7 +135,7 @@ void rl_match_all_kept(const rl_templates *tt, const rl_profile *p, rl_match *m,
     if (!match_start(p, &z, m))
         return;
     if (tt->stride > RL_MATCH_KEPT_COLUMNS) {
-        keep->state = RL_MATCH_KEPT_NONE; /* past the room: rl_match_kept_id reads the profile again */
+        keep->state = RL_MATCH_KEPT_NONE; /* past the room: rl_match_kept_ids reads the profile again */
         score_table(tt, &z, -1, NULL, m, NULL);
         return;
     }

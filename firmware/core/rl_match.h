@@ -43,9 +43,9 @@ void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m);
 
 /* Every column's sums against one profile (the columns of the table,
  * padded to whole blocks), kept by rl_match_all_kept so that single ids
- * can be scored again from them (rl_match_kept_id) without a walk over
+ * can be scored again from them (rl_match_kept_ids) without a walk over
  * the bins. Up to RL_MATCH_KEPT_COLUMNS columns (RL_MAX_IDS ids); a
- * larger table keeps none and rl_match_kept_id reads the profile. */
+ * larger table keeps none and rl_match_kept_ids reads the profile. */
 #define RL_MATCH_KEPT_COLUMNS \
     ((RL_MAX_IDS * RL_BLUR_LEVELS + RL_MATCH_BLOCK - 1) / RL_MATCH_BLOCK * RL_MATCH_BLOCK)
 enum { RL_MATCH_KEPT_FLAT, RL_MATCH_KEPT_SUMS, RL_MATCH_KEPT_NONE };

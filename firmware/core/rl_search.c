@@ -90,7 +90,8 @@ static void search_crosses(const rl_polar *pol, search_state *st)
     }
 }
 
-/* The winner's rivals (at_s: the profile of the octants at x, y, s),
+/* The winner's rivals (at_s: the profile of the octants at x, y, s, its
+ * columns' sums in keep as its match kept them),
  * every id one code zone from it (its zone twins in
  * the two zones next to the outer ring and the ids that differ in any
  * other zone: rl_family_zone_twins), each at its best radius
