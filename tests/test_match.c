@@ -511,6 +511,69 @@ static void test_id_and_rest_is_every_other_listed(void **state)
     }
 }
 
+/* rl_match_all_kept is rl_match_all, and rl_match_kept_ids from its sums
+ * is rl_match_ids at every blur (the old calls, the oracle), on one id
+ * and on lists of ids (the same id twice in some),
+ * every field the same bits: whole families of 5 to 8 bits (each id's
+ * last block in place) and 8 ids out of order (the last id's block runs
+ * past the table: the old call copies it into a list), every id of the
+ * table and ids it does not hold, profiles drawn from an id, from another
+ * id and from noise, and a profile of too few pixels. */
+static void test_kept_sums_are_the_ids_read_again(void **state)
+{
+    static unsigned char mem[1 << 19];
+    static const int some[] = {9, 3, 30, 17, 1, 22, 12, 5};
+    static rl_match_kept keep;
+    int table, trial, j;
+    (void)state;
+    for (table = 0; table < 5; table++) {
+        rl_family fam;
+        rl_templates tt;
+        rl_ws ws;
+        fam.bits = table < 4 ? 5 + table : 5;
+        rl_ws_init(&ws, mem, sizeof mem);
+        assert_int_equal(rl_templates_init(&tt, &ws, &fam, table == 4 ? some : NULL, table == 4 ? 8 : 0), RL_OK);
+        for (trial = 0; trial < 40; trial++) {
+            int i = (int)(uniform() * tt.n), src = trial % 3 == 0 ? (int)(uniform() * tt.n) : i;
+            int b = (int)(uniform() * RL_BLUR_LEVELS), flat;
+            rl_profile p;
+            noisy_profile(&tt, src, b, trial % 3 == 2 ? 400 : 60, &p);
+            for (flat = 0; flat < 2; flat++) {
+                rl_match m, want;
+                if (flat)
+                    p.total = 10; /* too few pixels: nothing matched */
+                rl_match_all_kept(&tt, &p, &m, &keep);
+                rl_match_all(&tt, &p, &want);
+                assert_true(same_match(&m, &want));
+                assert_int_equal(keep.state, flat ? RL_MATCH_KEPT_FLAT : RL_MATCH_KEPT_SUMS);
+                for (j = -1; j <= tt.n; j++) {
+                    /* the table's ids, one under them and one past them */
+                    int id = j < 0 ? 0 : j < tt.n ? tt.ids[j] : (1 << fam.bits) - 1;
+                    rl_match got, old;
+                    if (j == tt.n && table < 4)
+                        id = 1 << fam.bits; /* no id of a whole family */
+                    rl_match_kept_ids(&tt, &p, &keep, &id, 1, &got);
+                    rl_match_ids(&tt, &p, &id, 1, -1, &old);
+                    assert_true(same_match(&got, &old));
+                    if (!flat && j >= 0 && j < tt.n)
+                        assert_true(got.id == id);
+                }
+                for (j = 0; j < 6; j++) {
+                    /* lists of 1 to 9 ids in any order, with ids the
+                     * table does not hold among them */
+                    int list[9], nl = 1 + (int)(uniform() * 9), q;
+                    rl_match got, old;
+                    for (q = 0; q < nl; q++)
+                        list[q] = uniform() < 0.15 ? 0 : tt.ids[(int)(uniform() * tt.n)];
+                    rl_match_kept_ids(&tt, &p, &keep, list, nl, &got);
+                    rl_match_ids(&tt, &p, list, nl, -1, &old);
+                    assert_true(same_match(&got, &old));
+                }
+            }
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -524,6 +587,7 @@ int main(void)
         cmocka_unit_test(test_each_id_is_its_own_best),
         cmocka_unit_test(test_id_and_rivals_at_once),
         cmocka_unit_test(test_id_and_rest_is_every_other_listed),
+        cmocka_unit_test(test_kept_sums_are_the_ids_read_again),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

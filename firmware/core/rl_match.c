@@ -89,12 +89,16 @@ static void score_block(const float *t, size_t stride, int nc, const int *ids, c
 /* Every column of the table scored against the profile's terms z, in
  * table order, as wide a block at a time as the table holds (each
  * column's sums the same bits either way); id's columns kept in *own and
- * the rest in *m, or all in *m when own is NULL. */
-static inline void score_table(const rl_templates *tt, const profile_terms *z, int id, rl_match *own, rl_match *m)
+ * the rest in *m, or all in *m when own is NULL. Where keep is not NULL
+ * the sums are summed into it (column c at c) rather than thrown away. */
+static inline void score_table(const rl_templates *tt, const profile_terms *z, int id, rl_match *own, rl_match *m,
+                               rl_match_kept *keep)
 {
     int ncol = tt->n * RL_BLUR_LEVELS, c0, c, i = 0, b = 0;
     for (c0 = 0; c0 < ncol;) {
-        float st[WIDE_COLUMNS], stt[WIDE_COLUMNS], sxt[WIDE_COLUMNS];
+        float bst[WIDE_COLUMNS], bstt[WIDE_COLUMNS], bsxt[WIDE_COLUMNS];
+        float *st = keep ? keep->st + c0 : bst, *stt = keep ? keep->stt + c0 : bstt,
+              *sxt = keep ? keep->sxt + c0 : bsxt;
         int nc;
         if (c0 + WIDE_COLUMNS <= tt->stride && ncol - c0 > WIDE_COLUMNS - RL_MATCH_BLOCK) {
             const float *blocks[RL_MATCH_WIDE];
@@ -121,7 +125,25 @@ void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m)
 {
     profile_terms z;
     if (match_start(p, &z, m))
-        score_table(tt, &z, -1, NULL, m);
+        score_table(tt, &z, -1, NULL, m, NULL);
+}
+
+void rl_match_all_kept(const rl_templates *tt, const rl_profile *p, rl_match *m, rl_match_kept *keep)
+{
+    profile_terms z;
+    keep->state = RL_MATCH_KEPT_FLAT;
+    if (!match_start(p, &z, m))
+        return;
+    if (tt->stride > RL_MATCH_KEPT_COLUMNS) {
+        keep->state = RL_MATCH_KEPT_NONE; /* past the room: rl_match_kept_ids reads the profile again */
+        score_table(tt, &z, -1, NULL, m, NULL);
+        return;
+    }
+    keep->state = RL_MATCH_KEPT_SUMS;
+    keep->n = z.n;
+    keep->sx = z.sx;
+    keep->ivx = z.ivx;
+    score_table(tt, &z, -1, NULL, m, keep);
 }
 
 void rl_match_id_and_rest(const rl_templates *tt, const rl_profile *p, int id, rl_match *own, rl_match *rest)
@@ -130,7 +152,7 @@ void rl_match_id_and_rest(const rl_templates *tt, const rl_profile *p, int id, r
     int ok = match_start(p, &z, rest);
     *own = *rest; /* both start as nothing matched */
     if (ok)
-        score_table(tt, &z, id, own, rest);
+        score_table(tt, &z, id, own, rest, NULL);
 }
 
 /* Add column (id index i, blur b) of the table to a list (the table's
@@ -293,6 +315,35 @@ void rl_match_ids(const rl_templates *tt, const rl_profile *p, const int *ids, i
     profile_terms z;
     if (match_start(p, &z, m))
         score_ids(tt, &z, ids, n, blur, m);
+}
+
+void rl_match_kept_ids(const rl_templates *tt, const rl_profile *p, const rl_match_kept *keep, const int *ids,
+                       int n, rl_match *m)
+{
+    profile_terms z;
+    int j;
+    if (keep->state == RL_MATCH_KEPT_NONE) {
+        rl_match_ids(tt, p, ids, n, -1, m);
+        return;
+    }
+    /* the match before any column, as match_start leaves it */
+    m->id = -1;
+    m->score = m->second = -1.0;
+    m->contrast = 0.0;
+    m->blur = 0;
+    if (keep->state != RL_MATCH_KEPT_SUMS)
+        return;
+    /* keep_column reads these three terms only */
+    z.n = keep->n;
+    z.sx = keep->sx;
+    z.ivx = keep->ivx;
+    /* each id of the table at every blur, in the order of ids: the order
+     * in which score_ids keeps them, in place or from a list */
+    for (j = 0; j < n; j++) {
+        int c = rl_templates_find(tt, ids[j]) * RL_BLUR_LEVELS;
+        if (c >= 0)
+            keep_id(m, &z, ids[j], keep->st + c, keep->stt + c, keep->sxt + c);
+    }
 }
 
 void rl_match_id_and_ids(const rl_templates *tt, const rl_profile *p, int id, const int *ids, int n,

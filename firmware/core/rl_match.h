@@ -41,6 +41,30 @@ typedef struct {
 /* Score every template against a profile. */
 void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m);
 
+/* Every column's sums against one profile (the columns of the table,
+ * padded to whole blocks), kept by rl_match_all_kept so that single ids
+ * can be scored again from them (rl_match_kept_ids) without a walk over
+ * the bins. Up to RL_MATCH_KEPT_COLUMNS columns (RL_MAX_IDS ids); a
+ * larger table keeps none and rl_match_kept_ids reads the profile. */
+#define RL_MATCH_KEPT_COLUMNS \
+    ((RL_MAX_IDS * RL_BLUR_LEVELS + RL_MATCH_BLOCK - 1) / RL_MATCH_BLOCK * RL_MATCH_BLOCK)
+enum { RL_MATCH_KEPT_FLAT, RL_MATCH_KEPT_SUMS, RL_MATCH_KEPT_NONE };
+typedef struct {
+    int state;            /* RL_MATCH_KEPT_*: a flat profile, the sums, none kept */
+    double n, sx, ivx;    /* the profile's pixels, their sum, 1 / sqrt(variance term) */
+    float st[RL_MATCH_KEPT_COLUMNS], stt[RL_MATCH_KEPT_COLUMNS], sxt[RL_MATCH_KEPT_COLUMNS];
+} rl_match_kept;
+
+/* rl_match_all, each column's sums kept into *keep (the same match, bit
+ * for bit). */
+void rl_match_all_kept(const rl_templates *tt, const rl_profile *p, rl_match *m, rl_match_kept *keep);
+
+/* rl_match_ids(tt, p, ids, n, -1, m), the same bits, from the sums
+ * rl_match_all_kept kept of p into *keep (p is read again only where
+ * none were kept). */
+void rl_match_kept_ids(const rl_templates *tt, const rl_profile *p, const rl_match_kept *keep, const int *ids,
+                       int n, rl_match *m);
+
 /* Score only the templates of the given ids, at one blur level
  * (0 .. RL_BLUR_LEVELS - 1) or at all of them (blur < 0). Ids the table
  * does not hold are skipped. */

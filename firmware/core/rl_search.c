@@ -48,8 +48,11 @@ static double search_try(const rl_polar *pol, search_state *st, double x, double
 
 /* The likely ids for first match m of profile p: the best and those one
  * code zone away that come close (a radius error confuses the outer ring
- * with zone 1). */
-static int likely_ids(const rl_templates *tt, const rl_profile *p, const rl_match *m, int *ids)
+ * with zone 1). Each is scored from the sums the first match kept of p
+ * (keep): the same bits as rl_match_ids on p, without a walk over the
+ * bins an id. */
+static int likely_ids(const rl_templates *tt, const rl_profile *p, const rl_match_kept *keep, const rl_match *m,
+                      int *ids)
 {
     int n = 0, k, bits = tt->fam.bits;
     ids[n++] = m->id;
@@ -58,7 +61,7 @@ static int likely_ids(const rl_templates *tt, const rl_profile *p, const rl_matc
         rl_match mm;
         if (!rl_family_valid(&tt->fam, alt))
             continue;
-        rl_match_ids(tt, p, &alt, 1, -1, &mm);
+        rl_match_kept_ids(tt, p, keep, &alt, 1, &mm);
         if (mm.id >= 0 && mm.score > m->second - 0.05)
             ids[n++] = alt;
     }
@@ -87,7 +90,8 @@ static void search_crosses(const rl_polar *pol, search_state *st)
     }
 }
 
-/* The winner's rivals (at_s: the profile of the octants at x, y, s),
+/* The winner's rivals (at_s: the profile of the octants at x, y, s, its
+ * columns' sums in keep as its match kept them),
  * every id one code zone from it (its zone twins in
  * the two zones next to the outer ring and the ids that differ in any
  * other zone: rl_family_zone_twins), each at its best radius
@@ -107,20 +111,20 @@ static void search_crosses(const rl_polar *pol, search_state *st)
  * docs/results.md, "The search's twin check at every blur" and "Every id
  * one zone away"). */
 static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, double y, double s,
-                       unsigned octants, const rl_profile *at_s, rl_match *m)
+                       unsigned octants, const rl_profile *at_s, const rl_match_kept *keep, rl_match *m)
 {
     int rivals[RL_MAX_BITS], n = rl_family_zone_twins(&tt->fam, m->id, rivals), k;
     for (k = 0; n > 0 && k < RL_SEARCH_TWIN_SCALES; k++) {
         rl_profile p;
-        const rl_profile *pk = at_s;
         rl_match mm;
         /* at scale 1 the profile is at_s, the caller's from the same
-         * arguments (s * 1.0 is s): not made again */
+         * arguments (s * 1.0 is s): not made again, nor its columns summed */
         if (rl_search_twin_scale[k] != 1.0) {
             rl_polar_profile_octants(pol, x, y, s * rl_search_twin_scale[k], octants, &p);
-            pk = &p;
+            rl_match_ids(tt, &p, rivals, n, -1, &mm);
+        } else {
+            rl_match_kept_ids(tt, at_s, keep, rivals, n, &mm); /* at_s's sums, kept by its match */
         }
-        rl_match_ids(tt, pk, rivals, n, -1, &mm);
         if (mm.id >= 0 && mm.score > m->second)
             m->second = mm.score;
     }
@@ -131,6 +135,7 @@ void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double
                              rl_match *m)
 {
     double x = cx - pol->cx, y = cy - pol->cy, s = r / pol->r;
+    rl_match_kept keep; /* each read's sums, for its twins */
     int a;
     m->id = -1;
     m->score = m->second = m->contrast = 0;
@@ -139,12 +144,12 @@ void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double
         rl_profile p;
         rl_match ma;
         rl_polar_profile_octants(pol, x, y, s, reads[a], &p);
-        rl_match_all(tt, &p, &ma);
+        rl_match_all_kept(tt, &p, &ma, &keep);
         if (ma.id != id || ma.blur > max_blur)
             continue; /* another code, or smeared: along the motion */
         if (m->id >= 0 && ma.second >= 0 && rl_accept_lead(&ma) <= rl_accept_lead(m))
             continue; /* its twins only lower its lead (a runner-up at or over 0): it cannot lead */
-        twin_check(tt, pol, x, y, s, reads[a], &p, &ma);
+        twin_check(tt, pol, x, y, s, reads[a], &p, &keep, &ma);
         if (m->id < 0 || rl_accept_lead(&ma) > rl_accept_lead(m))
             *m = ma;
     }
@@ -162,15 +167,16 @@ int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_imag
                             double *cy, double *r, rl_match *m)
 {
     rl_profile p;
+    rl_match_kept keep; /* every column's sums of the first match */
     int ids[LIKELY_IDS], n;
     search_state st;
     double sweep;
     rl_polar_gather(img, tone, *cx, *cy, *r, light, SECTOR_MIN_CONTRAST, pol);
     rl_polar_profile(pol, 0, 0, 1.0, &p);
-    rl_match_all(tt, &p, m);
+    rl_match_all_kept(tt, &p, m, &keep);
     if (m->id < 0)
         return 1;
-    n = likely_ids(tt, &p, m, ids);
+    n = likely_ids(tt, &p, &keep, m, ids);
     rl_match_list_make(tt, ids, n, m->blur, &st.likely);
     st.x = st.y = 0;
     st.s = 1.0;
@@ -183,12 +189,12 @@ int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_imag
     if (st.x != 0 || st.y != 0 || st.s != 1.0) {
         /* every id at every blur where the search ended (its profile as
          * the search made it) */
-        rl_match_all(tt, &st.best, m);
+        rl_match_all_kept(tt, &st.best, m, &keep);
         *cx += st.x;
         *cy += st.y;
         *r *= st.s;
     }
     if (m->id >= 0 && m->score >= min_score)
-        twin_check(tt, pol, st.x, st.y, st.s, RL_POLAR_ALL, &st.best, m);
+        twin_check(tt, pol, st.x, st.y, st.s, RL_POLAR_ALL, &st.best, &keep, m); /* keep: st.best's sums */
     return 1;
 }
