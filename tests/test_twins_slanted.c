@@ -52,7 +52,7 @@ static void slanted_still_is_not_read_across_a_motion(void **state)
         rl_profile p;
         rl_match m;
         rl_motion mo;
-        moved_read mr;
+        landmark_reads mr;
         int rv[RL_MAX_IDS], n, small;
         double tol, mg;
         /* the frame's curve and levels */

@@ -107,19 +107,35 @@ static double others_median(const double *r, int n, int i)
     return rl_median(v, m);
 }
 
-/* A landmark's motion and its leads over its twins along the motion's
- * sharpest axis through both formations: small_fits and moved_keeps ask
- * for the same of one landmark, each worked out once, when first wanted. */
+/* What the rules ask of one landmark more than once, each worked out
+ * once, when first wanted: its outer edge's ellipse (the size floor
+ * along its minor axis, and rules 5 and 6's guard on slanted landmarks),
+ * its motion, and its leads over its twins along the motion's sharpest
+ * axis through both formations (small_fits and moved_keeps). */
 typedef struct {
-    int measured, moved; /* rl_motion_measure done; it measured, ratio not over RL_TWINS_MOVED */
+    int fitted;           /* minor_radius done: */
+    double minor, aspect; /* its minor semi-axis, px, and aspect */
+    int measured, moved;  /* rl_motion_measure done; it measured, ratio not over RL_TWINS_MOVED */
     rl_motion mo;
-    int read;            /* the leads read: */
-    double other, own;   /* through the other formation, through the frame's curve */
-} moved_read;
+    int read;             /* the leads read: */
+    double other, own;    /* through the other formation, through the frame's curve */
+} landmark_reads;
+
+/* d's minor semi-axis (minor_radius), fitted into m the first time (its
+ * aspect then in m->aspect). */
+static double minor_radius_once(const rl_recog *rec, const rl_image *img, int light, const rl_detection *d,
+                                landmark_reads *m)
+{
+    if (!m->fitted) {
+        m->fitted = 1;
+        m->minor = minor_radius(rec, img, light, d, &m->aspect);
+    }
+    return m->minor;
+}
 
 /* Whether d moved (rl_motion_measure, its ratio not over
  * RL_TWINS_MOVED), measured into m the first time. */
-static int measure_motion_once(const rl_image *img, const rl_detection *d, moved_read *m)
+static int measure_motion_once(const rl_image *img, const rl_detection *d, landmark_reads *m)
 {
     if (!m->measured) {
         m->measured = 1;
@@ -132,7 +148,7 @@ static int measure_motion_once(const rl_image *img, const rl_detection *d, moved
  * (rl_twins_lead), through the other formation and the frame's curve, read
  * into m the first time (m measured and moved). */
 static void read_axis_leads_once(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv,
-                                 int n, moved_read *m)
+                                 int n, landmark_reads *m)
 {
     double fit;
     if (m->read)
@@ -157,11 +173,11 @@ static void read_axis_leads_once(const rl_recog *rec, const rl_image *img, const
  * small local read: far here cost 50 right reads of the reviewer's 14
  * stress sets and refused no wrong one (twelfth session). Not for a
  * landmark whose edge is an ellipse flatter than RL_TWINS_MOVED_ASPECT.
- * m: d's motion and axis leads, as small_fits left them (read here
- * where it did not). *least: the least lead through the other formation
+ * m: d's edge, motion and axis leads, as rl_twins_check and small_fits
+ * left them (read here where they did not). *least: the least lead through the other formation
  * it read. */
 static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels *lv, const rl_detection *d,
-                       const int *rv, int n, double tol, double mg, moved_read *m, double *least)
+                       const int *rv, int n, double tol, double mg, landmark_reads *m, double *least)
 {
     const rl_tone *other = rl_tones_other(&rec->tones, rec->tone);
     rl_detection c = *d;
@@ -170,8 +186,8 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
         return 0;
     /* a still landmark seen slanted measures as moved (test_motion;
      * test_twins_slanted holds this guard) */
-    minor_radius(rec, img, lv->light, d, &fit);
-    if (fit < RL_TWINS_MOVED_ASPECT)
+    minor_radius_once(rec, img, lv->light, d, m);
+    if (m->aspect < RL_TWINS_MOVED_ASPECT)
         return 0;
     read_axis_leads_once(rec, img, d, rv, n, m);
     *least = m->other;
@@ -212,10 +228,10 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
  * wrong, a 4 as 20 and
  * an 18 as 26, led their twins through both formations about the whole
  * ring but not along the axis; 11 of 1,100 right ones failed it). m:
- * d's motion and axis leads, read here where wanted and kept for
- * moved_keeps. */
+ * d's edge, motion and axis leads, read here where wanted (the edge
+ * where rl_twins_check did not) and kept for moved_keeps. */
 static int small_fits(const rl_recog *rec, const rl_image *img, int light, const rl_detection *d, const int *rv,
-                      int n, double tol, double mg, moved_read *m)
+                      int n, double tol, double mg, landmark_reads *m)
 {
     double fit, ring, axis;
     if (!d->complete || !measure_motion_once(img, d, m))
@@ -229,8 +245,8 @@ static int small_fits(const rl_recog *rec, const rl_image *img, int light, const
         /* not along an axis where the edge is an ellipse: a slanted
          * landmark measures as moved (fixtures_lens: 22 right reads);
          * the edge fit only where the axis refuses, the same decisions */
-        minor_radius(rec, img, light, d, &fit);
-        return fit < RL_TWINS_MOVED_ASPECT;
+        minor_radius_once(rec, img, light, d, m);
+        return m->aspect < RL_TWINS_MOVED_ASPECT;
     }
     read_axis_leads_once(rec, img, d, rv, n, m);
     return keeps(tol, mg, m->other, m->own);
@@ -314,7 +330,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
     for (i = 0; i < all; i++) {
         rl_detection d = res->landmarks[i];
         double lead, own = 0, fit, tol = tolerance(&d, curved), mg;
-        moved_read moved = {0};
+        landmark_reads reads = {0};
         /* a small landmark (under the far radius), whatever the curve */
         int far, small = d.radius < far_radius;
         if (kept != NULL)
@@ -349,14 +365,15 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * RL_TWINS_CUT_TOLERANCE; read as linear, right reads let the 2.2
          * curve's twin lead by up to 0.006: tolerance 0 there cost 15-25
          * right reads a line at 15-16 px, docs/results.md) */
-        if (curved && d.radius < far_radius && minor_radius(rec, img, res->levels.light, &d, &fit) < min_radius)
+        if (curved && d.radius < far_radius &&
+            minor_radius_once(rec, img, res->levels.light, &d, &reads) < min_radius)
             tol = RL_TWINS_CUT_TOLERANCE;
         /* a local read of a small landmark through a curve, or of a
          * whole one read as linear: its rivals through the other
          * formation at the radius they fit (rl_twins_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (curved ? d.radius < far_radius : d.complete);
         lead = rl_twins_lead(rec, img, other, &d, rv, n, far, -1, &fit);
-        if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &moved) ||
+        if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &reads) ||
                       !size_fits(rec, img, other, &d, rv, n, others_size(radii, whole, all, i, min_radius)))) {
             rl_result_add_unidentified(res, &d);
             continue;
@@ -380,7 +397,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
             (rank_fits(&d, curved, others_median(radii, all, i)) && own > RL_TWINS_RANK_OWN &&
              rl_twins_rank_keeps(rec, img, rec->tone, res->levels.light, &d)))
             keep(res, &kept_n, &d, kept, i);
-        else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol, mg, &moved, &lead)) {
+        else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol, mg, &reads, &lead)) {
             /* its runner-up from the reads across the motion it passed */
             d.runner_up = res->landmarks[i].runner_up;
             if (d.score - lead > d.runner_up)
