@@ -38,35 +38,12 @@ void rl_match_kernel_v4(const float *t, size_t stride, const float *fn, const fl
 #include <immintrin.h>
 typedef float rl_v8 __attribute__((vector_size(32)));
 
-/* The same loop with each sum in one 8-lane vector (AVX): the same
- * products added in the same order, lane by lane. */
-__attribute__((target("avx"))) void rl_match_kernel_v8(const float *t, size_t stride, const float *fn,
-                                                       const float *fs, float *st, float *stt, float *sxt)
-{
-    rl_v8 s = {0, 0, 0, 0, 0, 0, 0, 0}, ss = s, sx = s;
-    int k;
-    for (k = 0; k < RL_PROFILE_BINS; k++) {
-        rl_v8 tv, nv, sv;
-        if (fn[k] == 0)
-            continue; /* bins outside the image or in light */
-        /* each bin's count and sum straight from memory into every lane */
-        nv = (rl_v8)_mm256_broadcast_ss(fn + k);
-        sv = (rl_v8)_mm256_broadcast_ss(fs + k);
-        memcpy(&tv, t + (size_t)k * stride, sizeof tv);
-        s += nv * tv;
-        ss += nv * tv * tv;
-        sx += sv * tv;
-    }
-    memcpy(st, &s, sizeof s);
-    memcpy(stt, &ss, sizeof ss);
-    memcpy(sxt, &sx, sizeof sx);
-}
-
-/* nb (1 .. 3) blocks (columns t[0] .. t[0] + 7, t[1] .., t[2] ..) in one
- * walk over the bins: each bin's count and sum broadcast once for them
- * all; each lane the same products added in the same order as
- * rl_match_kernel_v8's. Inlined with nb a constant: the blocks past it
- * fold away and the sums stay in registers. */
+/* The plain kernel's loop with each sum in one 8-lane vector (AVX), for
+ * nb (1 .. 3) blocks (columns t[0] .. t[0] + 7, t[1] .., t[2] ..) in one
+ * walk over the bins: each bin's count and sum straight from memory into
+ * every lane, once for them all; each lane the same products added in the
+ * same order as one block alone. Inlined with nb a constant: the blocks
+ * past it fold away and the sums stay in registers. */
 static inline __attribute__((always_inline, target("avx"))) void walk_v8w(const float *const *t, int nb,
                                                                           size_t stride, const float *fn,
                                                                           const float *fs, float *st,
@@ -113,6 +90,12 @@ static inline __attribute__((always_inline, target("avx"))) void walk_v8w(const 
         memcpy(stt + 16, &ss2, sizeof ss2);
         memcpy(sxt + 16, &sx2, sizeof sx2);
     }
+}
+
+__attribute__((target("avx"))) void rl_match_kernel_v8(const float *t, size_t stride, const float *fn,
+                                                       const float *fs, float *st, float *stt, float *sxt)
+{
+    walk_v8w(&t, 1, stride, fn, fs, st, stt, sxt);
 }
 
 /* nb 3, 2 or 1: walked with it a constant */
