@@ -79,8 +79,8 @@ static double margin(const rl_detection *d, int small)
 
 /* Whether the rank read may decide d: not for a cut landmark read
  * through a curve, nor for a cut local read in a frame read as linear,
- * whose radius is RL_TWINS_CUT_SIZE or more off the frame's other
- * landmarks' (size; 0: none known, not decided), where the rank read,
+ * whose radius is RL_TWINS_CUT_SIZE or more off the frame's size
+ * (frame_size; 0: none known, not decided), where the rank read,
  * which leans on the radius, can take its twin: a cut 17 read as 25 at
  * 2.2 with its radius 9% short led 17 by more than RL_TWINS_RANK_LEAD
  * there too (the cut ones it kept right on the development sets were
@@ -96,15 +96,20 @@ static int rank_fits(const rl_detection *d, int curved, double size)
     return size > 0 && fabs(d->radius - size) < RL_TWINS_CUT_SIZE * size;
 }
 
-/* The median of the n radii r but the i-th (0 when there is no other). */
-static double others_median(const double *r, int n, int i)
+/* The frame's size, that the rules judge a read's circle against
+ * (rank_fits, the cut-circle rule, size_fits): the median of the radii r
+ * but the i-th, of whole reads (whole[j]) of min_radius or more, where
+ * two or more are left (a cut read's short circle, a read too small to
+ * judge or one other read alone is no frame's size); 0 otherwise (not
+ * known). */
+static double frame_size(const double *r, const unsigned char *whole, int n, int i, double min_radius)
 {
     double v[RL_MAX_LANDMARKS];
     int j, m = 0;
     for (j = 0; j < n; j++)
-        if (j != i)
+        if (j != i && whole[j] && r[j] >= min_radius)
             v[m++] = r[j];
-    return rl_median(v, m);
+    return m >= 2 ? rl_median(v, m) : 0.0;
 }
 
 /* What the rules ask of one landmark more than once, each worked out
@@ -253,8 +258,8 @@ static int small_fits(const rl_recog *rec, const rl_image *img, int light, const
 }
 
 /* Whether d, a small landmark (under the far radius), keeps its id read
- * at the frame's size too (size: the frame's other landmarks' radius, 0
- * none known), where its read's circle is larger than the frame's by
+ * at the frame's size too (size: frame_size, 0 none known), where its
+ * read's circle is larger than the frame's by
  * RL_TWINS_CUT_SIZE or more: there its lead over its rivals (rl_twins_rivals())
  * through the other formation plus its lead through the frame's curve,
  * each at 0.97 .. 1.03 of size, must be positive (rule 3's sum, without
@@ -277,19 +282,6 @@ static int size_fits(const rl_recog *rec, const rl_image *img, const rl_tone *ot
     s.radius = size;
     lead = rl_twins_lead(rec, img, other, &s, rv, n, 0, -1, &fit);
     return lead + rl_twins_lead(rec, img, rec->tone, &s, rv, n, 0, -1, &fit) > 0;
-}
-
-/* The frame's size for size_fits: the median of the radii r but the
- * i-th, of whole reads (whole[j]) of min_radius or more, where two or more
- * are left (one read alone is no frame's size); 0 otherwise (not known). */
-static double others_size(const double *r, const unsigned char *whole, int n, int i, double min_radius)
-{
-    double v[RL_MAX_LANDMARKS];
-    int j, m = 0;
-    for (j = 0; j < n; j++)
-        if (j != i && whole[j] && r[j] >= min_radius)
-            v[m++] = r[j];
-    return m >= 2 ? rl_median(v, m) : 0.0;
 }
 
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
@@ -339,7 +331,8 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * local read off its outer edge (RL_TWINS_CUT_BULGE) */
         if (d.radius < min_radius ||
             (d.pass == RL_PASS_LOCAL && !d.complete &&
-             !rl_twins_cut_on_edge(img, rec->tone, res->levels.light, &d, others_median(radii, all, i)))) {
+             !rl_twins_cut_on_edge(img, rec->tone, res->levels.light, &d,
+                                   frame_size(radii, whole, all, i, min_radius)))) {
             rl_result_add_unidentified(res, &d);
             continue;
         }
@@ -374,7 +367,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         far = d.pass == RL_PASS_LOCAL && (curved ? d.radius < far_radius : d.complete);
         lead = rl_twins_lead(rec, img, other, &d, rv, n, far, -1, &fit);
         if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &reads) ||
-                      !size_fits(rec, img, other, &d, rv, n, others_size(radii, whole, all, i, min_radius)))) {
+                      !size_fits(rec, img, other, &d, rv, n, frame_size(radii, whole, all, i, min_radius)))) {
             rl_result_add_unidentified(res, &d);
             continue;
         }
@@ -394,7 +387,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * decides, where the frame's curve reads the id clearly too
          * (RL_TWINS_RANK_OWN) */
         if (keeps(tol, mg, lead, own) ||
-            (rank_fits(&d, curved, others_median(radii, all, i)) && own > RL_TWINS_RANK_OWN &&
+            (rank_fits(&d, curved, frame_size(radii, whole, all, i, min_radius)) && own > RL_TWINS_RANK_OWN &&
              rl_twins_rank_keeps(rec, img, rec->tone, res->levels.light, &d)))
             keep(res, &kept_n, &d, kept, i);
         else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol, mg, &reads, &lead)) {
