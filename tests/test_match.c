@@ -236,11 +236,22 @@ static void test_rescale_by_moves_is_rescale(void **state)
     assert_true(differ > 300);
 }
 
-/* The wide kernel (RL_MATCH_WIDE blocks in one walk) gives each column the
- * bits of one block at a time, with empty bins and on a table whose rows
- * are longer than the blocks (the table's stride): blocks side by side
- * (rl_match_all) and blocks anywhere in the row, out of order and
- * overlapping (a list of ids' own columns, rl_match_ids). */
+/* The wide kernel (1 .. RL_MATCH_WIDE blocks in one walk) gives each
+ * column the bits of one block at a time, with empty bins and on a table
+ * whose rows are longer than the blocks (the table's stride): blocks side
+ * by side (rl_match_all) and blocks anywhere in the row, out of order and
+ * overlapping (a list of ids' own columns, rl_match_ids); given fewer
+ * blocks than RL_MATCH_WIDE (two ids of a list), it writes theirs and no
+ * other sums. */
+/* The three sums of RL_MATCH_WIDE blocks in s, each value v. */
+static void fill(float s[3][RL_MATCH_WIDE * RL_MATCH_BLOCK], float v)
+{
+    int j, k;
+    for (j = 0; j < 3; j++)
+        for (k = 0; k < RL_MATCH_WIDE * RL_MATCH_BLOCK; k++)
+            s[j][k] = v;
+}
+
 static void test_wide_kernel_is_blocks_bit_for_bit(void **state)
 {
     enum { STRIDE = RL_MATCH_WIDE * RL_MATCH_BLOCK + 16 };
@@ -248,7 +259,7 @@ static void test_wide_kernel_is_blocks_bit_for_bit(void **state)
     float fn[RL_PROFILE_BINS], fs[RL_PROFILE_BINS];
     float a[3][RL_MATCH_WIDE * RL_MATCH_BLOCK], b[3][RL_MATCH_WIDE * RL_MATCH_BLOCK];
     const float *blocks[RL_MATCH_WIDE];
-    int trial, k, blk;
+    int trial, k, blk, nb;
     (void)state;
     for (trial = 0; trial < 200; trial++) {
         for (k = 0; k < RL_PROFILE_BINS * STRIDE; k++)
@@ -262,19 +273,27 @@ static void test_wide_kernel_is_blocks_bit_for_bit(void **state)
         for (blk = 0; blk < RL_MATCH_WIDE; blk++)
             blocks[blk] = t + (trial % 2 == 0 ? 8 + blk * RL_MATCH_BLOCK
                                               : (int)(uniform() * (STRIDE - RL_MATCH_BLOCK + 1)));
-        for (blk = 0; blk < RL_MATCH_WIDE; blk++)
-            rl_match_kernel_plain(blocks[blk], STRIDE, fn, fs, a[0] + blk * RL_MATCH_BLOCK,
-                                  a[1] + blk * RL_MATCH_BLOCK, a[2] + blk * RL_MATCH_BLOCK);
-        rl_match_kernel_wide(blocks, STRIDE, fn, fs, b[0], b[1], b[2]);
-        assert_memory_equal(a, b, sizeof a);
-        rl_match_kernel_wide_blocks(blocks, STRIDE, fn, fs, b[0], b[1], b[2]);
-        assert_memory_equal(a, b, sizeof a);
-#ifdef RL_HAVE_MATCH_KERNEL_V8
-        if (__builtin_cpu_supports("avx")) {
-            rl_match_kernel_v8w(blocks, STRIDE, fn, fs, b[0], b[1], b[2]);
+        for (nb = 1; nb <= RL_MATCH_WIDE; nb++) {
+            /* -1, which no sum gives: what the kernels must write, and
+             * past nb what they must leave */
+            fill(a, -1.0f);
+            for (blk = 0; blk < nb; blk++)
+                rl_match_kernel_plain(blocks[blk], STRIDE, fn, fs, a[0] + blk * RL_MATCH_BLOCK,
+                                      a[1] + blk * RL_MATCH_BLOCK, a[2] + blk * RL_MATCH_BLOCK);
+            fill(b, -1.0f);
+            rl_match_kernel_wide(blocks, nb, STRIDE, fn, fs, b[0], b[1], b[2]);
             assert_memory_equal(a, b, sizeof a);
-        }
+            fill(b, -1.0f);
+            rl_match_kernel_wide_blocks(blocks, nb, STRIDE, fn, fs, b[0], b[1], b[2]);
+            assert_memory_equal(a, b, sizeof a);
+#ifdef RL_HAVE_MATCH_KERNEL_V8
+            if (__builtin_cpu_supports("avx")) {
+                fill(b, -1.0f);
+                rl_match_kernel_v8w(blocks, nb, STRIDE, fn, fs, b[0], b[1], b[2]);
+                assert_memory_equal(a, b, sizeof a);
+            }
 #endif
+        }
     }
 }
 

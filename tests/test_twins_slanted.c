@@ -18,6 +18,8 @@
 #include <math.h>
 #include "draw_slanted.h"
 #include "rl_heap_recog.h"
+#include "rl_match.h"
+#include "rl_profile.h"
 #include "rl_templates.h"
 /* the statics called */
 #include "rl_twins.c"
@@ -50,7 +52,7 @@ static void slanted_still_is_not_read_across_a_motion(void **state)
         rl_profile p;
         rl_match m;
         rl_motion mo;
-        moved_read mr;
+        landmark_reads mr;
         int rv[RL_MAX_IDS], n, small;
         double tol, mg;
         /* the frame's curve and levels */
@@ -72,7 +74,7 @@ static void slanted_still_is_not_read_across_a_motion(void **state)
         d.pass = RL_PASS_GLOBAL;
         d.complete = 1;
         d.visible = 1.0;
-        n = rivals(rec, &d, rv);
+        n = rl_twins_rivals(rec, &d, rv);
         assert_true(n > 0);
         small = r < RL_TWINS_FAR_ZONE_PX / RL_TWINS_MIN_ZONE_PX * rl_twins_min_radius(&rec->templates.fam);
         tol = tolerance(&d, 1);
@@ -84,8 +86,8 @@ static void slanted_still_is_not_read_across_a_motion(void **state)
         assert_true(mo.ratio < RL_TWINS_MOVED);
         minor_radius(rec, &img, res.levels.light, &d, &aspect);
         assert_true(aspect < RL_TWINS_MOVED_ASPECT);
-        assert_true(keeps(tol, mg, twin_lead(rec, &img, other, &d, rv, n, 0, mo.axis, &fit),
-                          twin_lead(rec, &img, rec->tone, &d, rv, n, 0, mo.axis, &fit)));
+        assert_true(keeps(tol, mg, rl_twins_lead(rec, &img, other, &d, rv, n, 0, mo.axis, &fit),
+                          rl_twins_lead(rec, &img, rec->tone, &d, rv, n, 0, mo.axis, &fit)));
         /* still: not read across a motion */
         memset(&mr, 0, sizeof mr);
         assert_false(moved_keeps(rec, &img, &res.levels, &d, rv, n, tol, mg, &mr, &least));

@@ -11,11 +11,6 @@ int rl_map_find(const rl_map *map, int id)
     return -1;
 }
 
-double rl_map_height(const rl_map *map, int i)
-{
-    return map->lm[i].z > 0.0 ? map->lm[i].z : map->ceiling_height;
-}
-
 void rl_map_id_heights(const rl_map *map, double *h)
 {
     unsigned char seen[RL_MAX_IDS] = {0}; /* 1: one height so far, 2: several */

@@ -105,7 +105,7 @@ static inline void score_table(const rl_templates *tt, const profile_terms *z, i
             nc = ncol - c0 < WIDE_COLUMNS ? ncol - c0 : WIDE_COLUMNS;
             for (c = 0; c < RL_MATCH_WIDE; c++)
                 blocks[c] = tt->table + c0 + c * RL_MATCH_BLOCK;
-            rl_match_kernel_wide(blocks, (size_t)tt->stride, z->fn, z->fs, st, stt, sxt);
+            rl_match_kernel_wide(blocks, RL_MATCH_WIDE, (size_t)tt->stride, z->fn, z->fs, st, stt, sxt);
         } else {
             nc = ncol - c0 < RL_MATCH_BLOCK ? ncol - c0 : RL_MATCH_BLOCK;
             rl_match_kernel(tt->table + c0, (size_t)tt->stride, z->fn, z->fs, st, stt, sxt);
@@ -220,7 +220,7 @@ static int sum_in_place(const rl_templates *tt, const profile_terms *z, const in
                         int *at, float *st, float *stt, float *sxt)
 {
     const float *blocks[RL_MATCH_WIDE];
-    int c = 0, j;
+    int c = 0;
     for (; *from < n && c < RL_MATCH_WIDE; (*from)++) {
         int i = rl_templates_find(tt, ids[*from]);
         if (i < 0)
@@ -228,17 +228,10 @@ static int sum_in_place(const rl_templates *tt, const profile_terms *z, const in
         blocks[c] = tt->table + (size_t)i * RL_BLUR_LEVELS;
         at[c++] = *from;
     }
-    if (c >= RL_MATCH_WIDE - 1) {
-        /* two ids: the second's block summed twice in the walk (one walk
-         * with its adds side by side is quicker than two, each waiting on
-         * its own; the spare sums are not read) */
-        for (j = c; j < RL_MATCH_WIDE; j++)
-            blocks[j] = blocks[c - 1];
-        rl_match_kernel_wide(blocks, (size_t)tt->stride, z->fn, z->fs, st, stt, sxt);
-    } else
-        for (j = 0; j < c; j++)
-            rl_match_kernel(blocks[j], (size_t)tt->stride, z->fn, z->fs, st + j * RL_MATCH_BLOCK,
-                            stt + j * RL_MATCH_BLOCK, sxt + j * RL_MATCH_BLOCK);
+    if (c >= 2)
+        rl_match_kernel_wide(blocks, c, (size_t)tt->stride, z->fn, z->fs, st, stt, sxt);
+    else if (c == 1)
+        rl_match_kernel(blocks[0], (size_t)tt->stride, z->fn, z->fs, st, stt, sxt);
     return c;
 }
 

@@ -1,7 +1,5 @@
 #include "rl_match_kernel.h"
 
-#include <string.h>
-
 void rl_match_kernel_plain(const float *t, size_t stride, const float *fn, const float *fs,
                            float *st, float *stt, float *sxt)
 {
@@ -21,21 +19,12 @@ void rl_match_kernel_plain(const float *t, size_t stride, const float *fn, const
     }
 }
 
-void rl_match_kernel_wide_blocks(const float *const *t, size_t stride, const float *fn, const float *fs,
+void rl_match_kernel_wide_blocks(const float *const *t, int nb, size_t stride, const float *fn, const float *fs,
                                  float *st, float *stt, float *sxt)
 {
     int b;
-    for (b = 0; b < RL_MATCH_WIDE; b++) {
-        size_t at = (size_t)b * RL_MATCH_BLOCK, was = at - RL_MATCH_BLOCK;
-        if (b > 0 && t[b] == t[b - 1]) {
-            /* a block given again (sum_in_place pads two ids to three):
-             * its sums are the ones before, not walked again (a block a
-             * walk here: no walk of the others to share) */
-            memcpy(st + at, st + was, RL_MATCH_BLOCK * sizeof *st);
-            memcpy(stt + at, stt + was, RL_MATCH_BLOCK * sizeof *stt);
-            memcpy(sxt + at, sxt + was, RL_MATCH_BLOCK * sizeof *sxt);
-            continue;
-        }
+    for (b = 0; b < nb; b++) {
+        size_t at = (size_t)b * RL_MATCH_BLOCK;
         rl_match_kernel(t[b], stride, fn, fs, st + at, stt + at, sxt + at);
     }
 }

@@ -44,20 +44,20 @@ void rl_match_kernel_x86(const float *t, size_t stride, const float *fn, const f
                          float *st, float *stt, float *sxt);
 #endif
 
-/* RL_MATCH_WIDE blocks, block b's columns from t[b] (anywhere in the
- * table: side by side for every id, or one id's own columns each), their
- * sums at st + b * RL_MATCH_BLOCK ..: each column's sums the bits of
+/* nb blocks (1 .. RL_MATCH_WIDE), block b's columns from t[b] (anywhere
+ * in the table: side by side for every id, or one id's own columns each),
+ * their sums at st + b * RL_MATCH_BLOCK ..: each column's sums the bits of
  * rl_match_kernel's. On x86 with AVX one walk over the bins for all of
- * them (each bin's count and sum loaded once, three chains of adds in
- * flight instead of one), else a block at a time. */
+ * them (each bin's count and sum loaded once, two or three chains of adds
+ * in flight instead of one), else a block at a time. */
 #define RL_MATCH_WIDE 3
-void rl_match_kernel_wide_blocks(const float *const *t, size_t stride, const float *fn, const float *fs,
+void rl_match_kernel_wide_blocks(const float *const *t, int nb, size_t stride, const float *fn, const float *fs,
                                  float *st, float *stt, float *sxt);
 #if defined(RL_HAVE_MATCH_KERNEL_V8)
-void rl_match_kernel_v8w(const float *const *t, size_t stride, const float *fn, const float *fs, float *st,
-                         float *stt, float *sxt);
-void rl_match_kernel_wide_x86(const float *const *t, size_t stride, const float *fn, const float *fs, float *st,
-                              float *stt, float *sxt);
+void rl_match_kernel_v8w(const float *const *t, int nb, size_t stride, const float *fn, const float *fs,
+                         float *st, float *stt, float *sxt);
+void rl_match_kernel_wide_x86(const float *const *t, int nb, size_t stride, const float *fn, const float *fs,
+                              float *st, float *stt, float *sxt);
 #endif
 
 /* The kernel identification uses. */

@@ -38,78 +38,88 @@ void rl_match_kernel_v4(const float *t, size_t stride, const float *fn, const fl
 #include <immintrin.h>
 typedef float rl_v8 __attribute__((vector_size(32)));
 
-/* The same loop with each sum in one 8-lane vector (AVX): the same
- * products added in the same order, lane by lane. */
-__attribute__((target("avx"))) void rl_match_kernel_v8(const float *t, size_t stride, const float *fn,
-                                                       const float *fs, float *st, float *stt, float *sxt)
-{
-    rl_v8 s = {0, 0, 0, 0, 0, 0, 0, 0}, ss = s, sx = s;
-    int k;
-    for (k = 0; k < RL_PROFILE_BINS; k++) {
-        rl_v8 tv, nv, sv;
-        if (fn[k] == 0)
-            continue; /* bins outside the image or in light */
-        /* each bin's count and sum straight from memory into every lane */
-        nv = (rl_v8)_mm256_broadcast_ss(fn + k);
-        sv = (rl_v8)_mm256_broadcast_ss(fs + k);
-        memcpy(&tv, t + (size_t)k * stride, sizeof tv);
-        s += nv * tv;
-        ss += nv * tv * tv;
-        sx += sv * tv;
-    }
-    memcpy(st, &s, sizeof s);
-    memcpy(stt, &ss, sizeof ss);
-    memcpy(sxt, &sx, sizeof sx);
-}
-
-/* Three blocks (columns t[0] .. t[0] + 7, t[1] .., t[2] ..) in one walk
- * over the bins: each bin's count and sum broadcast once for the three;
- * each lane the same products added in the same order as
- * rl_match_kernel_v8's. */
-__attribute__((target("avx"))) void rl_match_kernel_v8w(const float *const *t, size_t stride, const float *fn,
-                                                        const float *fs, float *st, float *stt, float *sxt)
+/* The plain kernel's loop with each sum in one 8-lane vector (AVX), for
+ * nb (1 .. 3) blocks (columns t[0] .. t[0] + 7, t[1] .., t[2] ..) in one
+ * walk over the bins: each bin's count and sum straight from memory into
+ * every lane, once for them all; each lane the same products added in the
+ * same order as one block alone. Inlined with nb a constant: the blocks
+ * past it fold away and the sums stay in registers. */
+static inline __attribute__((always_inline, target("avx"))) void walk_v8w(const float *const *t, int nb,
+                                                                          size_t stride, const float *fn,
+                                                                          const float *fs, float *st,
+                                                                          float *stt, float *sxt)
 {
     rl_v8 s0 = {0, 0, 0, 0, 0, 0, 0, 0}, s1 = s0, s2 = s0, ss0 = s0, ss1 = s0, ss2 = s0, sx0 = s0, sx1 = s0,
           sx2 = s0;
+    const float *t0 = t[0], *t1 = nb > 1 ? t[1] : t0, *t2 = nb > 2 ? t[2] : t0;
     int k;
     for (k = 0; k < RL_PROFILE_BINS; k++) {
         size_t at = (size_t)k * stride;
-        rl_v8 t0, t1, t2, nv, sv;
+        rl_v8 v0, v1, v2, nv, sv;
         if (fn[k] == 0)
             continue; /* bins outside the image or in light */
         nv = (rl_v8)_mm256_broadcast_ss(fn + k);
         sv = (rl_v8)_mm256_broadcast_ss(fs + k);
-        memcpy(&t0, t[0] + at, sizeof t0);
-        memcpy(&t1, t[1] + at, sizeof t1);
-        memcpy(&t2, t[2] + at, sizeof t2);
-        s0 += nv * t0;
-        s1 += nv * t1;
-        s2 += nv * t2;
-        ss0 += nv * t0 * t0;
-        ss1 += nv * t1 * t1;
-        ss2 += nv * t2 * t2;
-        sx0 += sv * t0;
-        sx1 += sv * t1;
-        sx2 += sv * t2;
+        memcpy(&v0, t0 + at, sizeof v0);
+        s0 += nv * v0;
+        ss0 += nv * v0 * v0;
+        sx0 += sv * v0;
+        if (nb > 1) {
+            memcpy(&v1, t1 + at, sizeof v1);
+            s1 += nv * v1;
+            ss1 += nv * v1 * v1;
+            sx1 += sv * v1;
+        }
+        if (nb > 2) {
+            memcpy(&v2, t2 + at, sizeof v2);
+            s2 += nv * v2;
+            ss2 += nv * v2 * v2;
+            sx2 += sv * v2;
+        }
     }
     memcpy(st, &s0, sizeof s0);
-    memcpy(st + 8, &s1, sizeof s1);
-    memcpy(st + 16, &s2, sizeof s2);
     memcpy(stt, &ss0, sizeof ss0);
-    memcpy(stt + 8, &ss1, sizeof ss1);
-    memcpy(stt + 16, &ss2, sizeof ss2);
     memcpy(sxt, &sx0, sizeof sx0);
-    memcpy(sxt + 8, &sx1, sizeof sx1);
-    memcpy(sxt + 16, &sx2, sizeof sx2);
+    if (nb > 1) {
+        memcpy(st + 8, &s1, sizeof s1);
+        memcpy(stt + 8, &ss1, sizeof ss1);
+        memcpy(sxt + 8, &sx1, sizeof sx1);
+    }
+    if (nb > 2) {
+        memcpy(st + 16, &s2, sizeof s2);
+        memcpy(stt + 16, &ss2, sizeof ss2);
+        memcpy(sxt + 16, &sx2, sizeof sx2);
+    }
 }
 
-void rl_match_kernel_wide_x86(const float *const *t, size_t stride, const float *fn, const float *fs, float *st,
-                              float *stt, float *sxt)
+__attribute__((target("avx"))) void rl_match_kernel_v8(const float *t, size_t stride, const float *fn,
+                                                       const float *fs, float *st, float *stt, float *sxt)
+{
+    walk_v8w(&t, 1, stride, fn, fs, st, stt, sxt);
+}
+
+/* nb 3, 2 or 1: walked with it a constant */
+typedef char rl_match_wide_is_3[RL_MATCH_WIDE == 3 ? 1 : -1];
+
+__attribute__((target("avx"))) void rl_match_kernel_v8w(const float *const *t, int nb, size_t stride,
+                                                        const float *fn, const float *fs, float *st, float *stt,
+                                                        float *sxt)
+{
+    if (nb == 3)
+        walk_v8w(t, 3, stride, fn, fs, st, stt, sxt);
+    else if (nb == 2)
+        walk_v8w(t, 2, stride, fn, fs, st, stt, sxt);
+    else
+        walk_v8w(t, 1, stride, fn, fs, st, stt, sxt);
+}
+
+void rl_match_kernel_wide_x86(const float *const *t, int nb, size_t stride, const float *fn, const float *fs,
+                              float *st, float *stt, float *sxt)
 {
     if (__builtin_cpu_supports("avx"))
-        rl_match_kernel_v8w(t, stride, fn, fs, st, stt, sxt);
+        rl_match_kernel_v8w(t, nb, stride, fn, fs, st, stt, sxt);
     else
-        rl_match_kernel_wide_blocks(t, stride, fn, fs, st, stt, sxt); /* v4 a block */
+        rl_match_kernel_wide_blocks(t, nb, stride, fn, fs, st, stt, sxt); /* v4 a block */
 }
 
 void rl_match_kernel_x86(const float *t, size_t stride, const float *fn, const float *fs, float *st,

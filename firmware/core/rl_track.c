@@ -88,16 +88,17 @@ static double view_slope(const rl_calib *cam)
 }
 
 /* Whether map landmark i is too far from the camera's foot C to be in
- * view, at its own height (one above the ceiling, in a skylight's well,
- * is seen from farther; rl_map_height's rule): the reach at the ceiling
- * (ceiling_reach) worked out once a frame. Every landmark of the map is
+ * view, at its own height (rl_map_height: one above the ceiling, in a
+ * skylight's well, is seen from farther). Every landmark of the map is
  * looked at each frame (a large site's 6,400: this test was a third of
  * the tracked frames' instructions there with the height fetched by a
- * call each), so it reads only the landmark's own fields. */
+ * call each), so the reach at the ceiling (ceiling_reach, the same sum)
+ * is worked out once a frame for the landmarks that hang there. */
 static int out_of_reach(const rl_map *map, int i, const double *C, double slope, double ceiling_reach)
 {
     const rl_map_landmark *lm = &map->lm[i];
-    double reach = lm->z > 0.0 ? slope * (lm->z - C[2]) + map->diameter : ceiling_reach;
+    double reach = rl_map_at_ceiling(map, i) ? ceiling_reach
+                                              : slope * (rl_map_height(map, i) - C[2]) + map->diameter;
     return fabs(lm->x - C[0]) > reach || fabs(lm->y - C[1]) > reach;
 }
 

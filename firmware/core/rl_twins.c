@@ -4,114 +4,13 @@
 
 #include "rl_edge.h"
 #include "rl_ellipse.h"
-#include "rl_match.h"
 #include "rl_median.h"
 #include "rl_motion.h"
-#include "rl_profile.h"
 #include "rl_refine.h"
 #include "rl_result.h"
 #include "rl_twins_cut.h"
+#include "rl_twins_lead.h"
 #include "rl_twins_rank.h"
-
-/* Radius scales a landmark and its twins are scored at (the radius was
- * read through one formation and the edge falls elsewhere through the
- * other): the id at 0.97, 1 and 1.03 of it; its rivals there too, or, for
- * a small local read through a curve (RL_TWINS_FAR_ZONE_PX), at 0.91 ..
- * 1.09 (twin_lead's `far`), from one gather at the largest (with `far`
- * the id's own three come from coarser bins, so its lead can move either
- * way: no wrong id came of it on the sets here). */
-#define SCALE_STEP 0.03
-#define SCALES_NEAR 1 /* each side of the radius read: 0.97 .. 1.03 */
-#define SCALES_FAR 3  /* 0.91 .. 1.09 */
-/* Every other row: the leads compared are differences between templates
- * on the same pixels, and half of a landmark's pixels give the same
- * decisions on every set measured (docs/design.md). */
-#define ROW_STEP 2
-
-/* 1 when d's rivals (rivals()) are every other id of the table: a local
- * read's. Its rivals are then scored with the id in one walk over the
- * table (rl_match_id_and_rest: the same bits as the list of every other
- * id, the recognizer's table holding each id once). */
-static int every_rival(const rl_detection *d)
-{
-    return d->pass == RL_PASS_LOCAL;
-}
-
-/* How far d's id leads its best rival (rivals()) through tone: its best
- * score over 0.97 .. 1.03 of its radius (into *fit) less the rival's best
- * there, or with far over 0.91 .. 1.09. A grey-mixed sheet read through
- * the 2.2 curve swells its dark zones by about 0.6 of the blur's sigma on
- * each edge: a white band between dark zones narrows by a zone's width,
- * so its twin with that zone dark is read (the local pass's 7 wrong ids
- * above the size floor on the development sheets, each its truth with one
- * white zone read dark), and the outer edge, with the radius read, moves
- * out (2.8% and 4.5% over the truth on two of the five, there the truth's
- * radius was outside 0.97 .. 1.03; within 0.6% on three, where the wider
- * range helps for a reason not traced). Only for landmarks whose code
- * zone 1 is under RL_TWINS_FAR_ZONE_PX (rl_twins_check), 1.5 times the
- * size floor's: the shift is the blur's, in pixels, and at
- * the moving frames' 23-25 px (light mixed, read through the right curve)
- * 9% let a twin fit through the grey levels on 5 of their 55 cut ones.
- * And for a local read of a whole landmark in a frame read as linear
- * (the other formation the 2.2 curve): there this check is the gate, not
- * the local read's lead, and the read's radius is the search's, as short
- * as the edge fit left it; with its rivals within 3% of it, a whole 25 of
- * isp_blur_s21 read as 17 from a circle 12% short, and three whole
- * landmarks of the moving set's frame 036 read as their twins from
- * circles 9-12% short (five reads), kept the wrong ids
- * (test_search_twins). Not for a cut
- * one: on the part left in the frame the wider range lets a rival fit (at
- * gamma 1 it cost two right cut reads of the 28Sep2013 development
- * photos' letter sheets and won one; no wrong cut read was kept without
- * it). */
-static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
-                        const int *rv, int n, int far, int axis, double *fit)
-{
-    int reach = far ? SCALES_FAR : SCALES_NEAR, k, every = every_rival(d);
-    double own = -1, twin = -1, top = 1.0 + reach * SCALE_STEP;
-    rl_profile wide;
-    /* axis >= 0: its pixels alone, every row (moved_keeps) */
-    if (axis < 0)
-        rl_profile_gather_rows(img, tone, d->u, d->v, d->radius * top, ROW_STEP, &wide);
-    else
-        rl_profile_gather_axis(img, tone, d->u, d->v, d->radius * top, axis, &wide);
-    for (k = -reach; k <= reach; k++) {
-        rl_profile p;
-        rl_match m, mo;
-        int near = k >= -SCALES_NEAR && k <= SCALES_NEAR;
-        rl_profile_rescale(&wide, (1.0 + k * SCALE_STEP) / top, &p);
-        /* the rivals at every blur: through the other formation a rival
-         * may fit another than the id does; the id too near its radius
-         * (every other id as rivals: the id comes with them in one walk) */
-        mo.id = -1;
-        if (every)
-            rl_match_id_and_rest(&rec->templates, &p, d->id, &mo, &m);
-        else if (near)
-            rl_match_id_and_ids(&rec->templates, &p, d->id, rv, n, -1, &mo, &m);
-        else
-            rl_match_ids(&rec->templates, &p, rv, n, -1, &m);
-        if (near && mo.id >= 0 && mo.score > own)
-            own = mo.score;
-        if (m.id >= 0 && m.score > twin)
-            twin = m.score;
-    }
-    *fit = own;
-    return own - twin;
-}
-
-/* The ids d is judged against: its zone twins; for a local read (sector
- * by sector, the centre searched) every other id of the table. */
-static int rivals(const rl_recog *rec, const rl_detection *d, int *out)
-{
-    int n = 0, i;
-    /* every zone: a wrong formation moves every edge, the outer ones most */
-    if (!every_rival(d))
-        return rl_family_zone_twins(&rec->templates.fam, d->id, out);
-    for (i = 0; i < rec->templates.n; i++)
-        if (rec->templates.ids[i] != d->id)
-            out[n++] = rec->templates.ids[i];
-    return n;
-}
 
 /* How far a twin may lead d through the other formation: read as linear
  * light, RL_TWINS_TOLERANCE; read through a curve (the other formation
@@ -180,8 +79,8 @@ static double margin(const rl_detection *d, int small)
 
 /* Whether the rank read may decide d: not for a cut landmark read
  * through a curve, nor for a cut local read in a frame read as linear,
- * whose radius is RL_TWINS_CUT_SIZE or more off the frame's other
- * landmarks' (size; 0: none known, not decided), where the rank read,
+ * whose radius is RL_TWINS_CUT_SIZE or more off the frame's size
+ * (frame_size; 0: none known, not decided), where the rank read,
  * which leans on the radius, can take its twin: a cut 17 read as 25 at
  * 2.2 with its radius 9% short led 17 by more than RL_TWINS_RANK_LEAD
  * there too (the cut ones it kept right on the development sets were
@@ -197,30 +96,51 @@ static int rank_fits(const rl_detection *d, int curved, double size)
     return size > 0 && fabs(d->radius - size) < RL_TWINS_CUT_SIZE * size;
 }
 
-/* The median of the n radii r but the i-th (0 when there is no other). */
-static double others_median(const double *r, int n, int i)
+/* The frame's size, that the rules judge a read's circle against
+ * (rank_fits, the cut-circle rule, size_fits): the median of the radii r
+ * but the i-th, of whole reads (whole[j]) of min_radius or more, where
+ * two or more are left (a cut read's short circle, a read too small to
+ * judge or one other read alone is no frame's size); 0 otherwise (not
+ * known). */
+static double frame_size(const double *r, const unsigned char *whole, int n, int i, double min_radius)
 {
     double v[RL_MAX_LANDMARKS];
     int j, m = 0;
     for (j = 0; j < n; j++)
-        if (j != i)
+        if (j != i && whole[j] && r[j] >= min_radius)
             v[m++] = r[j];
-    return rl_median(v, m);
+    return m >= 2 ? rl_median(v, m) : 0.0;
 }
 
-/* A landmark's motion and its leads over its twins along the motion's
- * sharpest axis through both formations: small_fits and moved_keeps ask
- * for the same of one landmark, each worked out once, when first wanted. */
+/* What the rules ask of one landmark more than once, each worked out
+ * once, when first wanted: its outer edge's ellipse (the size floor
+ * along its minor axis, and rules 5 and 6's guard on slanted landmarks),
+ * its motion, and its leads over its twins along the motion's sharpest
+ * axis through both formations (small_fits and moved_keeps). */
 typedef struct {
-    int measured, moved; /* rl_motion_measure done; it measured, ratio not over RL_TWINS_MOVED */
+    int fitted;           /* minor_radius done: */
+    double minor, aspect; /* its minor semi-axis, px, and aspect */
+    int measured, moved;  /* rl_motion_measure done; it measured, ratio not over RL_TWINS_MOVED */
     rl_motion mo;
-    int read;            /* the leads read: */
-    double other, own;   /* through the other formation, through the frame's curve */
-} moved_read;
+    int read;             /* the leads read: */
+    double other, own;    /* through the other formation, through the frame's curve */
+} landmark_reads;
+
+/* d's minor semi-axis (minor_radius), fitted into m the first time (its
+ * aspect then in m->aspect). */
+static double minor_radius_once(const rl_recog *rec, const rl_image *img, int light, const rl_detection *d,
+                                landmark_reads *m)
+{
+    if (!m->fitted) {
+        m->fitted = 1;
+        m->minor = minor_radius(rec, img, light, d, &m->aspect);
+    }
+    return m->minor;
+}
 
 /* Whether d moved (rl_motion_measure, its ratio not over
  * RL_TWINS_MOVED), measured into m the first time. */
-static int measure_motion_once(const rl_image *img, const rl_detection *d, moved_read *m)
+static int measure_motion_once(const rl_image *img, const rl_detection *d, landmark_reads *m)
 {
     if (!m->measured) {
         m->measured = 1;
@@ -230,17 +150,17 @@ static int measure_motion_once(const rl_image *img, const rl_detection *d, moved
 }
 
 /* d's leads over its twins rv along m's sharpest axis at 0.97 .. 1.03
- * (twin_lead), through the other formation and the frame's curve, read
+ * (rl_twins_lead), through the other formation and the frame's curve, read
  * into m the first time (m measured and moved). */
 static void read_axis_leads_once(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv,
-                                 int n, moved_read *m)
+                                 int n, landmark_reads *m)
 {
     double fit;
     if (m->read)
         return;
     m->read = 1;
-    m->other = twin_lead(rec, img, rl_tones_other(&rec->tones, rec->tone), d, rv, n, 0, m->mo.axis, &fit);
-    m->own = twin_lead(rec, img, rec->tone, d, rv, n, 0, m->mo.axis, &fit);
+    m->other = rl_twins_lead(rec, img, rl_tones_other(&rec->tones, rec->tone), d, rv, n, 0, m->mo.axis, &fit);
+    m->own = rl_twins_lead(rec, img, rec->tone, d, rv, n, 0, m->mo.axis, &fit);
 }
 
 /* Whether d, a landmark that moved (rl_motion_measure) refused by the
@@ -258,11 +178,11 @@ static void read_axis_leads_once(const rl_recog *rec, const rl_image *img, const
  * small local read: far here cost 50 right reads of the reviewer's 14
  * stress sets and refused no wrong one (twelfth session). Not for a
  * landmark whose edge is an ellipse flatter than RL_TWINS_MOVED_ASPECT.
- * m: d's motion and axis leads, as small_fits left them (read here
- * where it did not). *least: the least lead through the other formation
+ * m: d's edge, motion and axis leads, as rl_twins_check and small_fits
+ * left them (read here where they did not). *least: the least lead through the other formation
  * it read. */
 static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels *lv, const rl_detection *d,
-                       const int *rv, int n, double tol, double mg, moved_read *m, double *least)
+                       const int *rv, int n, double tol, double mg, landmark_reads *m, double *least)
 {
     const rl_tone *other = rl_tones_other(&rec->tones, rec->tone);
     rl_detection c = *d;
@@ -271,8 +191,8 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
         return 0;
     /* a still landmark seen slanted measures as moved (test_motion;
      * test_twins_slanted holds this guard) */
-    minor_radius(rec, img, lv->light, d, &fit);
-    if (fit < RL_TWINS_MOVED_ASPECT)
+    minor_radius_once(rec, img, lv->light, d, m);
+    if (m->aspect < RL_TWINS_MOVED_ASPECT)
         return 0;
     read_axis_leads_once(rec, img, d, rv, n, m);
     *least = m->other;
@@ -290,9 +210,9 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
             !(hypot(c.u - d->u, c.v - d->v) <= RL_TWINS_EDGE_REACH * d->radius))
             return 0;
     }
-    lead = twin_lead(rec, img, other, &c, rv, n, 0, m->mo.axis, &fit);
+    lead = rl_twins_lead(rec, img, other, &c, rv, n, 0, m->mo.axis, &fit);
     *least = lead < *least ? lead : *least;
-    return keeps(tol, mg, lead, twin_lead(rec, img, rec->tone, &c, rv, n, 0, m->mo.axis, &fit));
+    return keeps(tol, mg, lead, rl_twins_lead(rec, img, rec->tone, &c, rv, n, 0, m->mo.axis, &fit));
 }
 
 /* Whether a small whole landmark that moved (rl_motion; every wrong read
@@ -313,34 +233,34 @@ static int moved_keeps(const rl_recog *rec, const rl_image *img, const rl_levels
  * wrong, a 4 as 20 and
  * an 18 as 26, led their twins through both formations about the whole
  * ring but not along the axis; 11 of 1,100 right ones failed it). m:
- * d's motion and axis leads, read here where wanted and kept for
- * moved_keeps. */
+ * d's edge, motion and axis leads, read here where wanted (the edge
+ * where rl_twins_check did not) and kept for moved_keeps. */
 static int small_fits(const rl_recog *rec, const rl_image *img, int light, const rl_detection *d, const int *rv,
-                      int n, double tol, double mg, moved_read *m)
+                      int n, double tol, double mg, landmark_reads *m)
 {
     double fit, ring, axis;
     if (!d->complete || !measure_motion_once(img, d, m))
         return 1;
     if (d->pass != RL_PASS_LOCAL) {
-        if ((ring = twin_lead(rec, img, rec->tone, d, rv, n, 1, -1, &fit)) <= 0)
+        if ((ring = rl_twins_lead(rec, img, rec->tone, d, rv, n, 1, -1, &fit)) <= 0)
             return 0;
-        axis = twin_lead(rec, img, rec->tone, d, rv, n, 1, m->mo.axis, &fit);
+        axis = rl_twins_lead(rec, img, rec->tone, d, rv, n, 1, m->mo.axis, &fit);
         if (axis > 0 && ring + axis > mg)
             return 1;
         /* not along an axis where the edge is an ellipse: a slanted
          * landmark measures as moved (fixtures_lens: 22 right reads);
          * the edge fit only where the axis refuses, the same decisions */
-        minor_radius(rec, img, light, d, &fit);
-        return fit < RL_TWINS_MOVED_ASPECT;
+        minor_radius_once(rec, img, light, d, m);
+        return m->aspect < RL_TWINS_MOVED_ASPECT;
     }
     read_axis_leads_once(rec, img, d, rv, n, m);
     return keeps(tol, mg, m->other, m->own);
 }
 
 /* Whether d, a small landmark (under the far radius), keeps its id read
- * at the frame's size too (size: the frame's other landmarks' radius, 0
- * none known), where its read's circle is larger than the frame's by
- * RL_TWINS_CUT_SIZE or more: there its lead over its rivals (rivals())
+ * at the frame's size too (size: frame_size, 0 none known), where its
+ * read's circle is larger than the frame's by
+ * RL_TWINS_CUT_SIZE or more: there its lead over its rivals (rl_twins_rivals())
  * through the other formation plus its lead through the frame's curve,
  * each at 0.97 .. 1.03 of size, must be positive (rule 3's sum, without
  * the margin). The landmarks of one ceiling are one size, and the frame's
@@ -360,21 +280,8 @@ static int size_fits(const rl_recog *rec, const rl_image *img, const rl_tone *ot
     if (!(size > 0) || d->radius < (1.0 + RL_TWINS_CUT_SIZE) * size)
         return 1;
     s.radius = size;
-    lead = twin_lead(rec, img, other, &s, rv, n, 0, -1, &fit);
-    return lead + twin_lead(rec, img, rec->tone, &s, rv, n, 0, -1, &fit) > 0;
-}
-
-/* The frame's size for size_fits: the median of the radii r but the
- * i-th, of whole reads (whole[j]) of min_radius or more, where two or more
- * are left (one read alone is no frame's size); 0 otherwise (not known). */
-static double others_size(const double *r, const unsigned char *whole, int n, int i, double min_radius)
-{
-    double v[RL_MAX_LANDMARKS];
-    int j, m = 0;
-    for (j = 0; j < n; j++)
-        if (j != i && whole[j] && r[j] >= min_radius)
-            v[m++] = r[j];
-    return m >= 2 ? rl_median(v, m) : 0.0;
+    lead = rl_twins_lead(rec, img, other, &s, rv, n, 0, -1, &fit);
+    return lead + rl_twins_lead(rec, img, rec->tone, &s, rv, n, 0, -1, &fit) > 0;
 }
 
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
@@ -415,7 +322,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
     for (i = 0; i < all; i++) {
         rl_detection d = res->landmarks[i];
         double lead, own = 0, fit, tol = tolerance(&d, curved), mg;
-        moved_read moved = {0};
+        landmark_reads reads = {0};
         /* a small landmark (under the far radius), whatever the curve */
         int far, small = d.radius < far_radius;
         if (kept != NULL)
@@ -424,7 +331,8 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * local read off its outer edge (RL_TWINS_CUT_BULGE) */
         if (d.radius < min_radius ||
             (d.pass == RL_PASS_LOCAL && !d.complete &&
-             !rl_twins_cut_on_edge(img, rec->tone, res->levels.light, &d, others_median(radii, all, i)))) {
+             !rl_twins_cut_on_edge(img, rec->tone, res->levels.light, &d,
+                                   frame_size(radii, whole, all, i, min_radius)))) {
             rl_result_add_unidentified(res, &d);
             continue;
         }
@@ -439,7 +347,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * curve, read as its twin 18, led every id by 0.051) */
         if ((d.pass == RL_PASS_GLOBAL && (d.complete || !curved) && !small &&
              d.score - d.runner_up >= RL_TWINS_CLEAR) ||
-            (known != NULL && known[i]) || (n = rivals(rec, &d, rv)) == 0) {
+            (known != NULL && known[i]) || (n = rl_twins_rivals(rec, &d, rv)) == 0) {
             keep(res, &kept_n, &d, kept, i);
             continue;
         }
@@ -450,15 +358,16 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * RL_TWINS_CUT_TOLERANCE; read as linear, right reads let the 2.2
          * curve's twin lead by up to 0.006: tolerance 0 there cost 15-25
          * right reads a line at 15-16 px, docs/results.md) */
-        if (curved && d.radius < far_radius && minor_radius(rec, img, res->levels.light, &d, &fit) < min_radius)
+        if (curved && d.radius < far_radius &&
+            minor_radius_once(rec, img, res->levels.light, &d, &reads) < min_radius)
             tol = RL_TWINS_CUT_TOLERANCE;
         /* a local read of a small landmark through a curve, or of a
          * whole one read as linear: its rivals through the other
-         * formation at the radius they fit (twin_lead's far) */
+         * formation at the radius they fit (rl_twins_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (curved ? d.radius < far_radius : d.complete);
-        lead = twin_lead(rec, img, other, &d, rv, n, far, -1, &fit);
-        if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &moved) ||
-                      !size_fits(rec, img, other, &d, rv, n, others_size(radii, whole, all, i, min_radius)))) {
+        lead = rl_twins_lead(rec, img, other, &d, rv, n, far, -1, &fit);
+        if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &reads) ||
+                      !size_fits(rec, img, other, &d, rv, n, frame_size(radii, whole, all, i, min_radius)))) {
             rl_result_add_unidentified(res, &d);
             continue;
         }
@@ -473,15 +382,15 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         /* through the frame's own curve only where the other's lead
          * alone does not keep it (own: 0, the id's lead where it was read) */
         if (!keeps(tol, mg, lead, 0.0))
-            own = twin_lead(rec, img, rec->tone, &d, rv, n, 0, -1, &fit);
+            own = rl_twins_lead(rec, img, rec->tone, &d, rv, n, 0, -1, &fit);
         /* the formations disagree: the read through any monotone curve
          * decides, where the frame's curve reads the id clearly too
          * (RL_TWINS_RANK_OWN) */
         if (keeps(tol, mg, lead, own) ||
-            (rank_fits(&d, curved, others_median(radii, all, i)) && own > RL_TWINS_RANK_OWN &&
+            (rank_fits(&d, curved, frame_size(radii, whole, all, i, min_radius)) && own > RL_TWINS_RANK_OWN &&
              rl_twins_rank_keeps(rec, img, rec->tone, res->levels.light, &d)))
             keep(res, &kept_n, &d, kept, i);
-        else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol, mg, &moved, &lead)) {
+        else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol, mg, &reads, &lead)) {
             /* its runner-up from the reads across the motion it passed */
             d.runner_up = res->landmarks[i].runner_up;
             if (d.score - lead > d.runner_up)

@@ -119,8 +119,8 @@
  * its centre a third of a radius out of the frame: 0.51-0.59 there); the
  * right cut reads from every circle an edge fit could leave measured up to
  * 0.35 (test_search_twins, docs/results.md). Judged only for a read whose
- * radius is RL_TWINS_CUT_SIZE or more over the frame's other landmarks'
- * (rl_twins.c, rl_twins_cut_on_edge). */
+ * radius is RL_TWINS_CUT_SIZE or more over the frame's other whole
+ * landmarks' (rl_twins.c, rl_twins_cut_on_edge). */
 #define RL_TWINS_CUT_BULGE 0.4
 
 /* Code zone 1, the narrowest (next to the outer ring), narrower than this

@@ -10,8 +10,9 @@
  * outer edge is, by the landmark contract (RL_TWINS_CUT_BULGE), the edge
  * the circle fitted to its points along rays from d's circle (one whose
  * edge gives no circle passes). Judged only where d's radius is
- * RL_TWINS_CUT_SIZE or more over size, the frame's other landmarks'
- * (0: none known, always judged): where the search climbed past the
+ * RL_TWINS_CUT_SIZE or more over size, the frame's (the median of its
+ * other whole reads, rl_twins.c's frame_size; 0: none known, always
+ * judged): where the search climbed past the
  * landmark, and only there can it matter (the cut read it refuses was 1.2
  * times the frame's size; right cut reads sit at the border, which the
  * lens makes smaller, and the local pass's taken reads of cut landmarks on

@@ -11,8 +11,8 @@
 
 /* Whether the local read d of a landmark the border cuts lies on its
  * outer edge (RL_TWINS_CUT_BULGE), judged only where its radius is
- * RL_TWINS_CUT_SIZE or more over size, the frame's other landmarks' (0:
- * none known); tone, light: the frame's curve and light level. */
+ * RL_TWINS_CUT_SIZE or more over size, the frame's other whole
+ * landmarks' median radius (0: none known); tone, light: the frame's curve and light level. */
 int rl_twins_cut_on_edge(const rl_image *img, const rl_tone *tone, int light, const rl_detection *d,
                          double size);
 

@@ -32,9 +32,19 @@ typedef struct {
 /* Index of the first landmark with `id` in the map, or -1. */
 int rl_map_find(const rl_map *map, int id);
 
+/* Whether landmark i hangs at the map's ceiling_height (its own z 0). */
+static inline int rl_map_at_ceiling(const rl_map *map, int i)
+{
+    return !(map->lm[i].z > 0.0);
+}
+
 /* Height above the floor of landmark i, metres: its own z, else the map's
- * ceiling_height. */
-double rl_map_height(const rl_map *map, int i);
+ * ceiling_height. Inline: rl_track looks at every landmark of a large map
+ * each frame. */
+static inline double rl_map_height(const rl_map *map, int i)
+{
+    return rl_map_at_ceiling(map, i) ? map->ceiling_height : map->lm[i].z;
+}
 
 /* Each id's height above the floor into h[0 .. RL_MAX_IDS): its
  * landmarks' when they all hang at one height, else (or no such landmark)

@@ -1,0 +1,28 @@
+/* rl_twins_lead: how far a landmark's id leads its rivals (its zone
+ * twins, or every other id for a local read) read through one tone
+ * curve, at its radius and a few percent either side (rl_twins_lead.c
+ * says which scales and why). Internal: rl_twins_check's rules weigh
+ * these leads.
+ *
+ *   int rv[RL_MAX_IDS], n = rl_twins_rivals(rec, &res.landmarks[0], rv);
+ *   double fit, lead = rl_twins_lead(rec, &img, rec->tone, &res.landmarks[0], rv, n, 0, -1, &fit);
+ */
+#ifndef RL_TWINS_LEAD_H
+#define RL_TWINS_LEAD_H
+
+#include "rl_recog_state.h"
+
+/* The ids d is judged against into out (RL_MAX_IDS of room): its zone
+ * twins; for a local read (sector by sector, the centre searched) every
+ * other id of rec's table. Returns how many. */
+int rl_twins_rivals(const rl_recog *rec, const rl_detection *d, int *out);
+
+/* How far d's id leads its best rival of rv[0 .. n) through tone: its
+ * best score over 0.97 .. 1.03 of d's radius (into *fit) less the best
+ * rival's there (with far, over 0.91 .. 1.09).
+ * Gathered about d's centre from every other row of the ring, or, with
+ * axis >= 0 (an rl_motion axis), from that axis's pixels alone. */
+double rl_twins_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
+                     const int *rv, int n, int far, int axis, double *fit);
+
+#endif
