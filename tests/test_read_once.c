@@ -165,15 +165,16 @@ static int old_identify_over(rl_polar *pol, const rl_image *img, double min_firs
                              double *cx, double *cy, double *r, rl_match *m)
 {
     rl_profile p;
+    rl_match_kept keep;
     int ids[LIKELY_IDS], n;
     search_state st;
     double sweep;
     rl_polar_gather(img, &tone, *cx, *cy, *r, LIGHT, SECTOR_MIN_CONTRAST, pol);
     rl_polar_profile(pol, 0, 0, 1.0, &p);
-    rl_match_all(&tt, &p, m);
+    rl_match_all_kept(&tt, &p, m, &keep);
     if (m->id < 0)
         return 1;
-    n = likely_ids(&tt, &p, m, ids);
+    n = likely_ids(&tt, &p, &keep, m, ids);
     rl_match_list_make(&tt, ids, n, m->blur, &st.likely);
     st.x = st.y = 0;
     st.s = 1.0;
