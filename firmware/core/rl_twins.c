@@ -60,10 +60,12 @@ static int every_rival(const rl_detection *d)
  * landmarks of the moving set's frame 036 read as their twins from
  * circles 9-12% short (five reads), kept the wrong ids
  * (test_search_twins). Not for a cut
- * one: on the part left in the frame the wider range lets a rival fit (at
- * gamma 1 it cost two right cut reads of the 28Sep2013 development
- * photos' letter sheets and won one; no wrong cut read was kept without
- * it). */
+ * one over the far radius: on the part left in the frame the wider range
+ * lets a rival fit (at gamma 1 it cost two right cut reads of the 28Sep2013
+ * development photos' letter sheets and won one; no wrong cut read was
+ * kept without it); a small one, read as linear, from a circle 7-11% short
+ * gave its twin the id at the wider range (a cut 24 read as 16, a 25 as
+ * 17, a 29 as 25: fourteenth session, tests/frames/small_linear_twin). */
 static double twin_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
                         const int *rv, int n, int far, int axis, double *fit)
 {
@@ -120,11 +122,12 @@ static int rivals(const rl_recog *rec, const rl_detection *d, int *out)
  * local read and RL_TWINS_CUT_TOLERANCE for a landmark the border cuts.
  * Read as linear, right reads let the 2.2 curve's twin lead by up to 0.006
  * (the 16 px sheets of the development folders at gamma 1, cut ones among
- * them), wrong ones gave it 0.009 or more. */
-static double tolerance(const rl_detection *d, int curved)
+ * them), wrong ones gave it 0.009 or more; but a small local read (small:
+ * under the far radius), none (RL_TWINS_SMALL_LINEAR_TOLERANCE). */
+static double tolerance(const rl_detection *d, int curved, int small)
 {
     if (!curved)
-        return RL_TWINS_TOLERANCE;
+        return small && d->pass == RL_PASS_LOCAL ? RL_TWINS_SMALL_LINEAR_TOLERANCE : RL_TWINS_TOLERANCE;
     if (!d->complete)
         return RL_TWINS_CUT_TOLERANCE;
     return d->pass == RL_PASS_LOCAL ? RL_TWINS_LOCAL_TOLERANCE : RL_TWINS_TOLERANCE;
@@ -414,10 +417,10 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
     }
     for (i = 0; i < all; i++) {
         rl_detection d = res->landmarks[i];
-        double lead, own = 0, fit, tol = tolerance(&d, curved), mg;
         moved_read moved = {0};
         /* a small landmark (under the far radius), whatever the curve */
         int far, small = d.radius < far_radius;
+        double lead, own = 0, fit, tol = tolerance(&d, curved, small), mg;
         if (kept != NULL)
             kept[i] = 0;
         /* too small to tell its twins apart (RL_TWINS_MIN_ZONE_PX); a cut
@@ -452,10 +455,10 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * right reads a line at 15-16 px, docs/results.md) */
         if (curved && d.radius < far_radius && minor_radius(rec, img, res->levels.light, &d, &fit) < min_radius)
             tol = RL_TWINS_CUT_TOLERANCE;
-        /* a local read of a small landmark through a curve, or of a
-         * whole one read as linear: its rivals through the other
-         * formation at the radius they fit (twin_lead's far) */
-        far = d.pass == RL_PASS_LOCAL && (curved ? d.radius < far_radius : d.complete);
+        /* a local read of a small landmark, or of a whole one read as
+         * linear: its rivals through the other formation at the radius
+         * they fit (twin_lead's far) */
+        far = d.pass == RL_PASS_LOCAL && (small || (!curved && d.complete));
         lead = twin_lead(rec, img, other, &d, rv, n, far, -1, &fit);
         if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &moved) ||
                       !size_fits(rec, img, other, &d, rv, n, others_size(radii, whole, all, i, min_radius)))) {
