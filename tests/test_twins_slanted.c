@@ -77,7 +77,7 @@ static void slanted_still_is_not_read_across_a_motion(void **state)
         n = rl_twins_rivals(rec, &d, rv);
         assert_true(n > 0);
         small = r < RL_TWINS_FAR_ZONE_PX / RL_TWINS_MIN_ZONE_PX * rl_twins_min_radius(&rec->templates.fam);
-        tol = tolerance(&d, 1);
+        tol = tolerance(&d, 1, small);
         mg = margin(&d, small);
         /* preconditions: it measures as moved, its edge is flat, and
          * along the sharpest axis its id passes (the guard alone

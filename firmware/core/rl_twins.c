@@ -19,11 +19,12 @@
  * local read and RL_TWINS_CUT_TOLERANCE for a landmark the border cuts.
  * Read as linear, right reads let the 2.2 curve's twin lead by up to 0.006
  * (the 16 px sheets of the development folders at gamma 1, cut ones among
- * them), wrong ones gave it 0.009 or more. */
-static double tolerance(const rl_detection *d, int curved)
+ * them), wrong ones gave it 0.009 or more; but a small local read (small:
+ * under the far radius), none (RL_TWINS_SMALL_LINEAR_TOLERANCE). */
+static double tolerance(const rl_detection *d, int curved, int small)
 {
     if (!curved)
-        return RL_TWINS_TOLERANCE;
+        return small && d->pass == RL_PASS_LOCAL ? RL_TWINS_SMALL_LINEAR_TOLERANCE : RL_TWINS_TOLERANCE;
     if (!d->complete)
         return RL_TWINS_CUT_TOLERANCE;
     return d->pass == RL_PASS_LOCAL ? RL_TWINS_LOCAL_TOLERANCE : RL_TWINS_TOLERANCE;
@@ -321,10 +322,10 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
     }
     for (i = 0; i < all; i++) {
         rl_detection d = res->landmarks[i];
-        double lead, own = 0, fit, tol = tolerance(&d, curved), mg;
         landmark_reads reads = {0};
         /* a small landmark (under the far radius), whatever the curve */
         int far, small = d.radius < far_radius;
+        double lead, own = 0, fit, tol = tolerance(&d, curved, small), mg;
         if (kept != NULL)
             kept[i] = 0;
         /* too small to tell its twins apart (RL_TWINS_MIN_ZONE_PX); a cut
@@ -361,10 +362,10 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         if (curved && d.radius < far_radius &&
             minor_radius_once(rec, img, res->levels.light, &d, &reads) < min_radius)
             tol = RL_TWINS_CUT_TOLERANCE;
-        /* a local read of a small landmark through a curve, or of a
-         * whole one read as linear: its rivals through the other
-         * formation at the radius they fit (rl_twins_lead's far) */
-        far = d.pass == RL_PASS_LOCAL && (curved ? d.radius < far_radius : d.complete);
+        /* a local read of a small landmark, or of a whole one read as
+         * linear: its rivals through the other formation at the radius
+         * they fit (rl_twins_lead's far) */
+        far = d.pass == RL_PASS_LOCAL && (small || (!curved && d.complete));
         lead = rl_twins_lead(rec, img, other, &d, rv, n, far, -1, &fit);
         if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &reads) ||
                       !size_fits(rec, img, other, &d, rv, n, frame_size(radii, whole, all, i, min_radius)))) {

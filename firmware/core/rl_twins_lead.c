@@ -52,10 +52,12 @@ static int every_rival(const rl_detection *d)
  * landmarks of the moving set's frame 036 read as their twins from
  * circles 9-12% short (five reads), kept the wrong ids
  * (test_search_twins). Not for a cut
- * one: on the part left in the frame the wider range lets a rival fit (at
- * gamma 1 it cost two right cut reads of the 28Sep2013 development
- * photos' letter sheets and won one; no wrong cut read was kept without
- * it). */
+ * one over the far radius: on the part left in the frame the wider range
+ * lets a rival fit (at gamma 1 it cost two right cut reads of the 28Sep2013
+ * development photos' letter sheets and won one; no wrong cut read was
+ * kept without it); a small one, read as linear, from a circle 7-11% short
+ * gave its twin the id at the wider range (a cut 24 read as 16, a 25 as
+ * 17, a 29 as 25: fourteenth session, tests/frames/small_linear_twin). */
 double rl_twins_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
                      const int *rv, int n, int far, int axis, double *fit)
 {
