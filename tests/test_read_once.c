@@ -161,20 +161,37 @@ static void old_twin_check(const rl_polar *pol, double x, double y, double s, un
     }
 }
 
+/* the likely ids as the search took them: the best and those one code
+ * zone away that come close, each matched over the bins on its own */
+static int old_likely_ids(const rl_profile *p, const rl_match *m, int *ids)
+{
+    int n = 0, k, bits = tt.fam.bits;
+    ids[n++] = m->id;
+    for (k = 1; k <= bits && n < LIKELY_IDS; k++) {
+        int alt = m->id ^ (1 << (bits - k));
+        rl_match mm;
+        if (!rl_family_valid(&tt.fam, alt))
+            continue;
+        rl_match_ids(&tt, p, &alt, 1, -1, &mm);
+        if (mm.id >= 0 && mm.score > m->second - 0.05)
+            ids[n++] = alt;
+    }
+    return n;
+}
+
 static int old_identify_over(rl_polar *pol, const rl_image *img, double min_first, double min_score,
                              double *cx, double *cy, double *r, rl_match *m)
 {
     rl_profile p;
-    rl_match_kept keep;
     int ids[LIKELY_IDS], n;
     search_state st;
     double sweep;
     rl_polar_gather(img, &tone, *cx, *cy, *r, LIGHT, SECTOR_MIN_CONTRAST, pol);
     rl_polar_profile(pol, 0, 0, 1.0, &p);
-    rl_match_all_kept(&tt, &p, m, &keep);
+    rl_match_all(&tt, &p, m);
     if (m->id < 0)
         return 1;
-    n = likely_ids(&tt, &p, &keep, m, ids);
+    n = old_likely_ids(&p, m, ids);
     rl_match_list_make(&tt, ids, n, m->blur, &st.likely);
     st.x = st.y = 0;
     st.s = 1.0;

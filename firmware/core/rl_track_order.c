@@ -57,4 +57,3 @@ void rl_track_order_spread(rl_track *t, double cu, double cv)
         }
     }
 }
-

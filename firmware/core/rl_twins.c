@@ -358,7 +358,9 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * the formations to disagree at all (as on a cut landmark,
          * RL_TWINS_CUT_TOLERANCE; read as linear, right reads let the 2.2
          * curve's twin lead by up to 0.006: tolerance 0 there cost 15-25
-         * right reads a line at 15-16 px, docs/results.md) */
+         * right reads a line at 15-16 px, docs/results.md; global reads:
+         * a small local read as linear has none,
+         * RL_TWINS_SMALL_LINEAR_TOLERANCE) */
         if (curved && d.radius < far_radius &&
             minor_radius_once(rec, img, res->levels.light, &d, &reads) < min_radius)
             tol = RL_TWINS_CUT_TOLERANCE;

@@ -89,7 +89,8 @@
  * at most (docs/results.md, fourteenth session). */
 #define RL_TWINS_SMALL_LINEAR_TOLERANCE 0.0
 /* A cut landmark read through a curve whose radius is this far (a share)
- * from the frame's landmarks' is not decided by the rank read (rl_twins.c,
+ * from the frame's size (rl_twins.c frame_size: the median of its other
+ * whole reads, two or more) is not decided by the rank read (rl_twins.c,
  * rank_fits); a cut local read this much over them has its circle judged
  * against its outer edge (rl_twins_cut_on_edge, RL_TWINS_CUT_BULGE); a
  * small read this much over them must lead its twins read at their

@@ -8,8 +8,9 @@
 /* Radius scales a landmark and its twins are scored at (the radius was
  * read through one formation and the edge falls elsewhere through the
  * other): the id at 0.97, 1 and 1.03 of it; its rivals there too, or, for
- * a small local read through a curve (RL_TWINS_FAR_ZONE_PX), at 0.91 ..
- * 1.09 (rl_twins_lead's `far`), from one gather at the largest (with `far`
+ * a small local read (RL_TWINS_FAR_ZONE_PX), whole or cut, or a whole
+ * local read in a frame read as linear (rl_twins_check's `far`), at 0.91
+ * .. 1.09, from one gather at the largest (with `far`
  * the id's own three come from coarser bins, so its lead can move either
  * way: no wrong id came of it on the sets here). */
 #define SCALE_STEP 0.03
