@@ -128,13 +128,40 @@ void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m)
         score_table(tt, &z, -1, NULL, m, NULL);
 }
 
+size_t rl_match_kept_bytes(int columns)
+{
+    /* as rl_match_kept_init carves them, each with its worst padding */
+    return sizeof(rl_match_kept) + RL_WS_ALIGN - 1 + (size_t)columns * 3 * sizeof(float) + RL_WS_ALIGN - 1;
+}
+
+rl_err rl_match_kept_init(rl_match_kept **out, rl_ws *ws, const rl_templates *tt)
+{
+    rl_match_kept *k;
+    float *sums;
+    size_t cols = (size_t)tt->stride;
+    rl_err e;
+    if ((e = rl_ws_alloc(ws, sizeof *k, RL_WS_ALIGN, (void **)&k)) != RL_OK ||
+        (e = rl_ws_alloc(ws, cols * 3 * sizeof *sums, RL_WS_ALIGN, (void **)&sums)) != RL_OK)
+        return e;
+    *out = k;
+    if (k == NULL)
+        return RL_OK; /* sizing: nothing handed out */
+    k->state = RL_MATCH_KEPT_NONE; /* none kept yet: a profile is read */
+    k->columns = tt->stride;
+    k->n = k->sx = k->ivx = 0;
+    k->st = sums;
+    k->stt = sums + cols;
+    k->sxt = sums + 2 * cols;
+    return RL_OK;
+}
+
 void rl_match_all_kept(const rl_templates *tt, const rl_profile *p, rl_match *m, rl_match_kept *keep)
 {
     profile_terms z;
     keep->state = RL_MATCH_KEPT_FLAT;
     if (!match_start(p, &z, m))
         return;
-    if (tt->stride > RL_MATCH_KEPT_COLUMNS) {
+    if (tt->stride > keep->columns) {
         keep->state = RL_MATCH_KEPT_NONE; /* past the room: rl_match_kept_ids reads the profile again */
         score_table(tt, &z, -1, NULL, m, NULL);
         return;
