@@ -353,6 +353,8 @@ static void ellipse_twins_once(void **state)
         /* the profile handed out is the ellipse's own, as gathered anew */
         rl_profile_gather_shaped(&img, rec->tone, e.cx, e.cy, e.r, &e.shape, &fresh);
         assert_memory_equal(&p, &fresh, sizeof p);
+        rl_match_all(&tt, &fresh, &om); /* its match */
+        same_match(&m, &om);
         if (m.id < 0)
             continue;
         om = m;
