@@ -531,8 +531,10 @@ static void test_id_and_rest_is_every_other_listed(void **state)
 }
 
 /* rl_match_all_kept is rl_match_all, and rl_match_kept_ids from its sums
- * is rl_match_ids at every blur (the old calls, the oracle), on one id
- * and on lists of ids (the same id twice in some),
+ * (in the caller's block, as rl_match_kept_init carves them; or none kept
+ * where the room is short of the table) is rl_match_ids at every blur
+ * (the old calls, the oracle), on one id and on lists of ids (the same id
+ * twice in some),
  * every field the same bits: whole families of 5 to 8 bits (each id's
  * last block in place) and 8 ids out of order (the last id's block runs
  * past the table: the old call copies it into a list), every id of the
@@ -542,17 +544,31 @@ static void test_kept_sums_are_the_ids_read_again(void **state)
 {
     static unsigned char mem[1 << 19];
     static const int some[] = {9, 3, 30, 17, 1, 22, 12, 5};
-    static rl_match_kept keep;
     int table, trial, j;
     (void)state;
     for (table = 0; table < 5; table++) {
         rl_family fam;
         rl_templates tt;
-        rl_ws ws;
+        rl_match_kept *kp, *none;
+        rl_ws ws, sizing;
+        size_t before;
         fam.bits = table < 4 ? 5 + table : 5;
         rl_ws_init(&ws, mem, sizeof mem);
         assert_int_equal(rl_templates_init(&tt, &ws, &fam, table == 4 ? some : NULL, table == 4 ? 8 : 0), RL_OK);
+        /* the room is the table's columns, 3 floats each, in the caller's
+         * block, and sizing counts what init takes */
+        rl_ws_init_sizing(&sizing);
+        assert_int_equal(rl_match_kept_init(&none, &sizing, &tt), RL_OK);
+        assert_null(none);
+        assert_int_equal(sizing.peak, rl_match_kept_bytes(tt.stride));
+        before = rl_ws_mark(&ws);
+        assert_int_equal(rl_match_kept_init(&kp, &ws, &tt), RL_OK);
+        assert_true(rl_ws_mark(&ws) - before <= rl_match_kept_bytes(tt.stride));
+        assert_true(rl_ws_mark(&ws) - before >= sizeof *kp + (size_t)tt.stride * 3 * sizeof(float));
+        assert_int_equal(kp->columns, tt.stride);
+        assert_true((unsigned char *)kp >= mem && (unsigned char *)(kp->sxt + tt.stride) <= mem + sizeof mem);
         for (trial = 0; trial < 40; trial++) {
+            rl_match_kept keep = *kp;
             int i = (int)(uniform() * tt.n), src = trial % 3 == 0 ? (int)(uniform() * tt.n) : i;
             int b = (int)(uniform() * RL_BLUR_LEVELS), flat;
             rl_profile p;
@@ -561,10 +577,14 @@ static void test_kept_sums_are_the_ids_read_again(void **state)
                 rl_match m, want;
                 if (flat)
                     p.total = 10; /* too few pixels: nothing matched */
+                if (trial % 10 == 9)
+                    keep.columns = tt.stride - RL_MATCH_BLOCK; /* too little room: none kept */
                 rl_match_all_kept(&tt, &p, &m, &keep);
                 rl_match_all(&tt, &p, &want);
                 assert_true(same_match(&m, &want));
-                assert_int_equal(keep.state, flat ? RL_MATCH_KEPT_FLAT : RL_MATCH_KEPT_SUMS);
+                assert_int_equal(keep.state, flat              ? RL_MATCH_KEPT_FLAT
+                                             : trial % 10 == 9 ? RL_MATCH_KEPT_NONE
+                                                               : RL_MATCH_KEPT_SUMS);
                 for (j = -1; j <= tt.n; j++) {
                     /* the table's ids, one under them and one past them */
                     int id = j < 0 ? 0 : j < tt.n ? tt.ids[j] : (1 << fam.bits) - 1;

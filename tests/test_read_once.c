@@ -9,8 +9,11 @@
  * - the search's twin check (rl_search.c) takes its profile at scale 1
  *   from the search (the last profile kept, or the circle's where none
  *   was; across the motion the read's own) instead of making it again.
- *   Oracle: the search and the reads across the motion as they were,
- *   copied below, every profile made.
+ *   Its ids one zone away are scored from the first match's column sums
+ *   (rl_match_kept, in the caller's block) and its twins at scale 1
+ *   from the sums of the profile last matched. Oracle: the search and
+ *   the reads across the motion as they were, copied below, every
+ *   profile made and every id scored on it.
  * - the local pass's ellipse twins (rl_local.c) take the profile at the
  *   ellipse's own radius from local_ellipse. Oracle: every radius
  *   gathered, as before.
@@ -71,6 +74,8 @@ static rl_image draw(int id, double cx, double cy, double r, double flat, int no
     return rl_image_view(W, H, W, px);
 }
 
+static rl_match_kept *kept_sums;
+
 static void setup_templates(void)
 {
     rl_family f = {5};
@@ -78,6 +83,7 @@ static void setup_templates(void)
     rl_tone_init(&tone, 1.0);
     rl_ws_init(&ws, wsmem, sizeof wsmem);
     assert_int_equal(rl_templates_init(&tt, &ws, &f, NULL, 0), RL_OK);
+    assert_int_equal(rl_match_kept_init(&kept_sums, &ws, &tt), RL_OK); /* the search's scratch */
 }
 
 /* A drawn frame and a start near its ring. */
@@ -266,8 +272,8 @@ static void search_twins_once(void **state)
         x = ox = s.x0;
         y = oy = s.y0;
         r = orr = s.r0;
-        got = rl_search_identify_over(&tt, &pol_new, &img, &tone, LIGHT, min_first, min_score, &x, &y, &r,
-                                      &m);
+        got = rl_search_identify_over(&tt, &pol_new, kept_sums, &img, &tone, LIGHT, min_first, min_score, &x, &y,
+                                      &r, &m);
         want = old_identify_over(&pol_old, &img, min_first, min_score, &ox, &oy, &orr, &om);
         assert_int_equal(got, want);
         same_match(&m, &om);
@@ -288,7 +294,7 @@ static void search_twins_once(void **state)
                 reads[n++] = 1u << a | 1u << rl_polar_mirror(a);
                 reads[n++] = 1u << a;
             }
-            rl_search_across_motion(&tt, &pol_new, x, y, r, m.id, RL_BLUR_LEVELS, reads, n, &ma);
+            rl_search_across_motion(&tt, &pol_new, kept_sums, x, y, r, m.id, RL_BLUR_LEVELS, reads, n, &ma);
             old_across_motion(&pol_old, x, y, r, m.id, RL_BLUR_LEVELS, reads, n, &oa);
             same_match(&ma, &oa);
             across += ma.id >= 0;
@@ -348,6 +354,8 @@ static void ellipse_twins_once(void **state)
         /* the profile handed out is the ellipse's own, as gathered anew */
         rl_profile_gather_shaped(&img, rec->tone, e.cx, e.cy, e.r, &e.shape, &fresh);
         assert_memory_equal(&p, &fresh, sizeof p);
+        rl_match_all(&tt, &fresh, &om); /* its match */
+        same_match(&m, &om);
         if (m.id < 0)
             continue;
         om = m;

@@ -40,6 +40,8 @@ static rl_image draw(int id, double cx, double cy, double r)
     return img;
 }
 
+static rl_match_kept *kept_sums;
+
 static void init_templates(rl_templates *tt)
 {
     rl_family f = {5};
@@ -47,6 +49,7 @@ static void init_templates(rl_templates *tt)
     rl_tone_init(&tone, 1.0);
     rl_ws_init(&ws, wsmem, sizeof wsmem);
     assert_int_equal(rl_templates_init(tt, &ws, &f, NULL, 0), RL_OK);
+    assert_int_equal(rl_match_kept_init(&kept_sums, &ws, tt), RL_OK); /* the search's scratch */
 }
 
 static void short_fit_read(void **state)
@@ -61,15 +64,15 @@ static void short_fit_read(void **state)
     init_templates(&tt);
     /* the first match alone (an infinite floor stops every candidate
      * after the step, *m holding the first match): under the floor */
-    assert_int_equal(rl_search_identify_over(&tt, &pol, &img, &tone, LIGHT, INFINITY, 0.75, &x, &y, &r, &first),
-                     0);
+    assert_int_equal(
+        rl_search_identify_over(&tt, &pol, kept_sums, &img, &tone, LIGHT, INFINITY, 0.75, &x, &y, &r, &first), 0);
     printf("first match at 0.92 R: id %d, %.3f\n", first.id, first.score);
     assert_true(first.score < RL_LOCAL_MIN_FIRST);
     assert_true(x == cx && y == cy && r == 0.92 * R); /* the circle unchanged */
     /* the floor: the step out scores over it, so the search runs and reads
      * the id at about the true radius */
     assert_int_equal(
-        rl_search_identify_over(&tt, &pol, &img, &tone, LIGHT, RL_LOCAL_MIN_FIRST, 0.75, &x, &y, &r, &m), 1);
+        rl_search_identify_over(&tt, &pol, kept_sums, &img, &tone, LIGHT, RL_LOCAL_MIN_FIRST, 0.75, &x, &y, &r, &m), 1);
     printf("searched: id %d, %.3f, r %.2f (true %d, %.1f)\n", m.id, m.score, r, id, R);
     assert_int_equal(m.id, id);
     assert_true(m.score >= 0.75); /* the local rule's score */

@@ -241,14 +241,14 @@ static int read_across_axes(const rl_recog *rec, const rl_accept_rule *rule, con
         (rd->m.second > rd->m.score && rl_geom_visible_in(W, H, rd->cx, rd->cy, rd->r) < 1.0))
         return 0;
     n = reads_in_frame(rec->polar, W, H, rd->cx, rd->cy, rd->r, reads, &whole);
-    rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, rule->max_blur,
-                            reads, whole, &ma);
+    rl_search_across_motion(&rec->templates, rec->polar, rec->kept, rd->cx, rd->cy, rd->r, rd->m.id,
+                            rule->max_blur, reads, whole, &ma);
     if (local_accept(rule, &ma, W, H, rd->cx, rd->cy, rd->r, 255.0))
         return 1; /* ma names the circle's id, or none */
     if (half.min_lead < HALF_READ_LEAD)
         half.min_lead = HALF_READ_LEAD;
-    rl_search_across_motion(&rec->templates, rec->polar, rd->cx, rd->cy, rd->r, rd->m.id, rule->max_blur,
-                            reads + whole, n - whole, &ma);
+    rl_search_across_motion(&rec->templates, rec->polar, rec->kept, rd->cx, rd->cy, rd->r, rd->m.id,
+                            rule->max_blur, reads + whole, n - whole, &ma);
     return local_accept(&half, &ma, W, H, rd->cx, rd->cy, rd->r, 255.0);
 }
 
@@ -273,8 +273,8 @@ static int read_from_over(rl_recog *rec, const rl_image *img, int light, const r
     s.cx = cx;
     s.cy = cy;
     s.r = r;
-    if (!rl_search_identify_over(&rec->templates, rec->polar, img, rec->tone, light, min_first, rule->min_score,
-                                 &s.cx, &s.cy, &s.r, &s.m))
+    if (!rl_search_identify_over(&rec->templates, rec->polar, rec->kept, img, rec->tone, light, min_first,
+                                 rule->min_score, &s.cx, &s.cy, &s.r, &s.m))
         return -1;
     if (!local_accept(rule, &s.m, rec->width, rec->height, s.cx, s.cy, s.r, 255.0))
         return 0;
@@ -360,7 +360,7 @@ static int first_read(rl_recog *rec, const rl_image *img, int light, const rl_de
                       const rl_accept_rule *rule, local_read *rd, int *floored)
 {
     int whole = rl_local_whole(rec->width, rec->height, u, rd->cx, rd->cy, rd->r);
-    if (rl_search_identify_over(&rec->templates, rec->polar, img, rec->tone, light,
+    if (rl_search_identify_over(&rec->templates, rec->polar, rec->kept, img, rec->tone, light,
                                 whole ? min_first : -INFINITY, rule->min_score, &rd->cx, &rd->cy, &rd->r, &rd->m))
         return 1;
     if (floored)

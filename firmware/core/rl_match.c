@@ -96,19 +96,34 @@ static inline void score_table(const rl_templates *tt, const profile_terms *z, i
 {
     int ncol = tt->n * RL_BLUR_LEVELS, c0, c, i = 0, b = 0;
     for (c0 = 0; c0 < ncol;) {
-        float bst[WIDE_COLUMNS], bstt[WIDE_COLUMNS], bsxt[WIDE_COLUMNS];
-        float *st = keep ? keep->st + c0 : bst, *stt = keep ? keep->stt + c0 : bstt,
-              *sxt = keep ? keep->sxt + c0 : bsxt;
-        int nc;
+        float st[WIDE_COLUMNS], stt[WIDE_COLUMNS], sxt[WIDE_COLUMNS];
+        int nc, nk; /* columns kept, and the kernel's (whole blocks) */
         if (c0 + WIDE_COLUMNS <= tt->stride && ncol - c0 > WIDE_COLUMNS - RL_MATCH_BLOCK) {
             const float *blocks[RL_MATCH_WIDE];
             nc = ncol - c0 < WIDE_COLUMNS ? ncol - c0 : WIDE_COLUMNS;
             for (c = 0; c < RL_MATCH_WIDE; c++)
                 blocks[c] = tt->table + c0 + c * RL_MATCH_BLOCK;
             rl_match_kernel_wide(blocks, RL_MATCH_WIDE, (size_t)tt->stride, z->fn, z->fs, st, stt, sxt);
+            nk = WIDE_COLUMNS;
         } else {
             nc = ncol - c0 < RL_MATCH_BLOCK ? ncol - c0 : RL_MATCH_BLOCK;
             rl_match_kernel(tt->table + c0, (size_t)tt->stride, z->fn, z->fs, st, stt, sxt);
+            nk = RL_MATCH_BLOCK;
+        }
+        if (keep) {
+            /* the kernel's whole blocks copied (within the stride: c0 + nk
+             * <= stride); scored from the stack as without (the compiler
+             * moves three pointers a column over the kept arrays, 2 more
+             * instructions a column) */
+            if (nk == WIDE_COLUMNS) {
+                memcpy(keep->st + c0, st, sizeof st);
+                memcpy(keep->stt + c0, stt, sizeof stt);
+                memcpy(keep->sxt + c0, sxt, sizeof sxt);
+            } else {
+                memcpy(keep->st + c0, st, RL_MATCH_BLOCK * sizeof *st);
+                memcpy(keep->stt + c0, stt, RL_MATCH_BLOCK * sizeof *stt);
+                memcpy(keep->sxt + c0, sxt, RL_MATCH_BLOCK * sizeof *sxt);
+            }
         }
         for (c = 0; c < nc; c++) {
             keep_column(own != NULL && tt->ids[i] == id ? own : m, z, tt->ids[i], b, st[c], stt[c], sxt[c]);
@@ -128,13 +143,40 @@ void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m)
         score_table(tt, &z, -1, NULL, m, NULL);
 }
 
+size_t rl_match_kept_bytes(int columns)
+{
+    /* as rl_match_kept_init carves them, each with its worst padding */
+    return sizeof(rl_match_kept) + RL_WS_ALIGN - 1 + (size_t)columns * 3 * sizeof(float) + RL_WS_ALIGN - 1;
+}
+
+rl_err rl_match_kept_init(rl_match_kept **out, rl_ws *ws, const rl_templates *tt)
+{
+    rl_match_kept *k;
+    float *sums;
+    size_t cols = (size_t)tt->stride;
+    rl_err e;
+    if ((e = rl_ws_alloc(ws, sizeof *k, RL_WS_ALIGN, (void **)&k)) != RL_OK ||
+        (e = rl_ws_alloc(ws, cols * 3 * sizeof *sums, RL_WS_ALIGN, (void **)&sums)) != RL_OK)
+        return e;
+    *out = k;
+    if (k == NULL)
+        return RL_OK; /* sizing: nothing handed out */
+    k->state = RL_MATCH_KEPT_NONE; /* none kept yet: a profile is read */
+    k->columns = tt->stride;
+    k->n = k->sx = k->ivx = 0;
+    k->st = sums;
+    k->stt = sums + cols;
+    k->sxt = sums + 2 * cols;
+    return RL_OK;
+}
+
 void rl_match_all_kept(const rl_templates *tt, const rl_profile *p, rl_match *m, rl_match_kept *keep)
 {
     profile_terms z;
     keep->state = RL_MATCH_KEPT_FLAT;
     if (!match_start(p, &z, m))
         return;
-    if (tt->stride > RL_MATCH_KEPT_COLUMNS) {
+    if (tt->stride > keep->columns) {
         keep->state = RL_MATCH_KEPT_NONE; /* past the room: rl_match_kept_ids reads the profile again */
         score_table(tt, &z, -1, NULL, m, NULL);
         return;

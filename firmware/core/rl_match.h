@@ -44,16 +44,26 @@ void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m);
 /* Every column's sums against one profile (the columns of the table,
  * padded to whole blocks), kept by rl_match_all_kept so that single ids
  * can be scored again from them (rl_match_kept_ids) without a walk over
- * the bins. Up to RL_MATCH_KEPT_COLUMNS columns (RL_MAX_IDS ids); a
- * larger table keeps none and rl_match_kept_ids reads the profile. */
-#define RL_MATCH_KEPT_COLUMNS \
-    ((RL_MAX_IDS * RL_BLUR_LEVELS + RL_MATCH_BLOCK - 1) / RL_MATCH_BLOCK * RL_MATCH_BLOCK)
+ * the bins. The three arrays are the caller's memory, carved from a
+ * workspace by rl_match_kept_init for one table's columns (its stride:
+ * 3 x 4 bytes a column); a table wider than that keeps none and
+ * rl_match_kept_ids reads the profile. */
 enum { RL_MATCH_KEPT_FLAT, RL_MATCH_KEPT_SUMS, RL_MATCH_KEPT_NONE };
 typedef struct {
     int state;            /* RL_MATCH_KEPT_*: a flat profile, the sums, none kept */
+    int columns;          /* room: the columns each array holds */
     double n, sx, ivx;    /* the profile's pixels, their sum, 1 / sqrt(variance term) */
-    float st[RL_MATCH_KEPT_COLUMNS], stt[RL_MATCH_KEPT_COLUMNS], sxt[RL_MATCH_KEPT_COLUMNS];
+    float *st, *stt, *sxt;
 } rl_match_kept;
+
+/* Bytes rl_match_kept_init takes from a workspace for a table of
+ * `columns` columns (its stride), the rl_match_kept included. */
+size_t rl_match_kept_bytes(int columns);
+
+/* An rl_match_kept with room for tt's columns, carved from ws into *out
+ * (NULL while ws is sizing); none kept yet. RL_ENOMEM when ws is too
+ * small. */
+RL_CHECK rl_err rl_match_kept_init(rl_match_kept **out, rl_ws *ws, const rl_templates *tt);
 
 /* rl_match_all, each column's sums kept into *keep (the same match, bit
  * for bit). */

@@ -108,7 +108,8 @@ static rl_err layout(rl_ws *ws, const rl_recog_config *cfg, int w, int h, rl_rec
         (e = rl_label_init(&r->light, ws, w, (h + 1) / 2, runs / 4, RL_MAX_LIGHTS * 8)) != RL_OK ||
         (e = rl_illum_init(&r->illum, ws, w, h)) != RL_OK ||
         (e = rl_split_init(&r->split, ws, &r->illum.map)) != RL_OK ||
-        (e = rl_ws_alloc(ws, sizeof(rl_polar), RL_WS_ALIGN, (void **)&r->polar)) != RL_OK)
+        (e = rl_ws_alloc(ws, sizeof(rl_polar), RL_WS_ALIGN, (void **)&r->polar)) != RL_OK ||
+        (e = rl_match_kept_init(&r->kept, ws, &r->templates)) != RL_OK)
         return e;
     return RL_OK;
 }

@@ -19,6 +19,7 @@
 
 #include "rl_illum.h"
 #include "rl_label.h"
+#include "rl_match.h"
 #include "rl_polar.h"
 #include "rl_recog.h"
 #include "rl_rivals.h"
@@ -41,6 +42,7 @@ struct rl_recog {
     rl_illum illum; /* the ceiling's light across the frame: per-tile thresholds */
     rl_split split; /* the second labellings' thresholds */
     rl_polar *polar;/* a local-pass candidate in polar cells */
+    rl_match_kept *kept; /* a local-pass match's column sums, for its twins (rl_search, rl_local) */
 };
 
 #endif

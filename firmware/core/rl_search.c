@@ -130,12 +130,11 @@ static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, do
     }
 }
 
-void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double cx, double cy,
-                             double r, int id, int max_blur, const unsigned *reads, int n_reads,
+void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, rl_match_kept *keep, double cx,
+                             double cy, double r, int id, int max_blur, const unsigned *reads, int n_reads,
                              rl_match *m)
 {
     double x = cx - pol->cx, y = cy - pol->cy, s = r / pol->r;
-    rl_match_kept keep; /* each read's sums, for its twins */
     int a;
     m->id = -1;
     m->score = m->second = m->contrast = 0;
@@ -144,39 +143,38 @@ void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double
         rl_profile p;
         rl_match ma;
         rl_polar_profile_octants(pol, x, y, s, reads[a], &p);
-        rl_match_all_kept(tt, &p, &ma, &keep);
+        rl_match_all_kept(tt, &p, &ma, keep);
         if (ma.id != id || ma.blur > max_blur)
             continue; /* another code, or smeared: along the motion */
         if (m->id >= 0 && ma.second >= 0 && rl_accept_lead(&ma) <= rl_accept_lead(m))
             continue; /* its twins only lower its lead (a runner-up at or over 0): it cannot lead */
-        twin_check(tt, pol, x, y, s, reads[a], &p, &keep, &ma);
+        twin_check(tt, pol, x, y, s, reads[a], &p, keep, &ma);
         if (m->id < 0 || rl_accept_lead(&ma) > rl_accept_lead(m))
             *m = ma;
     }
 }
 
-void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *img,
+void rl_search_identify(const rl_templates *tt, rl_polar *pol, rl_match_kept *keep, const rl_image *img,
                         const rl_tone *tone, int light, double min_score, double *cx, double *cy,
                         double *r, rl_match *m)
 {
-    (void)rl_search_identify_over(tt, pol, img, tone, light, -INFINITY, min_score, cx, cy, r, m);
+    (void)rl_search_identify_over(tt, pol, keep, img, tone, light, -INFINITY, min_score, cx, cy, r, m);
 }
 
-int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_image *img,
+int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, rl_match_kept *keep, const rl_image *img,
                             const rl_tone *tone, int light, double min_first, double min_score, double *cx,
                             double *cy, double *r, rl_match *m)
 {
     rl_profile p;
-    rl_match_kept keep; /* every column's sums of the first match */
     int ids[LIKELY_IDS], n;
     search_state st;
     double sweep;
     rl_polar_gather(img, tone, *cx, *cy, *r, light, SECTOR_MIN_CONTRAST, pol);
     rl_polar_profile(pol, 0, 0, 1.0, &p);
-    rl_match_all_kept(tt, &p, m, &keep);
+    rl_match_all_kept(tt, &p, m, keep);
     if (m->id < 0)
         return 1;
-    n = likely_ids(tt, &p, &keep, m, ids);
+    n = likely_ids(tt, &p, keep, m, ids);
     rl_match_list_make(tt, ids, n, m->blur, &st.likely);
     st.x = st.y = 0;
     st.s = 1.0;
@@ -189,12 +187,12 @@ int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_imag
     if (st.x != 0 || st.y != 0 || st.s != 1.0) {
         /* every id at every blur where the search ended (its profile as
          * the search made it) */
-        rl_match_all_kept(tt, &st.best, m, &keep);
+        rl_match_all_kept(tt, &st.best, m, keep);
         *cx += st.x;
         *cy += st.y;
         *r *= st.s;
     }
     if (m->id >= 0 && m->score >= min_score)
-        twin_check(tt, pol, st.x, st.y, st.s, RL_POLAR_ALL, &st.best, &keep, m); /* keep: st.best's sums */
+        twin_check(tt, pol, st.x, st.y, st.s, RL_POLAR_ALL, &st.best, keep, m); /* keep: st.best's sums */
     return 1;
 }

@@ -17,7 +17,9 @@
  * their best counts as the runner-up.
  *
  *   rl_match m;
- *   rl_search_identify(&tt, pol, &img, &tone, light, 0.75, &cx, &cy, &r, &m);
+ *   rl_match_kept *keep;                              // the caller's memory
+ *   if (rl_match_kept_init(&keep, &ws, &tt) == RL_OK) // once, for tt
+ *       rl_search_identify(&tt, pol, keep, &img, &tone, light, 0.75, &cx, &cy, &r, &m);
  *   use(m.id, cx, cy, r);
  */
 #ifndef RL_SEARCH_H
@@ -32,13 +34,15 @@
 #define RL_SEARCH_TWIN_SCALES 4
 extern const double rl_search_twin_scale[RL_SEARCH_TWIN_SCALES];
 
-/* Identify the candidate at (*cx, *cy, *r) with pol as scratch; the
+/* Identify the candidate at (*cx, *cy, *r) with pol and keep as scratch
+ * (keep: the first match's column sums, for the ids one zone away; made
+ * by rl_match_kept_init for tt); the
  * centre and radius are updated to the best fit, the match of every id
  * there is in *m (m->id < 0: nothing matched). The ids one zone from
  * the winner are scored only when it scores at least min_score (the rule's): under
  * it no rule takes the match whatever its runner-up, and m->second is the
  * runner-up over every id alone (-INFINITY: always scored). */
-void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *img,
+void rl_search_identify(const rl_templates *tt, rl_polar *pol, rl_match_kept *keep, const rl_image *img,
                         const rl_tone *tone, int light, double min_score, double *cx, double *cy,
                         double *r, rl_match *m);
 
@@ -48,7 +52,7 @@ void rl_search_identify(const rl_templates *tt, rl_polar *pol, const rl_image *i
  * larger: the step for edge fits glare makes short) scores min_first: 0
  * then, the first match in *m and the circle unchanged; else 1 and the
  * whole search (also when nothing matched, m->id < 0). */
-int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_image *img,
+int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, rl_match_kept *keep, const rl_image *img,
                             const rl_tone *tone, int light, double min_first, double min_score, double *cx,
                             double *cy, double *r, rl_match *m);
 
@@ -60,9 +64,10 @@ int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, const rl_imag
  * Of the reads whose best id is `id`, the one where it leads its
  * runner-up (every id one zone from it there included) most, into *m;
  * m->id < 0 when none reads `id` at a blur level up to max_blur (a read
- * along the motion matches the softest). */
-void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, double cx, double cy,
-                             double r, int id, int max_blur, const unsigned *reads, int n_reads,
+ * along the motion matches the softest). keep is scratch, as
+ * rl_search_identify's. */
+void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, rl_match_kept *keep, double cx,
+                             double cy, double r, int id, int max_blur, const unsigned *reads, int n_reads,
                              rl_match *m);
 
 #endif
