@@ -288,7 +288,11 @@ static int was_known(const rl_track *t, int index)
  * (within `shift` radii; the read into *d): first verified there
  * (rl_verify); when that is not clear and `full` is 1, as the global pass
  * reads a candidate whose box is the predicted one (a whole landmark),
- * else as the local pass reads one (its own window and threshold). */
+ * else as the local pass reads one (its own window and threshold). A box
+ * read that takes another id, its circle whole, ends it there: the window
+ * holds another landmark (the prediction failed; the frame is read in
+ * full), and the local read after it (some 500,000 instructions) never
+ * took the window's own id on the bench's drives (docs/tracking.md). */
 static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, const rl_track_window *w,
                        double shift, int full, const rl_result *res, rl_detection *d)
 {
@@ -313,10 +317,15 @@ static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, co
         rl_verify_read_border(rec, img, res, w->id, known, w->u, w->v, w->radius, d) && verifies(w, shift, d))
         return 1;
     window_candidate(w, img->width, img->height, &u);
-    if (u.complete && (read_box(rec, img, res, &u, d) == w->id ||
-                       (hypot(d->u - u.u, d->v - u.v) > BOX_RETRY_PX && read_box(rec, img, res, d, d) == w->id)) &&
-        verifies(w, shift, d))
-        return 1;
+    if (u.complete) {
+        int id = read_box(rec, img, res, &u, d);
+        if (id != w->id && hypot(d->u - u.u, d->v - u.v) > BOX_RETRY_PX)
+            id = read_box(rec, img, res, d, d);
+        if (id == w->id && verifies(w, shift, d))
+            return 1;
+        if (id >= 0 && id != w->id && d->complete)
+            return 0; /* another landmark there */
+    }
     return w->visible >= t->cfg.window_visible && rl_local_read(rec, img, res, &u, w->radius, d) &&
            verifies(w, shift, d);
 }
