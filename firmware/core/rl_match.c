@@ -90,7 +90,7 @@ static void score_block(const float *t, size_t stride, int nc, const int *ids, c
  * table order, as wide a block at a time as the table holds (each
  * column's sums the same bits either way); id's columns kept in *own and
  * the rest in *m, or all in *m when own is NULL. Where keep is not NULL
- * the sums are summed into it (column c at c) rather than thrown away. */
+ * the sums are copied into it (column c at c) rather than thrown away. */
 static inline void score_table(const rl_templates *tt, const profile_terms *z, int id, rl_match *own, rl_match *m,
                                rl_match_kept *keep)
 {

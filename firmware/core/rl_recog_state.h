@@ -42,7 +42,7 @@ struct rl_recog {
     rl_illum illum; /* the ceiling's light across the frame: per-tile thresholds */
     rl_split split; /* the second labellings' thresholds */
     rl_polar *polar;/* a local-pass candidate in polar cells */
-    rl_match_kept *kept; /* a local-pass match's column sums, for its twins (rl_search, rl_local) */
+    rl_match_kept *kept; /* a local-pass match's column sums, for the ids one zone away and its twins (rl_search, rl_local) */
 };
 
 #endif

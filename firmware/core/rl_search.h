@@ -18,9 +18,10 @@
  *
  *   rl_match m;
  *   rl_match_kept *keep;                              // the caller's memory
- *   if (rl_match_kept_init(&keep, &ws, &tt) == RL_OK) // once, for tt
+ *   if (rl_match_kept_init(&keep, &ws, &tt) == RL_OK) { // once, for tt
  *       rl_search_identify(&tt, pol, keep, &img, &tone, light, 0.75, &cx, &cy, &r, &m);
- *   use(m.id, cx, cy, r);
+ *       use(m.id, cx, cy, r);
+ *   }
  */
 #ifndef RL_SEARCH_H
 #define RL_SEARCH_H

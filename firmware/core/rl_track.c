@@ -289,9 +289,9 @@ static int was_known(const rl_track *t, int index)
  * (rl_verify); when that is not clear and `full` is 1, as the global pass
  * reads a candidate whose box is the predicted one (a whole landmark),
  * else as the local pass reads one (its own window and threshold). A box
- * read that takes another id, its circle whole, ends it there: the window
- * holds another landmark (the prediction failed; the frame is read in
- * full), and the local read after it (some 500,000 instructions) never
+ * read that takes another id, its circle whole in the frame, ends a whole
+ * window (is_whole) there: the window holds another landmark (the
+ * prediction failed; the frame is read in full), and the local read after it (some 500,000 instructions) never
  * took the window's own id on the bench's drives (docs/tracking.md). */
 static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, const rl_track_window *w,
                        double shift, int full, const rl_result *res, rl_detection *d)
@@ -323,8 +323,11 @@ static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, co
             id = read_box(rec, img, res, d, d);
         if (id == w->id && verifies(w, shift, d))
             return 1;
-        if (id >= 0 && id != w->id && d->complete)
-            return 0; /* another landmark there */
+        /* another landmark there, in a window whose failure reads the
+         * frame in full (is_whole) */
+        if (id >= 0 && id != w->id && is_whole(w, img->width, img->height) &&
+            rl_geom_disk_complete(img->width, img->height, d->u, d->v, d->radius))
+            return 0;
     }
     return w->visible >= t->cfg.window_visible && rl_local_read(rec, img, res, &u, w->radius, d) &&
            verifies(w, shift, d);

@@ -15,7 +15,9 @@
  * where a zone twin fits as well at its own radius: rl_verify; next to the border,
  * from its visible edge: rl_verify_read_border), else as
  * the global pass reads a candidate whose box is the prediction, else,
- * for a landmark about whole, as the local pass reads
+ * for a landmark about whole (unless the box read named another id at a
+ * circle whole in the frame, in a whole window: the frame is then read in
+ * full), as the local pass reads
  * one (a window with its own threshold, rl_local; for one the border cuts,
  * only while fewer than 3 were read); a read is kept only when it names the
  * predicted id within max_first_shift radii (the first) or max_shift
