@@ -19,12 +19,12 @@
  * local read and RL_TWINS_CUT_TOLERANCE for a landmark the border cuts.
  * Read as linear, right reads let the 2.2 curve's twin lead by up to 0.006
  * (the 16 px sheets of the development folders at gamma 1, cut ones among
- * them), wrong ones gave it 0.009 or more; but a small local read (small:
- * under the far radius), none (RL_TWINS_SMALL_LINEAR_TOLERANCE). */
+ * them), wrong ones gave it 0.009 or more; but a small read (small: under
+ * the far radius), local or global, none (RL_TWINS_SMALL_LINEAR_TOLERANCE). */
 static double tolerance(const rl_detection *d, int curved, int small)
 {
     if (!curved)
-        return small && d->pass == RL_PASS_LOCAL ? RL_TWINS_SMALL_LINEAR_TOLERANCE : RL_TWINS_TOLERANCE;
+        return small ? RL_TWINS_SMALL_LINEAR_TOLERANCE : RL_TWINS_TOLERANCE;
     if (!d->complete)
         return RL_TWINS_CUT_TOLERANCE;
     return d->pass == RL_PASS_LOCAL ? RL_TWINS_LOCAL_TOLERANCE : RL_TWINS_TOLERANCE;
@@ -325,7 +325,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         landmark_reads reads = {0};
         /* a small landmark (under the far radius), whatever the curve */
         int far, small = d.radius < far_radius;
-        double lead, own = 0, fit, tol = tolerance(&d, curved, small), mg;
+        double lead, own = 0, fit, wide_fit, tol = tolerance(&d, curved, small), mg;
         if (kept != NULL)
             kept[i] = 0;
         /* too small to tell its twins apart (RL_TWINS_MIN_ZONE_PX); a cut
@@ -358,8 +358,8 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * the formations to disagree at all (as on a cut landmark,
          * RL_TWINS_CUT_TOLERANCE; read as linear, right reads let the 2.2
          * curve's twin lead by up to 0.006: tolerance 0 there cost 15-25
-         * right reads a line at 15-16 px, docs/results.md; global reads:
-         * a small local read as linear has none,
+         * right reads a line at 15-16 px, docs/results.md; a small read
+         * as linear, local or global, has none,
          * RL_TWINS_SMALL_LINEAR_TOLERANCE) */
         if (curved && d.radius < far_radius &&
             minor_radius_once(rec, img, res->levels.light, &d, &reads) < min_radius)
@@ -369,6 +369,12 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * they fit (rl_twins_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (small || (!curved && d.complete));
         lead = rl_twins_lead(rec, img, other, &d, rv, n, far, -1, &fit);
+        /* a small global read as linear: its rivals at 0.91 .. 1.09 too,
+         * the lesser lead (a sharpening after the 2.2 curve leaves its box's
+         * radius 7-11% short; the wider range alone, from coarser bins, let
+         * a 24 read as 16 lead by -0.0003 where 3% had it -0.0097) */
+        if (!curved && small && d.pass != RL_PASS_LOCAL)
+            lead = fmin(lead, rl_twins_lead(rec, img, other, &d, rv, n, 1, -1, &wide_fit));
         if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &reads) ||
                       !size_fits(rec, img, other, &d, rv, n, frame_size(radii, whole, all, i, min_radius)))) {
             rl_result_add_unidentified(res, &d);
