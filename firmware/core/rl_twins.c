@@ -285,6 +285,19 @@ static int size_fits(const rl_recog *rec, const rl_image *img, const rl_tone *ot
     return lead + rl_twins_lead(rec, img, rec->tone, &s, rv, n, 0, -1, &fit) > 0;
 }
 
+/* d's lead over its rivals rv through the other formation (rl_twins_lead;
+ * far as rl_twins_check_known chose it), its fit into *fit; with wide (a
+ * small global read as linear) at 0.91 .. 1.09 too, the lesser lead: a
+ * sharpening after the 2.2 curve leaves its box's radius 7-11% short, and
+ * the wider range alone, from coarser bins, let a 24 read as 16 lead by
+ * -0.0003 where 3% had it -0.0097 (docs/results.md, fourteenth session). */
+static double other_lead(const rl_recog *rec, const rl_image *img, const rl_tone *other, const rl_detection *d,
+                         const int *rv, int n, int far, int wide, double *fit)
+{
+    double wide_fit, lead = rl_twins_lead(rec, img, other, d, rv, n, far, -1, fit);
+    return wide ? fmin(lead, rl_twins_lead(rec, img, other, d, rv, n, 1, -1, &wide_fit)) : lead;
+}
+
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
 static void keep(rl_result *res, int *n, const rl_detection *d, unsigned char *kept, int i)
 {
@@ -325,7 +338,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         landmark_reads reads = {0};
         /* a small landmark (under the far radius), whatever the curve */
         int far, small = d.radius < far_radius;
-        double lead, own = 0, fit, wide_fit, tol = tolerance(&d, curved, small), mg;
+        double lead, own = 0, fit, tol = tolerance(&d, curved, small), mg;
         if (kept != NULL)
             kept[i] = 0;
         /* too small to tell its twins apart (RL_TWINS_MIN_ZONE_PX); a cut
@@ -368,13 +381,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * linear: its rivals through the other formation at the radius
          * they fit (rl_twins_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (small || (!curved && d.complete));
-        lead = rl_twins_lead(rec, img, other, &d, rv, n, far, -1, &fit);
-        /* a small global read as linear: its rivals at 0.91 .. 1.09 too,
-         * the lesser lead (a sharpening after the 2.2 curve leaves its box's
-         * radius 7-11% short; the wider range alone, from coarser bins, let
-         * a 24 read as 16 lead by -0.0003 where 3% had it -0.0097) */
-        if (!curved && small && d.pass != RL_PASS_LOCAL)
-            lead = fmin(lead, rl_twins_lead(rec, img, other, &d, rv, n, 1, -1, &wide_fit));
+        lead = other_lead(rec, img, other, &d, rv, n, far, !curved && small && d.pass != RL_PASS_LOCAL, &fit);
         if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &reads) ||
                       !size_fits(rec, img, other, &d, rv, n, frame_size(radii, whole, all, i, min_radius)))) {
             rl_result_add_unidentified(res, &d);
