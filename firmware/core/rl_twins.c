@@ -19,12 +19,12 @@
  * local read and RL_TWINS_CUT_TOLERANCE for a landmark the border cuts.
  * Read as linear, right reads let the 2.2 curve's twin lead by up to 0.006
  * (the 16 px sheets of the development folders at gamma 1, cut ones among
- * them), wrong ones gave it 0.009 or more; but a small local read (small:
- * under the far radius), none (RL_TWINS_SMALL_LINEAR_TOLERANCE). */
+ * them), wrong ones gave it 0.009 or more; but a small read (small: under
+ * the far radius), local or global, none (RL_TWINS_SMALL_LINEAR_TOLERANCE). */
 static double tolerance(const rl_detection *d, int curved, int small)
 {
     if (!curved)
-        return small && d->pass == RL_PASS_LOCAL ? RL_TWINS_SMALL_LINEAR_TOLERANCE : RL_TWINS_TOLERANCE;
+        return small ? RL_TWINS_SMALL_LINEAR_TOLERANCE : RL_TWINS_TOLERANCE;
     if (!d->complete)
         return RL_TWINS_CUT_TOLERANCE;
     return d->pass == RL_PASS_LOCAL ? RL_TWINS_LOCAL_TOLERANCE : RL_TWINS_TOLERANCE;
@@ -285,6 +285,19 @@ static int size_fits(const rl_recog *rec, const rl_image *img, const rl_tone *ot
     return lead + rl_twins_lead(rec, img, rec->tone, &s, rv, n, 0, -1, &fit) > 0;
 }
 
+/* d's lead over its rivals rv through the other formation (rl_twins_lead;
+ * far as rl_twins_check_known chose it), its fit into *fit; with wide (a
+ * small global read as linear) at 0.91 .. 1.09 too, the lesser lead: a
+ * sharpening after the 2.2 curve leaves its box's radius 7-11% short, and
+ * the wider range alone, from coarser bins, let a 24 read as 16 lead by
+ * -0.0003 where 3% had it -0.0097 (docs/results.md, fourteenth session). */
+static double other_lead(const rl_recog *rec, const rl_image *img, const rl_tone *other, const rl_detection *d,
+                         const int *rv, int n, int far, int wide, double *fit)
+{
+    double wide_fit, lead = rl_twins_lead(rec, img, other, d, rv, n, far, -1, fit);
+    return wide ? fmin(lead, rl_twins_lead(rec, img, other, d, rv, n, 1, -1, &wide_fit)) : lead;
+}
+
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
 static void keep(rl_result *res, int *n, const rl_detection *d, unsigned char *kept, int i)
 {
@@ -358,8 +371,8 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * the formations to disagree at all (as on a cut landmark,
          * RL_TWINS_CUT_TOLERANCE; read as linear, right reads let the 2.2
          * curve's twin lead by up to 0.006: tolerance 0 there cost 15-25
-         * right reads a line at 15-16 px, docs/results.md; global reads:
-         * a small local read as linear has none,
+         * right reads a line at 15-16 px, docs/results.md; a small read
+         * as linear, local or global, has none,
          * RL_TWINS_SMALL_LINEAR_TOLERANCE) */
         if (curved && d.radius < far_radius &&
             minor_radius_once(rec, img, res->levels.light, &d, &reads) < min_radius)
@@ -368,7 +381,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * linear: its rivals through the other formation at the radius
          * they fit (rl_twins_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (small || (!curved && d.complete));
-        lead = rl_twins_lead(rec, img, other, &d, rv, n, far, -1, &fit);
+        lead = other_lead(rec, img, other, &d, rv, n, far, !curved && small && d.pass != RL_PASS_LOCAL, &fit);
         if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &reads) ||
                       !size_fits(rec, img, other, &d, rv, n, frame_size(radii, whole, all, i, min_radius)))) {
             rl_result_add_unidentified(res, &d);
