@@ -51,16 +51,21 @@ void rl_hist_compute_rows(const rl_image *img, rl_hist *h, int row_step)
     h->total = (uint32_t)img->width * (uint32_t)((img->height + row_step - 1) / row_step);
 }
 
-/* Exact K-means by dynamic programming over `n` bins of (count, sum,
- * sum of squares): bins can be single grey levels or groups of them. b[m]
- * gets the first bin of cluster m, b[k] = n. */
+/* Grey levels per coarse bin for the first, exact-on-groups pass, and
+ * the most coarse bins a histogram has. */
+#define COARSE 4
+#define COARSE_BINS ((256 + COARSE - 1) / COARSE)
+
+/* Exact K-means by dynamic programming over `n` (at most COARSE_BINS)
+ * groups of grey levels given as prefix sums of (count, sum, sum of
+ * squares). b[m] gets the first bin of cluster m, b[k] = n. */
 static void kmeans_dp(const double *cnt, const double *sum, const double *sq, int n, int k,
                       int *b)
 {
     /* prefix sums make the within-cluster squared error of a bin range
      * O(1); D[m][j] is the least error of m + 1 clusters over bins 0..j */
-    double D[3][256];
-    int arg[3][256], i, j, m;
+    double D[3][COARSE_BINS];
+    int arg[3][COARSE_BINS], i, j, m;
 #define COST(a, z)                                                                           \
     ((cnt[(z) + 1] - cnt[a]) > 0 ? (sq[(z) + 1] - sq[a]) - (sum[(z) + 1] - sum[a]) *      \
                                                                (sum[(z) + 1] - sum[a]) /  \
@@ -94,14 +99,11 @@ static void kmeans_dp(const double *cnt, const double *sum, const double *sq, in
     }
 }
 
-/* Grey levels per coarse bin for the first, exact-on-groups pass. */
-#define COARSE 4
-
 /* 1. The exact optimum over groups of COARSE grey levels (COARSE^2 times
  * less work than over single levels): its boundaries into bound. */
 static void coarse_bounds(const rl_hist *h, int lo, int hi, int k, int *bound)
 {
-    double cnt[257], sum[257], sq[257];
+    double cnt[COARSE_BINS + 1], sum[COARSE_BINS + 1], sq[COARSE_BINS + 1];
     int i, m, n = hi - lo, nc, b[4];
     nc = (n + COARSE - 1) / COARSE;
     cnt[0] = sum[0] = sq[0] = 0.0;

@@ -109,7 +109,8 @@ static rl_err layout(rl_ws *ws, const rl_recog_config *cfg, int w, int h, rl_rec
         (e = rl_illum_init(&r->illum, ws, w, h)) != RL_OK ||
         (e = rl_split_init(&r->split, ws, &r->illum.map)) != RL_OK ||
         (e = rl_ws_alloc(ws, sizeof(rl_polar), RL_WS_ALIGN, (void **)&r->polar)) != RL_OK ||
-        (e = rl_match_kept_init(&r->kept, ws, &r->templates)) != RL_OK)
+        (e = rl_match_kept_init(&r->kept, ws, &r->templates)) != RL_OK ||
+        (e = rl_ws_alloc(ws, RL_MAX_CANDIDATES * sizeof(rl_clr), RL_WS_ALIGN, (void **)&r->cand)) != RL_OK)
         return e;
     return RL_OK;
 }
@@ -326,7 +327,7 @@ static void band_radii(const rl_recog *rec, const rl_image *img, rl_result *res)
 static rl_err run_stages(rl_recog *rec, const rl_image *img, rl_result *res)
 {
     const rl_stage_hook *hook = &rec->cfg.stage_hook;
-    rl_clr cand[RL_MAX_CANDIDATES];
+    rl_clr *cand = rec->cand;
     int ncand, speck, t;
     rl_err e;
     rl_result_clear(res, rec->width, rec->height);

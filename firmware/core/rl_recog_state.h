@@ -17,6 +17,7 @@
 #ifndef RL_RECOG_STATE_H
 #define RL_RECOG_STATE_H
 
+#include "rl_clr.h"
 #include "rl_illum.h"
 #include "rl_label.h"
 #include "rl_match.h"
@@ -43,6 +44,7 @@ struct rl_recog {
     rl_split split; /* the second labellings' thresholds */
     rl_polar *polar;/* a local-pass candidate in polar cells */
     rl_match_kept *kept; /* a local-pass match's column sums, for the ids one zone away and its twins (rl_search, rl_local) */
+    rl_clr *cand; /* the frame's CLRs, RL_MAX_CANDIDATES (rl_recog_run's stages) */
 };
 
 #endif
