@@ -43,6 +43,13 @@ struct rl_recog {
     rl_split split; /* the second labellings' thresholds */
     rl_polar *polar;/* a local-pass candidate in polar cells */
     rl_match_kept *kept; /* a local-pass match's column sums, for the ids one zone away and its twins (rl_search, rl_local) */
+    /* the frame's CLRs as the global pass read them, for the tone reads:
+     * each centre as placed (rl_global_read_placed), and whether a curve
+     * may identify it (an outer CLR, rl_global_readable) and did */
+    struct {
+        double u, v;
+        int read; /* -1: no read (inner, or cut by the border), 0: not identified, 1: identified */
+    } placed[RL_MAX_CANDIDATES];
 };
 
 #endif
