@@ -57,33 +57,65 @@ static int identify_through(const rl_recog *rec, const rl_image *img, const rl_t
     return taken;
 }
 
-void rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
-                   const rl_result *res, rl_detection *d)
+/* d's place before any refinement (the CLR box's circle: rl_clr_geometry),
+ * the frame's levels there into *local; d otherwise a read of no id. */
+static void place(const rl_recog *rec, const rl_clr *c, const rl_result *res, rl_detection *d,
+                  rl_levels *local)
 {
-    const rl_levels *frame = &res->levels;
-    rl_levels local;
-    rl_match m;
     memset(d, 0, sizeof *d);
     d->id = -1;
     d->best_id = -1;
     d->pass = RL_PASS_GLOBAL;
     rl_clr_geometry(&c->box, rec->width, rec->height, d);
     /* the frame's levels as the light falls here */
-    rl_accept_levels_at(&rec->illum, frame, d->u, d->v, &local);
-    if (d->complete)
-        rl_refine_centre(img, &local, &d->u, &d->v, d->radius);
+    rl_accept_levels_at(&rec->illum, &res->levels, d->u, d->v, local);
+}
+
+/* The read of d (placed: its centre refined) through tone, local the
+ * frame's levels at its unrefined centre. */
+static void read_placed(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
+                        const rl_result *res, const rl_levels *local, rl_detection *d)
+{
+    rl_match m;
     if (d->visible < GLOBAL_MIN_VISIBLE) {
         rl_refine_radius(img, tone, d->u, d->v, &d->radius);
         return;
     }
     /* as a circle first; an ellipse only when the circle is not taken */
-    if (identify_through(rec, img, tone, c, &local,
+    if (identify_through(rec, img, tone, c, local,
                          rl_result_light_gap(res, &c->box) <= rec->cfg.near_light * d->radius, d, &m) &&
-        !rl_inner_enclosed(img, frame->light, d->u, d->v, d->radius, 0.0)) {
+        !rl_inner_enclosed(img, res->levels.light, d->u, d->v, d->radius, 0.0)) {
         d->id = m.id;
         d->band_ready = rec->cfg.band_radius && d->complete && rl_shape_is_circle(&c->shape);
     }
     d->best_id = m.id; /* taken or not: an unread candidate's nearest id */
     d->score = m.score;
     d->runner_up = m.second;
+}
+
+void rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
+                   const rl_result *res, rl_detection *d)
+{
+    rl_levels local;
+    place(rec, c, res, d, &local);
+    if (d->complete)
+        rl_refine_centre(img, &local, &d->u, &d->v, d->radius);
+    read_placed(rec, img, c, tone, res, &local, d);
+}
+
+void rl_global_read_placed(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
+                           const rl_result *res, double u, double v, rl_detection *d)
+{
+    rl_levels local;
+    place(rec, c, res, d, &local);
+    d->u = u;
+    d->v = v;
+    read_placed(rec, img, c, tone, res, &local, d);
+}
+
+int rl_global_readable(const rl_clr *c, int W, int H)
+{
+    rl_detection d;
+    rl_clr_geometry(&c->box, W, H, &d); /* rl_global_read's d->visible, before any read */
+    return !(d.visible < GLOBAL_MIN_VISIBLE);
 }

@@ -22,4 +22,16 @@
 void rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
                    const rl_result *res, rl_detection *d);
 
+/* rl_global_read of c with its centre given: (u, v), where rl_global_read
+ * through any curve placed it (its d->u, d->v: the centre is refined on
+ * the grey levels alone, the same through every curve); the same read,
+ * without refining the centre again. */
+void rl_global_read_placed(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
+                           const rl_result *res, double u, double v, rl_detection *d);
+
+/* 1 when rl_global_read may identify the CLR c in a W x H frame (its box
+ * leaves it closed: complete, or with at most a sliver cut by the
+ * border); 0 when its read's id is -1 through any curve. */
+int rl_global_readable(const rl_clr *c, int W, int H);
+
 #endif

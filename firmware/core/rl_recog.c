@@ -110,7 +110,7 @@ static rl_err layout(rl_ws *ws, const rl_recog_config *cfg, int w, int h, rl_rec
         (e = rl_split_init(&r->split, ws, &r->illum.map)) != RL_OK ||
         (e = rl_ws_alloc(ws, sizeof(rl_polar), RL_WS_ALIGN, (void **)&r->polar)) != RL_OK ||
         (e = rl_match_kept_init(&r->kept, ws, &r->templates)) != RL_OK ||
-        (e = rl_ws_alloc(ws, RL_MAX_CANDIDATES * sizeof(rl_clr), RL_WS_ALIGN, (void **)&r->cand)) != RL_OK)
+        (e = rl_ws_alloc(ws, RL_MAX_CANDIDATES * sizeof(rl_recog_placed), RL_WS_ALIGN, (void **)&r->placed)) != RL_OK)
         return e;
     return RL_OK;
 }
@@ -194,19 +194,27 @@ static int analyse_histogram(const rl_image *img, const rl_tone *tone, rl_result
 
 /* Read the outer CLRs (a CLR inside another's box of the same batch is an
  * inner ring; rl_split leaves out the code rings of a batch read before)
- * through tone t into res (landmarks and unidentified). Returns how many
- * are identified; the outer ones' count into *outer when outer is not
- * NULL. */
+ * through tone t into res (landmarks and unidentified), each as read into
+ * rec->placed (the tone reads'). Returns how many are identified; into
+ * *outer when outer is not NULL the count of the outer ones any curve may
+ * identify (rl_global_readable: not those the border cuts by more than a
+ * sliver). */
 static int read_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n, int t, rl_result *res,
                      int *outer)
 {
     int i, found = 0, seen = 0;
     for (i = 0; i < n; i++) {
         rl_detection d;
+        rec->placed[i].read = -1;
         if (rl_clr_is_inner(cand, n, i))
             continue;
-        seen++;
         rl_global_read(rec, img, &cand[i], &rec->tones.tone[t], res, &d);
+        rec->placed[i].u = d.u;
+        rec->placed[i].v = d.v;
+        if (rl_global_readable(&cand[i], rec->width, rec->height)) {
+            rec->placed[i].read = d.id >= 0;
+            seen++;
+        }
         found += d.id >= 0;
         res->n_candidates++;
         if (d.id >= 0)
@@ -219,22 +227,32 @@ static int read_clrs(rl_recog *rec, const rl_image *img, const rl_clr *cand, int
     return found;
 }
 
-/* The tone reads: the n_outer outer CLRs counted through tone t, the
- * current curve having identified `current` of them; the reads stop once
- * the rest cannot change the vote (rl_tones_decided), and the count so far
- * is returned. */
+/* The tone reads: the n_outer outer CLRs a curve may identify (rec->placed,
+ * as read_clrs read them through the current curve) counted through tone
+ * t from the centres the global pass placed them at (not refined again:
+ * rl_global_read_placed), the current curve having identified `current`
+ * of them; the others (cut by the border, id -1 through every curve) are
+ * not read. The reads stop once the rest cannot change the vote
+ * (rl_tones_decided), and the count so far is returned. That count decides
+ * the vote whatever order the CLRs are read in (a full count is the same
+ * in any order, and one cut short is cut short on the vote's side), so
+ * those the current curve did not identify are read first: on most frames
+ * the other curve misses them too, and once it has missed as many as the
+ * current curve did the vote is decided, the rest unread. */
 static int count_other(rl_recog *rec, const rl_image *img, const rl_clr *cand, int n, int t, int current,
                        int n_outer, const rl_result *res)
 {
-    int i, found = 0, left = n_outer;
-    for (i = 0; i < n && !rl_tones_decided(current, found, left); i++) {
-        rl_detection d;
-        if (rl_clr_is_inner(cand, n, i))
-            continue;
-        left--;
-        rl_global_read(rec, img, &cand[i], &rec->tones.tone[t], res, &d);
-        found += d.id >= 0;
-    }
+    int i, pass, found = 0, left = n_outer;
+    for (pass = 0; pass < 2; pass++)
+        for (i = 0; i < n && !rl_tones_decided(current, found, left); i++) {
+            rl_detection d;
+            if (rec->placed[i].read != pass)
+                continue;
+            left--;
+            rl_global_read_placed(rec, img, &cand[i], &rec->tones.tone[t], res, rec->placed[i].u,
+                                  rec->placed[i].v, &d);
+            found += d.id >= 0;
+        }
     return found;
 }
 
@@ -327,7 +345,7 @@ static void band_radii(const rl_recog *rec, const rl_image *img, rl_result *res)
 static rl_err run_stages(rl_recog *rec, const rl_image *img, rl_result *res)
 {
     const rl_stage_hook *hook = &rec->cfg.stage_hook;
-    rl_clr *cand = rec->cand;
+    rl_clr cand[RL_MAX_CANDIDATES];
     int ncand, speck, t;
     rl_err e;
     rl_result_clear(res, rec->width, rec->height);

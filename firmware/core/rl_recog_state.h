@@ -17,7 +17,6 @@
 #ifndef RL_RECOG_STATE_H
 #define RL_RECOG_STATE_H
 
-#include "rl_clr.h"
 #include "rl_illum.h"
 #include "rl_label.h"
 #include "rl_match.h"
@@ -27,6 +26,12 @@
 #include "rl_split.h"
 #include "rl_templates.h"
 #include "rl_tones.h"
+
+/* A CLR's centre as the global pass placed it (rl_recog.placed). */
+typedef struct {
+    double u, v;
+    int read; /* -1: no read (inner, or cut by the border), 0: not identified, 1: identified */
+} rl_recog_placed;
 
 struct rl_recog {
     rl_recog_config cfg;
@@ -44,7 +49,11 @@ struct rl_recog {
     rl_split split; /* the second labellings' thresholds */
     rl_polar *polar;/* a local-pass candidate in polar cells */
     rl_match_kept *kept; /* a local-pass match's column sums, for the ids one zone away and its twins (rl_search, rl_local) */
-    rl_clr *cand; /* the frame's CLRs, RL_MAX_CANDIDATES (rl_recog_run's stages) */
+    /* the frame's CLRs as the global pass read them, for the tone reads:
+     * each centre as placed (rl_global_read_placed), and whether a curve
+     * may identify it (an outer CLR, rl_global_readable) and did;
+     * RL_MAX_CANDIDATES */
+    rl_recog_placed *placed;
 };
 
 #endif
