@@ -382,13 +382,15 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * they fit (rl_twins_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (small || (!curved && d.complete));
         lead = other_lead(rec, img, other, &d, rv, n, far, !curved && small && d.pass != RL_PASS_LOCAL, &fit);
-        if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &reads) ||
-                      !size_fits(rec, img, other, &d, rv, n, frame_size(radii, whole, all, i, min_radius)))) {
+        /* rules 6, 7; a circle far from what was read (an ellipse the local pass read at a
+         * lens's border) says nothing: kept unjudged, but not under a lamp (RL_TWINS_UNFIT_LAMP) */
+        if ((small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &reads) ||
+                       !size_fits(rec, img, other, &d, rv, n, frame_size(radii, whole, all, i, min_radius)))) ||
+            (fit < d.score - RL_TWINS_UNFIT &&
+             rl_twins_lamp_share(img, res->levels.light, &d) >= RL_TWINS_UNFIT_LAMP)) {
             rl_result_add_unidentified(res, &d);
             continue;
         }
-        /* a circle far from what was read (an ellipse the local pass read
-         * in its own shape, at a wide-angle lens's border) says nothing */
         if (fit < d.score - RL_TWINS_UNFIT) {
             keep(res, &kept_n, &d, kept, i);
             continue;
