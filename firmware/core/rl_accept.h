@@ -67,4 +67,20 @@ void rl_accept_levels_at(const rl_illum *il, const rl_levels *frame, double u, d
  * its quiet zone, is darker (a sheet in a shadow). */
 double rl_accept_span(const rl_levels *local, const rl_tone *tone, const rl_profile *p);
 
+/* The local pass's reads (sector by sector, each sector's levels its own)
+ * still need this share of the span at the read's circle
+ * (rl_accept_plain_share): a ceiling thing's thin grey ring, read at a
+ * landmark's size through a scaler's blur after the curve, matched id 16
+ * (a plain thick ring) at 0.86-0.91 with its sectors normalized and
+ * showed 0.17-0.22 of the span; right local reads 0.44 or more
+ * (docs/results.md, fifteenth session). */
+#define RL_ACCEPT_LOCAL_SHARE 0.3
+
+/* The contrast id's templates fit in the plain profile of the circle
+ * (cx, cy, r) of img read through tone, as a share of the span of light
+ * there (rl_accept_span at the frame's levels, scaled by il's light at
+ * the centre). */
+double rl_accept_plain_share(const rl_templates *tt, const rl_illum *il, const rl_levels *frame,
+                             const rl_image *img, const rl_tone *tone, double cx, double cy, double r, int id);
+
 #endif
