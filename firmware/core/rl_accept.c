@@ -60,3 +60,17 @@ double rl_accept_span(const rl_levels *local, const rl_tone *tone, const rl_prof
     double span = rl_tone_light(tone, local->bg) - rl_tone_light(tone, local->fg), q = quiet_zone(p);
     return q > 0 && q < span ? q : span;
 }
+
+double rl_accept_plain_share(const rl_templates *tt, const rl_illum *il, const rl_levels *frame,
+                             const rl_image *img, const rl_tone *tone, double cx, double cy, double r, int id)
+{
+    rl_profile p;
+    rl_levels local;
+    rl_match m;
+    double span;
+    rl_profile_gather(img, tone, cx, cy, r, &p);
+    rl_match_ids(tt, &p, &id, 1, -1, &m);
+    rl_accept_levels_at(il, frame, cx, cy, &local);
+    span = rl_accept_span(&local, tone, &p);
+    return span > 0 ? m.contrast / span : 0.0;
+}

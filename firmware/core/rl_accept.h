@@ -15,7 +15,9 @@
  * focus but a blurred object next to a light (a shade, a fixture's
  * edge), and with its sectors normalized one by one such a blob looks
  * like a disk in a ring. The global pass sees the whole ring at the
- * frame's levels, and a landmark smeared by motion may match there.
+ * frame's levels, and a landmark smeared by motion may match there. Its
+ * reads still need their id's contrast in the plain profile at
+ * RL_ACCEPT_LOCAL_SHARE of the span (rl_accept_plain_share).
  *
  *   rl_accept_rule rule = rl_accept_rule_of(&cfg, RL_PASS_GLOBAL);
  *   rl_match m;
@@ -66,5 +68,21 @@ void rl_accept_levels_at(const rl_illum *il, const rl_levels *frame, double u, d
  * to foreground as light (tone), or less where the landmark's own paper,
  * its quiet zone, is darker (a sheet in a shadow). */
 double rl_accept_span(const rl_levels *local, const rl_tone *tone, const rl_profile *p);
+
+/* The local pass's reads (sector by sector, each sector's levels its own)
+ * still need this share of the span at the read's circle
+ * (rl_accept_plain_share): a ceiling thing's thin grey ring, read at a
+ * landmark's size through a scaler's blur after the curve, matched id 16
+ * (a plain thick ring) at 0.86-0.91 with its sectors normalized and
+ * showed 0.17-0.22 of the span; right local reads 0.44 or more
+ * (docs/results.md, fifteenth session). */
+#define RL_ACCEPT_LOCAL_SHARE 0.3
+
+/* The contrast id's templates fit in the plain profile of the circle
+ * (cx, cy, r) of img read through tone, as a share of the span of light
+ * there (rl_accept_span at the frame's levels, scaled by il's light at
+ * the centre). */
+double rl_accept_plain_share(const rl_templates *tt, const rl_illum *il, const rl_levels *frame,
+                             const rl_image *img, const rl_tone *tone, double cx, double cy, double r, int id);
 
 #endif

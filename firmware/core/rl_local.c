@@ -372,7 +372,9 @@ static int first_read(rl_recog *rec, const rl_image *img, int light, const rl_de
  * fitted to its outer edge; 1 if identified (into *out, whose box the
  * caller set). An identified one is dropped when a ring starting within
  * `reach` px of its centre encloses it (rl_inner; 0: any its size
- * allows); a whole one whose first reads score under min_first is read
+ * allows), or whose id's contrast at the frame's levels is under
+ * RL_ACCEPT_LOCAL_SHARE of the span (no print: a grey ring); a whole one
+ * whose first reads score under min_first is read
  * no further (first_read, counted in *floored unless NULL), nor a cut
  * one's read at its box after no other read took it (cut_agrees_with_box,
  * in *box_floored unless NULL). */
@@ -405,7 +407,9 @@ static int circle_reads(rl_recog *rec, const rl_image *img, const rl_result *res
     rl_geom_circle_box(W, H, rd.cx, rd.cy, rd.r, &out->box); /* the reads moved the located circle */
     out->complete = rl_geom_disk_complete(W, H, rd.cx, rd.cy, rd.r);
     out->visible = rl_geom_visible_in(W, H, rd.cx, rd.cy, rd.r);
-    if (!taken || rl_inner_enclosed(img, light, rd.cx, rd.cy, rd.r, reach))
+    if (!taken || rl_inner_enclosed(img, light, rd.cx, rd.cy, rd.r, reach) ||
+        rl_accept_plain_share(&rec->templates, &rec->illum, &res->levels, img, rec->tone, rd.cx, rd.cy, rd.r,
+                              rd.m.id) < RL_ACCEPT_LOCAL_SHARE)
         return 0;
     out->id = rd.m.id;
     out->score = rd.m.score;
