@@ -22,7 +22,7 @@ static rl_recog *rec;
 
 typedef struct { int id; double u, v, r, ink; } placed;
 /* whole ones, a grey-inked one, one cut by the left border by a sliver
- * and one by almost half */
+ * and one by the right border by about a seventh of its disk */
 static const placed scene[] = {{25, 70.3, 60.7, 24.0, 30}, {6, 200.6, 80.2, 24.5, 90},
                                {17, 120.1, 170.4, 23.5, 30}, {30, 262.4, 180.9, 24.2, 140},
                                {9, 22.8, 190.3, 24.0, 40}, {12, 305.0, 40.2, 23.8, 30}};

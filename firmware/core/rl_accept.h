@@ -14,10 +14,11 @@
  * 0.10 R, wider than code zone 1): what is that soft is no print in
  * focus but a blurred object next to a light (a shade, a fixture's
  * edge), and with its sectors normalized one by one such a blob looks
- * like a disk in a ring. The global pass sees the whole ring at the
- * frame's levels, and a landmark smeared by motion may match there. Its
- * reads still need their id's contrast in the plain profile at
- * RL_ACCEPT_LOCAL_SHARE of the span (rl_accept_plain_share).
+ * like a disk in a ring; and a local read, whichever circle or ellipse
+ * took it, still needs its id's contrast in the plain (not sector-
+ * normalized) profile at RL_ACCEPT_LOCAL_SHARE of the frame's span
+ * (rl_accept_plain_share). The global pass sees the whole ring at the
+ * frame's levels, and a landmark smeared by motion may match there.
  *
  *   rl_accept_rule rule = rl_accept_rule_of(&cfg, RL_PASS_GLOBAL);
  *   rl_match m;

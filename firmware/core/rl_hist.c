@@ -121,7 +121,7 @@ static void coarse_bounds(const rl_hist *h, int lo, int hi, int k, int *bound)
         sum[i + 1] = sum[i] + s;
         sq[i + 1] = sq[i] + q;
     }
-    kmeans_dp(cnt, sum, sq, nc, k, b);
+    kmeans_dp(cnt, sum, sq, nc, k, b); /* nc <= COARSE_BINS: hi - lo <= 256 */
     for (m = 0; m <= k; m++)
         bound[m] = lo + b[m] * COARSE < hi ? lo + b[m] * COARSE : hi;
 }

@@ -63,7 +63,8 @@ typedef struct {
     double local_min_lead;  /* centred on its own edge, so a little less is needed (1.3) */
     double min_contrast;  /* fitted ink/paper contrast, fraction of the grey span
                              (global: the frame's background - foreground; local: the
-                             sector-normalized span) (default 0.5) */
+                             sector-normalized span, and at least RL_ACCEPT_LOCAL_SHARE
+                             0.3 of the frame's span in the plain profile) (default 0.5) */
     double min_radius;    /* smallest landmark radius considered, px; 0 (default) = where
                              code zone 1 is 1 px wide (11.8 px for ring5) */
     double max_radius;    /* largest, px; 0 = half the shorter image side */
