@@ -2,6 +2,7 @@
 
 #include <math.h>
 
+#include "rl_clip.h"
 #include "rl_edge.h"
 #include "rl_ellipse.h"
 #include "rl_median.h"
@@ -382,7 +383,8 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * they fit (rl_twins_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (small || (!curved && d.complete));
         lead = other_lead(rec, img, other, &d, rv, n, far, !curved && small && d.pass != RL_PASS_LOCAL, &fit);
-        if (small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &reads) ||
+        if (small && (rl_clip_refuses(rec, img, res->levels.light, &d) ||
+                      !small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &reads) ||
                       !size_fits(rec, img, other, &d, rv, n, frame_size(radii, whole, all, i, min_radius)))) {
             rl_result_add_unidentified(res, &d);
             continue;
