@@ -12,7 +12,7 @@
  * `--set lens --isp ae:1,jpeg:85`; docs/results.md). A clip is a
  * monotone curve, which the rank read (rl_rank) does not see.
  *
- *   if (small && rl_clip_refuses(rec, img, res->levels.light, &d)) ...
+ *   int refused = rl_clip_refuses(rec, &img, res.levels.light, &res.landmarks[0]);
  */
 #ifndef RL_CLIP_H
 #define RL_CLIP_H
