@@ -2,6 +2,7 @@
 
 #include <math.h>
 
+#include "rl_clip.h"
 #include "rl_edge.h"
 #include "rl_ellipse.h"
 #include "rl_median.h"
@@ -382,9 +383,11 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * they fit (rl_twins_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (small || (!curved && d.complete));
         lead = other_lead(rec, img, other, &d, rv, n, far, !curved && small && d.pass != RL_PASS_LOCAL, &fit);
-        /* rules 6, 7; a circle far from what was read (an ellipse the local pass read at a
-         * lens's border) says nothing: kept unjudged, but not under a lamp (RL_TWINS_UNFIT_LAMP) */
-        if ((small && (!small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &reads) ||
+        /* rules 6, 7, 8 (clipped light: rl_clip); a circle far from what was read (an ellipse
+         * the local pass read at a lens's border) says nothing: kept unjudged, but not under a
+         * lamp (RL_TWINS_UNFIT_LAMP) */
+        if ((small && (rl_clip_refuses(rec, img, res->levels.light, &d) ||
+                       !small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &reads) ||
                        !size_fits(rec, img, other, &d, rv, n, frame_size(radii, whole, all, i, min_radius)))) ||
             (fit < d.score - RL_TWINS_UNFIT &&
              rl_twins_lamp_share(img, res->levels.light, &d) >= RL_TWINS_UNFIT_LAMP)) {
