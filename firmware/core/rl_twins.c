@@ -299,6 +299,20 @@ static double other_lead(const rl_recog *rec, const rl_image *img, const rl_tone
     return wide ? fmin(lead, rl_twins_lead(rec, img, other, d, rv, n, 1, -1, &wide_fit)) : lead;
 }
 
+/* d's lead over its rivals rv through the frame's own curve (its fit into
+ * *fit), asked where its lead through the other formation does not keep
+ * it alone; for a small cut local read in a frame read as linear
+ * (cut_linear), 0 where it is not over RL_TWINS_CUT_LINEAR_OWN: there the
+ * frame's own lead, a little over the margin, made up a sum the 2.2
+ * curve's did not (fifteenth session: a cut 20 read as 8, an 18 as 4, a
+ * 24 as 16), and 0 lets neither the sum nor the rank read keep it. */
+static double own_lead(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n,
+                       int cut_linear, double *fit)
+{
+    double own = rl_twins_lead(rec, img, rec->tone, d, rv, n, 0, -1, fit);
+    return cut_linear && !(own > RL_TWINS_CUT_LINEAR_OWN) ? 0.0 : own;
+}
+
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
 static void keep(rl_result *res, int *n, const rl_detection *d, unsigned char *kept, int i)
 {
@@ -403,7 +417,8 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         /* through the frame's own curve only where the other's lead
          * alone does not keep it (own: 0, the id's lead where it was read) */
         if (!keeps(tol, mg, lead, 0.0))
-            own = rl_twins_lead(rec, img, rec->tone, &d, rv, n, 0, -1, &fit);
+            own = own_lead(rec, img, &d, rv, n, !curved && small && d.pass == RL_PASS_LOCAL && !d.complete,
+                           &fit);
         /* the formations disagree: the read through any monotone curve
          * decides, where the frame's curve reads the id clearly too
          * (RL_TWINS_RANK_OWN) */

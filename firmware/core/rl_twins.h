@@ -93,6 +93,19 @@
  * 101-112, 131-132, 141-146, 161-166), 5 let a twin lead there, by 0.0042
  * at most (docs/results.md, fourteenth session). */
 #define RL_TWINS_SMALL_LINEAR_TOLERANCE 0.0
+/* A small cut local read (under RL_TWINS_FAR_ZONE_PX's radius) in a frame
+ * read as linear light whose lead over its rivals through the 2.2 curve is
+ * not over RL_TWINS_LOCAL_MARGIN by itself keeps its id (by rule 3's sum or
+ * the rank read) only where its lead through the frame's own curve is over
+ * this (rl_twins.c, own_lead). Three wrong reads of a fresh hunt (a cut 20
+ * read as 8, an 18 as 4, a 24 as 16; 2.2 cameras with an ISP after the
+ * curve, read as linear) led through the 2.2 curve by 0.0008, 0.0087 and
+ * 0.0007 and through their own by 0.0136, 0.0133 and 0.0095: the sum was
+ * the frame's own lead over the margin. On a truly linear camera's 16 px
+ * sheets (the development folders at gamma 1) 4 right cut reads of 187
+ * had less (0.0095-0.0143), where refusing every such read under the
+ * margin cost 47 (docs/results.md, fifteenth session). */
+#define RL_TWINS_CUT_LINEAR_OWN 0.015
 /* A cut landmark read through a curve whose radius is this far (a share)
  * from the frame's size (rl_twins.c frame_size: the median of its other
  * whole reads, two or more) is not decided by the rank read (rl_twins.c,
