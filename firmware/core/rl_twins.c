@@ -313,6 +313,35 @@ static double own_lead(const rl_recog *rec, const rl_image *img, const rl_detect
     return cut_linear && !(own > RL_TWINS_CUT_LINEAR_OWN) ? 0.0 : own;
 }
 
+/* Whether a global read clear of every other id by its runner-up
+ * (RL_TWINS_CLEAR) leads its zone twins (rv, filled here) through the
+ * frame's own curve at 0.97 .. 1.03 of its radius too: the runner-up is
+ * the read's one radius; a whole 2 behind a 2x scaler read as 18 led every
+ * id by 0.060 there, its twin 2 0.0019 ahead of it at 3% (the 397 right
+ * clear reads of the development scale sets led by 0.0135 or more). */
+static int clear_of_twins(const rl_recog *rec, const rl_image *img, const rl_detection *d, int *rv)
+{
+    double fit;
+    int n = rl_twins_rivals(rec, d, rv);
+    return n == 0 || rl_twins_lead(rec, img, rec->tone, d, rv, n, 0, -1, &fit) > 0;
+}
+
+/* Whether d gets no id before its leads are weighed: a small read by
+ * rules 6, 7 and 8 (its rivals rv at its own and the frame's size, in
+ * clipped light: rl_clip), and a read whose circle fits far worse than
+ * its read (`fit`: an ellipse the local pass read at a lens's border, not
+ * judged by its twins) where a lamp covers it (RL_TWINS_UNFIT_LAMP).
+ * size: the frame's landmark size (frame_size), asked only of a small one. */
+static int refused(const rl_recog *rec, const rl_image *img, const rl_tone *other, int light,
+                   const rl_detection *d, const int *rv, int n, double tol, double mg, landmark_reads *reads,
+                   int small, double size, double fit)
+{
+    if (small && (rl_clip_refuses(rec, img, light, d) || !small_fits(rec, img, light, d, rv, n, tol, mg, reads) ||
+                     !size_fits(rec, img, other, d, rv, n, size)))
+        return 1;
+    return fit < d->score - RL_TWINS_UNFIT && rl_twins_lamp_share(img, light, d) >= RL_TWINS_UNFIT_LAMP;
+}
+
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
 static void keep(rl_result *res, int *n, const rl_detection *d, unsigned char *kept, int i)
 {
@@ -375,7 +404,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * curve (a whole 2 of a 16.8 px moving frame blurred after the
          * curve, read as its twin 18, led every id by 0.051) */
         if ((d.pass == RL_PASS_GLOBAL && (d.complete || !curved) && !small &&
-             d.score - d.runner_up >= RL_TWINS_CLEAR) ||
+             d.score - d.runner_up >= RL_TWINS_CLEAR && clear_of_twins(rec, img, &d, rv)) ||
             (known != NULL && known[i]) || (n = rl_twins_rivals(rec, &d, rv)) == 0) {
             keep(res, &kept_n, &d, kept, i);
             continue;
@@ -397,14 +426,8 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * they fit (rl_twins_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (small || (!curved && d.complete));
         lead = other_lead(rec, img, other, &d, rv, n, far, !curved && small && d.pass != RL_PASS_LOCAL, &fit);
-        /* rules 6, 7, 8 (clipped light: rl_clip); a circle far from what was read (an ellipse
-         * the local pass read at a lens's border) says nothing: kept unjudged, but not under a
-         * lamp (RL_TWINS_UNFIT_LAMP) */
-        if ((small && (rl_clip_refuses(rec, img, res->levels.light, &d) ||
-                       !small_fits(rec, img, res->levels.light, &d, rv, n, tol, mg, &reads) ||
-                       !size_fits(rec, img, other, &d, rv, n, frame_size(radii, whole, all, i, min_radius)))) ||
-            (fit < d.score - RL_TWINS_UNFIT &&
-             rl_twins_lamp_share(img, res->levels.light, &d) >= RL_TWINS_UNFIT_LAMP)) {
+        if (refused(rec, img, other, res->levels.light, &d, rv, n, tol, mg, &reads, small,
+                    small ? frame_size(radii, whole, all, i, min_radius) : 0.0, fit)) {
             rl_result_add_unidentified(res, &d);
             continue;
         }
