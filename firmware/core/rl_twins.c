@@ -313,19 +313,6 @@ static double own_lead(const rl_recog *rec, const rl_image *img, const rl_detect
     return cut_linear && !(own > RL_TWINS_CUT_LINEAR_OWN) ? 0.0 : own;
 }
 
-/* Whether a global read clear of every other id by its runner-up
- * (RL_TWINS_CLEAR) leads its zone twins (rv, filled here) through the
- * frame's own curve at 0.97 .. 1.03 of its radius too: the runner-up is
- * the read's one radius; a whole 2 behind a 2x scaler read as 18 led every
- * id by 0.060 there, its twin 2 0.0019 ahead of it at 3% (the 397 right
- * clear reads of the development scale sets led by 0.0135 or more). */
-static int clear_of_twins(const rl_recog *rec, const rl_image *img, const rl_detection *d, int *rv)
-{
-    double fit;
-    int n = rl_twins_rivals(rec, d, rv);
-    return n == 0 || rl_twins_lead(rec, img, rec->tone, d, rv, n, 0, -1, &fit) > 0;
-}
-
 /* Whether d gets no id before its leads are weighed: a small read by
  * rules 6, 7 and 8 (its rivals rv at its own and the frame's size, in
  * clipped light: rl_clip), and a read whose circle fits far worse than
@@ -404,7 +391,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * curve (a whole 2 of a 16.8 px moving frame blurred after the
          * curve, read as its twin 18, led every id by 0.051) */
         if ((d.pass == RL_PASS_GLOBAL && (d.complete || !curved) && !small &&
-             d.score - d.runner_up >= RL_TWINS_CLEAR && clear_of_twins(rec, img, &d, rv)) ||
+             d.score - d.runner_up >= RL_TWINS_CLEAR) ||
             (known != NULL && known[i]) || (n = rl_twins_rivals(rec, &d, rv)) == 0) {
             keep(res, &kept_n, &d, kept, i);
             continue;
