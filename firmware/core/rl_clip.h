@@ -29,11 +29,14 @@
 /* The grey level a clip leaves (8-bit full scale). */
 #define RL_CLIP_LEVEL 255
 
-/* The share of the pixels within RL_CLIP_REACH * r of (u, v), in the
- * frame, at RL_CLIP_LEVEL (0 when none is in the frame). */
-double rl_clip_share(const rl_image *img, double u, double v, double r);
+/* The share of the pixels of the disk of radius r round (u, v), in the
+ * frame, at `level` or over, from every row_step-th row (0 when none is
+ * in the frame): a clipped light side (RL_CLIP_LEVEL, RL_CLIP_REACH * r)
+ * and a lamp over a landmark (rl_twins' RL_TWINS_UNFIT_LAMP). */
+double rl_clip_disk_share(const rl_image *img, double u, double v, double r, int level, int row_step);
 
-/* 1 when d's light side is clipped (rl_clip_share at RL_CLIP_SHARE or
+/* 1 when d's light side is clipped (its disk to RL_CLIP_REACH at
+ * RL_CLIP_LEVEL: rl_clip_disk_share at RL_CLIP_SHARE or
  * more) and the rank read, through any monotone curve, does not keep its
  * id (rl_twins_rank_keeps; light: the frame's light level). */
 int rl_clip_refuses(const rl_recog *rec, const rl_image *img, int light, const rl_detection *d);

@@ -326,7 +326,9 @@ static int refused(const rl_recog *rec, const rl_image *img, const rl_tone *othe
     if (small && (rl_clip_refuses(rec, img, light, d) || !small_fits(rec, img, light, d, rv, n, tol, mg, reads) ||
                      !size_fits(rec, img, other, d, rv, n, size)))
         return 1;
-    return fit < d->score - RL_TWINS_UNFIT && rl_twins_lamp_share(img, light, d) >= RL_TWINS_UNFIT_LAMP;
+    /* no light level (over 255): no lamp in the frame */
+    return fit < d->score - RL_TWINS_UNFIT && light <= 255 &&
+           rl_clip_disk_share(img, d->u, d->v, d->radius, light, 2) >= RL_TWINS_UNFIT_LAMP;
 }
 
 /* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */

@@ -1,5 +1,4 @@
-/* rl_twins_cut: reads of partly hidden landmarks, a cut read's circle
- * against its outer edge and a lamp over a disk (rl_twins_cut.h). */
+/* rl_twins_cut: a cut read's circle against its outer edge (rl_twins_cut.h). */
 #include "rl_twins_cut.h"
 
 #include <math.h>
@@ -28,24 +27,4 @@ int rl_twins_cut_on_edge(const rl_image *img, const rl_tone *tone, int light, co
         !rl_edge_fit_rays(img, tone, light, &u, &v, &r))
         return 1;
     return hypot(u - d->u, v - d->v) + d->radius - r <= RL_TWINS_CUT_BULGE * d->radius;
-}
-
-/* The disk's pixels in the frame, every other row (a lamp is a large
- * blob: half the rows see as much of it), counted at or above light. */
-double rl_twins_lamp_share(const rl_image *img, int light, const rl_detection *d)
-{
-    int x, y, n = 0, lit = 0;
-    int y0 = (int)ceil(d->v - d->radius), y1 = (int)floor(d->v + d->radius);
-    if (light > 255)
-        return 0.0; /* no light level: no lamp in the frame */
-    for (y = y0 < 0 ? 0 : y0; y <= y1 && y < img->height; y += 2) {
-        double h = sqrt(fmax(0.0, d->radius * d->radius - (y - d->v) * (y - d->v)));
-        const uint8_t *row = img->data + (size_t)y * (size_t)img->stride;
-        int x0 = (int)ceil(d->u - h), x1 = (int)floor(d->u + h);
-        for (x = x0 < 0 ? 0 : x0; x <= x1 && x < img->width; x++) {
-            n++;
-            lit += row[x] >= light;
-        }
-    }
-    return n > 0 ? (double)lit / n : 0.0;
 }

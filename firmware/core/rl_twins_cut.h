@@ -1,10 +1,8 @@
-/* rl_twins_cut: reads of partly hidden landmarks: whether a cut local
- * read's circle lies on its landmark's outer edge (rl_twins_cut.c says why
- * and when it is judged), and how much of a read's disk a lamp covers
- * (RL_TWINS_UNFIT_LAMP). Internal: rl_twins_check's.
+/* rl_twins_cut: whether a cut local read's circle lies on its landmark's
+ * outer edge (rl_twins_cut.c says why and when it is judged). Internal:
+ * rl_twins_check's.
  *
  *   int on_edge = rl_twins_cut_on_edge(&img, rec->tone, res.levels.light, &res.landmarks[0], 0.0);
- *   double lamp = rl_twins_lamp_share(&img, res.levels.light, &res.landmarks[0]);
  */
 #ifndef RL_TWINS_CUT_H
 #define RL_TWINS_CUT_H
@@ -17,10 +15,5 @@
  * landmarks' median radius (0: none known); tone, light: the frame's curve and light level. */
 int rl_twins_cut_on_edge(const rl_image *img, const rl_tone *tone, int light, const rl_detection *d,
                          double size);
-
-/* The share of d's disk (its pixels in the frame) at or above light, the
- * frame's light level (rl_levels.light; 256, none: 0): a lamp or its
- * glare over the landmark. */
-double rl_twins_lamp_share(const rl_image *img, int light, const rl_detection *d);
 
 #endif
