@@ -316,6 +316,7 @@ static int read_window(const rl_track *t, rl_recog *rec, const rl_image *img, co
     if (w->visible >= CUT_VISIBLE &&
         rl_verify_read_border(rec, img, res, w->id, known, w->u, w->v, w->radius, d) && verifies(w, shift, d))
         return 1;
+    rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_WIN_COSTLY);
     window_candidate(w, img->width, img->height, &u);
     if (u.complete) {
         int id = read_box(rec, img, res, &u, d);
@@ -394,6 +395,7 @@ rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result 
     res->levels = t->levels;
     res->gamma = rl_tones_gamma(&rec->tones);
     read = read_windows(t, rec, img, res, &missed, index, known);
+    rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_WIN_FRAME);
     /* the zone twins' check of a full frame (rl_twins): a read it refuses
      * is missed, and the frame read in full. A read of a landmark the check
      * kept in the frame before (read by windows) is not judged again: its
@@ -424,6 +426,7 @@ rl_err rl_track_read(rl_track *t, rl_recog *rec, const rl_image *img, rl_result 
     } else {
         t->fallbacks++;
     }
+    rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_DONE);
     return RL_OK;
 }
 

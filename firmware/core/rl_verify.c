@@ -374,7 +374,9 @@ static int read_at(const rl_recog *rec, const rl_image *img, const rl_result *re
     d->box.y1 = (int)ceil(d->v + r);
     rule = rl_accept_rule_at(&rec->cfg, RL_PASS_GLOBAL,
                              rl_result_light_gap(res, &d->box) <= rec->cfg.near_light * r);
+    rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_WIN_PROFILE);
     rl_profile_gather_rows(img, rec->tone, d->u, d->v, RADIUS_WIDEST * r, GATHER_ROWS, &wide);
+    rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_WIN_ID);
     taken = judged(rec, &rule, local, &wide, s, id, known, &m);
     if (!taken) {
         double bs;
@@ -399,8 +401,11 @@ static int read_at(const rl_recog *rec, const rl_image *img, const rl_result *re
             taken = e > 0 && e <= 1.0 && judged(rec, &leads, local, &wide, e, id, known, &at_edge);
         }
     }
-    if (taken && m.score - m.second < TWIN_CLEAR && twin_fits_as_well(rec, &wide, id, s, &m))
-        taken = 0;
+    if (taken && m.score - m.second < TWIN_CLEAR) {
+        rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_WIN_TWINS);
+        if (twin_fits_as_well(rec, &wide, id, s, &m))
+            taken = 0;
+    }
     d->radius = RADIUS_WIDEST * r * s;
     d->best_id = m.id;
     d->score = m.score;
@@ -409,6 +414,8 @@ static int read_at(const rl_recog *rec, const rl_image *img, const rl_result *re
      * pass drops one); around a known landmark, no larger than the map's
      * landmarks, r as predicted (the local pass bounds it by the frame's
      * size alike): its rays stop past the quiet zone */
+    if (taken)
+        rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_WIN_RING);
     if (!taken ||
         rl_inner_enclosed(img, res->levels.light, d->u, d->v, d->radius,
                           known ? RL_INNER_REACH * r + RL_INNER_REACH_PX : 0.0))
@@ -431,6 +438,7 @@ int rl_verify_read(const rl_recog *rec, const rl_image *img, const rl_result *re
         *away = 0;
     if (!(r > 0))
         return 0;
+    rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_WIN_CENTRE);
     rl_accept_levels_at(&rec->illum, &res->levels, u, v, &local);
     d->u = u;
     d->v = v;
@@ -450,8 +458,10 @@ int rl_verify_read_border(const rl_recog *rec, const rl_image *img, const rl_res
     d->id = d->best_id = -1;
     d->u = u;
     d->v = v;
-    if (!(r > 0) || room_at(img, u, v) >= EDGE_NEAR * r ||
-        !edge_centre(img, rec->tone, res->levels.light, r, &d->u, &d->v))
+    if (!(r > 0) || room_at(img, u, v) >= EDGE_NEAR * r)
+        return 0;
+    rl_stage_enter(&rec->cfg.stage_hook, RL_STAGE_WIN_CENTRE);
+    if (!edge_centre(img, rec->tone, res->levels.light, r, &d->u, &d->v))
         return 0;
     rl_accept_levels_at(&rec->illum, &res->levels, u, v, &local);
     return read_at(rec, img, res, &local, id, known, r, d);

@@ -9,6 +9,11 @@
  * motion, and the tone reads' zone twins' check runs after the local pass;
  * a frame with nothing dark ends after the histogram. The pose and the
  * place are the caller's own calls, timed by it under the same names.
+ * A frame read by tracking windows (rl_track_read) runs the window
+ * stages, each window's in their order, then the frame's, and ends with
+ * RL_STAGE_DONE too; a frame it then reads in full runs the frame's
+ * stages after that. (The plan, rl_track_plan, runs before the hook's
+ * first call.)
  *
  *   rl_recog_defaults(&cfg);                   // no hook: no calls
  *   cfg.stage_hook.ctx = &res;                 // whatever the hook keeps its times in
@@ -35,7 +40,16 @@ typedef enum {
                           image formation (rl_twins.h) */
     RL_STAGE_POSE,     /* the pose from the frame's landmarks (the caller's) */
     RL_STAGE_PLACE,    /* the place on a map that repeats ids (the caller's) */
-    RL_STAGE_DONE      /* not a stage: the count, and the call that ends a frame */
+    /* a frame read by tracking windows (rl_track_read), window by window: */
+    RL_STAGE_WIN_CENTRE,  /* a window's centre drawn to its ink, or fitted to its edge by the border */
+    RL_STAGE_WIN_PROFILE, /* its profile gathered */
+    RL_STAGE_WIN_ID,      /* its id judged: its own columns, its rivals or every id, the ring's edge */
+    RL_STAGE_WIN_TWINS,   /* its zone twins held against it at every radius */
+    RL_STAGE_WIN_RING,    /* not a code ring of a larger landmark (rl_inner_enclosed) */
+    RL_STAGE_WIN_COSTLY,  /* a window verification did not take: its edge, box and local reads
+                             (the local reads' own stages inside) */
+    RL_STAGE_WIN_FRAME,   /* the frame's zone twins' check and the rest of the frame's reads */
+    RL_STAGE_DONE         /* not a stage: the count, and the call that ends a frame */
 } rl_stage;
 
 typedef struct {

@@ -62,6 +62,12 @@ typedef struct {
 typedef struct {
     tally *t;
     rl_bench_stages unit; /* the histogram pass, per frame */
+    /* the stages' run (rl_stage.h's hook): the frame's times into frame,
+     * a window frame's kept in win_ns[frame][stage] (us), its recog_us in
+     * win_us[frame] */
+    rl_bench_stages *frame;
+    double (*win_ns)[RL_STAGE_DONE], *win_us;
+    int wins;
 } sink;
 
 /* The truth landmark a detection lies on (within half its radius), or -1. */
@@ -113,6 +119,14 @@ static rl_err put(void *ctx, const rl_run_report *rep)
         s->by_box += rep->res->landmarks[k].pass == RL_PASS_GLOBAL;
     for (k = 0; k < rep->res->n_landmarks && rep->windows; k++)
         s->by_window += rep->res->landmarks[k].pass == RL_PASS_LOCAL;
+    if (sk->frame != NULL && rep->windows && sk->wins < FRAMES) {
+        int st;
+        for (st = 0; st < RL_STAGE_DONE; st++)
+            sk->win_ns[sk->wins][st] = sk->frame->ns[st] / 1000.0;
+        sk->win_us[sk->wins++] = rep->recog_us;
+    }
+    if (sk->frame != NULL)
+        memset(sk->frame->ns, 0, sizeof sk->frame->ns);
     if (rep->windows) {
         s->pose_win[s->windows] = rep->pose_us;
         s->both_win[s->windows] = rep->recog_us + rep->pose_us;
@@ -174,6 +188,57 @@ static void print_row(const char *what, int n, double *us, double *pose, double 
     printf("  %7.2f %9.2f\n", u > 0 ? p / u : 0.0, u > 0 ? b / u : 0.0);
 }
 
+/* The tracked run once more with the stages' hook on (its calls add to
+ * the times: the table above runs without it): where a window frame's
+ * time goes, each stage's median over the window frames (a shared
+ * machine's preemptions would swamp a mean) in us and in passes (unit),
+ * and the frame's, whose part no stage holds is the plan's and the
+ * loop's (their medians do not add up to the frame's). */
+static void window_stages(rl_pngrun *pr, rl_site *site, char **names, int n, sink *sk, double unit)
+{
+    static tally hooked;
+    static double ns[FRAMES][RL_STAGE_DONE], us[FRAMES], col[FRAMES], rest[FRAMES];
+    rl_bench_stages frame;
+    rl_recog_config cfg;
+    int s, k;
+    memset(&hooked, 0, sizeof hooked);
+    rl_bench_stages_start(&frame, &cfg);
+    /* the recognizer made again, with the hook (the runs before had none) */
+    rl_heap_recog_free(&site->recog);
+    site->recog.cfg.stage_hook = cfg.stage_hook;
+    sk->t = &hooked;
+    sk->frame = &frame;
+    sk->win_ns = ns;
+    sk->win_us = us;
+    sk->wins = 0;
+    (void)rl_pngrun_files(pr, site, names, n);
+    rl_heap_recog_free(&site->recog);
+    memset(&site->recog.cfg.stage_hook, 0, sizeof cfg.stage_hook);
+    sk->frame = NULL;
+    if (sk->wins == 0 || !(unit > 0))
+        return;
+    printf("  window frames by stage (the tracked run again, the hook on: %d window frames; medians, us and "
+           "passes):\n", sk->wins);
+    for (k = 0; k < sk->wins; k++)
+        rest[k] = us[k];
+    for (s = 0; s < RL_STAGE_DONE; s++) {
+        double m;
+        for (k = 0; k < sk->wins; k++) {
+            col[k] = ns[k][s];
+            rest[k] -= ns[k][s];
+        }
+        m = rl_bench_median(col, sk->wins);
+        for (k = 0; k < sk->wins && !(m > 0); k++)
+            m = col[k] > 0 ? -1 : m; /* a stage some frames ran: shown */
+        if (m != 0)
+            printf("    %-24s %8.1f %8.3f\n", rl_stage_name((rl_stage)s), m > 0 ? m : 0.0, m > 0 ? m / unit : 0.0);
+    }
+    printf("    %-24s %8.1f %8.3f\n", "the plan and the rest", rl_bench_median(rest, sk->wins),
+           rl_bench_median(rest, sk->wins) / unit);
+    printf("    %-24s %8.1f %8.3f\n", "window frame", rl_bench_median(us, sk->wins),
+           rl_bench_median(us, sk->wins) / unit);
+}
+
 int rl_bench_track(const char *dir, const char *prefix)
 {
     static rl_site site;
@@ -230,6 +295,7 @@ int rl_bench_track(const char *dir, const char *prefix)
     print_row("tracked, 3 reads", capped.frames, capped.us_all, capped.pose_all, capped.both_all, &capped, 1);
     print_row("  by windows", capped.windows, capped.us_win, capped.pose_win, capped.both_win, &capped, 0);
     print_row("  in full", capped.fulls, capped.us_full, capped.pose_full, capped.both_full, &capped, 0);
+    window_stages(&pr, &site, names, n, &sk, rl_bench_median(full.unit, full.frames));
     for (k = 0; k < n; k++)
         free(names[k]);
     free(names);
