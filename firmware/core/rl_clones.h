@@ -21,4 +21,14 @@
 #define RL_CLONES_AVX2
 #endif
 
+/* A helper a clone calls in its loops, compiled into each clone (the
+ * clone's own instructions, the same operations): out of line it is the
+ * plain build's, and switching between a clone's AVX code and plain SSE
+ * code costs time on some machines (issue 43: gather's plane_row). */
+#if defined(__GNUC__)
+#define RL_CLONE_INLINE __attribute__((always_inline)) inline
+#else
+#define RL_CLONE_INLINE
+#endif
+
 #endif
