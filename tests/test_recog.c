@@ -4,6 +4,7 @@
 #include <math.h>
 #include "rl_recog.h"
 #include "rl_raster.h"
+#include "rl_verify.h"
 
 #define W 320
 #define H 240
@@ -140,6 +141,45 @@ static void test_stages_run_in_order(void **state)
     assert_int_equal(lg.seen[1], RL_STAGE_DONE);
     assert_string_equal(rl_stage_name(RL_STAGE_ACROSS), "reads across motion");
     assert_string_equal(rl_stage_name(RL_STAGE_DONE), "?");
+}
+
+/* A tracking window's verification (rl_verify) runs the window stages in
+ * their order (rl_stage.h): a landmark drawn at a known place, predicted
+ * 2 px off, is read through its centre, profile, id and code-ring check
+ * (its zone twins between when its lead is small); blank paper stops at
+ * the centre. No frame's stage and no end: rl_track_read ends the frame. */
+static void test_window_stages(void **state)
+{
+    rl_recog_config cfg;
+    rl_image img = draw(W);
+    rl_detection d;
+    stage_log lg;
+    int k;
+    (void)state;
+    rl_recog_defaults(&cfg);
+    cfg.stage_hook.enter = log_stage;
+    cfg.stage_hook.ctx = &lg;
+    init(&cfg);
+    assert_int_equal(rl_recog_run(rec, &img, &res), RL_OK);
+    memset(&lg, 0, sizeof lg);
+    assert_int_equal(rl_verify_read(rec, &img, &res, scene[0].id, 0, scene[0].u + 2, scene[0].v - 1, scene[0].r,
+                                    &d, NULL),
+                     1);
+    assert_int_equal(d.id, scene[0].id);
+    assert_true(lg.n >= 4);
+    assert_int_equal(lg.seen[0], RL_STAGE_WIN_CENTRE);
+    assert_int_equal(lg.seen[1], RL_STAGE_WIN_PROFILE);
+    assert_int_equal(lg.seen[2], RL_STAGE_WIN_ID);
+    for (k = 3; k < lg.n - 1; k++)
+        assert_int_equal(lg.seen[k], RL_STAGE_WIN_TWINS);
+    assert_int_equal(lg.seen[lg.n - 1], RL_STAGE_WIN_RING);
+    /* blank paper, 2.5 radii and more from every landmark */
+    memset(&lg, 0, sizeof lg);
+    assert_int_equal(rl_verify_read(rec, &img, &res, scene[0].id, 0, 30, 205, scene[0].r, &d, NULL), 0);
+    assert_int_equal(lg.n, 1);
+    assert_int_equal(lg.seen[0], RL_STAGE_WIN_CENTRE);
+    assert_string_equal(rl_stage_name(RL_STAGE_WIN_PROFILE), "window profiles");
+    assert_string_equal(rl_stage_name(RL_STAGE_WIN_FRAME), "window frame's checks");
 }
 
 /* A code ring inside a landmark whose outer ring is broken by a light and
@@ -824,6 +864,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_finds_what_was_drawn),
         cmocka_unit_test(test_stages_run_in_order),
+        cmocka_unit_test(test_window_stages),
         cmocka_unit_test(test_stride_is_honoured),
         cmocka_unit_test(test_checkerboard_is_no_error),
         cmocka_unit_test(test_inner_ring_is_not_a_landmark),
