@@ -143,8 +143,7 @@ void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, rl_mat
         rl_profile p;
         rl_match ma;
         rl_polar_profile_octants(pol, x, y, s, reads[a], &p);
-        rl_match_all_kept(tt, &p, &ma, keep);
-        if (ma.id != id || ma.blur > max_blur)
+        if (!rl_match_all_kept_as(tt, &p, id, max_blur, &ma, keep) || ma.id != id || ma.blur > max_blur)
             continue; /* another code, or smeared: along the motion */
         if (m->id >= 0 && ma.second >= 0 && rl_accept_lead(&ma) <= rl_accept_lead(m))
             continue; /* its twins only lower its lead (a runner-up at or over 0): it cannot lead */
