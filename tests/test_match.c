@@ -613,6 +613,64 @@ static void test_kept_sums_are_the_ids_read_again(void **state)
     }
 }
 
+/* rl_match_all_kept_as is rl_match_all_kept wherever the latter's winner
+ * is the id at a blur up to max_blur (every field and every column's kept
+ * sums the same bits), and says 0 only where it is not (the oracle: the
+ * full match, rl_match_all): every id of the table at every max_blur, on
+ * profiles drawn from that id at each blur (the blurrier ones win past
+ * max_blur), from another id and from noise, on whole families and on 8
+ * ids out of order (the last id's block runs past the table: the whole
+ * match, as rl_match_all_kept), and a profile of too few pixels. */
+static void test_kept_as_is_kept_where_the_id_wins(void **state)
+{
+    static unsigned char mem[1 << 19];
+    static const int some[] = {9, 3, 30, 17, 1, 22, 12, 5};
+    int table, trial, stops = 0, wins = 0;
+    (void)state;
+    for (table = 0; table < 3; table++) {
+        rl_family fam;
+        rl_templates tt;
+        rl_match_kept *ka, *kb;
+        rl_ws ws;
+        fam.bits = table == 1 ? 6 : 5;
+        rl_ws_init(&ws, mem, sizeof mem);
+        assert_int_equal(rl_templates_init(&tt, &ws, &fam, table == 2 ? some : NULL, table == 2 ? 8 : 0), RL_OK);
+        assert_int_equal(rl_match_kept_init(&ka, &ws, &tt), RL_OK);
+        assert_int_equal(rl_match_kept_init(&kb, &ws, &tt), RL_OK);
+        for (trial = 0; trial < 60; trial++) {
+            int i = (int)(uniform() * tt.n), src = trial % 4 == 0 ? (int)(uniform() * tt.n) : i;
+            int b = trial % RL_BLUR_LEVELS, mb, flat = trial % 15 == 14;
+            rl_profile p;
+            noisy_profile(&tt, src, b, trial % 4 == 3 ? 400 : 40, &p);
+            if (flat)
+                p.total = 10; /* too few pixels: nothing matched */
+            for (mb = 0; mb < RL_BLUR_LEVELS; mb++) {
+                rl_match got, want;
+                int as = rl_match_all_kept_as(&tt, &p, tt.ids[i], mb, &got, ka);
+                rl_match_all_kept(&tt, &p, &want, kb);
+                if (!as) {
+                    stops++;
+                    assert_false(want.id == tt.ids[i] && want.blur <= mb);
+                    assert_int_equal(ka->state, RL_MATCH_KEPT_NONE);
+                    continue;
+                }
+                wins += want.id == tt.ids[i] && want.blur <= mb;
+                assert_true(same_match(&got, &want));
+                assert_int_equal(ka->state, kb->state);
+                if (kb->state == RL_MATCH_KEPT_SUMS) {
+                    assert_memory_equal(ka->st, kb->st, (size_t)tt.stride * sizeof *ka->st);
+                    assert_memory_equal(ka->stt, kb->stt, (size_t)tt.stride * sizeof *ka->stt);
+                    assert_memory_equal(ka->sxt, kb->sxt, (size_t)tt.stride * sizeof *ka->sxt);
+                    assert_memory_equal(&ka->ivx, &kb->ivx, sizeof ka->ivx);
+                }
+            }
+        }
+    }
+    /* both ways taken many times: stopped, and read to the end with the id winning */
+    assert_true(stops > 200);
+    assert_true(wins > 200);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -627,6 +685,7 @@ int main(void)
         cmocka_unit_test(test_id_and_rivals_at_once),
         cmocka_unit_test(test_id_and_rest_is_every_other_listed),
         cmocka_unit_test(test_kept_sums_are_the_ids_read_again),
+        cmocka_unit_test(test_kept_as_is_kept_where_the_id_wins),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -5,6 +5,7 @@
  * changed radius are those of the landmark where it really is. */
 #include "rl_test.h"
 #include <math.h>
+#include <string.h>
 #include "rl_match.h"
 #include "rl_polar.h"
 #include "rl_raster.h"
@@ -135,6 +136,33 @@ static void test_moved_profiles(void **state)
         fail_msg("rescaled to the true radius: score %.3f", back.score);
 }
 
+/* One shift of the octants (rl_polar_shift_make) read at several radii,
+ * in any order and again, is the profile made anew at each
+ * (rl_polar_profile_octants), bit for bit: the search reads its centre's
+ * shift at three radii (the twin check) and twice in a cross. */
+static void test_shift_read_at_radii(void **state)
+{
+    static const double scales[] = {1.0, 0.95, 1.05, 1.1, 0.95, 1.0};
+    static const unsigned masks[] = {RL_POLAR_ALL, 0x41u, 0x11u, 0x03u};
+    rl_image img = draw(22, 400.3, 380.6, 24.0);
+    int k, j;
+    (void)state;
+    rl_polar_gather(&img, &tone, 401.1, 379.9, 23.0, LIGHT, 20.0, &pol);
+    for (j = 0; j < 4; j++) {
+        rl_polar_shift sh;
+        rl_polar_shift_make(&pol, -0.8, 0.7, masks[j], &sh);
+        for (k = 0; k < 6; k++) {
+            rl_profile a, b;
+            memset(&a, 0, sizeof a);
+            memset(&b, 0, sizeof b);
+            rl_polar_shift_profile(&sh, scales[k], &a);
+            rl_polar_profile_octants(&pol, -0.8, 0.7, scales[k], masks[j], &b);
+            assert_memory_equal(&a, &b, sizeof a);
+            assert_true(a.total > 100);
+        }
+    }
+}
+
 /* The octants' directions after a gather are the odd multiples of 22.5
  * degrees, each once; an octant's opposite points the other way, its
  * mirror image has x's sign flipped (the octant numbering of rl_polar.h:
@@ -221,6 +249,7 @@ int main(void)
         cmocka_unit_test(test_moved_profiles),
         cmocka_unit_test(test_octant_directions),
         cmocka_unit_test(test_sector_levels),
+        cmocka_unit_test(test_shift_read_at_radii),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -167,6 +167,45 @@ static void old_twin_check(const rl_polar *pol, double x, double y, double s, un
     }
 }
 
+/* a try and the crosses as the search made them: each try's octants
+ * moved to its centre anew (rl_polar_profile), st->at not used */
+static double old_search_try(const rl_polar *pol, search_state *st, double x, double y, double s)
+{
+    rl_profile p;
+    rl_match mm;
+    rl_polar_profile(pol, x, y, s, &p);
+    rl_match_list_score(&st->likely, &p, &mm);
+    if (mm.score > st->score) {
+        st->score = mm.score;
+        st->x = x;
+        st->y = y;
+        st->s = s;
+        st->best = p;
+    }
+    return mm.score;
+}
+
+static void old_search_crosses(const rl_polar *pol, search_state *st)
+{
+    static const int dir[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    int it, k;
+    for (it = 0; it < SEARCH_ROUNDS; it++) {
+        double cx0 = st->x, cy0 = st->y, cs0 = st->s, f0 = st->score, fv[6], off[3];
+        double step = search_shift[it], sstep = search_scale[it];
+        for (k = 0; k < 6; k++)
+            fv[k] = old_search_try(pol, st, cx0 + dir[k][0] * step, cy0 + dir[k][1] * step,
+                                   cs0 * (1.0 + dir[k][2] * sstep));
+        if (st->x != cx0 || st->y != cy0 || st->s != cs0)
+            continue;
+        for (k = 0; k < 3; k++) {
+            double den = fv[2 * k] - 2 * f0 + fv[2 * k + 1];
+            off[k] = den < 0 ? 0.5 * (fv[2 * k + 1] - fv[2 * k]) / den : 0.0;
+        }
+        old_search_try(pol, st, cx0 + off[0] * step, cy0 + off[1] * step, cs0 * (1.0 + off[2] * sstep));
+        break;
+    }
+}
+
 /* the likely ids as the search took them: the best and those one code
  * zone away that come close, each matched over the bins on its own */
 static int old_likely_ids(const rl_profile *p, const rl_match *m, int *ids)
@@ -202,10 +241,11 @@ static int old_identify_over(rl_polar *pol, const rl_image *img, double min_firs
     st.x = st.y = 0;
     st.s = 1.0;
     st.score = m->score;
-    sweep = search_try(pol, &st, 0, 0, SWEEP_SCALE);
+    st.best = p;
+    sweep = old_search_try(pol, &st, 0, 0, SWEEP_SCALE);
     if (m->score < min_first && sweep < min_first)
         return 0;
-    search_crosses(pol, &st);
+    old_search_crosses(pol, &st);
     if (st.x != 0 || st.y != 0 || st.s != 1.0) {
         rl_match_all(&tt, &st.best, m);
         *cx += st.x;

@@ -90,9 +90,11 @@ static void score_block(const float *t, size_t stride, int nc, const int *ids, c
  * table order, as wide a block at a time as the table holds (each
  * column's sums the same bits either way); id's columns kept in *own and
  * the rest in *m, or all in *m when own is NULL. Where keep is not NULL
- * the sums are copied into it (column c at c) rather than thrown away. */
-static inline void score_table(const rl_templates *tt, const profile_terms *z, int id, rl_match *own, rl_match *m,
-                               rl_match_kept *keep)
+ * the sums are copied into it (column c at c) rather than thrown away.
+ * 0 as soon as a block leaves m's score over stop (the rest not scored;
+ * +INFINITY: never), else 1. */
+static inline int score_table(const rl_templates *tt, const profile_terms *z, int id, rl_match *own, rl_match *m,
+                              rl_match_kept *keep, double stop)
 {
     int ncol = tt->n * RL_BLUR_LEVELS, c0, c, i = 0, b = 0;
     for (c0 = 0; c0 < ncol;) {
@@ -132,15 +134,18 @@ static inline void score_table(const rl_templates *tt, const profile_terms *z, i
                 i++;
             }
         }
+        if (m->score > stop)
+            return 0;
         c0 += nc;
     }
+    return 1;
 }
 
 void rl_match_all(const rl_templates *tt, const rl_profile *p, rl_match *m)
 {
     profile_terms z;
     if (match_start(p, &z, m))
-        score_table(tt, &z, -1, NULL, m, NULL);
+        (void)score_table(tt, &z, -1, NULL, m, NULL, INFINITY);
 }
 
 size_t rl_match_kept_bytes(int columns)
@@ -178,14 +183,52 @@ void rl_match_all_kept(const rl_templates *tt, const rl_profile *p, rl_match *m,
         return;
     if (tt->stride > keep->columns) {
         keep->state = RL_MATCH_KEPT_NONE; /* past the room: rl_match_kept_ids reads the profile again */
-        score_table(tt, &z, -1, NULL, m, NULL);
+        (void)score_table(tt, &z, -1, NULL, m, NULL, INFINITY);
         return;
     }
     keep->state = RL_MATCH_KEPT_SUMS;
     keep->n = z.n;
     keep->sx = z.sx;
     keep->ivx = z.ivx;
-    score_table(tt, &z, -1, NULL, m, keep);
+    (void)score_table(tt, &z, -1, NULL, m, keep, INFINITY);
+}
+
+/* How far a column must score over id's best to end rl_match_all_kept_as's
+ * walk: none at all, but for sums that were not the same bits. */
+#define AS_MARGIN 1e-9
+
+int rl_match_all_kept_as(const rl_templates *tt, const rl_profile *p, int id, int max_blur, rl_match *m,
+                         rl_match_kept *keep)
+{
+    profile_terms z;
+    rl_match own, blurrier;
+    float st[RL_MATCH_BLOCK], stt[RL_MATCH_BLOCK], sxt[RL_MATCH_BLOCK];
+    int i = rl_templates_find(tt, id), b;
+    if (i < 0 || i * RL_BLUR_LEVELS + RL_MATCH_BLOCK > tt->stride || tt->stride > keep->columns) {
+        rl_match_all_kept(tt, p, m, keep);
+        return 1;
+    }
+    keep->state = RL_MATCH_KEPT_FLAT;
+    if (!match_start(p, &z, m))
+        return 1;
+    /* id's best score up to max_blur, and blurrier, from its own block (a
+     * column's sums the same bits as in the table's walk): once any column
+     * scores over the first, the walk's winner is none of them (its score
+     * only rises, and a column it passes over scores under its runner-up) */
+    own = blurrier = *m;
+    rl_match_kernel(tt->table + (size_t)i * RL_BLUR_LEVELS, (size_t)tt->stride, z.fn, z.fs, st, stt, sxt);
+    for (b = 0; b < RL_BLUR_LEVELS; b++)
+        keep_column(b <= max_blur ? &own : &blurrier, &z, id, b, st[b], stt[b], sxt[b]);
+    keep->state = RL_MATCH_KEPT_SUMS;
+    keep->n = z.n;
+    keep->sx = z.sx;
+    keep->ivx = z.ivx;
+    if (own.id < 0 || (blurrier.id >= 0 && blurrier.score > own.score + AS_MARGIN) ||
+        !score_table(tt, &z, -1, NULL, m, keep, own.score + AS_MARGIN)) {
+        keep->state = RL_MATCH_KEPT_NONE; /* the sums only in part */
+        return 0;
+    }
+    return 1;
 }
 
 void rl_match_id_and_rest(const rl_templates *tt, const rl_profile *p, int id, rl_match *own, rl_match *rest)
@@ -194,7 +237,7 @@ void rl_match_id_and_rest(const rl_templates *tt, const rl_profile *p, int id, r
     int ok = match_start(p, &z, rest);
     *own = *rest; /* both start as nothing matched */
     if (ok)
-        score_table(tt, &z, id, own, rest, NULL);
+        (void)score_table(tt, &z, id, own, rest, NULL, INFINITY);
 }
 
 /* Add column (id index i, blur b) of the table to a list (the table's

@@ -69,6 +69,15 @@ RL_CHECK rl_err rl_match_kept_init(rl_match_kept **out, rl_ws *ws, const rl_temp
  * for bit). */
 void rl_match_all_kept(const rl_templates *tt, const rl_profile *p, rl_match *m, rl_match_kept *keep);
 
+/* rl_match_all_kept for a read that wants only id, at a blur up to
+ * max_blur, as the winner: 1 and the same match and sums, bit for bit;
+ * 0 where it is none of them (no column of theirs scores, or another
+ * column, of any id or of id blurrier, scores over all of them: the
+ * walk over the table stops there), m then no match to use and keep
+ * holding none (state NONE). */
+int rl_match_all_kept_as(const rl_templates *tt, const rl_profile *p, int id, int max_blur, rl_match *m,
+                         rl_match_kept *keep);
+
 /* rl_match_ids(tt, p, ids, n, -1, m), the same bits, from the sums
  * rl_match_all_kept kept of p into *keep (p is read again only where
  * none were kept). */

@@ -95,4 +95,21 @@ int rl_polar_mirror(int o);
 void rl_polar_profile_octants(const rl_polar *pol, double dx, double dy, double scale,
                               unsigned octants, rl_profile *p);
 
+/* A profile's first step, the one its scale does not enter: the octants
+ * of the mask moved to a centre shifted by (dx, dy) and summed into mid
+ * bins (RL_POLAR_SHIFT_GUARD bins either side of the cells' span). Made
+ * once, read at several scales: rl_polar_shift_profile(sh, scale) is
+ * rl_polar_profile_octants(pol, dx, dy, scale, octants), bit for bit. */
+#define RL_POLAR_SHIFT_GUARD 8
+#define RL_POLAR_MID_BINS (RL_POLAR_BINS + RL_POLAR_PAD + 2 * RL_POLAR_SHIFT_GUARD)
+typedef struct {
+    float n[RL_POLAR_MID_BINS], s[RL_POLAR_MID_BINS], q[RL_POLAR_MID_BINS];
+} rl_polar_shift;
+
+void rl_polar_shift_make(const rl_polar *pol, double dx, double dy, unsigned octants, rl_polar_shift *sh);
+
+/* The profile of the shifted octants sh at the radius `scale` times the
+ * gather's. */
+void rl_polar_shift_profile(const rl_polar_shift *sh, double scale, rl_profile *p);
+
 #endif

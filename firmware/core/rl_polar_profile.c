@@ -12,9 +12,9 @@
 
 /* Guard bins either side of the shifted profile: a shift of up to
  * SHIFT_GUARD - 1 bins (1.5 px at the smallest landmarks) stays inside. */
-#define SHIFT_GUARD 8
+#define SHIFT_GUARD RL_POLAR_SHIFT_GUARD
 #define SHIFT_SPAN (RL_POLAR_BINS + RL_POLAR_PAD) /* cells written per sector */
-#define MID_BINS (SHIFT_SPAN + 2 * SHIFT_GUARD)
+#define MID_BINS RL_POLAR_MID_BINS
 
 /* The first step of a profile: every sector moved by its own fraction of
  * a bin (the shift, the same for all its cells: a two-tap filter), the
@@ -202,7 +202,17 @@ void rl_polar_profile(const rl_polar *pol, double dx, double dy, double scale, r
 void rl_polar_profile_octants(const rl_polar *pol, double dx, double dy, double scale,
                               unsigned octants, rl_profile *p)
 {
-    float mn[MID_BINS], ms[MID_BINS], mq[MID_BINS];
-    shift_sectors(pol, dx, dy, octants, mn, ms, mq);
-    rescale_bins(mn, ms, mq, scale, p);
+    rl_polar_shift sh;
+    rl_polar_shift_make(pol, dx, dy, octants, &sh);
+    rl_polar_shift_profile(&sh, scale, p);
+}
+
+void rl_polar_shift_make(const rl_polar *pol, double dx, double dy, unsigned octants, rl_polar_shift *sh)
+{
+    shift_sectors(pol, dx, dy, octants, sh->n, sh->s, sh->q);
+}
+
+void rl_polar_shift_profile(const rl_polar_shift *sh, double scale, rl_profile *p)
+{
+    rescale_bins(sh->n, sh->s, sh->q, scale, p);
 }

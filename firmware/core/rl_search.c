@@ -21,20 +21,23 @@ const double rl_search_twin_scale[RL_SEARCH_TWIN_SCALES] = {0.95, 1.0, 1.05, 1.1
 
 /* Where the search stands: the best centre shift and radius scale so far,
  * their score over the likely ids at one blur, and their profile (at the
- * start the circle's own). */
+ * start the circle's own); at: the octants moved to the best centre (x, y),
+ * for the tries and the twin check there at other radii. */
 typedef struct {
     rl_match_list likely;
     double x, y, s, score;
     rl_profile best;
+    rl_polar_shift at;
 } search_state;
 
-/* Score the likely ids with the centre moved by (x, y) and the radius
- * scaled by s; kept if better. The score is returned. */
-static double search_try(const rl_polar *pol, search_state *st, double x, double y, double s)
+/* Score the likely ids with the centre moved by (x, y), its octants
+ * moved there in *sh, and the radius scaled by s; kept if better. The
+ * score is returned. */
+static double search_try_at(const rl_polar_shift *sh, search_state *st, double x, double y, double s)
 {
     rl_profile p;
     rl_match mm;
-    rl_polar_profile(pol, x, y, s, &p);
+    rl_polar_shift_profile(sh, s, &p);
     rl_match_list_score(&st->likely, &p, &mm);
     if (mm.score > st->score) {
         st->score = mm.score;
@@ -42,8 +45,18 @@ static double search_try(const rl_polar *pol, search_state *st, double x, double
         st->y = y;
         st->s = s;
         st->best = p;
+        if (sh != &st->at)
+            st->at = *sh;
     }
     return mm.score;
+}
+
+/* search_try_at with the octants moved to (x, y) here. */
+static double search_try(const rl_polar *pol, search_state *st, double x, double y, double s)
+{
+    rl_polar_shift sh;
+    rl_polar_shift_make(pol, x, y, RL_POLAR_ALL, &sh);
+    return search_try_at(&sh, st, x, y, s);
 }
 
 /* The likely ids for first match m of profile p: the best and those one
@@ -76,9 +89,12 @@ static void search_crosses(const rl_polar *pol, search_state *st)
     for (it = 0; it < SEARCH_ROUNDS; it++) {
         double cx0 = st->x, cy0 = st->y, cs0 = st->s, f0 = st->score, fv[6], off[3];
         double step = search_shift[it], sstep = search_scale[it];
+        /* the tries in radius keep the centre (x + 0 * step is x): its
+         * octants as moved there already */
+        rl_polar_shift centre = st->at;
         for (k = 0; k < 6; k++)
-            fv[k] = search_try(pol, st, cx0 + dir[k][0] * step, cy0 + dir[k][1] * step,
-                               cs0 * (1.0 + dir[k][2] * sstep));
+            fv[k] = dir[k][2] ? search_try_at(&centre, st, cx0, cy0, cs0 * (1.0 + dir[k][2] * sstep))
+                              : search_try(pol, st, cx0 + dir[k][0] * step, cy0 + dir[k][1] * step, cs0);
         if (st->x != cx0 || st->y != cy0 || st->s != cs0)
             continue; /* moved: a finer cross around the new best */
         for (k = 0; k < 3; k++) {
@@ -90,8 +106,9 @@ static void search_crosses(const rl_polar *pol, search_state *st)
     }
 }
 
-/* The winner's rivals (at_s: the profile of the octants at x, y, s, its
- * columns' sums in keep as its match kept them),
+/* The winner's rivals (sh: the octants read, moved to the winner's
+ * centre, made once for the radii below; at_s: their profile at scale s,
+ * its columns' sums in keep as its match kept them),
  * every id one code zone from it (its zone twins in
  * the two zones next to the outer ring and the ids that differ in any
  * other zone: rl_family_zone_twins), each at its best radius
@@ -110,8 +127,8 @@ static void search_crosses(const rl_polar *pol, search_state *st)
  * them kept by rl_twins) with the two zone twins alone (test_search_twins;
  * docs/results.md, "The search's twin check at every blur" and "Every id
  * one zone away"). */
-static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, double y, double s,
-                       unsigned octants, const rl_profile *at_s, const rl_match_kept *keep, rl_match *m)
+static void twin_check(const rl_templates *tt, const rl_polar_shift *sh, double s, const rl_profile *at_s,
+                       const rl_match_kept *keep, rl_match *m)
 {
     int rivals[RL_MAX_BITS], n = rl_family_zone_twins(&tt->fam, m->id, rivals), k;
     for (k = 0; n > 0 && k < RL_SEARCH_TWIN_SCALES; k++) {
@@ -120,7 +137,7 @@ static void twin_check(const rl_templates *tt, const rl_polar *pol, double x, do
         /* at scale 1 the profile is at_s, the caller's from the same
          * arguments (s * 1.0 is s): not made again, nor its columns summed */
         if (rl_search_twin_scale[k] != 1.0) {
-            rl_polar_profile_octants(pol, x, y, s * rl_search_twin_scale[k], octants, &p);
+            rl_polar_shift_profile(sh, s * rl_search_twin_scale[k], &p); /* the octants moved once */
             rl_match_ids(tt, &p, rivals, n, -1, &mm);
         } else {
             rl_match_kept_ids(tt, at_s, keep, rivals, n, &mm); /* at_s's sums, kept by its match */
@@ -142,13 +159,14 @@ void rl_search_across_motion(const rl_templates *tt, const rl_polar *pol, rl_mat
     for (a = 0; a < n_reads; a++) {
         rl_profile p;
         rl_match ma;
-        rl_polar_profile_octants(pol, x, y, s, reads[a], &p);
-        rl_match_all_kept(tt, &p, &ma, keep);
-        if (ma.id != id || ma.blur > max_blur)
+        rl_polar_shift sh;
+        rl_polar_shift_make(pol, x, y, reads[a], &sh);
+        rl_polar_shift_profile(&sh, s, &p);
+        if (!rl_match_all_kept_as(tt, &p, id, max_blur, &ma, keep) || ma.id != id || ma.blur > max_blur)
             continue; /* another code, or smeared: along the motion */
         if (m->id >= 0 && ma.second >= 0 && rl_accept_lead(&ma) <= rl_accept_lead(m))
             continue; /* its twins only lower its lead (a runner-up at or over 0): it cannot lead */
-        twin_check(tt, pol, x, y, s, reads[a], &p, keep, &ma);
+        twin_check(tt, &sh, s, &p, keep, &ma);
         if (m->id < 0 || rl_accept_lead(&ma) > rl_accept_lead(m))
             *m = ma;
     }
@@ -170,7 +188,8 @@ int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, rl_match_kept
     search_state st;
     double sweep;
     rl_polar_gather(img, tone, *cx, *cy, *r, light, SECTOR_MIN_CONTRAST, pol);
-    rl_polar_profile(pol, 0, 0, 1.0, &p);
+    rl_polar_shift_make(pol, 0, 0, RL_POLAR_ALL, &st.at); /* the circle's centre: its profile, the sweep's */
+    rl_polar_shift_profile(&st.at, 1.0, &p);
     rl_match_all_kept(tt, &p, m, keep);
     if (m->id < 0)
         return 1;
@@ -180,7 +199,7 @@ int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, rl_match_kept
     st.s = 1.0;
     st.score = m->score;
     st.best = p; /* the profile at (0, 0, 1): the twin check's where the search stays */
-    sweep = search_try(pol, &st, 0, 0, SWEEP_SCALE);
+    sweep = search_try_at(&st.at, &st, 0, 0, SWEEP_SCALE);
     if (m->score < min_first && sweep < min_first)
         return 0; /* neither the circle nor the step out matches any id closely */
     search_crosses(pol, &st);
@@ -193,6 +212,6 @@ int rl_search_identify_over(const rl_templates *tt, rl_polar *pol, rl_match_kept
         *r *= st.s;
     }
     if (m->id >= 0 && m->score >= min_score)
-        twin_check(tt, pol, st.x, st.y, st.s, RL_POLAR_ALL, &st.best, keep, m); /* keep: st.best's sums */
+        twin_check(tt, &st.at, st.s, &st.best, keep, m); /* st.at: moved to st.x, st.y; keep: st.best's sums */
     return 1;
 }
