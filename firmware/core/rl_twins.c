@@ -440,7 +440,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         if (keeps(tol, mg, lead, own) ||
             (rank_fits(&d, curved, frame_size(radii, whole, all, i, min_radius)) && own > RL_TWINS_RANK_OWN &&
              rl_twins_rank_keeps(rec, img, rec->tone, res->levels.light, &d))) {
-            doubt[kept_n] = (unsigned char)(!curved && !rl_twins_steep_leads(rec, img, &d, rv, n));
+            doubt[kept_n] = (unsigned char)(!curved && rl_twins_steep_doubts(rec, img, &d, rv, n, lead));
             keep(res, &kept_n, &d, kept, i, from);
         }
         else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol, mg, &reads, &lead)) {

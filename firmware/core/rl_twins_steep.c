@@ -6,23 +6,25 @@
 #include "rl_result.h"
 #include "rl_twins_lead.h"
 
-int rl_twins_steep_leads(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n)
+int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n,
+                          double lead)
 {
     double fit;
-    return rl_twins_lead(rec, img, rl_tones_steep(&rec->tones), d, rv, n, 1, -1, &fit) > 0;
+    return lead < RL_TWINS_STEEP_ASK && !(rl_twins_lead(rec, img, rl_tones_steep(&rec->tones), d, rv, n, 1, -1, &fit) > 0);
 }
 
 /* The frame's evidence for a curve (RL_TWINS_STEEP_FRAME) from res's
- * landmarks: the ids' fits alone are wanted, so no rivals are scored but a
- * local read's (rl_twins_lead scores them with the id in one walk). */
+ * landmarks: the ids' fits alone are wanted, so no rival is scored. */
 static double curve_evidence(const rl_recog *rec, const rl_image *img, const rl_result *res)
 {
     double v[RL_MAX_LANDMARKS], curved, linear;
     const rl_tone *other = rl_tones_other(&rec->tones, rec->tone);
     int k;
     for (k = 0; k < res->n_landmarks; k++) {
-        rl_twins_lead(rec, img, other, &res->landmarks[k], NULL, 0, 1, -1, &curved);
-        rl_twins_lead(rec, img, rec->tone, &res->landmarks[k], NULL, 0, 1, -1, &linear);
+        rl_detection d = res->landmarks[k];
+        d.pass = RL_PASS_GLOBAL; /* the id alone: no rival scored (rl_twins_lead's every_rival) */
+        rl_twins_lead(rec, img, other, &d, NULL, 0, 1, -1, &curved);
+        rl_twins_lead(rec, img, rec->tone, &d, NULL, 0, 1, -1, &linear);
         v[k] = curved - linear;
     }
     return rl_median(v, res->n_landmarks);

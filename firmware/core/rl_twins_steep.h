@@ -15,7 +15,7 @@
  *
  *   int rv[RL_MAX_IDS], n = rl_twins_rivals(rec, &res.landmarks[0], rv), from[RL_MAX_LANDMARKS] = {0};
  *   unsigned char doubt[RL_MAX_LANDMARKS] = {0};
- *   doubt[0] = (unsigned char)!rl_twins_steep_leads(rec, &img, &res.landmarks[0], rv, n);
+ *   doubt[0] = (unsigned char)rl_twins_steep_doubts(rec, &img, &res.landmarks[0], rv, n, 0.0);
  *   rl_twins_steep_settle(rec, &img, &res, doubt, from, NULL);
  */
 #ifndef RL_TWINS_STEEP_H
@@ -33,9 +33,17 @@
  * the wrong reads caught 0.0013-0.017. */
 #define RL_TWINS_STEEP_FRAME (-0.002)
 
-/* Whether d (its rivals rv, n of them: rl_twins_rivals) leads them at 0.91
- * .. 1.09 of its radius through the steepest camera curve. */
-int rl_twins_steep_leads(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n);
+/* A read whose lead through the 2.2 curve (rl_twins_check's `lead`) is
+ * RL_TWINS_STEEP_ASK or more is not asked (the wrong reads had 0.012 or
+ * less; the steep read then runs on the few reads it concerns). */
+#define RL_TWINS_STEEP_ASK 0.02
+
+/* Whether d (its rivals rv, n of them: rl_twins_rivals; its lead through
+ * the 2.2 curve `lead`) is doubted: lead under RL_TWINS_STEEP_ASK and d's
+ * id not leading its rivals at 0.91 .. 1.09 of its radius through the
+ * steepest camera curve. */
+int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n,
+                          double lead);
 
 /* After rl_twins_check_known kept res->landmarks (read as linear): where
  * any is doubted (doubt[k]: its id not leading through the steep curve)
