@@ -9,7 +9,7 @@
  * and only a steeper curve brings it back dark (sixteenth session: a cut 24
  * read as 16, a 24 as 16, a 17 as 1, a 21 as 1, their twins ahead through
  * 2.6; docs/results.md). A truly linear camera's right reads fall behind
- * their twins through 2.6 too (13% of those its 16 px sheets keep), so the
+ * their twins through 2.6 too (13% of its letter sheets' right reads), so the
  * steep curve is asked only where the frame says a curve is plausible:
  * its landmarks fit the 2.2 curve nearly as well as linear light or better.
  *
