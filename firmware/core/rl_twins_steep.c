@@ -10,7 +10,9 @@ int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_det
                           double lead)
 {
     double fit;
-    return lead < RL_TWINS_STEEP_ASK && !(rl_twins_lead(rec, img, rl_tones_steep(&rec->tones), d, rv, n, 1, -1, &fit) > 0);
+    if (!(lead < RL_TWINS_STEEP_ASK))
+        return 0;
+    return !(rl_twins_lead(rec, img, rl_tones_steep(&rec->tones), d, rv, n, 1, -1, &fit) > 0);
 }
 
 /* The frame's evidence for a curve (RL_TWINS_STEEP_FRAME) from res's
