@@ -26,6 +26,7 @@ void rl_tones_init(rl_tones *ts, double gamma)
         rl_tone_init(&ts->tone[k], ts->gamma[k]);
         ts->votes[k] = 0;
     }
+    rl_tone_init(&ts->steep, RL_TONES_STEEP);
     ts->current = 0;
     ts->frames = 0;
 }
@@ -99,6 +100,11 @@ const rl_tone *rl_tones_doubt(const rl_tones *ts, const rl_tone *used)
 const rl_tone *rl_tones_other(const rl_tones *ts, const rl_tone *used)
 {
     return used == &ts->tone[0] ? &ts->tone[1] : &ts->tone[0];
+}
+
+const rl_tone *rl_tones_steep(const rl_tones *ts)
+{
+    return &ts->steep;
 }
 
 const rl_tone *rl_tones_current(const rl_tones *ts)

@@ -33,9 +33,14 @@
 #define RL_TONES_MAX 2
 #define RL_TONES_SETTLE 6.0
 #define RL_TONES_RECHECK 16
+/* The steepest tone curve a camera is taken to have (the issue's held-out
+ * cameras reach gamma 2.6): a frame read as linear is doubted against it
+ * too (rl_tones_steep). */
+#define RL_TONES_STEEP 2.6
 
 typedef struct {
     rl_tone tone[RL_TONES_MAX];   /* both made, whether configured or not */
+    rl_tone steep;                /* RL_TONES_STEEP's, made with them */
     double gamma[RL_TONES_MAX];
     double votes[RL_TONES_MAX];
     int n;        /* curves to choose from: 1 when configured */
@@ -75,6 +80,12 @@ const rl_tone *rl_tones_doubt(const rl_tones *ts, const rl_tone *used);
  * sRGB-like curve (2.2) for one read as linear light. A landmark's id is
  * taken only if its zone twins do not read better there (rl_twins.h). */
 const rl_tone *rl_tones_other(const rl_tones *ts, const rl_tone *used);
+
+/* The steepest camera curve (RL_TONES_STEEP): the far end of the
+ * formations a frame read as linear light could have come from, the
+ * other (2.2) between (rl_twins.c: an id read as linear is taken only
+ * where its rivals do not read better there either). */
+const rl_tone *rl_tones_steep(const rl_tones *ts);
 
 double rl_tones_gamma(const rl_tones *ts);
 

@@ -12,6 +12,7 @@
 #include "rl_twins_cut.h"
 #include "rl_twins_lead.h"
 #include "rl_twins_rank.h"
+#include "rl_twins_steep.h"
 
 /* How far a twin may lead d through the other formation: read as linear
  * light, RL_TWINS_TOLERANCE; read through a curve (the other formation
@@ -331,9 +332,11 @@ static int refused(const rl_recog *rec, const rl_image *img, const rl_tone *othe
            rl_clip_disk_share(img, d->u, d->v, d->radius, light, 2) >= RL_TWINS_UNFIT_LAMP;
 }
 
-/* d kept as res's next landmark (*n of them so far); kept[i] 1 when wanted. */
-static void keep(rl_result *res, int *n, const rl_detection *d, unsigned char *kept, int i)
+/* d kept as res's next landmark (*n of them so far; from[*n] its index i
+ * before); kept[i] 1 when wanted. */
+static void keep(rl_result *res, int *n, const rl_detection *d, unsigned char *kept, int i, int *from)
 {
+    from[*n] = i;
     res->landmarks[(*n)++] = *d;
     if (kept != NULL)
         kept[i] = 1;
@@ -358,10 +361,9 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
 {
     double radii[RL_MAX_LANDMARKS], min_radius = rl_twins_min_radius(&rec->templates.fam);
     double far_radius = RL_TWINS_FAR_ZONE_PX / RL_TWINS_MIN_ZONE_PX * min_radius; /* 1.5 floors */
-    /* read through a curve, not as linear light */
-    int curved = rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0;
-    int i, kept_n = 0, rv[RL_MAX_IDS], n, all = res->n_landmarks;
-    unsigned char whole[RL_MAX_LANDMARKS];
+    int curved = rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0; /* through a curve, not as linear */
+    int i, kept_n = 0, rv[RL_MAX_IDS], n, all = res->n_landmarks, from[RL_MAX_LANDMARKS];
+    unsigned char whole[RL_MAX_LANDMARKS], doubt[RL_MAX_LANDMARKS] = {0};
     for (i = 0; i < all; i++) {
         radii[i] = res->landmarks[i].radius;
         whole[i] = (unsigned char)(res->landmarks[i].complete != 0);
@@ -395,7 +397,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         if ((d.pass == RL_PASS_GLOBAL && (d.complete || !curved) && !small &&
              d.score - d.runner_up >= RL_TWINS_CLEAR) ||
             (known != NULL && known[i]) || (n = rl_twins_rivals(rec, &d, rv)) == 0) {
-            keep(res, &kept_n, &d, kept, i);
+            keep(res, &kept_n, &d, kept, i, from);
             continue;
         }
         mg = margin(&d, small);
@@ -421,7 +423,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
             continue;
         }
         if (fit < d.score - RL_TWINS_UNFIT) {
-            keep(res, &kept_n, &d, kept, i);
+            keep(res, &kept_n, &d, kept, i, from);
             continue;
         }
         if (d.score - lead > d.runner_up)
@@ -433,20 +435,24 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
                            &fit);
         /* the formations disagree: the read through any monotone curve
          * decides, where the frame's curve reads the id clearly too
-         * (RL_TWINS_RANK_OWN) */
+         * (RL_TWINS_RANK_OWN); read as linear, doubted where the
+         * steepest curve reads a rival (rl_twins_steep, after the loop) */
         if (keeps(tol, mg, lead, own) ||
             (rank_fits(&d, curved, frame_size(radii, whole, all, i, min_radius)) && own > RL_TWINS_RANK_OWN &&
-             rl_twins_rank_keeps(rec, img, rec->tone, res->levels.light, &d)))
-            keep(res, &kept_n, &d, kept, i);
+             rl_twins_rank_keeps(rec, img, rec->tone, res->levels.light, &d))) {
+            doubt[kept_n] = (unsigned char)(!curved && rl_twins_steep_doubts(rec, img, &d, rv, n, lead));
+            keep(res, &kept_n, &d, kept, i, from);
+        }
         else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol, mg, &reads, &lead)) {
             /* its runner-up from the reads across the motion it passed */
             d.runner_up = res->landmarks[i].runner_up;
             if (d.score - lead > d.runner_up)
                 d.runner_up = d.score - lead;
-            keep(res, &kept_n, &d, kept, i);
+            keep(res, &kept_n, &d, kept, i, from);
         }
         else
             rl_result_add_unidentified(res, &d);
     }
     res->n_landmarks = kept_n;
+    rl_twins_steep_settle(rec, img, res, doubt, from, kept);
 }

@@ -1,0 +1,53 @@
+/* rl_twins_steep: a frame read as linear doubted against the steepest
+ * camera curve (rl_twins_steep.h). */
+#include "rl_twins_steep.h"
+
+#include "rl_median.h"
+#include "rl_result.h"
+#include "rl_twins_lead.h"
+
+int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n,
+                          double lead)
+{
+    double fit;
+    if (!(lead < RL_TWINS_STEEP_ASK))
+        return 0;
+    return !(rl_twins_lead(rec, img, rl_tones_steep(&rec->tones), d, rv, n, 1, -1, &fit) > 0);
+}
+
+/* The frame's evidence for a curve (RL_TWINS_STEEP_FRAME) from res's
+ * landmarks: the ids' fits alone are wanted, so no rival is scored. */
+static double curve_evidence(const rl_recog *rec, const rl_image *img, const rl_result *res)
+{
+    double v[RL_MAX_LANDMARKS], curved, linear;
+    const rl_tone *other = rl_tones_other(&rec->tones, rec->tone);
+    int k;
+    for (k = 0; k < res->n_landmarks; k++) {
+        rl_detection d = res->landmarks[k];
+        d.pass = RL_PASS_GLOBAL; /* the id alone: no rival scored (rl_twins_lead's every_rival) */
+        rl_twins_lead(rec, img, other, &d, NULL, 0, 1, -1, &curved);
+        rl_twins_lead(rec, img, rec->tone, &d, NULL, 0, 1, -1, &linear);
+        v[k] = curved - linear;
+    }
+    return rl_median(v, res->n_landmarks);
+}
+
+void rl_twins_steep_settle(const rl_recog *rec, const rl_image *img, rl_result *res, const unsigned char *doubt,
+                           const int *from, unsigned char *kept)
+{
+    int k, m = 0, any = 0;
+    for (k = 0; k < res->n_landmarks; k++)
+        any |= doubt[k];
+    if (!any || !(curve_evidence(rec, img, res) > RL_TWINS_STEEP_FRAME))
+        return;
+    for (k = 0; k < res->n_landmarks; k++) {
+        if (!doubt[k]) {
+            res->landmarks[m++] = res->landmarks[k];
+            continue;
+        }
+        rl_result_add_unidentified(res, &res->landmarks[k]);
+        if (kept != NULL)
+            kept[from[k]] = 0;
+    }
+    res->n_landmarks = m;
+}
