@@ -7,6 +7,7 @@
 #include "rl_match.h"
 #include "rl_refine.h"
 #include "rl_result.h"
+#include "rl_twins_lead.h"
 
 /* Border landmarks with at most this much missing are identified in the
  * global pass (their outer ring is closed but for a sliver); the rest wait
@@ -54,6 +55,9 @@ static int identify_through(const rl_recog *rec, const rl_image *img, const rl_t
     taken = rl_accept(&rule, m, rl_accept_span(local, tone, &p));
     if (!taken && try_ellipse(img, tone, &rec->templates, &c->shape, box_r, d, &p, m))
         taken = rl_accept(&rule, m, rl_accept_span(local, tone, &p));
+    /* a clear read ahead of its zone twins beside its radius too, from
+     * these pixels (rl_twins' shortcut asks) */
+    d->twins_led = taken && rl_twins_led_read(rec, &p, m);
     return taken;
 }
 

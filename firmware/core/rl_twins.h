@@ -51,7 +51,9 @@
  * formations turned into a twin led by more than 0.036: composites and
  * moving frames, docs/design.md; a cut one read through the 2.2 curve
  * led by 0.055, so a landmark the border cuts is always checked in a frame
- * read through a curve). */
+ * read through a curve), and leads its zone twins at 0.97 of its radius
+ * on the pixels the read gathered (rl_twins_led_read,
+ * rl_detection.twins_led). */
 #define RL_TWINS_CLEAR 0.05
 /* A local read's (and a small global read's) lead over its twins, both
  * formations summed, at least;

@@ -4,6 +4,7 @@
 
 #include "rl_match.h"
 #include "rl_profile.h"
+#include "rl_twins.h"
 
 /* Radius scales a landmark and its twins are scored at (the radius was
  * read through one formation and the edge falls elsewhere through the
@@ -106,4 +107,32 @@ int rl_twins_rivals(const rl_recog *rec, const rl_detection *d, int *out)
         if (rec->templates.ids[i] != d->id)
             out[n++] = rec->templates.ids[i];
     return n;
+}
+
+/* The scale below a read's radius its twins are met at from the read's
+ * own profile (rl_twins_led_read): the near range's (0.97); 1.03 would
+ * want pixels past the profile's extent, not gathered. */
+#define LED_SCALE (1.0 - SCALES_NEAR * SCALE_STEP)
+
+/* A whole 2 behind a 2x scaler read as 18 by the global pass at 2.2 led
+ * every id by 0.060, its twin 2 0.0055 ahead of it at 0.97 of its radius;
+ * the 397 right clear reads of the development scale sets led their twins
+ * there by 0.0144 or more (docs/results.md, sixteenth session). */
+int rl_twins_led_read(const rl_recog *rec, const rl_profile *p, const rl_match *m)
+{
+    int codes[RL_MAX_BITS + 1], n, i;
+    double best[RL_MAX_BITS + 1], twin = -2;
+    rl_profile q;
+    if (m->id < 0 || m->score - m->second < RL_TWINS_CLEAR)
+        return 0;
+    codes[0] = m->id;
+    n = 1 + rl_family_zone_twins(&rec->templates.fam, m->id, codes + 1);
+    if (n == 1)
+        return 1;
+    rl_profile_rescale(p, LED_SCALE, &q);
+    /* the id and its twins, the profile's terms worked out once */
+    rl_match_ids_each(&rec->templates, &q, codes, n, best);
+    for (i = 1; i < n; i++)
+        twin = best[i] > twin ? best[i] : twin;
+    return (best[0] > m->score ? best[0] : m->score) > twin;
 }

@@ -25,4 +25,12 @@ int rl_twins_rivals(const rl_recog *rec, const rl_detection *d, int *out);
 double rl_twins_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
                      const int *rv, int n, int far, int axis, double *fit);
 
+/* 1 when m, the match of every id on p (a profile gathered at a read's
+ * radius through its curve: the global pass's), leads every other id by
+ * RL_TWINS_CLEAR and its id leads its zone twins at 0.97 of that radius
+ * too (read from p, no pixel gathered again): its best score there and at
+ * the radius (m->score) over theirs there. At the radius itself no twin
+ * scored over m->second. */
+int rl_twins_led_read(const rl_recog *rec, const rl_profile *p, const rl_match *m);
+
 #endif
