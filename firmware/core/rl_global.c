@@ -7,6 +7,7 @@
 #include "rl_match.h"
 #include "rl_refine.h"
 #include "rl_result.h"
+#include "rl_twins_lead.h"
 
 /* Border landmarks with at most this much missing are identified in the
  * global pass (their outer ring is closed but for a sliver); the rest wait
@@ -39,10 +40,11 @@ static int try_ellipse(const rl_image *img, const rl_tone *tone, const rl_templa
 }
 
 /* The circle (then the ellipse) at d's place through tone: d's radius and
- * the match into *m; 1 when the rule takes it. */
+ * the match into *m, the profile matched into *pp; 1 when the rule takes
+ * it. */
 static int identify_through(const rl_recog *rec, const rl_image *img, const rl_tone *tone,
                             const rl_clr *c, const rl_levels *local, int near_light, rl_detection *d,
-                            rl_match *m)
+                            rl_match *m, rl_profile *pp)
 {
     rl_accept_rule rule = rl_accept_rule_at(&rec->cfg, RL_PASS_GLOBAL, near_light);
     rl_profile p;
@@ -54,6 +56,7 @@ static int identify_through(const rl_recog *rec, const rl_image *img, const rl_t
     taken = rl_accept(&rule, m, rl_accept_span(local, tone, &p));
     if (!taken && try_ellipse(img, tone, &rec->templates, &c->shape, box_r, d, &p, m))
         taken = rl_accept(&rule, m, rl_accept_span(local, tone, &p));
+    *pp = p;
     return taken;
 }
 
@@ -72,20 +75,25 @@ static void place(const rl_recog *rec, const rl_clr *c, const rl_result *res, rl
 }
 
 /* The read of d (placed: its centre refined) through tone, local the
- * frame's levels at its unrefined centre. */
+ * frame's levels at its unrefined centre; with kept (a read the frame
+ * keeps, not the tone reads' count), whether a clear one leads its zone
+ * twins beside its radius too, from these pixels (d->twins_led:
+ * rl_twins' shortcut asks). */
 static void read_placed(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
-                        const rl_result *res, const rl_levels *local, rl_detection *d)
+                        const rl_result *res, const rl_levels *local, int kept, rl_detection *d)
 {
     rl_match m;
+    rl_profile p;
     if (d->visible < GLOBAL_MIN_VISIBLE) {
         rl_refine_radius(img, tone, d->u, d->v, &d->radius);
         return;
     }
     /* as a circle first; an ellipse only when the circle is not taken */
     if (identify_through(rec, img, tone, c, local,
-                         rl_result_light_gap(res, &c->box) <= rec->cfg.near_light * d->radius, d, &m) &&
+                         rl_result_light_gap(res, &c->box) <= rec->cfg.near_light * d->radius, d, &m, &p) &&
         !rl_inner_enclosed(img, res->levels.light, d->u, d->v, d->radius, 0.0)) {
         d->id = m.id;
+        d->twins_led = kept && rl_twins_led_read(rec, &p, &m, d);
         d->band_ready = rec->cfg.band_radius && d->complete && rl_shape_is_circle(&c->shape);
     }
     d->best_id = m.id; /* taken or not: an unread candidate's nearest id */
@@ -100,7 +108,7 @@ void rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, c
     place(rec, c, res, d, &local);
     if (d->complete)
         rl_refine_centre(img, &local, &d->u, &d->v, d->radius);
-    read_placed(rec, img, c, tone, res, &local, d);
+    read_placed(rec, img, c, tone, res, &local, 1, d);
 }
 
 void rl_global_read_placed(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
@@ -110,7 +118,7 @@ void rl_global_read_placed(const rl_recog *rec, const rl_image *img, const rl_cl
     place(rec, c, res, d, &local);
     d->u = u;
     d->v = v;
-    read_placed(rec, img, c, tone, res, &local, d);
+    read_placed(rec, img, c, tone, res, &local, 0, d);
 }
 
 int rl_global_readable(const rl_clr *c, int W, int H)

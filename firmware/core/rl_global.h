@@ -25,7 +25,8 @@ void rl_global_read(const rl_recog *rec, const rl_image *img, const rl_clr *c, c
 /* rl_global_read of c with its centre given: (u, v), where rl_global_read
  * through any curve placed it (its d->u, d->v: the centre is refined on
  * the grey levels alone, the same through every curve); the same read,
- * without refining the centre again. */
+ * without refining the centre again; for the tone reads' count (its
+ * twins_led not read). */
 void rl_global_read_placed(const rl_recog *rec, const rl_image *img, const rl_clr *c, const rl_tone *tone,
                            const rl_result *res, double u, double v, rl_detection *d);
 

@@ -16,6 +16,7 @@
 #include "rl_result.h"
 #include "rl_speck.h"
 #include "rl_twins.h"
+#include "rl_twins_lead.h"
 #include "rl_verify.h"
 
 void rl_recog_defaults(rl_recog_config *cfg)
@@ -169,6 +170,7 @@ rl_err rl_recog_init(rl_recog **out, const rl_recog_config *cfg, int w, int h, v
     /* the arrays are carved; the rest of the recognizer is filled in */
     resolve_config(rec, cfg, w, h);
     rl_verify_init(rec);
+    rl_twins_led_init(rec);
     *out = rec;
     return RL_OK;
 }

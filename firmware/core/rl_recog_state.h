@@ -40,6 +40,7 @@ struct rl_recog {
     rl_templates templates;        /* rendered at init */
     rl_rivals rivals;    /* each id's rivals, for a known window's read (rl_verify) */
     rl_profile_scale verify_scales[5]; /* the radii a window's profile is read at (rl_verify_init) */
+    rl_profile_scale led_scale; /* where a clear global read's twins are met (rl_twins_led_init) */
     rl_tones tones; /* the camera's tone curve, configured or learned */
     const rl_tone *tone; /* the one this frame is read through (in tones) */
     rl_label dark;  /* ROI labelling: the frame, its second labellings (rl_split), then the

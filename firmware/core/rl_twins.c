@@ -314,9 +314,27 @@ static double own_lead(const rl_recog *rec, const rl_image *img, const rl_detect
     return cut_linear && !(own > RL_TWINS_CUT_LINEAR_OWN) ? 0.0 : own;
 }
 
+/* Whether d, a small read, may keep its id where the border cuts a global
+ * read of it in a frame read through a curve (curved): its twins at 0.91
+ * .. 1.09 of its radius through the frame's own curve must not lead it. A
+ * cut 2 behind a 2x scaler (19.3 px, the border 0.6 px into its disk) read
+ * as 18 led its twin by 0.0243 through the other formation and 0.0219
+ * through its curve at 3%, but the twin led by 0.0075 at 9%; the 72 right
+ * reads so judged on the development scale sets led by 0.0048 or more
+ * there, where through the other formation 13 let the twin lead, by up to
+ * 0.0113 (docs/results.md, sixteenth session). */
+static int cut_fits(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n,
+                    int curved)
+{
+    double fit;
+    if (d->complete || d->pass == RL_PASS_LOCAL || !curved)
+        return 1;
+    return rl_twins_lead(rec, img, rec->tone, d, rv, n, 1, -1, &fit) > 0;
+}
+
 /* Whether d gets no id before its leads are weighed: a small read by
  * rules 6, 7 and 8 (its rivals rv at its own and the frame's size, in
- * clipped light: rl_clip), and a read whose circle fits far worse than
+ * clipped light: rl_clip) and a cut global one by cut_fits, and a read whose circle fits far worse than
  * its read (`fit`: an ellipse the local pass read at a lens's border, not
  * judged by its twins) where a lamp covers it (RL_TWINS_UNFIT_LAMP).
  * size: the frame's landmark size (frame_size), asked only of a small one. */
@@ -325,7 +343,8 @@ static int refused(const rl_recog *rec, const rl_image *img, const rl_tone *othe
                    int small, double size, double fit)
 {
     if (small && (rl_clip_refuses(rec, img, light, d) || !small_fits(rec, img, light, d, rv, n, tol, mg, reads) ||
-                     !size_fits(rec, img, other, d, rv, n, size)))
+                     !size_fits(rec, img, other, d, rv, n, size) ||
+                     !cut_fits(rec, img, d, rv, n, rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0)))
         return 1;
     /* no light level (over 255): no lamp in the frame */
     return fit < d->score - RL_TWINS_UNFIT && light <= 255 &&
@@ -386,7 +405,10 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
             continue;
         }
         /* a global read of a whole landmark clear of every other id
-         * through its curve is clear of its twins; a local read's
+         * through its curve, and of its twins at 0.97 of its radius on
+         * the pixels it was read from (twins_led: a whole 2 behind a 2x
+         * scaler read as 18 led every id by 0.060, its twin 0.0055
+         * ahead of it there), is clear of its twins; a local read's
          * runner-up (sector-normalized) does not say so, nor a cut one's
          * read through a curve (a circle partly out of the frame: a cut
          * 2 of a 16 px grey-mixed sheet read as its twin 18 at 2.2 led
@@ -395,7 +417,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * curve (a whole 2 of a 16.8 px moving frame blurred after the
          * curve, read as its twin 18, led every id by 0.051) */
         if ((d.pass == RL_PASS_GLOBAL && (d.complete || !curved) && !small &&
-             d.score - d.runner_up >= RL_TWINS_CLEAR) ||
+             d.score - d.runner_up >= RL_TWINS_CLEAR && d.twins_led) ||
             (known != NULL && known[i]) || (n = rl_twins_rivals(rec, &d, rv)) == 0) {
             keep(res, &kept_n, &d, kept, i, from);
             continue;

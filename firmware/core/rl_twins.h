@@ -29,7 +29,9 @@
  * before any rule keeps it: a global read its twins at 9% either side
  * through the frame's curve, about the whole ring and along its sharpest
  * axis (the two leads over RL_TWINS_LOCAL_MARGIN), a local read the rule
- * along its sharpest axis (small_fits; docs/design.md, rule 6). A small
+ * along its sharpest axis (small_fits; docs/design.md, rule 6); a small
+ * global read the border cuts, in a frame read through a curve, its twins
+ * at 9% either side through that curve (cut_fits). A small
  * landmark read from a circle RL_TWINS_CUT_SIZE or more larger than the
  * frame's other landmarks' must lead its twins read at their radius
  * too (size_fits; rule 7). A landmark too small for its twins to be
@@ -51,7 +53,9 @@
  * formations turned into a twin led by more than 0.036: composites and
  * moving frames, docs/design.md; a cut one read through the 2.2 curve
  * led by 0.055, so a landmark the border cuts is always checked in a frame
- * read through a curve). */
+ * read through a curve), and leads its zone twins at 0.97 of its radius
+ * on the pixels the read gathered (rl_twins_led_read,
+ * rl_detection.twins_led). */
 #define RL_TWINS_CLEAR 0.05
 /* A local read's (and a small global read's) lead over its twins, both
  * formations summed, at least;

@@ -4,6 +4,7 @@
 
 #include "rl_match.h"
 #include "rl_profile.h"
+#include "rl_twins.h"
 
 /* Radius scales a landmark and its twins are scored at (the radius was
  * read through one formation and the edge falls elsewhere through the
@@ -106,4 +107,44 @@ int rl_twins_rivals(const rl_recog *rec, const rl_detection *d, int *out)
         if (rec->templates.ids[i] != d->id)
             out[n++] = rec->templates.ids[i];
     return n;
+}
+
+/* The scale below a read's radius its twins are met at from the read's
+ * own profile (rl_twins_led_read): the near range's (0.97); 1.03 would
+ * want pixels past the profile's extent, not gathered. */
+#define LED_SCALE (1.0 - SCALES_NEAR * SCALE_STEP)
+
+void rl_twins_led_init(rl_recog *rec)
+{
+    rl_profile_scale_make(LED_SCALE, &rec->led_scale);
+}
+
+/* A whole 2 behind a 2x scaler read as 18 by the global pass at 2.2 led
+ * every id by 0.060, its twin 2 0.0055 ahead of it at 0.97 of its radius;
+ * the 397 right clear reads of the development scale sets led their twins
+ * there by 0.0144 or more (docs/results.md, sixteenth session). The twins
+ * are scored first, the id there only where one reaches its score at the
+ * radius (its best is at least that). */
+int rl_twins_led_read(const rl_recog *rec, const rl_profile *p, const rl_match *m, const rl_detection *d)
+{
+    int twins[2], n, i;
+    double best[2], twin = -2;
+    rl_profile q;
+    rl_match own;
+    if (m->id < 0 || m->score - m->second < RL_TWINS_CLEAR ||
+        d->radius < RL_TWINS_FAR_ZONE_PX / RL_TWINS_MIN_ZONE_PX * rl_twins_min_radius(&rec->templates.fam))
+        return 0;
+    /* the twins one zone next to the outer ring (rl_match_twins), whose
+     * zones a radius error moves most */
+    if ((n = rl_match_twins(&rec->templates, m->id, twins)) == 0)
+        return 1;
+    rl_profile_rescale_by(p, &rec->led_scale, &q);
+    /* the twins, the profile's terms worked out once */
+    rl_match_ids_each(&rec->templates, &q, twins, n, best);
+    for (i = 0; i < n; i++)
+        twin = best[i] > twin ? best[i] : twin;
+    if (twin < m->score)
+        return 1;
+    rl_match_ids(&rec->templates, &q, &m->id, 1, -1, &own);
+    return own.id >= 0 && own.score > twin;
 }

@@ -25,4 +25,19 @@ int rl_twins_rivals(const rl_recog *rec, const rl_detection *d, int *out);
 double rl_twins_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
                      const int *rv, int n, int far, int axis, double *fit);
 
+/* 1 when m, the match of every id on p (a profile gathered at d's radius
+ * through its curve: the global pass's read d), leads every other id by
+ * RL_TWINS_CLEAR and its id leads its twins in code zones 1 and 2 (next
+ * to the outer ring: rl_match_twins) at 0.97 of that radius too (read
+ * from p, no pixel gathered again): its best score there and at
+ * the radius (m->score) over theirs there. At the radius itself no twin
+ * scored over m->second. 0 without a look for a small read (under
+ * RL_TWINS_FAR_ZONE_PX's radius), which rl_twins checks whatever this
+ * says. */
+/* rec->led_scale made: the bin moves rl_twins_led_read rebins by (once,
+ * at init). */
+void rl_twins_led_init(rl_recog *rec);
+
+int rl_twins_led_read(const rl_recog *rec, const rl_profile *p, const rl_match *m, const rl_detection *d);
+
 #endif

@@ -422,6 +422,9 @@ static int read_at(const rl_recog *rec, const rl_image *img, const rl_result *re
         return 0;
     d->id = id;
     d->pass = RL_PASS_GLOBAL;
+    /* no twin fit as well at 0.95 .. 1.05 (twin_fits_as_well), or the id
+     * led every id by TWIN_CLEAR */
+    d->twins_led = 1;
     d->complete = rl_geom_disk_complete(img->width, img->height, d->u, d->v, d->radius);
     d->visible = rl_geom_visible_in(img->width, img->height, d->u, d->v, d->radius);
     return 1;

@@ -125,6 +125,12 @@ typedef struct {
                            when rl_recog_config.band_radius is set, whose radius
                            rl_recog_run takes from the band once every id is decided
                            (tracking's reads take none) */
+    int twins_led;      /* internal: 1 when the read that took the id found it ahead of
+                           its zone twins beside its own radius, from the pixels it read:
+                           a global read clear of every id (rl_twins.h, RL_TWINS_CLEAR)
+                           at 0.97 of its radius (rl_twins_led_read), a window's read
+                           at 0.95 .. 1.05 (rl_verify); rl_twins judges a clear global
+                           read without it as any other */
 } rl_detection;
 
 /* What a compile-time limit (rl_config.h) left out of one frame's result. */
