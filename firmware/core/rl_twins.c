@@ -363,7 +363,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
     double far_radius = RL_TWINS_FAR_ZONE_PX / RL_TWINS_MIN_ZONE_PX * min_radius; /* 1.5 floors */
     int curved = rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0; /* through a curve, not as linear */
     int i, kept_n = 0, rv[RL_MAX_IDS], n, all = res->n_landmarks, from[RL_MAX_LANDMARKS];
-    unsigned char whole[RL_MAX_LANDMARKS], doubt[RL_MAX_LANDMARKS] = {0};
+    unsigned char whole[RL_MAX_LANDMARKS], ask[RL_MAX_LANDMARKS] = {0};
     for (i = 0; i < all; i++) {
         radii[i] = res->landmarks[i].radius;
         whole[i] = (unsigned char)(res->landmarks[i].complete != 0);
@@ -440,7 +440,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         if (keeps(tol, mg, lead, own) ||
             (rank_fits(&d, curved, frame_size(radii, whole, all, i, min_radius)) && own > RL_TWINS_RANK_OWN &&
              rl_twins_rank_keeps(rec, img, rec->tone, res->levels.light, &d))) {
-            doubt[kept_n] = (unsigned char)(!curved && rl_twins_steep_doubts(rec, img, &d, rv, n, lead));
+            ask[kept_n] = (unsigned char)(!curved && rl_twins_steep_asks(lead));
             keep(res, &kept_n, &d, kept, i, from);
         }
         else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol, mg, &reads, &lead)) {
@@ -454,5 +454,5 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
             rl_result_add_unidentified(res, &d);
     }
     res->n_landmarks = kept_n;
-    rl_twins_steep_settle(rec, img, res, doubt, from, kept);
+    rl_twins_steep_settle(rec, img, res, ask, from, kept);
 }

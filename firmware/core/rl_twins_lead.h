@@ -25,4 +25,12 @@ int rl_twins_rivals(const rl_recog *rec, const rl_detection *d, int *out);
 double rl_twins_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
                      const int *rv, int n, int far, int axis, double *fit);
 
+/* !(rl_twins_lead(rec, img, tone, d, rv, n, 1, -1, &fit) > 0): whether a
+ * rival reaches d's id at 0.91 .. 1.09 of its radius through tone, the
+ * same scores read, stopping at the first scale past the id's own three
+ * where one does (rl_twins_steep asks it of a few reads, and a rival that
+ * reaches the id is what it looks for). */
+int rl_twins_lead_reached(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
+                          const int *rv, int n);
+
 #endif

@@ -6,13 +6,9 @@
 #include "rl_result.h"
 #include "rl_twins_lead.h"
 
-int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n,
-                          double lead)
+int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n)
 {
-    double fit;
-    if (!(lead < RL_TWINS_STEEP_ASK))
-        return 0;
-    return !(rl_twins_lead(rec, img, rl_tones_steep(&rec->tones), d, rv, n, 1, -1, &fit) > 0);
+    return rl_twins_lead_reached(rec, img, rl_tones_steep(&rec->tones), d, rv, n);
 }
 
 /* The frame's evidence for a curve (RL_TWINS_STEEP_FRAME) from res's
@@ -32,13 +28,31 @@ static double curve_evidence(const rl_recog *rec, const rl_image *img, const rl_
     return rl_median(v, res->n_landmarks);
 }
 
-void rl_twins_steep_settle(const rl_recog *rec, const rl_image *img, rl_result *res, const unsigned char *doubt,
+/* Whether res's landmark k (asked: rl_twins_steep_asks) is doubted. */
+static int doubted(const rl_recog *rec, const rl_image *img, const rl_result *res, int k)
+{
+    int rv[RL_MAX_IDS], n = rl_twins_rivals(rec, &res->landmarks[k], rv);
+    return rl_twins_steep_doubts(rec, img, &res->landmarks[k], rv, n);
+}
+
+void rl_twins_steep_settle(const rl_recog *rec, const rl_image *img, rl_result *res, const unsigned char *ask,
                            const int *from, unsigned char *kept)
 {
+    unsigned char doubt[RL_MAX_LANDMARKS];
     int k, m = 0, any = 0;
-    for (k = 0; k < res->n_landmarks; k++)
-        any |= doubt[k];
-    if (!any || !(curve_evidence(rec, img, res) > RL_TWINS_STEEP_FRAME))
+    /* the asked reads in turn, the frame's evidence at the first doubted
+     * one: where it says linear light, no doubt changes anything, and the
+     * reads left are not asked (the landmarks a read asks of are the
+     * kept ones as they stand, so the order changes no read) */
+    for (k = 0; k < res->n_landmarks; k++) {
+        doubt[k] = (unsigned char)(ask[k] && doubted(rec, img, res, k));
+        if (doubt[k] && !any) {
+            if (!(curve_evidence(rec, img, res) > RL_TWINS_STEEP_FRAME))
+                return;
+            any = 1;
+        }
+    }
+    if (!any)
         return;
     for (k = 0; k < res->n_landmarks; k++) {
         if (!doubt[k]) {
