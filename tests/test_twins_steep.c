@@ -16,6 +16,7 @@
  * gamma 1 less fit through 2.2), every read asked: both branches of the
  * evidence, each asserted to be taken. */
 #include "rl_test.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -69,7 +70,9 @@ static void reached_decides_as_the_full_read(void **state)
         assert_int_equal(rl_heap_recog_run(&hr, &img, &res), RL_OK);
         for (i = 0; i < res.n_landmarks; i++) {
             const rl_recog *rec = hr.rec;
-            const rl_tone *tones[2] = {rl_tones_steep(&rec->tones), rl_tones_other(&rec->tones, rec->tone)};
+            static rl_tone steep;
+            const rl_tone *tones[2] = {&steep, rl_tones_other(&rec->tones, rec->tone)};
+            rl_tones_steep(&rec->tones, &steep);
             for (j = 0; j < rec->templates.n; j++)
                 for (t = 0; t < 2; t++) {
                     int id = rec->templates.ids[j];
@@ -93,6 +96,8 @@ static int check_settle(const rl_recog *rec, const rl_image *img, const rl_resul
     static rl_result got, want;
     unsigned char ask[RL_MAX_LANDMARKS], doubt[RL_MAX_LANDMARKS], kept[RL_MAX_LANDMARKS];
     int from[RL_MAX_LANDMARKS], k, m = 0, any = 0, branch = 0;
+    rl_tone steep;
+    rl_tone_init(&steep, RL_TONES_STEEP); /* the curve whole, as the plain order kept it */
     want = *in;
     for (k = 0; k < in->n_landmarks; k++) {
         int rv[RL_MAX_IDS], n = rl_twins_rivals(rec, &in->landmarks[k], rv);
@@ -101,7 +106,7 @@ static int check_settle(const rl_recog *rec, const rl_image *img, const rl_resul
         from[k] = in->n_landmarks - 1 - k; /* any order: kept[] by it */
         kept[from[k]] = 1;
         doubt[k] = (unsigned char)!(
-            rl_twins_lead(rec, img, rl_tones_steep(&rec->tones), &in->landmarks[k], rv, n, 1, -1, &fit) > 0);
+            rl_twins_lead(rec, img, &steep, &in->landmarks[k], rv, n, 1, -1, &fit) > 0);
         any |= doubt[k];
     }
     if (any) {
@@ -158,11 +163,34 @@ static void settle_decides_as_the_plain_order(void **state)
     assert_true(branches[0] > 0);
 }
 
+/* The steep curve made from its 512 B gathers as the whole curve would:
+ * its packed words rl_tone_init's, level by level, and its light within
+ * half a step of the curve's, for a configured gamma and auto. */
+static void steep_curve_is_the_whole_curve(void **state)
+{
+    static const double gammas[3] = {1.0, 2.2, 0.0};
+    int g, v;
+    (void)state;
+    for (g = 0; g < 3; g++) {
+        rl_tones ts;
+        rl_tone whole, made;
+        rl_tones_init(&ts, gammas[g]);
+        rl_tone_init(&whole, RL_TONES_STEEP);
+        rl_tones_steep(&ts, &made);
+        for (v = 0; v < 256; v++) {
+            double l = RL_TONE_MAX * pow(v / 255.0, 2.6);
+            assert_true(made.packed[v] == whole.packed[v]);
+            assert_true(fabs(made.light[v] - l) <= 0.5);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(reached_decides_as_the_full_read),
         cmocka_unit_test(settle_decides_as_the_plain_order),
+        cmocka_unit_test(steep_curve_is_the_whole_curve),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

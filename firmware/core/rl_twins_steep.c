@@ -6,9 +6,10 @@
 #include "rl_result.h"
 #include "rl_twins_lead.h"
 
-int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n)
+int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_tone *steep, const rl_detection *d,
+                          const int *rv, int n)
 {
-    return rl_twins_lead_reached(rec, img, rl_tones_steep(&rec->tones), d, rv, n);
+    return rl_twins_lead_reached(rec, img, steep, d, rv, n);
 }
 
 /* The frame's evidence for a curve (RL_TWINS_STEEP_FRAME) from res's
@@ -28,24 +29,30 @@ static double curve_evidence(const rl_recog *rec, const rl_image *img, const rl_
     return rl_median(v, res->n_landmarks);
 }
 
-/* Whether res's landmark k (asked: rl_twins_steep_asks) is doubted. */
-static int doubted(const rl_recog *rec, const rl_image *img, const rl_result *res, int k)
+/* Whether res's landmark k (asked: rl_twins_steep_asks) is doubted; the
+ * steep curve made into *steep at the first read asked (*made). */
+static int doubted(const rl_recog *rec, const rl_image *img, const rl_result *res, int k, rl_tone *steep,
+                   int *made)
 {
     int rv[RL_MAX_IDS], n = rl_twins_rivals(rec, &res->landmarks[k], rv);
-    return rl_twins_steep_doubts(rec, img, &res->landmarks[k], rv, n);
+    if (!*made)
+        rl_tones_steep(&rec->tones, steep);
+    *made = 1;
+    return rl_twins_steep_doubts(rec, img, steep, &res->landmarks[k], rv, n);
 }
 
 void rl_twins_steep_settle(const rl_recog *rec, const rl_image *img, rl_result *res, const unsigned char *ask,
                            const int *from, unsigned char *kept)
 {
     unsigned char doubt[RL_MAX_LANDMARKS];
-    int k, m = 0, any = 0;
+    rl_tone steep;
+    int k, m = 0, any = 0, made = 0;
     /* the asked reads in turn, the frame's evidence at the first doubted
      * one: where it says linear light, no doubt changes anything, and the
      * reads left are not asked (the landmarks a read asks of are the
      * kept ones as they stand, so the order changes no read) */
     for (k = 0; k < res->n_landmarks; k++) {
-        doubt[k] = (unsigned char)(ask[k] && doubted(rec, img, res, k));
+        doubt[k] = (unsigned char)(ask[k] && doubted(rec, img, res, k, &steep, &made));
         if (doubt[k] && !any) {
             if (!(curve_evidence(rec, img, res) > RL_TWINS_STEEP_FRAME))
                 return;

@@ -15,7 +15,9 @@
  *
  *   int rv[RL_MAX_IDS], n = rl_twins_rivals(rec, &res.landmarks[0], rv), from[RL_MAX_LANDMARKS] = {0};
  *   unsigned char ask[RL_MAX_LANDMARKS] = {0};
- *   int doubted = rl_twins_steep_doubts(rec, &img, &res.landmarks[0], rv, n);
+ *   rl_tone steep;
+ *   rl_tones_steep(&rec->tones, &steep);
+ *   int doubted = rl_twins_steep_doubts(rec, &img, &steep, &res.landmarks[0], rv, n);
  *   ask[0] = (unsigned char)rl_twins_steep_asks(0.0);
  *   rl_twins_steep_settle(rec, &img, &res, ask, from, NULL);
  */
@@ -45,8 +47,9 @@
 
 /* Whether d (its rivals rv, n of them: rl_twins_rivals) is doubted: d's id
  * not leading its rivals at 0.91 .. 1.09 of its radius through the
- * steepest camera curve (rl_twins_lead_reached). */
-int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n);
+ * steepest camera curve, steep (rl_tones_steep; rl_twins_lead_reached). */
+int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_tone *steep, const rl_detection *d,
+                          const int *rv, int n);
 
 /* After rl_twins_check_known kept res->landmarks (read as linear; ask[k]:
  * landmark k kept by the leads with rl_twins_steep_asks): where any asked
