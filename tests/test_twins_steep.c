@@ -95,6 +95,7 @@ static int check_settle(const rl_recog *rec, const rl_image *img, const rl_resul
 {
     static rl_result got, want;
     unsigned char ask[RL_MAX_LANDMARKS], doubt[RL_MAX_LANDMARKS], kept[RL_MAX_LANDMARKS];
+    double none[RL_MAX_LANDMARKS], read[RL_MAX_LANDMARKS];
     int from[RL_MAX_LANDMARKS], k, m = 0, any = 0, branch = 0;
     rl_tone steep;
     rl_tone_init(&steep, RL_TONES_STEEP); /* the curve whole, as the plain order kept it */
@@ -102,15 +103,22 @@ static int check_settle(const rl_recog *rec, const rl_image *img, const rl_resul
     for (k = 0; k < in->n_landmarks; k++) {
         int rv[RL_MAX_IDS], n = rl_twins_rivals(rec, &in->landmarks[k], rv);
         double fit;
+        rl_detection alone = in->landmarks[k];
         ask[k] = 1;
-        from[k] = in->n_landmarks - 1 - k; /* any order: kept[] by it */
+        from[k] = in->n_landmarks - 1 - k; /* any order: kept[] and far_fit[] by it */
+        none[from[k]] = NAN;
+        /* every other one's fit given, as rl_twins_check gives those it read */
+        alone.pass = RL_PASS_LOCAL;
+        read[from[k]] = NAN;
+        if (k % 2 == 0)
+            rl_twins_lead(rec, img, rl_tones_other(&rec->tones, rec->tone), &alone, rv, n, 1, -1, &read[from[k]]);
         kept[from[k]] = 1;
         doubt[k] = (unsigned char)!(
             rl_twins_lead(rec, img, &steep, &in->landmarks[k], rv, n, 1, -1, &fit) > 0);
         any |= doubt[k];
     }
     if (any) {
-        branch = curve_evidence(rec, img, in) > RL_TWINS_STEEP_FRAME ? 1 : -1;
+        branch = curve_evidence(rec, img, in, from, none) > RL_TWINS_STEEP_FRAME ? 1 : -1;
         if (branch > 0) {
             for (k = 0; k < in->n_landmarks; k++)
                 if (!doubt[k])
@@ -119,7 +127,7 @@ static int check_settle(const rl_recog *rec, const rl_image *img, const rl_resul
         }
     }
     got = *in;
-    rl_twins_steep_settle(rec, img, &got, ask, from, kept);
+    rl_twins_steep_settle(rec, img, &got, ask, from, read, kept);
     assert_int_equal(got.n_landmarks, want.n_landmarks);
     assert_int_equal(got.n_unidentified, in->n_unidentified + in->n_landmarks - want.n_landmarks);
     for (k = 0; k < want.n_landmarks; k++) {

@@ -5,6 +5,7 @@
 #include "rl_median.h"
 #include "rl_result.h"
 #include "rl_twins_lead.h"
+#include <math.h>
 
 int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_tone *steep, const rl_detection *d,
                           const int *rv, int n)
@@ -13,8 +14,12 @@ int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_ton
 }
 
 /* The frame's evidence for a curve (RL_TWINS_STEEP_FRAME) from res's
- * landmarks: the ids' fits alone are wanted, so no rival is scored. */
-static double curve_evidence(const rl_recog *rec, const rl_image *img, const rl_result *res)
+ * landmarks: the ids' fits alone are wanted, so no rival is scored; the
+ * fit through the other formation taken where rl_twins_check read it
+ * (far_fit[from[k]], NAN where it did not: the same gather, scales and
+ * id's columns). */
+static double curve_evidence(const rl_recog *rec, const rl_image *img, const rl_result *res, const int *from,
+                             const double *far_fit)
 {
     double v[RL_MAX_LANDMARKS], curved, linear;
     const rl_tone *other = rl_tones_other(&rec->tones, rec->tone);
@@ -22,7 +27,9 @@ static double curve_evidence(const rl_recog *rec, const rl_image *img, const rl_
     for (k = 0; k < res->n_landmarks; k++) {
         rl_detection d = res->landmarks[k];
         d.pass = RL_PASS_GLOBAL; /* the id alone: no rival scored (rl_twins_lead's every_rival) */
-        rl_twins_lead(rec, img, other, &d, NULL, 0, 1, -1, &curved);
+        curved = far_fit[from[k]];
+        if (isnan(curved))
+            rl_twins_lead(rec, img, other, &d, NULL, 0, 1, -1, &curved);
         rl_twins_lead(rec, img, rec->tone, &d, NULL, 0, 1, -1, &linear);
         v[k] = curved - linear;
     }
@@ -42,7 +49,7 @@ static int doubted(const rl_recog *rec, const rl_image *img, const rl_result *re
 }
 
 void rl_twins_steep_settle(const rl_recog *rec, const rl_image *img, rl_result *res, const unsigned char *ask,
-                           const int *from, unsigned char *kept)
+                           const int *from, const double *far_fit, unsigned char *kept)
 {
     unsigned char doubt[RL_MAX_LANDMARKS];
     rl_tone steep;
@@ -54,7 +61,7 @@ void rl_twins_steep_settle(const rl_recog *rec, const rl_image *img, rl_result *
     for (k = 0; k < res->n_landmarks; k++) {
         doubt[k] = (unsigned char)(ask[k] && doubted(rec, img, res, k, &steep, &made));
         if (doubt[k] && !any) {
-            if (!(curve_evidence(rec, img, res) > RL_TWINS_STEEP_FRAME))
+            if (!(curve_evidence(rec, img, res, from, far_fit) > RL_TWINS_STEEP_FRAME))
                 return;
             any = 1;
         }

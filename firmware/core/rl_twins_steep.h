@@ -19,7 +19,9 @@
  *   rl_tones_steep(&rec->tones, &steep);
  *   int doubted = rl_twins_steep_doubts(rec, &img, &steep, &res.landmarks[0], rv, n);
  *   ask[0] = (unsigned char)rl_twins_steep_asks(0.0);
- *   rl_twins_steep_settle(rec, &img, &res, ask, from, NULL);
+ *   double far_fit[RL_MAX_LANDMARKS];
+ *   far_fit[0] = NAN;                        // not read: the evidence reads it
+ *   rl_twins_steep_settle(rec, &img, &res, ask, from, far_fit, NULL);
  */
 #ifndef RL_TWINS_STEEP_H
 #define RL_TWINS_STEEP_H
@@ -57,8 +59,11 @@ int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_ton
  * the doubted ones are made unidentified (their kept[from[k]] cleared,
  * kept when not NULL). The same as asking every asked one, then the
  * evidence where any is doubted, but the evidence is weighed at the first
- * doubted one and, where it says linear, the rest are not asked. */
+ * doubted one and, where it says linear, the rest are not asked.
+ * far_fit[from[k]]: landmark k's id's fit at 0.97 .. 1.03 of its radius
+ * through rl_tones_other from a gather at 1.09 (rl_twins_lead's far fit),
+ * where rl_twins_check read it, else NAN (read here). */
 void rl_twins_steep_settle(const rl_recog *rec, const rl_image *img, rl_result *res, const unsigned char *ask,
-                           const int *from, unsigned char *kept);
+                           const int *from, const double *far_fit, unsigned char *kept);
 
 #endif
