@@ -26,7 +26,15 @@ void rl_tones_init(rl_tones *ts, double gamma)
         rl_tone_init(&ts->tone[k], ts->gamma[k]);
         ts->votes[k] = 0;
     }
-    rl_tone_init(&ts->steep, RL_TONES_STEEP);
+    {
+        /* rl_tone_init's darkness of each level (its packed words' low
+         * halves), the same arithmetic */
+        int v;
+        for (v = 0; v < 256; v++) {
+            double l = RL_TONE_MAX * pow(v / 255.0, RL_TONES_STEEP);
+            ts->steep_dark[v] = (uint16_t)(RL_TONE_MAX - (int)(l + 0.5));
+        }
+    }
     ts->current = 0;
     ts->frames = 0;
 }
@@ -102,9 +110,13 @@ const rl_tone *rl_tones_other(const rl_tones *ts, const rl_tone *used)
     return used == &ts->tone[0] ? &ts->tone[1] : &ts->tone[0];
 }
 
-const rl_tone *rl_tones_steep(const rl_tones *ts)
+void rl_tones_steep(const rl_tones *ts, rl_tone *t)
 {
-    return &ts->steep;
+    int v;
+    for (v = 0; v < 256; v++) {
+        t->packed[v] = RL_TONE_PACK_COUNT + ts->steep_dark[v];
+        t->light[v] = (float)(RL_TONE_MAX - ts->steep_dark[v]);
+    }
 }
 
 const rl_tone *rl_tones_current(const rl_tones *ts)

@@ -40,7 +40,9 @@
 
 typedef struct {
     rl_tone tone[RL_TONES_MAX];   /* both made, whether configured or not */
-    rl_tone steep;                /* RL_TONES_STEEP's, made with them */
+    uint16_t steep_dark[256];     /* RL_TONES_STEEP's darkness per grey level (rl_tone.packed's
+                                     low words), made with them: 512 B where the whole curve is
+                                     3 kB, made whole only where it is read (rl_tones_steep) */
     double gamma[RL_TONES_MAX];
     double votes[RL_TONES_MAX];
     int n;        /* curves to choose from: 1 when configured */
@@ -81,11 +83,16 @@ const rl_tone *rl_tones_doubt(const rl_tones *ts, const rl_tone *used);
  * taken only if its zone twins do not read better there (rl_twins.h). */
 const rl_tone *rl_tones_other(const rl_tones *ts, const rl_tone *used);
 
-/* The steepest camera curve (RL_TONES_STEEP): the far end of the
+/* The steepest camera curve (RL_TONES_STEEP) into *t: the far end of the
  * formations a frame read as linear light could have come from, the
  * other (2.2) between (rl_twins.c: an id read as linear is taken only
- * where its rivals do not read better there either). */
-const rl_tone *rl_tones_steep(const rl_tones *ts);
+ * where its rivals do not read better there either). t->packed is
+ * rl_tone_init(t, RL_TONES_STEEP)'s, the same bits; t->light is its
+ * darkness's complement (the light rounded to whole steps): the steep
+ * curve is only gathered through (rl_profile reads packed alone). A
+ * curve kept whole a frame would cost the workspace 3 kB, made here
+ * from 512 B in 256 steps. */
+void rl_tones_steep(const rl_tones *ts, rl_tone *t);
 
 double rl_tones_gamma(const rl_tones *ts);
 

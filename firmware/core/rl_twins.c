@@ -288,16 +288,23 @@ static int size_fits(const rl_recog *rec, const rl_image *img, const rl_tone *ot
 }
 
 /* d's lead over its rivals rv through the other formation (rl_twins_lead;
- * far as rl_twins_check_known chose it), its fit into *fit; with wide (a
+ * far as rl_twins_check_known chose it), its fit into *fit (and where its
+ * rivals were read at 0.91 .. 1.09, through rl_tones_other, the fit there
+ * into *far_fit, else NAN); with wide (a
  * small global read as linear) at 0.91 .. 1.09 too, the lesser lead: a
  * sharpening after the 2.2 curve leaves its box's radius 7-11% short, and
  * the wider range alone, from coarser bins, let a 24 read as 16 lead by
  * -0.0003 where 3% had it -0.0097 (docs/results.md, fourteenth session). */
 static double other_lead(const rl_recog *rec, const rl_image *img, const rl_tone *other, const rl_detection *d,
-                         const int *rv, int n, int far, int wide, double *fit)
+                         const int *rv, int n, int far, int wide, double *fit, double *far_fit)
 {
-    double wide_fit, lead = rl_twins_lead(rec, img, other, d, rv, n, far, -1, fit);
-    return wide ? fmin(lead, rl_twins_lead(rec, img, other, d, rv, n, 1, -1, &wide_fit)) : lead;
+    double wide_fit = NAN, lead = rl_twins_lead(rec, img, other, d, rv, n, far, -1, fit);
+    if (wide)
+        lead = fmin(lead, rl_twins_lead(rec, img, other, d, rv, n, 1, -1, &wide_fit));
+    /* the id's fit at 0.91 .. 1.09 through the other formation, where read:
+     * rl_twins_steep's evidence wants it of every kept read */
+    *far_fit = other != rl_tones_other(&rec->tones, rec->tone) ? NAN : far ? *fit : wide_fit;
+    return lead;
 }
 
 /* d's lead over its rivals rv through the frame's own curve (its fit into
@@ -375,18 +382,27 @@ void rl_twins_check(const rl_recog *rec, const rl_image *img, const rl_tone *oth
     rl_twins_check_known(rec, img, other, res, NULL, NULL);
 }
 
+/* res's reads before any is judged: each one's radius and whether it is
+ * whole (frame_size's), and its far fit not read yet (NAN: other_lead). */
+static void frame_reads(const rl_result *res, double *radii, unsigned char *whole, double *far_fit)
+{
+    int i;
+    for (i = 0; i < res->n_landmarks; i++) {
+        radii[i] = res->landmarks[i].radius;
+        whole[i] = (unsigned char)(res->landmarks[i].complete != 0);
+        far_fit[i] = NAN;
+    }
+}
+
 void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_tone *other, rl_result *res,
                           const unsigned char *known, unsigned char *kept)
 {
-    double radii[RL_MAX_LANDMARKS], min_radius = rl_twins_min_radius(&rec->templates.fam);
+    double radii[RL_MAX_LANDMARKS], far_fit[RL_MAX_LANDMARKS], min_radius = rl_twins_min_radius(&rec->templates.fam);
     double far_radius = RL_TWINS_FAR_ZONE_PX / RL_TWINS_MIN_ZONE_PX * min_radius; /* 1.5 floors */
     int curved = rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0; /* through a curve, not as linear */
     int i, kept_n = 0, rv[RL_MAX_IDS], n, all = res->n_landmarks, from[RL_MAX_LANDMARKS];
-    unsigned char whole[RL_MAX_LANDMARKS], doubt[RL_MAX_LANDMARKS] = {0};
-    for (i = 0; i < all; i++) {
-        radii[i] = res->landmarks[i].radius;
-        whole[i] = (unsigned char)(res->landmarks[i].complete != 0);
-    }
+    unsigned char whole[RL_MAX_LANDMARKS], ask[RL_MAX_LANDMARKS] = {0};
+    frame_reads(res, radii, whole, far_fit);
     for (i = 0; i < all; i++) {
         rl_detection d = res->landmarks[i];
         landmark_reads reads = {0};
@@ -438,7 +454,8 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
          * linear: its rivals through the other formation at the radius
          * they fit (rl_twins_lead's far) */
         far = d.pass == RL_PASS_LOCAL && (small || (!curved && d.complete));
-        lead = other_lead(rec, img, other, &d, rv, n, far, !curved && small && d.pass != RL_PASS_LOCAL, &fit);
+        lead = other_lead(rec, img, other, &d, rv, n, far, !curved && small && d.pass != RL_PASS_LOCAL, &fit,
+                          &far_fit[i]);
         if (refused(rec, img, other, res->levels.light, &d, rv, n, tol, mg, &reads, small,
                     small ? frame_size(radii, whole, all, i, min_radius) : 0.0, fit)) {
             rl_result_add_unidentified(res, &d);
@@ -462,7 +479,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         if (keeps(tol, mg, lead, own) ||
             (rank_fits(&d, curved, frame_size(radii, whole, all, i, min_radius)) && own > RL_TWINS_RANK_OWN &&
              rl_twins_rank_keeps(rec, img, rec->tone, res->levels.light, &d))) {
-            doubt[kept_n] = (unsigned char)(!curved && rl_twins_steep_doubts(rec, img, &d, rv, n, lead));
+            ask[kept_n] = (unsigned char)(!curved && rl_twins_steep_asks(lead));
             keep(res, &kept_n, &d, kept, i, from);
         }
         else if (curved && moved_keeps(rec, img, &res->levels, &d, rv, n, tol, mg, &reads, &lead)) {
@@ -476,5 +493,5 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
             rl_result_add_unidentified(res, &d);
     }
     res->n_landmarks = kept_n;
-    rl_twins_steep_settle(rec, img, res, doubt, from, kept);
+    rl_twins_steep_settle(rec, img, res, ask, from, far_fit, kept);
 }

@@ -75,6 +75,10 @@ double rl_twins_lead(const rl_recog *rec, const rl_image *img, const rl_tone *to
         rl_profile p;
         rl_match m, mo;
         int near = k >= -SCALES_NEAR && k <= SCALES_NEAR;
+        /* no rival to score there (the id's fit alone: rl_twins_steep's
+         * evidence): the scale adds nothing */
+        if (!near && !every && n == 0)
+            continue;
         rl_profile_rescale(&wide, (1.0 + k * SCALE_STEP) / top, &p);
         /* the rivals at every blur: through the other formation a rival
          * may fit another than the id does; the id too near its radius
@@ -147,4 +151,41 @@ int rl_twins_led_read(const rl_recog *rec, const rl_profile *p, const rl_match *
         return 1;
     rl_match_ids(&rec->templates, &q, &m->id, 1, -1, &own);
     return own.id >= 0 && own.score > twin;
+}
+
+/* The scales of rl_twins_lead's far range in the order rl_twins_lead_reached
+ * reads them: the id's own three first (its fit known after them), then
+ * the rest. */
+static const int reach_order[2 * SCALES_FAR + 1] = {0, -1, 1, -2, 2, -3, 3};
+
+int rl_twins_lead_reached(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
+                          const int *rv, int n)
+{
+    int j, every = every_rival(d);
+    double own = -1, twin = -1, top = 1.0 + SCALES_FAR * SCALE_STEP;
+    rl_profile wide;
+    rl_profile_gather_rows(img, tone, d->u, d->v, d->radius * top, ROW_STEP, &wide);
+    for (j = 0; j < 2 * SCALES_FAR + 1; j++) {
+        int k = reach_order[j], near = k >= -SCALES_NEAR && k <= SCALES_NEAR;
+        rl_profile p;
+        rl_match m, mo;
+        rl_profile_rescale(&wide, (1.0 + k * SCALE_STEP) / top, &p);
+        /* the calls rl_twins_lead makes at this scale: the same scores */
+        mo.id = -1;
+        if (every)
+            rl_match_id_and_rest(&rec->templates, &p, d->id, &mo, &m);
+        else if (near)
+            rl_match_id_and_ids(&rec->templates, &p, d->id, rv, n, -1, &mo, &m);
+        else
+            rl_match_ids(&rec->templates, &p, rv, n, -1, &m);
+        if (near && mo.id >= 0 && mo.score > own)
+            own = mo.score;
+        if (m.id >= 0 && m.score > twin)
+            twin = m.score;
+        /* the id's fit is final after its own scales: a rival that
+         * reaches it there decides, whatever the scales left */
+        if (j >= 2 * SCALES_NEAR && !(own - twin > 0))
+            return 1;
+    }
+    return !(own - twin > 0);
 }

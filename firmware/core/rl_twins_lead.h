@@ -40,4 +40,12 @@ void rl_twins_led_init(rl_recog *rec);
 
 int rl_twins_led_read(const rl_recog *rec, const rl_profile *p, const rl_match *m, const rl_detection *d);
 
+/* !(rl_twins_lead(rec, img, tone, d, rv, n, 1, -1, &fit) > 0): whether a
+ * rival reaches d's id at 0.91 .. 1.09 of its radius through tone, the
+ * same scores read, stopping at the first scale past the id's own three
+ * where one does (rl_twins_steep asks it of a few reads, and a rival that
+ * reaches the id is what it looks for). */
+int rl_twins_lead_reached(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
+                          const int *rv, int n);
+
 #endif

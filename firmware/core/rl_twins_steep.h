@@ -14,9 +14,14 @@
  * its landmarks fit the 2.2 curve nearly as well as linear light or better.
  *
  *   int rv[RL_MAX_IDS], n = rl_twins_rivals(rec, &res.landmarks[0], rv), from[RL_MAX_LANDMARKS] = {0};
- *   unsigned char doubt[RL_MAX_LANDMARKS] = {0};
- *   doubt[0] = (unsigned char)rl_twins_steep_doubts(rec, &img, &res.landmarks[0], rv, n, 0.0);
- *   rl_twins_steep_settle(rec, &img, &res, doubt, from, NULL);
+ *   unsigned char ask[RL_MAX_LANDMARKS] = {0};
+ *   rl_tone steep;
+ *   rl_tones_steep(&rec->tones, &steep);
+ *   int doubted = rl_twins_steep_doubts(rec, &img, &steep, &res.landmarks[0], rv, n);
+ *   ask[0] = (unsigned char)rl_twins_steep_asks(0.0);
+ *   double far_fit[RL_MAX_LANDMARKS];
+ *   far_fit[0] = NAN;                        // not read: the evidence reads it
+ *   rl_twins_steep_settle(rec, &img, &res, ask, from, far_fit, NULL);
  */
 #ifndef RL_TWINS_STEEP_H
 #define RL_TWINS_STEEP_H
@@ -38,18 +43,27 @@
  * less; the steep read then runs on the few reads it concerns). */
 #define RL_TWINS_STEEP_ASK 0.02
 
-/* Whether d (its rivals rv, n of them: rl_twins_rivals; its lead through
- * the 2.2 curve `lead`) is doubted: lead under RL_TWINS_STEEP_ASK and d's
- * id not leading its rivals at 0.91 .. 1.09 of its radius through the
- * steepest camera curve. */
-int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n,
-                          double lead);
+/* Whether a read kept through the 2.2 curve's lead `lead` (rl_twins_check's)
+ * is asked by rl_twins_steep_settle: lead under RL_TWINS_STEEP_ASK. */
+#define rl_twins_steep_asks(lead) ((lead) < RL_TWINS_STEEP_ASK)
 
-/* After rl_twins_check_known kept res->landmarks (read as linear): where
- * any is doubted (doubt[k]: its id not leading through the steep curve)
- * and the frame's evidence is over RL_TWINS_STEEP_FRAME, the doubted ones
- * are made unidentified (their kept[from[k]] cleared, kept when not NULL). */
-void rl_twins_steep_settle(const rl_recog *rec, const rl_image *img, rl_result *res, const unsigned char *doubt,
-                           const int *from, unsigned char *kept);
+/* Whether d (its rivals rv, n of them: rl_twins_rivals) is doubted: d's id
+ * not leading its rivals at 0.91 .. 1.09 of its radius through the
+ * steepest camera curve, steep (rl_tones_steep; rl_twins_lead_reached). */
+int rl_twins_steep_doubts(const rl_recog *rec, const rl_image *img, const rl_tone *steep, const rl_detection *d,
+                          const int *rv, int n);
+
+/* After rl_twins_check_known kept res->landmarks (read as linear; ask[k]:
+ * landmark k kept by the leads with rl_twins_steep_asks): where any asked
+ * one is doubted and the frame's evidence is over RL_TWINS_STEEP_FRAME,
+ * the doubted ones are made unidentified (their kept[from[k]] cleared,
+ * kept when not NULL). The same as asking every asked one, then the
+ * evidence where any is doubted, but the evidence is weighed at the first
+ * doubted one and, where it says linear, the rest are not asked.
+ * far_fit[from[k]]: landmark k's id's fit at 0.97 .. 1.03 of its radius
+ * through rl_tones_other from a gather at 1.09 (rl_twins_lead's far fit),
+ * where rl_twins_check read it, else NAN (read here). */
+void rl_twins_steep_settle(const rl_recog *rec, const rl_image *img, rl_result *res, const unsigned char *ask,
+                           const int *from, const double *far_fit, unsigned char *kept);
 
 #endif
