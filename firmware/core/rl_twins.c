@@ -420,18 +420,14 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
             rl_result_add_unidentified(res, &d);
             continue;
         }
-        /* a global read of a whole landmark clear of every other id
-         * through its curve, and of its twins at 0.97 of its radius on
-         * the pixels it was read from (twins_led: a whole 2 behind a 2x
-         * scaler read as 18 led every id by 0.060, its twin 0.0055
-         * ahead of it there), is clear of its twins; a local read's
-         * runner-up (sector-normalized) does not say so, nor a cut one's
-         * read through a curve (a circle partly out of the frame: a cut
-         * 2 of a 16 px grey-mixed sheet read as its twin 18 at 2.2 led
-         * every id by 0.055; read as linear, cut ones clear of every id
-         * were right on every set), nor a small one's read through a
-         * curve (a whole 2 of a 16.8 px moving frame blurred after the
-         * curve, read as its twin 18, led every id by 0.051) */
+        /* a global read of a whole landmark clear of every other id through its curve, and of its twins at
+         * 0.97 of its radius on the pixels it was read from (twins_led: a whole 2 behind a 2x scaler read
+         * as 18 led every id by 0.060, its twin 0.0055 ahead of it there), is clear of its twins; a local
+         * read's runner-up (sector-normalized) does not say so, nor a cut one's read through a curve (a
+         * circle partly out of the frame: a cut 2 of a 16 px grey-mixed sheet read as its twin 18 at 2.2
+         * led every id by 0.055; read as linear, cut ones clear of every id were right on every set), nor a
+         * small one's read through a curve (a whole 2 of a 16.8 px moving frame blurred after the curve,
+         * read as its twin 18, led every id by 0.051) */
         if ((d.pass == RL_PASS_GLOBAL && (d.complete || !curved) && !small &&
              d.score - d.runner_up >= RL_TWINS_CLEAR && d.twins_led) ||
             (known != NULL && known[i]) || (n = rl_twins_rivals(rec, &d, rv)) == 0) {
