@@ -35,7 +35,9 @@
  * too (size_fits; rule 7). A landmark too small for its twins to be
  * told apart at all (code zone 1 under RL_TWINS_MIN_ZONE_PX) gets no id,
  * nor a cut local read whose circle the search took off its outer edge
- * (RL_TWINS_CUT_BULGE).
+ * (RL_TWINS_CUT_BULGE), nor one with most of its code zone 1 out of the
+ * frame whose lead through the other formation is thin
+ * (RL_TWINS_CUT_ZONE1).
  * What the twins came to is in the landmark's runner_up.
  *
  *   rl_twins_check(rec, &img, rl_tones_other(&rec->tones, rec->tone), &res);
