@@ -341,17 +341,23 @@ static int cut_fits(const rl_recog *rec, const rl_image *img, const rl_detection
 
 /* Whether d gets no id before its leads are weighed: a small read by
  * rules 6, 7 and 8 (its rivals rv at its own and the frame's size, in
- * clipped light: rl_clip) and a cut global one by cut_fits, and a read whose circle fits far worse than
- * its read (`fit`: an ellipse the local pass read at a lens's border, not
- * judged by its twins) where a lamp covers it (RL_TWINS_UNFIT_LAMP).
+ * clipped light: rl_clip) and a cut global one by cut_fits, a cut local
+ * read with most of its code zone 1 out of the frame whose lead through
+ * the other formation (lead) is under RL_TWINS_CUT_ZONE1_LEAD, and a read
+ * whose circle fits far worse than its read (`fit`: an ellipse the local
+ * pass read at a lens's border, not judged by its twins) where a lamp
+ * covers it (RL_TWINS_UNFIT_LAMP).
  * size: the frame's landmark size (frame_size), asked only of a small one. */
 static int refused(const rl_recog *rec, const rl_image *img, const rl_tone *other, int light,
                    const rl_detection *d, const int *rv, int n, double tol, double mg, landmark_reads *reads,
-                   int small, double size, double fit)
+                   int small, double size, double fit, double lead)
 {
     if (small && (rl_clip_refuses(rec, img, light, d) || !small_fits(rec, img, light, d, rv, n, tol, mg, reads) ||
                      !size_fits(rec, img, other, d, rv, n, size) ||
                      !cut_fits(rec, img, d, rv, n, rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0)))
+        return 1;
+    if (!d->complete && d->pass == RL_PASS_LOCAL && lead < RL_TWINS_CUT_ZONE1_LEAD &&
+        rl_twins_cut_zone1_shown(img, &rec->templates.fam, d) < RL_TWINS_CUT_ZONE1)
         return 1;
     /* no light level (over 255): no lamp in the frame */
     return fit < d->score - RL_TWINS_UNFIT && light <= 255 &&
@@ -453,7 +459,7 @@ void rl_twins_check_known(const rl_recog *rec, const rl_image *img, const rl_ton
         lead = other_lead(rec, img, other, &d, rv, n, far, !curved && small && d.pass != RL_PASS_LOCAL, &fit,
                           &far_fit[i]);
         if (refused(rec, img, other, res->levels.light, &d, rv, n, tol, mg, &reads, small,
-                    small ? frame_size(radii, whole, all, i, min_radius) : 0.0, fit)) {
+                    small ? frame_size(radii, whole, all, i, min_radius) : 0.0, fit, lead)) {
             rl_result_add_unidentified(res, &d);
             continue;
         }

@@ -37,7 +37,9 @@
  * too (size_fits; rule 7). A landmark too small for its twins to be
  * told apart at all (code zone 1 under RL_TWINS_MIN_ZONE_PX) gets no id,
  * nor a cut local read whose circle the search took off its outer edge
- * (RL_TWINS_CUT_BULGE).
+ * (RL_TWINS_CUT_BULGE), nor one with most of its code zone 1 out of the
+ * frame whose lead through the other formation is thin
+ * (RL_TWINS_CUT_ZONE1).
  * What the twins came to is in the landmark's runner_up.
  *
  *   rl_twins_check(rec, &img, rl_tones_other(&rec->tones, rec->tone), &res);
@@ -170,6 +172,20 @@
  * radius is RL_TWINS_CUT_SIZE or more over the frame's other whole
  * landmarks' (rl_twins.c, rl_twins_cut_on_edge). */
 #define RL_TWINS_CUT_BULGE 0.4
+
+/* A local read of a landmark the border cuts whose circle has less than
+ * this share of its code zone 1 in the frame (rl_twins_cut_zone1_shown:
+ * the zone whose bit tells its twins 16 apart) keeps its id only where it
+ * leads its rivals through the other formation by RL_TWINS_CUT_ZONE1_LEAD:
+ * with that zone mostly out of view the part left, at the frame's edge,
+ * decides between the twins, and through every curve from 1 to 4 the
+ * same id (sixteenth session, second round: a cut 17 46% in view read as
+ * 1 at gamma 1, its circle 2 px further out than the truth's, 0.43 of
+ * zone 1 in the frame, its 2.2-curve lead 0.015; the right cut reads with
+ * under half of zone 1 in view on the development and traced sets led by
+ * 0.0256 or more, docs/results.md). */
+#define RL_TWINS_CUT_ZONE1 0.5
+#define RL_TWINS_CUT_ZONE1_LEAD 0.02
 
 /* Code zone 1, the narrowest (next to the outer ring), narrower than this
  * many pixels: no id, whatever the reads (a landmark of ring5 under 14.2 px).

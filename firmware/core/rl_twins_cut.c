@@ -1,4 +1,5 @@
-/* rl_twins_cut: a cut read's circle against its outer edge (rl_twins_cut.h). */
+/* rl_twins_cut: a cut read's circle against its outer edge, and how much
+ * of its code zone 1 the frame shows (rl_twins_cut.h). */
 #include "rl_twins_cut.h"
 
 #include <math.h>
@@ -27,4 +28,26 @@ int rl_twins_cut_on_edge(const rl_image *img, const rl_tone *tone, int light, co
         !rl_edge_fit_rays(img, tone, light, &u, &v, &r))
         return 1;
     return hypot(u - d->u, v - d->v) + d->radius - r <= RL_TWINS_CUT_BULGE * d->radius;
+}
+
+/* Points round the circle through code zone 1's middle (every 2.8
+ * degrees; one step a share of 1/128 of it) */
+#define ZONE1_STEPS 128
+
+double rl_twins_cut_zone1_shown(const rl_image *img, const rl_family *fam, const rl_detection *d)
+{
+    double r[RL_MAX_BITS + 2], rho, c, s, x = 1.0, y = 0.0, t;
+    int k, in = 0;
+    rl_family_radii(fam, r);
+    rho = 0.5 * (r[1] + r[2]) * d->radius;
+    c = cos(6.283185307179586 / ZONE1_STEPS);
+    s = sin(6.283185307179586 / ZONE1_STEPS);
+    for (k = 0; k < ZONE1_STEPS; k++) {
+        double px = d->u + rho * x, py = d->v + rho * y;
+        in += px >= -0.5 && py >= -0.5 && px <= img->width - 0.5 && py <= img->height - 0.5;
+        t = x * c - y * s; /* the next point: (x, y) turned by one step */
+        y = x * s + y * c;
+        x = t;
+    }
+    return (double)in / ZONE1_STEPS;
 }

@@ -1,8 +1,9 @@
 /* rl_twins_cut: whether a cut local read's circle lies on its landmark's
- * outer edge (rl_twins_cut.c says why and when it is judged). Internal:
- * rl_twins_check's.
+ * outer edge (rl_twins_cut.c says why and when it is judged), and how
+ * much of its code zone 1 the frame shows. Internal: rl_twins_check's.
  *
  *   int on_edge = rl_twins_cut_on_edge(&img, rec->tone, res.levels.light, &res.landmarks[0], 0.0);
+ *   double shown = rl_twins_cut_zone1_shown(&img, &rec->templates.fam, &res.landmarks[0]);
  */
 #ifndef RL_TWINS_CUT_H
 #define RL_TWINS_CUT_H
@@ -15,5 +16,10 @@
  * landmarks' median radius (0: none known); tone, light: the frame's curve and light level. */
 int rl_twins_cut_on_edge(const rl_image *img, const rl_tone *tone, int light, const rl_detection *d,
                          double size);
+
+/* The share of d's code zone 1 (of family fam; the zone next to the
+ * outer ring, whose bit tells the zone twins 16 apart in ring5) inside
+ * the frame of img, by its middle circle on d's circle (128 points). */
+double rl_twins_cut_zone1_shown(const rl_image *img, const rl_family *fam, const rl_detection *d);
 
 #endif
