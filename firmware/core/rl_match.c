@@ -64,12 +64,14 @@ static int match_start(const rl_profile *p, profile_terms *z, rl_match *m)
     z->n = n;
     z->sx = sx;
     z->ivx = 1.0 / sqrt(vx);
-    /* a bin with no pixel has no darkness: the 8-lane kernel adds it
-     * (rl_match_kernel.h) */
     for (k = 0; k < RL_PROFILE_BINS; k++) {
         z->fn[k] = (float)p->n[k];
-        z->fs[k] = z->fn[k] == 0 ? 0.0f : (float)p->sx[k];
+        z->fs[k] = (float)p->sx[k];
     }
+    /* a bin with no pixel has no darkness: the 8-lane kernel adds it
+     * (rl_match_kernel.h); a loop of its own, in vectors */
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        z->fs[k] = z->fn[k] == 0 ? 0.0f : z->fs[k];
     return 1;
 }
 
