@@ -301,8 +301,9 @@ static void test_wide_kernel_is_blocks_bit_for_bit(void **state)
  * products where the plain kernel passes over them, and the sums must be
  * its bits. Templates of either sign and exact zeros (a zero product of
  * a negative value is -0), sums that cancel to 0 before an empty bin, a
- * profile empty but for one bin, and one with every bin empty; the
- * oracle is the plain kernel's skip. */
+ * profile empty but for one bin, and one with every bin empty (a column
+ * below 0 throughout: a sum started at -0 would stay -0); the oracle is
+ * the plain kernel's skip. */
 static void test_empty_bins_add_nothing(void **state)
 {
     enum { STRIDE = RL_MATCH_WIDE * RL_MATCH_BLOCK + 16 };
@@ -335,6 +336,11 @@ static void test_empty_bins_add_nothing(void **state)
                 fn[k] = fs[k] = 0;
             fn[33] = 5;
             fs[33] = 600;
+        } else if (kind == 3) {
+            /* every bin empty and a column below 0 in every bin: each
+             * product is -0, and the sum must stay the +0 it starts at */
+            for (k = 0; k < RL_PROFILE_BINS; k++)
+                t[k * STRIDE + 8 + 3] = -(float)(0.5 + uniform());
         }
         for (blk = 0; blk < RL_MATCH_WIDE; blk++)
             blocks[blk] = t + 8 + blk * RL_MATCH_BLOCK;
