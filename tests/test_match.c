@@ -297,6 +297,117 @@ static void test_wide_kernel_is_blocks_bit_for_bit(void **state)
     }
 }
 
+/* Empty bins (fn 0, fs 0) add nothing: the 8-lane kernels add their zero
+ * products where the plain kernel passes over them, and the sums must be
+ * its bits. Templates of either sign and exact zeros (a zero product of
+ * a negative value is -0), sums that cancel to 0 before an empty bin, a
+ * profile empty but for one bin, and one with every bin empty (a column
+ * below 0 throughout: a sum started at -0 would stay -0); the oracle is
+ * the plain kernel's skip. */
+static void test_empty_bins_add_nothing(void **state)
+{
+    enum { STRIDE = RL_MATCH_WIDE * RL_MATCH_BLOCK + 16 };
+    static float t[RL_PROFILE_BINS * STRIDE];
+    float fn[RL_PROFILE_BINS], fs[RL_PROFILE_BINS];
+    float a[3][RL_MATCH_WIDE * RL_MATCH_BLOCK], b[3][RL_MATCH_WIDE * RL_MATCH_BLOCK];
+    const float *blocks[RL_MATCH_WIDE];
+    int trial, k, blk, nb;
+    (void)state;
+    for (trial = 0; trial < 300; trial++) {
+        int kind = trial % 4;
+        for (k = 0; k < RL_PROFILE_BINS * STRIDE; k++) {
+            double u = uniform();
+            t[k] = u < 0.1 ? 0.0f : (float)(2 * uniform() - 1);
+        }
+        for (k = 0; k < RL_PROFILE_BINS; k++) {
+            fn[k] = kind == 3 || uniform() < 0.4 ? 0.0f : (float)(1 + (int)(uniform() * 30));
+            fs[k] = fn[k] * (float)(uniform() * 255);
+        }
+        if (kind == 1) {
+            /* bins 0 and 1 cancel in every column of the first block
+             * (t and -t, one pixel each), then bin 2 is empty */
+            for (k = 0; k < RL_MATCH_WIDE * RL_MATCH_BLOCK; k++)
+                t[STRIDE + 8 + k] = -t[8 + k];
+            fn[0] = fn[1] = 1;
+            fs[0] = fs[1] = 7;
+            fn[2] = fs[2] = 0;
+        } else if (kind == 2) {
+            for (k = 0; k < RL_PROFILE_BINS; k++)
+                fn[k] = fs[k] = 0;
+            fn[33] = 5;
+            fs[33] = 600;
+        } else if (kind == 3) {
+            /* every bin empty and a column below 0 in every bin: each
+             * product is -0, and the sum must stay the +0 it starts at */
+            for (k = 0; k < RL_PROFILE_BINS; k++)
+                t[k * STRIDE + 8 + 3] = -(float)(0.5 + uniform());
+        }
+        for (blk = 0; blk < RL_MATCH_WIDE; blk++)
+            blocks[blk] = t + 8 + blk * RL_MATCH_BLOCK;
+        for (nb = 1; nb <= RL_MATCH_WIDE; nb++) {
+            fill(a, -1.0f);
+            for (blk = 0; blk < nb; blk++)
+                rl_match_kernel_plain(blocks[blk], STRIDE, fn, fs, a[0] + blk * RL_MATCH_BLOCK,
+                                      a[1] + blk * RL_MATCH_BLOCK, a[2] + blk * RL_MATCH_BLOCK);
+            fill(b, -1.0f);
+            rl_match_kernel_wide(blocks, nb, STRIDE, fn, fs, b[0], b[1], b[2]);
+            assert_memory_equal(a, b, sizeof a);
+            fill(b, -1.0f);
+            for (blk = 0; blk < nb; blk++)
+                rl_match_kernel(blocks[blk], STRIDE, fn, fs, b[0] + blk * RL_MATCH_BLOCK,
+                                b[1] + blk * RL_MATCH_BLOCK, b[2] + blk * RL_MATCH_BLOCK);
+            assert_memory_equal(a, b, sizeof a);
+        }
+    }
+}
+
+/* A profile with empty bins (a gather's rows miss the innermost bins, a
+ * rescale skips one) scores as a direct double-precision correlation
+ * over its bins says (direct_r, written from the formula), every id at
+ * every blur: the best, its score and the runner-up's. */
+static void test_scores_with_empty_bins_match_a_direct_correlation(void **state)
+{
+    static unsigned char mem[1 << 16];
+    rl_family fam = {5};
+    rl_templates tt;
+    rl_ws ws;
+    int trial;
+    (void)state;
+    rl_ws_init(&ws, mem, sizeof mem);
+    assert_int_equal(rl_templates_init(&tt, &ws, &fam, NULL, 0), RL_OK);
+    for (trial = 0; trial < 100; trial++) {
+        int i = (int)(uniform() * tt.n), b = (int)(uniform() * RL_BLUR_LEVELS), k, j, best_id = -1;
+        double best = -2, second = -2;
+        rl_profile p;
+        rl_match m;
+        memset(&p, 0, sizeof p);
+        for (k = 0; k < RL_PROFILE_BINS; k++) {
+            double n = uniform() < 0.15 || (k < 6 && uniform() < 0.6) ? 0 : 3 + (int)(uniform() * 40),
+                   v = 40 + 180 * rl_templates_bin(&tt, i, b, k) + 30 * (uniform() - 0.5);
+            p.n[k] = n;
+            p.sx[k] = n * v;
+            p.sxx += n * v * v + n * 25.0;
+            p.total += n;
+        }
+        rl_match_all(&tt, &p, &m);
+        for (j = 0; j < tt.n; j++)
+            for (k = 0; k < RL_BLUR_LEVELS; k++) {
+                double r = direct_r(&p, &tt, j, k);
+                if (r > best) {
+                    if (tt.ids[j] != best_id)
+                        second = best;
+                    best = r;
+                    best_id = tt.ids[j];
+                } else if (r > second && tt.ids[j] != best_id) {
+                    second = r;
+                }
+            }
+        assert_int_equal(m.id, best_id);
+        assert_true(fabs(m.score - best) < 1e-4);
+        assert_true(fabs(m.second - second) < 1e-4);
+    }
+}
+
 /* Every id matched (rl_match_all: wide blocks over the table) and every id
  * listed (rl_match_ids: each id's own columns) give the same match, bit for
  * bit, on noisy profiles of random ids and on profiles of noise, for
@@ -680,6 +791,8 @@ int main(void)
         cmocka_unit_test(test_rescale_tiny_scale_to_last_bin),
         cmocka_unit_test(test_scores_match_a_direct_correlation),
         cmocka_unit_test(test_wide_kernel_is_blocks_bit_for_bit),
+        cmocka_unit_test(test_empty_bins_add_nothing),
+        cmocka_unit_test(test_scores_with_empty_bins_match_a_direct_correlation),
         cmocka_unit_test(test_match_all_is_every_id_listed),
         cmocka_unit_test(test_each_id_is_its_own_best),
         cmocka_unit_test(test_id_and_rivals_at_once),

@@ -68,6 +68,10 @@ static int match_start(const rl_profile *p, profile_terms *z, rl_match *m)
         z->fn[k] = (float)p->n[k];
         z->fs[k] = (float)p->sx[k];
     }
+    /* a bin with no pixel has no darkness: the 8-lane kernel adds it
+     * (rl_match_kernel.h); a loop of its own, in vectors */
+    for (k = 0; k < RL_PROFILE_BINS; k++)
+        z->fs[k] = z->fn[k] == 0 ? 0.0f : z->fs[k];
     return 1;
 }
 

@@ -10,7 +10,11 @@
  * vectors kept in registers (the GCC/Clang vector extension: SSE, NEON).
  * Both add the same products in the same order, so they give the same
  * bits (and so does an 8-lane build on x86 with AVX); RL_NO_VECTOR_EXT selects the plain one, and CI runs the test
- * suite with each.
+ * suite with each. A bin with no pixel (fn[k] 0) adds nothing: the
+ * plain and 4-lane kernels pass over it, the 8-lane one adds its zero
+ * products (the same bits), so fs[k] must be 0 there too and the
+ * templates finite (rl_match's terms are: a bin with no pixel has no
+ * darkness).
  *
  *   float fn[RL_PROFILE_BINS] = {0}, fs[RL_PROFILE_BINS] = {0};
  *   float st[RL_MATCH_BLOCK], stt[RL_MATCH_BLOCK], sxt[RL_MATCH_BLOCK];
