@@ -153,10 +153,13 @@ int rl_twins_led_read(const rl_recog *rec, const rl_profile *p, const rl_match *
     return own.id >= 0 && own.score > twin;
 }
 
-/* The scales of rl_twins_lead's far range in the order rl_twins_lead_reached
- * reads them: the id's own three first (its fit known after them), then
- * the rest. */
-static const int reach_order[2 * SCALES_FAR + 1] = {0, -1, 1, -2, 2, -3, 3};
+/* The j-th scale of rl_twins_lead's far range in the order
+ * rl_twins_lead_reached reads them: 0, -1, 1, -2, 2, ...: the id's own
+ * (near) ones first (its fit known after them), then the rest. */
+static int reach_order(int j)
+{
+    return j % 2 ? -(j + 1) / 2 : j / 2;
+}
 
 int rl_twins_lead_reached(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
                           const int *rv, int n)
@@ -166,7 +169,7 @@ int rl_twins_lead_reached(const rl_recog *rec, const rl_image *img, const rl_ton
     rl_profile wide;
     rl_profile_gather_rows(img, tone, d->u, d->v, d->radius * top, ROW_STEP, &wide);
     for (j = 0; j < 2 * SCALES_FAR + 1; j++) {
-        int k = reach_order[j], near = k >= -SCALES_NEAR && k <= SCALES_NEAR;
+        int k = reach_order(j), near = k >= -SCALES_NEAR && k <= SCALES_NEAR;
         rl_profile p;
         rl_match m, mo;
         rl_profile_rescale(&wide, (1.0 + k * SCALE_STEP) / top, &p);

@@ -25,6 +25,10 @@ int rl_twins_rivals(const rl_recog *rec, const rl_detection *d, int *out);
 double rl_twins_lead(const rl_recog *rec, const rl_image *img, const rl_tone *tone, const rl_detection *d,
                      const int *rv, int n, int far, int axis, double *fit);
 
+/* rec->led_scale made: the bin moves rl_twins_led_read rebins by (once,
+ * at init). */
+void rl_twins_led_init(rl_recog *rec);
+
 /* 1 when m, the match of every id on p (a profile gathered at d's radius
  * through its curve: the global pass's read d), leads every other id by
  * RL_TWINS_CLEAR and its id leads its twins in code zones 1 and 2 (next
@@ -34,10 +38,6 @@ double rl_twins_lead(const rl_recog *rec, const rl_image *img, const rl_tone *to
  * scored over m->second. 0 without a look for a small read (under
  * RL_TWINS_FAR_ZONE_PX's radius), which rl_twins checks whatever this
  * says. */
-/* rec->led_scale made: the bin moves rl_twins_led_read rebins by (once,
- * at init). */
-void rl_twins_led_init(rl_recog *rec);
-
 int rl_twins_led_read(const rl_recog *rec, const rl_profile *p, const rl_match *m, const rl_detection *d);
 
 /* !(rl_twins_lead(rec, img, tone, d, rv, n, 1, -1, &fit) > 0): whether a

@@ -128,9 +128,11 @@ typedef struct {
     int twins_led;      /* internal: 1 when the read that took the id found it ahead of
                            its zone twins beside its own radius, from the pixels it read:
                            a global read clear of every id (rl_twins.h, RL_TWINS_CLEAR)
-                           at 0.97 of its radius (rl_twins_led_read), a window's read
-                           at 0.95 .. 1.05 (rl_verify); rl_twins judges a clear global
-                           read without it as any other */
+                           at 0.97 of its radius (rl_twins_led_read); 1 for every
+                           window read rl_verify takes (it met the twins at 0.95 .. 1.05
+                           where the id led its runner-up, every id or a known one's
+                           rivals, by under 0.1); rl_twins judges a clear global read
+                           without it as any other */
 } rl_detection;
 
 /* What a compile-time limit (rl_config.h) left out of one frame's result. */
