@@ -31,6 +31,31 @@ static int every_rival(const rl_detection *d)
     return d->pass == RL_PASS_LOCAL;
 }
 
+/* One scale k of a lead (k steps of SCALE_STEP off d's radius, from wide,
+ * gathered out to top times it): the rivals at every blur into *twin
+ * (through the other formation a rival may fit another than the id
+ * does), the id too near its radius into *own (every other id as rivals:
+ * the id comes with them in one walk); each the best so far. */
+static void score_scale(const rl_recog *rec, const rl_profile *wide, double top, int k, const rl_detection *d,
+                        const int *rv, int n, int every, double *own, double *twin)
+{
+    int near = k >= -SCALES_NEAR && k <= SCALES_NEAR;
+    rl_profile p;
+    rl_match m, mo;
+    rl_profile_rescale(wide, (1.0 + k * SCALE_STEP) / top, &p);
+    mo.id = -1;
+    if (every)
+        rl_match_id_and_rest(&rec->templates, &p, d->id, &mo, &m);
+    else if (near)
+        rl_match_id_and_ids(&rec->templates, &p, d->id, rv, n, -1, &mo, &m);
+    else
+        rl_match_ids(&rec->templates, &p, rv, n, -1, &m);
+    if (near && mo.id >= 0 && mo.score > *own)
+        *own = mo.score;
+    if (m.id >= 0 && m.score > *twin)
+        *twin = m.score;
+}
+
 /* How far d's id leads its best rival (rl_twins_rivals()) through tone: its best
  * score over 0.97 .. 1.03 of its radius (into *fit) less the rival's best
  * there, or with far over 0.91 .. 1.09. A grey-mixed sheet read through
@@ -72,28 +97,11 @@ double rl_twins_lead(const rl_recog *rec, const rl_image *img, const rl_tone *to
     else
         rl_profile_gather_axis(img, tone, d->u, d->v, d->radius * top, axis, &wide);
     for (k = -reach; k <= reach; k++) {
-        rl_profile p;
-        rl_match m, mo;
-        int near = k >= -SCALES_NEAR && k <= SCALES_NEAR;
         /* no rival to score there (the id's fit alone: rl_twins_steep's
          * evidence): the scale adds nothing */
-        if (!near && !every && n == 0)
+        if (!(k >= -SCALES_NEAR && k <= SCALES_NEAR) && !every && n == 0)
             continue;
-        rl_profile_rescale(&wide, (1.0 + k * SCALE_STEP) / top, &p);
-        /* the rivals at every blur: through the other formation a rival
-         * may fit another than the id does; the id too near its radius
-         * (every other id as rivals: the id comes with them in one walk) */
-        mo.id = -1;
-        if (every)
-            rl_match_id_and_rest(&rec->templates, &p, d->id, &mo, &m);
-        else if (near)
-            rl_match_id_and_ids(&rec->templates, &p, d->id, rv, n, -1, &mo, &m);
-        else
-            rl_match_ids(&rec->templates, &p, rv, n, -1, &m);
-        if (near && mo.id >= 0 && mo.score > own)
-            own = mo.score;
-        if (m.id >= 0 && m.score > twin)
-            twin = m.score;
+        score_scale(rec, &wide, top, k, d, rv, n, every, &own, &twin);
     }
     *fit = own;
     return own - twin;
@@ -169,22 +177,8 @@ int rl_twins_lead_reached(const rl_recog *rec, const rl_image *img, const rl_ton
     rl_profile wide;
     rl_profile_gather_rows(img, tone, d->u, d->v, d->radius * top, ROW_STEP, &wide);
     for (j = 0; j < 2 * SCALES_FAR + 1; j++) {
-        int k = reach_order(j), near = k >= -SCALES_NEAR && k <= SCALES_NEAR;
-        rl_profile p;
-        rl_match m, mo;
-        rl_profile_rescale(&wide, (1.0 + k * SCALE_STEP) / top, &p);
         /* the calls rl_twins_lead makes at this scale: the same scores */
-        mo.id = -1;
-        if (every)
-            rl_match_id_and_rest(&rec->templates, &p, d->id, &mo, &m);
-        else if (near)
-            rl_match_id_and_ids(&rec->templates, &p, d->id, rv, n, -1, &mo, &m);
-        else
-            rl_match_ids(&rec->templates, &p, rv, n, -1, &m);
-        if (near && mo.id >= 0 && mo.score > own)
-            own = mo.score;
-        if (m.id >= 0 && m.score > twin)
-            twin = m.score;
+        score_scale(rec, &wide, top, reach_order(j), d, rv, n, every, &own, &twin);
         /* the id's fit is final after its own scales: a rival that
          * reaches it there decides, whatever the scales left */
         if (j >= 2 * SCALES_NEAR && !(own - twin > 0))
