@@ -360,22 +360,27 @@ static void resolve_regions(rl_label *lb, int min_area)
 {
     int r, n = lb->n_runs;
     int32_t *p = lb->tag;
-    /* The tag array goes through four meanings, one linear pass each; the
-     * root of a region is its first run in raster order (see unite), so a
-     * root is always visited before its members:
-     * 1. tag = the run's root;
-     * 2. roots hold -area, members still their root;
-     * 3. roots hold the encoded region (-2 - index) or -1 if dropped (a
+    /* The tag array goes through three meanings, one linear pass each; the
+     * root of a region is its first run in raster order (see unite), and
+     * every run's parent is an earlier run (or itself: a root), so a root
+     * is always visited before its members:
+     * 1. roots hold -area, members their root: a member's parent q was
+     *    visited before it, so q's tag is already q's root, or q is a root
+     *    and holds its -area so far (one pass, no find);
+     * 2. roots hold the encoded region (-2 - index) or -1 if dropped (a
      *    speck, or past cap_regions), members copy their root's;
-     * 4. tag = region index or -1. */
-    for (r = 0; r < n; r++)
-        p[r] = find(p, r);
+     * 3. tag = region index or -1 (region_stats, as it reads the runs). */
     for (r = 0; r < n; r++) {
-        int len = lb->x1[r] - lb->x0[r] + 1;
-        if (p[r] == r)
+        int32_t len = lb->x1[r] - lb->x0[r] + 1, q = p[r];
+        if (q == r) {
             p[r] = -len;
-        else
-            p[p[r]] -= len;
+            continue;
+        }
+        if (p[q] >= 0) { /* q is a member: its tag is the root */
+            q = p[q];
+            p[r] = q;
+        }
+        p[q] -= len;
     }
     for (r = 0; r < n; r++) {
         if (p[r] < 0) {
@@ -398,11 +403,13 @@ static void resolve_regions(rl_label *lb, int min_area)
             p[r] = p[p[r]];
         }
     }
-    for (r = 0; r < n; r++)
-        p[r] = p[r] <= -2 ? -2 - p[r] : -1;
 }
 
-/* Area, box and coordinate sums of every region. */
+/* Each run's tag decoded (resolve_regions' third meaning: region index or
+ * -1), and area, box and coordinate sums of every region. The x sums are
+ * summed doubled, in whole numbers (exact in a double: under 2^49 for any
+ * region of a 65535-wide image), and halved at the end: the same value as
+ * summing the halves. */
 static void region_stats(rl_label *lb)
 {
     int32_t *p = lb->tag;
@@ -411,6 +418,7 @@ static void region_stats(rl_label *lb)
         for (r = lb->row[y]; r < lb->row[y + 1]; r++) {
             rl_region *g;
             int len;
+            p[r] = p[r] <= -2 ? -2 - p[r] : -1;
             if (p[r] < 0)
                 continue;
             g = &lb->reg[p[r]];
@@ -420,9 +428,11 @@ static void region_stats(rl_label *lb)
             if (lb->x1[r] > g->x1) g->x1 = (int16_t)lb->x1[r];
             if (y < g->y0) g->y0 = (int16_t)y;
             if (y > g->y1) g->y1 = (int16_t)y;
-            g->sx += 0.5 * (double)(lb->x0[r] + lb->x1[r]) * len;
-            g->sy += (double)y * len;
+            g->sx += (double)((int64_t)(lb->x0[r] + lb->x1[r]) * len);
+            g->sy += (double)((int64_t)y * len);
         }
+    for (r = 0; r < lb->n_regions; r++)
+        lb->reg[r].sx *= 0.5;
 }
 
 static rl_err label(rl_label *lb, const rl_image *img, int lo, int hi, const rl_label_map *map,
