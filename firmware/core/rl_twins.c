@@ -321,27 +321,9 @@ static double own_lead(const rl_recog *rec, const rl_image *img, const rl_detect
     return cut_linear && !(own > RL_TWINS_CUT_LINEAR_OWN) ? 0.0 : own;
 }
 
-/* Whether d, a small read, may keep its id where the border cuts a global
- * read of it in a frame read through a curve (curved): its twins at 0.91
- * .. 1.09 of its radius through the frame's own curve must not lead it. A
- * cut 2 behind a 2x scaler (19.3 px, the border 0.6 px into its disk) read
- * as 18 led its twin by 0.0243 through the other formation and 0.0219
- * through its curve at 3%, but the twin led by 0.0075 at 9%; the 72 right
- * reads so judged on the development scale sets led by 0.0048 or more
- * there, where through the other formation 13 let the twin lead, by up to
- * 0.0113 (docs/results.md, sixteenth session). */
-static int cut_fits(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n,
-                    int curved)
-{
-    double fit;
-    if (d->complete || d->pass == RL_PASS_LOCAL || !curved)
-        return 1;
-    return rl_twins_lead(rec, img, rec->tone, d, rv, n, 1, -1, &fit) > 0;
-}
-
 /* Whether d gets no id before its leads are weighed: a small read by
  * rules 6, 7 and 8 (its rivals rv at its own and the frame's size, in
- * clipped light: rl_clip) and a cut global one by cut_fits, a cut local
+ * clipped light: rl_clip) and a cut global one by rl_twins_cut_global_fits, a cut local
  * read with most of its code zone 1 out of the frame whose lead through
  * the other formation (lead) is under RL_TWINS_CUT_ZONE1_LEAD, and a read
  * whose circle fits far worse than its read (`fit`: an ellipse the local
@@ -354,7 +336,7 @@ static int refused(const rl_recog *rec, const rl_image *img, const rl_tone *othe
 {
     if (small && (rl_clip_refuses(rec, img, light, d) || !small_fits(rec, img, light, d, rv, n, tol, mg, reads) ||
                      !size_fits(rec, img, other, d, rv, n, size) ||
-                     !cut_fits(rec, img, d, rv, n, rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0)))
+                     !rl_twins_cut_global_fits(rec, img, d, rv, n, rec->tones.gamma[rec->tone - rec->tones.tone] > 1.0)))
         return 1;
     if (!d->complete && d->pass == RL_PASS_LOCAL && lead < RL_TWINS_CUT_ZONE1_LEAD &&
         rl_twins_cut_zone1_shown(img, &rec->templates.fam, d) < RL_TWINS_CUT_ZONE1)

@@ -1,11 +1,13 @@
-/* rl_twins_cut: a cut read's circle against its outer edge, and how much
- * of its code zone 1 the frame shows (rl_twins_cut.h). */
+/* rl_twins_cut: a cut read's circle against its outer edge, how much of
+ * its code zone 1 the frame shows, and a small cut global read's twins at
+ * 9% (rl_twins_cut.h). */
 #include "rl_twins_cut.h"
 
 #include <math.h>
 
 #include "rl_edge.h"
 #include "rl_twins.h"
+#include "rl_twins_lead.h"
 
 /* Whether the local read d of a landmark the border cuts lies where its
  * outer edge is, by the landmark contract (RL_TWINS_CUT_BULGE), the edge
@@ -50,4 +52,22 @@ double rl_twins_cut_zone1_shown(const rl_image *img, const rl_family *fam, const
         x = t;
     }
     return (double)in / ZONE1_STEPS;
+}
+
+/* Whether d, a small read, may keep its id where the border cuts a global
+ * read of it in a frame read through a curve (curved): its twins at 0.91
+ * .. 1.09 of its radius through the frame's own curve must not lead it. A
+ * cut 2 behind a 2x scaler (19.3 px, the border 0.6 px into its disk) read
+ * as 18 led its twin by 0.0243 through the other formation and 0.0219
+ * through its curve at 3%, but the twin led by 0.0075 at 9%; the 72 right
+ * reads so judged on the development scale sets led by 0.0048 or more
+ * there, where through the other formation 13 let the twin lead, by up to
+ * 0.0113 (docs/results.md, sixteenth session). */
+int rl_twins_cut_global_fits(const rl_recog *rec, const rl_image *img, const rl_detection *d, const int *rv, int n,
+                             int curved)
+{
+    double fit;
+    if (d->complete || d->pass == RL_PASS_LOCAL || !curved)
+        return 1;
+    return rl_twins_lead(rec, img, rec->tone, d, rv, n, 1, -1, &fit) > 0;
 }
